@@ -1,0 +1,275 @@
+{-# LANGUAGE UnboxedTuples #-}
+{-# LANGUAGE BangPatterns  #-}
+{-# LANGUAGE ScopedTypeVariables #-}
+{-# LANGUAGE PolyKinds #-}
+{-# LANGUAGE KindSignatures #-}
+-- |
+-- Module      : AFRP.EventSource
+-- Description : Signal functions that generate or reshape event streams.
+--
+-- Timing conventions shared by every time-based source here:
+--
+-- * Times are /local/: measured from the instant the source started (0 at a
+--   run's first sample, or at the sample where it was switched in).
+-- * A source scheduled for time @t@ fires at the first sample whose local
+--   time is @>= t@ ("at, or as soon after as possible"). With steps of 0.5,
+--   @after 1.0@ fires at exactly 1.0; with steps of 0.3 it fires at 1.2.
+-- * Local time is a compensated sum of the time steps (see
+--   "AFRP.Internal.Clock"), so ten steps of 0.1 reach exactly 1.0.
+-- * When a sample interval spans several scheduled occurrences, the plain
+--   sources deliver only one (no backlog builds up) and the @Cat@ variants
+--   deliver all of them, in order, as a list.
+module AFRP.EventSource
+  ( -- * Basic sources
+    never
+  , now
+  , after
+  , repeatedly
+  , afterEach
+  , afterEachCat
+    -- * Delaying events
+  , delayEvent
+  , delayEventCat
+    -- * Edges
+  , edge
+  , iEdge
+  , edgeTag
+  , edgeJust
+  , edgeBy
+    -- * Reshaping event streams
+  , notYet
+  , once
+  , takeEvents
+  , dropEvents
+    -- * Sampling the input
+  , snap
+  , snapAfter
+  , sample
+  , sampleWindow
+  ) where
+
+import qualified Data.Sequence        as Seq
+import           GHC.Exts             (RuntimeRep, TYPE)
+import           Data.Sequence        (Seq, (|>))
+
+import           AFRP.Event
+import           AFRP.Internal.Clock
+import           AFRP.Internal.SF
+
+-- | The event source with no occurrences. The optimiser knows it: a switch
+-- whose event comes from 'never' disappears.
+never :: SF a (Event b)
+never = SF neverN
+
+neverN :: Node a (Event b)
+neverN = constN NoEvent
+
+-- | @now x@ occurs once, at local time 0, with value @x@.
+--
+-- > embed (now 'x') ((), [(1, Nothing)])  ==  [Event 'x', NoEvent]
+now :: b -> SF a (Event b)
+now x = SF (initN (\_ -> (# neverN, Event x #)))
+
+-- | @after t x@ occurs once, with value @x@, at the first sample whose
+-- local time is @>= t@; @after 0 x@ is @now x@. A negative @t@ is an error.
+--
+-- > embed (after 1.0 ()) ((), replicate 3 (0.5, Nothing))
+-- >   ==  [NoEvent, NoEvent, Event (), NoEvent]
+after :: Time -> b -> SF a (Event b)
+after t x
+  | t < 0     = errNeg "after" t
+  | otherwise = afterEach [(t, x)]
+
+-- | @repeatedly p x@ occurs with value @x@ at local times @p, 2p, 3p, ...@,
+-- each at the first sample at or after that time. No backlog: if a time
+-- step spans several periods, one occurrence is produced and the schedule
+-- moves on to the first period boundary after the current time. There is
+-- no occurrence at time 0. A non-positive period is an error.
+repeatedly :: Time -> b -> SF a (Event b)
+repeatedly p x
+  | p <= 0 || isNaN p = error ("AFRP.EventSource.repeatedly: the period must be positive, got "
+                              ++ show p)
+  | otherwise         = SF (initN (\_ -> (# go clockZero 1, NoEvent #)))
+  where
+    go !clock !n = NStep (\dt _ ->
+      let !clock' = tick clock dt
+          !t      = clockTime clock'
+      in if t >= fromIntegral n * p
+           then (# go clock' (nextIndex t (n + 1)), Event x #)
+           else (# go clock' n, NoEvent #))
+    -- The first period boundary strictly after t, starting the search at
+    -- floor (t / p) so that even a huge step costs O(1).
+    nextIndex :: Time -> Integer -> Integer
+    nextIndex t n0 = firstAbove (max n0 (floor (t / p)))
+      where firstAbove n | fromIntegral n * p <= t = firstAbove (n + 1)
+                         | otherwise              = n
+
+-- | @afterEach [(q1, x1), (q2, x2), ...]@ occurs with @x1@ at local time
+-- @q1@, with @x2@ at @q1 + q2@, and so on: each delay is measured from the
+-- previous scheduled occurrence. When one sample interval spans several
+-- scheduled occurrences only the first of them is produced (see
+-- 'afterEachCat' for all of them). Negative delays are an error, reported
+-- when reached (the list may be infinite).
+afterEach :: [(Time, b)] -> SF a (Event b)
+afterEach qxs = SF (compN (sfNode (afterEachCat qxs)) (arrN (fmap head)))
+
+-- | Like 'afterEach', but every occurrence scheduled up to the current
+-- sample is delivered, in schedule order, in one list.
+--
+-- > embed (afterEachCat [(0.5, 'a'), (0.1, 'b'), (1, 'c')]) ((), replicate 3 (1, Nothing))
+-- >   ==  [NoEvent, Event "ab", Event "c", NoEvent]
+afterEachCat :: forall a b. [(Time, b)] -> SF a (Event [b])
+afterEachCat qxs0 = SF (initN (\_ -> emit clockZero clockZero qxs0))
+  where
+    -- clock: local time now; due: the schedule time of the last occurrence
+    -- already delivered.
+    emit :: Clock -> Clock -> [(Time, b)] -> (# Node a (Event [b]), Event [b] #)
+    emit clock due qxs = collect due qxs []
+      where
+        now' = clockTime clock
+        collect :: Clock -> [(Time, b)] -> [b] -> (# Node a (Event [b]), Event [b] #)
+        collect !d ((q, x) : rest) acc
+          | q < 0 || isNaN q                = errNeg "afterEach" q
+          | clockTime (tick d q) <= now'    = collect (tick d q) rest (x : acc)
+        collect !d rest acc =
+          (# next clock d rest, if null acc then NoEvent else Event (reverse acc) #)
+    next :: Clock -> Clock -> [(Time, b)] -> Node a (Event [b])
+    next _ _ []        = neverN
+    next clock due qxs = NStep (\dt _ -> emit (tick clock dt) due qxs)
+
+-- | @delayEvent q@ delays every occurrence by @q@ seconds: an occurrence
+-- at local time @t@ is produced at the first sample at or after @t + q@.
+-- When several delayed occurrences fall due at one sample only the first
+-- (earliest) is produced ('delayEventCat' gives them all).
+-- @delayEvent 0@ is the identity; a negative delay is an error.
+delayEvent :: Time -> SF (Event a) (Event a)
+delayEvent q
+  | q < 0 || isNaN q = errNeg "delayEvent" q
+  | q == 0           = SF idN
+  | otherwise        = SF (compN (sfNode (delayEventCat q)) (arrN (fmap head)))
+
+-- | Like 'delayEvent', delivering every occurrence that falls due at a
+-- sample, oldest first. The output never depends on the current input, so
+-- a delayed event stream can be fed back through a loop (for instance to
+-- build a recurring event).
+delayEventCat :: forall a. Time -> SF (Event a) (Event [a])
+delayEventCat q
+  | q < 0 || isNaN q = errNeg "delayEventCat" q
+  | q == 0           = SF (arrN (fmap (: [])))
+  | otherwise        = SF (initN (\e -> (# go clockZero Seq.empty e, NoEvent #)))
+  where
+    -- The input of the previous sample (taken at the clock's previous
+    -- reading) is scheduled only now: since q > 0 it cannot be due before
+    -- this sample, and the current input is never evaluated, so the delay
+    -- can close a feedback loop.
+    go :: Clock -> Seq (Time, a) -> Event a -> Node (Event a) (Event [a])
+    go !clock !pending ePrev = NStep (\dt e ->
+      let !clock'     = tick clock dt
+          !now'       = clockTime clock'
+          pending'    = event pending (\x -> pending |> (clockTime clock + q, x)) ePrev
+          (due, rest) = Seq.spanl (\(tDue, _) -> tDue <= now') pending'
+          out         = if Seq.null due then NoEvent else Event (foldr ((:) . snd) [] due)
+      in (# go clock' rest e, out #))
+
+-- | Rising edges of a Boolean signal: an occurrence at every sample where
+-- the input is 'True' and was 'False' at the previous sample. At time 0
+-- the previous value is taken to be 'True', so an input that starts out
+-- 'True' produces no event (@edge = iEdge True@).
+--
+-- > embed edge (True, [(1, Just False), (1, Just True), (1, Nothing)])
+-- >   ==  [NoEvent, NoEvent, Event (), NoEvent]
+edge :: SF Bool (Event ())
+edge = iEdge True
+
+-- | 'edge' with the value assumed for the sample before time 0:
+-- @iEdge False@ produces an event at time 0 if the input is 'True' then.
+iEdge :: Bool -> SF Bool (Event ())
+iEdge b0 = SF (mealyN (\prev b -> (b, if b && not prev then Event () else NoEvent)) b0)
+
+-- | 'edge' with a given value: @edgeTag x = edge >>> arr (`tag` x)@.
+edgeTag :: a -> SF Bool (Event a)
+edgeTag x = SF (compN (sfNode edge) (arrN (`tag` x)))
+
+-- | An occurrence, carrying the value, whenever the input changes from
+-- 'Nothing' to 'Just'. At time 0 the previous value is taken to be a
+-- 'Just', so a 'Just' there produces no event.
+edgeJust :: SF (Maybe a) (Event a)
+edgeJust = SF (mealyN step True)
+  where
+    step wasJust m = case m of
+      Just x | not wasJust -> (True, Event x)
+      Just _               -> (True, NoEvent)
+      Nothing              -> (False, NoEvent)
+
+-- | The general edge detector: @edgeBy f a0@ applies @f@ to the previous
+-- and the current input sample and produces an occurrence whenever it
+-- returns 'Just'. At time 0 the previous sample is taken to be @a0@. Each
+-- input sample is evaluated (to weak head normal form) when it is stored.
+edgeBy :: (a -> a -> Maybe b) -> a -> SF a (Event b)
+edgeBy f a0 = SF (mealyN (\prev a -> (a, maybeToEvent (f prev a))) a0)
+
+-- | Suppress an occurrence at time 0; pass all later ones through.
+notYet :: SF (Event a) (Event a)
+notYet = SF (initN (\_ -> (# idN, NoEvent #)))
+
+-- | Only the first occurrence passes: @once = takeEvents 1@.
+once :: SF (Event a) (Event a)
+once = takeEvents 1
+
+-- | Let the first @n@ occurrences through, then none (the source then
+-- becomes 'never' and can disappear from the network).
+takeEvents :: Int -> SF (Event a) (Event a)
+takeEvents n0 = SF (go n0)
+  where
+    go n | n <= 0    = neverN
+         | otherwise = NStep (\_ e -> case e of
+             NoEvent -> (# go n, NoEvent #)
+             Event _ -> (# go (n - 1), e #))
+
+-- | Suppress the first @n@ occurrences, then let all through.
+dropEvents :: Int -> SF (Event a) (Event a)
+dropEvents n0 = SF (go n0)
+  where
+    go n | n <= 0    = idN
+         | otherwise = NStep (\_ e -> case e of
+             NoEvent -> (# go n, NoEvent #)
+             Event _ -> (# go (n - 1), NoEvent #))
+
+-- | One occurrence at time 0 carrying the input sample there.
+snap :: SF a (Event a)
+snap = SF (initN (\a -> (# neverN, Event a #)))
+
+-- | One occurrence, carrying the input sample, at the first sample whose
+-- local time is @>= t@ (at time 0 if @t == 0@). A negative @t@ is an error,
+-- as for 'after'.
+snapAfter :: Time -> SF a (Event a)
+snapAfter t = SF (compN (fanN (sfNode (after t ())) idN) (arrN (\(e, a) -> e `tag` a)))
+
+-- | @sample p@ occurs at local times @p, 2p, ...@ (as 'repeatedly')
+-- carrying the input sample at that instant. No occurrence at time 0.
+sample :: Time -> SF a (Event a)
+sample p = SF (compN (fanN (sfNode (repeatedly p ())) idN) (arrN (\(e, a) -> e `tag` a)))
+
+-- | @sampleWindow w p@ takes a sample of the input every @p@ seconds (as
+-- 'sample', but one sample per period even when a time step spans several
+-- periods) and, at each sampling instant, produces the last @w@ samples
+-- taken, oldest first. A window size below 1 or a non-positive period is an
+-- error (Yampa does not check: there a window of 0 gives empty lists and a
+-- period of 0 hangs).
+sampleWindow :: Int -> Time -> SF a (Event [a])
+sampleWindow w p
+  | w < 1     = error ("AFRP.EventSource.sampleWindow: window size must be at least 1, got "
+                       ++ show w)
+  | p <= 0 || isNaN p = error ("AFRP.EventSource.sampleWindow: the period must be positive, got "
+                               ++ show p)
+  | otherwise = SF (compN ticks (mealyN window Seq.empty))
+  where
+    ticks = fanN idN (sfNode (afterEachCat (repeat (p, ()))))
+    window win (a, e) = case e of
+      NoEvent -> (win, NoEvent)
+      Event us ->
+        let win' = Seq.drop (Seq.length win + length us - w) (foldl (\s _ -> s |> a) win us)
+        in (win', Event (foldr (:) [] win'))
+
+errNeg :: forall (r :: RuntimeRep) (x :: TYPE r). String -> Double -> x
+errNeg f q = error ("AFRP.EventSource." ++ f ++ ": negative or NaN time, got " ++ show q)

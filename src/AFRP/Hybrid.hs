@@ -1,0 +1,111 @@
+{-# LANGUAGE UnboxedTuples #-}
+-- |
+-- Module      : AFRP.Hybrid
+-- Description : Between the continuous and the discrete: holding and
+--               accumulating event values.
+--
+-- Every combinator comes in an immediate form and a delayed (@d@) form.
+-- The immediate form reacts /at/ the instant of an event: its output at
+-- that sample already reflects the event. The delayed form outputs, at
+-- every sample, what the immediate form output at the previous sample
+-- (its initial value at time 0), so an event is reflected one sample
+-- later. Delayed forms do not evaluate their current input, so they can
+-- close a feedback loop.
+--
+-- Accumulated values are evaluated (to weak head normal form) when an
+-- event is folded in, so a long run accumulates no thunks.
+module AFRP.Hybrid
+  ( -- * Holding
+    hold
+  , dHold
+  , trackAndHold
+  , dTrackAndHold
+    -- * Accumulating
+  , accum
+  , accumHold
+  , dAccumHold
+  , accumBy
+  , accumHoldBy
+  , dAccumHoldBy
+  , accumFilter
+  ) where
+
+import           AFRP.Delay       (iPre)
+import           AFRP.Event
+import           AFRP.Internal.SF
+
+-- | @hold a0@ outputs @a0@ until the first event, then the value of the
+-- most recent event. At the instant of an event it already outputs the
+-- new value.
+--
+-- > embed (hold 0) (NoEvent, [(1, Just (Event 5)), (1, Just NoEvent)])  ==  [0, 5, 5]
+hold :: a -> SF (Event a) a
+hold a0 = SF (go a0)
+  where
+    go held = NStep (\_ e -> case e of
+      NoEvent -> (# go held, held #)
+      Event x -> (# go x, x #))
+
+-- | Delayed 'hold': @a0@ at time 0, then at each sample what 'hold' output
+-- at the previous one (Yampa: @hold a0 >>> iPre a0@).
+dHold :: a -> SF (Event a) a
+dHold a0 = delayed NoEvent (hold a0)
+
+-- | @trackAndHold a0@ follows the input while it is 'Just', and holds the
+-- last 'Just' value while it is 'Nothing' (@a0@ before any 'Just').
+trackAndHold :: a -> SF (Maybe a) a
+trackAndHold a0 = SF (compN (arrN maybeToEvent) (sfNode (hold a0)))
+
+-- | Delayed 'trackAndHold'.
+dTrackAndHold :: a -> SF (Maybe a) a
+dTrackAndHold a0 = delayed Nothing (trackAndHold a0)
+
+-- | @accum a0@ turns an event stream of functions into an event stream of
+-- values: the n-th output event carries @f_n (... (f_1 a0))@. At an event
+-- instant it outputs the event with the new value.
+--
+-- > embed (accum 0) (Event (+1), [(1, Just NoEvent), (1, Just (Event (*10)))])
+-- >   ==  [Event 1, NoEvent, Event 10]
+accum :: a -> SF (Event (a -> a)) (Event a)
+accum = accumBy (\a f -> f a)
+
+-- | @accumHold a0 = accum a0 >>> hold a0@: the accumulated value, updated
+-- at the instant of each event.
+accumHold :: a -> SF (Event (a -> a)) a
+accumHold = accumHoldBy (\a f -> f a)
+
+-- | Delayed 'accumHold': the accumulated value excluding the current
+-- sample's event.
+dAccumHold :: a -> SF (Event (a -> a)) a
+dAccumHold a0 = delayed NoEvent (accumHold a0)
+
+-- | @accumBy f b0@: each event @a@ updates the accumulator @b := f b a@ and
+-- produces an event carrying the new @b@.
+accumBy :: (b -> a -> b) -> b -> SF (Event a) (Event b)
+accumBy f = accumFilter (\b a -> let b' = f b a in (b', Just b'))
+
+-- | @accumHoldBy f b0@: the accumulator of 'accumBy', held as a signal.
+accumHoldBy :: (b -> a -> b) -> b -> SF (Event a) b
+accumHoldBy f b0 = SF (mealyN step b0)
+  where
+    step b NoEvent   = (b, b)
+    step b (Event a) = let b' = f b a in (b', b')
+
+-- | Delayed 'accumHoldBy'.
+dAccumHoldBy :: (b -> a -> b) -> b -> SF (Event a) b
+dAccumHoldBy f b0 = delayed NoEvent (accumHoldBy f b0)
+
+-- | @accumFilter f c0@: each event @a@ updates the accumulator with
+-- @(c', mb) = f c a@ and produces an event exactly when @mb@ is @Just b@.
+accumFilter :: (c -> a -> (c, Maybe b)) -> c -> SF (Event a) (Event b)
+accumFilter f c0 = SF (mealyN step c0)
+  where
+    step c NoEvent   = (c, NoEvent)
+    step c (Event a) = case f c a of (c', mb) -> (c', maybeToEvent mb)
+
+-- The delayed form of an immediate combinator: delay its /input/ by one
+-- sample, with a neutral first input. This equals delaying the output
+-- (with the combinator's initial value) but never evaluates the current
+-- input, so it is safe in a feedback loop.
+delayed :: a -> SF a b -> SF a b
+delayed neutral (SF n) = SF (compN (sfNode (iPre neutral)) n)

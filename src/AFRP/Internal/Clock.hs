@@ -1,0 +1,45 @@
+{-# LANGUAGE BangPatterns #-}
+-- |
+-- Module      : AFRP.Internal.Clock
+-- Description : Local time kept as a compensated sum of time steps.
+--
+-- Every time-based primitive of the library ('AFRP.Basic.localTime',
+-- 'AFRP.EventSource.after', 'AFRP.EventSource.repeatedly',
+-- 'AFRP.Delay.delay', ...) measures its local time as the sum of the time
+-- steps it has seen. A naive floating-point sum drifts: ten steps of 0.1
+-- add up to 0.9999999999999999, so an @after 1@ would fire one sample late.
+-- We keep a Neumaier-compensated sum instead, which is exact to the last
+-- bit for all practical step sequences (ten steps of 0.1 give exactly 1.0),
+-- at the cost of two extra additions per step.
+module AFRP.Internal.Clock
+  ( Clock
+  , clockZero
+  , clockAt
+  , tick
+  , clockTime
+  ) where
+
+-- | A running compensated sum: the rounded sum and the lost low-order part.
+data Clock = Clock {-# UNPACK #-} !Double {-# UNPACK #-} !Double
+
+-- | Time zero.
+clockZero :: Clock
+clockZero = Clock 0 0
+
+-- | A clock reading the given time.
+clockAt :: Double -> Clock
+clockAt t = Clock t 0
+
+-- | Advance by a time step.
+tick :: Clock -> Double -> Clock
+tick (Clock s c) x =
+  let !t  = s + x
+      !c' | abs s >= abs x = c + ((s - t) + x)
+          | otherwise      = c + ((x - t) + s)
+  in Clock t c'
+{-# INLINE tick #-}
+
+-- | The time the clock shows.
+clockTime :: Clock -> Double
+clockTime (Clock s c) = s + c
+{-# INLINE clockTime #-}

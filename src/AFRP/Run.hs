@@ -1,0 +1,172 @@
+{-# LANGUAGE UnboxedTuples #-}
+{-# LANGUAGE BangPatterns  #-}
+-- |
+-- Module      : AFRP.Run
+-- Description : Running signal functions: in IO against the real world,
+--               or purely on a list of samples.
+--
+-- Every runner takes the first input sample without a time step (the
+-- signal function's local time 0) and each later one with the time step
+-- since the previous sample. A later sample may omit the input
+-- ('Nothing'), meaning "unchanged since the last sample". As in Yampa, each
+-- input sample is evaluated to weak head normal form before it is used, so
+-- a signal function that ignores its input still runs in constant space.
+module AFRP.Run
+  ( -- * Running in a monad
+    reactimate
+  , ReactHandle
+  , reactInit
+  , react
+    -- * Stepping by hand
+  , FutureSF
+  , evalAtZero
+  , evalAt
+    -- * Running on lists
+  , embed
+  , embedSynch
+  , deltaEncode
+  , deltaEncodeBy
+  ) where
+
+import           Data.IORef
+import           Data.Maybe       (fromMaybe)
+
+import           AFRP.Internal.SF
+
+-- | @reactimate initialise sense actuate sf@ runs @sf@ as an interactive
+-- loop:
+--
+-- * @initialise@ gives the first input sample (local time 0);
+-- * @sense b@ gives the time step to the next sample and its input
+--   ('Nothing' = unchanged); the flag says whether it may block, and is
+--   always 'False' here (as in Yampa);
+-- * @actuate changed out@ consumes each output sample, the first included,
+--   and returns 'True' to stop the loop; @changed@ is always 'True'.
+--
+-- The signal function's state is evaluated at every step, so a loop of any
+-- length runs in the space its signal function needs.
+reactimate :: Monad m => m a -> (Bool -> m (DTime, Maybe a)) -> (Bool -> b -> m Bool) -> SF a b -> m ()
+reactimate initialise sense actuate (SF n0) = do
+  a0 <- initialise
+  case stepN n0 0 a0 of
+    (# n1, b0 #) -> do
+      stop <- actuate True b0
+      if stop then pure () else loop n1 a0
+  where
+    loop !n a = do
+      (dt, ma) <- sense False
+      let !a' = fromMaybe a ma
+      case stepN n dt a' of
+        (# n', b #) -> do
+          stop <- actuate True b
+          if stop then pure () else loop n' a'
+
+-- | The state of a signal function being driven sample by sample from the
+-- outside ('reactInit', 'react'): for event loops owned by another library
+-- (a GUI toolkit, a game engine) that call back once per frame.
+data ReactHandle a b = ReactHandle
+  { rhState   :: !(IORef (ReactState a b))
+  , rhActuate :: ReactHandle a b -> Bool -> b -> IO Bool
+  }
+
+data ReactState a b = ReactState !(Node a b) a
+
+-- | @reactInit initialise actuate sf@ takes the first input sample, runs
+-- the first step, passes its output to @actuate@ and returns a handle for
+-- 'react'.
+reactInit :: IO a -> (ReactHandle a b -> Bool -> b -> IO Bool) -> SF a b -> IO (ReactHandle a b)
+reactInit initialise actuate (SF n0) = do
+  a0 <- initialise
+  case stepN n0 0 a0 of
+    (# n1, b0 #) -> do
+      ref <- newIORef (ReactState n1 a0)
+      let h = ReactHandle ref actuate
+      _ <- actuate h True b0
+      pure h
+
+-- | @react h (dt, ma)@ performs one step of the time step @dt@ with input
+-- @ma@ ('Nothing' = unchanged), passes the output to the handle's actuate
+-- action and returns what that action returned.
+react :: ReactHandle a b -> (DTime, Maybe a) -> IO Bool
+react h (dt, ma) = do
+  ReactState n a <- readIORef (rhState h)
+  let !a' = fromMaybe a ma
+  case stepN n dt a' of
+    (# n', b #) -> do
+      writeIORef (rhState h) (ReactState n' a')
+      rhActuate h h True b
+
+-- | A signal function that has been started: it has seen its first sample
+-- and expects each later one with its time step. Produced and consumed by
+-- 'evalAtZero' and 'evalAt'.
+newtype FutureSF a b = FutureSF (Node a b)
+
+-- | Start a signal function by hand: its output at local time 0 for the
+-- given input, and what it has become. For drivers that own their loop
+-- (a simulator, a game engine) and want no 'IO'.
+evalAtZero :: SF a b -> a -> (b, FutureSF a b)
+evalAtZero (SF n) a = case stepN n 0 a of (# n', b #) -> (b, FutureSF n')
+
+-- | One more step by hand: the output after the time step @dt@ with the
+-- given input, and what the signal function has become. Its state is
+-- evaluated when the result pair is.
+evalAt :: FutureSF a b -> DTime -> a -> (b, FutureSF a b)
+evalAt (FutureSF n) dt a = case stepN n dt a of (# n', b #) -> (b, FutureSF n')
+
+-- | @embed sf (a0, samples)@ runs @sf@ purely: @a0@ is the input at local
+-- time 0, each @(dt, ma)@ a later sample. The result has one output per
+-- input sample (the first at time 0), produced lazily; the state is
+-- evaluated as the list is consumed.
+--
+-- > embed integral (1, [(0.5, Just 2), (0.5, Nothing)])  ==  [0, 0.5, 1.5]
+embed :: SF a b -> (a, [(DTime, Maybe a)]) -> [b]
+embed (SF n0) (a0, samples) = case stepN n0 0 a0 of
+  (# n1, b0 #) -> b0 : go n1 a0 samples
+  where
+    go !_ _ []             = []
+    go n a ((dt, ma) : rest) =
+      let !a' = fromMaybe a ma
+      in case stepN n dt a' of (# n', b #) -> b : go n' a' rest
+
+-- | @embedSynch sf (a0, samples)@ is a signal function that replays the
+-- run of @sf@ on the given samples at a controllable speed. Its input is
+-- the speed ratio (0 pauses, 1 is real time, 2 is twice as fast); the
+-- embedded run's clock advances by @ratio * dt@ at each step, and the
+-- output is the embedded output of the latest embedded sample at or before
+-- that clock (the last one once the samples run out). A negative ratio is
+-- an error.
+embedSynch :: SF a b -> (a, [(DTime, Maybe a)]) -> SF Double b
+embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
+  where
+    outputs = embed sf input
+    times   = scanl (+) 0 (map fst samples)
+    timed   = zip times outputs
+    start   = case timed of
+      (_, b0) : rest -> (# go 0 b0 rest, b0 #)
+      []             -> error "AFRP.Run.embedSynch: impossible: embed produced no output"
+    go :: Double -> b -> [(Double, b)] -> Node Double b
+    go !clock bLast rest = NStep (\dt ratio ->
+      if ratio < 0
+        then error ("AFRP.Run.embedSynch: negative speed ratio " ++ show ratio)
+        else
+          let !clock'       = clock + ratio * dt
+              (done, later) = span ((<= clock') . fst) rest
+          in case done of
+               [] -> (# go clock' bLast later, bLast #)
+               _  -> let bNow = snd (last done) in (# go clock' bNow later, bNow #))
+
+-- | @deltaEncode dt xs@ turns a list of samples taken every @dt@ seconds
+-- into the input of 'embed', writing 'Nothing' for a sample equal to the
+-- previous one. The list must not be empty.
+deltaEncode :: Eq a => DTime -> [a] -> (a, [(DTime, Maybe a)])
+deltaEncode = deltaEncodeBy (==)
+
+-- | 'deltaEncode' with a custom equality.
+deltaEncodeBy :: (a -> a -> Bool) -> DTime -> [a] -> (a, [(DTime, Maybe a)])
+deltaEncodeBy _  _  []       = error "AFRP.Run.deltaEncodeBy: empty list of samples"
+deltaEncodeBy eq dt (x : xs) = (x, go x xs)
+  where
+    go _    []       = []
+    go prev (y : ys)
+      | eq prev y = (dt, Nothing) : go prev ys
+      | otherwise = (dt, Just y) : go y ys

@@ -1,0 +1,142 @@
+{-# LANGUAGE UnboxedTuples #-}
+{-# LANGUAGE GADTs         #-}
+-- |
+-- Module      : AFRP.Switch
+-- Description : Switching: a signal function that becomes another one at
+--               an event.
+--
+-- The names follow the notes and Yampa: a @d@ prefix means /delayed/ (at
+-- the switching instant the output is still the old signal function's; the
+-- new one takes over from the next sample), an @r@ prefix means
+-- /recurring/ (every event switches, not only the first), a @k@ prefix
+-- means the continuation receives the signal function being switched out
+-- of.
+--
+-- In every case the signal function switched in /starts/ at the switching
+-- instant: its local time is 0 there, it sees the input sample of that
+-- instant as its first sample, and (for the immediate switches) its
+-- first output is the switch's output at that instant. A delayed switch
+-- also starts the new signal function at the switching instant, but
+-- discards its first output.
+--
+-- An event at time 0 switches at time 0.
+--
+-- The delayed switches are /decoupled/: their output at an instant never
+-- depends on whether their event occurs at that instant. They decide
+-- whether to switch only when they are next stepped, so the event may
+-- depend, through a 'Control.Arrow.loop' or @rec@, on the switch's own
+-- output at the same instant (the immediate switches cannot allow that).
+-- What is fed back must reach the event from outside the running signal
+-- function: the event input of 'drSwitch', the detector of 'dkSwitch' and
+-- 'AFRP.Parallel.dpSwitch', or (for 'dSwitch') an event computed outside
+-- and merged in. The running signal function itself is stepped in full at
+-- every sample, so, as everywhere in a loop ('Control.Arrow.loop'), it may
+-- only delay a fed-back value, never inspect it at the same instant.
+--
+-- A switch whose event source has become 'AFRP.EventSource.never' (for
+-- example @sf &&& never@, or an 'AFRP.EventSource.after' that cannot fire
+-- again) removes itself from the network.
+module AFRP.Switch
+  ( switch
+  , dSwitch
+  , rSwitch
+  , drSwitch
+  , kSwitch
+  , dkSwitch
+  ) where
+
+import           AFRP.Event
+import           AFRP.Internal.SF
+
+-- | @switch sf k@ behaves as @sf@ (ignoring the event part of its output)
+-- until the first occurrence @Event c@ of that event part, and from then
+-- on as @k c@, started at the instant of the event. At that instant the
+-- output is @k c@'s first output.
+--
+-- > embed (switch (constant 1 &&& after 1 ()) (\() -> localTime))
+-- >       ((), replicate 3 (0.5, Nothing))  ==  [1, 1, 0, 0.5]
+switch :: SF a (b, Event c) -> (c -> SF a b) -> SF a b
+switch (SF n0) k = SF (go n0)
+  where
+    go n = NStep (\dt a -> case stepN n dt a of
+      (# n', (b, e) #) -> case e of
+        Event c -> stepN (sfNode (k c)) dt a
+        NoEvent -> (# watch n' go, b #))
+
+-- | @dSwitch sf k@ is 'switch' except at the switching instant, where the
+-- output is still @sf@'s; @k c@ is started at that instant (its first
+-- output discarded) and supplies every output after it. Needed when the
+-- switched-in signal function depends on the switch's own output (a
+-- recursive definition such as the notes' @rcReverse@).
+dSwitch :: SF a (b, Event c) -> (c -> SF a b) -> SF a b
+dSwitch (SF n0) k = SF (go n0)
+  where
+    go n = NStep (\dt a -> case stepN n dt a of
+      (# n', be #) ->
+        let next = case snd be of
+              NoEvent -> watch n' go
+              Event c -> case stepN (sfNode (k c)) dt a of (# m, _ #) -> m
+        in (# deferN next, fst be #))
+
+-- Continue watching a stepped node, unless its event can no longer occur.
+-- Both patterns inspect only values that the step just evaluated.
+watch :: Node a (b, Event c) -> (Node a (b, Event c) -> Node a b) -> Node a b
+watch n go = case n of
+  -- sf &&& never = the switch can never fire
+  NFan f (NPure (FDC NoEvent)) -> f
+  -- constant (b, NoEvent) likewise
+  NPure (FDC (b, NoEvent))     -> constN b
+  _                            -> go n
+
+-- | @rSwitch sf@ behaves as @sf@ on the first input component, and switches
+-- into the signal function carried by each event of the second component,
+-- at the instant of the event (its first output is the output there). An
+-- event at time 0 replaces @sf@ before it produces any output.
+rSwitch :: SF a b -> SF (a, Event (SF a b)) b
+rSwitch (SF n0) = SF (go n0)
+  where
+    go n = NStep (\dt (a, e) -> case e of
+      NoEvent      -> case stepN n dt a of (# n', b #) -> (# go n', b #)
+      Event (SF m) -> case stepN m dt a of (# m', b #) -> (# go m', b #))
+
+-- | Delayed 'rSwitch': at an event instant the output is still the current
+-- signal function's; the new one starts at that instant and supplies the
+-- outputs from the next sample on. Used by the notes' @vel@, where the new
+-- signal function is built from the switch's own output.
+drSwitch :: SF a b -> SF (a, Event (SF a b)) b
+drSwitch (SF n0) = SF (go n0)
+  where
+    go n = NStep (\dt ae -> case stepN n dt (fst ae) of
+      (# n', b #) ->
+        let next = case snd ae of
+              NoEvent      -> go n'
+              Event (SF m) -> case stepN m dt (fst ae) of (# m', _ #) -> go m'
+        in (# deferN next, b #))
+
+-- | @kSwitch sf sfe k@: run @sf@; the event source @sfe@ watches its input
+-- and output. At the first occurrence @Event c@, switch to @k sf' c@, where
+-- @sf'@ is @sf@ /frozen/ just before the current step: starting @sf'@
+-- replays that step exactly, so @k (\\s _ -> s)@ resumes @sf@ without
+-- losing or repeating any time. The output at the switching instant is the
+-- new signal function's first output. An event at time 0 passes the
+-- original, unstarted @sf@.
+kSwitch :: SF a b -> SF (a, b) (Event c) -> (SF a b -> c -> SF a b) -> SF a b
+kSwitch (SF n0) (SF e0) k = SF (go n0 e0)
+  where
+    go n ne = NStep (\dt a -> case stepN n dt a of
+      (# n', b #) -> case stepN ne dt (a, b) of
+        (# ne', NoEvent #) -> (# go n' ne', b #)
+        (# _, Event c #)   -> stepN (sfNode (k (SF (freezeN n dt)) c)) dt a)
+
+-- | Delayed 'kSwitch': at the switching instant the output is still
+-- @sf@'s; @k sf' c@ starts there (first output discarded).
+dkSwitch :: SF a b -> SF (a, b) (Event c) -> (SF a b -> c -> SF a b) -> SF a b
+dkSwitch (SF n0) (SF e0) k = SF (go n0 e0)
+  where
+    go n ne = NStep (\dt a -> case stepN n dt a of
+      (# n', b #) ->
+        let next = case boxStep ne dt (a, b) of
+              Boxed ne' NoEvent -> go n' ne'
+              Boxed _ (Event c) -> case stepN (sfNode (k (SF (freezeN n dt)) c)) dt a of
+                (# m, _ #) -> m
+        in (# deferN next, b #))

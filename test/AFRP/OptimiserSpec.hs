@@ -1,0 +1,59 @@
+-- | The network simplifies itself: these tests look at the internal form
+-- of signal functions (through "AFRP.Internal.SF") as they are built and
+-- as they run.
+module AFRP.OptimiserSpec (spec) where
+
+import           Test.Hspec hiding (after)
+
+import           AFRP
+import           AFRP.Internal.SF (isConstantSF, isPureSF, stepSF)
+
+-- | Step a signal function through the given samples (the first one's
+-- time step is ignored) and return what it has become.
+runTo :: SF a b -> [(DTime, a)] -> SF a b
+runTo = foldl (\sf (dt, a) -> fst (stepSF sf dt a))
+
+spec :: Spec
+spec = do
+  describe "at construction" $ do
+    it "fuses a chain of pure functions into one" $
+      isPureSF (foldr1 (>>>) (replicate 100 (arr (+ 1))) :: SF Int Int) `shouldBe` True
+    it "removes identities" $
+      isPureSF (identity >>> arr not >>> identity) `shouldBe` True
+    it "lets a constant absorb what feeds it" $
+      isConstantSF (integral >>> constant 'c' :: SF Double Char) `shouldBe` True
+    it "fuses first, second, *** and &&& of pure functions" $ do
+      isPureSF (first (arr (+ 1)) :: SF (Int, Char) (Int, Char)) `shouldBe` True
+      isPureSF (second (arr (+ 1)) :: SF (Char, Int) (Char, Int)) `shouldBe` True
+      isPureSF (arr (+ 1) *** arr not :: SF (Int, Bool) (Int, Bool)) `shouldBe` True
+      isPureSF (arr (+ 1) &&& arr show :: SF Int (Int, String)) `shouldBe` True
+    it "fuses a loop over a pure function" $
+      isPureSF (loop (arr (\(a, c) -> (a + 1, c))) :: SF Int Int) `shouldBe` True
+    it "keeps stateful parts stateful" $
+      isPureSF (arr (+ 1) >>> integral :: SF Double Double) `shouldBe` False
+
+  describe "while running" $ do
+    it "an after that has fired becomes a constant" $ do
+      let sf = runTo (after 1 'x') [(0, ()), (0.5, ()), (0.5, ())]
+      isConstantSF sf `shouldBe` True
+      snd (stepSF sf 0.5 ()) `shouldBe` NoEvent
+    it "takeEvents that has let its events through becomes never" $
+      isConstantSF (runTo (takeEvents 1) [(0, Event 'a')] :: SF (Event Char) (Event Char))
+        `shouldBe` True
+    it "a switch on never disappears after one step" $ do
+      let sf = switch (arr (* 2) &&& never) (\() -> constant 0) :: SF Int Int
+      isPureSF sf `shouldBe` False
+      let sf' = runTo sf [(0, 1)]
+      isPureSF sf' `shouldBe` True
+      snd (stepSF sf' 1 21) `shouldBe` 42
+    it "a switch that has switched into a constant is that constant" $ do
+      let sf = switch (constant 'a' &&& after 1 ()) (\() -> constant 'b') :: SF () Char
+          sf' = runTo sf [(0, ()), (1, ())]
+      isConstantSF sf' `shouldBe` True
+      snd (stepSF sf' 1 ()) `shouldBe` 'b'
+    it "a stateful part that becomes stateless fuses with its neighbours" $ do
+      let sf = arr (+ 1) >>> (arr (> 0) &&& now ()) >>> arr (\(b, e) -> event 0 (const 1) e + fromEnum b) :: SF Int Int
+      isPureSF sf `shouldBe` False
+      let sf' = runTo sf [(0, 5)]
+      isPureSF sf' `shouldBe` True
+      snd (stepSF sf' 1 5) `shouldBe` 1

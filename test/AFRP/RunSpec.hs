@@ -1,0 +1,78 @@
+module AFRP.RunSpec (spec) where
+
+import           Control.Exception (evaluate)
+import           Data.IORef
+import           Test.Hspec
+
+import           AFRP
+import           TestUtil
+
+spec :: Spec
+spec = do
+  describe "embed" $ do
+    it "gives one output per sample, the first at time 0" $
+      embed integral (1, [(0.5, Just 2), (0.5, Nothing)]) `shouldBe` [0, 0.5, 1.5 :: Double]
+    it "Nothing means the input is unchanged" $
+      embed identity ('a', [(1, Nothing), (1, Just 'b'), (1, Nothing)]) `shouldBe` "aabb"
+    it "runs 10^6 samples of an integral without trouble" $
+      last (embed integral (1, replicate 1000000 (0.001, Nothing))) `shouldApprox` (1000 :: Double)
+
+  describe "reactimate" $ do
+    it "senses, steps and actuates until actuate says stop" $ do
+      inputs <- newIORef [(0.5, Just 2), (0.5, Nothing), (0.5, Just 4)]
+      outs <- newIORef []
+      let sense _ = atomicModifyIORef' inputs (\xs -> (drop 1 xs, head' xs))
+          head' (x : _) = x
+          head' []      = (0.5, Nothing)
+          actuate _ b = do
+            modifyIORef outs (b :)
+            pure (b >= (2 :: Double))
+      reactimate (pure 1) sense actuate integral
+      reverse <$> readIORef outs `shouldReturn` [0, 0.5, 1.5, 2.5]
+    it "stops before any step when the first actuate says so" $ do
+      steps <- newIORef (0 :: Int)
+      reactimate (pure ()) (\_ -> modifyIORef steps (+ 1) >> pure (1, Nothing))
+                 (\_ _ -> pure True) (constant ())
+      readIORef steps `shouldReturn` 0
+
+  describe "reactInit and react" $
+    it "drive a signal function one step at a time" $ do
+      outs <- newIORef []
+      h <- reactInit (pure (1 :: Double)) (\_ _ b -> modifyIORef outs (b :) >> pure False) integral
+      _ <- react h (0.5, Nothing)
+      stop <- react h (0.5, Just 3)
+      stop `shouldBe` False
+      reverse <$> readIORef outs `shouldReturn` [0, 0.5, 1]
+
+  describe "evalAtZero and evalAt" $
+    it "step a signal function by hand exactly as embed does" $ do
+      let (b0, f0) = evalAtZero integral (1 :: Double)
+          (b1, f1) = evalAt f0 0.5 2
+          (b2, _)  = evalAt f1 0.5 2
+      [b0, b1, b2] `shouldBe` embed integral (1, [(0.5, Just 2), (0.5, Nothing)])
+
+  describe "embedSynch" $ do
+    let inner = embed localTime ((), replicate 10 (0.5, Nothing))
+    it "replays at ratio 1 in step with the outer time" $
+      runDt 0.5 (embedSynch localTime ((), replicate 10 (0.5, Nothing))) (replicate 4 1)
+        `shouldBe` take 4 inner
+    it "pauses at ratio 0 and runs faster at ratio 2" $
+      runDt 0.5 (embedSynch localTime ((), replicate 10 (0.5, Nothing))) [1, 0, 0, 2, 2]
+        `shouldBe` [0, 0, 0, 1, 2]
+    it "holds the last output after the embedded samples run out" $
+      last (runDt 1 (embedSynch localTime ((), replicate 2 (0.5, Nothing))) (replicate 5 1))
+        `shouldBe` 1
+    it "rejects a negative ratio" $
+      evaluate (last (runDt 1 (embedSynch identity ('a', [])) [1, -1]))
+        `shouldThrow` anyErrorCall
+
+  describe "deltaEncode" $ do
+    it "writes Nothing for repeated samples" $
+      deltaEncode 0.1 "aabca" `shouldBe` ('a', [(0.1, Nothing), (0.1, Just 'b'), (0.1, Just 'c'), (0.1, Just 'a')])
+    it "round-trips through embed" $
+      embed identity (deltaEncode 0.1 "aabca") `shouldBe` "aabca"
+    it "deltaEncodeBy uses the given equality" $
+      snd (deltaEncodeBy (\x y -> abs (x - y) < 1) 1 [1, 1.5, 3 :: Double])
+        `shouldBe` [(1, Nothing), (1, Just 3)]
+    it "rejects an empty list" $
+      evaluate (deltaEncode 0.1 ([] :: [Int])) `shouldThrow` anyErrorCall

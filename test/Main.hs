@@ -1,0 +1,46 @@
+-- | The afrp test suite: one spec module per library module.
+module Main (main) where
+
+import           Test.Hspec
+
+import qualified AFRP.BasicSpec
+import qualified AFRP.DelaySpec
+import qualified AFRP.EventSourceSpec
+import qualified AFRP.EventSpec
+import qualified AFRP.GeometrySpec
+import qualified AFRP.HybridSpec
+import qualified AFRP.IntegrationSpec
+import qualified AFRP.LawsSpec
+import qualified AFRP.LoopSpec
+import qualified AFRP.NoiseSpec
+import qualified AFRP.NotesSpec
+import qualified AFRP.OptimiserSpec
+import qualified AFRP.ParallelSpec
+import qualified AFRP.ReferenceSpec
+import qualified AFRP.RunSpec
+import qualified AFRP.SwitchSpec
+import qualified AFRP.TaskSpec
+import qualified AFRP.VectorSpaceSpec
+import qualified NetworksSpec
+
+main :: IO ()
+main = hspec $ do
+  describe "AFRP.Basic"       AFRP.BasicSpec.spec
+  describe "AFRP.Event"       AFRP.EventSpec.spec
+  describe "AFRP.EventSource" AFRP.EventSourceSpec.spec
+  describe "AFRP.Hybrid"      AFRP.HybridSpec.spec
+  describe "AFRP.Delay"       AFRP.DelaySpec.spec
+  describe "AFRP.Integration" AFRP.IntegrationSpec.spec
+  describe "AFRP.Loop"        AFRP.LoopSpec.spec
+  describe "AFRP.Switch"      AFRP.SwitchSpec.spec
+  describe "AFRP.Parallel"    AFRP.ParallelSpec.spec
+  describe "AFRP.Noise"       AFRP.NoiseSpec.spec
+  describe "AFRP.Run"         AFRP.RunSpec.spec
+  describe "AFRP.Task"        AFRP.TaskSpec.spec
+  describe "AFRP.VectorSpace" AFRP.VectorSpaceSpec.spec
+  describe "AFRP.Geometry"    AFRP.GeometrySpec.spec
+  describe "optimiser"        AFRP.OptimiserSpec.spec
+  describe "reference model"  AFRP.ReferenceSpec.spec
+  describe "arrow laws"       AFRP.LawsSpec.spec
+  describe "the notes, section 2" AFRP.NotesSpec.spec
+  describe "benchmark networks" NetworksSpec.spec

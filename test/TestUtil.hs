@@ -1,0 +1,65 @@
+-- | Helpers shared by the specs: running signal functions on sample lists
+-- and comparing floating-point outputs.
+module TestUtil
+  ( runDt
+  , runSamples
+  , approx
+  , approxWith
+  , shouldApprox
+  , shouldApproxList
+  , PositiveDt (..)
+  , genSamples
+  ) where
+
+import           Test.Hspec
+import           Test.QuickCheck
+
+import           AFRP
+
+-- | Run with a constant time step: the first input is the sample at local
+-- time 0, each later one comes @dt@ after the previous.
+runDt :: DTime -> SF a b -> [a] -> [b]
+runDt _  _  []       = []
+runDt dt sf (a : as) = embed sf (a, [(dt, Just x) | x <- as])
+
+-- | Run on explicit samples; the time step of the first is ignored (it is
+-- the sample at local time 0).
+runSamples :: SF a b -> [(DTime, a)] -> [b]
+runSamples _  []            = []
+runSamples sf ((_, a) : as) = embed sf (a, [(dt, Just x) | (dt, x) <- as])
+
+-- | Equal within a relative and absolute tolerance of 1e-9.
+approx :: Double -> Double -> Bool
+approx = approxWith 1e-9
+
+-- | Equal within the given relative-and-absolute tolerance.
+approxWith :: Double -> Double -> Double -> Bool
+approxWith tol x y = abs (x - y) <= tol * max 1 (max (abs x) (abs y))
+
+-- | Expectation: two numbers are 'approx'.
+shouldApprox :: Double -> Double -> Expectation
+shouldApprox x y
+  | approx x y = pure ()
+  | otherwise  = expectationFailure ("expected " ++ show y ++ " but got " ++ show x)
+
+-- | Expectation: two lists of numbers have the same length and are
+-- pointwise 'approx'.
+shouldApproxList :: [Double] -> [Double] -> Expectation
+shouldApproxList xs ys
+  | length xs == length ys && and (zipWith approx xs ys) = pure ()
+  | otherwise = expectationFailure ("expected " ++ show ys ++ "\n but got " ++ show xs)
+
+-- | A random positive time step, between 0.001 and 1.
+newtype PositiveDt = PositiveDt DTime
+  deriving Show
+
+instance Arbitrary PositiveDt where
+  arbitrary = PositiveDt <$> choose (0.001, 1)
+  shrink (PositiveDt d) = [PositiveDt d' | d' <- [0.5, 0.25, 0.1], d' < d]
+
+-- | Random samples (time step, input), at least one, the first time step
+-- being irrelevant.
+genSamples :: Gen a -> Gen [(DTime, a)]
+genSamples g = do
+  n  <- choose (1, 40)
+  vectorOf n ((,) <$> choose (0.001, 1) <*> g)
