@@ -21,6 +21,12 @@ import qualified AFRP.RunSpec
 import qualified AFRP.SwitchSpec
 import qualified AFRP.TaskSpec
 import qualified AFRP.VectorSpaceSpec
+import qualified AFrob.AngleSpec
+import qualified AFrob.MergeableRecordSpec
+import qualified AFrob.RobotIOSpec
+import qualified AFrobRobotSim.NotesSection3Spec
+import qualified AFrobRobotSim.ShapesSpec
+import qualified AFrobRobotSim.SimulatorSpec
 import qualified NetworksSpec
 
 main :: IO ()
@@ -44,3 +50,9 @@ main = hspec $ do
   describe "arrow laws"       AFRP.LawsSpec.spec
   describe "the notes, section 2" AFRP.NotesSpec.spec
   describe "benchmark networks" NetworksSpec.spec
+  describe "AFrob.Angle"             AFrob.AngleSpec.spec
+  describe "AFrob.MergeableRecord"   AFrob.MergeableRecordSpec.spec
+  describe "AFrob.RobotIO"           AFrob.RobotIOSpec.spec
+  describe "AFrobRobotSim.Shapes"    AFrobRobotSim.ShapesSpec.spec
+  describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
+  describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec

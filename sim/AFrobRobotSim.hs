@@ -1,0 +1,68 @@
+-- |
+-- Module      : AFrobRobotSim
+-- Description : The simbot simulator: worlds, simbots, and the engine.
+--
+-- A program in the notes' style is
+--
+-- > import AFrob
+-- > import AFrobRobotSim
+-- >
+-- > world :: WorldTemplate
+-- > world = [OTSimbotA 1 (Point2 (-2) 0) 0, OTVWall (Point2 2 0)]
+-- >
+-- > rcA, rcB :: SimbotController
+-- > rcA rps = constant (mrFinalize (ddVelDiff 0.5 0.5))
+-- > rcB = rcA
+--
+-- and 'simulate' runs it purely: @simulate 0.01 world rcA rcB@ is the list
+-- of world snapshots, one every 0.01 s from time 0.
+module AFrobRobotSim
+  ( -- * Controllers and their input and output
+    SimbotController
+  , SimbotProperties (..)
+  , SimbotInput (..)
+  , SimbotOutput (..)
+  , DriveCommand (..)
+    -- * Worlds
+  , WorldTemplate
+  , ObjectTemplate (..)
+  , worldXMin
+  , worldYMin
+  , worldXMax
+  , worldYMax
+  , Bounds (..)
+  , notesBounds
+  , validateWorld
+  , validateWorldIn
+    -- * Dimensions and robot types
+  , wallLength
+  , wallThickness
+  , blockSide
+  , ballDiameter
+  , simbotDiameter
+  , RobotKind (..)
+  , kindType
+  , kindWheelBase
+  , kindWSMax
+  , kindAccMax
+    -- * Sensors
+  , rangeFinderMax
+  , trackerRange
+    -- * Physics parameters
+  , ballFriction
+  , ballRestitution
+    -- * The engine
+  , simulate
+  , simulateWith
+  , SimConfig (..)
+  , defaultSimConfig
+  , WorldState (..)
+  , RobotState (..)
+  , ControllerError (..)
+  ) where
+
+import           AFrobRobotSim.Physics   (ballFriction, ballRestitution)
+import           AFrobRobotSim.Robot
+import           AFrobRobotSim.Sensors   (rangeFinderMax, trackerRange)
+import           AFrobRobotSim.Simulator
+import           AFrobRobotSim.World

@@ -1,0 +1,223 @@
+{-# LANGUAGE BangPatterns        #-}
+{-# LANGUAGE ScopedTypeVariables #-}
+-- |
+-- Module      : AFrobRobotSim.Simulator
+-- Description : The pure, deterministic simulation engine.
+--
+-- 'simulate' turns a world template and the two controllers into a lazy
+-- list of snapshots, one per fixed time step, the first at time 0. At each
+-- step every robot's controller sees the same sample of the world (taken
+-- before anything moves), then the robots move (in template order), then
+-- the balls. The engine is pure Haskell: the same inputs give the same
+-- snapshots, bit for bit.
+module AFrobRobotSim.Simulator
+  ( -- * Running
+    simulate
+  , simulateWith
+  , SimConfig (..)
+  , defaultSimConfig
+    -- * Snapshots
+  , WorldState (..)
+  , RobotState (..)
+    -- * Failures
+  , ControllerError (..)
+  ) where
+
+import           Control.Exception       (Exception (..), SomeException, mapException)
+import           Data.Bits               (shiftR, xor)
+import           Data.List               (sortOn)
+import           Data.Word               (Word64)
+import           Text.Printf             (printf)
+
+import           AFRP
+import           AFrob.Angle             (normalizeAngle, normalizeHeading)
+import           AFrob.Dimensions
+import           AFrob.RobotIO           (BatteryStatus, HasRobotProperties (..))
+import           AFrobRobotSim.Physics
+import           AFrobRobotSim.Robot
+import           AFrobRobotSim.Sensors
+import           AFrobRobotSim.Shapes
+import           AFrobRobotSim.World
+
+-- | Settings of a simulation run.
+data SimConfig = SimConfig
+  { simDt             :: !DTime         -- ^ the fixed time step (s)
+  , simKeys           :: [(Time, Char)] -- ^ scripted key presses: each is down for the first sample at or after its time
+  , simSeed           :: !Int           -- ^ seed of the odometry noise
+  , simOdometryNoise  :: !Double        -- ^ relative odometry error per step (0 = exact odometry)
+  , simBounds         :: !Bounds        -- ^ the world's extent
+  } deriving (Show)
+
+-- | A time step of 0.01 s, no keys, exact odometry, the notes' 10 m world.
+defaultSimConfig :: SimConfig
+defaultSimConfig = SimConfig 0.01 [] 0 0 notesBounds
+
+-- | The state of the world at one instant.
+data WorldState = WorldState
+  { wsTime     :: !Time          -- ^ simulated time (step number times the time step)
+  , wsRobots   :: [RobotState]   -- ^ every robot, in template order
+  , wsBalls    :: [Position2]    -- ^ every ball's centre, in template order
+  , wsMessages :: [String]       -- ^ the console lines printed at this step
+  } deriving (Eq, Show)
+
+-- | The state of one robot at one instant.
+data RobotState = RobotState
+  { robotType     :: !RobotType
+  , robotId       :: !RobotId
+  , robotPos      :: !Position2      -- ^ true position of its centre
+  , robotHeading  :: !Heading        -- ^ true heading
+  , robotSpeed    :: !Speed          -- ^ translational speed
+  , robotStuck    :: !Bool
+  , robotBattery  :: !BatteryStatus
+  , robotCharge   :: !Double         -- ^ battery charge, 1 = full
+  , robotOdometry :: !Position2      -- ^ what its odometry reads
+  } deriving (Eq, Show)
+
+-- | A controller failed (threw an exception) while the simulation ran.
+data ControllerError = ControllerError
+  { ceRobotType :: RobotType
+  , ceRobotId   :: RobotId
+  , ceTime      :: Time
+  , ceCause     :: SomeException
+  } deriving (Show)
+
+instance Exception ControllerError where
+  displayException e = printf "the controller of %s %d failed at t = %.3f s: %s"
+    (ceRobotType e) (ceRobotId e) (ceTime e) (displayException (ceCause e))
+
+-- | @simulate dt world rcA rcB@: the run of @world@ with controller @rcA@
+-- for every SimbotA and @rcB@ for every SimbotB, at the fixed time step
+-- @dt@, with the defaults of 'defaultSimConfig' otherwise. An invalid
+-- world (see 'validateWorld') is an error listing every problem.
+simulate :: DTime -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
+simulate dt = simulateWith defaultSimConfig { simDt = dt }
+
+-- Per-robot bookkeeping that is not physics: its controller and odometry.
+data Agent = Agent
+  { agProps :: SimbotProperties
+  , agCtrl  :: Either (SF SimbotInput SimbotOutput) (FutureSF SimbotInput SimbotOutput)
+  , agOdo   :: !(Position2, Heading)
+  }
+
+data Engine = Engine
+  { enStep   :: !Int
+  , enRobots :: [Robot]
+  , enBalls  :: [Ball]
+  , enAgents :: [Agent]
+  , enKeys   :: [(Time, Char)]
+  , enRng    :: !Word64
+  }
+
+-- | 'simulate' with explicit settings.
+simulateWith :: SimConfig -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
+simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
+  Left errs -> error ("AFrobRobotSim.simulate: invalid world:\n  " ++ unlinesIndented errs)
+  Right ()
+    | not (simDt cfg > 0) -> error ("AFrobRobotSim.simulate: the time step must be positive, got "
+                                    ++ show (simDt cfg))
+    | otherwise -> run engine0
+  where
+    dt = simDt cfg
+    arena = Arena (map boxOf statics ++ boundaryBoxes (simBounds cfg))
+    statics = [ o | o <- world, isStatic o ]
+    robots0 = [ Robot k (otRId o) (otPos o) (normalizeHeading (otHdng o)) 0 False 1
+              | o <- world, Just k <- [robotKindOf o] ]
+    agents0 = [ Agent props (Left (ctrl props)) (rPos r, rHeading r)
+              | r <- robots0
+              , let props = SimbotProperties (rKind r) (rId r)
+                    ctrl  = if rKind r == SimbotA then rcA else rcB ]
+    balls0  = [ Ball (otPos o) zeroVector | o@OTBall {} <- world ]
+    engine0 = Engine 0 robots0 balls0 agents0 (sortOn fst (simKeys cfg)) (fromIntegral (simSeed cfg))
+
+    run en = snapshot : run en'
+      where
+        n      = enStep en
+        t      = fromIntegral n * dt
+        ctx    = SenseContext arena (enRobots en) (enBalls en)
+        (key, keys') = case enKeys en of
+          (tk, c) : rest | tk <= t + dt * 1e-6 -> (Just c, rest)
+          ks                                    -> (Nothing, ks)
+        stepped = [ stepAgent t a (senseRobot ctx i (agOdo a) key)
+                  | (i, a) <- zip [0 ..] (enAgents en) ]
+        outputs = map fst stepped
+        snapshot = WorldState
+          { wsTime     = t
+          , wsRobots   = zipWith robotState (enRobots en) (enAgents en)
+          , wsBalls    = map bPos (enBalls en)
+          , wsMessages = [ printf "[%.2f] %s.%d: %s" t (rpType (agProps a)) (rpId (agProps a)) m
+                         | (a, o) <- zip (enAgents en) outputs, m <- soMessages o ]
+          }
+        robots' = stepRobots dt arena (zip (enRobots en) (map soDrive outputs))
+        balls'  = stepBalls dt arena robots' (enBalls en)
+        (agents', rng') = updateOdometry (enRng en) (enRobots en) robots'
+                            [ a { agCtrl = Right fut } | (a, (_, fut)) <- zip (enAgents en) stepped ]
+        en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq`
+              en { enStep = n + 1, enRobots = robots', enBalls = balls', enAgents = agents'
+                 , enKeys = keys', enRng = rng' }
+
+    stepAgent t a input =
+      let props = agProps a
+          res = case agCtrl a of
+            Left sf   -> evalAtZero sf input
+            Right fut -> evalAt fut dt input
+          forced (o, fut) = fut `seq` soDrive o `seq` forceList (soMessages o) `seq` (o, fut)
+      in mapException (blame props t) (forced res)
+
+    blame props t (e :: SomeException) = case fromException e of
+      Just (ce :: ControllerError) -> ce
+      Nothing                      -> ControllerError (rpType props) (rpId props) t e
+
+    robotState r a = RobotState
+      { robotType = kindType (rKind r), robotId = rId r, robotPos = rPos r
+      , robotHeading = rHeading r, robotSpeed = rSpeed r, robotStuck = rStuck r
+      , robotBattery = batteryStatusOf (rCharge r), robotCharge = rCharge r
+      , robotOdometry = fst (agOdo a) }
+
+    noise = simOdometryNoise cfg
+    -- Exact odometry is the true pose; noisy odometry integrates the true
+    -- motion with a random relative error on each step's distance and turn.
+    updateOdometry rng olds news as
+      | noise == 0 = ([ a { agOdo = (rPos r, rHeading r) } | (a, r) <- zip as news ], rng)
+      | otherwise  = go rng (zip3 olds news as) []
+      where
+        go g [] acc = (reverse acc, g)
+        go g ((r0, r1, a) : rest) acc =
+          let (u1, g1) = uniform g
+              (u2, g2) = uniform g1
+              (p, h)   = agOdo a
+              dTrue    = rPos r1 .-. rPos r0
+              turn     = normalizeAngle (rHeading r1 - rHeading r0)
+              h'       = normalizeHeading (h + turn * (1 + noise * u2))
+              d'       = vector2Rotate (h - rHeading r0) ((1 + noise * u1) *^ dTrue)
+          in go g2 rest (a { agOdo = (p .+^ d', h') } : acc)
+
+isStatic :: ObjectTemplate -> Bool
+isStatic o = case o of
+  OTBlock {} -> True
+  OTVWall {} -> True
+  OTHWall {} -> True
+  _          -> False
+
+boxOf :: ObjectTemplate -> Box
+boxOf o = let (hw, hh) = objectHalfSize o in boxAround (otPos o) (2 * hw) (2 * hh)
+
+-- The boundary: four thick boxes just outside the world.
+boundaryBoxes :: Bounds -> [Box]
+boundaryBoxes (Bounds x0 y0 x1 y1) =
+  [ Box (x0 - 1) (y0 - 1) x0 (y1 + 1), Box x1 (y0 - 1) (x1 + 1) (y1 + 1)
+  , Box (x0 - 1) (y0 - 1) (x1 + 1) y0, Box (x0 - 1) y1 (x1 + 1) (y1 + 1) ]
+
+forceList :: [a] -> ()
+forceList = foldr seq ()
+
+unlinesIndented :: [String] -> String
+unlinesIndented = foldr1 (\a b -> a ++ "\n  " ++ b)
+
+-- SplitMix64: a uniform Double in [-1, 1) and the next state.
+uniform :: Word64 -> (Double, Word64)
+uniform s =
+  let s' = s + 0x9E3779B97F4A7C15
+      z1 = (s' `xor` (s' `shiftR` 30)) * 0xBF58476D1CE4E5B9
+      z2 = (z1 `xor` (z1 `shiftR` 27)) * 0x94D049BB133111EB
+      z3 = z2 `xor` (z2 `shiftR` 31)
+  in (fromIntegral (z3 `shiftR` 11) / 4503599627370496 - 1, s')

@@ -1,0 +1,228 @@
+{-# LANGUAGE Arrows #-}
+-- | The simulation engine, checked against hand-computed physics.
+module AFrobRobotSim.SimulatorSpec (spec) where
+
+import           Control.Exception (ErrorCall (..), evaluate)
+import           Data.List         (isInfixOf)
+import           Test.Hspec        hiding (after)
+
+import           AFrob             hiding (forAll)
+import           AFrobRobotSim
+
+-- | The snapshot at (about) time t of a run with step dt.
+at :: DTime -> Double -> [WorldState] -> WorldState
+at dt t states = states !! round (t / dt)
+
+robot1 :: WorldState -> RobotState
+robot1 = head . wsRobots
+
+px, py :: RobotState -> Double
+px r = let Point2 x _ = robotPos r in x
+py r = let Point2 _ y = robotPos r in y
+
+driveAt :: Velocity -> Velocity -> SimbotController
+driveAt vl vr _ = constant (mrFinalize (ddVelDiff vl vr))
+
+idle :: SimbotController
+idle _ = constant (mrFinalize ddBrake)
+
+-- | A controller that prints, at every sample, the show of a reading.
+reporting :: Show x => (SimbotInput -> x) -> SimbotController
+reporting f _ = arr (\i -> mrFinalize (ddBrake `mrMerge` tcoPrintMessage (Event (show (f i)))))
+
+-- | The reading printed at the first sample by 'reporting'.
+firstReading :: Read x => [WorldState] -> x
+firstReading states = read (drop 2 (dropWhile (/= ':') (head (wsMessages (head states)))))
+
+within :: Double -> Double -> Double -> Bool
+within tol expected x = abs (x - expected) <= tol
+
+spec :: Spec
+spec = do
+  describe "kinematics" $ do
+    let world = [OTSimbotA 1 (Point2 (-4) 0) 0]
+        run   = simulate 0.01 world (driveAt 0.5 0.5) idle
+    it "ramps up at the maximum acceleration (0.2 m/s^2 for a SimbotA)" $ do
+      robotSpeed (robot1 (at 0.01 1 run)) `shouldSatisfy` within 1e-9 0.2
+      let speeds = map (robotSpeed . robot1) (take 400 run)
+      maximum (zipWith (-) (drop 1 speeds) speeds) `shouldSatisfy` (<= 0.2 * 0.01 + 1e-12)
+    it "then covers v * t in a straight line" $ do
+      -- ramp: 2.5 s to 0.5 m/s covering 0.625 m; then 0.5 m/s
+      px (robot1 (at 0.01 6 run)) `shouldSatisfy` within 1e-6 (-4 + 0.625 + 0.5 * 3.5)
+      py (robot1 (at 0.01 6 run)) `shouldSatisfy` within 1e-12 0
+    it "clamps each wheel to the maximum wheel speed" $ do
+      let fast = simulate 0.01 world (driveAt 10 10) idle
+      robotSpeed (robot1 (at 0.01 7 fast)) `shouldSatisfy` within 1e-9 1.0
+    it "turns on a circle of radius v / w with ddVelTR" $ do
+      let tr    = simulate 0.01 [OTSimbotB 1 (Point2 0 0) 0] idle (\_ -> constant (mrFinalize (ddVelTR 0.5 0.5)))
+          after2 = [ robotPos (robot1 s) | s <- take 1300 (drop 200 tr) ]
+          (c, r) = circleThrough (after2 !! 0) (after2 !! 400) (after2 !! 800)
+      r `shouldSatisfy` within 1e-6 1.0
+      all (\p -> within 1e-6 1.0 (norm (p .-. c))) after2 `shouldBe` True
+    it "ignores non-finite wheel speeds" $ do
+      let nan = simulate 0.01 world (driveAt (0 / 0) (1 / 0)) idle
+          r   = robot1 (at 0.01 2 nan)
+      robotPos r `shouldBe` Point2 (-4) 0
+      robotSpeed r `shouldBe` 0
+
+  describe "collisions" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0, OTVWall (Point2 2 0)]
+        ouch _ = proc sbi -> do
+          e <- rsStuck -< sbi
+          returnA -< mrFinalize (ddVelDiff 1 1 `mrMerge` tcoPrintMessage (tag e "Ouch!!"))
+        run = take 1500 (simulate 0.01 world ouch idle)
+    it "a robot driving at a wall stops short of it, and stays stuck" $ do
+      let r = robot1 (last run)
+      px r `shouldSatisfy` (<= 1.95 - 0.25)
+      px r `shouldSatisfy` (>= 1.95 - 0.25 - 1e-6)
+      robotStuck r `shouldBe` True
+      robotSpeed r `shouldBe` 0
+    it "with exactly one stuck event" $
+      length [ m | s <- run, m <- wsMessages s, "Ouch!!" `isInfixOf` m ] `shouldBe` 1
+    it "never tunnels through a thin wall, even with huge time steps" $ do
+      let big = take 40 (simulate 0.5 [OTSimbotB 1 (Point2 0 0) 0, OTVWall (Point2 2 0)] idle (driveAt 2 2))
+      all (\s -> px (robot1 s) <= 1.95 - 0.25) big `shouldBe` True
+    it "two robots driving at each other stop without overlapping" $ do
+      let duel = simulate 0.01 [OTSimbotA 1 (Point2 (-1) 0) 0, OTSimbotA 2 (Point2 1 0) pi]
+                          (driveAt 1 1) idle
+      case wsRobots (at 0.01 8 duel) of
+        [a, b] -> do
+          norm (robotPos a .-. robotPos b) `shouldSatisfy` (>= 0.5 - 1e-6)
+          (robotStuck a, robotStuck b) `shouldBe` (True, True)
+        rs -> expectationFailure ("expected two robots, got " ++ show rs)
+    it "the boundary walls stop a robot" $ do
+      let edge' = simulate 0.01 [OTSimbotB 1 (Point2 3 0) 0] idle (driveAt 2 2)
+      px (robot1 (at 0.01 6 edge')) `shouldSatisfy` within 1e-6 4.75
+
+  describe "range finder" $ do
+    let world = [ OTSimbotA 1 (Point2 0 0) 0, OTVWall (Point2 2 0), OTBlock (Point2 0 2)
+                , OTSimbotB 1 (Point2 0 (-1.5)) 0 ]
+        angles = [0, pi / 2, pi, -pi / 2, atan2 1.75 0.2, pi / 4]
+        readings = firstReading (simulate 0.01 world (reporting (\i -> map (rfRange i) angles)) idle)
+    it "measures from the robot's edge to the true shapes" $
+      and (zipWith (within 1e-9) [1.7, 1.5, 3, 1.0, sqrt (0.2 ^ (2 :: Int) + 1.75 ^ (2 :: Int)) - 0.25, 3] readings)
+        `shouldBe` True
+    it "reports its maximum range" $
+      firstReading (simulate 0.01 world (reporting rfMaxRange) idle) `shouldBe` (3 :: Double)
+    it "rfFront, rfLeft, rfBack and rfRight look at 0, pi/2, pi and -pi/2" $
+      firstReading (simulate 0.01 world (reporting (\i -> [rfFront i, rfLeft i, rfBack i, rfRight i])) idle)
+        `shouldBe` take 4 (readings :: [Double])
+
+  describe "animate object tracker" $ do
+    let world = [ OTSimbotA 1 (Point2 0 0) (pi / 2), OTSimbotB 7 (Point2 1 1) 0
+                , OTBall (Point2 (-2) 0), OTSimbotB 8 (Point2 4.5 4.5) 0 ]
+    it "gives other robots within range by relative angle and distance" $ do
+      case firstReading (simulate 0.01 world (reporting aotOtherRobots) idle) of
+        [(ty, i, a, d)] -> do
+          (ty, i) `shouldBe` ("SimbotB", 7 :: Int)
+          a `shouldSatisfy` within 1e-12 (-pi / 4)
+          d `shouldSatisfy` within 1e-12 (sqrt 2)
+        other -> expectationFailure ("expected one robot, got " ++ show other)
+    it "gives balls within range" $ do
+      case firstReading (simulate 0.01 world (reporting aotBalls) idle) :: [(Double, Double)] of
+        [(a, d)] -> do
+          a `shouldSatisfy` within 1e-12 (pi / 2)
+          d `shouldSatisfy` within 1e-12 2
+        other -> expectationFailure ("expected one ball, got " ++ show other)
+
+  describe "balls" $ do
+    let world = [OTSimbotB 1 (Point2 (-1) 0) 0, OTBall (Point2 0 0), OTVWall (Point2 2.5 0)]
+        kick = take 1000 (simulate 0.01 world idle (\_ -> (constant (mrFinalize (ddVelDiff 1 1)) &&& after 2.0 ())
+                                                        `switch` const (constant (mrFinalize ddBrake))))
+        ballX s = case wsBalls s of
+          Point2 x _ : _ -> x
+          []             -> error "no ball"
+    it "are kicked by a robot, bounce off a wall and slow down" $ do
+      let xs = map ballX kick
+          far = maximum xs
+      far `shouldSatisfy` (<= 2.45 - 0.15 + 1e-6)       -- never inside the wall
+      far `shouldSatisfy` (>= 2.45 - 0.15 - 1e-3)       -- but reached it
+      last xs `shouldSatisfy` (< far - 0.1)              -- and came back
+    it "collide elastically with each other" $ do
+      let two = take 600 (simulate 0.01 [OTSimbotB 1 (Point2 (-1) 0) 0, OTBall (Point2 0 0), OTBall (Point2 1 0)] idle
+                            (\_ -> (constant (mrFinalize (ddVelDiff 1 1)) &&& after 2.0 ())
+                                     `switch` const (constant (mrFinalize (ddVelDiff (-1) (-1))))))
+      case wsBalls (last two) of
+        [Point2 x1 _, Point2 x2 _] -> do
+          x2 `shouldSatisfy` (> 1.5)          -- the second ball was hit and moved on
+          x1 `shouldSatisfy` (< x2 - 0.3)     -- the first stayed behind
+        other -> expectationFailure ("expected two balls, got " ++ show other)
+
+  describe "battery" $
+    it "goes low and then critical on a long run at full effort" $ do
+      let run = simulate 0.1 [OTSimbotA 1 (Point2 0 0) 0] (\_ -> constant (mrFinalize (ddVelTR 0 4))) idle
+          status t = robotBattery (robot1 (at 0.1 t run))
+      map status [190, 210, 250, 265] `shouldBe` [BSHigh, BSLow, BSLow, BSCritical]
+
+  describe "keyboard and console" $ do
+    it "delivers scripted keys through tciKey, once per press" $ do
+      let keys _ = proc sbi -> do
+            k <- tciKeyDown -< sbi
+            returnA -< mrFinalize (tcoPrintMessage (fmap (: []) k))
+          run = take 200 (simulateWith defaultSimConfig { simKeys = [(0.5, 'a'), (1.0, 'b')] }
+                            [OTSimbotA 1 (Point2 0 0) 0] keys idle)
+      [ (wsTime s, m) | s <- run, m <- wsMessages s ] `shouldBe`
+        [(0.5, "[0.50] SimbotA.1: a"), (1.0, "[1.00] SimbotA.1: b")]
+
+  describe "odometry" $ do
+    let world = [OTSimbotA 1 (Point2 (-3) 0) 0]
+        run cfg = simulateWith cfg world (driveAt 0.4 0.5) idle
+    it "is exact by default" $
+      robotOdometry (robot1 (at 0.01 20 (run defaultSimConfig)))
+        `shouldBe` robotPos (robot1 (at 0.01 20 (run defaultSimConfig)))
+    it "drifts with noise, reproducibly from the seed" $ do
+      let noisy s = robotOdometry (robot1 (at 0.01 20 (run defaultSimConfig { simOdometryNoise = 0.05, simSeed = s })))
+          truth   = robotPos (robot1 (at 0.01 20 (run defaultSimConfig)))
+      norm (noisy 1 .-. truth) `shouldSatisfy` (> 1e-4)
+      noisy 1 `shouldBe` noisy 1
+      noisy 1 `shouldNotBe` noisy 2
+
+  describe "determinism" $
+    it "a 10-robot, 60-second run repeated gives identical snapshots" $ do
+      let world = [ OTSimbotA i (Point2 (fromIntegral i - 3) (-2)) (fromIntegral i) | i <- [1 .. 5] ]
+               ++ [ OTSimbotB i (Point2 (fromIntegral i - 3) 2) (negate (fromIntegral i)) | i <- [1 .. 5] ]
+               ++ [OTBall (Point2 0 0), OTBlock (Point2 3 3), OTHWall (Point2 (-3) 3.5)]
+          wander rps = proc sbi -> do
+            t <- localTime -< ()
+            returnA -< mrFinalize (ddVelTR (rpWSMax rps / 2) (sin (t + fromIntegral (rpId rps)))
+                                   `mrMerge` tcoPrintMessage (tag (if rfFront sbi < 0.3 then Event () else NoEvent) "near"))
+          one = take 6001 (simulate 0.01 world wander wander)
+          two = take 6001 (simulateWith defaultSimConfig world wander wander)
+      one == two `shouldBe` True
+      map robotPos (wsRobots (last one)) `shouldNotBe` map robotPos (wsRobots (head one))
+
+  describe "bad input" $ do
+    it "rejects a robot outside the walls, naming it" $
+      validateWorld [OTSimbotA 3 (Point2 4.9 0) 0] `shouldSatisfy` mentions "SimbotA 3"
+    it "rejects two robots in one place" $
+      validateWorld [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 0.1 0) 0] `shouldSatisfy` mentions "overlap"
+    it "rejects a duplicate id within a type" $
+      validateWorld [OTSimbotB 2 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 0) 0] `shouldSatisfy` mentions "SimbotB robots have the id 2"
+    it "rejects a NaN coordinate" $
+      validateWorld [OTBall (Point2 (0 / 0) 0)] `shouldSatisfy` mentions "ball"
+    it "accepts a good world" $
+      validateWorld [OTSimbotA 1 (Point2 0 0) 0, OTSimbotA 2 (Point2 1 0) 0, OTBall (Point2 (-2) 1)] `shouldBe` Right ()
+    it "simulate refuses an invalid world with every problem listed" $
+      evaluate (head (simulate 0.01 [OTSimbotA 1 (Point2 9 0) 0, OTBlock (Point2 (0 / 0) 0)] idle idle))
+        `shouldThrow` (\(ErrorCall msg) -> "SimbotA 1" `isInfixOf` msg && "block" `isInfixOf` msg)
+    it "reports a controller that throws with its type, id and the time" $ do
+      let bad _ = proc _ -> do
+            t <- localTime -< ()
+            let e = if t >= 1 then merge (Event "a") (Event "b") else NoEvent
+            returnA -< mrFinalize (ddBrake `mrMerge` tcoPrintMessage e)
+          run = simulate 0.01 [OTSimbotA 1 (Point2 0 0) 0, OTSimbotA 4 (Point2 2 0) 0]
+                         (\rps -> if rpId rps == 4 then bad rps else idle rps) idle
+      evaluate (length (concatMap wsMessages (take 300 run)))
+        `shouldThrow` (\e -> ceRobotType e == "SimbotA" && ceRobotId e == 4 && within 1e-9 1 (ceTime e))
+  where
+    mentions s = either (any (s `isInfixOf`)) (const False)
+
+-- The centre and radius of the circle through three points.
+circleThrough :: Point2 Double -> Point2 Double -> Point2 Double -> (Point2 Double, Double)
+circleThrough (Point2 ax ay) (Point2 bx by) (Point2 cx cy) =
+  let d  = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+      sq x y = x * x + y * y
+      ux = (sq ax ay * (by - cy) + sq bx by * (cy - ay) + sq cx cy * (ay - by)) / d
+      uy = (sq ax ay * (cx - bx) + sq bx by * (ax - cx) + sq cx cy * (bx - ax)) / d
+      c  = Point2 ux uy
+  in (c, norm (Point2 ax ay .-. c))
