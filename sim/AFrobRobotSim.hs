@@ -14,11 +14,26 @@
 -- > rcA rps = constant (mrFinalize (ddVelDiff 0.5 0.5))
 -- > rcB = rcA
 --
--- and 'simulate' runs it purely: @simulate 0.01 world rcA rcB@ is the list
--- of world snapshots, one every 0.01 s from time 0.
+-- > main :: IO ()
+-- > main = runSim (Just world) rcA rcB
+--
+-- 'runSim' runs it headless from the command line (frames, console
+-- messages, a summary; see "AFrobRobotSim.Options" for the flags), and
+-- 'simulate' runs it purely: @simulate 0.01 world rcA rcB@ is the list of
+-- world snapshots, one every 0.01 s from time 0.
 module AFrobRobotSim
-  ( -- * Controllers and their input and output
-    SimbotController
+  ( -- * Running a program
+    runSim
+  , runSimWith
+  , SimOptions (..)
+  , defaultSimOptions
+  , Command (..)
+  , parseSimArgs
+  , parseKeys
+  , usage
+  , defaultWorld
+    -- * Controllers and their input and output
+  , SimbotController
   , SimbotProperties (..)
   , SimbotInput (..)
   , SimbotOutput (..)
@@ -59,10 +74,27 @@ module AFrobRobotSim
   , WorldState (..)
   , RobotState (..)
   , ControllerError (..)
+    -- * World files
+  , parseWorld
+  , renderWorld
+  , readWorldFile
+    -- * Pictures
+  , Scene (..)
+  , RenderStyle (..)
+  , defaultRenderStyle
+  , frameSize
+  , renderPPM
+  , renderSVG
   ) where
 
+import           AFrobRobotSim.DefaultWorld
+import           AFrobRobotSim.Options
 import           AFrobRobotSim.Physics   (ballFriction, ballRestitution)
+import           AFrobRobotSim.Render    (RenderStyle (..), Scene (..), defaultRenderStyle, frameSize,
+                                          renderPPM, renderSVG)
+import           AFrobRobotSim.Run
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors   (rangeFinderMax, trackerRange)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
+import           AFrobRobotSim.WorldFile

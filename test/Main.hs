@@ -25,8 +25,15 @@ import qualified AFrob.AngleSpec
 import qualified AFrob.MergeableRecordSpec
 import qualified AFrob.RobotIOSpec
 import qualified AFrobRobotSim.NotesSection3Spec
+import qualified AFrobRobotSim.RenderSpec
+import qualified AFrobRobotSim.RunSpec
 import qualified AFrobRobotSim.ShapesSpec
+import qualified Examples.Exercises1to6Spec
+import qualified Examples.Exercises7to13Spec
+import qualified Examples.Section2Spec
+import qualified Examples.Section3Spec
 import qualified AFrobRobotSim.SimulatorSpec
+import qualified AFrobRobotSim.WorldFileSpec
 import qualified NetworksSpec
 
 main :: IO ()
@@ -56,3 +63,10 @@ main = hspec $ do
   describe "AFrobRobotSim.Shapes"    AFrobRobotSim.ShapesSpec.spec
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec
+  describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec
+  describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec
+  describe "AFrobRobotSim.Run"       AFrobRobotSim.RunSpec.spec
+  describe "examples: section 2"     Examples.Section2Spec.spec
+  describe "examples: section 3"     Examples.Section3Spec.spec
+  describe "exercises 1-6"           Examples.Exercises1to6Spec.spec
+  describe "exercises 7-13"          Examples.Exercises7to13Spec.spec

@@ -21,6 +21,19 @@
 -- 0. A signal function that is /frozen/ by a k-switch or a parallel switch
 -- is modelled by replaying its whole history ('freeze').
 --
+-- Every definition is causal and /productive/: output @k@ needs only
+-- samples @0..k@ (their spine and, where the semantics says so, their
+-- values), so reference networks can be closed into feedback loops
+-- ('loop', 'loopPre', 'loopIntegral') exactly where the library's can. In
+-- particular the one-sample and time delays, the d-forms of the hybrid
+-- combinators and 'delayEventCat' never look at the current input, and the
+-- delayed switches emit their output before looking at their event.
+--
+-- Integrals and derivatives are computed in 'Double' with the textbook
+-- formula of the library's documentation (left / right rectangle,
+-- trapezoid, difference quotient), so on a single combinator they agree
+-- with the library to the last bit or nearly.
+--
 -- Names are those of the library; import this module qualified.
 module Reference
   ( -- * The model

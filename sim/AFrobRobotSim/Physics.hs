@@ -47,6 +47,7 @@
 module AFrobRobotSim.Physics
   ( -- * State
     Arena (..)
+  , arenaOf
   , Robot (..)
   , Ball (..)
   , robotVelocity
@@ -71,6 +72,27 @@ import           AFrobRobotSim.World
 
 -- | The static part of a world: its obstacles, the boundary included.
 newtype Arena = Arena { arenaBoxes :: [Box] }
+
+-- | The arena of a world: its walls and blocks, and four thick boxes just
+-- outside its bounds.
+arenaOf :: Bounds -> WorldTemplate -> Arena
+arenaOf bounds world = Arena (map boxOf (filter isStatic world) ++ boundaryBoxes bounds)
+
+isStatic :: ObjectTemplate -> Bool
+isStatic o = case o of
+  OTBlock {} -> True
+  OTVWall {} -> True
+  OTHWall {} -> True
+  _          -> False
+
+boxOf :: ObjectTemplate -> Box
+boxOf o = let (hw, hh) = objectHalfSize o in boxAround (otPos o) (2 * hw) (2 * hh)
+
+-- The boundary: four thick boxes just outside the world.
+boundaryBoxes :: Bounds -> [Box]
+boundaryBoxes (Bounds x0 y0 x1 y1) =
+  [ Box (x0 - 1) (y0 - 1) x0 (y1 + 1), Box x1 (y0 - 1) (x1 + 1) (y1 + 1)
+  , Box (x0 - 1) (y0 - 1) (x1 + 1) y0, Box (x0 - 1) y1 (x1 + 1) (y1 + 1) ]
 
 -- | A simbot's physical state.
 data Robot = Robot

@@ -20,6 +20,7 @@
 -- nearest first.
 module AFrobRobotSim.Sensors
   ( senseRobot
+  , rangeReading
   , rangeFinderMax
   , trackerRange
   , SenseContext (..)
@@ -74,11 +75,19 @@ senseRobot ctx i (odoPos, odoHead) key = SimbotInput
     p      = rPos me
     polar q = let (d, th) = vector2RhoTheta (q .-. p)
               in (normalizeAngle (th - rHeading me), d)
-    rangeAt a =
-      let dir  = vector2Polar 1 (rHeading me + a)
-          hits = [ t | b <- arenaBoxes (scArena ctx), Just t <- [rayBox p dir b] ]
-              ++ [ t | o <- others, Just t <- [rayCircle p dir (rPos o) (simbotDiameter / 2)] ]
-          nearest = minimum (rangeFinderMax + simbotDiameter / 2 : hits)
-      in if isNaN a || isInfinite a
-           then rangeFinderMax
-           else max 0 (min rangeFinderMax (nearest - simbotDiameter / 2))
+    rangeAt = rangeReading (scArena ctx) (map rPos others) p (rHeading me)
+
+-- | The range finder's reading for a robot at a position and heading,
+-- among the given other robots' centres, in the direction @a@ relative to
+-- the heading (see the module documentation). A non-finite angle reads
+-- 'rangeFinderMax'.
+rangeReading :: Arena -> [Position2] -> Position2 -> Heading -> Angle -> Distance
+rangeReading arena others p heading a
+  | isNaN a || isInfinite a = rangeFinderMax
+  | otherwise               = max 0 (min rangeFinderMax (nearest - radius))
+  where
+    radius  = simbotDiameter / 2
+    dir     = vector2Polar 1 (heading + a)
+    hits    = [ t | b <- arenaBoxes arena, Just t <- [rayBox p dir b] ]
+           ++ [ t | q <- others, Just t <- [rayCircle p dir q radius] ]
+    nearest = minimum (rangeFinderMax + radius : hits)

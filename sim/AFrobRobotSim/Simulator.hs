@@ -36,7 +36,6 @@ import           AFrob.RobotIO           (BatteryStatus, HasRobotProperties (..)
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
-import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.World
 
 -- | Settings of a simulation run.
@@ -46,11 +45,16 @@ data SimConfig = SimConfig
   , simSeed           :: !Int           -- ^ seed of the odometry noise
   , simOdometryNoise  :: !Double        -- ^ relative odometry error per step (0 = exact odometry)
   , simBounds         :: !Bounds        -- ^ the world's extent
-  } deriving (Show)
+  , simBallRule       :: Time -> [Position2] -> Maybe [Position2]
+    -- ^ a referee: after each step, given the time and the balls' new
+    -- positions, 'Just' new positions puts the balls there, at rest (for
+    -- example the centre mark after a goal); 'Nothing' leaves them be
+  }
 
--- | A time step of 0.01 s, no keys, exact odometry, the notes' 10 m world.
+-- | A time step of 0.01 s, no keys, exact odometry, the notes' 10 m world,
+-- no referee.
 defaultSimConfig :: SimConfig
-defaultSimConfig = SimConfig 0.01 [] 0 0 notesBounds
+defaultSimConfig = SimConfig 0.01 [] 0 0 notesBounds (\_ _ -> Nothing)
 
 -- | The state of the world at one instant.
 data WorldState = WorldState
@@ -118,8 +122,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
     | otherwise -> run engine0
   where
     dt = simDt cfg
-    arena = Arena (map boxOf statics ++ boundaryBoxes (simBounds cfg))
-    statics = [ o | o <- world, isStatic o ]
+    arena = arenaOf (simBounds cfg) world
     robots0 = [ Robot k (otRId o) (otPos o) (normalizeHeading (otHdng o)) 0 False 1
               | o <- world, Just k <- [robotKindOf o] ]
     agents0 = [ Agent props (Left (ctrl props)) (rPos r, rHeading r)
@@ -148,7 +151,10 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
                          | (a, o) <- zip (enAgents en) outputs, m <- soMessages o ]
           }
         robots' = stepRobots dt arena (zip (enRobots en) (map soDrive outputs))
-        balls'  = stepBalls dt arena robots' (enBalls en)
+        moved   = stepBalls dt arena robots' (enBalls en)
+        balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
+          Nothing -> moved
+          Just ps -> [ Ball q zeroVector | q <- ps ]
         (agents', rng') = updateOdometry (enRng en) (enRobots en) robots'
                             [ a { agCtrl = Right fut } | (a, (_, fut)) <- zip (enAgents en) stepped ]
         en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq`
@@ -190,22 +196,6 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
               h'       = normalizeHeading (h + turn * (1 + noise * u2))
               d'       = vector2Rotate (h - rHeading r0) ((1 + noise * u1) *^ dTrue)
           in go g2 rest (a { agOdo = (p .+^ d', h') } : acc)
-
-isStatic :: ObjectTemplate -> Bool
-isStatic o = case o of
-  OTBlock {} -> True
-  OTVWall {} -> True
-  OTHWall {} -> True
-  _          -> False
-
-boxOf :: ObjectTemplate -> Box
-boxOf o = let (hw, hh) = objectHalfSize o in boxAround (otPos o) (2 * hw) (2 * hh)
-
--- The boundary: four thick boxes just outside the world.
-boundaryBoxes :: Bounds -> [Box]
-boundaryBoxes (Bounds x0 y0 x1 y1) =
-  [ Box (x0 - 1) (y0 - 1) x0 (y1 + 1), Box x1 (y0 - 1) (x1 + 1) (y1 + 1)
-  , Box (x0 - 1) (y0 - 1) (x1 + 1) y0, Box (x0 - 1) y1 (x1 + 1) (y1 + 1) ]
 
 forceList :: [a] -> ()
 forceList = foldr seq ()

@@ -15,17 +15,25 @@
 -- Integrals and derivatives are written with the same floating-point
 -- formula in both, so single combinators are compared with 'approx'
 -- (1e-9, relative and absolute). Random networks are compared within 1e-6:
--- a one-ulp difference in a time or a time step (inside 'left', the
--- reference's gap is the exact elapsed time rounded once, the library's a
--- running floating-point sum) can be amplified by a chain of derivatives
--- and products, and 1e-6 still catches any semantic difference (a sample
--- shifted, an event lost), which changes values at the percent level.
+-- a one-ulp difference in a local time can be amplified by a chain of
+-- derivatives (division by steps down to 0.001) and products, and 1e-6
+-- still catches any semantic difference (a sample shifted, an event lost,
+-- a frozen signal function resumed with the wrong step), which changes
+-- values at the percent level.
 --
 -- Time-triggered events are compared exactly. Random time steps are drawn
 -- either uniformly from [0.001, 1] (no exact ties with thresholds) or from
 -- {1/8, 1/4, 1/2, 1} with thresholds that are multiples of 1/8 (exact ties,
 -- computed exactly by both sides), so the inclusive @>=@ of the timing
 -- rules is exercised.
+--
+-- Further groups check that the primitives documented as not evaluating
+-- their current input (and the decoupled switches) can close feedback
+-- loops, and that the library and the reference both reproduce the
+-- examples of the library's documentation and Yampa's regression examples.
+--
+-- Every property is guarded by a 5 s timeout ('within'), so a signal
+-- function stuck on its own output fails instead of hanging the suite.
 module AFRP.ReferenceSpec (spec) where
 
 import           Test.Hspec            hiding (after)
@@ -58,6 +66,9 @@ instance Close Bool where
 
 instance Close () where
   closeWith _ _ _ = True
+
+instance Close Char where
+  closeWith _ = (==)
 
 instance (Close a, Close b) => Close (a, b) where
   closeWith tol (a, b) (c, d) = closeWith tol a c && closeWith tol b d
@@ -542,9 +553,11 @@ spec = do
   delaySpec
   integrationSpec
   loopSpec
+  decoupledSpec
   switchSpec
   parallelSpec
   networkSpec
+  examplesSpec
 
 basicSpec :: Spec
 basicSpec = describe "arrow combinators and basic signal functions" $ do
@@ -790,6 +803,65 @@ loopSpec = describe "feedback loops" $ do
                                         Ref.>>> Ref.arr (\y -> (y, clampD y))))
                      xs
 
+-- | The primitives documented as not evaluating their current input can
+-- close a feedback loop on their own: the loop's fed-back value reaches
+-- the body only through them.
+decoupledSpec :: Spec
+decoupledSpec = describe "decoupled primitives close feedback loops" $ do
+  it "dHold" $ property $ forAll genC $ \c0 -> forSamples genD $ \xs ->
+    agreeApprox (loop (second (dHold c0) >>> arr (\(x, h) -> (x + h, ev x (0.5 * x + 0.5 * h)))))
+                (Ref.loop (Ref.second (Ref.dHold c0) Ref.>>> Ref.arr (\(x, h) -> (x + h, ev x (0.5 * x + 0.5 * h)))))
+                xs
+
+  it "dTrackAndHold" $ property $ forAll genC $ \c0 -> forSamples genD $ \xs ->
+    agreeApprox (loop (second (dTrackAndHold c0) >>> arr (\(x, h) -> (x - h, mb x (x + 0.5 * h)))))
+                (Ref.loop (Ref.second (Ref.dTrackAndHold c0) Ref.>>> Ref.arr (\(x, h) -> (x - h, mb x (x + 0.5 * h)))))
+                xs
+
+  it "dAccumHold" $ property $ forAll genC $ \c0 -> forSamples genD $ \xs ->
+    agreeApprox (loop (second (dAccumHold c0) >>> arr (\(x, h) -> (h, ev x (\a -> clampD (a + x + 0.1 * h))))))
+                (Ref.loop (Ref.second (Ref.dAccumHold c0)
+                           Ref.>>> Ref.arr (\(x, h) -> (h, ev x (\a -> clampD (a + x + 0.1 * h))))))
+                xs
+
+  it "dAccumHoldBy" $ property $ forAll genC $ \c0 -> forSamples genD $ \xs ->
+    agreeApprox (loop (second (dAccumHoldBy (\a d -> clampD (a + d)) c0) >>> arr (\(x, h) -> (h, ev x (x - 0.5 * h)))))
+                (Ref.loop (Ref.second (Ref.dAccumHoldBy (\a d -> clampD (a + d)) c0)
+                           Ref.>>> Ref.arr (\(x, h) -> (h, ev x (x - 0.5 * h)))))
+                xs
+
+  it "delay" $ property $ forAll genPeriod $ \q -> forAll genC $ \c0 -> forSamples genD $ \xs ->
+    agreeApprox (loop (second (delay q c0) >>> arr (\(x, d) -> (x + d, clampD (x - 0.5 * d)))))
+                (Ref.loop (Ref.second (Ref.delay q c0) Ref.>>> Ref.arr (\(x, d) -> (x + d, clampD (x - 0.5 * d)))))
+                xs
+
+  it "delayEventCat" $ property $ forAll genPeriod $ \q -> forSamples genD $ \xs ->
+    agreeApprox (loop (second (delayEventCat q >>> arr (fmap sum) >>> hold 0)
+                       >>> arr (\(x, h) -> (h, ev x (clampD (x + 0.5 * h))))))
+                (Ref.loop (Ref.second (Ref.delayEventCat q Ref.>>> Ref.arr (fmap sum) Ref.>>> Ref.hold 0)
+                           Ref.>>> Ref.arr (\(x, h) -> (h, ev x (clampD (x + 0.5 * h))))))
+                xs
+
+  it "delayEvent: a recurring event from now () fed back (Yampa's idiom)" $ property $
+    forAll genPeriod $ \q -> forSamples genD $ \xs ->
+      agree (now () >>> loop (arr (uncurry orElse) >>> delayEvent q >>> arr (\e -> (e, e))))
+            (Ref.now () Ref.>>> Ref.loop (Ref.arr (uncurry orElse) Ref.>>> Ref.delayEvent q
+                                          Ref.>>> Ref.arr (\e -> (e, e))))
+            xs
+
+  it "fby" $ property $ forAll genC $ \c0 -> forSamples genD $ \xs ->
+    agreeApprox (loop (second (c0 `fby` arr (* 0.5)) >>> arr (\(x, d) -> (x + d, clampD (x - d)))))
+                (Ref.loop (Ref.second (c0 `Ref.fby` Ref.arr (* 0.5)) Ref.>>> Ref.arr (\(x, d) -> (x + d, clampD (x - d)))))
+                xs
+  where
+    ev :: Double -> b -> Event b
+    ev x b = if x > 0 then Event b else NoEvent
+    orElse :: Event a -> Event a -> Event a
+    orElse NoEvent e = e
+    orElse e       _ = e
+    mb :: Double -> b -> Maybe b
+    mb x b = if x > 0 then Just b else Nothing
+
 switchSpec :: Spec
 switchSpec = describe "switches" $ do
   it "switch (on input events)" $ property $ forCands $ \e0 cs -> forInputEvents $ \xs ->
@@ -1004,3 +1076,274 @@ networkSpec = describe "random networks" $ modifyMaxSuccess (const 600) $ do
       let sf = toSF e
           r  = toR e
       in agreeWithin 1e-6 sf r xs .&&. agreeWithin 1e-6 sf r (reverse xs)
+
+------------------------------------------------------------------------------
+-- Concrete examples: the examples in the library's documentation, and
+-- Yampa's regression examples (the library follows Yampa's semantics). Both
+-- the library and the reference must reproduce them.
+
+-- | Run both on an 'embed'-style input ('Nothing' repeats the previous
+-- input) and compare with the expected outputs.
+bothGive :: Close b => SF a b -> R a b -> (a, [(DTime, Maybe a)]) -> [b] -> Expectation
+bothGive sf r input@(a0, rest) expected = do
+  check "library" (embed sf input)
+  check "reference" (runR r ((0, a0) : expand a0 rest))
+  where
+    expand _    []                = []
+    expand prev ((dt, ma) : more) = let a = maybe prev id ma in (dt, a) : expand a more
+    check who ys
+      | closeWith 1e-9 ys expected = pure ()
+      | otherwise = expectationFailure (who ++ ":\n expected " ++ show expected ++ "\n but got  " ++ show ys)
+
+-- | A constant time step: the first input at time 0, one more every dt.
+every :: DTime -> [a] -> (a, [(DTime, Maybe a)])
+every _  []       = error "every: no samples"
+every dt (a : as) = (a, [(dt, Just x) | x <- as])
+
+-- | Yampa's testSF1 input: dt 0.25, the k-th input is k.
+testSF1 :: (Double, [(DTime, Maybe Double)])
+testSF1 = every 0.25 [0 .. 24]
+
+-- | Event outputs at the given sample indices (n samples).
+eventsAt :: Int -> [(Int, b)] -> [Event b]
+eventsAt n occs = [maybe NoEvent Event (lookup i occs) | i <- [0 .. n - 1]]
+
+examplesSpec :: Spec
+examplesSpec = describe "documented and Yampa examples" $ do
+  describe "from the library's documentation" $ do
+    it "localTime" $
+      bothGive localTime Ref.localTime ((), [(0.5, Nothing), (0.25, Nothing)]) [0, 0.5, 0.75]
+    it "-->" $
+      bothGive (0 --> identity) (0 Ref.--> Ref.identity) (5 :: Int, [(1, Just 6), (1, Just 7)]) [0, 6, 7]
+    it "iPre" $
+      bothGive (iPre 0) (Ref.iPre 0) (1 :: Int, [(1, Just 2), (1, Just 3)]) [0, 1, 2]
+    it "delay" $
+      bothGive (delay 1 0) (Ref.delay 1 0) (1 :: Int, [(0.5, Just 2), (0.5, Just 3), (0.5, Just 4)]) [0, 0, 1, 2]
+    it "now" $
+      bothGive (now 'x') (Ref.now 'x') ((), [(1, Nothing)]) [Event 'x', NoEvent]
+    it "after" $
+      bothGive (after 1.0 ()) (Ref.after 1.0 ()) ((), replicate 3 (0.5, Nothing))
+              [NoEvent, NoEvent, Event (), NoEvent]
+    it "afterEachCat" $
+      bothGive (afterEachCat [(0.5, 'a'), (0.1, 'b'), (1, 'c')]) (Ref.afterEachCat [(0.5, 'a'), (0.1, 'b'), (1, 'c')])
+              ((), replicate 3 (1, Nothing)) [NoEvent, Event "ab", Event "c", NoEvent]
+    it "edge" $
+      bothGive edge Ref.edge (True, [(1, Just False), (1, Just True), (1, Nothing)])
+              [NoEvent, NoEvent, Event (), NoEvent]
+    it "hold" $
+      bothGive (hold 0) (Ref.hold 0) (NoEvent, [(1, Just (Event (5 :: Int))), (1, Just NoEvent)]) [0, 5, 5]
+    it "accum" $
+      bothGive (accum 0) (Ref.accum 0) (Event (+ 1), [(1, Just NoEvent), (1, Just (Event (* 10)))])
+              [Event (1 :: Int), NoEvent, Event 10]
+    it "integral (and embed's Nothing)" $ do
+      bothGive integral Ref.integral (1, [(0.5, Just 2), (0.5, Just 3)]) [0, 0.5, 1.5]
+      bothGive integral Ref.integral (1, [(0.5, Just 2), (0.5, Nothing)]) [0, 0.5, 1.5]
+    it "imIntegral" $
+      bothGive (imIntegral 10) (Ref.imIntegral 10) (1, [(0.5, Just 2), (0.5, Just 3)]) [10, 11, 12.5]
+    it "derivative" $
+      bothGive derivative Ref.derivative (1, [(0.5, Just 2), (0.5, Just 2)]) [0, 2, 0]
+    it "loopPre (a counter)" $
+      bothGive (loopPre 0 (arr (\(_, n) -> (n, n + 1)))) (Ref.loopPre 0 (Ref.arr (\(_, n) -> (n, n + 1))))
+              ((), replicate 4 (1, Nothing)) [0, 1, 2, 3, 4 :: Int]
+    it "parB" $
+      bothGive (parB [constant 1, localTime]) (Ref.parB [Ref.constant 1, Ref.localTime])
+              ((), [(0.5, Nothing)]) [[1, 0], [1, 0.5]]
+    it "switch" $
+      bothGive (switch (constant 1 &&& after 1 ()) (\() -> localTime))
+              (Ref.switch (Ref.constant 1 Ref.&&& Ref.after 1 ()) (\() -> Ref.localTime))
+              ((), replicate 3 (0.5, Nothing)) [1, 1, 0, 0.5]
+    it "left localTime on L, L, R, R, L (steps of 1)" $
+      bothGive (left localTime) (Ref.left Ref.localTime)
+              (every 1 [Left (), Left (), Right 'a', Right 'b', Left ()])
+              [Left 0, Left 1, Right 'a', Right 'b', Left 2]
+
+  describe "Yampa's regression examples" $ do
+    it "left integral: frozen while Right, started at the first Left" $ do
+      bothGive (left integral) (Ref.left Ref.integral)
+              (every 1 [Left 1, Left 1, Right 'x', Right 'y', Left 1, Left 1])
+              [Left 0, Left 1, Right 'x', Right 'y', Left 2, Left 3]
+      bothGive (left integral) (Ref.left Ref.integral)
+              (every 1 [Right 'x', Right 'y', Left 1, Left 1])
+              [Right 'x', Right 'y', Left 0, Left 1]
+    it "hold, dHold" $ do
+      let evs = every 1 [NoEvent, NoEvent, Event 2, NoEvent, Event 3, NoEvent :: Event Int]
+      bothGive (hold 1) (Ref.hold 1) evs [1, 1, 2, 2, 3, 3]
+      bothGive (dHold 1) (Ref.dHold 1) evs [1, 1, 1, 2, 2, 3]
+      bothGive (dHold 99.99) (Ref.dHold 99.99) (every 1 [Event 1, NoEvent, NoEvent]) [99.99, 1, 1 :: Double]
+    it "count" $
+      bothGive (count :: SF (Event Char) (Event Int)) Ref.count (every 1 [Event 'a', NoEvent, Event 'b'])
+              [Event 1, NoEvent, Event 2]
+    it "iPre and delay on testSF1 / testSF2" $ do
+      bothGive (iPre 17) (Ref.iPre 17) testSF1 (17 : [0 .. 23])
+      bothGive (delay 0.0001 17) (Ref.delay 0.0001 17) testSF1 (17 : [0 .. 23])
+      bothGive (delay 0 17) (Ref.delay 0 17) testSF1 [0 .. 24]
+      let testSF2 = every 0.25 [fromIntegral (k `div` 5 :: Int) | k <- [0 .. 24 :: Int]] :: (Double, [(DTime, Maybe Double)])
+      bothGive (delay 0.0001 17) (Ref.delay 0.0001 17) testSF2 (17 : [fromIntegral (k `div` 5 :: Int) | k <- [0 .. 23 :: Int]])
+    it "delay 1.05 with irregular time steps" $ do
+      let dts = replicate 15 0.1 ++ [0.5, 0.5] ++ replicate 15 0.1 ++ [2.0] ++ replicate 20 0.1
+          input = (0 :: Int, [(dt, Just k) | (dt, k) <- zip dts [1 ..]])
+          out   = embed (delay 1.05 (-1)) input
+          ts    = scanl (+) 0 dts
+          at t  = [o | (t', o) <- zip ts out, abs (t' - t) < 1e-9]
+      runR (Ref.delay 1.05 (-1)) ((0, 0) : [(dt, k) | (dt, k) <- zip dts [1 ..]]) `shouldBe` out
+      concatMap at [0, 0.5, 1.0, 1.1, 1.2, 1.5, 2.0, 2.5, 2.6, 3.0, 3.1, 3.5, 3.6, 3.7, 4.0, 6.0, 7.0, 7.1, 7.2]
+        `shouldBe` [-1, -1, -1, 0, 1, 4, 9, 14, 15, 15, 16, 16, 17, 18, 21, 32, 32, 33, 34]
+    it "repeatedly (dt 0.25)" $ do
+      bothGive (repeatedly 0.795 ()) (Ref.repeatedly 0.795 ()) testSF1
+              (eventsAt 25 [(i, ()) | i <- [4, 7, 10, 13, 16, 20, 23]])
+      bothGive (repeatedly 0.29999 ()) (Ref.repeatedly 0.29999 ()) testSF1
+              (eventsAt 25 [(i, ()) | i <- [2 .. 24], i `notElem` [7, 13, 19]])
+      bothGive (repeatedly 0.24 ()) (Ref.repeatedly 0.24 ()) testSF1 (eventsAt 25 [(i, ()) | i <- [1 .. 24]])
+    it "after (dt 0.25)" $ do
+      bothGive (after 3.0 ()) (Ref.after 3.0 ()) testSF1 (eventsAt 25 [(12, ())])
+      bothGive (after 3.01 ()) (Ref.after 3.01 ()) testSF1 (eventsAt 25 [(13, ())])
+      bothGive (after 0 ()) (Ref.after 0 ()) testSF1 (eventsAt 25 [(0, ())])
+    it "afterEach / afterEachCat (dt 0.25)" $ do
+      let sched = [(0, 1), (0, 2), (0.01, 3), (0.23, 4), (0.02, 5), (0.75, 6), (0.1, 7), (0.1, 8), (0.1, 9), (2, 10 :: Int)]
+      bothGive (afterEachCat sched) (Ref.afterEachCat sched) testSF1
+              (eventsAt 25 [(0, [1, 2]), (1, [3, 4]), (2, [5]), (5, [6, 7, 8]), (6, [9]), (14, [10])])
+      bothGive (afterEach sched) (Ref.afterEach sched) testSF1
+              (eventsAt 25 [(0, 1), (1, 3), (2, 5), (5, 6), (6, 9), (14, 10)])
+      let sched' = (2.03, 0) : sched
+      bothGive (afterEachCat sched') (Ref.afterEachCat sched') testSF1
+              (eventsAt 25 [(9, [0, 1, 2, 3]), (10, [4, 5]), (13, [6, 7, 8]), (14, [9]), (22, [10])])
+    it "snap, snapAfter, sample (dt 0.25)" $ do
+      bothGive snap Ref.snap testSF1 (eventsAt 25 [(0, 0)])
+      bothGive (snapAfter 2.6) (Ref.snapAfter 2.6) testSF1 (eventsAt 25 [(11, 11)])
+      bothGive (sample 0.99) (Ref.sample 0.99) testSF1 (eventsAt 25 [(i, fromIntegral i) | i <- [4, 8 .. 24]])
+    it "takeEvents, dropEvents" $ do
+      let src = repeatedly 0.2 () >>> arr (fmap (const 1)) >>> accumBy (+) (0 :: Int)
+          ref = Ref.repeatedly 0.2 () Ref.>>> Ref.arr (fmap (const 1)) Ref.>>> Ref.accumBy (+) (0 :: Int)
+      bothGive (src >>> takeEvents 4) (ref Ref.>>> Ref.takeEvents 4) testSF1 (eventsAt 25 [(i, i) | i <- [1 .. 4]])
+      bothGive (src >>> dropEvents 4) (ref Ref.>>> Ref.dropEvents 4) testSF1 (eventsAt 25 [(i, i) | i <- [5 .. 24]])
+      bothGive (src >>> takeEvents 0) (ref Ref.>>> Ref.takeEvents 0) testSF1 (eventsAt 25 [])
+      bothGive (now (42 :: Int) >>> takeEvents 1) (Ref.now 42 Ref.>>> Ref.takeEvents 1) testSF1 (eventsAt 25 [(0, 42)])
+      bothGive (now (42 :: Int) >>> dropEvents 1) (Ref.now 42 Ref.>>> Ref.dropEvents 1) testSF1 (eventsAt 25 [])
+    it "edgeBy, edge" $ do
+      let changes p c = if p /= c then Just c else Nothing
+      bothGive (edgeBy changes True) (Ref.edgeBy changes True) (every 1 [False, False, True]) [Event False, NoEvent, Event True]
+      bothGive (localTime >>> arr (>= 0) >>> edge) (Ref.localTime Ref.>>> Ref.arr (>= 0) Ref.>>> Ref.edge) testSF1
+              (eventsAt 25 [])
+    it "delayEvent of a counter: each occurrence 2 s later" $ do
+      let src = repeatedly 0.5 () >>> arr (fmap (const 1)) >>> accumBy (+) (0 :: Int)
+          ref = Ref.repeatedly 0.5 () Ref.>>> Ref.arr (fmap (const 1)) Ref.>>> Ref.accumBy (+) (0 :: Int)
+          n   = 50
+      bothGive (src >>> (identity &&& delayEvent 2.0)) (ref Ref.>>> (Ref.identity Ref.&&& Ref.delayEvent 2.0))
+              ((), replicate (n - 1) (0.125, Nothing))
+              (zip (eventsAt n [(4 * k, k) | k <- [1 .. 12]]) (eventsAt n [(4 * k + 16, k) | k <- [1 .. 8]]))
+    it "a recurring event from delayEvent in a loop" $ do
+      let orElse NoEvent e = e
+          orElse e       _ = e
+      bothGive (now () >>> loop (arr (uncurry orElse) >>> delayEvent 1.0 >>> arr (\e -> (e, e))))
+              (Ref.now () Ref.>>> Ref.loop (Ref.arr (uncurry orElse) Ref.>>> Ref.delayEvent 1.0 Ref.>>> Ref.arr (\e -> (e, e))))
+              ((), replicate 40 (0.125, Nothing))
+              (eventsAt 41 [(8 * k, ()) | k <- [1 .. 5]])
+    it "sampleWindow" $ do
+      bothGive (localTime >>> sampleWindow 5 0.5) (Ref.localTime Ref.>>> Ref.sampleWindow 5 0.5)
+              ((), replicate 24 (0.125, Nothing))
+              (eventsAt 25 [(4 * k, [fromIntegral j * 0.5 | j <- [max 1 (k - 4) .. k]]) | k <- [1 .. 6 :: Int]])
+      let dts = replicate 15 0.1 ++ [1.0, 1.0] ++ replicate 15 0.1 ++ [2.0] ++ replicate 10 0.1
+          ts  = scanl (+) 0 dts
+          out = embed (localTime >>> sampleWindow 5 0.4999) ((), [(dt, Nothing) | dt <- dts])
+          at t = [o | (t', o) <- zip ts out, abs (t' - t) < 1e-9]
+      runR (Ref.localTime Ref.>>> Ref.sampleWindow 5 0.4999) ((0, ()) : [(dt, ()) | dt <- dts])
+        `shouldSatisfy` closeWith 1e-9 out
+      concatMap at [2.5, 7.0] `shouldSatisfy`
+        closeWith 1e-9 [Event [0.5, 1.0, 1.5, 2.5, 2.5], Event [5.0, 7.0, 7.0, 7.0, 7.0]]
+    it "impulseIntegral" $ do
+      let inp = every 0.1 [(1, if k == 9 then Event 10 else if k == 19 then Event (-10) else NoEvent) | k <- [0 .. 25 :: Int]]
+      bothGive impulseIntegral Ref.impulseIntegral inp
+              ([0.1 * fromIntegral k | k <- [0 .. 8 :: Int]] ++ [10.9 + 0.1 * fromIntegral k | k <- [0 .. 9 :: Int]]
+               ++ [1.9 + 0.1 * fromIntegral k | k <- [0 .. 6 :: Int]])
+    it "loopIntegral: x' = x + 1 grows like e^t" $ do
+      let sf = loopIntegral (arr (\((), x) -> (x + 1, x + 1)))
+          out = embed sf ((), replicate 5000 (0.001, Nothing))
+      (out !! 1000) `shouldSatisfy` approxWith 1e-5 2.71692
+      (out !! 5000) `shouldSatisfy` approxWith 1e-5 148.04276
+      runR (Ref.loopIntegral (Ref.arr (\((), x) -> (x + 1, x + 1)))) ((0, ()) : replicate 1000 (0.001, ()))
+        `shouldSatisfy` closeWith 1e-9 (take 1001 out)
+    it "parB, parZ" $ do
+      bothGive (parB [constant 1, identity, integral]) (Ref.parB [Ref.constant 1, Ref.identity, Ref.integral])
+              (every 0.1 [0, 0.5, 1.0, 1.5]) [[1, 0, 0], [1, 0.5, 0], [1, 1.0, 0.05], [1, 1.5, 0.15]]
+      bothGive (parZ [arr (+ 1), arr (+ 2)]) (Ref.parZ [Ref.arr (+ 1), Ref.arr (+ 2)])
+              (every 1 [[0, 0], [1, 1 :: Int]]) [[1, 2], [2, 3]]
+    it "kSwitch and dkSwitch: switching away and back to the frozen integral" $ do
+      let inp = every 0.1 [0.5 * k | k <- [0 .. 14]]
+          chainL ks = ks integral (arr snd >>> arr (>= 0.2) >>> edge)
+                         (\saved () -> ks (integral >>> arr (subtract 1)) (arr snd >>> arr (>= 1.0) >>> edge)
+                                          (\_ () -> saved))
+          chainR ks = ks Ref.integral (Ref.arr snd Ref.>>> Ref.arr (>= 0.2) Ref.>>> Ref.edge)
+                         (\saved () -> ks (Ref.integral Ref.>>> Ref.arr (subtract 1))
+                                          (Ref.arr snd Ref.>>> Ref.arr (>= 1.0) Ref.>>> Ref.edge)
+                                          (\_ () -> saved))
+      bothGive (chainL kSwitch) (chainR Ref.kSwitch) inp
+              [0, 0, 0.05, 0.15, -1.0, -0.8, -0.55, -0.25, 0.10, 0.50, 0.95, 0.30, 0.85, 1.45, 2.10]
+      bothGive (chainL dkSwitch) (chainR Ref.dkSwitch) inp
+              [0, 0, 0.05, 0.15, 0.30, -0.8, -0.55, -0.25, 0.10, 0.50, 0.95, 1.45, 0.85, 1.45, 2.10]
+    it "pSwitchB and dpSwitchB: a growing collection with frozen members" $ do
+      let inp = every 0.1 [0.5 * k | k <- [0 .. 16]]
+          stages :: [(Double, [SF Double Double] -> [SF Double Double])]
+          stages = [ (1.25, (integral :)), (3.75, ((integral >>> arr (+ 10)) :))
+                   , (5.25, ((integral >>> arr (+ 20)) :)), (7.25, take 2) ]
+          stagesR :: [(Double, [R Double Double] -> [R Double Double])]
+          stagesR = [ (1.25, (Ref.integral :)), (3.75, ((Ref.integral Ref.>>> Ref.arr (+ 10)) :))
+                    , (5.25, ((Ref.integral Ref.>>> Ref.arr (+ 20)) :)), (7.25, take 2) ]
+          chainL ps sfs ((th, f) : more) = ps sfs (arr (\(x, _) -> x >= th) >>> edge) (\fr () -> chainL ps (f fr) more)
+          chainL _  sfs []               = parB sfs
+          chainR ps sfs ((th, f) : more) = ps sfs (Ref.arr (\(x, _) -> x >= th) Ref.>>> Ref.edge)
+                                              (\fr () -> chainR ps (f fr) more)
+          chainR _  sfs []               = Ref.parB sfs
+          pick' idxs out = [out !! i | i <- idxs]
+          outL ps = embed (chainL ps [] stages) inp
+      pick' [3, 4, 8, 9, 11, 15] (outL pSwitchB) `shouldSatisfy`
+        closeWith 1e-9 [[0.0], [0.15], [10.0, 1.25], [10.4, 1.65], [20.0, 11.35, 2.6], [22.5, 13.85]]
+      pick' [3, 4, 8, 9, 11, 15, 16] (outL dpSwitchB) `shouldSatisfy`
+        closeWith 1e-9 [[], [0.15], [1.25], [10.4, 1.65], [11.35, 2.6], [22.5, 13.85, 5.1], [23.25, 14.6]]
+      bothGive (chainL pSwitchB [] stages) (chainR Ref.pSwitchB [] stagesR) inp (outL pSwitchB)
+      bothGive (chainL dpSwitchB [] stages) (chainR Ref.dpSwitchB [] stagesR) inp (outL dpSwitchB)
+      -- the first detector firing at time 0
+      let nowL ps = ps [] (now ()) (\fr () -> chainL ps (integral : fr) (drop 1 stages))
+          nowR ps = ps [] (Ref.now ()) (\fr () -> chainR ps (Ref.integral : fr) (drop 1 stagesR))
+      take 2 (embed (nowL pSwitchB) inp) `shouldSatisfy` closeWith 1e-9 [[0.0], [0.0]]
+      take 2 (embed (nowL dpSwitchB) inp) `shouldSatisfy` closeWith 1e-9 [[], [0.0]]
+      bothGive (nowL pSwitchB) (nowR Ref.pSwitchB) inp (embed (nowL pSwitchB) inp)
+      bothGive (nowL dpSwitchB) (nowR Ref.dpSwitchB) inp (embed (nowL dpSwitchB) inp)
+    it "pSwitchB / dpSwitchB: ramps replaced when they reach 2.99" $ do
+      let ramp p = localTime >>> arr (\t -> 2 * t + p)
+          rampR p = Ref.localTime Ref.>>> Ref.arr (\t -> 2 * t + p)
+          full ys = case [i | (i, y) <- zip [0 :: Int ..] ys, y >= 2.99] of
+            (i : _) -> Event i
+            []      -> NoEvent
+          replace i x xs = take i xs ++ [x] ++ drop (i + 1) xs
+          ramps ps sfs = ps sfs (arr (full . snd)) (\fr i -> ramps ps (replace i (ramp 0) fr))
+          rampsR ps sfs = ps sfs (Ref.arr (full . snd)) (\fr i -> rampsR ps (replace i (rampR 0) fr))
+          inp = ((), replicate 7 (0.1, Nothing))
+          outL ps = embed (ramps ps [ramp 0, ramp 1, ramp 2]) inp
+      (outL pSwitchB !! 5) `shouldSatisfy` closeWith 1e-9 [1.0, 2.0, 0.0]
+      drop 5 (outL dpSwitchB) `shouldSatisfy` closeWith 1e-9 [[1.0, 2.0, 3.0], [1.2, 2.2, 0.2], [1.4, 2.4, 0.4]]
+      bothGive (ramps pSwitchB [ramp 0, ramp 1, ramp 2]) (rampsR Ref.pSwitchB [rampR 0, rampR 1, rampR 2]) inp
+              (outL pSwitchB)
+      bothGive (ramps dpSwitchB [ramp 0, ramp 1, ramp 2]) (rampsR Ref.dpSwitchB [rampR 0, rampR 1, rampR 2]) inp
+              (outL dpSwitchB)
+    it "rpSwitchB and drpSwitchB: adding and removing integrals" $ do
+      let evAt :: [(Int, (Double, Event Int))]
+          evAt = [(0, (1, NoEvent)), (3, (2, Event 1)), (4, (3, NoEvent)), (6, (4, NoEvent)), (9, (5, Event 2))
+                 , (10, (6, NoEvent)), (12, (7, NoEvent)), (15, (8, Event 3)), (16, (9, NoEvent))]
+          inputs = go (1, NoEvent) [0 .. 16]
+            where go prev (i : is) = let cur = maybe prev id (lookup i evAt) in cur : go cur is
+                  go _ [] = []
+          opL :: Int -> [SF Double Double] -> [SF Double Double]
+          opL 1 = (integral :)
+          opL 2 = ((integral >>> arr (+ 100)) :)
+          opL _ = drop 1
+          opR :: Int -> [R Double Double] -> [R Double Double]
+          opR 1 = (Ref.integral :)
+          opR 2 = ((Ref.integral Ref.>>> Ref.arr (+ 100)) :)
+          opR _ = drop 1
+          inp = every 1 inputs
+          rp  = [[], [], [], [0], [2], [5], [8], [12], [16], [100, 20], [105, 25], [111, 31], [117, 37]
+                , [124, 44], [131, 51], [58], [66]]
+          drp = [[], [], [], [], [2], [5], [8], [12], [16], [20], [105, 25], [111, 31], [117, 37]
+                , [124, 44], [131, 51], [138, 58], [66]]
+      bothGive (arr (fmap opL <$>) >>> rpSwitchB []) (Ref.arr (fmap opR <$>) Ref.>>> Ref.rpSwitchB []) inp rp
+      bothGive (arr (fmap opL <$>) >>> drpSwitchB []) (Ref.arr (fmap opR <$>) Ref.>>> Ref.drpSwitchB []) inp drp

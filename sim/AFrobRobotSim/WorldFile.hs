@@ -1,0 +1,438 @@
+-- |
+-- Module      : AFrobRobotSim.WorldFile
+-- Description : A plain-text file format for world templates: parser,
+--               printer and file reader.
+--
+-- A world file describes a 'WorldTemplate' as plain text, one object per
+-- line, for example:
+--
+-- @
+-- # A small arena (the world is [-5, 5] x [-5, 5], walled in on all sides).
+-- wall v at 0 3              # a vertical wall segment centred on (0, 3)
+-- wall h at -1 2.5           # a horizontal one centred on (-1, 2.5)
+-- block at 2 -2
+-- ball  at 0 0
+-- simbotA 1 at -2.0 -2.0 heading 45 deg
+-- simbotB 2 at 1 1 heading 1.5708 rad
+-- SIMBOTB 3 at 3 3           # no heading: facing +x (heading 0)
+-- @
+--
+-- = Lines, tokens and comments
+--
+-- * A file is split into lines (@\\n@; a @\\r@ before it is whitespace and
+--   so ignored). Lines are numbered from 1.
+--
+-- * A @#@ starts a comment, which runs to the end of the line; it may
+--   appear anywhere, also right after a token (@ball at 0 0# centre@).
+--
+-- * What is left of a line is split into tokens at whitespace (spaces,
+--   tabs, ...); tokens must be separated by whitespace (@at0@ is one
+--   token, not @at 0@). A line without tokens (blank, or only a comment)
+--   is ignored; every other line describes exactly one object.
+--
+-- * Keywords (@simbotA@, @simbotB@, @wall@, @v@, @h@, @block@, @ball@,
+--   @at@, @heading@ and the units) are case-insensitive: @SimbotA@,
+--   @SIMBOTA@ and @simbota@ are the same keyword.
+--
+-- = Grammar
+--
+-- @
+-- line    ::= [ object ] [ comment ]
+-- object  ::= robot | wall | block | ball
+-- robot   ::= ( \"simbotA\" | \"simbotB\" ) ID \"at\" NUMBER NUMBER [ heading ]
+-- heading ::= \"heading\" NUMBER unit
+-- unit    ::= \"deg\" | \"degrees\" | \"rad\" | \"radians\"
+-- wall    ::= \"wall\" ( \"v\" | \"vertical\" | \"h\" | \"horizontal\" ) \"at\" NUMBER NUMBER
+-- block   ::= \"block\" \"at\" NUMBER NUMBER
+-- ball    ::= \"ball\" \"at\" NUMBER NUMBER
+-- comment ::= \"#\" any characters up to the end of the line
+--
+-- ID      ::= [ \"+\" | \"-\" ] DIGITS                           (must fit in an Int)
+-- NUMBER  ::= [ \"+\" | \"-\" ] DIGITS [ \".\" DIGITS ] [ ( \"e\" | \"E\" ) [ \"+\" | \"-\" ] DIGITS ]
+-- DIGITS  ::= one or more of 0-9
+-- @
+--
+-- The two numbers after @at@ are the x and y coordinates of the object's
+-- centre, in metres. The objects and their sizes are those of
+-- "AFrobRobotSim.World": @wall v@ is an 'OTVWall', @wall h@ an 'OTHWall',
+-- @block@ an 'OTBlock', @ball@ an 'OTBall', @simbotA@ \/ @simbotB@ an
+-- 'OTSimbotA' \/ 'OTSimbotB' with the given robot id.
+--
+-- == Numbers
+--
+-- Numbers are decimal: an optional sign, digits, an optional fraction and
+-- an optional exponent, e.g. @-2@, @+0.5@, @3.0@, @1e-3@, @-2.5E+2@.
+-- Rejected are a missing integer part or fraction (@.5@, @5.@), hex and
+-- other bases, underscores, and the non-finite literals @NaN@, @Infinity@
+-- and @inf@ (in any case, with or without a sign). A literal whose value
+-- is too large for a 'Double' (e.g. @1e400@) is an error as well; one too
+-- small to be represented rounds to zero, as usual. Every other literal is
+-- converted to the nearest 'Double' (ties to even), so the output of
+-- 'show' is read back exactly.
+--
+-- == Headings
+--
+-- A heading is an absolute direction, 0 along +x, growing
+-- counter-clockwise (see "AFrob.Dimensions"). Its unit is mandatory, so
+-- degrees and radians are never confused: @heading 90 deg@ and
+-- @heading 1.5707963267948966 rad@ both face +y. Degrees are converted
+-- with @d * pi / 180@. Headings are /not/ normalised: @heading 450 deg@
+-- is stored as @5 * pi / 2@. The whole @heading@ clause may be omitted;
+-- the robot then faces +x (heading 0).
+--
+-- = Errors
+--
+-- 'parseWorld' stops at the first malformed line and reports it as
+--
+-- @
+-- FILE:LINE:COLUMN: expected WHAT [after \"PREVIOUS TOKEN\"], found \"TOKEN\"
+-- @
+--
+-- for instance @w.world:3:15: expected a number after \"at\", found \"x1\"@.
+-- COLUMN is the 1-based column (in characters; a tab counts as one) where
+-- the offending token starts; when a token is missing, it is the column
+-- just after the preceding token, and the message says
+-- @found end of line@. Nothing is returned for the lines before an error.
+--
+-- The parser checks the syntax only. Whether the objects fit into the
+-- world, whether robots overlap and whether robot ids are unique is
+-- checked by 'AFrobRobotSim.World.validateWorld'.
+--
+-- = Printing
+--
+-- 'renderWorld' writes a header comment and then one object per line, in
+-- the order of the template, coordinates and headings printed with 'show'
+-- and headings in radians, so that
+-- @'parseWorld' f ('renderWorld' w) == 'Right' w@ for every world whose
+-- coordinates and headings are finite.
+module AFrobRobotSim.WorldFile
+  ( -- * Parsing
+    parseWorld
+  , readWorldFile
+    -- * Printing
+  , renderWorld
+  ) where
+
+import           Control.Exception (IOException, evaluate, try)
+import           Data.Char         (isDigit, isSpace, toLower)
+import           System.IO         (IOMode (ReadMode), hGetContents, hSetEncoding,
+                                    utf8, withFile)
+
+import           AFRP.Geometry     (Point2 (..))
+import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate)
+
+------------------------------------------------------------------------------
+-- Public interface
+
+-- | Parse the text of a world file (see the module documentation for the
+-- format). The first argument is the file name, used only in error
+-- messages.
+--
+-- On success, the objects in the order of their lines. On the first
+-- malformed line, a single message
+-- @FILE:LINE:COLUMN: expected ..., found ...@ and nothing else.
+--
+-- >>> parseWorld "w.world" "ball at 0 0\nsimbotA 1 at 1 2 heading 90 deg\n"
+-- Right [OTBall {otPos = Point2 0.0 0.0},OTSimbotA {otRId = 1, otPos = Point2 1.0 2.0, otHdng = 1.5707963267948966}]
+--
+-- >>> parseWorld "w.world" "\n\nwall v at x1 2"
+-- Left "w.world:3:11: expected a number after \"at\", found \"x1\""
+parseWorld :: FilePath -> String -> Either String WorldTemplate
+parseWorld file = go [] . zip [1 :: Int ..] . lines
+  where
+    go acc [] = Right (reverse acc)
+    go acc ((n, l) : ls) = case parseLine (tokenize l) of
+      Right Nothing  -> go acc ls
+      Right (Just o) -> go (o : acc) ls
+      Left (Failure col msg) ->
+        Left (file ++ ":" ++ show n ++ ":" ++ show col ++ ": " ++ msg)
+
+-- | Read and parse a world file. The file is decoded as UTF-8. A file that
+-- cannot be read (missing, no permission, not valid UTF-8, ...) gives
+-- 'Left' with the operating system's message rather than throwing an
+-- exception; a malformed file gives 'Left' with the message of
+-- 'parseWorld'.
+readWorldFile :: FilePath -> IO (Either String WorldTemplate)
+readWorldFile path = do
+  r <- try (withFile path ReadMode $ \h -> do
+              hSetEncoding h utf8
+              s <- hGetContents h
+              _ <- evaluate (length s)
+              pure s)
+  pure $ case r of
+    Left e  -> Left (show (e :: IOException))
+    Right s -> parseWorld path s
+
+-- | Print a world in the world-file format: a header comment, then one
+-- line per object, in order. Coordinates are printed with 'show', headings
+-- in radians with 'show' followed by @rad@, so that
+-- @'parseWorld' f ('renderWorld' w) == 'Right' w@ whenever all coordinates
+-- and headings of @w@ are finite (a NaN or an infinity is printed, but does
+-- not parse back).
+--
+-- >>> putStr (renderWorld [OTVWall (Point2 0 3), OTSimbotB 2 (Point2 1 (-1)) 0.5])
+-- # afrp world file: 2 objects (positions in metres, headings in radians)
+-- wall v at 0.0 3.0
+-- simbotB 2 at 1.0 -1.0 heading 0.5 rad
+renderWorld :: WorldTemplate -> String
+renderWorld w = unlines (header : map renderObject w)
+  where
+    header = "# afrp world file: " ++ show (length w) ++ " object"
+             ++ (if length w == 1 then "" else "s")
+             ++ " (positions in metres, headings in radians)"
+
+-- | One object as one line (without the newline).
+renderObject :: ObjectTemplate -> String
+renderObject o = case o of
+  OTBlock p         -> "block" ++ at p
+  OTVWall p         -> "wall v" ++ at p
+  OTHWall p         -> "wall h" ++ at p
+  OTBall p          -> "ball" ++ at p
+  OTSimbotA i p hd  -> robotLine "simbotA" i p hd
+  OTSimbotB i p hd  -> robotLine "simbotB" i p hd
+  where
+    at (Point2 x y) = " at " ++ show x ++ " " ++ show y
+    robotLine kw i p hd = kw ++ " " ++ show i ++ at p ++ " heading " ++ show hd ++ " rad"
+
+------------------------------------------------------------------------------
+-- Tokens
+
+-- | A token: the column (1-based) of its first character and its text.
+data Tok = Tok !Int String
+
+-- | The tokens of a line, comment removed.
+tokenize :: String -> [Tok]
+tokenize = go 1 . takeWhile (/= '#')
+  where
+    go _ [] = []
+    go c s@(ch : rest)
+      | isSpace ch = go (c + 1) rest
+      | otherwise  = let (t, rest') = break isSpace s
+                     in Tok c t : go (c + length t) rest'
+
+tokText :: Tok -> String
+tokText (Tok _ t) = t
+
+-- | The column just after a token.
+tokEnd :: Tok -> Int
+tokEnd (Tok c t) = c + length t
+
+------------------------------------------------------------------------------
+-- A small parser over the tokens of one line
+
+-- | A parse error: the column and the message (without the location).
+data Failure = Failure !Int String
+
+-- | The parser state: the last token consumed (if any) and the rest.
+data PState = PState (Maybe Tok) [Tok]
+
+newtype P a = P (PState -> Either Failure (a, PState))
+
+instance Functor P where
+  fmap f (P p) = P $ \s -> case p s of
+    Left e        -> Left e
+    Right (a, s') -> Right (f a, s')
+
+instance Applicative P where
+  pure a = P $ \s -> Right (a, s)
+  P pf <*> P pa = P $ \s -> case pf s of
+    Left e        -> Left e
+    Right (f, s') -> case pa s' of
+      Left e         -> Left e
+      Right (a, s'') -> Right (f a, s'')
+
+instance Monad P where
+  P p >>= k = P $ \s -> case p s of
+    Left e        -> Left e
+    Right (a, s') -> let P q = k a in q s'
+
+-- | Why a token was rejected: what was expected instead, and a note to
+-- append to the message (possibly empty).
+data Rejection = Rejection String String
+
+-- | Consume the next token if the check accepts it; otherwise fail with
+-- @expected WHAT after "PREV", found "TOKEN"@ (WHAT and a note from the
+-- check), or @..., found end of line@ (WHAT from the first argument) when
+-- there is no token left.
+token :: String -> (String -> Either Rejection a) -> P a
+token what check = P $ \(PState prev ts) -> case ts of
+  [] -> Left (Failure (maybe 1 tokEnd prev) (expected what prev "end of line" ""))
+  t : ts' -> case check (tokText t) of
+    Right a -> Right (a, PState (Just t) ts')
+    Left (Rejection what' note) ->
+      Left (Failure (col t) (expected what' prev (quote (tokText t)) note))
+  where
+    col (Tok c _) = c
+
+-- | The next token, if any, without consuming it.
+peek :: P (Maybe String)
+peek = P $ \s@(PState _ ts) -> Right (fmap tokText (safeHead ts), s)
+  where
+    safeHead (t : _) = Just t
+    safeHead []      = Nothing
+
+-- | The error message proper.
+expected :: String -> Maybe Tok -> String -> String -> String
+expected what prev found note =
+  "expected " ++ what
+  ++ maybe "" (\p -> " after " ++ quote (tokText p)) prev
+  ++ ", found " ++ found ++ note
+
+quote :: String -> String
+quote s = "\"" ++ s ++ "\""
+
+lower :: String -> String
+lower = map toLower
+
+-- | One of the given keywords (case-insensitively), returning its value.
+keywordOf :: String -> [(String, a)] -> P a
+keywordOf what table = token what $ \t -> case lookup (lower t) table of
+  Just a  -> Right a
+  Nothing -> Left (Rejection what "")
+
+-- | A single keyword.
+keyword :: String -> P ()
+keyword kw = keywordOf (quote kw) [(lower kw, ())]
+
+-- | The end of the line (a comment may follow).
+endOfLine :: String -> P ()
+endOfLine what = P $ \s@(PState prev ts) -> case ts of
+  []    -> Right ((), s)
+  t : _ -> Left (Failure (col t) (expected what prev (quote (tokText t)) ""))
+  where
+    col (Tok c _) = c
+
+------------------------------------------------------------------------------
+-- The grammar
+
+-- | Parse the tokens of one line: 'Nothing' for a line without tokens.
+parseLine :: [Tok] -> Either Failure (Maybe ObjectTemplate)
+parseLine [] = Right Nothing
+parseLine ts = case p (PState Nothing ts) of
+  Left e       -> Left e
+  Right (o, _) -> Right (Just o)
+  where
+    P p = object
+
+data Kind = KSimbotA | KSimbotB | KWall | KBlock | KBall
+
+object :: P ObjectTemplate
+object = do
+  k <- keywordOf "an object keyword (simbotA, simbotB, wall, block or ball)"
+         [ ("simbota", KSimbotA), ("simbotb", KSimbotB), ("wall", KWall)
+         , ("block", KBlock), ("ball", KBall) ]
+  o <- case k of
+    KSimbotA -> robot OTSimbotA
+    KSimbotB -> robot OTSimbotB
+    KWall    -> do
+      mk <- keywordOf "a wall orientation (v, vertical, h or horizontal)"
+              [ ("v", OTVWall), ("vertical", OTVWall)
+              , ("h", OTHWall), ("horizontal", OTHWall) ]
+      mk <$> position
+    KBlock   -> OTBlock <$> position
+    KBall    -> OTBall <$> position
+  endOfLine "end of line or a comment"
+  pure o
+
+-- | @at X Y@.
+position :: P (Point2 Double)
+position = do
+  keyword "at"
+  Point2 <$> number <*> number
+
+-- | The rest of a robot line, after its keyword.
+robot :: (Int -> Point2 Double -> Double -> ObjectTemplate) -> P ObjectTemplate
+robot mk = do
+  i <- token "a robot id (an integer)" robotId
+  p <- position
+  next <- peek
+  h <- case fmap lower next of
+    Nothing        -> pure 0
+    Just "heading" -> keyword "heading" >> heading
+    Just _         -> endOfLine "\"heading\" or end of line" >> pure 0
+  pure (mk i p h)
+
+-- | @NUMBER unit@, in radians.
+heading :: P Double
+heading = do
+  v <- number
+  f <- keywordOf "a heading unit (deg, degrees, rad or radians)"
+         [ ("deg", degToRad), ("degrees", degToRad)
+         , ("rad", id), ("radians", id) ]
+  pure (f v)
+  where
+    degToRad d = d * pi / 180
+
+number :: P Double
+number = token "a number" readNumber
+
+------------------------------------------------------------------------------
+-- Literals
+
+-- | A robot id: an optionally signed decimal integer that fits in an 'Int'.
+robotId :: String -> Either Rejection Int
+robotId s = case integerLit s of
+  Just n
+    | n >= toInteger (minBound :: Int) && n <= toInteger (maxBound :: Int)
+                -> Right (fromInteger n)
+    | otherwise -> Left (Rejection "a robot id (an integer)" " (out of range)")
+  Nothing       -> Left (Rejection "a robot id (an integer)" "")
+
+-- | An optionally signed decimal integer.
+integerLit :: String -> Maybe Integer
+integerLit s = case signed s of
+  (neg, ds) | not (null ds), all isDigit ds -> Just (applySign neg (digitsValue ds))
+  _                                         -> Nothing
+
+-- | Split off an optional sign: whether it was a minus, and the rest.
+signed :: String -> (Bool, String)
+signed ('-' : r) = (True, r)
+signed ('+' : r) = (False, r)
+signed r         = (False, r)
+
+applySign :: Num a => Bool -> a -> a
+applySign neg x = if neg then negate x else x
+
+digitsValue :: String -> Integer
+digitsValue = foldl (\acc d -> acc * 10 + toInteger (fromEnum d - fromEnum '0')) 0
+
+-- | A finite number literal (see the module documentation), converted to
+-- the nearest 'Double'.
+readNumber :: String -> Either Rejection Double
+readNumber s
+  | lower (snd (signed s)) `elem` ["nan", "inf", "infinity"] =
+      Left (Rejection "a finite number" " (NaN and infinities are not allowed)")
+  | otherwise = case decimalLit s of
+      Nothing -> Left (Rejection "a number" "")
+      Just d
+        | isInfinite d -> Left (Rejection "a finite number" " (too large for a Double)")
+        | otherwise    -> Right d
+
+-- | @[+-]DIGITS[.DIGITS][(e|E)[+-]DIGITS]@, correctly rounded; infinite if
+-- too large.
+decimalLit :: String -> Maybe Double
+decimalLit s0 = do
+  let (neg, s1) = signed s0
+      (intPart, s2) = span isDigit s1
+  nonEmpty intPart
+  (fracPart, s3) <- case s2 of
+    '.' : r -> let (f, r') = span isDigit r in nonEmpty f >> Just (f, r')
+    _       -> Just ("", s2)
+  ex <- case s3 of
+    []      -> Just 0
+    c : r | c == 'e' || c == 'E' -> integerLit r
+    _       -> Nothing
+  let mant   = digitsValue (intPart ++ fracPart)
+      -- value = mant * 10 ^ p
+      p      = ex - toInteger (length fracPart)
+      nDigits = toInteger (length (show mant))
+  pure . applySign neg $
+    if mant == 0 || nDigits + p <= -325
+      then 0                            -- below half the smallest denormal
+      else if nDigits - 1 + p > 309
+        then 1 / 0                      -- at least 1e310: overflows
+        else if p >= 0
+          then fromRational (fromInteger (mant * 10 ^ p))
+          else fromRational (fromInteger mant / fromInteger (10 ^ negate p))
+  where
+    nonEmpty xs = if null xs then Nothing else Just ()

@@ -1,0 +1,181 @@
+-- | The renderer: PPM frames checked pixel by pixel, and the SVG picture.
+module AFrobRobotSim.RenderSpec (spec) where
+
+import qualified Data.ByteString       as B
+import qualified Data.ByteString.Char8 as BC
+import           Data.List             (isInfixOf, isPrefixOf, isSuffixOf, tails)
+import           Test.Hspec            hiding (after)
+import           Test.QuickCheck
+
+import           AFrob                 hiding (forAll)
+import           AFrobRobotSim
+import           AFrobRobotSim.Render
+
+scene :: WorldTemplate -> Scene
+scene = Scene notesBounds
+
+style :: RenderStyle
+style = defaultRenderStyle
+
+-- | A snapshot with the given robots and balls, at time 0.
+snapshot :: [RobotState] -> [Position2] -> WorldState
+snapshot rs bs = WorldState { wsTime = 0, wsRobots = rs, wsBalls = bs, wsMessages = [] }
+
+-- | A robot at rest.
+robotAt :: RobotType -> RobotId -> Position2 -> Heading -> Bool -> RobotState
+robotAt ty i p h stuck = RobotState
+  { robotType = ty, robotId = i, robotPos = p, robotHeading = h, robotSpeed = 0
+  , robotStuck = stuck, robotBattery = BSHigh, robotCharge = 1, robotOdometry = p }
+
+-- | The colour of the pixel containing a world point.
+pixelAtWorld :: RenderStyle -> Scene -> B.ByteString -> Position2 -> Maybe Colour
+pixelAtWorld st sc img p = let (x, y) = worldToPixel st sc p in ppmPixel img (floor x) (floor y)
+
+-- | The pixels of a rectangle of pixels (inclusive corners).
+pixelsIn :: B.ByteString -> (Int, Int) -> (Int, Int) -> [Maybe Colour]
+pixelsIn img (i0, j0) (i1, j1) = [ ppmPixel img i j | j <- [j0 .. j1], i <- [i0 .. i1] ]
+
+occurrences :: String -> String -> Int
+occurrences needle hay = length (filter (needle `isPrefixOf`) (tails hay))
+
+driveAt :: Velocity -> Velocity -> SimbotController
+driveAt vl vr _ = constant (mrFinalize (ddVelDiff vl vr))
+
+spec :: Spec
+spec = do
+  describe "frameSize" $ do
+    it "is 600 by 600 plus a 10-pixel margin for the notes' world at 60 px/m" $
+      frameSize style (scene []) `shouldBe` (620, 620)
+    it "follows the world's extent and the scale" $
+      frameSize (RenderStyle 50 False False) (Scene (Bounds 0 0 4 2) []) `shouldBe` (220, 120)
+
+  describe "renderPPM" $ do
+    let world = [ OTVWall (Point2 2 1), OTHWall (Point2 (-2) (-3)), OTBlock (Point2 3 (-3)) ]
+        sc    = scene world
+        ws    = snapshot [ robotAt "SimbotA" 1 (Point2 1.03 (-0.77)) 0.4 False
+                         , robotAt "SimbotB" 2 (Point2 (-3) 2.5) 2 False
+                         , robotAt "SimbotA" 3 (Point2 (-1) (-1)) 0 True ]
+                         [Point2 0 3]
+        img   = renderPPM style sc [] ws
+        at    = pixelAtWorld style sc img
+    it "is a P6 header and exactly 3 * w * h bytes of pixels" $ do
+      let header = "P6\n620 620\n255\n"
+      BC.unpack (B.take (length header) img) `shouldBe` header
+      B.length img `shouldBe` length header + 3 * 620 * 620
+    it "draws the floor inside the world and the boundary in the margin" $ do
+      ppmPixel img frameMargin frameMargin `shouldBe` Just backgroundColour
+      ppmPixel img (619 - frameMargin) (619 - frameMargin) `shouldBe` Just backgroundColour
+      ppmPixel img 0 0 `shouldBe` Just boundaryColour
+      ppmPixel img 619 619 `shouldBe` Just boundaryColour
+    it "draws a robot's body colour at its centre pixel" $ do
+      at (Point2 1.03 (-0.77)) `shouldBe` Just (typeColour "SimbotA")
+      at (Point2 (-3) 2.5) `shouldBe` Just (typeColour "SimbotB")
+      typeColour "SimbotA" `shouldNotBe` typeColour "SimbotB"
+    it "draws a stuck robot darker, with a black rim" $ do
+      at (Point2 (-1) (-1)) `shouldBe` Just (bodyColour "SimbotA" True)
+      bodyColour "SimbotA" True `shouldNotBe` typeColour "SimbotA"
+      at (Point2 (-1) (-1.24)) `shouldBe` Just (outlineColour "SimbotA" True)
+    it "draws walls, blocks and balls in their colours at their centres" $ do
+      at (Point2 2 1) `shouldBe` Just wallColour
+      at (Point2 (-2) (-3)) `shouldBe` Just wallColour
+      at (Point2 3 (-3)) `shouldBe` Just blockColour
+      at (Point2 0 3) `shouldBe` Just ballColour
+    it "y grows upwards: a wall at the top of the world is near the top of the image" $ do
+      let top = renderPPM style (scene [OTHWall (Point2 0 4.9)]) [] (snapshot [] [])
+      ppmPixel top 310 (frameMargin + 3) `shouldBe` Just wallColour
+      ppmPixel top 310 (619 - frameMargin - 3) `shouldBe` Just backgroundColour
+    it "marks the heading with a wedge towards the front edge" $ do
+      let hd h = renderPPM style (scene []) [] (snapshot [robotAt "SimbotA" 1 (Point2 0 0) h False] [])
+          front h = pixelAtWorld style (scene []) (hd h) (Point2 (0.15 * cos h) (0.15 * sin h))
+          back h  = pixelAtWorld style (scene []) (hd h) (Point2 (-0.15 * cos h) (-0.15 * sin h))
+      front 0 `shouldBe` Just headingColour
+      front (pi / 2) `shouldBe` Just headingColour
+      back (pi / 2) `shouldBe` Just (typeColour "SimbotA")
+    it "writes each robot's id in digits next to it" $ do
+      let (x, y) = worldToPixel style sc (Point2 1.03 (-0.77))
+          near   = pixelsIn img (floor x + 5, floor y - 30) (floor x + 30, floor y - 5)
+      Just labelColour `elem` near `shouldBe` True
+    it "shows a robot moving: the pixels change at both its old and new places" $ do
+      let world1 = [OTSimbotA 1 (Point2 (-2) 0) 0]
+          run    = simulate 0.01 world1 (driveAt 0.5 0.5) (driveAt 0.5 0.5)
+          s0     = head run
+          s1     = run !! 500
+          p0     = robotPos (head (wsRobots s0))
+          p1     = robotPos (head (wsRobots s1))
+          f0     = renderPPM style (scene world1) [] s0
+          f1     = renderPPM style (scene world1) [] s1
+      norm (p1 .-. p0) `shouldSatisfy` (> 1)
+      pixelAtWorld style (scene world1) f0 p0 `shouldBe` Just (typeColour "SimbotA")
+      pixelAtWorld style (scene world1) f1 p0 `shouldBe` Just backgroundColour
+      pixelAtWorld style (scene world1) f0 p1 `shouldBe` Just backgroundColour
+      pixelAtWorld style (scene world1) f1 p1 `shouldBe` Just (typeColour "SimbotA")
+    it "is deterministic: the same inputs give the same bytes" $ do
+      let st     = RenderStyle 60 True True
+          trails = [[Point2 0 0, Point2 1 1], [Point2 (-3) 2, Point2 (-3) 2.5]]
+      renderPPM st sc trails ws `shouldBe` renderPPM st sc trails ws
+      renderPPM st sc trails ws `shouldNotBe` img
+    it "with styleRays, draws the front ray in the ray colour up to the wall it meets" $ do
+      let world2 = [OTVWall (Point2 2 0)]
+          sc2    = scene world2
+          ws2    = snapshot [robotAt "SimbotB" 1 (Point2 0 0) 0 False] []
+          rays   = renderPPM style { styleRays = True } sc2 [] ws2
+          plain  = renderPPM style sc2 [] ws2
+      -- the front ray runs from the edge (x = 0.25) to the wall (x = 1.95)
+      [ pixelAtWorld style sc2 rays (Point2 x 0) | x <- [0.4, 1, 1.5, 1.9] ]
+        `shouldBe` replicate 4 (Just rayColour)
+      [ pixelAtWorld style sc2 plain (Point2 x 0) | x <- [0.4, 1, 1.5, 1.9] ]
+        `shouldBe` replicate 4 (Just backgroundColour)
+      pixelAtWorld style sc2 rays (Point2 2.5 0) `shouldBe` Just backgroundColour
+      -- the left ray is not blocked: 3 m from the edge
+      pixelAtWorld style sc2 rays (Point2 0 3) `shouldBe` Just rayColour
+      pixelAtWorld style sc2 rays (Point2 0 3.5) `shouldBe` Just backgroundColour
+    it "with styleTrails, draws each robot's path in its trail colour" $ do
+      let trails = [[Point2 (-4) 4, Point2 4 4], []]
+          with   = renderPPM style { styleTrails = True } sc trails ws
+          plain  = renderPPM style sc trails ws
+      pixelAtWorld style sc with (Point2 0 4) `shouldBe` Just (trailColour "SimbotA")
+      pixelAtWorld style sc plain (Point2 0 4) `shouldBe` Just backgroundColour
+    it "puts a lone robot's body colour at its centre, wherever it is" $
+      property $ forAll ((,,) <$> choose (-4.7, 4.7) <*> choose (-4.7, 4.7) <*> choose (-4, 4)) $
+        \(x, y, h) ->
+          let img1 = renderPPM style (scene []) [] (snapshot [robotAt "SimbotB" 7 (Point2 x y) h False] [])
+          in pixelAtWorld style (scene []) img1 (Point2 x y) === Just (typeColour "SimbotB")
+    it "ppmPixel reads nothing outside the image" $ do
+      ppmPixel img 620 0 `shouldBe` Nothing
+      ppmPixel img 0 (-1) `shouldBe` Nothing
+
+  describe "renderSVG" $ do
+    let world = [ OTSimbotA 1 (Point2 (-2) 0) 0, OTSimbotB 2 (Point2 2 2) 1
+                , OTSimbotB 5 (Point2 0 (-3)) 3, OTVWall (Point2 3 0), OTBall (Point2 0 1) ]
+        run   = take 3001 (simulate 0.01 world (driveAt 0.4 0.5) (driveAt 0.7 0.3))
+        svg   = renderSVG style { styleRays = True } (scene world) run
+    it "is an <svg> element from start to end" $ do
+      svg `shouldSatisfy` ("<svg" `isPrefixOf`)
+      svg `shouldSatisfy` ("</svg>\n" `isSuffixOf`)
+      occurrences "<svg" svg `shouldBe` 1
+    it "has one polyline per robot, in its type's colour" $ do
+      occurrences "<polyline" svg `shouldBe` 3
+      occurrences ("<polyline fill=\"none\" stroke=\"" ++ hexOf (typeColour "SimbotB")) svg `shouldBe` 2
+    it "keeps each trajectory to at most 2000 points" $ do
+      let polylines = filter ("<polyline" `isPrefixOf`) (lines svg)
+          points l  = length (words (takeWhile (/= '"') (drop 1 (dropWhile (/= '"')
+                        (snd (breakOn "points=" l))))))
+      length polylines `shouldBe` 3
+      map points polylines `shouldSatisfy` all (\n -> n > 1000 && n <= 2000)
+    it "names every robot in the legend" $ do
+      svg `shouldSatisfy` ("SimbotA 1<" `isInfixOf`)
+      svg `shouldSatisfy` ("SimbotB 2<" `isInfixOf`)
+      svg `shouldSatisfy` ("SimbotB 5<" `isInfixOf`)
+    it "is deterministic, and draws just the world without snapshots" $ do
+      renderSVG style (scene world) run `shouldBe` renderSVG style (scene world) run
+      let empty = renderSVG style (scene world) []
+      empty `shouldSatisfy` ("<svg" `isPrefixOf`)
+      occurrences "<polyline" empty `shouldBe` 0
+  where
+    hexOf (Colour r g b) = '#' : concatMap hex2 [r, g, b]
+    hex2 v = [digits !! (fromIntegral v `div` 16), digits !! (fromIntegral v `mod` 16)]
+    digits = "0123456789abcdef"
+    breakOn key str = case str of
+      _ | key `isPrefixOf` str -> ("", str)
+      []                       -> ("", "")
+      ch : rest                -> let (a, b) = breakOn key rest in (ch : a, b)

@@ -1,0 +1,319 @@
+-- | Tests for "AFrobRobotSim.WorldFile": every object kind, comments,
+-- units, case, exact error locations, the parse/render round trip and the
+-- example worlds in @worlds/@.
+module AFrobRobotSim.WorldFileSpec (spec) where
+
+import           Data.List              (isInfixOf, isPrefixOf, tails)
+import           System.Directory       (getTemporaryDirectory, removeFile)
+import           System.FilePath        ((</>))
+import           Test.Hspec
+import           Test.QuickCheck
+
+import           AFRP.Geometry          (Point2 (..))
+import           AFrobRobotSim.World
+import           AFrobRobotSim.WorldFile
+
+------------------------------------------------------------------------------
+-- Helpers
+
+-- | Parse under the file name @w.world@.
+parse :: String -> Either String WorldTemplate
+parse = parseWorld "w.world"
+
+-- | Parse a single object.
+parse1 :: String -> Either String ObjectTemplate
+parse1 s = case parse s of
+  Right [o] -> Right o
+  Right os  -> Left ("expected one object, got " ++ show os)
+  Left e    -> Left e
+
+-- | The parse fails with exactly this message.
+failsWith :: HasCallStack => String -> String -> Expectation
+failsWith input msg = parse input `shouldBe` Left msg
+
+------------------------------------------------------------------------------
+-- Generators
+
+-- | Finite doubles of every kind: ordinary, negative, tiny (down to the
+-- denormals), huge (up to the largest finite double), signed zeros and
+-- awkward decimals.
+genDouble :: Gen Double
+genDouble = frequency
+  [ (3, arbitrary)
+  , (2, choose (-5, 5))
+  , (2, bits)
+  , (1, elements specials)
+  , (1, (/ 10) . fromInteger <$> choose (-1000, 1000))
+  ]
+  where
+    bits = (do m <- choose (-(2 ^ (53 :: Int)), 2 ^ (53 :: Int))
+               e <- choose (-1130, 971)
+               pure (encodeFloat m e)) `suchThat` finite
+    specials = [ 0, -0.0, 5.0e-324, -5.0e-324, 2.2250738585072014e-308
+               , 1.7976931348623157e308, -1.7976931348623157e308
+               , 0.1, 1 / 3, pi, -pi, 1e22, 1e23, 123456789.125, 9007199254740993 ]
+    finite x = not (isNaN x || isInfinite x)
+
+genId :: Gen Int
+genId = frequency
+  [ (4, arbitrary), (1, elements [minBound, maxBound, 0, -1]) ]
+
+genObject :: Gen ObjectTemplate
+genObject = do
+  p <- Point2 <$> genDouble <*> genDouble
+  oneof
+    [ pure (OTBlock p), pure (OTVWall p), pure (OTHWall p), pure (OTBall p)
+    , OTSimbotA <$> genId <*> pure p <*> genDouble
+    , OTSimbotB <$> genId <*> pure p <*> genDouble
+    ]
+
+newtype AWorld = AWorld WorldTemplate
+  deriving Show
+
+instance Arbitrary AWorld where
+  arbitrary = AWorld <$> listOf genObject
+  shrink (AWorld w) = AWorld <$> shrinkList (const []) w
+
+------------------------------------------------------------------------------
+-- Geometry of the example worlds
+
+-- | The bounding boxes of two objects overlap by more than a nanometre.
+boxesOverlap :: ObjectTemplate -> ObjectTemplate -> Bool
+boxesOverlap a b =
+  let Point2 ax ay = otPos a
+      Point2 bx by = otPos b
+      (ahw, ahh)   = objectHalfSize a
+      (bhw, bhh)   = objectHalfSize b
+      eps          = 1e-9
+  in abs (ax - bx) < ahw + bhw - eps && abs (ay - by) < ahh + bhh - eps
+
+exampleFiles :: [FilePath]
+exampleFiles = ["worlds/arena.world", "worlds/soccer.world", "worlds/corridor.world"]
+
+------------------------------------------------------------------------------
+
+spec :: Spec
+spec = do
+  describe "parseWorld: objects" $ do
+    it "parses a block" $
+      parse1 "block at 2 -2" `shouldBe` Right (OTBlock (Point2 2 (-2)))
+    it "parses a ball" $
+      parse1 "ball at 0 0" `shouldBe` Right (OTBall (Point2 0 0))
+    it "parses a vertical wall (v and vertical)" $ do
+      parse1 "wall v at 0 3" `shouldBe` Right (OTVWall (Point2 0 3))
+      parse1 "wall vertical at 0 3" `shouldBe` Right (OTVWall (Point2 0 3))
+    it "parses a horizontal wall (h and horizontal)" $ do
+      parse1 "wall h at -1 2.5" `shouldBe` Right (OTHWall (Point2 (-1) 2.5))
+      parse1 "wall horizontal at -1 2.5" `shouldBe` Right (OTHWall (Point2 (-1) 2.5))
+    it "parses a SimbotA" $
+      parse1 "simbotA 1 at -2.0 -2.0 heading 45 deg"
+        `shouldBe` Right (OTSimbotA 1 (Point2 (-2) (-2)) (45 * pi / 180))
+    it "parses a SimbotB" $
+      parse1 "simbotB 2 at 1 1 heading 1.5708 rad"
+        `shouldBe` Right (OTSimbotB 2 (Point2 1 1) 1.5708)
+    it "parses negative and explicitly positive robot ids" $ do
+      parse1 "simbotA -7 at 0 0" `shouldBe` Right (OTSimbotA (-7) (Point2 0 0) 0)
+      parse1 "simbotB +7 at 0 0" `shouldBe` Right (OTSimbotB 7 (Point2 0 0) 0)
+    it "keeps the objects in the order of their lines" $
+      parse "ball at 1 1\nblock at 2 2\nwall v at 3 3\n"
+        `shouldBe` Right [OTBall (Point2 1 1), OTBlock (Point2 2 2), OTVWall (Point2 3 3)]
+    it "parses an empty file to the empty world" $ do
+      parse "" `shouldBe` Right []
+      parse "\n\n" `shouldBe` Right []
+
+  describe "parseWorld: comments and layout" $ do
+    it "ignores blank lines, comment lines and trailing comments" $
+      parse (unlines
+        [ "# a world"
+        , ""
+        , "   "
+        , "\t# indented comment"
+        , "ball at 0 0   # the ball"
+        , "block at 1 1# no space before the comment"
+        ])
+        `shouldBe` Right [OTBall (Point2 0 0), OTBlock (Point2 1 1)]
+    it "accepts any whitespace between tokens, and CRLF line ends" $
+      parse "  wall\tv   at\t1  2 \r\nball at 3 4\r\n"
+        `shouldBe` Right [OTVWall (Point2 1 2), OTBall (Point2 3 4)]
+    it "accepts a file without a final newline" $
+      parse "ball at 0 0" `shouldBe` Right [OTBall (Point2 0 0)]
+
+  describe "parseWorld: headings" $ do
+    it "converts degrees to radians" $ do
+      fmap otHdng (parse1 "simbotA 1 at 0 0 heading 90 deg") `shouldBe` Right (pi / 2)
+      fmap otHdng (parse1 "simbotA 1 at 0 0 heading 180 degrees") `shouldBe` Right pi
+      fmap otHdng (parse1 "simbotA 1 at 0 0 heading -45 deg") `shouldBe` Right (-(pi / 4))
+    it "takes radians as they are" $ do
+      fmap otHdng (parse1 "simbotB 1 at 0 0 heading 1 rad") `shouldBe` Right 1
+      fmap otHdng (parse1 "simbotB 1 at 0 0 heading 0.25 radians") `shouldBe` Right 0.25
+    it "distinguishes the same number in degrees and in radians" $
+      fmap otHdng (parse1 "simbotA 1 at 0 0 heading 2 deg")
+        `shouldNotBe` fmap otHdng (parse1 "simbotA 1 at 0 0 heading 2 rad")
+    it "does not normalise headings" $
+      fmap otHdng (parse1 "simbotA 1 at 0 0 heading 450 deg") `shouldBe` Right (450 * pi / 180)
+    it "defaults an omitted heading to 0" $ do
+      parse1 "simbotA 3 at 1 2" `shouldBe` Right (OTSimbotA 3 (Point2 1 2) 0)
+      parse1 "simbotB 3 at 1 2 # facing east" `shouldBe` Right (OTSimbotB 3 (Point2 1 2) 0)
+
+  describe "parseWorld: case-insensitivity" $
+    it "accepts keywords in any case" $
+      parse (unlines
+        [ "SIMBOTA 1 AT 0 0 HEADING 90 DEG"
+        , "SimbotB 2 At 1 1 Heading 1 Rad"
+        , "simbota 3 at 2 2 heading 1 RADIANS"
+        , "Wall V at 0 3"
+        , "WALL Horizontal at 0 4"
+        , "Block at 1 1"
+        , "bAlL at 2 2"
+        ])
+        `shouldBe` Right
+          [ OTSimbotA 1 (Point2 0 0) (pi / 2)
+          , OTSimbotB 2 (Point2 1 1) 1
+          , OTSimbotA 3 (Point2 2 2) 1
+          , OTVWall (Point2 0 3)
+          , OTHWall (Point2 0 4)
+          , OTBlock (Point2 1 1)
+          , OTBall (Point2 2 2)
+          ]
+
+  describe "parseWorld: numbers" $ do
+    it "accepts signs, fractions and exponents" $ do
+      parse1 "ball at -2 +0.5" `shouldBe` Right (OTBall (Point2 (-2) 0.5))
+      parse1 "ball at 1e-3 2.5E+2" `shouldBe` Right (OTBall (Point2 1e-3 250))
+      parse1 "ball at 007 -0.0" `shouldBe` Right (OTBall (Point2 7 0))
+    it "reads numbers exactly (correctly rounded)" $ do
+      parse1 "ball at 0.1 4.9406564584124654e-324"
+        `shouldBe` Right (OTBall (Point2 0.1 5.0e-324))
+      parse1 "ball at 1.7976931348623157e308 9007199254740993"
+        `shouldBe` Right (OTBall (Point2 1.7976931348623157e308 9007199254740992))
+    it "rounds literals too small for a Double to zero" $
+      parse1 "ball at 1e-400 -1e-99999999999" `shouldBe` Right (OTBall (Point2 0 0))
+    it "rejects a missing integer part or fraction" $ do
+      "ball at .5 0" `failsWith` "w.world:1:9: expected a number after \"at\", found \".5\""
+      "ball at 5. 0" `failsWith` "w.world:1:9: expected a number after \"at\", found \"5.\""
+
+  describe "parseWorld: errors" $ do
+    it "reports an unknown keyword" $
+      "\nrobot 1 at 0 0" `failsWith`
+        "w.world:2:1: expected an object keyword (simbotA, simbotB, wall, block or ball), found \"robot\""
+    it "reports an unknown keyword after leading whitespace" $
+      "   Blocks at 0 0" `failsWith`
+        "w.world:1:4: expected an object keyword (simbotA, simbotB, wall, block or ball), found \"Blocks\""
+    it "reports a bad wall orientation" $
+      "wall d at 0 0" `failsWith`
+        "w.world:1:6: expected a wall orientation (v, vertical, h or horizontal) after \"wall\", found \"d\""
+    it "reports a missing \"at\"" $
+      "block 1 2" `failsWith` "w.world:1:7: expected \"at\" after \"block\", found \"1\""
+    it "reports a missing number at the end of the line" $
+      "ball at 1.5" `failsWith` "w.world:1:12: expected a number after \"1.5\", found end of line"
+    it "reports a missing number before a comment" $
+      "# c\n\nball at # where?" `failsWith`
+        "w.world:3:8: expected a number after \"at\", found end of line"
+    it "reports a bad number (the example of the documentation)" $
+      "# one\n# two\nsimbotA 1 at  x1 0" `failsWith`
+        "w.world:3:15: expected a number after \"at\", found \"x1\""
+    it "reports a malformed number" $ do
+      "ball at 1.2.3 0" `failsWith` "w.world:1:9: expected a number after \"at\", found \"1.2.3\""
+      "ball at 0 1e" `failsWith` "w.world:1:11: expected a number after \"0\", found \"1e\""
+      "ball at 0x10 0" `failsWith` "w.world:1:9: expected a number after \"at\", found \"0x10\""
+    it "reports a bad robot id" $ do
+      "simbotA one at 0 0" `failsWith`
+        "w.world:1:9: expected a robot id (an integer) after \"simbotA\", found \"one\""
+      "simbotB 1.0 at 0 0" `failsWith`
+        "w.world:1:9: expected a robot id (an integer) after \"simbotB\", found \"1.0\""
+      "simbotB 99999999999999999999 at 0 0" `failsWith`
+        "w.world:1:9: expected a robot id (an integer) after \"simbotB\", found \"99999999999999999999\" (out of range)"
+    it "reports a missing heading unit" $ do
+      "simbotA 1 at 0 0 heading 45" `failsWith`
+        "w.world:1:28: expected a heading unit (deg, degrees, rad or radians) after \"45\", found end of line"
+      "simbotA 1 at 0 0 heading 45 # degrees" `failsWith`
+        "w.world:1:28: expected a heading unit (deg, degrees, rad or radians) after \"45\", found end of line"
+      "simbotA 1 at 0 0 heading 45 grad" `failsWith`
+        "w.world:1:29: expected a heading unit (deg, degrees, rad or radians) after \"45\", found \"grad\""
+    it "reports a missing heading value" $
+      "simbotA 1 at 0 0 heading deg" `failsWith`
+        "w.world:1:26: expected a number after \"heading\", found \"deg\""
+    it "reports trailing garbage" $ do
+      "ball at 0 0 0" `failsWith`
+        "w.world:1:13: expected end of line or a comment after \"0\", found \"0\""
+      "wall h at 0 0 extra # comment" `failsWith`
+        "w.world:1:15: expected end of line or a comment after \"0\", found \"extra\""
+      "simbotA 1 at 0 0 heading 1 rad more" `failsWith`
+        "w.world:1:32: expected end of line or a comment after \"rad\", found \"more\""
+      "simbotA 1 at 0 0 facing 1 rad" `failsWith`
+        "w.world:1:18: expected \"heading\" or end of line after \"0\", found \"facing\""
+    it "reports NaN and infinities" $ do
+      "ball at NaN 0" `failsWith`
+        "w.world:1:9: expected a finite number after \"at\", found \"NaN\" (NaN and infinities are not allowed)"
+      "ball at 0 -Infinity" `failsWith`
+        "w.world:1:11: expected a finite number after \"0\", found \"-Infinity\" (NaN and infinities are not allowed)"
+      "simbotA 1 at 0 0 heading inf rad" `failsWith`
+        "w.world:1:26: expected a finite number after \"heading\", found \"inf\" (NaN and infinities are not allowed)"
+    it "reports numbers too large for a Double" $
+      "ball at 1e400 0" `failsWith`
+        "w.world:1:9: expected a finite number after \"at\", found \"1e400\" (too large for a Double)"
+    it "counts a tab as one column" $
+      "ball\tat\tq 0" `failsWith` "w.world:1:9: expected a number after \"at\", found \"q\""
+    it "reports only the first error, and nothing partial" $
+      parse "ball at 0 0\nblock at 1\nwall at 2 2\n"
+        `shouldBe` Left "w.world:2:11: expected a number after \"1\", found end of line"
+    it "uses the given file name" $
+      parseWorld "dir/my.world" "bal at 0 0" `shouldSatisfy` either ("dir/my.world:1:1: " `isPrefixOf`) (const False)
+
+  describe "renderWorld" $ do
+    it "starts with a header comment and prints one object per line" $ do
+      let w = [OTVWall (Point2 0 3), OTSimbotB 2 (Point2 1 (-1)) 0.5, OTBall (Point2 0 0)]
+          ls = lines (renderWorld w)
+      length ls `shouldBe` 4
+      take 1 ls `shouldSatisfy` all ("#" `isPrefixOf`)
+      drop 1 ls `shouldBe`
+        [ "wall v at 0.0 3.0", "simbotB 2 at 1.0 -1.0 heading 0.5 rad", "ball at 0.0 0.0" ]
+    it "renders the empty world as a comment only" $
+      parse (renderWorld []) `shouldBe` Right []
+    it "round-trips every finite world exactly" $
+      withMaxSuccess 500 $ \(AWorld w) -> parseWorld "r.world" (renderWorld w) === Right w
+    it "round-trips signed zeros" $
+      fmap (map otPos) (parse (renderWorld [OTBall (Point2 (-0.0) 0)]))
+        `shouldSatisfy` either (const False)
+                               (\ps -> [ isNegativeZero x | Point2 x _ <- ps ] == [True])
+
+  describe "readWorldFile" $ do
+    it "reports a missing file as a Left naming it" $ do
+      r <- readWorldFile "worlds/no-such-file.world"
+      r `shouldSatisfy` either ("no-such-file.world" `isInfixOf`) (const False)
+    it "reports a directory as a Left, not an exception" $ do
+      r <- readWorldFile "worlds"
+      r `shouldSatisfy` either (const True) (const False)
+    it "reports syntax errors with the file's path" $ do
+      tmp <- getTemporaryDirectory
+      let file = tmp </> "afrp-bad-syntax.world"
+      writeFile file "# a comment\nball at 0 0\nrobot at 1 1\n"
+      r <- readWorldFile file
+      removeFile file
+      r `shouldSatisfy` either ((file ++ ":3:1: expected an object keyword") `isPrefixOf`) (const False)
+
+  describe "the example worlds" $ do
+    mapM_ exampleWorld exampleFiles
+    it "worlds/arena.world has three robots of each type" $ do
+      r <- readWorldFile "worlds/arena.world"
+      case r of
+        Left e  -> expectationFailure e
+        Right w -> do
+          length [ () | OTSimbotA {} <- w ] `shouldBe` 3
+          length [ () | OTSimbotB {} <- w ] `shouldBe` 3
+  where
+    exampleWorld path = describe path $ do
+      it "parses, passes validateWorld and round-trips" $ do
+        r <- readWorldFile path
+        case r of
+          Left e  -> expectationFailure e
+          Right w -> do
+            validateWorld w `shouldBe` Right ()
+            parseWorld path (renderWorld w) `shouldBe` Right w
+      it "has no two objects overlapping" $ do
+        r <- readWorldFile path
+        case r of
+          Left e  -> expectationFailure e
+          Right w ->
+            [ (objectName a, objectName b) | (a : rest) <- tails w, b <- rest, boxesOverlap a b ]
+              `shouldBe` []
