@@ -28,6 +28,7 @@ import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
 import qualified AFrobRobotSim.ShapesSpec
+import qualified Examples.Exercises14and15Spec
 import qualified Examples.Exercises1to6Spec
 import qualified Examples.Exercises7to13Spec
 import qualified Examples.Section2Spec
@@ -70,3 +71,4 @@ main = hspec $ do
   describe "examples: section 3"     Examples.Section3Spec.spec
   describe "exercises 1-6"           Examples.Exercises1to6Spec.spec
   describe "exercises 7-13"          Examples.Exercises7to13Spec.spec
+  describe "exercises 14 and 15"     Examples.Exercises14and15Spec.spec

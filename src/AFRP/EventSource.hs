@@ -141,7 +141,11 @@ afterEachCat qxs0 = SF (initN (\_ -> emit clockZero clockZero qxs0))
 -- at local time @t@ is produced at the first sample at or after @t + q@.
 -- When several delayed occurrences fall due at one sample only the first
 -- (earliest) is produced ('delayEventCat' gives them all).
--- @delayEvent 0@ is the identity; a negative delay is an error.
+-- @delayEvent 0@ is the identity; a negative delay is an error. The due
+-- time @t + q@ is one floating-point addition, so an occurrence due within
+-- a rounding error of a sample time may come one sample later than exact
+-- arithmetic would put it (Yampa, which sums the gaps between occurrences,
+-- drifts by more).
 delayEvent :: Time -> SF (Event a) (Event a)
 delayEvent q
   | q < 0 || isNaN q = errNeg "delayEvent" q
@@ -243,7 +247,9 @@ snap = SF (initN (\a -> (# neverN, Event a #)))
 -- local time is @>= t@ (at time 0 if @t == 0@). A negative @t@ is an error,
 -- as for 'after'.
 snapAfter :: Time -> SF a (Event a)
-snapAfter t = SF (compN (fanN (sfNode (after t ())) idN) (arrN (\(e, a) -> e `tag` a)))
+snapAfter t
+  | t < 0 || isNaN t = errNeg "snapAfter" t
+  | otherwise        = SF (compN (fanN (sfNode (after t ())) idN) (arrN (\(e, a) -> e `tag` a)))
 
 -- | @sample p@ occurs at local times @p, 2p, ...@ (as 'repeatedly')
 -- carrying the input sample at that instant. No occurrence at time 0.

@@ -1,25 +1,18 @@
-{-# LANGUAGE Arrows #-}
--- The listings are the notes' own code: they shadow Prelude's max, match
--- partially in a let (rcAlign) and dispatch on a few ids (rcA).
-{-# OPTIONS_GHC -Wno-name-shadowing -Wno-incomplete-uni-patterns
-                -Wno-incomplete-patterns -Wno-missing-signatures -Wno-unused-top-binds
-                -Wno-type-defaults #-}
+-- The notes' rcA template dispatches on a few ids only.
+{-# OPTIONS_GHC -Wno-incomplete-patterns #-}
 -- |
--- Every controller listing of section 3 of the notes, compiled against
--- "AFrob" and "AFrobRobotSim" and run in the simulator. The code is the
--- notes' own, re-indented where the typesetting lost the layout; the two
--- places where the printed code itself does not compile are marked.
+-- The controller listings of section 3 of the notes (compiled, verbatim,
+-- in "Paper.Section3") run in the simulator: each does what the notes say.
 module AFrobRobotSim.NotesSection3Spec (spec) where
 
-import           Data.List    (isInfixOf, sortBy)
+import           Data.List    (isInfixOf)
 import           Test.Hspec   hiding (after)
 
 import           AFrob        hiding (forAll)
 import           AFrobRobotSim
+import           Paper.Section3
 
-------------------------------------------------------------------------------
--- 3.2 Robot controllers
-
+-- The notes' rcA template: dispatch on the robot id.
 rcA :: SimbotController
 rcA rProps =
   case rpId rProps of
@@ -31,99 +24,6 @@ rcA1, rcA2, rcA3 :: SimbotController
 rcA1 = rcStop
 rcA2 = rcBlind2
 rcA3 = rcTurn 0.2
-
-------------------------------------------------------------------------------
--- 3.3 Basic robot movement
-
-rcStop :: SimbotController
-rcStop _ = constant (mrFinalize ddBrake)
-
-rcBlind1 _ = constant (mrFinalize $ ddVelDiff 10 10)
-
-rcBlind2 rps =
-  let max = rpWSMax rps
-  in constant (mrFinalize $ ddVelDiff (max/2) (max/2))
-
-rcTurn :: Velocity -> SimbotController
-rcTurn vel rps =
-  let vMax = rpWSMax rps
-      rMax = 2 * (vMax - vel) / rpDiameter rps
-  in constant (mrFinalize $ ddVelTR vel rMax)
-
-rcReverse :: Velocity -> SimbotController
-rcReverse v rps = beh `dSwitch` const (rcReverse (-v) rps)
-  where beh = proc sbi -> do
-          stuckE <- rsStuck -< sbi
-          let mr = ddVelDiff v v `mrMerge`
-                   tcoPrintMessage (tag stuckE "Ouch!!")
-          returnA -< (mrFinalize mr, stuckE)
-
--- The notes write @rcReverse' v _ = ...@ and then use @rps@, which that
--- pattern does not bind; we name the argument.
-rcReverse' v rps =
-  (rsStuck >>> arr fun) `dSwitch` const (rcReverse' (-v) rps)
-  where fun stuckE =
-          let mr = ddVelDiff v v `mrMerge`
-                   tcoPrintMessage (tag stuckE "Ouch!!")
-          in (mrFinalize mr, stuckE)
-
-rcHeading :: Velocity -> Heading -> SimbotController
-rcHeading vel hd rps =
-  let vMax = rpWSMax rps
-      vel' = lim vMax vel
-      k    = 2
-  in proc sbi -> do
-    let he = normalizeAngle (hd - odometryHeading sbi)
-    --     vel'' = (1 - abs he / pi) * vel'
-    --     returnA -< mrFinalize (ddVelTR vel'' (k*he))
-    returnA -< mrFinalize (ddVelTR vel' (k*he))
-
-lim m y = max (-m) (min m y)
-
-rcHeading' :: Velocity -> Heading -> SimbotController
-rcHeading' vel hd rps =
-  proc sbi -> do
-    rcHeadingAux rps -< (sbi, vel, hd)
-
-rcHeadingAux :: SimbotProperties ->
-              SF (SimbotInput,Velocity,Heading) SimbotOutput
-rcHeadingAux rps =
-  let vMax = rpWSMax rps
-      k    = 2
-  in proc (sbi,vel,hd) -> do
-    let vel' = lim vMax vel
-        he   = normalizeAngle (hd - odometryHeading sbi)
-    --      vel'' = (1 - abs he / pi) * vel'
-    --      returnA -< mrFinalize (ddVelTR vel'' (k*he))
-    returnA -< mrFinalize (ddVelTR vel' (k*he))
-
-rcMoveTo :: Velocity -> Position2 -> SimbotController
-rcMoveTo vd pd rps = proc sbi -> do
-  let (d,h) = vector2RhoTheta (pd .-. odometryPosition sbi)
-      vel   = if d>2 then vd else vd*(d/2)
-  rcHeadingAux rps -< (sbi, vel, h)
-
-rcFollowLeftWall :: Velocity -> Distance -> SimbotController
-rcFollowLeftWall v d _ = proc sbi -> do
-  let r = rfLeft sbi
-  dr <- derivative -< r
-  let omega = kp*(r-d) + kd*dr
-      kd     = 5
-      kp     = v*(kd^2)/4
-  returnA -< mrFinalize (ddVelTR v (lim 0.2 omega))
-
-rcAlign :: Velocity -> SimbotController
-rcAlign v rps = proc sbi -> do
-  let neighbors = sortBy (\(_,_,_,d1) (_,_,_,d2) -> compare d1 d2)
-                        (aotOtherRobots sbi)
-      (l1:l2:l3:_) = map (\(_,_,a,d) -> vector2Polar d a) neighbors
-      vhat = vector2Polar v (odometryHeading sbi)
-      heading l = vector2Theta (vhat ^+^ l)
-  d11 <- derivative -< l1
-  d12 <- derivative -< l2
-  d13 <- derivative -< l3
-  let hAvg = sum (map heading [d11,d12,d13]) / 3
-  rcHeadingAux rps -< (sbi, v, hAvg)
 
 ------------------------------------------------------------------------------
 
@@ -169,13 +69,13 @@ spec = do
     let (x, y) = posOf (robotAt 30 (simulate 0.01 [OTSimbotB 1 (Point2 (-3) (-3)) 0] rcStop (rcMoveTo 1 (Point2 2 1))))
     sqrt ((x - 2) ^ (2 :: Int) + (y - 1) ^ (2 :: Int)) `shouldSatisfy` (< 0.3)
   it "rcFollowLeftWall follows a wall on its left" $ do
-    let wall = [ OTHWall (Point2 x 1) | x <- [-3.5, -2.5 .. 3.5] ]
+    let wall = [ OTHWall (Point2 wx 1) | wx <- [-3.5, -2.5 .. 3.5] ]
         run  = simulate 0.01 (OTSimbotA 1 (Point2 (-3.5) 0.5) 0 : wall) (rcFollowLeftWall 0.3 0.25) rcStop
         (x, y) = posOf (robotAt 15 run)
     x `shouldSatisfy` (> -0.5)
     -- the wall's face is at y = 0.95; the robot's edge keeps 0.25 from it
     abs (y - (0.95 - 0.25 - 0.25)) `shouldSatisfy` (< 0.05)
-  it "rcAlign makes a group of simbots converge on one heading" $ do
+  it "rcAlign (with the frame fix of Paper.Section3) makes a group converge on one heading" $ do
     let world = [ OTSimbotB i (Point2 (fromIntegral (i `mod` 3) * 1.5 - 1.5) (fromIntegral (i `div` 3) * 1.5 - 1.5))
                               (fromIntegral i * 0.7) | i <- [0 .. 5] ]
         run = simulate 0.01 world rcStop (rcAlign 0.2)

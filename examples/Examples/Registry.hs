@@ -1,0 +1,32 @@
+-- | Every example, in the order of the notes.
+module Examples.Registry
+  ( allExamples
+  ) where
+
+import           Examples.Types
+import qualified Exercises.Ex01 as Ex01
+import qualified Exercises.Ex02 as Ex02
+import qualified Exercises.Ex03 as Ex03
+import qualified Exercises.Ex04 as Ex04
+import qualified Exercises.Ex05 as Ex05
+import qualified Exercises.Ex06 as Ex06
+import qualified Exercises.Ex07 as Ex07
+import qualified Exercises.Ex08 as Ex08
+import qualified Exercises.Ex09 as Ex09
+import qualified Exercises.Ex10 as Ex10
+import qualified Exercises.Ex11 as Ex11
+import qualified Exercises.Ex12 as Ex12
+import qualified Exercises.Ex13 as Ex13
+import qualified Exercises.Ex14 as Ex14
+import qualified Exercises.Ex15 as Ex15
+import qualified Paper.Section2 as Section2
+import qualified Paper.Section3 as Section3
+
+-- | The notes' programs (sections 2 and 3), then the exercises 1 to 15.
+allExamples :: [Example]
+allExamples = concat
+  [ Section2.examples, Section3.examples
+  , Ex01.examples, Ex02.examples, Ex03.examples, Ex04.examples, Ex05.examples
+  , Ex06.examples, Ex07.examples, Ex08.examples, Ex09.examples, Ex10.examples
+  , Ex11.examples, Ex12.examples, Ex13.examples, Ex14.examples, Ex15.examples
+  ]

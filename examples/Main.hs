@@ -1,0 +1,59 @@
+-- | @afrp-examples@: every program of the notes and a solution to each of
+-- its exercises.
+--
+-- > cabal run afrp-examples -- --list
+-- > cabal run afrp-examples -- rcReverse --seconds 20 --svg reverse.svg
+module Main (main) where
+
+import           Data.Char          (toLower)
+import           Data.List          (isPrefixOf, sortOn)
+import           System.Environment (getArgs, getProgName)
+import           System.Exit        (ExitCode (..), exitWith)
+import           System.IO          (hPutStrLn, stderr)
+import           Text.Printf        (printf)
+
+import           AFrobRobotSim
+import           Examples.Registry  (allExamples)
+import           Examples.Types
+
+main :: IO ()
+main = do
+  args <- getArgs
+  prog <- getProgName
+  case args of
+    []             -> usageError prog "give an example name, or --list"
+    ["--list"]     -> mapM_ (\e -> printf "%-18s %s\n" (exName e) (exDescription e)) allExamples
+    ["--help"]     -> putStrLn (helpText prog)
+    name : flags   -> case [ e | e <- allExamples, exName e == name ] of
+      e : _ -> runExample prog e flags
+      []    -> usageError prog ("no example named " ++ show name ++ suggestion name)
+
+runExample :: String -> Example -> [String] -> IO ()
+runExample prog e flags = case e of
+  SignalExample {} -> case flags of
+    [] -> putStr (exReport e)
+    _  -> usageError prog (exName e ++ " is a signal-function example; it takes no flags")
+  RobotExample {} ->
+    case parseSimArgs defaultSimOptions { optSeconds = exSeconds e } flags of
+      Left err            -> usageError prog err
+      Right ShowHelp      -> putStrLn (usage (prog ++ " " ++ exName e))
+      Right (RunWith opt) -> runSimWith opt (Just (exWorld e)) (exControllerA e) (exControllerB e)
+
+suggestion :: String -> String
+suggestion name = case sortOn length [ exName e | e <- allExamples, lower name `isPrefixOf` lower (exName e) ] of
+  n : _ -> " (did you mean " ++ n ++ "?)"
+  []    -> " (--list shows them all)"
+  where lower = map toLower
+
+helpText :: String -> String
+helpText prog = unlines
+  [ "usage: " ++ prog ++ " --list"
+  , "       " ++ prog ++ " NAME [simulator flags]"
+  , ""
+  , "Runs one example of the notes headless. Robot examples take every flag of"
+  , "the simulator (" ++ prog ++ " NAME --help lists them); signal-function"
+  , "examples print a short report."
+  ]
+
+usageError :: String -> String -> IO a
+usageError prog msg = hPutStrLn stderr (prog ++ ": " ++ msg) >> exitWith (ExitFailure 2)
