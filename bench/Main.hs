@@ -1,36 +1,132 @@
+{-# OPTIONS_GHC -fno-full-laziness #-}
 -- | @cabal bench@: every network of "Networks" against its hand-written
--- baseline (criterion). See bench/README.md for how to read the results.
+-- baseline, and the simulator at 1, 10, 100 and 1000 robots (criterion).
+-- See bench/README.md for how to read the results.
 --
--- @afrp-bench --run KEY N@ instead runs one network for N samples and
--- prints the sum of its outputs: bench/residency.sh uses it with
--- @+RTS -s@ to measure memory residency.
+-- Other modes (used by bench/residency.sh and to fill in bench/README.md):
+--
+-- * @afrp-bench --run KEY N@ runs one network for N samples and prints
+--   the sum of its outputs (@--run floor N@: the network @arr id@, i.e.
+--   what 'AFRP.Run.embed' and the input list cost on their own);
+-- * @afrp-bench --base KEY N@ does the same for the network's baseline;
+-- * @afrp-bench --sim ROBOTS STEPS@ runs the simulator benchmark world
+--   with that many robots for that many steps and prints the robot-steps
+--   per second and the speed relative to real time;
+-- * @afrp-bench --sim-table@ does that for 1, 10, 100 and 1000 robots;
+-- * @afrp-bench --render FRAMES@ renders that many 600x600 PPM frames of
+--   the 10-robot world and prints the frames per second;
+-- * @afrp-bench --pairs R@ times every network and its baseline R times,
+--   alternately (CPU time), and prints the best times and the median of
+--   the R ratios: steadier than separate runs on a busy machine.
 module Main (main) where
 
+import           Control.Exception  (evaluate)
 import           Criterion.Main
-import           Data.List          (foldl', isPrefixOf)
+import           Criterion.Types    (Config (..))
+import           Data.List          (foldl', isPrefixOf, sort)
+import           GHC.Clock          (getMonotonicTime)
+import           System.CPUTime     (getCPUTime)
 import           System.Environment (getArgs, withArgs)
 import           System.Exit        (exitFailure)
 import           System.IO          (hPutStrLn, stderr)
+import           Text.Printf        (printf)
 
+import           AFRP               (arr)
 import           Networks
+import           RenderBench        (prepareFrames, renderFrames)
+import           SimBench
 
 samples :: Int
 samples = 100000
+
+-- | 8 s per benchmark (criterion's default is 5): about 4 minutes in all.
+config :: Config
+config = defaultConfig { timeLimit = 8 }
+
+-- | Robots and steps of the simulator benchmarks (each run takes from a
+-- few tens to a few hundred milliseconds).
+simSizes :: [(Int, Int)]
+simSizes = [(1, 20000), (10, 2000), (100, 500), (1000, 50)]
 
 main :: IO ()
 main = do
   args <- getArgs
   case args of
-    ["--run", key, n] -> case [nw | nw <- networks, (key ++ ":") `isPrefixOf` nwName nw] of
-      nw : _ -> print (sumNetwork (nwSF nw) (read n))
-      []     -> do
-        hPutStrLn stderr ("afrp-bench: no network " ++ show key ++ "; the keys are "
-                          ++ unwords (map (takeWhile (/= ':') . nwName) networks))
-        exitFailure
-    _ -> withArgs args (defaultMain
-      [ bgroup (nwName nw)
-          [ bench "afrp"     (whnf (sumNetwork (nwSF nw)) samples)
-          , bench "baseline" (whnf (foldl' (+) 0 . nwBaseline nw) samples)
-          ]
-      | nw <- networks
-      ])
+    ["--run", "floor", n] -> print (sumNetwork (arr id) (read n))
+    ["--base", key, n] -> withNetwork key $ \nw -> print (foldl' (+) 0 (nwBaseline nw (read n)))
+    ["--run", key, n] -> withNetwork key $ \nw -> print (sumNetwork (nwSF nw) (read n))
+    ["--sim", n, steps] -> simReport (read n) (read steps)
+    ["--sim-table"] -> mapM_ (\(n, steps) -> simReport n (steps * 5)) simSizes
+    ["--render", frames] -> renderReport (read frames)
+    ["--pairs", r] -> mapM_ (pairsReport (read r)) networks
+    _ -> withArgs args (defaultMainWith config
+      ([ bgroup (nwName nw)
+           [ bench "afrp"     (whnf (sumNetwork (nwSF nw)) samples)
+           , bench "baseline" (whnf (foldl' (+) 0 . nwBaseline nw) samples)
+           ]
+       | nw <- networks
+       ] ++
+       [ bgroup "simulator"
+           [ bench (show n ++ " robots x " ++ show steps ++ " steps") (whnf (runBench n) steps)
+           | (n, steps) <- simSizes ]
+       , bgroup "render"
+           [ env (evaluate (prepareFrames 10)) $ \_ ->
+               bench "10 robots, 600x600 PPM x 10 frames" (whnf renderFrames 10) ]
+       ]))
+
+withNetwork :: String -> (Network -> IO ()) -> IO ()
+withNetwork key k = case [nw | nw <- networks, (key ++ ":") `isPrefixOf` nwName nw] of
+  nw : _ -> k nw
+  []     -> do
+    hPutStrLn stderr ("afrp-bench: no network " ++ show key ++ "; the keys are "
+                      ++ unwords (map (takeWhile (/= ':') . nwName) networks))
+    exitFailure
+
+-- | Time one simulator run (wall clock and CPU) and report robot-steps per
+-- second and the speed relative to real time.
+simReport :: Int -> Int -> IO ()
+simReport n steps = do
+  _  <- evaluate (worldChecksum n)   -- build the world outside the timed run
+  w0 <- getMonotonicTime
+  c0 <- getCPUTime
+  s  <- evaluate (runBench n steps)
+  c1 <- getCPUTime
+  w1 <- getMonotonicTime
+  let cpu  = fromIntegral (c1 - c0) / 1e12 :: Double
+      wall = w1 - w0
+      simT = fromIntegral steps * simDtBench
+  printf "%5d robots x %6d steps: %10.0f robot-steps/s, %8.1fx real time (CPU %.3f s, wall %.3f s, checksum %.6g)\n"
+    n steps (fromIntegral (n * steps) / cpu) (simT / cpu) cpu wall s
+
+-- | Alternate timings of a network and its baseline.
+pairsReport :: Int -> Network -> IO ()
+pairsReport r nw = do
+  let key = takeWhile (/= ':') (nwName nw)
+      n   = if key `elem` ["c", "e"] then samples `div` 10 else samples
+  ts <- mapM (const ((,) <$> cpuPerSample (sumNetwork (nwSF nw)) n
+                         <*> cpuPerSample (foldl' (+) 0 . nwBaseline nw) n)) [1 .. max 1 r]
+  let as = map fst ts
+      bs = map snd ts
+      ratios = sort (zipWith (/) as bs)
+  printf "%-36s %10.1f ns/sample  baseline %8.1f  median ratio %6.2f\n"
+    (nwName nw) (minimum as) (minimum bs) (ratios !! (length ratios `div` 2))
+
+-- | CPU time per sample of one evaluation, in nanoseconds.
+cpuPerSample :: (Int -> Double) -> Int -> IO Double
+cpuPerSample f n = do
+  c0 <- getCPUTime
+  _  <- evaluate (f n)
+  c1 <- getCPUTime
+  pure (fromIntegral (c1 - c0) / 1000 / fromIntegral n)
+{-# NOINLINE cpuPerSample #-}
+
+-- | Time the rendering of some frames.
+renderReport :: Int -> IO ()
+renderReport frames = do
+  _  <- evaluate (prepareFrames frames)   -- simulate outside the timed run
+  c0 <- getCPUTime
+  s  <- evaluate (renderFrames frames)
+  c1 <- getCPUTime
+  let cpu = fromIntegral (c1 - c0) / 1e12 :: Double
+  printf "%d frames of 600x600: %.1f frames/s (CPU %.3f s)\n"
+    s (fromIntegral s / cpu) cpu

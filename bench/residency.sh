@@ -1,17 +1,25 @@
 #!/usr/bin/env bash
-# Runs the long-running networks for N and 10 N samples and prints the
-# maximum residency that the GHC runtime reports (+RTS -s). Constant space
-# means the two figures agree (within GC sampling noise).
-#   bench/residency.sh [N]      (default N = 1000000)
+# Runs the long-running networks for N and 10 N samples, and the simulator
+# (10 simbots, the benchmark world, dt = 0.01) for N/10 and N steps, and
+# prints the maximum residency that the GHC runtime reports (+RTS -s).
+# Constant space means the two figures of a row agree (within GC sampling
+# noise).
+#   bench/residency.sh [N]      (default N = 1000000: 10^7 samples of each
+#                                network, 10^6 simulator steps)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 n=${1:-1000000}
 cabal build -v0 --enable-benchmarks afrp-bench
 bin=$(cabal list-bin --enable-benchmarks afrp-bench)
-printf '%-6s %12s %22s\n' network samples "max residency (bytes)"
+residency() {
+  "$bin" "$@" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}'
+}
+printf '%-14s %12s %22s\n' run length "max residency (bytes)"
 for key in b d "d'" f g; do
   for m in "$n" "$((n * 10))"; do
-    res=$("$bin" --run "$key" "$m" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}')
-    printf '%-6s %12s %22s\n' "$key" "$m" "$res"
+    printf '%-14s %12s %22s\n' "network $key" "$m" "$(residency --run "$key" "$m")"
   done
+done
+for m in "$((n / 10))" "$n"; do
+  printf '%-14s %12s %22s\n' "10 simbots" "$m" "$(residency --sim 10 "$m")"
 done

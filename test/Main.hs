@@ -34,6 +34,7 @@ import qualified Examples.Exercises7to13Spec
 import qualified Examples.Section2Spec
 import qualified Examples.Section3Spec
 import qualified AFrobRobotSim.SimulatorSpec
+import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified NetworksSpec
 
@@ -63,6 +64,7 @@ main = hspec $ do
   describe "AFrob.RobotIO"           AFrob.RobotIOSpec.spec
   describe "AFrobRobotSim.Shapes"    AFrobRobotSim.ShapesSpec.spec
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
+  describe "AFrobRobotSim.SpatialIndex" AFrobRobotSim.SpatialIndexSpec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec
   describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec

@@ -1,4 +1,5 @@
-{-# LANGUAGE BangPatterns #-}
+{-# LANGUAGE BangPatterns     #-}
+{-# LANGUAGE PatternSynonyms #-}
 -- |
 -- Module      : AFrobRobotSim.Physics
 -- Description : How simbots and balls move: differential drive with
@@ -28,6 +29,17 @@
 --    again. Robots move one after the other, in template order, each
 --    against the others' current positions, so no two ever overlap.
 --
+-- = Indexing
+--
+-- Nothing here compares every robot with every other: the arena's boxes
+-- are indexed once on a grid ("AFrobRobotSim.SpatialIndex"), and each step
+-- indexes the robots' (and balls') centres. A robot's sweep is tested only
+-- against the boxes and robots that the grid finds near its path, a ball's
+-- only against what is near its own; the results are exactly those of
+-- testing everything (the grid query is a superset of what can touch, and
+-- every rule that depends on order, such as which of two equally early
+-- contacts counts, is applied in the original order).
+--
 -- = Balls
 --
 -- Balls roll freely, slowing down by rolling friction ('ballFriction' m/s^2),
@@ -46,8 +58,10 @@
 -- about 257 s.
 module AFrobRobotSim.Physics
   ( -- * State
-    Arena (..)
+    Arena (Arena, arenaBoxes)
+  , arenaIndex
   , arenaOf
+  , pointsOver
   , Robot (..)
   , Ball (..)
   , robotVelocity
@@ -61,6 +75,11 @@ module AFrobRobotSim.Physics
   , wheelCommand
   ) where
 
+import           Control.Monad.ST        (ST, runST)
+import           Data.STRef              (newSTRef, readSTRef, writeSTRef)
+import           GHC.Arr                 (Array, listArray, newSTArray, unsafeAt,
+                                          unsafeReadSTArray, unsafeWriteSTArray)
+
 import           AFRP              (DTime)
 import           AFRP.Geometry
 import           AFrob.Angle             (normalizeHeading)
@@ -68,10 +87,27 @@ import           AFrob.Dimensions
 import           AFrob.RobotIO           (BatteryStatus (..))
 import           AFrobRobotSim.Robot     (DriveCommand (..))
 import           AFrobRobotSim.Shapes
+import           AFrobRobotSim.SpatialIndex
 import           AFrobRobotSim.World
 
--- | The static part of a world: its obstacles, the boundary included.
-newtype Arena = Arena { arenaBoxes :: [Box] }
+-- | The static part of a world: its obstacles, the boundary included, and
+-- (computed when first needed) their grid index. @Arena boxes@ builds one
+-- and matches one, as if it were a plain record of 'arenaBoxes'.
+data Arena = MkArena [Box] BoxIndex (Double, Double, Double, Double)
+  -- the boxes, their index and their bounding box (both lazy)
+
+-- | The arena's boxes on a grid.
+arenaIndex :: Arena -> BoxIndex
+arenaIndex (MkArena _ bi _) = bi
+
+arenaExtent :: Arena -> (Double, Double, Double, Double)
+arenaExtent (MkArena _ _ e) = e
+
+-- | The arena of a list of boxes.
+pattern Arena :: [Box] -> Arena
+pattern Arena { arenaBoxes } <- MkArena arenaBoxes _ _
+  where Arena bs = MkArena bs (boxIndex bs) (boxesExtent bs)
+{-# COMPLETE Arena #-}
 
 -- | The arena of a world: its walls and blocks, and four thick boxes just
 -- outside its bounds.
@@ -149,16 +185,52 @@ wheelCommand l wsMax cmd = case cmd of
 -- | Move every robot by one step, in order, each against the obstacles and
 -- the other robots' current positions.
 stepRobots :: DTime -> Arena -> [(Robot, DriveCommand)] -> [Robot]
-stepRobots dt arena cmds = go [] cmds
+stepRobots dt arena cmds = runST $ do
+  -- the current centres: the old ones, replaced as the robots move
+  xs <- newDblArr (max 1 n)
+  ys <- newDblArr (max 1 n)
+  mapM_ (\(i, Robot { rPos = Point2 x y }) -> writeD xs i x >> writeD ys i y) (zip [0 ..] robots0)
+  let go !_ !_ [] = pure []
+      go !i !drift ((r, c) : rest) = do
+        let mv = robotMotion dt r c
+        contact <- firstContactST arena near xs ys i drift (rPos r) (mvDisp mv)
+        let !r' = finishMove mv r contact
+            Point2 x1 y1 = rPos r'
+            !moved = norm (rPos r' .-. rPos r)
+        writeD xs i x1
+        writeD ys i y1
+        rs <- go (i + 1) (max drift moved) rest
+        pure (r' : rs)
+  go (0 :: Int) 0 cmds
   where
-    go done [] = reverse done
-    go done ((r, c) : rest) =
-      let others = done ++ map fst rest
-          !r'    = stepRobot dt arena others r c
-      in go (r' : done) rest
+    robots0 = map fst cmds
+    n       = length robots0
+    near    = robotIndex arena robots0
 
-stepRobot :: DTime -> Arena -> [Robot] -> Robot -> DriveCommand -> Robot
-stepRobot dt arena others r cmd =
+-- The centres of robots (or of anything) on a grid over the arena.
+robotIndex :: Arena -> [Robot] -> PointIndex
+robotIndex arena rs = pointsOver arena [ (x, y) | Robot { rPos = Point2 x y } <- rs ]
+
+-- | Points on a grid over the arena (its boxes' bounding box).
+pointsOver :: Arena -> [(Double, Double)] -> PointIndex
+pointsOver arena pts = case arenaExtent arena of
+  (x0, y0, x1, y1) -> pointIndex x0 y0 x1 y1 pts
+
+boxesExtent :: [Box] -> (Double, Double, Double, Double)
+boxesExtent [] = (0, 0, 0, 0)
+boxesExtent (b : bs) = foldr grow (boxMinX b, boxMinY b, boxMaxX b, boxMaxY b) bs
+  where grow (Box a c d e) (x0, y0, x1, y1) = (min a x0, min c y0, max d x1, max e y1)
+
+-- | The motion a robot attempts in one step, before collisions.
+data Motion = Motion
+  { mvV1     :: !Double      -- speed at the end of the step, unobstructed
+  , mvTh1    :: !Double      -- heading at the end of the step
+  , mvDisp   :: !(Vector2 Double)
+  , mvCharge :: !Double      -- battery charge at the end of the step
+  }
+
+robotMotion :: DTime -> Robot -> DriveCommand -> Motion
+robotMotion dt r cmd =
   let k       = rKind r
       l       = kindWheelBase k
       status  = batteryStatusOf (rCharge r)
@@ -176,89 +248,209 @@ stepRobot dt arena others r cmd =
       disp    | abs (w * dt) < 1e-9 = vector2Polar (vMean * dt) th0
               | otherwise           = vector2 (vMean / w * (sin th1 - sin th0))
                                               (vMean / w * (cos th0 - cos th1))
-      p0      = rPos r
-      contact = firstContact p0 disp arena others
+      effort  = (abs (v1 - w * l / 2) + abs (v1 + w * l / 2)) / (2 * kindWSMax k)
+      charge1 = max 0 (rCharge r - dt * (0.0005 + 0.003 * effort))
+  in Motion v1 th1 disp charge1
+
+-- The robot after its move, given the fraction of the move at which it
+-- first touches something (if it does).
+finishMove :: Motion -> Robot -> Maybe Double -> Robot
+finishMove mv r contact =
+  let p0   = rPos r
+      disp = mvDisp mv
       (p1, v1', hit) = case contact of
-        Nothing -> (p0 .+^ disp, v1, False)
+        Nothing -> (p0 .+^ disp, mvV1 mv, False)
         Just s  ->
           -- Stop just short of the contact point, never behind the start.
           let len = norm disp
               s'  = max 0 (s - 1e-9 / max len 1e-300)
           in (p0 .+^ (s' *^ disp), 0, True)
-      moved   = p1 /= p0
-      effort  = (abs (v1 - w * l / 2) + abs (v1 + w * l / 2)) / (2 * kindWSMax k)
-      charge1 = max 0 (rCharge r - dt * (0.0005 + 0.003 * effort))
+      moved = p1 /= p0
   in r { rPos     = p1
-       , rHeading = normalizeHeading th1
+       , rHeading = normalizeHeading (mvTh1 mv)
        , rSpeed   = v1'
        , rStuck   = hit || (rStuck r && not moved)
-       , rCharge  = charge1
+       , rCharge  = mvCharge mv
        }
 
--- The fraction of the move at which the robot first touches something.
-firstContact :: Position2 -> Vector2 Double -> Arena -> [Robot] -> Maybe Double
-firstContact p d arena others
-  | d == zeroVector = Nothing
-  | otherwise       = foldr earliest Nothing (boxHits ++ robotHits)
-  where
-    boxHits   = [ fst <$> sweepCircleBox p robotRadius d b | b <- arenaBoxes arena ]
-    robotHits = [ fst <$> sweepCircleCircle p robotRadius d (rPos o) robotRadius | o <- others ]
-    earliest Nothing  acc      = acc
-    earliest (Just s) Nothing  = Just s
-    earliest (Just s) (Just t) = Just (min s t)
+-- Some margin around every query rectangle, for rounding.
+slack :: Double
+slack = 1e-3
+
+-- The fraction of the move at which the robot @i@ first touches something:
+-- the earliest contact over every box and every other robot (at its
+-- current centre), as 'sweepCircleBox' and 'sweepCircleCircle' have it.
+-- Only the boxes and robots the grids find near the path are tested: a
+-- box can only be touched if it meets the path's bounding box widened by
+-- the radius, a robot if its centre is within twice the radius of the
+-- path, and a robot's current centre is at most @drift@ from the centre it
+-- was indexed with (the furthest any robot has moved this step).
+firstContactST :: Arena -> PointIndex -> MDblArr s -> MDblArr s -> Int -> Double
+               -> Position2 -> Vector2 Double -> ST s (Maybe Double)
+firstContactST arena near xs ys i drift p d@(Vector2 dx dy)
+  | d == zeroVector = pure Nothing
+  | otherwise = do
+      let Point2 px py = p
+          qx = px + dx
+          qy = py + dy
+          rb = robotRadius + slack
+          -- the earliest contact so far (contacts are fractions in [0, 1];
+          -- infinity for none)
+          boxHit = foldBoxesIn (arenaIndex arena) (min px qx - rb) (min py qy - rb)
+                                                 (max px qx + rb) (max py qy + rb)
+            (\acc _ b -> case sweepCircleBox p robotRadius d b of
+                           Just (s, _) -> min s acc
+                           Nothing     -> acc) (1 / 0)
+          rr = 2 * robotRadius + drift + slack
+      hit <- foldPointsInM near (min px qx - rr) (min py qy - rr) (max px qx + rr) (max py qy + rr)
+               (\acc j -> if j == i then pure acc else do
+                   ox <- readD xs j
+                   oy <- readD ys j
+                   pure (case sweepCircleCircle p robotRadius d (Point2 ox oy) robotRadius of
+                           Just (s, _) -> min s acc
+                           Nothing     -> acc)) boxHit
+      pure (if hit == 1 / 0 then Nothing else Just hit)
+
+foldST :: (b -> a -> ST s b) -> b -> [a] -> ST s b
+foldST _ z []       = pure z
+foldST f z (x : xs) = do
+  !z' <- f z x
+  foldST f z' xs
 
 -- | Move every ball by one step: friction, bounces off obstacles and
 -- robots (at their new positions, with their velocities), then elastic
 -- collisions between balls.
 stepBalls :: DTime -> Arena -> [Robot] -> [Ball] -> [Ball]
-stepBalls dt arena robots balls = resolvePairs (map (stepBall dt arena robots) balls)
+stepBalls _ _ _ [] = []
+stepBalls dt arena robots balls =
+  resolvePairs arena (map (stepBall dt arena robotArr near) balls)
+  where
+    robotArr = listArray (0, length robots - 1) robots
+    near     = robotIndex arena robots
 
-stepBall :: DTime -> Arena -> [Robot] -> Ball -> Ball
-stepBall dt arena robots b0 =
-  let b1 = foldl pushOut b0 robots          -- a robot that drove into the ball kicks it
+stepBall :: DTime -> Arena -> Array Int Robot -> PointIndex -> Ball -> Ball
+stepBall dt arena robots near b0 =
+  let -- a robot that drove into the ball kicks it
+      b1 = pushOuts b0 (-1)
       v  = slowDown (bVel b1)
-      d  = (dt *^ v)
-      hits = [ (s, n, zeroVector) | bx <- arenaBoxes arena, Just (s, n) <- [sweepCircleBox (bPos b1) ballRadius d bx] ]
-          ++ [ (s, n, robotVelocity r) | r <- robots, Just (s, n) <- [sweepCircleCircle (bPos b1) ballRadius d (rPos r) robotRadius] ]
-  in case hits of
-       [] -> b1 { bPos = bPos b1 .+^ d, bVel = v }
-       _  -> let (s, n, vo) = minimumOn (\(x, _, _) -> x) hits
-                 p  = bPos b1 .+^ (max 0 (s - 1e-9) *^ d)
-             in b1 { bPos = p, bVel = vo ^+^ bounce n (v ^-^ vo) }
+      d@(Vector2 dx dy) = (dt *^ v)
+      Point2 px py = bPos b1
+      qx = px + dx
+      qy = py + dy
+      nBoxes = boxIndexCount (arenaIndex arena)
+      -- the earliest contact; on a tie the first in the order boxes (as
+      -- listed), then robots (as listed), as a scan of everything would
+      -- find it
+      rb = ballRadius + slack
+      boxHit = foldBoxesIn (arenaIndex arena) (min px qx - rb) (min py qy - rb) (max px qx + rb) (max py qy + rb)
+        (\acc k bx -> case sweepCircleBox (bPos b1) ballRadius d bx of
+            Just (s, n) -> better (Hit s k n zeroVector) acc
+            Nothing     -> acc) NoHit
+      rr = ballRadius + robotRadius + slack
+      hit = foldPointsIn near (min px qx - rr) (min py qy - rr) (max px qx + rr) (max py qy + rr)
+        (\acc j -> let r = unsafeAt robots j
+                   in case sweepCircleCircle (bPos b1) ballRadius d (rPos r) robotRadius of
+                        Just (s, n) -> better (Hit s (nBoxes + j) n (robotVelocity r)) acc
+                        Nothing     -> acc) boxHit
+  in case hit of
+       NoHit -> b1 { bPos = bPos b1 .+^ d, bVel = v }
+       Hit s _ n vo ->
+         let p  = bPos b1 .+^ (max 0 (s - 1e-9) *^ d)
+         in b1 { bPos = p, bVel = vo ^+^ bounce n (v ^-^ vo) }
   where
     slowDown :: Vector2 Double -> Vector2 Double
     slowDown v = let sp = norm v
                      sp' = max 0 (sp - ballFriction * dt)
                  in if sp <= 0 then zeroVector else (sp' / sp) *^ v
+    -- The robots push the ball out in order: the next robot (after the
+    -- last one that pushed) that overlaps the ball where it now is.
+    pushOuts b lastJ =
+      let Point2 px py = bPos b
+          rr = ballRadius + robotRadius + slack
+          next = foldPointsIn near (px - rr) (py - rr) (px + rr) (py + rr)
+                   (\acc j -> if j > lastJ && j < acc
+                                 && overlaps (circleCirclePenetration (bPos b) ballRadius (rPos (unsafeAt robots j)) robotRadius)
+                              then j else acc) maxBound
+      in if next == maxBound then b else pushOuts (pushOut b (unsafeAt robots next)) next
+    overlaps = maybe False (const True)
     pushOut b r = case circleCirclePenetration (bPos b) ballRadius (rPos r) robotRadius of
       Nothing       -> b
       Just (depth, n) ->
         let vr  = robotVelocity r
             rel = bVel b ^-^ vr
             v'  = if rel `dot` n < 0 then vr ^+^ bounce n rel else bVel b
-        in b { bPos = bPos b .+^ ((depth + 1e-9) *^ n), bVel = v' }
+        in b { bPos = pushedTo b ((depth + 1e-9) *^ n), bVel = v' }
+    -- The push out of a robot is swept like any move and stops at a wall
+    -- or block: a ball squeezed between a robot and a wall stays pinned
+    -- there, overlapping the robot, and never passes through the wall.
+    pushedTo b push =
+      let Point2 px py = bPos b
+          Vector2 ux uy = push
+          rb = ballRadius + slack
+          s = foldBoxesIn (arenaIndex arena) (min px (px + ux) - rb) (min py (py + uy) - rb)
+                          (max px (px + ux) + rb) (max py (py + uy) + rb)
+                (\acc _ bx -> case sweepCircleBox (bPos b) ballRadius push bx of
+                    Just (s', _) -> min acc s'
+                    Nothing      -> acc) 1
+      in if s >= 1 then bPos b .+^ push else bPos b .+^ (max 0 (s - 1e-9) *^ push)
     bounce :: Vector2 Double -> Vector2 Double -> Vector2 Double
     bounce n rel = let rn = (rel `dot` n) *^ n
                    in (rel ^-^ rn) ^-^ (ballRestitution *^ rn)
 
--- Equal-mass elastic collisions between overlapping, approaching balls.
-resolvePairs :: [Ball] -> [Ball]
-resolvePairs bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 1 .. n - 1] ]
-  where
-    n = length bs0
-    resolve bs (i, j) =
-      let bi = bs !! i
-          bj = bs !! j
-      in case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
-           Nothing -> bs
-           Just (depth, nrm) ->
-             let relN = (bVel bi ^-^ bVel bj) `dot` nrm
-                 half = (depth / 2 + 1e-9) *^ nrm
-                 (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
-                          | otherwise = (bVel bi, bVel bj)
-                 bi' = Ball (bPos bi .+^ half) vi
-                 bj' = Ball (bPos bj .-^ half) vj
-             in [ if k == i then bi' else if k == j then bj' else b | (k, b) <- zip [0 ..] bs ]
+-- A candidate contact of a ball: fraction, order (boxes first, then
+-- robots), normal, velocity of what it hits.
+data Hit = NoHit | Hit !Double !Int !(Vector2 Double) !(Vector2 Double)
 
-minimumOn :: Ord k => (a -> k) -> [a] -> a
-minimumOn f = foldr1 (\x y -> if f x <= f y then x else y)
+better :: Hit -> Hit -> Hit
+better h NoHit = h
+better NoHit h = h
+better h1@(Hit s1 k1 _ _) h2@(Hit s2 k2 _ _)
+  | s1 < s2 || (s1 == s2 && k1 < k2) = h1
+  | s2 < s1 || (s1 == s2 && k2 < k1) = h2
+  | otherwise                        = h1   -- the same box, seen from two cells
+
+-- Equal-mass elastic collisions between overlapping, approaching balls,
+-- pair by pair in the order (0, 1), (0, 2), ..., (1, 2), ...: for each
+-- ball, the next ball after the last one it met that overlaps it where
+-- both now are. Candidates come from a grid of the balls' centres before
+-- this, widened by the furthest any ball has been moved since.
+resolvePairs :: Arena -> [Ball] -> [Ball]
+resolvePairs arena bs0 = runST $ do
+  arr <- newSTArray (0, n - 1) (Ball origin zeroVector)
+  mapM_ (\(k, b) -> unsafeWriteSTArray arr k b) (zip [0 ..] bs0)
+  drift <- newSTRef 0
+  let forBall !i
+        | i >= n = pure ()
+        | otherwise = pairs i i >> forBall (i + 1)
+      pairs !i !lastJ = do
+        bi <- unsafeReadSTArray arr i
+        d0 <- readSTRef drift
+        let Point2 px py = bPos bi
+            rr = 2 * ballRadius + d0 + slack
+            cands = foldPointsIn grid (px - rr) (py - rr) (px + rr) (py + rr)
+                      (\acc j -> if j > lastJ then j : acc else acc) []
+        next <- foldST (\acc j -> if j >= acc then pure acc else do
+                          bj <- unsafeReadSTArray arr j
+                          pure (case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
+                                  Just _  -> j
+                                  Nothing -> acc)) maxBound cands
+        if next == maxBound then pure () else do
+          bj <- unsafeReadSTArray arr next
+          case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
+            Nothing -> pure ()
+            Just (depth, nrm) -> do
+              let relN = (bVel bi ^-^ bVel bj) `dot` nrm
+                  half = (depth / 2 + 1e-9) *^ nrm
+                  (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
+                           | otherwise = (bVel bi, bVel bj)
+                  !bi' = Ball (bPos bi .+^ half) vi
+                  !bj' = Ball (bPos bj .-^ half) vj
+              unsafeWriteSTArray arr i bi'
+              unsafeWriteSTArray arr next bj'
+              writeSTRef drift (d0 + norm half)
+          pairs i next
+  forBall 0
+  mapM (unsafeReadSTArray arr) [0 .. n - 1]
+  where
+    n    = length bs0
+    grid = pointsOver arena [ (x, y) | Ball (Point2 x y) _ <- bs0 ]

@@ -1,3 +1,4 @@
+{-# LANGUAGE PatternSynonyms #-}
 -- |
 -- Module      : AFrobRobotSim.Sensors
 -- Description : What a simbot senses: range finder, animate object
@@ -17,16 +18,25 @@
 -- Every other robot and every ball whose centre is within 'trackerRange'
 -- (4 m) of the robot's centre, with its angle relative to the robot's
 -- heading (normalised to [-pi, pi)) and its centre-to-centre distance,
--- nearest first.
+-- nearest first (in template order among equally near ones).
+--
+-- = Indexing
+--
+-- A 'SenseContext' indexes the robots' and balls' centres on a grid
+-- ("AFrobRobotSim.SpatialIndex") the first time a sensor needs it, and the
+-- arena's boxes are indexed once: a ray is tested only against the boxes
+-- and robots near its 3.25 m segment, the tracker only against what is
+-- within range of the robot. The readings are exactly those of testing
+-- everything.
 module AFrobRobotSim.Sensors
   ( senseRobot
   , rangeReading
   , rangeFinderMax
   , trackerRange
-  , SenseContext (..)
+  , SenseContext (SenseContext, scArena, scRobots, scBalls)
   ) where
 
-import           Data.List              (sortOn)
+import           GHC.Arr                (Array, listArray, unsafeAt)
 
 import           AFRP.Geometry
 import           AFrob.Angle            (normalizeAngle)
@@ -34,6 +44,7 @@ import           AFrob.Dimensions
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Shapes
+import           AFrobRobotSim.SpatialIndex
 import           AFrobRobotSim.World
 
 -- | The range finder's maximum range: 3 m (the original simulator's was
@@ -45,37 +56,105 @@ rangeFinderMax = 3
 trackerRange :: Distance
 trackerRange = 4
 
--- | What every robot senses from at one sample.
-data SenseContext = SenseContext
-  { scArena  :: Arena
-  , scRobots :: [Robot]
-  , scBalls  :: [Ball]
+-- | What every robot senses from at one sample: the arena, every robot and
+-- every ball. @SenseContext arena robots balls@ builds one (and matches
+-- one, as if it were a plain record).
+data SenseContext = MkSenseContext Arena [Robot] [Ball] Indexes
+
+-- The robots and balls as arrays and on grids, each computed when first
+-- needed and shared by every robot's sensors.
+data Indexes = Indexes
+  { ixRobots    :: Array Int Robot
+  , ixNRobots   :: Int
+  , ixRobotGrid :: PointIndex
+  , ixBalls     :: Array Int Ball
+  , ixBallGrid  :: PointIndex
   }
+
+pattern SenseContext :: Arena -> [Robot] -> [Ball] -> SenseContext
+pattern SenseContext { scArena, scRobots, scBalls } <- MkSenseContext scArena scRobots scBalls _
+  where SenseContext a rs bs = MkSenseContext a rs bs (indexes a rs bs)
+{-# COMPLETE SenseContext #-}
+
+indexes :: Arena -> [Robot] -> [Ball] -> Indexes
+indexes arena rs bs = Indexes
+  { ixRobots    = listArray (0, nr - 1) rs
+  , ixNRobots   = nr
+  , ixRobotGrid = pointsOver arena [ (x, y) | Robot { rPos = Point2 x y } <- rs ]
+  , ixBalls     = listArray (0, length bs - 1) bs
+  , ixBallGrid  = pointsOver arena [ (x, y) | Ball (Point2 x y) _ <- bs ]
+  }
+  where nr = length rs
+
+-- Some margin around every query rectangle, for rounding.
+slack :: Double
+slack = 1e-3
 
 -- | The input of one robot (by its index in the context's robot list),
 -- given its odometry reading and the key pressed now.
 senseRobot :: SenseContext -> Int -> (Position2, Heading) -> Maybe Char -> SimbotInput
-senseRobot ctx i (odoPos, odoHead) key = SimbotInput
+senseRobot (MkSenseContext arena robots _ ix) i (odoPos, odoHead) key = SimbotInput
   { siBattery  = batteryStatusOf (rCharge me)
   , siStuck    = rStuck me
   , siPosition = odoPos
   , siHeading  = odoHead
   , siRange    = rangeAt
   , siMaxRange = rangeFinderMax
-  , siRobots   = [ (kindType (rKind o), rId o, a, d)
-                 | (o, (a, d)) <- sortOn (snd . snd) [ (o, polar (rPos o)) | o <- others ]
-                 , d <= trackerRange ]
-  , siBalls    = sortOn snd [ (a, d) | b <- scBalls ctx, let (a, d) = polar (bPos b), d <= trackerRange ]
+  , siRobots   = [ (kindType (rKind o), rId o, angleTo ox oy, d)
+                 | Near d j <- nearest (ixRobotGrid ix) (\j -> j /= i)
+                 , let o  = robotAt j
+                       ox = pointX (ixRobotGrid ix) j
+                       oy = pointY (ixRobotGrid ix) j ]
+  , siBalls    = [ (angleTo bx by, d)
+                 | Near d j <- nearest (ixBallGrid ix) (const True)
+                 , let bx = pointX (ixBallGrid ix) j
+                       by = pointY (ixBallGrid ix) j ]
   , siKey      = key
   }
   where
-    robots = scRobots ctx
-    me     = robots !! i
-    others = [ o | (j, o) <- zip [0 :: Int ..] robots, j /= i ]
-    p      = rPos me
-    polar q = let (d, th) = vector2RhoTheta (q .-. p)
-              in (normalizeAngle (th - rHeading me), d)
-    rangeAt = rangeReading (scArena ctx) (map rPos others) p (rHeading me)
+    me | i >= 0 && i < ixNRobots ix = robotAt i
+       | otherwise                  = robots !! i
+    robotAt j = unsafeAt (ixRobots ix) j
+    p@(Point2 px py) = rPos me
+    tr = trackerRange + slack
+    -- The points of an index within the tracker's range (centre to
+    -- centre, the distance as 'vector2RhoTheta' has it), nearest first,
+    -- in index order among equally near ones (as a stable sort of all of
+    -- them by distance would have them).
+    nearest grid keep = sortNear
+      (foldPointsIn grid (px - tr) (py - tr) (px + tr) (py + tr)
+         (\acc j -> if keep j
+                      then let qx = pointX grid j
+                               qy = pointY grid j
+                               (d, _) = vector2RhoTheta (Point2 qx qy .-. p)
+                           in if d <= trackerRange then Near d j : acc else acc
+                      else acc) [])
+    -- the bearing of a point relative to the heading
+    angleTo qx qy = let (_, th) = vector2RhoTheta (Point2 qx qy .-. p)
+                    in normalizeAngle (th - rHeading me)
+    -- a ray: the nearest box, then the nearest other robot near the
+    -- ray's segment
+    rangeAt a
+      | not (finite a) = rangeFinderMax
+      | otherwise =
+          let ray@(Ray _ _ _ _ x0 y0 x1 y1) = rayFrom p (rHeading me) a
+          in reading (foldPointsIn (ixRobotGrid ix) (x0 - radius) (y0 - radius) (x1 + radius) (y1 + radius)
+                        (\m j -> if j == i then m
+                                 else rayToRobot ray m (Point2 (pointX (ixRobotGrid ix) j) (pointY (ixRobotGrid ix) j)))
+                        (rayToBoxes arena ray))
+    radius = simbotDiameter / 2
+
+-- A point of an index near a robot: its distance and its index.
+data Near = Near !Double !Int
+
+-- Sort by distance, then index (an insertion sort: the lists are short).
+sortNear :: [Near] -> [Near]
+sortNear = foldr insert []
+  where
+    insert x [] = [x]
+    insert x@(Near d j) (y@(Near e k) : ys)
+      | d < e || (d == e && j < k) = x : y : ys
+      | otherwise                  = y : insert x ys
 
 -- | The range finder's reading for a robot at a position and heading,
 -- among the given other robots' centres, in the direction @a@ relative to
@@ -83,11 +162,43 @@ senseRobot ctx i (odoPos, odoHead) key = SimbotInput
 -- 'rangeFinderMax'.
 rangeReading :: Arena -> [Position2] -> Position2 -> Heading -> Angle -> Distance
 rangeReading arena others p heading a
-  | isNaN a || isInfinite a = rangeFinderMax
-  | otherwise               = max 0 (min rangeFinderMax (nearest - radius))
-  where
-    radius  = simbotDiameter / 2
-    dir     = vector2Polar 1 (heading + a)
-    hits    = [ t | b <- arenaBoxes arena, Just t <- [rayBox p dir b] ]
-           ++ [ t | q <- others, Just t <- [rayCircle p dir q radius] ]
-    nearest = minimum (rangeFinderMax + radius : hits)
+  | not (finite a) = rangeFinderMax
+  | otherwise      = let ray = rayFrom p heading a
+                     in reading (foldl (rayToRobot ray) (rayToBoxes arena ray) others)
+
+-- A ray: its origin, its direction (a unit vector), and the bounding box
+-- (with a margin) of its segment, as long as the range plus a robot's
+-- radius: nothing further away can be the nearest hit.
+data Ray = Ray !Double !Double !Double !Double !Double !Double !Double !Double
+
+rayFrom :: Position2 -> Heading -> Angle -> Ray
+rayFrom (Point2 px py) heading a =
+  let Vector2 ux uy = vector2Polar 1 (heading + a)
+      ex = px + rayLength * ux
+      ey = py + rayLength * uy
+  in Ray px py ux uy (min px ex - slack) (min py ey - slack) (max px ex + slack) (max py ey + slack)
+{-# INLINE rayFrom #-}
+
+rayLength :: Double
+rayLength = rangeFinderMax + simbotDiameter / 2
+
+-- The nearest box the ray hits, or the ray's length if none is nearer.
+rayToBoxes :: Arena -> Ray -> Double
+rayToBoxes arena (Ray px py ux uy x0 y0 x1 y1) =
+  foldBoxesIn (arenaIndex arena) x0 y0 x1 y1
+    (\m _ b -> case rayBox (Point2 px py) (Vector2 ux uy) b of
+                 Just t  -> min t m
+                 Nothing -> m) rayLength
+
+-- The nearer of a distance and the robot (centre) the ray may hit.
+rayToRobot :: Ray -> Double -> Position2 -> Double
+rayToRobot (Ray px py ux uy _ _ _ _) m q =
+  case rayCircle (Point2 px py) (Vector2 ux uy) q (simbotDiameter / 2) of
+    Just t  -> min t m
+    Nothing -> m
+{-# INLINE rayToRobot #-}
+
+-- The reading for the nearest hit (centre to obstacle): from the robot's
+-- edge, within the range.
+reading :: Double -> Distance
+reading nearest = max 0 (min rangeFinderMax (nearest - simbotDiameter / 2))

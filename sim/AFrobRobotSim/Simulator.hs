@@ -157,7 +157,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
           Just ps -> [ Ball q zeroVector | q <- ps ]
         (agents', rng') = updateOdometry (enRng en) (enRobots en) robots'
                             [ a { agCtrl = Right fut } | (a, (_, fut)) <- zip (enAgents en) stepped ]
-        en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq`
+        -- keys' is forced too: left lazy, it would hold the previous
+        -- engine (and so the whole run) when no controller reads its input
+        en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq` keys' `seq`
               en { enStep = n + 1, enRobots = robots', enBalls = balls', enAgents = agents'
                  , enKeys = keys', enRng = rng' }
 

@@ -38,7 +38,8 @@ pre = iPre (error "AFRP.Delay.pre: the output of pre at local time 0 is undefine
 iPre :: a -> SF a a
 iPre a0 = SF (go a0)
   where
-    go prev = NStep (\_ a -> (# go a, prev #))
+    -- The successor is built at once (it does not evaluate a).
+    go prev = NStep (\_ a -> let !n = go a in (# n, prev #))
 
 -- | @b0 \`fby\` sf@ ("followed by") outputs @b0@ at local time 0 and then,
 -- at every later sample, the output @sf@ had at the previous sample.

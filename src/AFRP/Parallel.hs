@@ -1,5 +1,7 @@
 {-# LANGUAGE UnboxedTuples #-}
 {-# LANGUAGE RankNTypes    #-}
+{-# LANGUAGE BangPatterns  #-}
+{-# LANGUAGE MagicHash     #-}
 -- |
 -- Module      : AFRP.Parallel
 -- Description : Collections of signal functions running side by side, and
@@ -46,31 +48,72 @@ module AFRP.Parallel
   ) where
 
 import           Data.Foldable    (foldl')
+import           GHC.Exts         (Int (I#), SmallArray#, indexSmallArray#, isTrue#,
+                                   newSmallArray#, readSmallArray#, runRW#, sizeofSmallArray#,
+                                   unsafeFreezeSmallArray#, writeSmallArray#, (+#), (-#), (<#), (>=#))
 
 import           AFRP.Event
 import           AFRP.Internal.SF
+
+------------------------------------------------------------------------------
+-- Implementation note
+--
+-- Every combinator below is written once, over a /stepper/: the function
+-- that steps a routed collection, evaluating every member's successor and
+-- returning the successors and the (lazy) outputs in the collection's
+-- shape. 'stepColT' works for any 'Traversable'; 'stepColL' is the same
+-- function on lists, done in one strict pass with no intermediate
+-- collections. The public combinators use 'stepColT'; at lists, rewrite
+-- rules (see the end of the module) replace them by the same combinator
+-- over 'stepColL', which computes the same collections:
+--
+-- > stepColL dt routed  ==  stepColT dt routed        (routed :: [(b, Node b c)])
+--
+-- and 'parB' on a list, which needs no routing at all, by 'parBL':
+--
+-- > parBL sfs  ==  par broadcast sfs                  (sfs :: [SF a b])
+
+-- | Steps a routed collection: successors (evaluated) and outputs (lazy).
+type Stepper col = forall b c. DTime -> col (b, Node b c) -> (# col (Node b c), col c #)
 
 -- | @par route sfs@ runs every member of @sfs@ at every sample; @route@
 -- gives each member its input sample. The output is the collection of the
 -- members' outputs, in the same shape.
 par :: Traversable col => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c) -> SF a (col c)
-par rf sfs = SF (parN' rf (fmap sfNode sfs))
+par = parWith stepColT
+{-# NOINLINE [1] par #-}
+
+parWith :: Functor col => Stepper col -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c) -> SF a (col c)
+parWith stepper rf sfs = SF (parN' stepper rf (fmap sfNode sfs))
+{-# INLINE parWith #-}
 
 -- | @parB sfs@ runs every member on the same input.
 --
 -- > embed (parB [constant 1, localTime]) ((), [(0.5, Nothing)])  ==  [[1, 0], [1, 0.5]]
 parB :: Traversable col => col (SF a b) -> SF a (col b)
 parB = par broadcast
+{-# NOINLINE [1] parB #-}
 
 -- | @parZ sfs@ runs the i-th member on the i-th element of the input list.
 -- An input list shorter than @sfs@ is an error (raised when that sample is
 -- stepped, naming the function); extra inputs are ignored.
 parZ :: [SF a b] -> SF [a] [b]
-parZ = par (zipRoute "parZ")
+parZ = parWith stepColL (zipRoute "parZ")
 
-parN' :: Traversable col => (forall sf. a -> col sf -> col (b, sf)) -> col (Node b c) -> Node a (col c)
-parN' rf ns = NStep (\dt a -> case stepCol dt (rf a ns) of
-  (ns', cs) -> (# parN' rf ns', cs #))
+parN' :: Stepper col -> (forall sf. a -> col sf -> col (b, sf)) -> col (Node b c) -> Node a (col c)
+parN' stepper rf = go
+  where
+    go ns = NStep (\dt a -> case stepper dt (rf a ns) of
+      (# ns', cs #) -> case go ns' of !n -> (# n, cs #))
+
+-- | 'parB' on a list: the members are kept in an array and stepped, in
+-- order, on the input directly, with no routed collection in between and
+-- no recursion as deep as the list is long.
+parBL :: [SF a b] -> SF a [b]
+parBL sfs = SF (go (arrayFromList (map sfNode sfs)))
+  where
+    go ns = NStep (\dt a -> case stepArrB dt a ns of
+      (# ns', cs #) -> case go ns' of !n -> (# n, cs #))
 
 -- | @pSwitch route sfs sfe k@ runs @sfs@ as 'par' does. The event source
 -- @sfe@ sees the input and the collection's output; at its first
@@ -80,11 +123,17 @@ parN' rf ns = NStep (\dt a -> case stepCol dt (rf a ns) of
 pSwitch :: Traversable col
         => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
         -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-pSwitch rf sfs (SF e0) k = SF (go (fmap sfNode sfs) e0)
+pSwitch = pSwitchWith stepColT
+{-# NOINLINE [1] pSwitch #-}
+
+pSwitchWith :: Functor col => Stepper col
+            -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
+            -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
+pSwitchWith stepper rf sfs (SF e0) k = SF (go (fmap sfNode sfs) e0)
   where
-    go ns ne = NStep (\dt a -> case stepCol dt (rf a ns) of
-      (ns', cs) -> case stepN ne dt (a, cs) of
-        (# ne', NoEvent #) -> (# go ns' ne', cs #)
+    go ns ne = NStep (\dt a -> case stepper dt (rf a ns) of
+      (# ns', cs #) -> case stepN ne dt (a, cs) of
+        (# ne', NoEvent #) -> case go ns' ne' of !n -> (# n, cs #)
         (# _, Event d #)   -> stepN (sfNode (k (freezeCol ns dt) d)) dt a)
 
 -- | Delayed 'pSwitch': at the switching instant the output is still the
@@ -93,10 +142,16 @@ pSwitch rf sfs (SF e0) k = SF (go (fmap sfNode sfs) e0)
 dpSwitch :: Traversable col
          => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
          -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-dpSwitch rf sfs (SF e0) k = SF (go (fmap sfNode sfs) e0)
+dpSwitch = dpSwitchWith stepColT
+{-# NOINLINE [1] dpSwitch #-}
+
+dpSwitchWith :: Functor col => Stepper col
+             -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
+             -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
+dpSwitchWith stepper rf sfs (SF e0) k = SF (go (fmap sfNode sfs) e0)
   where
-    go ns ne = NStep (\dt a -> case stepCol dt (rf a ns) of
-      (ns', cs) ->
+    go ns ne = NStep (\dt a -> case stepper dt (rf a ns) of
+      (# ns', cs #) ->
         -- Decoupled: the detector is stepped, and its event examined, only
         -- when the successor next steps, so it may read (through a loop)
         -- the output this step is producing.
@@ -110,20 +165,22 @@ pSwitchB :: Traversable col
          => col (SF a b) -> SF (a, col b) (Event c) -> (col (SF a b) -> c -> SF a (col b))
          -> SF a (col b)
 pSwitchB = pSwitch broadcast
+{-# NOINLINE [1] pSwitchB #-}
 
 -- | 'dpSwitch' with the input broadcast to every member.
 dpSwitchB :: Traversable col
           => col (SF a b) -> SF (a, col b) (Event c) -> (col (SF a b) -> c -> SF a (col b))
           -> SF a (col b)
 dpSwitchB = dpSwitch broadcast
+{-# NOINLINE [1] dpSwitchB #-}
 
 -- | 'pSwitch' with zipped inputs (as 'parZ').
 pSwitchZ :: [SF a b] -> SF ([a], [b]) (Event c) -> ([SF a b] -> c -> SF [a] [b]) -> SF [a] [b]
-pSwitchZ = pSwitch (zipRoute "pSwitchZ")
+pSwitchZ = pSwitchWith stepColL (zipRoute "pSwitchZ")
 
 -- | 'dpSwitch' with zipped inputs (as 'parZ').
 dpSwitchZ :: [SF a b] -> SF ([a], [b]) (Event c) -> ([SF a b] -> c -> SF [a] [b]) -> SF [a] [b]
-dpSwitchZ = dpSwitch (zipRoute "dpSwitchZ")
+dpSwitchZ = dpSwitchWith stepColL (zipRoute "dpSwitchZ")
 
 -- | @rpSwitch route sfs@ runs @sfs@ as 'par' does on the first input
 -- component, and changes the collection at every event @Event f@ of the
@@ -135,11 +192,17 @@ dpSwitchZ = dpSwitch (zipRoute "dpSwitchZ")
 rpSwitch :: Traversable col
          => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
          -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
-rpSwitch rf sfs = SF (go (fmap sfNode sfs))
+rpSwitch = rpSwitchWith stepColT
+{-# NOINLINE [1] rpSwitch #-}
+
+rpSwitchWith :: Functor col => Stepper col
+             -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
+             -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
+rpSwitchWith stepper rf sfs = SF (go (fmap sfNode sfs))
   where
     go ns = NStep (\dt (a, e) ->
       let ns0 = event ns (\f -> fmap sfNode (f (freezeCol ns dt))) e
-      in case stepCol dt (rf a ns0) of (ns', cs) -> (# go ns', cs #))
+      in case stepper dt (rf a ns0) of (# ns', cs #) -> case go ns' of !n -> (# n, cs #))
 
 -- | Delayed 'rpSwitch': at an event instant the output is still the old
 -- collection's; the new collection starts at that instant and supplies
@@ -147,34 +210,42 @@ rpSwitch rf sfs = SF (go (fmap sfNode sfs))
 drpSwitch :: Traversable col
           => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
           -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
-drpSwitch rf sfs = SF (go (fmap sfNode sfs))
+drpSwitch = drpSwitchWith stepColT
+{-# NOINLINE [1] drpSwitch #-}
+
+drpSwitchWith :: Functor col => Stepper col
+              -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
+              -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
+drpSwitchWith stepper rf sfs = SF (go (fmap sfNode sfs))
   where
-    go ns = NStep (\dt ae -> case stepCol dt (rf (fst ae) ns) of
-      (ns', cs) ->
+    go ns = NStep (\dt ae -> case stepper dt (rf (fst ae) ns) of
+      (# ns', cs #) ->
         -- Decoupled: the event is examined when the successor next steps.
         let next = case snd ae of
               NoEvent -> go ns'
-              Event f -> case stepCol dt (rf (fst ae) (fmap sfNode (f (freezeCol ns dt)))) of
-                (ms', _) -> go ms'
+              Event f -> case stepper dt (rf (fst ae) (fmap sfNode (f (freezeCol ns dt)))) of
+                (# ms', _ #) -> go ms'
         in (# deferN next, cs #))
 
 -- | 'rpSwitch' with the input broadcast to every member.
 rpSwitchB :: Traversable col
           => col (SF a b) -> SF (a, Event (col (SF a b) -> col (SF a b))) (col b)
 rpSwitchB = rpSwitch broadcast
+{-# NOINLINE [1] rpSwitchB #-}
 
 -- | 'drpSwitch' with the input broadcast to every member.
 drpSwitchB :: Traversable col
            => col (SF a b) -> SF (a, Event (col (SF a b) -> col (SF a b))) (col b)
 drpSwitchB = drpSwitch broadcast
+{-# NOINLINE [1] drpSwitchB #-}
 
 -- | 'rpSwitch' with zipped inputs (as 'parZ').
 rpSwitchZ :: [SF a b] -> SF ([a], Event ([SF a b] -> [SF a b])) [b]
-rpSwitchZ = rpSwitch (zipRoute "rpSwitchZ")
+rpSwitchZ = rpSwitchWith stepColL (zipRoute "rpSwitchZ")
 
 -- | 'drpSwitch' with zipped inputs (as 'parZ').
 drpSwitchZ :: [SF a b] -> SF ([a], Event ([SF a b] -> [SF a b])) [b]
-drpSwitchZ = drpSwitch (zipRoute "drpSwitchZ")
+drpSwitchZ = drpSwitchWith stepColL (zipRoute "drpSwitchZ")
 
 ------------------------------------------------------------------------------
 -- Helpers
@@ -190,15 +261,85 @@ zipRoute name = go
     go []       _        = error ("AFRP.Parallel." ++ name
       ++ ": the input list is shorter than the list of signal functions")
 
--- Step every member, evaluating every successor node.
-stepCol :: Traversable col => DTime -> col (b, Node b c) -> (col (Node b c), col c)
-stepCol dt routed =
+-- Step every member, evaluating every successor node: any 'Traversable'.
+stepColT :: Traversable col => DTime -> col (b, Node b c) -> (# col (Node b c), col c #)
+stepColT dt routed =
   let stepped = fmap (\(b, n) -> boxStep n dt b) routed
       nodes   = fmap (\(Boxed n _) -> n) stepped
-  in forceAll nodes `seq` (nodes, fmap (\(Boxed _ c) -> c) stepped)
+  in forceAll nodes `seq` (# nodes, fmap (\(Boxed _ c) -> c) stepped #)
 
 forceAll :: Foldable t => t a -> ()
 forceAll = foldl' (\_ x -> x `seq` ()) ()
 
+-- 'stepColT' on lists, in one pass: the members are stepped in order, each
+-- successor evaluated, the outputs left lazy.
+stepColL :: DTime -> [(b, Node b c)] -> (# [Node b c], [c] #)
+stepColL dt = go
+  where
+    go []              = (# [], [] #)
+    go ((b, n) : rest) = case stepN n dt b of
+      (# !n', c #) -> case go rest of
+        (# ns', cs #) -> (# n' : ns', c : cs #)
+
+-- Step every member of an array on the same input (for 'parBL'), in
+-- order, each successor evaluated: the successors (a new array) and the
+-- outputs (a list, built from the last one back).
+stepArrB :: DTime -> b -> Arr (Node b c) -> (# Arr (Node b c), [c] #)
+stepArrB dt b src@(Arr sa) = runRW# (\s0 ->
+  case newSmallArray# n undefElem s0 of
+    (# s1, dst #) -> case newSmallArray# n undefElem s1 of
+      (# s2, outs #) ->
+        let fill i s
+              | isTrue# (i >=# n) = s
+              | otherwise = case indexSmallArray# sa i of
+                  (# node #) -> case stepN node dt b of
+                    (# !node', c #) -> fill (i +# 1#)
+                      (writeSmallArray# outs i c (writeSmallArray# dst i node' s))
+            collect i acc s
+              | isTrue# (i <# 0#) = (# s, acc #)
+              | otherwise = case readSmallArray# outs i s of
+                  (# s', c #) -> collect (i -# 1#) (c : acc) s'
+        in case fill 0# s2 of
+          s3 -> case unsafeFreezeSmallArray# dst s3 of
+            (# s4, frozen #) -> case collect (n -# 1#) [] s4 of
+              (# _, cs #) -> (# Arr frozen, cs #))
+  where
+    !(I# n) = arrLength src
+
+-- An immutable array of members.
+data Arr a = Arr (SmallArray# a)
+
+arrLength :: Arr a -> Int
+arrLength (Arr a) = I# (sizeofSmallArray# a)
+
+arrayFromList :: [a] -> Arr a
+arrayFromList xs = runRW# (\s0 -> case newSmallArray# n undefElem s0 of
+  (# s1, m #) ->
+    let fill _ [] s       = s
+        fill i (y : ys) s = fill (i +# 1#) ys (writeSmallArray# m i y s)
+    in case unsafeFreezeSmallArray# m (fill 0# xs s1) of
+      (# _, a #) -> Arr a)
+  where
+    !(I# n) = length xs
+
+undefElem :: a
+undefElem = error "AFRP.Parallel: an array element that was never written"
+
 freezeCol :: Functor col => col (Node b c) -> DTime -> col (SF b c)
 freezeCol ns dt = fmap (\n -> SF (freezeN n dt)) ns
+
+------------------------------------------------------------------------------
+-- Lists: every combinator over 'stepColL' (see the note at the top).
+
+{-# RULES
+"par/list"        par        = parWith stepColL
+"parB/list"       parB       = parBL
+"pSwitch/list"    pSwitch    = pSwitchWith stepColL
+"pSwitchB/list"   pSwitchB   = pSwitchWith stepColL broadcast
+"dpSwitch/list"   dpSwitch   = dpSwitchWith stepColL
+"dpSwitchB/list"  dpSwitchB  = dpSwitchWith stepColL broadcast
+"rpSwitch/list"   rpSwitch   = rpSwitchWith stepColL
+"rpSwitchB/list"  rpSwitchB  = rpSwitchWith stepColL broadcast
+"drpSwitch/list"  drpSwitch  = drpSwitchWith stepColL
+"drpSwitchB/list" drpSwitchB = drpSwitchWith stepColL broadcast
+  #-}

@@ -1,5 +1,9 @@
 {-# LANGUAGE UnboxedTuples #-}
 {-# LANGUAGE GADTs         #-}
+{-# LANGUAGE BangPatterns  #-}
+-- Full laziness would float the per-step decisions of the switches out of
+-- the closures that make them, as thunks allocated at every step.
+{-# OPTIONS_GHC -fno-full-laziness #-}
 -- |
 -- Module      : AFRP.Switch
 -- Description : Switching: a signal function that becomes another one at
@@ -61,7 +65,7 @@ switch (SF n0) k = SF (go n0)
     go n = NStep (\dt a -> case stepN n dt a of
       (# n', (b, e) #) -> case e of
         Event c -> stepN (sfNode (k c)) dt a
-        NoEvent -> (# watch n' go, b #))
+        NoEvent -> case watch n' go of !m -> (# m, b #))
 
 -- | @dSwitch sf k@ is 'switch' except at the switching instant, where the
 -- output is still @sf@'s; @k c@ is started at that instant (its first
@@ -71,22 +75,34 @@ switch (SF n0) k = SF (go n0)
 dSwitch :: SF a (b, Event c) -> (c -> SF a b) -> SF a b
 dSwitch (SF n0) k = SF (go n0)
   where
-    go n = NStep (\dt a -> case stepN n dt a of
-      (# n', be #) ->
-        let next = case snd be of
-              NoEvent -> watch n' go
-              Event c -> case stepN (sfNode (k c)) dt a of (# m, _ #) -> m
-        in (# deferN next, fst be #))
+    go n = NStep (step n)
+    step n dt a = case stepN n dt a of
+      (# n', be #) -> (# NStep (resume n' be dt a), fst be #)
+    -- Decoupled: whether the event occurred at the step that produced @be@
+    -- is examined only at the next step (this is @deferN next@ with
+    -- @next = watch n' go@ or @k c@ started then, stepped at once).
+    resume n' be dt0 a0 dt a = case snd be of
+      NoEvent -> case unwatched n' of
+        Just m  -> stepN m dt a
+        Nothing -> step n' dt a
+      Event c -> case stepN (sfNode (k c)) dt0 a0 of (# m, _ #) -> stepN m dt a
 
 -- Continue watching a stepped node, unless its event can no longer occur.
 -- Both patterns inspect only values that the step just evaluated.
 watch :: Node a (b, Event c) -> (Node a (b, Event c) -> Node a b) -> Node a b
-watch n go = case n of
+watch n go = case unwatched n of
+  Just m  -> m
+  Nothing -> go n
+
+-- The node a switch on @n@ becomes if @n@'s event can no longer occur.
+unwatched :: Node a (b, Event c) -> Maybe (Node a b)
+unwatched n = case n of
   -- sf &&& never = the switch can never fire
-  NFan f (NPure (FDC NoEvent)) -> f
+  NFan f (NPure (FDC NoEvent)) -> Just f
   -- constant (b, NoEvent) likewise
-  NPure (FDC (b, NoEvent))     -> constN b
-  _                            -> go n
+  NPure (FDC (b, NoEvent))     -> Just (constN b)
+  _                            -> Nothing
+{-# INLINE unwatched #-}
 
 -- | @rSwitch sf@ behaves as @sf@ on the first input component, and switches
 -- into the signal function carried by each event of the second component,
@@ -96,8 +112,8 @@ rSwitch :: SF a b -> SF (a, Event (SF a b)) b
 rSwitch (SF n0) = SF (go n0)
   where
     go n = NStep (\dt (a, e) -> case e of
-      NoEvent      -> case stepN n dt a of (# n', b #) -> (# go n', b #)
-      Event (SF m) -> case stepN m dt a of (# m', b #) -> (# go m', b #))
+      NoEvent      -> case stepN n dt a of (# n', b #) -> case go n' of !r -> (# r, b #)
+      Event (SF m) -> case stepN m dt a of (# m', b #) -> case go m' of !r -> (# r, b #))
 
 -- | Delayed 'rSwitch': at an event instant the output is still the current
 -- signal function's; the new one starts at that instant and supplies the
@@ -125,7 +141,7 @@ kSwitch (SF n0) (SF e0) k = SF (go n0 e0)
   where
     go n ne = NStep (\dt a -> case stepN n dt a of
       (# n', b #) -> case stepN ne dt (a, b) of
-        (# ne', NoEvent #) -> (# go n' ne', b #)
+        (# ne', NoEvent #) -> case go n' ne' of !m -> (# m, b #)
         (# _, Event c #)   -> stepN (sfNode (k (SF (freezeN n dt)) c)) dt a)
 
 -- | Delayed 'kSwitch': at the switching instant the output is still

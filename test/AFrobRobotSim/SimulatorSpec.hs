@@ -148,6 +148,15 @@ spec = do
           x1 `shouldSatisfy` (< x2 - 0.3)     -- the first stayed behind
         other -> expectationFailure ("expected two balls, got " ++ show other)
 
+    it "are never pushed through a wall by a robot" $ do
+      let squeeze = take 300 (simulate 0.02 [OTVWall (Point2 2 0), OTBall (Point2 1.8 0), OTSimbotB 1 (Point2 0 0) 0]
+                                       idle (driveAt 2 2))
+      maximum [ x | s <- squeeze, Point2 x _ <- wsBalls s ] `shouldSatisfy` (<= 1.95 - 0.15 + 1e-6)
+    it "are never pushed out of the world" $ do
+      let corner = take 300 (simulate 0.02 [OTBall (Point2 4.84 4.84), OTSimbotB 1 (Point2 3 3) (pi / 4)]
+                                      idle (driveAt 2 2))
+      maximum [ max x y | s <- corner, Point2 x y <- wsBalls s ] `shouldSatisfy` (<= 5 - 0.15 + 1e-6)
+
   describe "battery" $
     it "goes low and then critical on a long run at full effort" $ do
       let run = simulate 0.1 [OTSimbotA 1 (Point2 0 0) 0] (\_ -> constant (mrFinalize (ddVelTR 0 4))) idle

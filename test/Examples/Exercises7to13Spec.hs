@@ -10,6 +10,7 @@ import           Test.Hspec       hiding (Example, after)
 
 import           AFrob            hiding (forAll)
 import           AFrobRobotSim
+import           Examples.SimUtil
 import           Examples.Types
 import qualified Exercises.Ex07   as Ex07
 import qualified Exercises.Ex08   as Ex08
@@ -21,36 +22,6 @@ import qualified Exercises.Ex13   as Ex13
 
 ------------------------------------------------------------------------------
 -- Helpers
-
--- | The first @secs@ seconds of a run at time step @dt@.
-runFor :: DTime -> Double -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
-runFor dt secs world rcA rcB = take (round (secs / dt) + 1) (simulate dt world rcA rcB)
-
--- | The first @secs@ seconds of a run of an example.
-runEx :: DTime -> Double -> Example -> [WorldState]
-runEx dt secs e = runFor dt secs (exWorld e) (exControllerA e) (exControllerB e)
-
--- | The snapshot at time @t@ of a run at time step @dt@.
-at :: DTime -> Double -> [WorldState] -> WorldState
-at dt t run = run !! round (t / dt)
-
-robot :: String -> RobotId -> WorldState -> RobotState
-robot ty i s = case [ r | r <- wsRobots s, robotType r == ty, robotId r == i ] of
-  [r] -> r
-  _   -> error ("no robot " ++ ty ++ " " ++ show i)
-
-robotA, robotB :: WorldState -> RobotState
-robotA = robot "SimbotA" 1
-robotB = robot "SimbotB" 1
-
-xy :: RobotState -> (Double, Double)
-xy r = let Point2 x y = robotPos r in (x, y)
-
-dist :: Position2 -> Position2 -> Double
-dist p q = norm (p .-. q)
-
-near :: Double -> Double -> Double -> Bool
-near tol a b = abs (a - b) <= tol
 
 -- | The indices at which a signal changes sign (from negative to
 -- non-negative or back).
@@ -106,7 +77,7 @@ spec = do
   ----------------------------------------------------------------------------
   describe "exercise 7: rcBlind2 for 2 s, rcTurn for 3 s, then rcStop" $ do
     let dt  = 0.02
-        run = runEx dt 10 (head Ex07.examples)
+        run = runExample dt 10 (head Ex07.examples)
         b t = robotB (at dt t run)
         a t = robotA (at dt t run)
     it "drives straight ahead, speeding up towards half its maximum speed, until 2 s" $ do
@@ -136,7 +107,7 @@ spec = do
   ----------------------------------------------------------------------------
   describe "exercise 8: rcReverse with a snapshot of the velocity" $ do
     let dt  = 0.02
-        run = runEx dt 40 (head Ex08.examples)
+        run = runExample dt 40 (head Ex08.examples)
         stuckAt who = [ i | (i, s0, s1) <- zip3 [1 :: Int ..] run (drop 1 run)
                           , not (robotStuck (who s0)), robotStuck (who s1) ]
         speed who i = robotSpeed (who (run !! i))
@@ -166,7 +137,7 @@ spec = do
   ----------------------------------------------------------------------------
   describe "exercise 9: rcMoveTo that stops at its target" $ do
     let dt  = 0.05
-        run = runEx dt 25 (head Ex09.examples)
+        run = runExample dt 25 (head Ex09.examples)
         end = last run
     it "ends close to its target, at a standstill" $ do
       -- targets (-1, 2) and (2, 1); stopping radius 0.1 m, plus at most 1 cm of braking
@@ -182,7 +153,7 @@ spec = do
   ----------------------------------------------------------------------------
   describe "exercise 10: a sinusoidal path" $ do
     let dt  = 0.05
-        run = runEx dt 24 (head Ex10.examples)
+        run = runExample dt 24 (head Ex10.examples)
         -- rcSine 0.4 0 1.0 8 (SimbotA) and rcSine 0.45 0 1.2 5 (SimbotB)
         check who period amp = do
           let hs = map (robotHeading . who) run
@@ -210,7 +181,7 @@ spec = do
   ----------------------------------------------------------------------------
   describe "exercise 11: visiting a list of points in turn" $ do
     let dt  = 0.05
-        run = runEx dt 50 (head Ex11.examples)
+        run = runExample dt 50 (head Ex11.examples)
     it "reaches every point (within 0.25 m), in order, then stops at the last" $ do
       -- the arrival radius is 0.2 m; the robots still coast a little
       let va = visits robotA 0.25 Ex11.tourA run
@@ -230,7 +201,7 @@ spec = do
   ----------------------------------------------------------------------------
   describe "exercise 12: a wall follower for mazes" $ do
     let dt  = 0.05
-        run = runFor dt 95 Ex12.mazeWorld (Ex12.rcMazeFollower 0.3 0.4) (Ex12.rcMazeFollower 0.5 0.4)
+        run = runWorld dt 95 Ex12.mazeWorld (Ex12.rcMazeFollower 0.3 0.4) (Ex12.rcMazeFollower 0.5 0.4)
         -- one point on every stretch of the lap, the wall on the robot's
         -- left 0.65 m from its centre (0.4 m from its edge)
         checkpoints =
@@ -262,7 +233,7 @@ spec = do
   describe "exercise 13: a robust, multi-mode wall follower" $ do
     let dt  = 0.05
         d   = 0.4
-        run = runFor dt 60 Ex13.ex13World (probe (Ex13.rcRobustFollower 0.3 d)) (probe (Ex13.rcRobustFollower 0.5 d))
+        run = runWorld dt 60 Ex13.ex13World (probe (Ex13.rcRobustFollower 0.3 d)) (probe (Ex13.rcRobustFollower 0.5 d))
         check who = do
           let readings = probed who run
               lefts = map fst readings

@@ -11,6 +11,7 @@ import           Test.Hspec     hiding (Example, after)
 
 import           AFrob          hiding (forAll)
 import           AFrobRobotSim
+import           Examples.SimUtil
 import           Examples.Types
 import           Paper.Section3
 
@@ -22,34 +23,6 @@ paperExample :: String -> Example
 paperExample name = case [ e | e <- examples, exName e == name ] of
   [e] -> e
   _   -> error ("no single example named " ++ name)
-
--- | The first @secs@ seconds of a run of the example at time step @dt@.
-runFor :: DTime -> Double -> Example -> [WorldState]
-runFor dt secs e = take (round (secs / dt) + 1)
-  (simulate dt (exWorld e) (exControllerA e) (exControllerB e))
-
--- | The snapshot at time @t@ of a run at time step @dt@.
-at :: DTime -> Double -> [WorldState] -> WorldState
-at dt t run = run !! round (t / dt)
-
--- | A robot of a snapshot by type and id.
-robot :: String -> RobotId -> WorldState -> RobotState
-robot ty i s = case [ r | r <- wsRobots s, robotType r == ty, robotId r == i ] of
-  [r] -> r
-  _   -> error ("no robot " ++ ty ++ " " ++ show i)
-
-robotA, robotB :: WorldState -> RobotState
-robotA = robot "SimbotA" 1
-robotB = robot "SimbotB" 1
-
-xy :: RobotState -> (Double, Double)
-xy r = let Point2 x y = robotPos r in (x, y)
-
-dist :: Position2 -> Position2 -> Double
-dist p q = norm (p .-. q)
-
-near :: Double -> Double -> Double -> Bool
-near tol a b = abs (a - b) <= tol
 
 -- | How far apart the headings are: 1 - the length of their mean unit
 -- vector (0 when all equal, 1 when they cancel out).
@@ -76,12 +49,12 @@ spec = do
 
   it "rcStop: the robots stay exactly where they are" $ do
     let e = paperExample "rcStop"
-        run = runFor 0.05 3 e
+        run = runExample 0.05 3 e
     map (map robotPos . wsRobots) run `shouldSatisfy` all (== map robotPos (wsRobots (head run)))
 
   it "rcBlind1: full speed (10 m/s clamped to the maximum) straight into the wall, and stuck there" $ do
     let dt = 0.05
-        run = runFor dt 14 (paperExample "rcBlind1")
+        run = runExample dt 14 (paperExample "rcBlind1")
     -- speeds to 1e-9: 1 m/s reached after 5 s (0.2 m/s^2), 2 m/s after 4 s (0.5 m/s^2)
     robotSpeed (robotA (at dt 5.5 run)) `shouldSatisfy` near 1e-9 1
     robotSpeed (robotB (at dt 4.5 run)) `shouldSatisfy` near 1e-9 2
@@ -93,14 +66,14 @@ spec = do
 
   it "rcBlind2: half the maximum wheel speed, so the SimbotB is twice as fast" $ do
     let dt = 0.05
-        s = at dt 6 (runFor dt 6 (paperExample "rcBlind2"))
+        s = at dt 6 (runExample dt 6 (paperExample "rcBlind2"))
     robotSpeed (robotA s) `shouldSatisfy` near 1e-9 0.5
     robotSpeed (robotB s) `shouldSatisfy` near 1e-9 1.0
     map (snd . xy) (wsRobots s) `shouldBe` [-1, 1]
 
   it "rcTurn: the fastest turn at the given speed, w = 2 (vmax - v) / l, on circles of 1 m" $ do
     let dt = 0.02
-        run = runFor dt 20 (paperExample "rcTurn")
+        run = runExample dt 20 (paperExample "rcTurn")
         turned f t0 t1 = normalizeAngle (robotHeading (f (at dt t1 run)) - robotHeading (f (at dt t0 run)))
     -- at full speed (A 0.8 m/s after 4 s, B 1.6 m/s after 3.2 s):
     -- A turns at 2 (1 - 0.8) / 0.5 = 0.8 rad/s, B at 2 (2 - 1.6) / 0.5 = 1.6 rad/s (1e-6)
@@ -113,7 +86,7 @@ spec = do
 
   it "rcReverse: bounces between its walls, saying Ouch!! at every bump" $ do
     let dt = 0.05
-        run = runFor dt 25 (paperExample "rcReverse")
+        run = runExample dt 25 (paperExample "rcReverse")
         ouches ty = length [ m | s <- run, m <- wsMessages s, ty `isInfixOf` m, "Ouch!!" `isInfixOf` m ]
     -- SimbotA (0.5 m/s) bumps at about 6.7 and 18.7 s, SimbotB (1 m/s) every 6.4 s
     ouches "SimbotA.1" `shouldBe` 2
@@ -124,24 +97,24 @@ spec = do
     run `shouldSatisfy` all (all (\r -> abs (fst (xy r)) <= 2.95 - 0.25 + 1e-3) . wsRobots)
 
   it "rcReverse': the same run as rcReverse" $ do
-    let states name = map wsRobots (runFor 0.05 25 (paperExample name))
+    let states name = map wsRobots (runExample 0.05 25 (paperExample name))
     states "rcReverse'" `shouldBe` states "rcReverse"
 
   it "rcHeading: every robot turns to the heading pi/4 and drives on at its speed" $ do
     let dt = 0.05
-        s = at dt 8 (runFor dt 8 (paperExample "rcHeading"))
+        s = at dt 8 (runExample dt 8 (paperExample "rcHeading"))
     -- headings within 0.01 rad; speeds 0.4 (A) and 0.6 (B) to 1e-9
     map robotHeading (wsRobots s) `shouldSatisfy` all (near 0.01 (pi / 4))
     [ robotSpeed r | r <- wsRobots s, robotType r == "SimbotA" ] `shouldSatisfy` all (near 1e-9 0.4)
     [ robotSpeed r | r <- wsRobots s, robotType r == "SimbotB" ] `shouldSatisfy` all (near 1e-9 0.6)
 
   it "rcHeading': the same run as rcHeading" $ do
-    let states name = map wsRobots (runFor 0.05 8 (paperExample name))
+    let states name = map wsRobots (runExample 0.05 8 (paperExample name))
     states "rcHeading'" `shouldBe` states "rcHeading"
 
   it "rcMoveTo: both robots end up at their targets, slowing down as they arrive" $ do
     let dt = 0.05
-        run = runFor dt 25 (paperExample "rcMoveTo")
+        run = runExample dt 25 (paperExample "rcMoveTo")
         end = last run
     -- within 5 cm of the targets, and crawling (under 1 cm/s)
     dist (robotPos (robotA end)) (Point2 (-1) 2) `shouldSatisfy` (< 0.05)
@@ -152,7 +125,7 @@ spec = do
 
   it "rcFollowLeftWall: both robots settle at the set distance from the wall on their left" $ do
     let dt = 0.05
-        run = runFor dt 16 (paperExample "rcFollowLeftWall")
+        run = runExample dt 16 (paperExample "rcFollowLeftWall")
     -- the wall's faces are at y = 0.95 and 1.05; the robot's edge keeps
     -- 0.25 (A, below) and 0.4 (B, above) from them: centres at y = 0.45
     -- and y = 1.70 (2 cm), driving parallel to the wall (0.01 rad)
@@ -170,7 +143,7 @@ spec = do
     -- transient, and so on the time step; at 0.05 it is more easterly and
     -- the flock reaches the world's edge before 18 s)
     let dt = 0.02
-        run = runFor dt 18 (paperExample "rcAlign")
+        run = runExample dt 18 (paperExample "rcAlign")
         spread s = headingSpread (map robotHeading (wsRobots s))
     length (wsRobots (head run)) `shouldBe` 12
     spread (head run) `shouldSatisfy` (> 0.5)

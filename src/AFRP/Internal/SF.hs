@@ -1,6 +1,6 @@
 {-# LANGUAGE GADTs        #-}
 {-# LANGUAGE UnboxedTuples #-}
-{-# LANGUAGE BangPatterns #-}
+{-# LANGUAGE BangPatterns  #-}
 -- |
 -- Module      : AFRP.Internal.SF
 -- Description : The representation of signal functions and the Arrow instances.
@@ -11,7 +11,7 @@
 --
 -- A signal function is a /network of nodes/ that is stepped one sample at a
 -- time. A node is either one of a handful of structural forms that the
--- library understands ('NPure', 'NComp', 'NFirst', 'NSecond', 'NPar', 'NFan')
+-- library understands ('NPure', 'NComp', 'NPar', 'NFan', 'NLoop')
 -- or an opaque stateful step ('NStep'). Because the structure is visible,
 -- the smart constructors ('compN', 'fanN', ...) simplify the network both
 -- when it is built and every time a part of it changes while it runs: pure
@@ -30,10 +30,34 @@
 -- deliberately uses the time step it captured.
 --
 -- A step returns an unboxed pair of the next node and the output. The next
--- node is always evaluated (every structural field is strict and every
--- primitive builds its successor with its state forced), so a network never
--- accumulates thunks however long it runs; the /output/ stays lazy, which is
--- what makes 'loop' and recursive arrow notation work.
+-- node is always evaluated (every structural field is strict, 'stepN'
+-- builds every structural successor with @case@ rather than as a lazy
+-- application of a smart constructor, and every primitive builds its
+-- successor with its state forced), so a network never accumulates thunks
+-- however long it runs; the /output/ stays lazy, which is what makes
+-- 'loop' and recursive arrow notation work.
+--
+-- = Performance
+--
+-- Stepping is an interpretation of the node tree, so its cost is the
+-- number of nodes stepped and rebuilt, and what they allocate. To keep it
+-- low:
+--
+-- * there are at most seven constructors, so that GHC's pointer tags
+--   identify the constructor without reading its info table ('NPar' also
+--   stands for @first@ and @second@, with an identity on one side);
+-- * a pure node next to a stateful one (@arr f >>> sf@, @sf >>> arr f@,
+--   @sf &&& identity@, ...) is applied where it stands rather than stepped
+--   as a node of its own;
+-- * rebuilding a node whose children are both still stateful skips the
+--   smart constructor, none of whose identities can apply;
+-- * @loop (second sf >>> f)@ (the shape of 'AFRP.Loop.loopPre' and
+--   'AFRP.Loop.loopIntegral') is a node of its own ('NLoop'), and the
+--   knot it ties allocates one box, not a pair to be taken apart;
+-- * 'AFRP.Integration.integral' at 'Double' (by a rewrite rule) is a
+--   specialised node with an unboxed running sum ('NIntD').
+--
+-- Every such case states, next to it, the identity it relies on.
 module AFRP.Internal.SF
   ( -- * Time
     Time
@@ -108,17 +132,22 @@ data Node a b where
   NPure   :: !(FunD a b) -> Node a b
   -- | Serial composition.
   NComp   :: !(Node a c) -> !(Node c b) -> Node a b
-  -- | Apply to the first component, pass the second through.
-  NFirst  :: !(Node a b) -> Node (a, c) (b, c)
-  -- | Apply to the second component, pass the first through.
-  NSecond :: !(Node a b) -> Node (c, a) (c, b)
-  -- | Parallel composition on pairs.
+  -- | Parallel composition on pairs. @first f@ and @second f@ are
+  -- @NPar f id@ and @NPar id f@ (see 'firstN').
   NPar    :: !(Node a b) -> !(Node c d) -> Node (a, c) (b, d)
   -- | Fan-out: both nodes see the same input.
   NFan    :: !(Node a b) -> !(Node a c) -> Node a (b, c)
   -- | An opaque stateful node: given the time step and the input sample,
   -- its successor and its output.
   NStep   :: !(DTime -> a -> (# Node a b, b #)) -> Node a b
+  -- | @NLoop s f@ is @loop (second s >>> f)@ (see 'loopN'): @s@ sees the
+  -- fed-back value, @f@ the input and @s@'s output. A plain @loop f@ is
+  -- @NLoop id f@.
+  NLoop   :: !(Node c d) -> !(Node (a, d) (b, c)) -> Node a b
+  -- | 'AFRP.Integration.integral' on 'Double' after its first sample: the
+  -- running sum and the previous input sample (lazy: the integral never
+  -- evaluates its current input). A specialised node, with no closure.
+  NIntD   :: {-# UNPACK #-} !Double -> Double -> Node Double Double
 
 -- | A step result in a box, for the places (knots, collections) that need
 -- a lifted value.
@@ -128,25 +157,89 @@ data Boxed a b = Boxed !(Node a b) b
 -- Stepping
 
 -- | Step a node: time step, input sample, successor and output.
+--
+-- Every successor is returned evaluated (the structural ones are built
+-- with @case@, never as a lazy application of a smart constructor), so a
+-- parent never allocates a thunk for a child it is about to inspect anyway.
 stepN :: Node a b -> DTime -> a -> (# Node a b, b #)
 stepN n dt a = case n of
   NPure FDI     -> (# n, a #)
   NPure (FDC b) -> (# n, b #)
   NPure (FDG f) -> (# n, f a #)
-  NComp f g     -> case stepN f dt a of
-    (# f', c #) -> case stepN g dt c of
-      (# g', b #) -> (# compN f' g', b #)
-  NFirst f      -> let (x, c) = a in case stepN f dt x of
-    (# f', y #) -> (# firstN f', (y, c) #)
-  NSecond f     -> let (c, x) = a in case stepN f dt x of
-    (# f', y #) -> (# secondN f', (c, y) #)
-  NPar f g      -> let (x, z) = a in case stepN f dt x of
-    (# f', y #) -> case stepN g dt z of
-      (# g', w #) -> (# parN f' g', (y, w) #)
-  NFan f g      -> case stepN f dt a of
-    (# f', y #) -> case stepN g dt a of
-      (# g', w #) -> (# fanN f' g', (y, w) #)
+  NComp f g     -> case f of
+    -- A pure function in front of a stateful node (the usual shape): apply
+    -- it (lazily, as its own node would) without a step of its own.
+    NPure (FDG p) -> case stepN g dt (p a) of
+      (# g', b #) -> case compN f g' of !n' -> (# n', b #)
+    _             -> case stepN f dt a of
+      (# f', c #) -> case g of
+        -- ... and one behind it.
+        NPure (FDG q) -> case compN f' g of !n' -> (# n', q c #)
+        _             -> case stepN g dt c of
+          (# g', b #) -> case rebuildComp f' g' of !n' -> (# n', b #)
+  NPar f g      -> case g of
+    -- first f
+    NPure FDI -> let (x, c) = a in case stepN f dt x of
+      (# f', y #) -> case firstN f' of !n' -> (# n', (y, c) #)
+    _         -> case f of
+      -- second g
+      NPure FDI -> let (c, x) = a in case stepN g dt x of
+        (# g', y #) -> case secondN g' of !n' -> (# n', (c, y) #)
+      _         -> let (x, z) = a in case stepN f dt x of
+        (# f', y #) -> case stepN g dt z of
+          (# g', w #) -> case rebuildPar f' g' of !n' -> (# n', (y, w) #)
+  NFan f g      -> case g of
+    -- A pure side (sf &&& identity, sf &&& arr f, sf &&& never) is applied
+    -- as its own node would be, without a step of its own.
+    NPure gd -> case stepN f dt a of
+      (# f', y #) -> case fanN f' g of
+        !n' -> case gd of
+          FDI   -> (# n', (y, a) #)
+          FDC w -> (# n', (y, w) #)
+          FDG q -> (# n', (y, q a) #)
+    _        -> case f of
+      NPure fd -> case stepN g dt a of
+        (# g', w #) -> case fanN f g' of
+          !n' -> case fd of
+            FDI   -> (# n', (a, w) #)
+            FDC y -> (# n', (y, w) #)
+            FDG p -> (# n', (p a, w) #)
+      _        -> case stepN f dt a of
+        (# f', y #) -> case stepN g dt a of
+          (# g', w #) -> case rebuildFan f' g' of !n' -> (# n', (y, w) #)
   NStep s       -> s dt a
+  NLoop d f     -> loopStep d f dt a
+  -- integral: y_n = y_(n-1) + dt_n * a_(n-1), exactly as the generic
+  -- 'AFRP.Integration.integral' at 'Double' computes it.
+  NIntD acc prev -> let !acc' = acc + dt * prev
+                    in (# NIntD acc' a, acc' #)
+
+-- Rebuilding a node whose two children were both stateful before the step:
+-- as the smart constructor would, but with the common case (both still
+-- stateful, where no identity applies) decided by two tests and no call.
+rebuildComp :: Node a c -> Node c b -> Node a b
+rebuildComp f g = case g of
+  NPure _ -> compN f g
+  _       -> case f of
+    NPure _ -> compN f g
+    _       -> NComp f g
+{-# INLINE rebuildComp #-}
+
+rebuildPar :: Node a b -> Node c d -> Node (a, c) (b, d)
+rebuildPar f g = case g of
+  NPure _ -> parN f g
+  _       -> case f of
+    NPure _ -> parN f g
+    _       -> NPar f g
+{-# INLINE rebuildPar #-}
+
+rebuildFan :: Node a b -> Node a c -> Node a (b, c)
+rebuildFan f g = case g of
+  NPure _ -> fanN f g
+  _       -> case f of
+    NPure _ -> fanN f g
+    _       -> NFan f g
+{-# INLINE rebuildFan #-}
 
 -- | 'stepN' with a boxed result.
 boxStep :: Node a b -> DTime -> a -> Boxed a b
@@ -211,21 +304,36 @@ idN = NPure FDI
 
 -- | Serial composition, simplified.
 compN :: Node a c -> Node c b -> Node a b
--- arr f >>> arr g = arr (g . f)
-compN (NPure f) (NPure g)            = NPure (fdComp f g)
--- id >>> n = n ; n >>> id = n
-compN (NPure FDI) g                  = g
-compN f (NPure FDI)                  = f
--- n >>> constant c = constant c (signal functions have no effects)
-compN _ (NPure (FDC c))              = NPure (FDC c)
--- arr f >>> (arr g >>> n) = arr (g . f) >>> n
-compN (NPure f) (NComp (NPure g) h)  = NComp (NPure (fdComp f g)) h
--- (n >>> arr f) >>> arr g = n >>> arr (g . f)
-compN (NComp h (NPure f)) (NPure g)  = NComp h (NPure (fdComp f g))
--- (arr f &&& constant c) >>> arr g = arr (\a -> g (f a, c)): the fan was
--- kept only for the benefit of a switch, and no switch can see it here.
-compN (NFan (NPure f) (NPure c)) (NPure g) = NPure (fdComp (fanFD f c) g)
-compN f g                            = NComp f g
+-- The identities it relies on, in the order they are tried:
+--
+-- > arr f >>> arr g                 = arr (g . f)
+-- > n >>> id                        = n
+-- > n >>> constant c                = constant c    (signal functions have no effects)
+-- > (n >>> arr f) >>> arr g         = n >>> arr (g . f)
+-- > (arr f &&& constant c) >>> arr g = arr (\a -> g (f a, c))
+-- >                                  (the fan was kept only for the benefit of
+-- >                                  a switch, and no switch can see it here)
+-- > id >>> n                        = n
+-- > arr f >>> (arr g >>> n)         = arr (g . f) >>> n
+--
+-- written as a decision tree on the two nodes, so that the common case (two
+-- stateful nodes) costs two tests.
+compN f g = case g of
+  NPure gd -> case f of
+    NPure fd -> NPure (fdComp fd gd)
+    _        -> case gd of
+      FDI   -> f
+      FDC c -> NPure (FDC c)
+      FDG _ -> case f of
+        NComp h (NPure fd)         -> NComp h (NPure (fdComp fd gd))
+        NFan (NPure fa) (NPure fc) -> NPure (fdComp (fanFD fa fc) gd)
+        _                          -> NComp f g
+  _        -> case f of
+    NPure FDI -> g
+    NPure fd  -> case g of
+      NComp (NPure gd) h -> NComp (NPure (fdComp fd gd)) h
+      _                  -> NComp f g
+    _         -> NComp f g
 
 -- | @first@, simplified.
 firstN :: Node a b -> Node (a, c) (b, c)
@@ -234,14 +342,14 @@ firstN (NPure FDI)     = NPure FDI
 -- first (arr f) = arr (\(a, c) -> (f a, c))
 firstN (NPure (FDC b)) = NPure (FDG (\ ~(_, c) -> (b, c)))
 firstN (NPure (FDG f)) = NPure (FDG (\ ~(a, c) -> (f a, c)))
-firstN f               = NFirst f
+firstN f               = NPar f idN
 
 -- | @second@, simplified.
 secondN :: Node a b -> Node (c, a) (c, b)
 secondN (NPure FDI)     = NPure FDI
 secondN (NPure (FDC b)) = NPure (FDG (\ ~(c, _) -> (c, b)))
 secondN (NPure (FDG f)) = NPure (FDG (\ ~(c, a) -> (c, f a)))
-secondN f               = NSecond f
+secondN f               = NPar idN f
 
 -- | @(***)@, simplified.
 parN :: Node a b -> Node c d -> Node (a, c) (b, d)
@@ -280,13 +388,29 @@ loopN :: Node (a, c) (b, c) -> Node a b
 loopN (NPure fd) =
   let f = fdFun fd
   in NPure (FDG (\a -> let (b, c) = f (a, c) in b))
-loopN n = NStep (loopStep n)
+-- loop (second d >>> f): the usual shape (loopPre, loopIntegral), kept
+-- apart so that no pair (a, c) is built and taken apart at every step
+loopN (NComp (NPar (NPure FDI) d) f) = NLoop d f
+loopN n = NLoop idN n
 
-loopStep :: Node (a, c) (b, c) -> DTime -> a -> (# Node a b, b #)
-loopStep n dt a =
-  let r = boxStep n dt (a, c)
-      c = case r of Boxed _ (_, c') -> c'
-  in case r of Boxed n' bc -> (# loopN n', fst bc #)
+-- The loop @NLoop d f@ after a step: @loop (second d >>> f)@, simplified.
+loopN2 :: Node c d -> Node (a, d) (b, c) -> Node a b
+loopN2 d@(NPure _) f@(NPure _) = loopN (compN (secondN d) f)
+loopN2 d f                     = NLoop d f
+
+-- The knot: @d@ sees, as its input, the second component of the output
+-- that @f@ is producing at this very step (through a lazy reference to
+-- the step's result); @f@ sees the input and @d@'s output.
+loopStep :: Node c d -> Node (a, d) (b, c) -> DTime -> a -> (# Node a b, b #)
+loopStep d f dt a =
+  let r = case stepN d dt c of
+        (# d', y #) -> case stepN f dt (a, y) of
+          (# f', bc #) -> Loop d' f' bc
+      c = case r of Loop _ _ (_, c') -> c'
+  in case r of Loop d' f' bc -> case loopN2 d' f' of !m -> (# m, fst bc #)
+
+-- The result of a loop's step, in a box (the knot needs a lifted value).
+data Loop c d a b x = Loop !(Node c d) !(Node (a, d) x) x
 
 -- | A node from its first step (which has no time step).
 initN :: (a -> (# Node a b, b #)) -> Node a b
@@ -298,7 +422,7 @@ initN f = NStep (\_ a -> f a)
 mealyN :: (s -> a -> (s, b)) -> s -> Node a b
 mealyN f = go
   where
-    go !s = NStep (\_ a -> case f s a of (!s', b) -> (# go s', b #))
+    go !s = NStep (\_ a -> case f s a of (!s', b) -> case go s' of !n -> (# n, b #))
 {-# INLINE mealyN #-}
 
 ------------------------------------------------------------------------------
@@ -360,9 +484,11 @@ leftN :: Node a b -> Node (Either a c) (Either b c)
 -- left (arr f) = arr (left f)
 leftN (NPure FDI) = NPure FDI
 leftN (NPure fd)  = let f = fdFun fd in NPure (FDG (either (Left . f) Right))
-leftN n           = NStep (\dt e -> case e of
-  Right c -> (# leftN n, Right c #)
-  Left a  -> case stepN n dt a of (# n', b #) -> (# leftN n', Left b #))
+leftN n           = self
+  where
+    self = NStep (\dt e -> case e of
+      Right c -> (# self, Right c #)
+      Left a  -> case stepN n dt a of (# n', b #) -> case leftN n' of !m -> (# m, Left b #))
 
 -- | @fmap f sf = sf >>> arr f@.
 instance Functor (SF a) where

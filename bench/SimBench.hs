@@ -1,0 +1,132 @@
+{-# LANGUAGE Arrows #-}
+-- |
+-- The simulator benchmark: worlds scaled to hold 1, 10, 100 or 1000
+-- simbots at the density of a notes-style world (10 simbots and a few
+-- dozen obstacles in the notes' 10 m square), every simbot running a
+-- wall follower in the style of the notes' @rcFollowLeftWall@ that reads
+-- all four range finders and the animate object tracker, at dt = 0.01.
+module SimBench
+  ( worldSide
+  , benchBounds
+  , benchWorld
+  , benchConfig
+  , benchController
+  , runBench
+  , sharedWorld
+  , worldChecksum
+  , simDtBench
+  ) where
+
+import           Data.List     (foldl', sortOn)
+
+import           AFrob
+import           AFrobRobotSim
+
+-- | The time step of every simulator run.
+simDtBench :: DTime
+simDtBench = 0.01
+
+-- | The side of the square world for @n@ robots: the notes' 10 m for up
+-- to 10 robots, then growing with the area per robot kept at 10 m^2.
+worldSide :: Int -> Double
+worldSide n = max 10 (10 * sqrt (fromIntegral n / 10))
+
+-- | The bounds of the world for @n@ robots, centred on the origin.
+benchBounds :: Int -> Bounds
+benchBounds n = let h = worldSide n / 2 in Bounds (-h) (-h) h h
+
+-- | The settings of a run with @n@ robots.
+benchConfig :: Int -> SimConfig
+benchConfig n = defaultSimConfig { simDt = simDtBench, simBounds = benchBounds n }
+
+-- | The world for @n@ robots: two obstacles (a horizontal or vertical wall
+-- and a block) in every 5 m tile (8 in the 10 m world, 800 in the 100 m
+-- one), and the robots on a jittered lattice, clear of the obstacles and
+-- of each other. Deterministic.
+benchWorld :: Int -> WorldTemplate
+benchWorld n = obstacles ++ take n robots
+  where
+    side  = worldSide n
+    h     = side / 2
+    tiles = max 2 (floor (side / 5)) :: Int
+    tile  = side / fromIntegral tiles
+    obstacles = concat
+      [ [ if even (hash (i * 7 + j * 13)) then OTHWall (Point2 (cx + 0.5 * jx) (cy + 1.2))
+                                          else OTVWall (Point2 (cx + 1.2) (cy + 0.5 * jy))
+        , OTBlock (Point2 (cx - 1.2 + 0.3 * jy) (cy - 1.2 + 0.3 * jx)) ]
+      | i <- [0 .. tiles - 1], j <- [0 .. tiles - 1]
+      , let cx = -h + (fromIntegral i + 0.5) * tile
+            cy = -h + (fromIntegral j + 0.5) * tile
+            jx = unit (i * 31 + j)
+            jy = unit (i + j * 29) ]
+    -- candidate places on a lattice twice as fine as needed, in a
+    -- scrambled order, keeping those clear of the obstacles and the walls
+    k      = ceiling (sqrt (2 * fromIntegral (max 1 n) :: Double)) :: Int
+    sp     = side / fromIntegral k
+    cands  = [ (hash (a * 1009 + b * 9176), Point2 (-h + (fromIntegral a + 0.5) * sp + 0.2 * sp * unit (a * 3 + b))
+                                                  (-h + (fromIntegral b + 0.5) * sp + 0.2 * sp * unit (a + b * 5)))
+             | a <- [0 .. k - 1], b <- [0 .. k - 1] ]
+    clear p@(Point2 x y) = x > -h + 0.4 && x < h - 0.4 && y > -h + 0.4 && y < h - 0.4
+                           && all (\o -> norm (otPos o .-. p) > 1.1) obstacles
+    places = [ p | (_, p) <- sortOn fst cands, clear p ]
+    robots = [ (if even i then OTSimbotA else OTSimbotB) (i `div` 2 + 1) p (2 * pi * unit (i * 17))
+             | (i, p) <- zip [0 :: Int ..] places ]
+
+-- A small deterministic hash, and a number in [0, 1) from it.
+hash :: Int -> Int
+hash x = let y = (x * 2654435761 + 12345) `mod` 4294967296
+         in (y `div` 65536) * 31 + y `mod` 65536
+
+unit :: Int -> Double
+unit x = fromIntegral (hash x `mod` 10007) / 10007
+
+-- | The benchmark controller: follows the wall on its left at 0.5 m
+-- (proportional-derivative on the left range finder, as the notes'
+-- @rcFollowLeftWall@), slows down for what is ahead (front range finder)
+-- and for the nearest robot (the tracker), creeps when boxed in (right
+-- and back range finders), and backs away turning when stuck. Every
+-- reading reaches the wheels, so every sensor is computed at every step
+-- (except when stuck).
+benchController :: SimbotController
+benchController _ = proc sbi -> do
+  let l    = rfLeft sbi
+      f    = rfFront sbi
+      r    = rfRight sbi
+      b    = rfBack sbi
+      near = case aotOtherRobots sbi of
+               (_, _, _, d) : _ -> d
+               []               -> 4
+  dl <- derivative -< l
+  let v     = 0.3
+      kd    = 5
+      kp    = v * kd * kd / 4
+      omega = kp * (l - 0.5) + kd * dl
+      away  = if f < 0.6 then -0.6 else 0
+      speed = v * min 1 f * min 1 (near / 1.5) + 0.02 * min 1 (r + b)
+      stuck = rsIsStuck sbi
+  returnA -< mrFinalize (if stuck then ddVelTR (-0.1) 0.6
+                                  else ddVelTR speed (max (-0.6) (min 0.6 (omega + away))))
+
+-- | Run @n@ robots for @steps@ steps and return a checksum of every
+-- robot's position at every step (so that every step is computed). The
+-- worlds of the benchmark sizes are built once ('sharedWorld'), so that a
+-- timed run is the simulation (including its validation of the world),
+-- not the making of the world.
+runBench :: Int -> Int -> Double
+runBench n steps =
+  foldl' (\acc ws -> foldl' (\a r -> let Point2 x y = robotPos r in a + x + y) acc (wsRobots ws)) 0
+         (take steps (simulateWith (benchConfig n) (sharedWorld n) benchController benchController))
+
+-- | 'benchWorld', shared between runs for 1, 10, 100 and 1000 robots.
+sharedWorld :: Int -> WorldTemplate
+sharedWorld n = case lookup n sharedWorlds of
+  Just w  -> w
+  Nothing -> benchWorld n
+
+sharedWorlds :: [(Int, WorldTemplate)]
+sharedWorlds = [ (k, benchWorld k) | k <- [1, 10, 100, 1000] ]
+{-# NOINLINE sharedWorlds #-}
+
+-- | A number that depends on every object of 'sharedWorld' (to build it).
+worldChecksum :: Int -> Double
+worldChecksum n = foldl' (\acc o -> let Point2 x y = otPos o in acc + x + y) 0 (sharedWorld n)

@@ -1,0 +1,422 @@
+{-# LANGUAGE BangPatterns  #-}
+{-# LANGUAGE MagicHash     #-}
+{-# LANGUAGE UnboxedTuples #-}
+-- |
+-- Module      : AFrobRobotSim.SpatialIndex
+-- Description : Uniform grids over the world, so that collision tests and
+--               sensors only look at what is near.
+--
+-- Two indexes, both a uniform grid of square cells over a rectangular
+-- /domain/ (the world and its boundary walls), stored as flat unboxed
+-- arrays (each cell's items contiguous, \"compressed sparse rows\"):
+--
+-- * a 'BoxIndex' of the static obstacles (built once per world), where
+--   each box is listed in every cell its bounding box overlaps;
+-- * a 'PointIndex' of points (the centres of robots or balls, built once
+--   per step), each listed in the cell that contains it.
+--
+-- A query names a rectangle and visits every item listed in a cell the
+-- rectangle overlaps: a superset of the items whose shape overlaps the
+-- rectangle. So a caller that asks for a rectangle containing every place
+-- where an item could matter, and then applies its exact test to what it
+-- is given, gets exactly the answer of testing every item. A box may be
+-- visited more than once (once per cell); a point is visited once.
+--
+-- Coordinates outside the domain are clamped to the border cells, which
+-- keeps every query a superset (clamping is monotone). A query rectangle
+-- that is not finite visits every item, and items whose coordinates are
+-- not finite are visited by every query, so that non-finite numbers give
+-- what testing every item would give.
+module AFrobRobotSim.SpatialIndex
+  ( -- * Grids
+    Grid
+  , gridFor
+  , finite
+  , gridCellSize
+  , gridCells
+    -- * Static boxes
+  , BoxIndex
+  , boxIndex
+  , boxIndexGrid
+  , boxIndexCount
+  , boxAt
+  , foldBoxesIn
+    -- * Points
+  , PointIndex
+  , pointIndex
+  , pointIndexCount
+  , pointX
+  , pointY
+  , foldPointsIn
+  , foldPointsInM
+    -- * Mutable unboxed arrays of numbers (for callers that move points)
+  , MDblArr
+  , newDblArr
+  , readD
+  , writeD
+  ) where
+
+import           Control.Monad.ST (ST, runST)
+import           GHC.Arr          (Array, listArray, unsafeAt)
+import           GHC.Exts
+import           GHC.ST           (ST (..))
+
+import           AFrobRobotSim.Shapes (Box (..))
+
+------------------------------------------------------------------------------
+-- Grids
+
+-- | A uniform grid: origin, cell size, number of cells along x and y.
+data Grid = Grid
+  { gX0 :: {-# UNPACK #-} !Double
+  , gY0 :: {-# UNPACK #-} !Double
+  , gCs :: {-# UNPACK #-} !Double
+  , gNx :: {-# UNPACK #-} !Int
+  , gNy :: {-# UNPACK #-} !Int
+  } deriving (Show)
+
+-- | @gridFor x0 y0 x1 y1 n@: a grid over the rectangle for about @n@
+-- items spread over it: cells of about the area per item, at least 1 m
+-- and at most 8 m across, at most 2^16 cells. A degenerate or non-finite
+-- rectangle, or @n <= 4@ (where looking at everything is as fast), gets
+-- a single cell.
+gridFor :: Double -> Double -> Double -> Double -> Int -> Grid
+gridFor x0 y0 x1 y1 n
+  | n <= 4 || not (finite w && finite h && finite x0 && finite y0) || w <= 0 || h <= 0
+  = Grid x0' y0' (1 / 0) 1 1
+  | otherwise = Grid x0 y0 cs nx ny
+  where
+    w  = x1 - x0
+    h  = y1 - y0
+    x0' = if finite x0 then x0 else 0
+    y0' = if finite y0 then y0 else 0
+    cs0 = max 1 (min 8 (sqrt (w * h / fromIntegral n)))
+    cs  = max cs0 (sqrt (w * h / 65536))
+    nx  = max 1 (ceiling (w / cs))
+    ny  = max 1 (ceiling (h / cs))
+
+-- | The cell size of a grid (infinite for a single-cell grid).
+gridCellSize :: Grid -> Double
+gridCellSize = gCs
+
+-- | The number of cells of a grid.
+gridCells :: Grid -> Int
+gridCells g = gNx g * gNy g
+
+-- | Is a number finite (neither NaN nor infinite)? @v - v@ is 0 exactly
+-- for finite @v@ and NaN otherwise (cheaper than 'isNaN' and
+-- 'isInfinite', which are foreign calls).
+finite :: Double -> Bool
+finite v = v - v == 0
+{-# INLINE finite #-}
+
+-- The column (or row) of a coordinate, clamped to the grid.
+cellOf :: Double -> Double -> Int -> Double -> Int
+cellOf o cs n v =
+  let c = (v - o) / cs
+  in if c >= 1 then (if c >= fromIntegral n then n - 1 else truncate c)
+     else 0
+{-# INLINE cellOf #-}
+
+------------------------------------------------------------------------------
+-- Unboxed arrays (just what is needed here)
+
+data IntArr = IntArr ByteArray#
+data DblArr = DblArr ByteArray#
+data MIntArr s = MIntArr (MutableByteArray# s)
+-- | A mutable array of 'Double's.
+data MDblArr s = MDblArr (MutableByteArray# s)
+
+newIntArr :: Int -> Int -> ST s (MIntArr s)
+newIntArr (I# n) (I# v) = ST $ \s -> case newByteArray# (n *# 8#) s of
+  (# s1, a #) -> case setIntArray a 0# n v s1 of s2 -> (# s2, MIntArr a #)
+  where
+    setIntArray a i m x s
+      | isTrue# (i >=# m) = s
+      | otherwise         = setIntArray a (i +# 1#) m x (writeIntArray# a i x s)
+
+-- | A new array of @n@ numbers (their values unspecified).
+newDblArr :: Int -> ST s (MDblArr s)
+newDblArr (I# n) = ST $ \s -> case newByteArray# (n *# 8#) s of
+  (# s1, a #) -> (# s1, MDblArr a #)
+
+-- | Read and write an element (no bounds checks).
+readD :: MDblArr s -> Int -> ST s Double
+readD (MDblArr a) (I# i) = ST $ \s -> case readDoubleArray# a i s of (# s1, x #) -> (# s1, D# x #)
+{-# INLINE readD #-}
+
+readI :: MIntArr s -> Int -> ST s Int
+readI (MIntArr a) (I# i) = ST $ \s -> case readIntArray# a i s of (# s1, x #) -> (# s1, I# x #)
+{-# INLINE readI #-}
+
+writeI :: MIntArr s -> Int -> Int -> ST s ()
+writeI (MIntArr a) (I# i) (I# x) = ST $ \s -> case writeIntArray# a i x s of s1 -> (# s1, () #)
+{-# INLINE writeI #-}
+
+writeD :: MDblArr s -> Int -> Double -> ST s ()
+writeD (MDblArr a) (I# i) (D# x) = ST $ \s -> case writeDoubleArray# a i x s of s1 -> (# s1, () #)
+{-# INLINE writeD #-}
+
+freezeI :: MIntArr s -> ST s IntArr
+freezeI (MIntArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, IntArr b #)
+
+freezeD :: MDblArr s -> ST s DblArr
+freezeD (MDblArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, DblArr b #)
+
+indexI :: IntArr -> Int -> Int
+indexI (IntArr a) (I# i) = I# (indexIntArray# a i)
+{-# INLINE indexI #-}
+
+indexD :: DblArr -> Int -> Double
+indexD (DblArr a) (I# i) = D# (indexDoubleArray# a i)
+{-# INLINE indexD #-}
+
+-- Fill the start offsets (an exclusive prefix sum of the counts) and
+-- return the total.
+prefixSums :: MIntArr s -> Int -> ST s Int
+prefixSums starts cells = go 0 0
+  where
+    go !i !acc
+      | i > cells = pure acc
+      | otherwise = do
+          c <- readI starts i
+          writeI starts i acc
+          go (i + 1) (acc + c)
+
+------------------------------------------------------------------------------
+-- Static boxes
+
+-- | The static obstacles on a grid. Every box keeps its position in the
+-- list the index was built from (0 for the first).
+data BoxIndex = BoxIndex
+  { biGrid   :: !Grid
+  , biBoxes  :: !(Array Int Box)
+  , biCount  :: {-# UNPACK #-} !Int
+  , biStarts :: !IntArr   -- cell c lists biItems [starts c .. starts (c + 1) - 1]
+  , biItems  :: !IntArr
+  , biWild   :: [Int]     -- boxes with non-finite coordinates (visited always)
+  }
+
+-- | Index a list of boxes: the domain is their bounding box.
+boxIndex :: [Box] -> BoxIndex
+boxIndex boxes = runST $ do
+  let cells = gridCells grid
+  starts <- newIntArr (cells + 1) 0
+  -- count
+  mapM_ (\b -> forCells b (\c -> readI starts c >>= writeI starts c . (+ 1))) tame
+  total <- prefixSums starts cells
+  items <- newIntArr (max 1 total) 0
+  fill  <- newIntArr (cells + 1) 0
+  mapM_ (\(i, b) -> forCells b (\c -> do
+            s0 <- readI starts c
+            k  <- readI fill c
+            writeI items (s0 + k) i
+            writeI fill c (k + 1))) (filter (tameBox . snd) indexed)
+  st <- freezeI starts
+  it <- freezeI items
+  pure (BoxIndex grid (listArray (0, n - 1) boxes) n st it [ i | (i, b) <- indexed, not (tameBox b) ])
+  where
+    n       = length boxes
+    indexed = zip [0 ..] boxes
+    tame    = filter tameBox boxes
+    tameBox (Box a b c d) = finite a && finite b && finite c && finite d
+    grid    = case tame of
+      [] -> gridFor 0 0 0 0 0
+      _  -> gridFor (minimum (map boxMinX tame)) (minimum (map boxMinY tame))
+                    (maximum (map boxMaxX tame)) (maximum (map boxMaxY tame)) (length tame)
+    forCells (Box a b c d) k =
+      let Grid gx gy cs nx ny = grid
+          cx0 = cellOf gx cs nx a
+          cx1 = cellOf gx cs nx c
+          cy0 = cellOf gy cs ny b
+          cy1 = cellOf gy cs ny d
+      in mapM_ k [ cy * nx + cx | cy <- [cy0 .. cy1], cx <- [cx0 .. cx1] ]
+
+-- | The grid of a box index.
+boxIndexGrid :: BoxIndex -> Grid
+boxIndexGrid = biGrid
+
+-- | How many boxes are indexed.
+boxIndexCount :: BoxIndex -> Int
+boxIndexCount = biCount
+
+-- | The box at a position of the original list.
+boxAt :: BoxIndex -> Int -> Box
+boxAt bi i = unsafeAt (biBoxes bi) i
+{-# INLINE boxAt #-}
+
+-- | @foldBoxesIn bi x0 y0 x1 y1 f z@ folds @f@ (strictly) over the boxes
+-- that overlap the rectangle @[x0, x1] x [y0, y1]@ (closed), giving it the
+-- box's position in the original list and the box, possibly more than
+-- once (once per cell it is listed in). A query that is not finite visits
+-- every box, and boxes with non-finite coordinates are always visited.
+foldBoxesIn :: BoxIndex -> Double -> Double -> Double -> Double
+            -> (a -> Int -> Box -> a) -> a -> a
+foldBoxesIn bi x0 y0 x1 y1 f z0
+  | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
+  | otherwise = wild (biWild bi) (rows cy0 z0)
+  where
+    Grid gx gy cs nx ny = biGrid bi
+    cx0 = cellOf gx cs nx x0
+    cx1 = cellOf gx cs nx x1
+    cy0 = cellOf gy cs ny y0
+    cy1 = cellOf gy cs ny y1
+    starts = biStarts bi
+    items  = biItems bi
+    rows !cy !z
+      | cy > cy1  = z
+      | otherwise = rows (cy + 1) (cols cy cx0 z)
+    cols !cy !cx !z
+      | cx > cx1  = z
+      | otherwise = let c = cy * nx + cx
+                    in cols cy (cx + 1) (inCell (indexI starts c) (indexI starts (c + 1)) z)
+    inCell !k !e !z
+      | k >= e    = z
+      | otherwise = let i = indexI items k
+                        b = boxAt bi i
+                    in inCell (k + 1) e (if meets b then f z i b else z)
+    -- only the boxes that meet the rectangle (a cheap test that saves the
+    -- caller's exact one)
+    meets (Box a b c d) = a <= x1 && c >= x0 && b <= y1 && d >= y0
+    wild [] !z       = z
+    wild (i : is) !z = wild is (f z i (boxAt bi i))
+    goAll !i !z
+      | i >= biCount bi = z
+      | otherwise       = goAll (i + 1) (f z i (boxAt bi i))
+{-# INLINE foldBoxesIn #-}
+
+------------------------------------------------------------------------------
+-- Points
+
+-- | Points on a grid, each keeping its position in the list the index was
+-- built from (0 for the first).
+data PointIndex = PointIndex
+  { piGrid   :: !Grid
+  , piCount  :: {-# UNPACK #-} !Int
+  , piXs     :: !DblArr
+  , piYs     :: !DblArr
+  , piStarts :: !IntArr
+  , piItems  :: !IntArr
+  , piWild   :: [Int]     -- points with non-finite coordinates (visited always)
+  }
+
+-- | Index the points @(x, y)@ of a list on a grid over the given domain
+-- (@x0 y0 x1 y1@; points outside it go to the border cells).
+pointIndex :: Double -> Double -> Double -> Double -> [(Double, Double)] -> PointIndex
+pointIndex dx0 dy0 dx1 dy1 pts = runST $ do
+  let cells = gridCells grid
+      Grid gx gy cs nx ny = grid
+      cellAt x y = cellOf gy cs ny y * nx + cellOf gx cs nx x
+  xs <- newDblArr (max 1 n)
+  ys <- newDblArr (max 1 n)
+  starts <- newIntArr (cells + 1) 0
+  let count !_ [] = pure ()
+      count !i ((x, y) : rest) = do
+        writeD xs i x
+        writeD ys i y
+        if finite x && finite y
+          then do let c = cellAt x y
+                  readI starts c >>= writeI starts c . (+ 1)
+          else pure ()
+        count (i + 1) rest
+  count 0 pts
+  total <- prefixSums starts cells
+  items <- newIntArr (max 1 total) 0
+  fill  <- newIntArr (cells + 1) 0
+  let place !_ [] = pure ()
+      place !i ((x, y) : rest) = do
+        if finite x && finite y
+          then do let c = cellAt x y
+                  s0 <- readI starts c
+                  k  <- readI fill c
+                  writeI items (s0 + k) i
+                  writeI fill c (k + 1)
+          else pure ()
+        place (i + 1) rest
+  place 0 pts
+  xs' <- freezeD xs
+  ys' <- freezeD ys
+  st  <- freezeI starts
+  it  <- freezeI items
+  pure (PointIndex grid n xs' ys' st it [ i | (i, (x, y)) <- zip [0 ..] pts, not (finite x && finite y) ])
+  where
+    n    = length pts
+    grid = gridFor dx0 dy0 dx1 dy1 n
+
+-- | How many points are indexed.
+pointIndexCount :: PointIndex -> Int
+pointIndexCount = piCount
+
+-- | The coordinates a point was indexed with.
+pointX, pointY :: PointIndex -> Int -> Double
+pointX p i = indexD (piXs p) i
+pointY p i = indexD (piYs p) i
+{-# INLINE pointX #-}
+{-# INLINE pointY #-}
+
+-- | @foldPointsIn p x0 y0 x1 y1 f z@ folds @f@ (strictly) over the points
+-- (as indexed) that lie in the rectangle @[x0, x1] x [y0, y1]@ (closed),
+-- giving it the point's position in the original list, each once. A query
+-- that is not finite visits every point, and points with non-finite
+-- coordinates are always visited.
+foldPointsIn :: PointIndex -> Double -> Double -> Double -> Double
+             -> (a -> Int -> a) -> a -> a
+foldPointsIn p x0 y0 x1 y1 f z0
+  | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
+  | otherwise = wild (piWild p) (rows cy0 z0)
+  where
+    Grid gx gy cs nx ny = piGrid p
+    cx0 = cellOf gx cs nx x0
+    cx1 = cellOf gx cs nx x1
+    cy0 = cellOf gy cs ny y0
+    cy1 = cellOf gy cs ny y1
+    starts = piStarts p
+    items  = piItems p
+    rows !cy !z
+      | cy > cy1  = z
+      | otherwise = rows (cy + 1) (inCell (indexI starts (cy * nx + cx0)) (indexI starts (cy * nx + cx1 + 1)) z)
+    inCell !k !e !z
+      | k >= e    = z
+      | otherwise = let i = indexI items k
+                    in inCell (k + 1) e (if inside i then f z i else z)
+    inside i = let x = indexD (piXs p) i
+                   y = indexD (piYs p) i
+               in x >= x0 && x <= x1 && y >= y0 && y <= y1
+    wild [] !z       = z
+    wild (i : is) !z = wild is (f z i)
+    goAll !i !z
+      | i >= piCount p = z
+      | otherwise      = goAll (i + 1) (f z i)
+{-# INLINE foldPointsIn #-}
+
+-- | 'foldPointsIn' with an action in 'ST' at every point.
+foldPointsInM :: PointIndex -> Double -> Double -> Double -> Double
+              -> (a -> Int -> ST s a) -> a -> ST s a
+foldPointsInM p x0 y0 x1 y1 f z0
+  | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
+  | otherwise = rows cy0 z0 >>= wild (piWild p)
+  where
+    Grid gx gy cs nx ny = piGrid p
+    cx0 = cellOf gx cs nx x0
+    cx1 = cellOf gx cs nx x1
+    cy0 = cellOf gy cs ny y0
+    cy1 = cellOf gy cs ny y1
+    starts = piStarts p
+    items  = piItems p
+    rows !cy !z
+      | cy > cy1  = pure z
+      | otherwise = inCell (indexI starts (cy * nx + cx0)) (indexI starts (cy * nx + cx1 + 1)) z
+                      >>= rows (cy + 1)
+    inCell !k !e !z
+      | k >= e    = pure z
+      | otherwise = let i = indexI items k
+                    in (if inside i then f z i else pure z) >>= inCell (k + 1) e
+    inside i = let x = indexD (piXs p) i
+                   y = indexD (piYs p) i
+               in x >= x0 && x <= x1 && y >= y0 && y <= y1
+    wild [] !z       = pure z
+    wild (i : is) !z = f z i >>= wild is
+    goAll !i !z
+      | i >= piCount p = pure z
+      | otherwise      = f z i >>= goAll (i + 1)
+{-# INLINE foldPointsInM #-}

@@ -1,0 +1,303 @@
+-- | The spatial index ("AFrobRobotSim.SpatialIndex") finds exactly what a
+-- scan of everything finds, and the physics and sensors that use it
+-- ("AFrobRobotSim.Physics", "AFrobRobotSim.Sensors") compute, bit for bit,
+-- what the straightforward all-pairs versions below compute. The reference
+-- versions are the simulator's original code, kept here as the
+-- specification.
+module AFrobRobotSim.SpatialIndexSpec (spec) where
+
+import           Data.List             (nub, sort, sortOn)
+import           Test.Hspec
+import           Test.QuickCheck
+
+import           AFRP.Geometry
+import           AFrob.Angle           (normalizeAngle, normalizeHeading)
+import           AFrob.Dimensions      (Position2, RobotId, RobotType)
+import           AFrob.RobotIO         (BatteryStatus (..))
+import           AFrobRobotSim.Physics
+import           AFrobRobotSim.Robot
+import           AFrobRobotSim.Sensors
+import           AFrobRobotSim.Shapes
+import           AFrobRobotSim.SpatialIndex
+import           AFrobRobotSim.World
+
+------------------------------------------------------------------------------
+-- Generators
+
+-- | A world: a square of side 8 to 40 m, walls and blocks in it (0 to 60),
+-- and its boundary boxes (as 'arenaOf' builds them).
+data World = World Bounds [ObjectTemplate]
+
+instance Show World where
+  show (World b os) = show b ++ " " ++ show os
+
+genWorld :: Gen World
+genWorld = do
+  side <- elements [8, 10, 20, 40]
+  let h = side / 2
+  k <- chooseInt (0, 60)
+  obs <- vectorOf k $ do
+    x <- choose (-h + 0.6, h - 0.6)
+    y <- choose (-h + 0.6, h - 0.6)
+    elements [OTBlock (Point2 x y), OTVWall (Point2 x y), OTHWall (Point2 x y)]
+  pure (World (Bounds (-h) (-h) h h) obs)
+
+arenaFor :: World -> Arena
+arenaFor (World b os) = arenaOf b os
+
+halfSide :: World -> Double
+halfSide (World (Bounds _ _ h _) _) = h
+
+genRobot :: Double -> Gen Robot
+genRobot h = do
+  k  <- elements [SimbotA, SimbotB]
+  i  <- chooseInt (1, 99)
+  x  <- choose (-h, h)
+  y  <- choose (-h, h)
+  th <- choose (-4, 4)
+  v  <- choose (-2, 2)
+  st <- arbitrary
+  c  <- elements [1, 0.5, 0.2, 0.05]
+  pure (Robot k i (Point2 x y) th v st c)
+
+-- | Robots, often crowded (so that they touch and overlap).
+genRobots :: Double -> Gen [Robot]
+genRobots h = do
+  n <- oneof [chooseInt (0, 12), chooseInt (17, 60)]
+  crowd <- elements [h, min h 2, 1]
+  vectorOf n (genRobot crowd)
+
+genCommand :: Gen DriveCommand
+genCommand = oneof
+  [ pure DriveBrake
+  , DriveWheels <$> choose (-3, 3) <*> choose (-3, 3)
+  , DriveTR <$> choose (-3, 3) <*> choose (-8, 8)
+  ]
+
+genBall :: Double -> Gen Ball
+genBall h = do
+  x  <- choose (-h, h)
+  y  <- choose (-h, h)
+  vx <- choose (-4, 4)
+  vy <- choose (-4, 4)
+  pure (Ball (Point2 x y) (Vector2 vx vy))
+
+genBalls :: Double -> Gen [Ball]
+genBalls h = do
+  n <- oneof [chooseInt (0, 6), chooseInt (17, 40)]
+  crowd <- elements [h, 1, 0.5]
+  vectorOf n (genBall crowd)
+
+genDt :: Gen Double
+genDt = elements [0.01, 0.05, 0.3, 1, 4]
+
+------------------------------------------------------------------------------
+-- The reference: the original all-pairs code
+
+robotRadius', ballRadius' :: Double
+robotRadius' = simbotDiameter / 2
+ballRadius'  = ballDiameter / 2
+
+refStepRobots :: Double -> Arena -> [(Robot, DriveCommand)] -> [Robot]
+refStepRobots dt arena cmds = go [] cmds
+  where
+    go done [] = reverse done
+    go done ((r, c) : rest) =
+      let others = done ++ map fst rest
+          r'     = refStepRobot dt arena others r c
+      in r' `seq` go (r' : done) rest
+
+refStepRobot :: Double -> Arena -> [Robot] -> Robot -> DriveCommand -> Robot
+refStepRobot dt arena others r cmd =
+  let k       = rKind r
+      l       = kindWheelBase k
+      status  = batteryStatusOf (rCharge r)
+      wsMax   = kindWSMax k * (if status == BSCritical then 0.5 else 1)
+      (vl, vr) = wheelCommand l wsMax cmd
+      vCmd    = (vl + vr) / 2
+      dv      = kindAccMax k * dt
+      v0      = rSpeed r
+      v1      = v0 + max (-dv) (min dv (vCmd - v0))
+      wLim    = max 0 (2 * (wsMax - abs v1) / l)
+      w       = max (-wLim) (min wLim ((vr - vl) / l))
+      th0     = rHeading r
+      th1     = th0 + w * dt
+      vMean   = (v0 + v1) / 2
+      disp    | abs (w * dt) < 1e-9 = vector2Polar (vMean * dt) th0
+              | otherwise           = vector2 (vMean / w * (sin th1 - sin th0))
+                                              (vMean / w * (cos th0 - cos th1))
+      p0      = rPos r
+      contact = refFirstContact p0 disp arena others
+      (p1, v1', hit) = case contact of
+        Nothing -> (p0 .+^ disp, v1, False)
+        Just s  ->
+          let len = norm disp
+              s'  = max 0 (s - 1e-9 / max len 1e-300)
+          in (p0 .+^ (s' *^ disp), 0, True)
+      moved   = p1 /= p0
+      effort  = (abs (v1 - w * l / 2) + abs (v1 + w * l / 2)) / (2 * kindWSMax k)
+      charge1 = max 0 (rCharge r - dt * (0.0005 + 0.003 * effort))
+  in r { rPos = p1, rHeading = normalizeHeading th1, rSpeed = v1'
+       , rStuck = hit || (rStuck r && not moved), rCharge = charge1 }
+
+refFirstContact :: Position2 -> Vector2 Double -> Arena -> [Robot] -> Maybe Double
+refFirstContact p d arena others
+  | d == zeroVector = Nothing
+  | otherwise       = foldr earliest Nothing (boxHits ++ robotHits)
+  where
+    boxHits   = [ fst <$> sweepCircleBox p robotRadius' d b | b <- arenaBoxes arena ]
+    robotHits = [ fst <$> sweepCircleCircle p robotRadius' d (rPos o) robotRadius' | o <- others ]
+    earliest Nothing  acc      = acc
+    earliest (Just s) Nothing  = Just s
+    earliest (Just s) (Just t) = Just (min s t)
+
+refStepBalls :: Double -> Arena -> [Robot] -> [Ball] -> [Ball]
+refStepBalls dt arena robots balls = refResolvePairs (map (refStepBall dt arena robots) balls)
+
+refStepBall :: Double -> Arena -> [Robot] -> Ball -> Ball
+refStepBall dt arena robots b0 =
+  let b1 = foldl pushOut b0 robots
+      v  = slowDown (bVel b1)
+      d  = (dt *^ v)
+      hits = [ (s, n, zeroVector) | bx <- arenaBoxes arena, Just (s, n) <- [sweepCircleBox (bPos b1) ballRadius' d bx] ]
+          ++ [ (s, n, robotVelocity r) | r <- robots, Just (s, n) <- [sweepCircleCircle (bPos b1) ballRadius' d (rPos r) robotRadius'] ]
+  in case hits of
+       [] -> b1 { bPos = bPos b1 .+^ d, bVel = v }
+       _  -> let (s, n, vo) = minimumOn (\(x, _, _) -> x) hits
+                 p  = bPos b1 .+^ (max 0 (s - 1e-9) *^ d)
+             in b1 { bPos = p, bVel = vo ^+^ bounce n (v ^-^ vo) }
+  where
+    slowDown :: Vector2 Double -> Vector2 Double
+    slowDown v = let sp = norm v
+                     sp' = max 0 (sp - ballFriction * dt)
+                 in if sp <= 0 then zeroVector else (sp' / sp) *^ v
+    pushOut b r = case circleCirclePenetration (bPos b) ballRadius' (rPos r) robotRadius' of
+      Nothing       -> b
+      Just (depth, n) ->
+        let vr  = robotVelocity r
+            rel = bVel b ^-^ vr
+            v'  = if rel `dot` n < 0 then vr ^+^ bounce n rel else bVel b
+            push = (depth + 1e-9) *^ n
+            s = minimum (1 : [ s' | bx <- arenaBoxes arena, Just (s', _) <- [sweepCircleBox (bPos b) ballRadius' push bx] ])
+            p' = if s >= 1 then bPos b .+^ push else bPos b .+^ (max 0 (s - 1e-9) *^ push)
+        in b { bPos = p', bVel = v' }
+    bounce :: Vector2 Double -> Vector2 Double -> Vector2 Double
+    bounce n rel = let rn = (rel `dot` n) *^ n
+                   in (rel ^-^ rn) ^-^ (ballRestitution *^ rn)
+    minimumOn f = foldr1 (\x y -> if f x <= f y then x else y)
+
+refResolvePairs :: [Ball] -> [Ball]
+refResolvePairs bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 1 .. n - 1] ]
+  where
+    n = length bs0
+    resolve bs (i, j) =
+      let bi = bs !! i
+          bj = bs !! j
+      in case circleCirclePenetration (bPos bi) ballRadius' (bPos bj) ballRadius' of
+           Nothing -> bs
+           Just (depth, nrm) ->
+             let relN = (bVel bi ^-^ bVel bj) `dot` nrm
+                 half = (depth / 2 + 1e-9) *^ nrm
+                 (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
+                          | otherwise = (bVel bi, bVel bj)
+                 bi' = Ball (bPos bi .+^ half) vi
+                 bj' = Ball (bPos bj .-^ half) vj
+             in [ if k == i then bi' else if k == j then bj' else b | (k, b) <- zip [0 ..] bs ]
+
+refRange :: Arena -> [Robot] -> Int -> Double -> Double
+refRange arena robots i a
+  | isNaN a || isInfinite a = rangeFinderMax
+  | otherwise = max 0 (min rangeFinderMax (nearest - robotRadius'))
+  where
+    me      = robots !! i
+    p       = rPos me
+    others  = [ o | (j, o) <- zip [0 :: Int ..] robots, j /= i ]
+    dir     = vector2Polar 1 (rHeading me + a)
+    hits    = [ t | b <- arenaBoxes arena, Just t <- [rayBox p dir b] ]
+           ++ [ t | o <- others, Just t <- [rayCircle p dir (rPos o) robotRadius'] ]
+    nearest = minimum (rangeFinderMax + robotRadius' : hits)
+
+refTracker :: [Robot] -> [Ball] -> Int -> ([(RobotType, RobotId, Double, Double)], [(Double, Double)])
+refTracker robots balls i =
+  ( [ (kindType (rKind o), rId o, a, d)
+    | (o, (a, d)) <- sortOn (snd . snd) [ (o, polar (rPos o)) | o <- others ]
+    , d <= trackerRange ]
+  , sortOn snd [ (a, d) | b <- balls, let (a, d) = polar (bPos b), d <= trackerRange ] )
+  where
+    me     = robots !! i
+    p      = rPos me
+    others = [ o | (j, o) <- zip [0 :: Int ..] robots, j /= i ]
+    polar q = let (d, th) = vector2RhoTheta (q .-. p)
+              in (normalizeAngle (th - rHeading me), d)
+
+------------------------------------------------------------------------------
+
+spec :: Spec
+spec = do
+  describe "foldBoxesIn" $
+    it "visits exactly the boxes that meet the rectangle (each at least once)" $
+      property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
+        let Arena boxes = arenaFor w
+            bi = boxIndex boxes
+            got = nub (sort (foldBoxesIn bi x0 y0 x1 y1 (\acc k _ -> k : acc) []))
+            want = [ k | (k, Box a b c d) <- zip [0 ..] boxes, a <= x1, c >= x0, b <= y1, d >= y0 ]
+        in got === want
+
+  describe "foldPointsIn" $
+    it "visits exactly the points in the rectangle, once each" $
+      property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
+        forAll (genRobots (halfSide w)) $ \rs ->
+          let h = halfSide w
+              pts = [ (x, y) | Robot { rPos = Point2 x y } <- rs ]
+              pix = pointIndex (-h) (-h) h h pts
+              got = sort (foldPointsIn pix x0 y0 x1 y1 (flip (:)) [])
+              want = [ k | (k, (x, y)) <- zip [0 ..] pts, x >= x0, x <= x1, y >= y0, y <= y1 ]
+          in got === want
+
+  describe "stepRobots" $
+    it "moves the robots exactly as testing every box and every other robot does" $
+      property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
+        forAll (genRobots (halfSide w)) $ \rs -> forAll (vectorOf (length rs) genCommand) $ \cs ->
+          let arena = arenaFor w
+              cmds = zip rs cs
+          in stepRobots dt arena cmds === refStepRobots dt arena cmds
+
+  describe "stepBalls" $
+    it "moves the balls exactly as testing every box, robot and pair of balls does" $
+      property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
+        forAll (genRobots (halfSide w)) $ \rs -> forAll (genBalls (halfSide w)) $ \bs ->
+          let arena = arenaFor w
+          in stepBalls dt arena rs bs === refStepBalls dt arena rs bs
+
+  describe "senseRobot" $ do
+    it "reads every range finder exactly as casting at everything does" $
+      property $ forAll genWorld $ \w -> forAll (genRobots (halfSide w)) $ \rs ->
+        not (null rs) ==>
+        forAll (chooseInt (0, length rs - 1)) $ \i ->
+        forAll (listOf1 (oneof [choose (-7, 7), elements [0, pi / 2, pi, -pi / 2, 0 / 0, 1 / 0]])) $ \as ->
+          let arena = arenaFor w
+              si = senseRobot (SenseContext arena rs []) i (origin, 0) Nothing
+          in map (siRange si) as === map (refRange arena rs i) as
+    it "tracks exactly the robots and balls in range, nearest first" $
+      property $ forAll genWorld $ \w -> forAll (genRobots (halfSide w)) $ \rs ->
+        forAll (genBalls (halfSide w)) $ \bs ->
+        not (null rs) ==>
+        forAll (chooseInt (0, length rs - 1)) $ \i ->
+          let arena = arenaFor w
+              si = senseRobot (SenseContext arena rs bs) i (origin, 0) Nothing
+          in (siRobots si, siBalls si) === refTracker rs bs i
+    it "reads the same as rangeReading given the other robots' centres" $
+      property $ forAll genWorld $ \w -> forAll (genRobots (halfSide w)) $ \rs ->
+        not (null rs) ==>
+        forAll (chooseInt (0, length rs - 1)) $ \i -> forAll (choose (-7, 7)) $ \a ->
+          let arena = arenaFor w
+              others = [ rPos o | (j, o) <- zip [0 ..] rs, j /= i ]
+              me = rs !! i
+          in rangeReading arena others (rPos me) (rHeading me) a === refRange arena rs i a
+  where
+    genRect h = do
+      x0 <- choose (-h - 2, h + 2)
+      y0 <- choose (-h - 2, h + 2)
+      wd <- choose (0, h)
+      ht <- choose (0, h)
+      pure (x0, y0, x0 + wd, y0 + ht)
