@@ -153,6 +153,7 @@ writeI :: MIntArr s -> Int -> Int -> ST s ()
 writeI (MIntArr a) (I# i) (I# x) = ST $ \s -> case writeIntArray# a i x s of s1 -> (# s1, () #)
 {-# INLINE writeI #-}
 
+-- | Write a Double element (no bounds checks).
 writeD :: MDblArr s -> Int -> Double -> ST s ()
 writeD (MDblArr a) (I# i) (D# x) = ST $ \s -> case writeDoubleArray# a i x s of s1 -> (# s1, () #)
 {-# INLINE writeD #-}
