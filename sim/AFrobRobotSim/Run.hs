@@ -22,7 +22,7 @@ module AFrobRobotSim.Run
   , runSimWith
   ) where
 
-import           Control.Exception         (AsyncException (UserInterrupt), IOException, catch,
+import           Control.Exception         (AsyncException (UserInterrupt), Exception (..), IOException, catch,
                                             evaluate, throwIO, try)
 import           Control.Monad             (forM_, unless, when)
 import qualified Data.ByteString           as BS
@@ -141,7 +141,7 @@ simulateRun prog opts world rcA rcB = do
                      _             -> throwIO e)
                  `catch` \(ce :: ControllerError) -> do
                    when tty (hPutStr stderr "\r")
-                   failWith 1 (prog ++ ": " ++ displayControllerError ce)
+                   failWith 1 (prog ++ ": " ++ displayException ce)
   when tty (hPutStr stderr "\r                         \r")
   p <- readIORef ref
   -- An interrupted write leaves at most the next frame's temporary file.
@@ -166,11 +166,6 @@ simulateRun prog opts world rcA rcB = do
 forceState :: WorldState -> ()
 forceState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsBalls s)
                `seq` foldl' (flip seq) () (map length (wsMessages s))
-
-displayControllerError :: ControllerError -> String
-displayControllerError = displayExceptionCE
-  where displayExceptionCE ce = printf "the controller of %s %d failed at t = %.3f s: %s"
-          (ceRobotType ce) (ceRobotId ce) (ceTime ce) (show (ceCause ce))
 
 -- Write frame number k atomically: a temporary file, then a rename.
 writeFrame :: FilePath -> Int -> BS.ByteString -> IO ()

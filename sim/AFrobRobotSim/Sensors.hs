@@ -93,7 +93,7 @@ slack = 1e-3
 -- | The input of one robot (by its index in the context's robot list),
 -- given its odometry reading and the key pressed now.
 senseRobot :: SenseContext -> Int -> (Position2, Heading) -> Maybe Char -> SimbotInput
-senseRobot (MkSenseContext arena robots _ ix) i (odoPos, odoHead) key = SimbotInput
+senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
   { siBattery  = batteryStatusOf (rCharge me)
   , siStuck    = rStuck me
   , siPosition = odoPos
@@ -113,7 +113,7 @@ senseRobot (MkSenseContext arena robots _ ix) i (odoPos, odoHead) key = SimbotIn
   }
   where
     me | i >= 0 && i < ixNRobots ix = robotAt i
-       | otherwise                  = robots !! i
+       | otherwise                  = error ("AFrobRobotSim.Sensors.senseRobot: no robot number " ++ show i)
     robotAt j = unsafeAt (ixRobots ix) j
     p@(Point2 px py) = rPos me
     tr = trackerRange + slack

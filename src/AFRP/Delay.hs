@@ -28,7 +28,7 @@ infixr 0 `fby`
 -- the input of the previous sample. Its output at local time 0 does not
 -- exist; demanding it is an error naming 'pre'. Prefer 'iPre'.
 pre :: SF a a
-pre = iPre (error "AFRP.Delay.pre: the output of pre at local time 0 is undefined (use iPre)")
+pre = iPre (error "AFRP.Delay.pre: pre has no output at local time 0 (use iPre for one)")
 
 -- | The initialised one-sample delay: @a0@ at local time 0, then at every
 -- sample the input of the previous sample. The current input is not
