@@ -67,6 +67,7 @@ module AFrobRobotSim.Physics
   , robotVelocity
     -- * Stepping
   , stepRobots
+  , stepRobotsNear
   , stepBalls
     -- * Parameters
   , ballFriction
@@ -176,16 +177,26 @@ robotVelocity r = vector2Polar (rSpeed r) (rHeading r)
 wheelCommand :: Length -> Speed -> DriveCommand -> (Velocity, Velocity)
 wheelCommand l wsMax cmd = case cmd of
   DriveBrake      -> (0, 0)
-  DriveWheels a b -> (clampW a, clampW b)
-  DriveTR v w     -> (clampW (v - w * l / 2), clampW (v + w * l / 2))
+  DriveWheels a b -> let !vl = clampW a
+                         !vr = clampW b
+                     in (vl, vr)
+  DriveTR v w     -> let !vl = clampW (v - w * l / 2)
+                         !vr = clampW (v + w * l / 2)
+                     in (vl, vr)
   where
-    clampW x | isNaN x || isInfinite x = 0
+    clampW x | not (finite x)            = 0
              | otherwise               = max (-wsMax) (min wsMax x)
 
 -- | Move every robot by one step, in order, each against the obstacles and
 -- the other robots' current positions.
 stepRobots :: DTime -> Arena -> [(Robot, DriveCommand)] -> [Robot]
-stepRobots dt arena cmds = runST $ do
+stepRobots dt arena cmds = stepRobotsNear (robotIndex arena (map fst cmds)) dt arena cmds
+
+-- | 'stepRobots' given the robots' centres on a grid over the arena, as
+-- 'pointsOver' indexes them (for a caller that has indexed them already,
+-- such as the sensors of the same step): the same result.
+stepRobotsNear :: PointIndex -> DTime -> Arena -> [(Robot, DriveCommand)] -> [Robot]
+stepRobotsNear near dt arena cmds = runST $ do
   -- the current centres: the old ones, replaced as the robots move
   xs <- newDblArr (max 1 n)
   ys <- newDblArr (max 1 n)
@@ -205,7 +216,6 @@ stepRobots dt arena cmds = runST $ do
   where
     robots0 = map fst cmds
     n       = length robots0
-    near    = robotIndex arena robots0
 
 -- The centres of robots (or of anything) on a grid over the arena.
 robotIndex :: Arena -> [Robot] -> PointIndex

@@ -31,9 +31,11 @@
 module AFrobRobotSim.Sensors
   ( senseRobot
   , rangeReading
+  , rayDirection
   , rangeFinderMax
   , trackerRange
   , SenseContext (SenseContext, scArena, scRobots, scBalls)
+  , scRobotIndex
   ) where
 
 import           GHC.Arr                (Array, listArray, unsafeAt)
@@ -76,6 +78,11 @@ pattern SenseContext { scArena, scRobots, scBalls } <- MkSenseContext scArena sc
   where SenseContext a rs bs = MkSenseContext a rs bs (indexes a rs bs)
 {-# COMPLETE SenseContext #-}
 
+-- | The robots' centres on a grid over the arena (as
+-- 'AFrobRobotSim.Physics.pointsOver' indexes them), built when first needed.
+scRobotIndex :: SenseContext -> PointIndex
+scRobotIndex (MkSenseContext _ _ _ ix) = ixRobotGrid ix
+
 indexes :: Arena -> [Robot] -> [Ball] -> Indexes
 indexes arena rs bs = Indexes
   { ixRobots    = listArray (0, nr - 1) rs
@@ -98,7 +105,7 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
   , siStuck    = rStuck me
   , siPosition = odoPos
   , siHeading  = odoHead
-  , siRange    = rangeAt
+  , siRange    = range
   , siMaxRange = rangeFinderMax
   , siRobots   = [ (kindType (rKind o), rId o, angleTo ox oy, d)
                  | Near d j <- nearest (ixRobotGrid ix) (\j -> j /= i)
@@ -132,17 +139,39 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     -- the bearing of a point relative to the heading
     angleTo qx qy = let (_, th) = vector2RhoTheta (Point2 qx qy .-. p)
                     in normalizeAngle (th - rHeading me)
+    -- The four quarter-turn rays (rfFront, rfLeft, rfBack, rfRight) are
+    -- cast at most once per sample however often they are read: a
+    -- controller typically reads one in several places.
+    range a
+      | a == 0                    = rangeFront
+      | a == halfPi               = rangeLeft
+      | a == negate halfPi        = rangeRight
+      | a == pi || a == negate pi = rangeBack
+      | otherwise                 = rangeAt a
+    rangeFront = rangeAt 0
+    rangeLeft  = rangeAt halfPi
+    rangeRight = rangeAt (negate halfPi)
+    rangeBack  = rangeAt pi
+    halfPi = pi / 2
     -- a ray: the nearest box, then the nearest other robot near the
     -- ray's segment
     rangeAt a
       | not (finite a) = rangeFinderMax
       | otherwise =
-          let ray@(Ray _ _ _ _ x0 y0 x1 y1) = rayFrom p (rHeading me) a
-          in reading (foldPointsIn (ixRobotGrid ix) (x0 - radius) (y0 - radius) (x1 + radius) (y1 + radius)
+          let ray@(Ray _ _ ux uy _ _ _ _) = rayFrom p (turnedBy (rHeading me) headingDir a)
+              -- the nearest box first; then only a robot whose centre is
+              -- within a radius of the ray up to that box can be nearer
+              boxT = rayToBoxes arena ray
+              ex = px + boxT * ux
+              ey = py + boxT * uy
+              rr = radius + slack
+          in reading (foldPointsIn (ixRobotGrid ix) (min px ex - rr) (min py ey - rr) (max px ex + rr) (max py ey + rr)
                         (\m j -> if j == i then m
                                  else rayToRobot ray m (Point2 (pointX (ixRobotGrid ix) j) (pointY (ixRobotGrid ix) j)))
-                        (rayToBoxes arena ray))
+                        boxT)
     radius = simbotDiameter / 2
+    -- the heading's unit vector, computed once for all of this robot's rays
+    headingDir = headingVector (rHeading me)
 
 -- A point of an index near a robot: its distance and its index.
 data Near = Near !Double !Int
@@ -163,7 +192,7 @@ sortNear = foldr insert []
 rangeReading :: Arena -> [Position2] -> Position2 -> Heading -> Angle -> Distance
 rangeReading arena others p heading a
   | not (finite a) = rangeFinderMax
-  | otherwise      = let ray = rayFrom p heading a
+  | otherwise      = let ray = rayFrom p (rayDirection heading a)
                      in reading (foldl (rayToRobot ray) (rayToBoxes arena ray) others)
 
 -- A ray: its origin, its direction (a unit vector), and the bounding box
@@ -171,13 +200,39 @@ rangeReading arena others p heading a
 -- radius: nothing further away can be the nearest hit.
 data Ray = Ray !Double !Double !Double !Double !Double !Double !Double !Double
 
-rayFrom :: Position2 -> Heading -> Angle -> Ray
-rayFrom (Point2 px py) heading a =
-  let Vector2 ux uy = vector2Polar 1 (heading + a)
-      ex = px + rayLength * ux
+rayFrom :: Position2 -> Vector2 Double -> Ray
+rayFrom (Point2 px py) (Vector2 ux uy) =
+  let ex = px + rayLength * ux
       ey = py + rayLength * uy
   in Ray px py ux uy (min px ex - slack) (min py ey - slack) (max px ex + slack) (max py ey + slack)
 {-# INLINE rayFrom #-}
+
+-- | The direction (a unit vector) of the range finder's ray at angle @a@
+-- for a robot with heading @h@: the heading's unit vector @(cos h, sin h)@
+-- turned by @a@. A quarter turn (@a@ = 0, @pi \/ 2@, @-pi \/ 2@, @pi@ or
+-- @-pi@, the angles of 'AFrob.rfFront', 'AFrob.rfLeft', 'AFrob.rfRight'
+-- and 'AFrob.rfBack') turns it exactly, by swapping and negating its
+-- components; any other angle gives @(cos (h + a), sin (h + a))@.
+rayDirection :: Heading -> Angle -> Vector2 Double
+rayDirection h = turnedBy h (headingVector h)
+{-# INLINE rayDirection #-}
+
+-- The unit vector of a heading.
+headingVector :: Heading -> Vector2 Double
+headingVector h = Vector2 (cos h) (sin h)
+{-# INLINE headingVector #-}
+
+-- A heading's unit vector turned by an angle (see 'rayDirection'): the
+-- lazily shared heading vector is only needed for the quarter turns.
+turnedBy :: Heading -> Vector2 Double -> Angle -> Vector2 Double
+turnedBy h hv a
+  | a == 0                 = hv
+  | a == halfPi            = let Vector2 c s = hv in Vector2 (negate s) c
+  | a == negate halfPi     = let Vector2 c s = hv in Vector2 s (negate c)
+  | a == pi || a == negate pi = let Vector2 c s = hv in Vector2 (negate c) (negate s)
+  | otherwise              = vector2Polar 1 (h + a)
+  where halfPi = pi / 2
+{-# INLINE turnedBy #-}
 
 rayLength :: Double
 rayLength = rangeFinderMax + simbotDiameter / 2

@@ -150,13 +150,12 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
           , wsMessages = [ printf "[%.2f] %s.%d: %s" t (rpType (agProps a)) (rpId (agProps a)) m
                          | (a, o) <- zip (enAgents en) outputs, m <- soMessages o ]
           }
-        robots' = stepRobots dt arena (zip (enRobots en) (map soDrive outputs))
+        robots' = stepRobotsNear (scRobotIndex ctx) dt arena (zip (enRobots en) (map soDrive outputs))
         moved   = stepBalls dt arena robots' (enBalls en)
         balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
           Nothing -> moved
           Just ps -> [ Ball q zeroVector | q <- ps ]
-        (agents', rng') = updateOdometry (enRng en) (enRobots en) robots'
-                            [ a { agCtrl = Right fut } | (a, (_, fut)) <- zip (enAgents en) stepped ]
+        (agents', rng') = updateOdometry (enRng en) (enRobots en) robots' (enAgents en) stepped
         -- keys' is forced too: left lazy, it would hold the previous
         -- engine (and so the whole run) when no controller reads its input
         en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq` keys' `seq`
@@ -184,12 +183,14 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
     noise = simOdometryNoise cfg
     -- Exact odometry is the true pose; noisy odometry integrates the true
     -- motion with a random relative error on each step's distance and turn.
-    updateOdometry rng olds news as
-      | noise == 0 = ([ a { agOdo = (rPos r, rHeading r) } | (a, r) <- zip as news ], rng)
-      | otherwise  = go rng (zip3 olds news as) []
+    -- Every agent's next state: its stepped controller and its odometry
+    -- after the move.
+    updateOdometry rng olds news as stepped
+      | noise == 0 = (zipWith3 (\a r (_, fut) -> Agent (agProps a) (Right fut) (rPos r, rHeading r))
+                               as news stepped, rng)
+      | otherwise  = go rng olds news as stepped []
       where
-        go g [] acc = (reverse acc, g)
-        go g ((r0, r1, a) : rest) acc =
+        go g (r0 : rs0) (r1 : rs1) (a : as') ((_, fut) : st) acc =
           let (u1, g1) = uniform g
               (u2, g2) = uniform g1
               (p, h)   = agOdo a
@@ -197,7 +198,8 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
               turn     = normalizeAngle (rHeading r1 - rHeading r0)
               h'       = normalizeHeading (h + turn * (1 + noise * u2))
               d'       = vector2Rotate (h - rHeading r0) ((1 + noise * u1) *^ dTrue)
-          in go g2 rest (a { agOdo = (p .+^ d', h') } : acc)
+          in go g2 rs0 rs1 as' st (Agent (agProps a) (Right fut) (p .+^ d', h') : acc)
+        go g _ _ _ _ acc = (reverse acc, g)
 
 forceList :: [a] -> ()
 forceList = foldr seq ()

@@ -192,6 +192,7 @@ prefixSums starts cells = go 0 0
 data BoxIndex = BoxIndex
   { biGrid   :: !Grid
   , biBoxes  :: !(Array Int Box)
+  , biCoords :: !DblArr   -- box i is [4i .. 4i + 3]: min x, min y, max x, max y
   , biCount  :: {-# UNPACK #-} !Int
   , biStarts :: !IntArr   -- cell c lists biItems [starts c .. starts (c + 1) - 1]
   , biItems  :: !IntArr
@@ -215,7 +216,14 @@ boxIndex boxes = runST $ do
             writeI fill c (k + 1))) (filter (tameBox . snd) indexed)
   st <- freezeI starts
   it <- freezeI items
-  pure (BoxIndex grid (listArray (0, n - 1) boxes) n st it [ i | (i, b) <- indexed, not (tameBox b) ])
+  coords <- newDblArr (max 1 (4 * n))
+  mapM_ (\(i, Box a b c d) -> do
+            writeD coords (4 * i) a
+            writeD coords (4 * i + 1) b
+            writeD coords (4 * i + 2) c
+            writeD coords (4 * i + 3) d) indexed
+  co <- freezeD coords
+  pure (BoxIndex grid (listArray (0, n - 1) boxes) co n st it [ i | (i, b) <- indexed, not (tameBox b) ])
   where
     n       = length boxes
     indexed = zip [0 ..] boxes
@@ -255,7 +263,7 @@ foldBoxesIn :: BoxIndex -> Double -> Double -> Double -> Double
             -> (a -> Int -> Box -> a) -> a -> a
 foldBoxesIn bi x0 y0 x1 y1 f z0
   | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
-  | otherwise = wild (biWild bi) (rows cy0 z0)
+  | otherwise = cell cy0 cx0 z0
   where
     Grid gx gy cs nx ny = biGrid bi
     cx0 = cellOf gx cs nx x0
@@ -264,21 +272,28 @@ foldBoxesIn bi x0 y0 x1 y1 f z0
     cy1 = cellOf gy cs ny y1
     starts = biStarts bi
     items  = biItems bi
-    rows !cy !z
-      | cy > cy1  = z
-      | otherwise = rows (cy + 1) (cols cy cx0 z)
-    cols !cy !cx !z
-      | cx > cx1  = z
+    coords = biCoords bi
+    -- One loop, every call a tail call (so that GHC compiles it to jumps,
+    -- allocating no closures): the cells row by row, then each cell's
+    -- items, then the wild boxes.
+    cell !cy !cx !z
+      | cx > cx1  = cell (cy + 1) cx0 z
+      | cy > cy1  = wild (biWild bi) z
       | otherwise = let c = cy * nx + cx
-                    in cols cy (cx + 1) (inCell (indexI starts c) (indexI starts (c + 1)) z)
-    inCell !k !e !z
-      | k >= e    = z
-      | otherwise = let i = indexI items k
-                        b = boxAt bi i
-                    in inCell (k + 1) e (if meets b then f z i b else z)
-    -- only the boxes that meet the rectangle (a cheap test that saves the
-    -- caller's exact one)
-    meets (Box a b c d) = a <= x1 && c >= x0 && b <= y1 && d >= y0
+                    in inCell cy cx (indexI starts c) (indexI starts (c + 1)) z
+    inCell !cy !cx !k !e !z
+      | k >= e    = cell cy (cx + 1) z
+      | otherwise =
+          let i = indexI items k
+              a = indexD coords (4 * i)
+              b = indexD coords (4 * i + 1)
+              c = indexD coords (4 * i + 2)
+              d = indexD coords (4 * i + 3)
+          in -- only the boxes that meet the rectangle (a cheap test that
+             -- saves the caller's exact one)
+             if a <= x1 && c >= x0 && b <= y1 && d >= y0
+               then inCell cy cx (k + 1) e (f z i (Box a b c d))
+               else inCell cy cx (k + 1) e z
     wild [] !z       = z
     wild (i : is) !z = wild is (f z i (boxAt bi i))
     goAll !i !z
@@ -364,7 +379,7 @@ foldPointsIn :: PointIndex -> Double -> Double -> Double -> Double
              -> (a -> Int -> a) -> a -> a
 foldPointsIn p x0 y0 x1 y1 f z0
   | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
-  | otherwise = wild (piWild p) (rows cy0 z0)
+  | otherwise = row cy0 z0
   where
     Grid gx gy cs nx ny = piGrid p
     cx0 = cellOf gx cs nx x0
@@ -373,16 +388,20 @@ foldPointsIn p x0 y0 x1 y1 f z0
     cy1 = cellOf gy cs ny y1
     starts = piStarts p
     items  = piItems p
-    rows !cy !z
-      | cy > cy1  = z
-      | otherwise = rows (cy + 1) (inCell (indexI starts (cy * nx + cx0)) (indexI starts (cy * nx + cx1 + 1)) z)
-    inCell !k !e !z
-      | k >= e    = z
-      | otherwise = let i = indexI items k
-                    in inCell (k + 1) e (if inside i then f z i else z)
-    inside i = let x = indexD (piXs p) i
-                   y = indexD (piYs p) i
-               in x >= x0 && x <= x1 && y >= y0 && y <= y1
+    -- One loop of tail calls (no closures allocated): a row's cells are
+    -- contiguous in the items array, so each row is one run of items.
+    row !cy !z
+      | cy > cy1  = wild (piWild p) z
+      | otherwise = inRow cy (indexI starts (cy * nx + cx0)) (indexI starts (cy * nx + cx1 + 1)) z
+    inRow !cy !k !e !z
+      | k >= e    = row (cy + 1) z
+      | otherwise =
+          let i = indexI items k
+              x = indexD (piXs p) i
+              y = indexD (piYs p) i
+          in if x >= x0 && x <= x1 && y >= y0 && y <= y1
+               then inRow cy (k + 1) e (f z i)
+               else inRow cy (k + 1) e z
     wild [] !z       = z
     wild (i : is) !z = wild is (f z i)
     goAll !i !z
@@ -395,7 +414,7 @@ foldPointsInM :: PointIndex -> Double -> Double -> Double -> Double
               -> (a -> Int -> ST s a) -> a -> ST s a
 foldPointsInM p x0 y0 x1 y1 f z0
   | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
-  | otherwise = rows cy0 z0 >>= wild (piWild p)
+  | otherwise = row cy0 z0
   where
     Grid gx gy cs nx ny = piGrid p
     cx0 = cellOf gx cs nx x0
@@ -404,17 +423,18 @@ foldPointsInM p x0 y0 x1 y1 f z0
     cy1 = cellOf gy cs ny y1
     starts = piStarts p
     items  = piItems p
-    rows !cy !z
-      | cy > cy1  = pure z
-      | otherwise = inCell (indexI starts (cy * nx + cx0)) (indexI starts (cy * nx + cx1 + 1)) z
-                      >>= rows (cy + 1)
-    inCell !k !e !z
-      | k >= e    = pure z
-      | otherwise = let i = indexI items k
-                    in (if inside i then f z i else pure z) >>= inCell (k + 1) e
-    inside i = let x = indexD (piXs p) i
-                   y = indexD (piYs p) i
-               in x >= x0 && x <= x1 && y >= y0 && y <= y1
+    -- as in 'foldPointsIn': one loop of tail calls
+    row !cy !z
+      | cy > cy1  = wild (piWild p) z
+      | otherwise = inRow cy (indexI starts (cy * nx + cx0)) (indexI starts (cy * nx + cx1 + 1)) z
+    inRow !cy !k !e !z
+      | k >= e    = row (cy + 1) z
+      | otherwise = do
+          let i = indexI items k
+              x = indexD (piXs p) i
+              y = indexD (piYs p) i
+          z' <- if x >= x0 && x <= x1 && y >= y0 && y <= y1 then f z i else pure z
+          inRow cy (k + 1) e z'
     wild [] !z       = pure z
     wild (i : is) !z = f z i >>= wild is
     goAll !i !z

@@ -212,7 +212,7 @@ refRange arena robots i a
     me      = robots !! i
     p       = rPos me
     others  = [ o | (j, o) <- zip [0 :: Int ..] robots, j /= i ]
-    dir     = vector2Polar 1 (rHeading me + a)
+    dir     = rayDirection (rHeading me) a
     hits    = [ t | b <- arenaBoxes arena, Just t <- [rayBox p dir b] ]
            ++ [ t | o <- others, Just t <- [rayCircle p dir (rPos o) robotRadius'] ]
     nearest = minimum (rangeFinderMax + robotRadius' : hits)
@@ -268,6 +268,18 @@ spec = do
         forAll (genRobots (halfSide w)) $ \rs -> forAll (genBalls (halfSide w)) $ \bs ->
           let arena = arenaFor w
           in stepBalls dt arena rs bs === refStepBalls dt arena rs bs
+
+  describe "rayDirection" $ do
+    it "turns the heading's unit vector exactly by a quarter turn" $
+      property $ forAll (choose (-pi, pi)) $ \h ->
+        let c = cos h
+            s = sin h
+        in [ rayDirection h a | a <- [0, pi / 2, -pi / 2, pi, -pi] ]
+             === [Vector2 c s, Vector2 (-s) c, Vector2 s (-c), Vector2 (-c) (-s), Vector2 (-c) (-s)]
+    it "is (cos (h + a), sin (h + a)) for any other angle" $
+      property $ forAll (choose (-pi, pi)) $ \h -> forAll (choose (-7, 7)) $ \a ->
+        a `notElem` [0, pi / 2, -pi / 2, pi, -pi] ==>
+        rayDirection h a === Vector2 (cos (h + a)) (sin (h + a))
 
   describe "senseRobot" $ do
     it "reads every range finder exactly as casting at everything does" $
