@@ -177,11 +177,11 @@ stepN n dt a = case n of
     -- A pure function in front of a stateful node (the usual shape): apply
     -- it (lazily, as its own node would) without a step of its own.
     NPure (FDG p) -> case stepN g dt (p a) of
-      (# g', b #) -> case compN f g' of !n' -> (# n', b #)
+      (# g', b #) -> case compNI f g' of !n' -> (# n', b #)
     _             -> case stepN f dt a of
       (# f', c #) -> case g of
         -- ... and one behind it.
-        NPure (FDG q) -> case compN f' g of !n' -> (# n', q c #)
+        NPure (FDG q) -> case compNI f' g of !n' -> (# n', q c #)
         _             -> case stepN g dt c of
           (# g', b #) -> case rebuildComp f' g' of !n' -> (# n', b #)
   NPar f g      -> case g of
@@ -325,7 +325,14 @@ compN :: Node a c -> Node c b -> Node a b
 --
 -- written as a decision tree on the two nodes, so that the common case (two
 -- stateful nodes) costs two tests.
-compN f g = case g of
+compN f g = compNI f g
+
+-- 'compN', inlined: 'stepN' rebuilds a composition at every step, and
+-- with the tree inlined there the tests on the node it already knows (the
+-- pure one) vanish and the rest cost no call. The same function as
+-- 'compN', so the same identities.
+compNI :: Node a c -> Node c b -> Node a b
+compNI f g = case g of
   NPure gd -> case f of
     NPure fd -> NPure (fdComp fd gd)
     _        -> case gd of
@@ -341,6 +348,7 @@ compN f g = case g of
       NComp (NPure gd) h -> NComp (NPure (fdComp fd gd)) h
       _                  -> NComp f g
     _         -> NComp f g
+{-# INLINE compNI #-}
 
 -- | @first@, simplified.
 firstN :: Node a b -> Node (a, c) (b, c)
@@ -350,6 +358,7 @@ firstN (NPure FDI)     = NPure FDI
 firstN (NPure (FDC b)) = NPure (FDG (\ ~(_, c) -> (b, c)))
 firstN (NPure (FDG f)) = NPure (FDG (\ ~(a, c) -> (f a, c)))
 firstN f               = NPar f idN
+{-# INLINE firstN #-}
 
 -- | @second@, simplified.
 secondN :: Node a b -> Node (c, a) (c, b)
@@ -357,6 +366,7 @@ secondN (NPure FDI)     = NPure FDI
 secondN (NPure (FDC b)) = NPure (FDG (\ ~(c, _) -> (c, b)))
 secondN (NPure (FDG f)) = NPure (FDG (\ ~(c, a) -> (c, f a)))
 secondN f               = NPar idN f
+{-# INLINE secondN #-}
 
 -- | @(***)@, simplified.
 parN :: Node a b -> Node c d -> Node (a, c) (b, d)
@@ -380,6 +390,7 @@ fanN f g@(NPure (FDC _))             = NFan f g
 -- arr f &&& arr g = arr (\a -> (f a, g a))
 fanN (NPure f) (NPure g)             = NPure (fanFD f g)
 fanN f g                             = NFan f g
+{-# INLINE fanN #-}
 
 fanFD :: FunD a b -> FunD a c -> FunD a (b, c)
 fanFD (FDC b) (FDC c) = FDC (b, c)
