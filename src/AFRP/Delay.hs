@@ -36,10 +36,7 @@ pre = iPre (error "AFRP.Delay.pre: pre has no output at local time 0 (use iPre f
 --
 -- > embed (iPre 0) (1, [(1, Just 2), (1, Just 3)])  ==  [0, 1, 2]
 iPre :: a -> SF a a
-iPre a0 = SF (go a0)
-  where
-    -- The successor is built at once (it does not evaluate a).
-    go prev = NStep (\_ a -> let !n = go a in (# n, prev #))
+iPre a0 = SF (NPre a0)
 
 -- | @b0 \`fby\` sf@ ("followed by") outputs @b0@ at local time 0 and then,
 -- at every later sample, the output @sf@ had at the previous sample.

@@ -188,7 +188,18 @@ edge = iEdge True
 -- | 'edge' with the value assumed for the sample before time 0:
 -- @iEdge False@ produces an event at time 0 if the input is 'True' then.
 iEdge :: Bool -> SF Bool (Event ())
-iEdge b0 = SF (mealyN (\prev b -> (b, if b && not prev then Event () else NoEvent)) b0)
+iEdge b0 = SF (if b0 then edgeAfterTrue else edgeAfterFalse)
+
+-- The two states of 'iEdge' (the previous input was 'True' / 'False'), as
+-- two constant nodes that step into each other: stepping allocates
+-- nothing. This is @mealyN (\prev b -> (b, if b && not prev then Event ()
+-- else NoEvent))@ with its state forced, as there: the input is evaluated
+-- to choose the next state, and then the event, a total function of two
+-- evaluated Booleans, is returned evaluated rather than as a thunk (which
+-- is what the thunk would have evaluated to, at no risk).
+edgeAfterTrue, edgeAfterFalse :: Node Bool (Event ())
+edgeAfterTrue = NStep (\_ b -> if b then (# edgeAfterTrue, NoEvent #) else (# edgeAfterFalse, NoEvent #))
+edgeAfterFalse = NStep (\_ b -> if b then (# edgeAfterTrue, Event () #) else (# edgeAfterFalse, NoEvent #))
 
 -- | 'edge' with a given value: @edgeTag x = edge >>> arr (`tag` x)@.
 edgeTag :: a -> SF Bool (Event a)

@@ -30,6 +30,7 @@ module AFRP.Run
 
 import           Data.IORef
 import           Data.Maybe       (fromMaybe)
+import           GHC.Exts         (build, oneShot)
 
 import           AFRP.Internal.SF
 
@@ -120,13 +121,28 @@ evalAt (FutureSF n) dt a = case stepN n dt a of (# n', b #) -> (b, FutureSF n')
 --
 -- > embed integral (1, [(0.5, Just 2), (0.5, Nothing)])  ==  [0, 0.5, 1.5]
 embed :: SF a b -> (a, [(DTime, Maybe a)]) -> [b]
-embed (SF n0) (a0, samples) = case stepN n0 0 a0 of
-  (# n1, b0 #) -> b0 : go n1 a0 samples
-  where
-    go !_ _ []             = []
-    go n a ((dt, ma) : rest) =
-      let !a' = fromMaybe a ma
-      in case stepN n dt a' of (# n', b #) -> b : go n' a' rest
+embed sf input = build (\cons nil -> embedFB cons nil sf input)
+{-# INLINE embed #-}
+
+-- 'embed' with the list constructors abstracted, and consuming its samples
+-- with 'foldr': 'embed' is then a good consumer of its samples and a good
+-- producer of its outputs, so that when the samples come from a list
+-- producer (@[(dt, Just x) | x <- ...]@) GHC fuses the two and no input
+-- list is built (and, where 'embed' is inlined into a list consumer, no
+-- output list either). @embedFB (:) []@ is exactly the recursion
+-- @go n a ((dt, ma) : rest) = b : go n' a' rest@ that 'embed' has always
+-- been: the same input forced, the same step, the same lazy tail.
+embedFB :: (b -> r -> r) -> r -> SF a b -> (a, [(DTime, Maybe a)]) -> r
+embedFB cons nil (SF n0) (a0, samples) = case stepN n0 0 a0 of
+  (# n1, b0 #) -> b0 `cons` foldr (embedStep cons) (\ !_ _ -> nil) samples n1 a0
+{-# INLINE embedFB #-}
+
+-- One sample of 'embedFB'.
+embedStep :: (b -> r -> r) -> (DTime, Maybe a) -> (Node a b -> a -> r) -> Node a b -> a -> r
+embedStep cons (dt, ma) k = oneShot (\n a ->
+  let !a' = fromMaybe a ma
+  in case stepN n dt a' of (# n', b #) -> b `cons` k n' a')
+{-# INLINE embedStep #-}
 
 -- | @embedSynch sf (a0, samples)@ is a signal function that replays the
 -- run of @sf@ on the given samples at a controllable speed. Its input is

@@ -76,12 +76,20 @@ dSwitch :: SF a (b, Event c) -> (c -> SF a b) -> SF a b
 dSwitch (SF n0) k = SF (go n0)
   where
     go n = NStep (step n)
-    step n dt a = case stepN n dt a of
-      (# n', be #) -> (# NStep (resume n' be dt a), fst be #)
-    -- Decoupled: whether the event occurred at the step that produced @be@
-    -- is examined only at the next step (this is @deferN next@ with
+    step n dt a = case n of
+      -- sf &&& e, the usual shape: stepped exactly as 'stepN' steps the
+      -- fan (f, then g, rebuilt by 'fanN'), but its output and its event
+      -- are kept apart instead of being paired and then selected from.
+      NFan f g -> case stepN f dt a of
+        (# f', b #) -> case stepN g dt a of
+          (# g', e #) -> case fanN f' g' of
+            !n' -> (# NStep (resume n' e dt a), b #)
+      _        -> case stepN n dt a of
+        (# n', be #) -> (# NStep (resume n' (snd be) dt a), fst be #)
+    -- Decoupled: whether the event @e@ occurred at the step that produced
+    -- it is examined only at the next step (this is @deferN next@ with
     -- @next = watch n' go@ or @k c@ started then, stepped at once).
-    resume n' be dt0 a0 dt a = case snd be of
+    resume n' e dt0 a0 dt a = case e of
       NoEvent -> case unwatched n' of
         Just m  -> stepN m dt a
         Nothing -> step n' dt a

@@ -11,8 +11,9 @@
 --
 -- A signal function is a /network of nodes/ that is stepped one sample at a
 -- time. A node is either one of a handful of structural forms that the
--- library understands ('NPure', 'NComp', 'NPar', 'NFan', 'NLoop')
--- or an opaque stateful step ('NStep'). Because the structure is visible,
+-- library understands ('NPure', 'NComp', 'NPar', 'NFan'), one of two
+-- specialised primitives ('NPre', 'NIntD') or an opaque stateful step
+-- ('NStep'). Because the structure is visible,
 -- the smart constructors ('compN', 'fanN', ...) simplify the network both
 -- when it is built and every time a part of it changes while it runs: pure
 -- functions fuse across '>>>', identities vanish, constants absorb what
@@ -51,9 +52,14 @@
 --   as a node of its own;
 -- * rebuilding a node whose children are both still stateful skips the
 --   smart constructor, none of whose identities can apply;
--- * @loop (second sf >>> f)@ (the shape of 'AFRP.Loop.loopPre' and
---   'AFRP.Loop.loopIntegral') is a node of its own ('NLoop'), and the
---   knot it ties allocates one box, not a pair to be taken apart;
+-- * 'AFRP.Delay.iPre' is a node of its own ('NPre'), so that
+--   @loop (second (iPre c) >>> f)@ (the shape of 'AFRP.Loop.loopPre') is
+--   recognised and stepped without a knot: the delay never looks at its
+--   current input, so the value fed back is only stored, never needed
+--   during the step (see 'loopPreN');
+-- * any other @loop (second sf >>> f)@ (for example
+--   'AFRP.Loop.loopIntegral') ties a knot that allocates one box, not a
+--   pair to be taken apart;
 -- * 'AFRP.Integration.integral' at 'Double' (by a rewrite rule) is a
 --   specialised node with an unboxed running sum ('NIntD').
 --
@@ -140,10 +146,11 @@ data Node a b where
   -- | An opaque stateful node: given the time step and the input sample,
   -- its successor and its output.
   NStep   :: !(DTime -> a -> (# Node a b, b #)) -> Node a b
-  -- | @NLoop s f@ is @loop (second s >>> f)@ (see 'loopN'): @s@ sees the
-  -- fed-back value, @f@ the input and @s@'s output. A plain @loop f@ is
-  -- @NLoop id f@.
-  NLoop   :: !(Node c d) -> !(Node (a, d) (b, c)) -> Node a b
+  -- | 'AFRP.Delay.iPre' holding the previous input sample (lazy: the
+  -- delay never evaluates its input): outputs it and stores the current
+  -- one. Visible to 'loopN', which closes a loop through it without a
+  -- knot.
+  NPre    :: a -> Node a a
   -- | 'AFRP.Integration.integral' on 'Double' after its first sample: the
   -- running sum and the previous input sample (lazy: the integral never
   -- evaluates its current input). A specialised node, with no closure.
@@ -170,11 +177,11 @@ stepN n dt a = case n of
     -- A pure function in front of a stateful node (the usual shape): apply
     -- it (lazily, as its own node would) without a step of its own.
     NPure (FDG p) -> case stepN g dt (p a) of
-      (# g', b #) -> case compN f g' of !n' -> (# n', b #)
+      (# g', b #) -> case compNI f g' of !n' -> (# n', b #)
     _             -> case stepN f dt a of
       (# f', c #) -> case g of
         -- ... and one behind it.
-        NPure (FDG q) -> case compN f' g of !n' -> (# n', q c #)
+        NPure (FDG q) -> case compNI f' g of !n' -> (# n', q c #)
         _             -> case stepN g dt c of
           (# g', b #) -> case rebuildComp f' g' of !n' -> (# n', b #)
   NPar f g      -> case g of
@@ -208,7 +215,7 @@ stepN n dt a = case n of
         (# f', y #) -> case stepN g dt a of
           (# g', w #) -> case rebuildFan f' g' of !n' -> (# n', (y, w) #)
   NStep s       -> s dt a
-  NLoop d f     -> loopStep d f dt a
+  NPre prev     -> (# NPre a, prev #)
   -- integral: y_n = y_(n-1) + dt_n * a_(n-1), exactly as the generic
   -- 'AFRP.Integration.integral' at 'Double' computes it.
   NIntD acc prev -> let !acc' = acc + dt * prev
@@ -318,7 +325,14 @@ compN :: Node a c -> Node c b -> Node a b
 --
 -- written as a decision tree on the two nodes, so that the common case (two
 -- stateful nodes) costs two tests.
-compN f g = case g of
+compN f g = compNI f g
+
+-- 'compN', inlined: 'stepN' rebuilds a composition at every step, and
+-- with the tree inlined there the tests on the node it already knows (the
+-- pure one) vanish and the rest cost no call. The same function as
+-- 'compN', so the same identities.
+compNI :: Node a c -> Node c b -> Node a b
+compNI f g = case g of
   NPure gd -> case f of
     NPure fd -> NPure (fdComp fd gd)
     _        -> case gd of
@@ -334,6 +348,7 @@ compN f g = case g of
       NComp (NPure gd) h -> NComp (NPure (fdComp fd gd)) h
       _                  -> NComp f g
     _         -> NComp f g
+{-# INLINE compNI #-}
 
 -- | @first@, simplified.
 firstN :: Node a b -> Node (a, c) (b, c)
@@ -343,6 +358,7 @@ firstN (NPure FDI)     = NPure FDI
 firstN (NPure (FDC b)) = NPure (FDG (\ ~(_, c) -> (b, c)))
 firstN (NPure (FDG f)) = NPure (FDG (\ ~(a, c) -> (f a, c)))
 firstN f               = NPar f idN
+{-# INLINE firstN #-}
 
 -- | @second@, simplified.
 secondN :: Node a b -> Node (c, a) (c, b)
@@ -350,6 +366,7 @@ secondN (NPure FDI)     = NPure FDI
 secondN (NPure (FDC b)) = NPure (FDG (\ ~(c, _) -> (c, b)))
 secondN (NPure (FDG f)) = NPure (FDG (\ ~(c, a) -> (c, f a)))
 secondN f               = NPar idN f
+{-# INLINE secondN #-}
 
 -- | @(***)@, simplified.
 parN :: Node a b -> Node c d -> Node (a, c) (b, d)
@@ -373,6 +390,7 @@ fanN f g@(NPure (FDC _))             = NFan f g
 -- arr f &&& arr g = arr (\a -> (f a, g a))
 fanN (NPure f) (NPure g)             = NPure (fanFD f g)
 fanN f g                             = NFan f g
+{-# INLINE fanN #-}
 
 fanFD :: FunD a b -> FunD a c -> FunD a (b, c)
 fanFD (FDC b) (FDC c) = FDC (b, c)
@@ -390,24 +408,40 @@ loopN (NPure fd) =
   in NPure (FDG (\a -> let (b, c) = f (a, c) in b))
 -- loop (second d >>> f): the usual shape (loopPre, loopIntegral), kept
 -- apart so that no pair (a, c) is built and taken apart at every step
-loopN (NComp (NPar (NPure FDI) d) f) = NLoop d f
-loopN n = NLoop idN n
+loopN (NComp (NPar (NPure FDI) d) f) = loopN2 d f
+loopN n = loopK idN n
 
--- The loop @NLoop d f@ after a step: @loop (second d >>> f)@, simplified.
+-- @loop (second d >>> f)@, simplified: pure if both parts are, without a
+-- knot if @d@ is a delay, and otherwise the general knot.
 loopN2 :: Node c d -> Node (a, d) (b, c) -> Node a b
-loopN2 d@(NPure _) f@(NPure _) = loopN (compN (secondN d) f)
-loopN2 d f                     = NLoop d f
+loopN2 d f = case d of
+  NPre c  -> loopPreN c f
+  NPure _ -> case f of
+    NPure _ -> loopN (compN (secondN d) f)
+    _       -> loopK d f
+  _       -> loopK d f
 
--- The knot: @d@ sees, as its input, the second component of the output
--- that @f@ is producing at this very step (through a lazy reference to
--- the step's result); @f@ sees the input and @d@'s output.
-loopStep :: Node c d -> Node (a, d) (b, c) -> DTime -> a -> (# Node a b, b #)
-loopStep d f dt a =
+-- | @loopPreN c f = loop (second (iPre c) >>> f)@, stepped without a knot.
+-- It relies on the delay's output at this step being @c@ whatever its
+-- input: @f@ is stepped on @(a, c)@, its output @(b, c')@ gives the
+-- output @b@, and the delay now holds @c'@ (both taken lazily, exactly as
+-- the knot would: the delay stores its input unevaluated). So the loop is
+-- @loopPreN c' f'@ afterwards; it never becomes pure (the delay is state).
+loopPreN :: c -> Node (a, c) (b, c) -> Node a b
+loopPreN c f = NStep (\dt a -> case stepN f dt (a, c) of
+  (# f', bc #) -> case loopPreN (snd bc) f' of !m -> (# m, fst bc #))
+
+-- | @loopK d f = loop (second d >>> f)@, by a knot: @d@ sees, as its
+-- input, the second component of the output that @f@ is producing at this
+-- very step (through a lazy reference to the step's result); @f@ sees the
+-- input and @d@'s output.
+loopK :: Node c d -> Node (a, d) (b, c) -> Node a b
+loopK d f = NStep (\dt a ->
   let r = case stepN d dt c of
         (# d', y #) -> case stepN f dt (a, y) of
           (# f', bc #) -> Loop d' f' bc
       c = case r of Loop _ _ (_, c') -> c'
-  in case r of Loop d' f' bc -> case loopN2 d' f' of !m -> (# m, fst bc #)
+  in case r of Loop d' f' bc -> case loopN2 d' f' of !m -> (# m, fst bc #))
 
 -- The result of a loop's step, in a box (the knot needs a lifted value).
 data Loop c d a b x = Loop !(Node c d) !(Node (a, d) x) x
@@ -456,7 +490,14 @@ instance Category SF where
 -- | 'arr' lifts a function pointwise; 'first', 'second', '***' and '&&&'
 -- work sample by sample, all parts seeing the same time step.
 instance Arrow SF where
-  arr f = SF (arrN f)
+  -- Eta-expanded, so that an 'arr' of a partial application
+  -- (@arr (foldl' (+) 0)@, @arr (uncurry f)@) is compiled, once 'arr' is
+  -- inlined, as a saturated call that GHC can inline and specialise,
+  -- instead of a call of the generic function through a PAP at every
+  -- sample. @\a -> f a@ differs from @f@ only under 'seq', and no node
+  -- ever evaluates the function of an 'FDG' other than by applying it.
+  arr f = SF (arrN (\a -> f a))
+  {-# INLINE arr #-}
   first (SF f) = SF (firstN f)
   second (SF f) = SF (secondN f)
   SF f *** SF g = SF (parN f g)
