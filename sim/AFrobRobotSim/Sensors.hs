@@ -11,7 +11,10 @@
 -- radius, 0.25 m, subtracted) to the first wall, block, boundary or other
 -- robot it meets, exactly, against the true shapes. Nothing further than
 -- 'rangeFinderMax' (3 m) is seen: the reading is then 'rangeFinderMax'.
--- Rays are cast only when a controller asks for them.
+-- The ray's direction is the heading's unit vector turned by @a@, exactly
+-- for the quarter turns of 'AFrob.rfFront', 'AFrob.rfLeft', 'AFrob.rfBack'
+-- and 'AFrob.rfRight' (see 'rayDirection'). Rays are cast only when a
+-- controller asks for them, and those four at most once per sample.
 --
 -- = Animate object tracker
 --

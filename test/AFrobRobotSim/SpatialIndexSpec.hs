@@ -262,6 +262,15 @@ spec = do
               cmds = zip rs cs
           in stepRobots dt arena cmds === refStepRobots dt arena cmds
 
+  describe "stepRobotsNear" $
+    it "moves the robots as stepRobots does, given the sensors' index of their centres" $
+      property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
+        forAll (genRobots (halfSide w)) $ \rs -> forAll (vectorOf (length rs) genCommand) $ \cs ->
+          let arena = arenaFor w
+              cmds = zip rs cs
+              near = scRobotIndex (SenseContext arena rs [])
+          in stepRobotsNear near dt arena cmds === refStepRobots dt arena cmds
+
   describe "stepBalls" $
     it "moves the balls exactly as testing every box, robot and pair of balls does" $
       property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
