@@ -184,8 +184,8 @@ wheelCommand l wsMax cmd = case cmd of
                          !vr = clampW (v + w * l / 2)
                      in (vl, vr)
   where
-    clampW x | not (finite x)            = 0
-             | otherwise               = max (-wsMax) (min wsMax x)
+    clampW x | not (finite x) = 0
+             | otherwise      = max (-wsMax) (min wsMax x)
 
 -- | Move every robot by one step, in order, each against the obstacles and
 -- the other robots' current positions.

@@ -145,17 +145,16 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     -- The four quarter-turn rays (rfFront, rfLeft, rfBack, rfRight) are
     -- cast at most once per sample however often they are read: a
     -- controller typically reads one in several places.
-    range a
-      | a == 0                    = rangeFront
-      | a == halfPi               = rangeLeft
-      | a == negate halfPi        = rangeRight
-      | a == pi || a == negate pi = rangeBack
-      | otherwise                 = rangeAt a
+    range a = case quarterTurn a of
+      Just QFront -> rangeFront
+      Just QLeft  -> rangeLeft
+      Just QRight -> rangeRight
+      Just QBack  -> rangeBack
+      Nothing     -> rangeAt a
     rangeFront = rangeAt 0
-    rangeLeft  = rangeAt halfPi
-    rangeRight = rangeAt (negate halfPi)
+    rangeLeft  = rangeAt (pi / 2)
+    rangeRight = rangeAt (-pi / 2)
     rangeBack  = rangeAt pi
-    halfPi = pi / 2
     -- a ray: the nearest box, then the nearest other robot near the
     -- ray's segment
     rangeAt a
@@ -228,14 +227,28 @@ headingVector h = Vector2 (cos h) (sin h)
 -- A heading's unit vector turned by an angle (see 'rayDirection'): the
 -- lazily shared heading vector is only needed for the quarter turns.
 turnedBy :: Heading -> Vector2 Double -> Angle -> Vector2 Double
-turnedBy h hv a
-  | a == 0                 = hv
-  | a == halfPi            = let Vector2 c s = hv in Vector2 (negate s) c
-  | a == negate halfPi     = let Vector2 c s = hv in Vector2 s (negate c)
-  | a == pi || a == negate pi = let Vector2 c s = hv in Vector2 (negate c) (negate s)
-  | otherwise              = vector2Polar 1 (h + a)
-  where halfPi = pi / 2
+turnedBy h hv a = case quarterTurn a of
+  Just QFront -> hv
+  Just QLeft  -> let Vector2 c s = hv in Vector2 (negate s) c
+  Just QRight -> let Vector2 c s = hv in Vector2 s (negate c)
+  Just QBack  -> let Vector2 c s = hv in Vector2 (negate c) (negate s)
+  Nothing     -> vector2Polar 1 (h + a)
 {-# INLINE turnedBy #-}
+
+-- The range finder's quarter turns, relative to the heading.
+data QuarterTurn = QFront | QLeft | QRight | QBack
+
+-- The quarter turn an angle is exactly (0, pi/2, -pi/2, pi or -pi, as
+-- 'AFrob.rfFront', 'AFrob.rfLeft', 'AFrob.rfRight' and 'AFrob.rfBack'
+-- write them), if it is one.
+quarterTurn :: Angle -> Maybe QuarterTurn
+quarterTurn a
+  | a == 0                    = Just QFront
+  | a == pi / 2               = Just QLeft
+  | a == -pi / 2              = Just QRight
+  | a == pi || a == -pi       = Just QBack
+  | otherwise                 = Nothing
+{-# INLINE quarterTurn #-}
 
 rayLength :: Double
 rayLength = rangeFinderMax + simbotDiameter / 2

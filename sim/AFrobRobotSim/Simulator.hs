@@ -155,7 +155,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
           Nothing -> moved
           Just ps -> [ Ball q zeroVector | q <- ps ]
-        (agents', rng') = updateOdometry (enRng en) (enRobots en) robots' (enAgents en) stepped
+        (agents', rng') = nextAgents (enRng en) (enRobots en) robots' (enAgents en) stepped
         -- keys' is forced too: left lazy, it would hold the previous
         -- engine (and so the whole run) when no controller reads its input
         en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq` keys' `seq`
@@ -181,11 +181,11 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
       , robotOdometry = fst (agOdo a) }
 
     noise = simOdometryNoise cfg
-    -- Exact odometry is the true pose; noisy odometry integrates the true
-    -- motion with a random relative error on each step's distance and turn.
     -- Every agent's next state: its stepped controller and its odometry
-    -- after the move.
-    updateOdometry rng olds news as stepped
+    -- after the move. Exact odometry is the true pose; noisy odometry
+    -- integrates the true motion with a random relative error on each
+    -- step's distance and turn.
+    nextAgents rng olds news as stepped
       | noise == 0 = (zipWith3 (\a r (_, fut) -> Agent (agProps a) (Right fut) (rPos r, rHeading r))
                                as news stepped, rng)
       | otherwise  = go rng olds news as stepped []
