@@ -25,6 +25,7 @@ import qualified AFrob.AngleSpec
 import qualified AFrob.MergeableRecordSpec
 import qualified AFrob.RobotIOSpec
 import qualified AFrobRobotSim.NotesSection3Spec
+import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
 import qualified AFrobRobotSim.ShapesSpec
@@ -64,6 +65,7 @@ main = hspec $ do
   describe "AFrob.RobotIO"           AFrob.RobotIOSpec.spec
   describe "AFrobRobotSim.Shapes"    AFrobRobotSim.ShapesSpec.spec
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
+  describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
   describe "AFrobRobotSim.SpatialIndex" AFrobRobotSim.SpatialIndexSpec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec

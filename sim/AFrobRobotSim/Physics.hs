@@ -63,6 +63,8 @@ module AFrobRobotSim.Physics
   , arenaOf
   , pointsOver
   , Robot (..)
+  , mkRobot
+  , withHeading
   , Ball (..)
   , robotVelocity
     -- * Stepping
@@ -140,7 +142,23 @@ data Robot = Robot
   , rSpeed   :: !Speed      -- ^ actual translational speed (signed)
   , rStuck   :: !Bool
   , rCharge  :: !Double     -- ^ battery charge, 1 = full
+  , rCos     :: {-# UNPACK #-} !Double  -- ^ @cos rHeading@, kept with the heading
+  , rSin     :: {-# UNPACK #-} !Double  -- ^ @sin rHeading@, kept with the heading
   } deriving (Eq, Show)
+
+-- | A robot of the given kind and id at a position and (normalised)
+-- heading, with its speed, stuckness and charge; 'rCos' and 'rSin' are
+-- computed from the heading. Build robots with this (or 'withHeading'), so
+-- that the two always agree: the physics and the sensors read the
+-- heading's unit vector from them instead of calling @cos@ and @sin@ again
+-- at every step.
+mkRobot :: RobotKind -> RobotId -> Position2 -> Heading -> Speed -> Bool -> Double -> Robot
+mkRobot k i p h v stuck c = Robot k i p h v stuck c (cos h) (sin h)
+
+-- | The robot turned to a new (normalised) heading, 'rCos' and 'rSin'
+-- with it.
+withHeading :: Heading -> Robot -> Robot
+withHeading h r = r { rHeading = h, rCos = cos h, rSin = sin h }
 
 -- | A ball's physical state.
 data Ball = Ball
@@ -170,7 +188,8 @@ batteryStatusOf c
 
 -- | A robot's velocity vector (for kicking balls).
 robotVelocity :: Robot -> Vector2 Double
-robotVelocity r = vector2Polar (rSpeed r) (rHeading r)
+robotVelocity r = Vector2 (rSpeed r * rCos r) (rSpeed r * rSin r)
+  -- vector2Polar (rSpeed r) (rHeading r), with the cached cos and sin
 
 -- | The commanded (left, right) wheel speeds of a command, each clamped to
 -- the given maximum; non-finite values count as 0.
@@ -235,6 +254,8 @@ boxesExtent (b : bs) = foldr grow (boxMinX b, boxMinY b, boxMaxX b, boxMaxY b) b
 data Motion = Motion
   { mvV1     :: !Double      -- speed at the end of the step, unobstructed
   , mvTh1    :: !Double      -- heading at the end of the step
+  , mvCos1   :: !Double      -- cos mvTh1
+  , mvSin1   :: !Double      -- sin mvTh1
   , mvDisp   :: !(Vector2 Double)
   , mvCharge :: !Double      -- battery charge at the end of the step
   }
@@ -254,13 +275,22 @@ robotMotion dt r cmd =
       w       = max (-wLim) (min wLim ((vr - vl) / l))
       th0     = rHeading r
       th1     = th0 + w * dt
+      -- cos th0 and sin th0 are the robot's cached ones: the same numbers
+      c0      = rCos r
+      s0      = rSin r
+      straight = abs (w * dt) < 1e-9
+      -- a step with no turn keeps the heading, and its cos and sin (-0 + 0
+      -- is 0, whose sine is not that of -0, hence 'identical')
+      unturned = identical th1 th0
+      !c1     = if unturned then c0 else cos th1
+      !s1     = if unturned then s0 else sin th1
       vMean   = (v0 + v1) / 2
-      disp    | abs (w * dt) < 1e-9 = vector2Polar (vMean * dt) th0
-              | otherwise           = vector2 (vMean / w * (sin th1 - sin th0))
-                                              (vMean / w * (cos th0 - cos th1))
+      disp    | straight  = Vector2 (vMean * dt * c0) (vMean * dt * s0)
+                            -- vector2Polar (vMean * dt) th0
+              | otherwise = vector2 (vMean / w * (s1 - s0)) (vMean / w * (c0 - c1))
       effort  = (abs (v1 - w * l / 2) + abs (v1 + w * l / 2)) / (2 * kindWSMax k)
       charge1 = max 0 (rCharge r - dt * (0.0005 + 0.003 * effort))
-  in Motion v1 th1 disp charge1
+  in Motion v1 th1 c1 s1 disp charge1
 
 -- The robot after its move, given the fraction of the move at which it
 -- first touches something (if it does).
@@ -276,12 +306,27 @@ finishMove mv r contact =
               s'  = max 0 (s - 1e-9 / max len 1e-300)
           in (p0 .+^ (s' *^ disp), 0, True)
       moved = p1 /= p0
+      th1  = mvTh1 mv
+      h1   = normalizeHeading th1
+      -- The new heading's cos and sin are those of the motion when the
+      -- normalisation left it as it was, and computed again when it
+      -- wrapped around.
+      same = identical h1 th1
   in r { rPos     = p1
-       , rHeading = normalizeHeading (mvTh1 mv)
+       , rHeading = h1
        , rSpeed   = v1'
        , rStuck   = hit || (rStuck r && not moved)
        , rCharge  = mvCharge mv
+       , rCos     = if same then mvCos1 mv else cos h1
+       , rSin     = if same then mvSin1 mv else sin h1
        }
+
+-- Two numbers that are the same number, zeros of the same sign included
+-- (so that their sines are the same bits; NaN is never identical): a
+-- cheaper test than comparing their bits, which is a foreign call.
+identical :: Double -> Double -> Bool
+identical a b = a == b && (a /= 0 || recip a == recip b)
+{-# INLINE identical #-}
 
 -- Some margin around every query rectangle, for rounding.
 slack :: Double

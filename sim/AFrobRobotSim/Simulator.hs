@@ -123,7 +123,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
   where
     dt = simDt cfg
     arena = arenaOf (simBounds cfg) world
-    robots0 = [ Robot k (otRId o) (otPos o) (normalizeHeading (otHdng o)) 0 False 1
+    robots0 = [ mkRobot k (otRId o) (otPos o) (normalizeHeading (otHdng o)) 0 False 1
               | o <- world, Just k <- [robotKindOf o] ]
     agents0 = [ Agent props (Left (ctrl props)) (rPos r, rHeading r)
               | r <- robots0

@@ -58,7 +58,7 @@ genRobot h = do
   v  <- choose (-2, 2)
   st <- arbitrary
   c  <- elements [1, 0.5, 0.2, 0.05]
-  pure (Robot k i (Point2 x y) th v st c)
+  pure (mkRobot k i (Point2 x y) th v st c)
 
 -- | Robots, often crowded (so that they touch and overlap).
 genRobots :: Double -> Gen [Robot]
@@ -137,8 +137,8 @@ refStepRobot dt arena others r cmd =
       moved   = p1 /= p0
       effort  = (abs (v1 - w * l / 2) + abs (v1 + w * l / 2)) / (2 * kindWSMax k)
       charge1 = max 0 (rCharge r - dt * (0.0005 + 0.003 * effort))
-  in r { rPos = p1, rHeading = normalizeHeading th1, rSpeed = v1'
-       , rStuck = hit || (rStuck r && not moved), rCharge = charge1 }
+  in withHeading (normalizeHeading th1)
+       r { rPos = p1, rSpeed = v1', rStuck = hit || (rStuck r && not moved), rCharge = charge1 }
 
 refFirstContact :: Position2 -> Vector2 Double -> Arena -> [Robot] -> Maybe Double
 refFirstContact p d arena others
