@@ -24,6 +24,7 @@ import qualified AFRP.VectorSpaceSpec
 import qualified AFrob.AngleSpec
 import qualified AFrob.MergeableRecordSpec
 import qualified AFrob.RobotIOSpec
+import qualified AFrobRobotSim.ClearanceSpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.RenderSpec
@@ -65,6 +66,7 @@ main = hspec $ do
   describe "AFrob.RobotIO"           AFrob.RobotIOSpec.spec
   describe "AFrobRobotSim.Shapes"    AFrobRobotSim.ShapesSpec.spec
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
+  describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
   describe "AFrobRobotSim.SpatialIndex" AFrobRobotSim.SpatialIndexSpec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec

@@ -88,6 +88,7 @@ import           AFRP.Geometry
 import           AFrob.Angle             (normalizeHeading)
 import           AFrob.Dimensions
 import           AFrob.RobotIO           (BatteryStatus (..))
+import           AFrobRobotSim.Clearance
 import           AFrobRobotSim.Robot     (DriveCommand (..))
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex
@@ -96,20 +97,26 @@ import           AFrobRobotSim.World
 -- | The static part of a world: its obstacles, the boundary included, and
 -- (computed when first needed) their grid index. @Arena boxes@ builds one
 -- and matches one, as if it were a plain record of 'arenaBoxes'.
-data Arena = MkArena [Box] BoxIndex (Double, Double, Double, Double)
-  -- the boxes, their index and their bounding box (both lazy)
+data Arena = MkArena [Box] BoxIndex (Double, Double, Double, Double) Clearance
+  -- the boxes, their index, their bounding box and their clearance (all
+  -- lazy)
 
 -- | The arena's boxes on a grid.
 arenaIndex :: Arena -> BoxIndex
-arenaIndex (MkArena _ bi _) = bi
+arenaIndex (MkArena _ bi _ _) = bi
 
 arenaExtent :: Arena -> (Double, Double, Double, Double)
-arenaExtent (MkArena _ _ e) = e
+arenaExtent (MkArena _ _ e _) = e
+
+arenaClearance :: Arena -> Clearance
+arenaClearance (MkArena _ _ _ cl) = cl
 
 -- | The arena of a list of boxes.
 pattern Arena :: [Box] -> Arena
-pattern Arena { arenaBoxes } <- MkArena arenaBoxes _ _
-  where Arena bs = MkArena bs (boxIndex bs) (boxesExtent bs)
+pattern Arena { arenaBoxes } <- MkArena arenaBoxes _ _ _
+  where Arena bs = let bi = boxIndex bs
+                       e  = boxesExtent bs
+                   in MkArena bs bi e (clearanceOf bs bi e)
 {-# COMPLETE Arena #-}
 
 -- | The arena of a world: its walls and blocks, and four thick boxes just
@@ -349,13 +356,20 @@ firstContactST arena near xs ys i drift p d@(Vector2 dx dy)
           qx = px + dx
           qy = py + dy
           rb = robotRadius + slack
+          -- No box is within reach when the clearance at the start exceeds
+          -- the move and the radius (with room for rounding): testing the
+          -- boxes would find no contact.
+          clear = clearanceAt (arenaClearance arena) px py - rb - slack
           -- the earliest contact so far (contacts are fractions in [0, 1];
           -- infinity for none)
-          boxHit = foldBoxesIn (arenaIndex arena) (min px qx - rb) (min py qy - rb)
-                                                 (max px qx + rb) (max py qy + rb)
-            (\acc _ b -> case sweepCircleBox p robotRadius d b of
-                           Just (s, _) -> min s acc
-                           Nothing     -> acc) (1 / 0)
+          boxHit
+            | clear > 0 && clear * clear > dx * dx + dy * dy = 1 / 0
+            | otherwise =
+                foldBoxesIn (arenaIndex arena) (min px qx - rb) (min py qy - rb)
+                                               (max px qx + rb) (max py qy + rb)
+                  (\acc _ b -> case sweepCircleBox p robotRadius d b of
+                                 Just (s, _) -> min s acc
+                                 Nothing     -> acc) (1 / 0)
           rr = 2 * robotRadius + drift + slack
       hit <- foldPointsInM near (min px qx - rr) (min py qy - rr) (max px qx + rr) (max py qy + rr)
                (\acc j -> if j == i then pure acc else do
