@@ -226,7 +226,9 @@ stepRobotsNear near dt arena cmds = runST $ do
   -- the current centres: the old ones, replaced as the robots move
   xs <- newDblArr (max 1 n)
   ys <- newDblArr (max 1 n)
-  mapM_ (\(i, Robot { rPos = Point2 x y }) -> writeD xs i x >> writeD ys i y) (zip [0 ..] robots0)
+  let start !_ []                                 = pure ()
+      start !i ((Robot { rPos = Point2 x y }, _) : rest) = writeD xs i x >> writeD ys i y >> start (i + 1) rest
+  start 0 cmds
   let go !_ !_ [] = pure []
       go !i !drift ((r, c) : rest) = do
         let mv = robotMotion dt r c
@@ -240,8 +242,7 @@ stepRobotsNear near dt arena cmds = runST $ do
         pure (r' : rs)
   go (0 :: Int) 0 cmds
   where
-    robots0 = map fst cmds
-    n       = length robots0
+    n = length cmds
 
 -- The centres of robots (or of anything) on a grid over the arena.
 robotIndex :: Arena -> [Robot] -> PointIndex

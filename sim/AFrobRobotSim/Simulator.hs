@@ -140,17 +140,25 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         (key, keys') = case enKeys en of
           (tk, c) : rest | tk <= t + dt * 1e-6 -> (Just c, rest)
           ks                                    -> (Nothing, ks)
-        stepped = [ stepAgent t a (senseRobot ctx i (agOdo a) key)
-                  | (i, a) <- zip [0 ..] (enAgents en) ]
-        outputs = map fst stepped
+        -- Every controller's step, in template order, all of them at once
+        -- when any is needed (a failing controller fails the step: its
+        -- messages and the next state, never the robots' positions now).
+        -- Strict loops here and below: the step needs every element, and
+        -- lazy zips would build a thunk per robot and list.
+        stepped = stepAll 0 (enAgents en)
+        stepAll !i (a : as) = case stepAgent t a (senseRobot ctx i (agOdo a) key) of
+          r@(!_, !_) -> let !rest = stepAll (i + 1) as in r : rest
+        stepAll _  []       = []
+        drives (r : rs) ((o, _) : os) = let !rest = drives rs os in (r, soDrive o) : rest
+        drives _        _             = []
         snapshot = WorldState
           { wsTime     = t
           , wsRobots   = zipWith robotState (enRobots en) (enAgents en)
           , wsBalls    = map bPos (enBalls en)
           , wsMessages = [ printf "[%.2f] %s.%d: %s" t (rpType (agProps a)) (rpId (agProps a)) m
-                         | (a, o) <- zip (enAgents en) outputs, m <- soMessages o ]
+                         | (a, (o, _)) <- zip (enAgents en) stepped, m <- soMessages o ]
           }
-        robots' = stepRobotsNear (scRobotIndex ctx) dt arena (zip (enRobots en) (map soDrive outputs))
+        robots' = stepRobotsNear (scRobotIndex ctx) dt arena (drives (enRobots en) stepped)
         moved   = stepBalls dt arena robots' (enBalls en)
         balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
           Nothing -> moved
@@ -186,8 +194,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
     -- integrates the true motion with a random relative error on each
     -- step's distance and turn.
     nextAgents rng olds news as stepped
-      | noise == 0 = (zipWith3 (\a r (_, fut) -> Agent (agProps a) (Right fut) (rPos r, rHeading r))
-                               as news stepped, rng)
+      | noise == 0 = (exact as news stepped, rng)
       | otherwise  = go rng olds news as stepped []
       where
         go g (r0 : rs0) (r1 : rs1) (a : as') ((_, fut) : st) acc =
@@ -200,6 +207,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
               d'       = vector2Rotate (h - rHeading r0) ((1 + noise * u1) *^ dTrue)
           in go g2 rs0 rs1 as' st (Agent (agProps a) (Right fut) (p .+^ d', h') : acc)
         go g _ _ _ _ acc = (reverse acc, g)
+        exact (a : as') (r : rs) ((_, fut) : st) =
+          let !rest = exact as' rs st in Agent (agProps a) (Right fut) (rPos r, rHeading r) : rest
+        exact _ _ _ = []
 
 forceList :: [a] -> ()
 forceList = foldr seq ()
