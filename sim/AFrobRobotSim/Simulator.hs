@@ -1,4 +1,5 @@
 {-# LANGUAGE BangPatterns        #-}
+{-# LANGUAGE UnboxedTuples       #-}
 {-# LANGUAGE ScopedTypeVariables #-}
 -- |
 -- Module      : AFrobRobotSim.Simulator
@@ -23,7 +24,9 @@ module AFrobRobotSim.Simulator
   , ControllerError (..)
   ) where
 
-import           Control.Exception       (Exception (..), SomeException, mapException)
+import           Control.Exception       (Exception (..), SomeAsyncException, SomeException, catch,
+                                          throwIO)
+import           GHC.IO                  (IO (..), unsafeDupablePerformIO)
 import           Data.Bits               (shiftR, xor)
 import           Data.List               (sortOn)
 import           Data.Word               (Word64)
@@ -176,7 +179,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
             Left sf   -> evalAtZero sf input
             Right fut -> evalAt fut dt input
           forced (o, fut) = fut `seq` soDrive o `seq` forceList (soMessages o) `seq` (o, fut)
-      in mapException (blame props t) (forced res)
+      in blaming (blame props t) (forced res)
 
     blame props t (e :: SomeException) = case fromException e of
       Just (ce :: ControllerError) -> ce
@@ -210,6 +213,21 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         exact (a : as') (r : rs) ((_, fut) : st) =
           let !rest = exact as' rs st in Agent (agProps a) (Right fut) (rPos r, rHeading r) : rest
         exact _ _ _ = []
+
+-- | @blaming f v@ is @v@, with an exception that its evaluation raises
+-- turned into @f e@: 'Control.Exception.mapException', but leaving
+-- asynchronous exceptions (Ctrl-C, a timeout) as they are, so that an
+-- interrupted run is not reported as a failing controller; and without
+-- 'unsafePerformIO''s guard against two threads evaluating @v@ at once
+-- (a walk of the stack at every step of every robot), which a pure @v@
+-- does not need.
+blaming :: (SomeException -> ControllerError) -> a -> a
+blaming f v = unsafeDupablePerformIO (IO (\s -> case v of !r -> (# s, r #)) `catch` handler)
+  where
+    handler e = case fromException e of
+      Just (_ :: SomeAsyncException) -> throwIO e
+      Nothing                        -> throwIO (f e)
+{-# INLINE blaming #-}
 
 forceList :: [a] -> ()
 forceList = foldr seq ()

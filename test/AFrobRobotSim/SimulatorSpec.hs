@@ -2,7 +2,7 @@
 -- | The simulation engine, checked against hand-computed physics.
 module AFrobRobotSim.SimulatorSpec (spec) where
 
-import           Control.Exception (ErrorCall (..), evaluate)
+import           Control.Exception (AsyncException (..), ErrorCall (..), evaluate, throw)
 import           Data.List         (isInfixOf)
 import           Test.Hspec        hiding (after)
 
@@ -223,6 +223,12 @@ spec = do
                          (\rps -> if rpId rps == 4 then bad rps else idle rps) idle
       evaluate (length (concatMap wsMessages (take 300 run)))
         `shouldThrow` (\e -> ceRobotType e == "SimbotA" && ceRobotId e == 4 && within 1e-9 1 (ceTime e))
+    it "lets an asynchronous exception (Ctrl-C) through as it is, not as the controller's failure" $ do
+      let interrupted _ = proc _ -> do
+            t <- localTime -< ()
+            returnA -< if t >= 0.5 then throw UserInterrupt else mrFinalize ddBrake
+          run = simulate 0.01 [OTSimbotA 1 (Point2 0 0) 0] interrupted idle
+      evaluate (length (concatMap wsMessages (take 100 run))) `shouldThrow` (== UserInterrupt)
   where
     mentions s = either (any (s `isInfixOf`)) (const False)
 
