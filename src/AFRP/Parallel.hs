@@ -293,7 +293,7 @@ stepArrB dt b src@(Arr sa) = runRW# (\s0 ->
         let fill i s
               | isTrue# (i >=# n) = s
               | otherwise = case indexSmallArray# sa i of
-                  (# node #) -> case stepMember node dt b of
+                  (# node #) -> case stepInline node dt b of
                     (# !node', c #) -> fill (i +# 1#)
                       (writeSmallArray# outs i c (writeSmallArray# dst i node' s))
             collect i acc s
@@ -307,15 +307,6 @@ stepArrB dt b src@(Arr sa) = runRW# (\s0 ->
   where
     !(I# n) = arrLength src
 
--- 'stepN' on a member, with the node of an 'AFRP.Integration.integral' at
--- 'Double' (the commonest member of a large collection) stepped here
--- instead of through a call: the same sum as 'stepN''s case for 'NIntD',
--- @y_n = y_(n-1) + dt_n * a_(n-1)@, the same successor.
-stepMember :: Node b c -> DTime -> b -> (# Node b c, c #)
-stepMember n dt b = case n of
-  NIntD acc prev -> let !acc' = acc + dt * prev in (# NIntD acc' b, acc' #)
-  _              -> stepN n dt b
-{-# INLINE stepMember #-}
 
 -- An immutable array of members.
 data Arr a = Arr (SmallArray# a)

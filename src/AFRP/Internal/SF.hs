@@ -75,6 +75,7 @@ module AFRP.Internal.SF
   , Boxed (..)
     -- * Stepping
   , stepN
+  , stepInline
   , boxStep
   , freezeN
   , deferN
@@ -220,6 +221,17 @@ stepN n dt a = case n of
   -- 'AFRP.Integration.integral' at 'Double' computes it.
   NIntD acc prev -> let !acc' = acc + dt * prev
                     in (# NIntD acc' a, acc' #)
+
+-- | 'stepN', with the node of an 'AFRP.Integration.integral' at 'Double'
+-- (the commonest leaf of the networks that combinators step themselves:
+-- the members of a collection, the running part of a switch) stepped in
+-- place instead of through a call: the same sum as 'stepN''s case for
+-- 'NIntD', @y_n = y_(n-1) + dt_n * a_(n-1)@, and the same successor.
+stepInline :: Node a b -> DTime -> a -> (# Node a b, b #)
+stepInline n dt a = case n of
+  NIntD acc prev -> let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
+  _              -> stepN n dt a
+{-# INLINE stepInline #-}
 
 -- Rebuilding a node whose two children were both stateful before the step:
 -- as the smart constructor would, but with the common case (both still
