@@ -440,8 +440,19 @@ loopN2 d f = case d of
 -- the knot would: the delay stores its input unevaluated). So the loop is
 -- @loopPreN c' f'@ afterwards; it never becomes pure (the delay is state).
 loopPreN :: c -> Node (a, c) (b, c) -> Node a b
+-- loop (second (iPre c) >>> arr g), the shape of 'AFRP.Loop.loopPre' on a
+-- function: @f@ stays that function forever, so it is applied where it
+-- stands (lazily, as its node would: 'stepN' of @arr g@ on @(a, c)@ is
+-- @g (a, c)@ unevaluated) rather than stepped and rebuilt at every step.
+loopPreN c (NPure (FDG g)) = loopPreG g c
 loopPreN c f = NStep (\dt a -> case stepN f dt (a, c) of
   (# f', bc #) -> case loopPreN (snd bc) f' of !m -> (# m, fst bc #))
+
+-- @loopPreG g c = loopPreN c (arrN g)@.
+loopPreG :: ((a, c) -> (b, c)) -> c -> Node a b
+loopPreG g = go
+  where
+    go c = NStep (\_ a -> let bc = g (a, c) in case go (snd bc) of !m -> (# m, fst bc #))
 
 -- | @loopK d f = loop (second d >>> f)@, by a knot: @d@ sees, as its
 -- input, the second component of the output that @f@ is producing at this
