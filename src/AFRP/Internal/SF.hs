@@ -177,8 +177,18 @@ stepN n dt a = case n of
   NComp f g     -> case f of
     -- A pure function in front of a stateful node (the usual shape): apply
     -- it (lazily, as its own node would) without a step of its own.
-    NPure (FDG p) -> case stepN g dt (p a) of
-      (# g', b #) -> case compNI f g' of !n' -> (# n', b #)
+    NPure (FDG p) -> case g of
+      -- arr p >>> (h >>> arr q), the usual shape of a stateful node
+      -- between two functions (arr p >>> integral >>> arr q): h is stepped
+      -- on p a and q applied to its output, both lazily, as the two
+      -- composition nodes would, without a step of the inner one. The
+      -- successor is the one the two steps would build (compNI inside,
+      -- then outside).
+      NComp h gq@(NPure (FDG q)) -> case stepN h dt (p a) of
+        (# h', c #) -> case compNI h' gq of
+          !g' -> case compNI f g' of !n' -> (# n', q c #)
+      _ -> case stepN g dt (p a) of
+        (# g', b #) -> case compNI f g' of !n' -> (# n', b #)
     _             -> case stepN f dt a of
       (# f', c #) -> case g of
         -- ... and one behind it.
