@@ -50,8 +50,8 @@ module AFRP.Parallel
 
 import           Data.Foldable    (foldl')
 import           GHC.Exts         (Int (I#), SmallArray#, indexSmallArray#, isTrue#,
-                                   newSmallArray#, readSmallArray#, runRW#, sizeofSmallArray#,
-                                   unsafeFreezeSmallArray#, writeSmallArray#, (+#), (-#), (<#), (>=#))
+                                   newSmallArray#, runRW#, sizeofSmallArray#, thawSmallArray#,
+                                   unsafeFreezeSmallArray#, writeSmallArray#, (+#), (-#), (<#))
 
 import           AFRP.Event
 import           AFRP.Internal.SF
@@ -107,9 +107,9 @@ parN' stepper rf = go
     go ns = NStep (\dt a -> case stepper dt (rf a ns) of
       (# ns', cs #) -> case go ns' of !n -> (# n, cs #))
 
--- | 'parB' on a list: the members are kept in an array and stepped, in
--- order, on the input directly, with no routed collection in between and
--- no recursion as deep as the list is long.
+-- | 'parB' on a list: the members are kept in an array and stepped on the
+-- input directly (see 'stepArrB'), with no routed collection in between
+-- and no recursion as deep as the list is long.
 parBL :: [SF a b] -> SF a [b]
 parBL sfs = SF (go (arrayFromList (map sfNode sfs)))
   where
@@ -282,40 +282,30 @@ stepColL dt = go
       (# !n', c #) -> case go rest of
         (# ns', cs #) -> (# n' : ns', c : cs #)
 
--- Step every member of an array on the same input (for 'parBL'), in
--- order, each successor evaluated: the successors (a new array) and the
--- outputs (a list, built from the last one back).
+-- Step every member of an array on the same input (for 'parBL'), each
+-- successor evaluated: the successors (a new array) and the outputs (a
+-- list). The members are stepped from the last to the first, so that
+-- each output is consed onto the list of the ones after it as soon as it
+-- is produced, with no array of outputs to collect them from afterwards.
+-- The steps are pure and independent of each other, so their order is
+-- not observable (which of several failing members is reported is not
+-- specified, as for any pure code). The new array starts as a copy of
+-- the old one (a block copy, cheaper than filling it with a placeholder)
+-- and every element is overwritten.
 stepArrB :: DTime -> b -> Arr (Node b c) -> (# Arr (Node b c), [c] #)
 stepArrB dt b src@(Arr sa) = runRW# (\s0 ->
-  case newSmallArray# n undefElem s0 of
-    (# s1, dst #) -> case newSmallArray# n undefElem s1 of
-      (# s2, outs #) ->
-        let fill i s
-              | isTrue# (i >=# n) = s
-              | otherwise = case indexSmallArray# sa i of
-                  (# node #) -> case stepMember node dt b of
-                    (# !node', c #) -> fill (i +# 1#)
-                      (writeSmallArray# outs i c (writeSmallArray# dst i node' s))
-            collect i acc s
-              | isTrue# (i <# 0#) = (# s, acc #)
-              | otherwise = case readSmallArray# outs i s of
-                  (# s', c #) -> collect (i -# 1#) (c : acc) s'
-        in case fill 0# s2 of
-          s3 -> case unsafeFreezeSmallArray# dst s3 of
-            (# s4, frozen #) -> case collect (n -# 1#) [] s4 of
-              (# _, cs #) -> (# Arr frozen, cs #))
+  case thawSmallArray# sa 0# n s0 of
+    (# s1, dst #) ->
+      let fill i acc s
+            | isTrue# (i <# 0#) = (# s, acc #)
+            | otherwise = case indexSmallArray# sa i of
+                (# node #) -> case stepInline node dt b of
+                  (# !node', c #) -> fill (i -# 1#) (c : acc) (writeSmallArray# dst i node' s)
+      in case fill (n -# 1#) [] s1 of
+        (# s2, cs #) -> case unsafeFreezeSmallArray# dst s2 of
+          (# _, frozen #) -> (# Arr frozen, cs #))
   where
     !(I# n) = arrLength src
-
--- 'stepN' on a member, with the node of an 'AFRP.Integration.integral' at
--- 'Double' (the commonest member of a large collection) stepped here
--- instead of through a call: the same sum as 'stepN''s case for 'NIntD',
--- @y_n = y_(n-1) + dt_n * a_(n-1)@, the same successor.
-stepMember :: Node b c -> DTime -> b -> (# Node b c, c #)
-stepMember n dt b = case n of
-  NIntD acc prev -> let !acc' = acc + dt * prev in (# NIntD acc' b, acc' #)
-  _              -> stepN n dt b
-{-# INLINE stepMember #-}
 
 -- An immutable array of members.
 data Arr a = Arr (SmallArray# a)

@@ -1,6 +1,7 @@
 {-# LANGUAGE UnboxedTuples #-}
 {-# LANGUAGE GADTs         #-}
 {-# LANGUAGE BangPatterns  #-}
+{-# LANGUAGE MagicHash     #-}
 -- Full laziness would float the per-step decisions of the switches out of
 -- the closures that make them, as thunks allocated at every step.
 {-# OPTIONS_GHC -fno-full-laziness #-}
@@ -49,6 +50,8 @@ module AFRP.Switch
   , dkSwitch
   ) where
 
+import           GHC.Exts         (isTrue#, reallyUnsafePtrEquality#)
+
 import           AFRP.Event
 import           AFRP.Internal.SF
 
@@ -77,15 +80,43 @@ dSwitch (SF n0) k = SF (go n0)
   where
     go n = NStep (step n)
     step n dt a = case n of
-      -- sf &&& e, the usual shape: stepped exactly as 'stepN' steps the
-      -- fan (f, then g, rebuilt by 'fanN'), but its output and its event
-      -- are kept apart instead of being paired and then selected from.
-      NFan f g -> case stepN f dt a of
-        (# f', b #) -> case stepN g dt a of
-          (# g', e #) -> case fanN f' g' of
-            !n' -> (# NStep (resume n' e dt a), b #)
+      NFan f g -> stepFan f g dt a
       _        -> case stepN n dt a of
         (# n', be #) -> (# NStep (resume n' (snd be) dt a), fst be #)
+    -- sf &&& e, the usual shape: stepped exactly as 'stepN' steps the fan
+    -- (f, then g), but its output and its event are kept apart instead of
+    -- being paired and then selected from, and while both sides stay
+    -- stateful the fan is not rebuilt: the switch keeps its two sides.
+    goFan f g = NStep (stepFan f g)
+    stepFan f g dt a = case stepInline f dt a of
+      (# f', b #) -> case stepN g dt a of
+        (# g', e #)
+          -- The event is already the evaluated constructor 'NoEvent' (as
+          -- an edge or 'never' returns it; found by pointer equality,
+          -- which forces nothing): 'resume' would take its 'NoEvent'
+          -- branch at the next step, and what that branch does can be
+          -- decided now, by looking only at evaluated values (the nodes
+          -- and their strict fields; a constant event only if it is
+          -- itself the evaluated 'NoEvent'), so it is not deferred. This
+          -- is @resume n' e dt0 a0 = stepN (watch n' go)@ with @n' =
+          -- fanN f' g'@, case by case:
+          | evaluatedNoEvent e -> case g' of
+              NPure (FDC x) -> case f' of
+                -- fanN gives a constant pair: 'unwatched' would look at
+                -- its lazy value, so that is left to 'resume'
+                NPure (FDC _)                 -> defer (fanN f' g') e dt a b
+                -- sf &&& never: the switch can never fire
+                _ | evaluatedNoEvent x        -> (# f', b #)
+                  | otherwise                 -> defer (NFan f' g') e dt a b
+              NPure _ -> case f' of
+                NPure _                       -> (# go (fanN f' g'), b #)
+                _                             -> (# goFan f' g', b #)
+              _                               -> (# goFan f' g', b #)
+          -- An event that is still a thunk (it may depend, through a
+          -- loop, on the output of this very step) is left to 'resume',
+          -- as are the event occurrences.
+          | otherwise -> defer (fanN f' g') e dt a b
+    defer n' e dt a b = case n' of !m -> (# NStep (resume m e dt a), b #)
     -- Decoupled: whether the event @e@ occurred at the step that produced
     -- it is examined only at the next step (this is @deferN next@ with
     -- @next = watch n' go@ or @k c@ started then, stepped at once).
@@ -94,6 +125,16 @@ dSwitch (SF n0) k = SF (go n0)
         Just m  -> stepN m dt a
         Nothing -> step n' dt a
       Event c -> case stepN (sfNode (k c)) dt0 a0 of (# m, _ #) -> stepN m dt a
+
+-- Is the value, as it stands, the evaluated constructor 'NoEvent'? It is
+-- never evaluated: a thunk (even one that would evaluate to 'NoEvent')
+-- gives 'False'. A nullary constructor has a single static closure, and
+-- compiled code refers to it by one (tagged) pointer; anything else that
+-- denotes 'NoEvent' (an indirection, say) gives 'False' too, which only
+-- means that the decision is deferred as it would have been anyway.
+evaluatedNoEvent :: Event c -> Bool
+evaluatedNoEvent e = isTrue# (reallyUnsafePtrEquality# e NoEvent)
+{-# INLINE evaluatedNoEvent #-}
 
 -- Continue watching a stepped node, unless its event can no longer occur.
 -- Both patterns inspect only values that the step just evaluated.

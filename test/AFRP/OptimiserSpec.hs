@@ -46,6 +46,19 @@ spec = do
       let sf' = runTo sf [(0, 1)]
       isPureSF sf' `shouldBe` True
       snd (stepSF sf' 1 21) `shouldBe` 42
+    it "a dSwitch on never disappears after one step (its NoEvent is not deferred)" $ do
+      let sf = dSwitch (arr (* 2) &&& never) (\() -> constant 0) :: SF Int Int
+          sf' = runTo sf [(0, 1)]
+      isPureSF sf' `shouldBe` True
+      snd (stepSF sf' 1 21) `shouldBe` 42
+    it "a dSwitch on an edge still switches one step after the edge" $ do
+      -- edge returns the evaluated NoEvent, decided at once; its
+      -- occurrence is decided at the next step.
+      let sf = dSwitch (identity &&& (arr (> 1) >>> edge)) (\() -> constant (-1)) :: SF Int Int
+          sf1 = runTo sf [(0, 0)]
+      map (snd . stepSF sf1 1) [0, 1, 2] `shouldBe` [0, 1, 2]
+      isPureSF (runTo sf1 [(1, 2), (1, 5)]) `shouldBe` True
+      snd (stepSF (runTo sf1 [(1, 2), (1, 5)]) 1 7) `shouldBe` (-1)
     it "a switch that has switched into a constant is that constant" $ do
       let sf = switch (constant 'a' &&& after 1 ()) (\() -> constant 'b') :: SF () Char
           sf' = runTo sf [(0, ()), (1, ())]

@@ -302,6 +302,23 @@ dSwitchLoop = proc () -> do
       e <- edge -< v > 1
   returnA -< v
 
+-- The same with the switch on a fan (sf &&& e, the shape whose evaluated
+-- NoEvent is decided at once), its event side reading the fed-back event
+-- through a pure function ...
+dSwitchFanLoop :: SF () Double
+dSwitchFanLoop = proc () -> do
+  rec v <- dSwitch ((arr fst >>> localTime) &&& arr snd) (\() -> localTime >>> arr (+ 10)) -< ((), e)
+      e <- edge -< v > 1
+  returnA -< v
+
+-- ... and through a stateful one.
+dSwitchFanLoopStateful :: SF () Double
+dSwitchFanLoopStateful = proc () -> do
+  rec v <- dSwitch ((arr fst >>> localTime) &&& (first localTime >>> arr snd))
+                   (\() -> localTime >>> arr (+ 10)) -< ((), e)
+      e <- edge -< v > 1
+  returnA -< v
+
 -- drSwitch restarting localTime whenever its own output reaches 1.
 drSwitchLoop :: SF () Double
 drSwitchLoop = proc () -> do
@@ -342,6 +359,10 @@ decouplingSpec = describe "decoupling of the delayed switches (rec / loop)" $ do
     -- v: 0, 0.5, 1.0, 1.5 (edge of v > 1 here; old output), then the new
     -- localTime + 10 started at 1.5: 10.5, 11.0.
     runDt 0.5 dSwitchLoop (replicate 6 ()) `shouldTerminateWith` [0, 0.5, 1.0, 1.5, 10.5, 11.0]
+
+  it "dSwitch on a fan: the event may depend on the switch's own output" $ do
+    runDt 0.5 dSwitchFanLoop (replicate 6 ()) `shouldTerminateWith` [0, 0.5, 1.0, 1.5, 10.5, 11.0]
+    runDt 0.5 dSwitchFanLoopStateful (replicate 6 ()) `shouldTerminateWith` [0, 0.5, 1.0, 1.5, 10.5, 11.0]
 
   it "drSwitch: the event may depend on the switch's own output" $
     runDt 0.5 drSwitchLoop (replicate 7 ()) `shouldTerminateWith` [0, 0.5, 1.0, 0.5, 1.0, 0.5, 1.0]

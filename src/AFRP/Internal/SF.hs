@@ -75,6 +75,7 @@ module AFRP.Internal.SF
   , Boxed (..)
     -- * Stepping
   , stepN
+  , stepInline
   , boxStep
   , freezeN
   , deferN
@@ -176,8 +177,18 @@ stepN n dt a = case n of
   NComp f g     -> case f of
     -- A pure function in front of a stateful node (the usual shape): apply
     -- it (lazily, as its own node would) without a step of its own.
-    NPure (FDG p) -> case stepN g dt (p a) of
-      (# g', b #) -> case compNI f g' of !n' -> (# n', b #)
+    NPure (FDG p) -> case g of
+      -- arr p >>> (h >>> arr q), the usual shape of a stateful node
+      -- between two functions (arr p >>> integral >>> arr q): h is stepped
+      -- on p a and q applied to its output, both lazily, as the two
+      -- composition nodes would, without a step of the inner one. The
+      -- successor is the one the two steps would build (compNI inside,
+      -- then outside).
+      NComp h gq@(NPure (FDG q)) -> case stepN h dt (p a) of
+        (# h', c #) -> case compNI h' gq of
+          !g' -> case compNI f g' of !n' -> (# n', q c #)
+      _ -> case stepN g dt (p a) of
+        (# g', b #) -> case compNI f g' of !n' -> (# n', b #)
     _             -> case stepN f dt a of
       (# f', c #) -> case g of
         -- ... and one behind it.
@@ -220,6 +231,17 @@ stepN n dt a = case n of
   -- 'AFRP.Integration.integral' at 'Double' computes it.
   NIntD acc prev -> let !acc' = acc + dt * prev
                     in (# NIntD acc' a, acc' #)
+
+-- | 'stepN', with the node of an 'AFRP.Integration.integral' at 'Double'
+-- (the commonest leaf of the networks that combinators step themselves:
+-- the members of a collection, the running part of a switch) stepped in
+-- place instead of through a call: the same sum as 'stepN''s case for
+-- 'NIntD', @y_n = y_(n-1) + dt_n * a_(n-1)@, and the same successor.
+stepInline :: Node a b -> DTime -> a -> (# Node a b, b #)
+stepInline n dt a = case n of
+  NIntD acc prev -> let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
+  _              -> stepN n dt a
+{-# INLINE stepInline #-}
 
 -- Rebuilding a node whose two children were both stateful before the step:
 -- as the smart constructor would, but with the common case (both still
@@ -428,8 +450,19 @@ loopN2 d f = case d of
 -- the knot would: the delay stores its input unevaluated). So the loop is
 -- @loopPreN c' f'@ afterwards; it never becomes pure (the delay is state).
 loopPreN :: c -> Node (a, c) (b, c) -> Node a b
+-- loop (second (iPre c) >>> arr g), the shape of 'AFRP.Loop.loopPre' on a
+-- function: @f@ stays that function forever, so it is applied where it
+-- stands (lazily, as its node would: 'stepN' of @arr g@ on @(a, c)@ is
+-- @g (a, c)@ unevaluated) rather than stepped and rebuilt at every step.
+loopPreN c (NPure (FDG g)) = loopPreG g c
 loopPreN c f = NStep (\dt a -> case stepN f dt (a, c) of
   (# f', bc #) -> case loopPreN (snd bc) f' of !m -> (# m, fst bc #))
+
+-- @loopPreG g c = loopPreN c (arrN g)@.
+loopPreG :: ((a, c) -> (b, c)) -> c -> Node a b
+loopPreG g = go
+  where
+    go c = NStep (\_ a -> let bc = g (a, c) in case go (snd bc) of !m -> (# m, fst bc #))
 
 -- | @loopK d f = loop (second d >>> f)@, by a knot: @d@ sees, as its
 -- input, the second component of the output that @f@ is producing at this
