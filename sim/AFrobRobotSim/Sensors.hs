@@ -172,8 +172,9 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
                                  else rayToRobot ray m (Point2 (pointX (ixRobotGrid ix) j) (pointY (ixRobotGrid ix) j)))
                         boxT)
     radius = simbotDiameter / 2
-    -- the heading's unit vector, computed once for all of this robot's rays
-    headingDir = headingVector (rHeading me)
+    -- the heading's unit vector, for all of this robot's rays: the cos and
+    -- sin the robot keeps with its heading, the numbers of 'headingVector'
+    headingDir = Vector2 (rCos me) (rSin me)
 
 -- A point of an index near a robot: its distance and its index.
 data Near = Near !Double !Int
