@@ -1,6 +1,4 @@
-{-# LANGUAGE BangPatterns  #-}
-{-# LANGUAGE MagicHash     #-}
-{-# LANGUAGE UnboxedTuples #-}
+{-# LANGUAGE BangPatterns #-}
 -- |
 -- Module      : AFrobRobotSim.SpatialIndex
 -- Description : Uniform grids over the world, so that collision tests and
@@ -56,11 +54,10 @@ module AFrobRobotSim.SpatialIndex
   , writeD
   ) where
 
-import           Control.Monad.ST (ST, runST)
-import           GHC.Exts
-import           GHC.ST           (ST (..))
+import           Control.Monad.ST (runST)
 
-import           AFrobRobotSim.Shapes (Box (..))
+import           AFrobRobotSim.FlatArray
+import           AFrobRobotSim.Shapes     (Box (..))
 
 ------------------------------------------------------------------------------
 -- Grids
@@ -102,13 +99,6 @@ gridCellSize = gCs
 gridCells :: Grid -> Int
 gridCells g = gNx g * gNy g
 
--- | Is a number finite (neither NaN nor infinite)? @v - v@ is 0 exactly
--- for finite @v@ and NaN otherwise (cheaper than 'isNaN' and
--- 'isInfinite', which are foreign calls).
-finite :: Double -> Bool
-finite v = v - v == 0
-{-# INLINE finite #-}
-
 -- The column (or row) of a coordinate, clamped to the grid.
 cellOf :: Double -> Double -> Int -> Double -> Int
 cellOf o cs n v =
@@ -116,72 +106,6 @@ cellOf o cs n v =
   in if c >= 1 then (if c >= fromIntegral n then n - 1 else truncate c)
      else 0
 {-# INLINE cellOf #-}
-
-------------------------------------------------------------------------------
--- Unboxed arrays (just what is needed here)
-
-data IntArr = IntArr ByteArray#
-data DblArr = DblArr ByteArray#
-data MIntArr s = MIntArr (MutableByteArray# s)
--- | A mutable array of 'Double's.
-data MDblArr s = MDblArr (MutableByteArray# s)
-
-newIntArr :: Int -> Int -> ST s (MIntArr s)
-newIntArr (I# n) (I# v) = ST $ \s -> case newByteArray# (n *# 8#) s of
-  (# s1, a #) -> case setIntArray a 0# n v s1 of s2 -> (# s2, MIntArr a #)
-  where
-    setIntArray a i m x s
-      | isTrue# (i >=# m) = s
-      | otherwise         = setIntArray a (i +# 1#) m x (writeIntArray# a i x s)
-
--- | A new array of @n@ numbers (their values unspecified).
-newDblArr :: Int -> ST s (MDblArr s)
-newDblArr (I# n) = ST $ \s -> case newByteArray# (n *# 8#) s of
-  (# s1, a #) -> (# s1, MDblArr a #)
-
--- | Read and write an element (no bounds checks).
-readD :: MDblArr s -> Int -> ST s Double
-readD (MDblArr a) (I# i) = ST $ \s -> case readDoubleArray# a i s of (# s1, x #) -> (# s1, D# x #)
-{-# INLINE readD #-}
-
-readI :: MIntArr s -> Int -> ST s Int
-readI (MIntArr a) (I# i) = ST $ \s -> case readIntArray# a i s of (# s1, x #) -> (# s1, I# x #)
-{-# INLINE readI #-}
-
-writeI :: MIntArr s -> Int -> Int -> ST s ()
-writeI (MIntArr a) (I# i) (I# x) = ST $ \s -> case writeIntArray# a i x s of s1 -> (# s1, () #)
-{-# INLINE writeI #-}
-
--- | Write a Double element (no bounds checks).
-writeD :: MDblArr s -> Int -> Double -> ST s ()
-writeD (MDblArr a) (I# i) (D# x) = ST $ \s -> case writeDoubleArray# a i x s of s1 -> (# s1, () #)
-{-# INLINE writeD #-}
-
-freezeI :: MIntArr s -> ST s IntArr
-freezeI (MIntArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, IntArr b #)
-
-freezeD :: MDblArr s -> ST s DblArr
-freezeD (MDblArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, DblArr b #)
-
-indexI :: IntArr -> Int -> Int
-indexI (IntArr a) (I# i) = I# (indexIntArray# a i)
-{-# INLINE indexI #-}
-
-indexD :: DblArr -> Int -> Double
-indexD (DblArr a) (I# i) = D# (indexDoubleArray# a i)
-{-# INLINE indexD #-}
-
--- Fill the start offsets (an exclusive prefix sum of the counts) and
--- return the total.
-prefixSums :: MIntArr s -> Int -> ST s Int
-prefixSums starts cells = go 0 0
-  where
-    go !i !acc
-      | i > cells = pure acc
-      | otherwise = do
-          c <- readI starts i
-          writeI starts i acc
-          go (i + 1) (acc + c)
 
 ------------------------------------------------------------------------------
 -- Static boxes
