@@ -6,13 +6,13 @@
 -- Description : Flat unboxed arrays of numbers, just what the spatial
 --               indexes need.
 --
--- The grids of "AFrobRobotSim.SpatialIndex" keep their cells and
--- coordinates in flat unboxed arrays (base has no unboxed array type of its
--- own that avoids bounds checks and boxing), and the physics moves robots'
--- centres in mutable ones; a module of their own so that more than one
--- index can use them. No bounds checks:
--- callers index within the sizes they allocated. (And 'finite', the test
--- for finite numbers that the indexes and their users share.)
+-- The grids of "AFrobRobotSim.SpatialIndex" and "AFrobRobotSim.RayGrid"
+-- keep their cells and coordinates in flat unboxed arrays (base has no
+-- unboxed array type of its own that avoids bounds checks and boxing), and
+-- the physics moves robots' centres in mutable ones; a module of their own
+-- so that both indexes can use them. No bounds checks: callers index
+-- within the sizes they allocated. (And 'finite', the test for finite
+-- numbers that the indexes and their users share.)
 module AFrobRobotSim.FlatArray
   ( -- * Immutable
     IntArr

@@ -27,10 +27,11 @@
 --
 -- A 'SenseContext' indexes the robots' and balls' centres on a grid
 -- ("AFrobRobotSim.SpatialIndex") the first time a sensor needs it, and the
--- arena's boxes are indexed once: a ray is tested only against the boxes
--- and robots near its 3.25 m segment, the tracker only against what is
--- within range of the robot. The readings are exactly those of testing
--- everything.
+-- arena's boxes are indexed once, with the lists of boxes a ray from each
+-- place can reach ("AFrobRobotSim.RayGrid"): a ray is tested only against
+-- the boxes and robots near its 3.25 m segment, the tracker only against
+-- what is within range of the robot. The readings are exactly those of
+-- testing everything.
 module AFrobRobotSim.Sensors
   ( senseRobot
   , rangeReading
@@ -47,6 +48,7 @@ import           AFRP.Geometry
 import           AFrob.Angle            (normalizeAngle)
 import           AFrob.Dimensions
 import           AFrobRobotSim.Physics
+import           AFrobRobotSim.RayCast  (rayCastBoxes)
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex
@@ -160,7 +162,7 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     rangeAt a
       | not (finite a) = rangeFinderMax
       | otherwise =
-          let ray@(Ray _ _ ux uy _ _ _ _) = rayFrom p (turnedBy (rHeading me) headingDir a)
+          let ray@(Ray _ _ ux uy) = rayFrom p (turnedBy (rHeading me) headingDir a)
               -- the nearest box first; then only a robot whose centre is
               -- within a radius of the ray up to that box can be nearer
               boxT = rayToBoxes arena ray
@@ -197,16 +199,11 @@ rangeReading arena others p heading a
   | otherwise      = let ray = rayFrom p (rayDirection heading a)
                      in reading (foldl (rayToRobot ray) (rayToBoxes arena ray) others)
 
--- A ray: its origin, its direction (a unit vector), and the bounding box
--- (with a margin) of its segment, as long as the range plus a robot's
--- radius: nothing further away can be the nearest hit.
-data Ray = Ray !Double !Double !Double !Double !Double !Double !Double !Double
+-- A ray: its origin and its direction (a unit vector).
+data Ray = Ray !Double !Double !Double !Double
 
 rayFrom :: Position2 -> Vector2 Double -> Ray
-rayFrom (Point2 px py) (Vector2 ux uy) =
-  let ex = px + rayLength * ux
-      ey = py + rayLength * uy
-  in Ray px py ux uy (min px ex - slack) (min py ey - slack) (max px ex + slack) (max py ey + slack)
+rayFrom (Point2 px py) (Vector2 ux uy) = Ray px py ux uy
 {-# INLINE rayFrom #-}
 
 -- | The direction (a unit vector) of the range finder's ray at angle @a@
@@ -253,17 +250,15 @@ quarterTurn a
 rayLength :: Double
 rayLength = rangeFinderMax + simbotDiameter / 2
 
--- The nearest box the ray hits, or the ray's length if none is nearer.
+-- The nearest box the ray hits within its length (the range plus a
+-- robot's radius: nothing further away can be the nearest hit), or that
+-- length if none is nearer.
 rayToBoxes :: Arena -> Ray -> Double
-rayToBoxes arena (Ray px py ux uy x0 y0 x1 y1) =
-  foldBoxesIn (arenaIndex arena) x0 y0 x1 y1
-    (\m _ b -> case rayBox (Point2 px py) (Vector2 ux uy) b of
-                 Just t  -> min t m
-                 Nothing -> m) rayLength
+rayToBoxes arena (Ray px py ux uy) = rayCastBoxes (arenaIndex arena) px py ux uy rayLength
 
 -- The nearer of a distance and the robot (centre) the ray may hit.
 rayToRobot :: Ray -> Double -> Position2 -> Double
-rayToRobot (Ray px py ux uy _ _ _ _) m q =
+rayToRobot (Ray px py ux uy) m q =
   case rayCircle (Point2 px py) (Vector2 ux uy) q (simbotDiameter / 2) of
     Just t  -> min t m
     Nothing -> m

@@ -39,6 +39,8 @@ module AFrobRobotSim.SpatialIndex
   , boxIndexCount
   , boxAt
   , foldBoxesIn
+  , boxIndexRays
+  , boxIndexWild
     -- * Points
   , PointIndex
   , pointIndex
@@ -57,6 +59,7 @@ module AFrobRobotSim.SpatialIndex
 import           Control.Monad.ST (runST)
 
 import           AFrobRobotSim.FlatArray
+import           AFrobRobotSim.RayGrid    (RayGrid, rayGrid)
 import           AFrobRobotSim.Shapes     (Box (..))
 
 ------------------------------------------------------------------------------
@@ -119,6 +122,7 @@ data BoxIndex = BoxIndex
   , biStarts :: !IntArr   -- cell c lists biItems [starts c .. starts (c + 1) - 1]
   , biItems  :: !IntArr
   , biWild   :: [Int]     -- boxes with non-finite coordinates (visited always)
+  , biRays   :: RayGrid   -- for rays ("AFrobRobotSim.RayCast"), built when first needed
   }
 
 -- | Index a list of boxes: the domain is their bounding box.
@@ -145,7 +149,8 @@ boxIndex boxes = runST $ do
             writeD coords (4 * i + 2) c
             writeD coords (4 * i + 3) d) indexed
   co <- freezeD coords
-  pure (BoxIndex grid co n st it [ i | (i, b) <- indexed, not (tameBox b) ])
+  pure (BoxIndex grid co n st it [ i | (i, b) <- indexed, not (tameBox b) ]
+                 (rayGrid (filter (tameBox . snd) indexed)))
   where
     n       = length boxes
     indexed = zip [0 ..] boxes
@@ -176,6 +181,16 @@ boxAt :: BoxIndex -> Int -> Box
 boxAt bi i = let co = biCoords bi
              in Box (indexD co (4 * i)) (indexD co (4 * i + 1)) (indexD co (4 * i + 2)) (indexD co (4 * i + 3))
 {-# INLINE boxAt #-}
+
+-- | The boxes a short ray from each place can meet ("AFrobRobotSim.RayGrid",
+-- for "AFrobRobotSim.RayCast"), built the first time a ray needs them.
+boxIndexRays :: BoxIndex -> RayGrid
+boxIndexRays = biRays
+
+-- | The positions of the boxes with non-finite coordinates (every query
+-- visits them).
+boxIndexWild :: BoxIndex -> [Int]
+boxIndexWild = biWild
 
 -- | @foldBoxesIn bi x0 y0 x1 y1 f z@ folds @f@ (strictly) over the boxes
 -- that overlap the rectangle @[x0, x1] x [y0, y1]@ (closed), giving it the
