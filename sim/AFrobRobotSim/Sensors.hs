@@ -154,6 +154,18 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     -- length has its centre within 'rayLength' plus a radius (3.5 m) of
     -- this one's.
     others = gather (ixRobotGrid ix) i
+    -- Those a quarter-turn ray can hit: a ray meets a disc only if the
+    -- disc's centre is within a radius of the ray's line (the
+    -- discriminant is negative otherwise, by far more than rounding), and
+    -- the four quarter-turn rays lie on the heading's axis and its
+    -- perpendicular. Usually none of the others is that near either line,
+    -- and those four rays then test no robot at all.
+    crossing = filterPoints (\_ qx qy _ ->
+                 let Vector2 c s = headingDir
+                     x = qx - px
+                     y = qy - py
+                 in abs (y * c - x * s) <= radius + slack || abs (x * c + y * s) <= radius + slack)
+                 others
     -- Those within the tracker's range (centre to centre, the distance as
     -- 'vector2RhoTheta' has it: the square root of the same sum of
     -- squares), nearest first, in index order among equally near ones (as
@@ -172,19 +184,20 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
       Just QLeft  -> rangeLeft
       Just QRight -> rangeRight
       Just QBack  -> rangeBack
-      Nothing     -> rangeAt a
-    rangeFront = rangeAt 0
-    rangeLeft  = rangeAt (pi / 2)
-    rangeRight = rangeAt (-pi / 2)
-    rangeBack  = rangeAt pi
-    -- a ray: the nearest box, then any nearer other robot
-    rangeAt a
+      Nothing     -> rangeAt others a
+    rangeFront = rangeAt crossing 0
+    rangeLeft  = rangeAt crossing (pi / 2)
+    rangeRight = rangeAt crossing (-pi / 2)
+    rangeBack  = rangeAt crossing pi
+    -- a ray: the nearest box, then any nearer robot among the given ones
+    rangeAt near a
       | not (finite a) = rangeFinderMax
       | otherwise =
           let Vector2 ux uy = turnedBy (rHeading me) headingDir a
           in reading (foldPoints (\m _ qx qy d2 -> if d2 > rayReach * rayReach then m
                                                  else rayToRobot px py ux uy m qx qy)
-                                 (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) others)
+                                 (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) near)
+    radius = simbotDiameter / 2
     -- the heading's unit vector, computed once for all of this robot's rays
     headingDir = headingVector (rHeading me)
 
@@ -201,6 +214,16 @@ foldPoints f = go
     go !z NoPoint             = z
     go !z (Point j x y d2 ps) = go (f z j x y d2) ps
 {-# INLINE foldPoints #-}
+
+-- The points that pass a test.
+filterPoints :: (Int -> Double -> Double -> Double -> Bool) -> Points -> Points
+filterPoints keep = go
+  where
+    go NoPoint = NoPoint
+    go (Point j x y d2 ps)
+      | keep j x y d2 = Point j x y d2 (go ps)
+      | otherwise     = go ps
+{-# INLINE filterPoints #-}
 
 -- A point of an index near a robot: its distance, its index and its
 -- coordinates.

@@ -358,6 +358,16 @@ spec = do
           let arena = arenaFor w
               si = senseRobot (SenseContext arena rs []) i (origin, 0) Nothing
           in map (siRange si) as === map (refRange arena rs i) as
+    it "reads the quarter-turn range finders exactly with robots a radius from their lines" $
+      -- the quarter-turn rays test only the robots within a radius (and
+      -- some slack) of the heading's axis or its perpendicular
+      property $ forAll genWorld $ \w -> forAll (genRobot (halfSide w)) $ \me ->
+        forAll (listOf1 (genGrazing me)) $ \rs0 ->
+          let rs = me : rs0
+              arena = arenaFor w
+              si = senseRobot (SenseContext arena rs []) 0 (origin, 0) Nothing
+              quarters = [0, pi / 2, pi, -pi / 2]
+          in map (siRange si) quarters === map (refRange arena rs 0) quarters
     it "tracks exactly the robots and balls in range, nearest first" $
       property $ forAll genWorld $ \w -> forAll (genRobots (halfSide w)) $ \rs ->
         forAll (genBalls (halfSide w)) $ \bs ->
@@ -375,6 +385,20 @@ spec = do
               me = rs !! i
           in rangeReading arena others (rPos me) (rHeading me) a === refRange arena rs i a
   where
+    -- A robot whose centre is about a radius (0.25 m) from the heading's
+    -- axis or its perpendicular through another robot's centre, within
+    -- the reach of its range finder, heading anywhere.
+    genGrazing me = do
+      let Point2 px py = rPos me
+          c = cos (rHeading me)
+          s = sin (rHeading me)
+      along <- choose (-3.6, 3.6)
+      off   <- elements [0.25, 0.25 + 1e-12, 0.25 - 1e-12, 0.25 + 1e-9, 0.2501, 0.2499, 0.251, 0.249]
+      side  <- elements [1, -1]
+      axis  <- arbitrary
+      let (a, b) = if axis then (along, side * off) else (side * off, along)
+      r <- genRobot 1
+      pure r { rPos = Point2 (px + a * c - b * s) (py + a * s + b * c) }
     -- A segment: from anywhere (sometimes outside the boxes), or ending
     -- within a millimetre of a box (on its boundary, just outside it, at a
     -- corner), or starting on a cell boundary of the ray grid; mostly as
