@@ -184,19 +184,21 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
       Just QLeft  -> rangeLeft
       Just QRight -> rangeRight
       Just QBack  -> rangeBack
-      Nothing     -> rangeAt others a
-    rangeFront = rangeAt crossing 0
-    rangeLeft  = rangeAt crossing (pi / 2)
-    rangeRight = rangeAt crossing (-pi / 2)
-    rangeBack  = rangeAt crossing pi
-    -- a ray: the nearest box, then any nearer robot among the given ones
-    rangeAt near a
+      Nothing     -> rangeAt a
+    -- (their directions as 'turnedBy' turns them, written out)
+    rangeFront = let Vector2 c s = headingDir in cast crossing c s
+    rangeLeft  = let Vector2 c s = headingDir in cast crossing (negate s) c
+    rangeRight = let Vector2 c s = headingDir in cast crossing s (negate c)
+    rangeBack  = let Vector2 c s = headingDir in cast crossing (negate c) (negate s)
+    rangeAt a
       | not (finite a) = rangeFinderMax
-      | otherwise =
-          let Vector2 ux uy = turnedBy (rHeading me) headingDir a
-          in reading (foldPoints (\m _ qx qy d2 -> if d2 > rayReach * rayReach then m
-                                                 else rayToRobot px py ux uy m qx qy)
-                                 (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) near)
+      | otherwise      = let Vector2 ux uy = turnedBy (rHeading me) headingDir a
+                         in cast others ux uy
+    -- a ray: the nearest box, then any nearer robot among the given ones
+    cast near ux uy =
+      reading (foldPoints (\m _ qx qy d2 -> if d2 > rayReach * rayReach then m
+                                           else rayToRobot px py ux uy m qx qy)
+                          (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) near)
     radius = simbotDiameter / 2
     -- the heading's unit vector, computed once for all of this robot's rays
     headingDir = headingVector (rHeading me)
