@@ -23,9 +23,9 @@
 --
 -- "AFrobRobotSim.SpatialIndex" keeps one of these (built the first time a
 -- ray needs it) in every 'AFrobRobotSim.SpatialIndex.BoxIndex', and
--- 'AFrobRobotSim.SpatialIndex.foldBoxesAlong' reads it.
+-- "AFrobRobotSim.RayCast" reads it.
 module AFrobRobotSim.RayGrid
-  ( RayGrid (..)
+  ( RayGrid
   , rayGrid
   , rayGridReach
   , rayGridTolerance
@@ -66,28 +66,27 @@ maxEntries = 2 ^ (22 :: Int)
 -- | The lists, or none (no finite box, an absurd extent, or too many
 -- entries).
 --
--- A list is @rgItems [rgStarts l .. rgStarts (l + 1) - 1]@ for
+-- A list is @items [starts l .. starts (l + 1) - 1]@ for
 -- @l = 4 * (row * nx + column) + quadrant@, the quadrant 0 for directions
 -- @(>= 0, >= 0)@, 1 for @(< 0, >= 0)@, 2 for @(>= 0, < 0)@ and 3 for
 -- @(< 0, < 0)@; each box at most once per list, in index order.
 data RayGrid
   = NoRayGrid
   | RayGrid
-    { rgX0     :: {-# UNPACK #-} !Double   -- ^ the domain (the boxes' bounding box)
-    , rgY0     :: {-# UNPACK #-} !Double
-    , rgX1     :: {-# UNPACK #-} !Double
-    , rgY1     :: {-# UNPACK #-} !Double
-    , rgInvCs  :: {-# UNPACK #-} !Double   -- ^ 1 / the side of a cell
-    , rgNx     :: {-# UNPACK #-} !Int      -- ^ columns
-    , rgNy     :: {-# UNPACK #-} !Int      -- ^ rows
-    , rgStarts :: !IntArr
-    , rgItems  :: !IntArr
-    }
+      {-# UNPACK #-} !Double  -- the domain (the boxes' bounding box): min x,
+      {-# UNPACK #-} !Double  -- min y,
+      {-# UNPACK #-} !Double  -- max x,
+      {-# UNPACK #-} !Double  -- max y
+      {-# UNPACK #-} !Double  -- 1 / the side of a cell
+      {-# UNPACK #-} !Int     -- columns
+      {-# UNPACK #-} !Int     -- rows
+      !IntArr                 -- list l is items [starts l .. starts (l + 1) - 1]
+      !IntArr                 -- the items: box positions in the original list
 
 -- | How many entries the lists hold in all (0 for no grid).
 rayGridEntries :: RayGrid -> Int
 rayGridEntries NoRayGrid = 0
-rayGridEntries rg        = indexI (rgStarts rg) (4 * rgNx rg * rgNy rg)
+rayGridEntries (RayGrid _ _ _ _ _ nx ny starts _) = indexI starts (4 * nx * ny)
 
 -- | @rayGrid boxes@: the lists for the boxes (each with its index; all
 -- coordinates finite, each box with min <= max).
