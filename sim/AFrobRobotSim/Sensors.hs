@@ -1,3 +1,4 @@
+{-# LANGUAGE BangPatterns    #-}
 {-# LANGUAGE PatternSynonyms #-}
 -- |
 -- Module      : AFrobRobotSim.Sensors
@@ -27,10 +28,12 @@
 --
 -- A 'SenseContext' indexes the robots' and balls' centres on a grid
 -- ("AFrobRobotSim.SpatialIndex") the first time a sensor needs it, and the
--- arena's boxes are indexed once: a ray is tested only against the boxes
--- and robots near its 3.25 m segment, the tracker only against what is
--- within range of the robot. The readings are exactly those of testing
--- everything.
+-- arena's boxes are indexed once, with the lists of boxes a ray from each
+-- place can reach ("AFrobRobotSim.RayGrid"): a ray is tested only against
+-- the boxes near its 3.25 m segment. The other robots within the
+-- tracker's range of a robot are gathered once per sample and shared by
+-- its tracker and its rays (every robot a ray can hit is among them). The
+-- readings are exactly those of testing everything.
 module AFrobRobotSim.Sensors
   ( senseRobot
   , rangeReading
@@ -47,6 +50,7 @@ import           AFRP.Geometry
 import           AFrob.Angle            (normalizeAngle)
 import           AFrob.Dimensions
 import           AFrobRobotSim.Physics
+import           AFrobRobotSim.RayCast  (rayCastBoxes)
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex
@@ -111,14 +115,10 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
   , siRange    = range
   , siMaxRange = rangeFinderMax
   , siRobots   = [ (kindType (rKind o), rId o, angleTo ox oy, d)
-                 | Near d j <- nearest (ixRobotGrid ix) (\j -> j /= i)
-                 , let o  = robotAt j
-                       ox = pointX (ixRobotGrid ix) j
-                       oy = pointY (ixRobotGrid ix) j ]
+                 | Near d j ox oy <- sortNear (inRange others)
+                 , let o = robotAt j ]
   , siBalls    = [ (angleTo bx by, d)
-                 | Near d j <- nearest (ixBallGrid ix) (const True)
-                 , let bx = pointX (ixBallGrid ix) j
-                       by = pointY (ixBallGrid ix) j ]
+                 | Near d _ bx by <- sortNear (inRange (gather (ixBallGrid ix) (-1))) ]
   , siKey      = key
   }
   where
@@ -127,18 +127,52 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     robotAt j = unsafeAt (ixRobots ix) j
     p@(Point2 px py) = rPos me
     tr = trackerRange + slack
-    -- The points of an index within the tracker's range (centre to
-    -- centre, the distance as 'vector2RhoTheta' has it), nearest first,
-    -- in index order among equally near ones (as a stable sort of all of
-    -- them by distance would have them).
-    nearest grid keep = sortNear
-      (foldPointsIn grid (px - tr) (py - tr) (px + tr) (py + tr)
-         (\acc j -> if keep j
-                      then let qx = pointX grid j
-                               qy = pointY grid j
-                               (d, _) = vector2RhoTheta (Point2 qx qy .-. p)
-                           in if d <= trackerRange then Near d j : acc else acc
-                      else acc) [])
+    -- The points of an index (all but number @skip@) within a little more
+    -- than the tracker's range of the robot's centre, with their squared
+    -- distances from it. An index of a few points is scanned, which costs
+    -- less than walking the cells of the square around the range (in the
+    -- 10-robot benchmark, that square covers most of the world).
+    gather grid skip
+      | n <= 32   = scan 0 NoPoint
+      | otherwise = foldPointsIn grid (px - tr) (py - tr) (px + tr) (py + tr) add NoPoint
+      where
+        n = pointIndexCount grid
+        scan !j !acc
+          | j >= n    = acc
+          | otherwise = scan (j + 1) (add acc j)
+        add acc j
+          | j == skip = acc
+          | otherwise =
+              let qx = pointX grid j
+                  qy = pointY grid j
+                  x  = qx - px
+                  y  = qy - py
+                  d2 = x * x + y * y
+              in if d2 <= tr * tr then Point j qx qy d2 acc else acc
+    -- The other robots near this one, gathered once per sample and shared
+    -- by the tracker and every ray: a robot that a ray can hit within its
+    -- length has its centre within 'rayLength' plus a radius (3.5 m) of
+    -- this one's.
+    others = gather (ixRobotGrid ix) i
+    -- Those a quarter-turn ray can hit: a ray meets a disc only if the
+    -- disc's centre is within a radius of the ray's line (the
+    -- discriminant is negative otherwise, by far more than rounding), and
+    -- the four quarter-turn rays lie on the heading's axis and its
+    -- perpendicular. Usually none of the others is that near either line,
+    -- and those four rays then test no robot at all.
+    crossing = filterPoints (\_ qx qy _ ->
+                 let Vector2 c s = headingDir
+                     x = qx - px
+                     y = qy - py
+                 in abs (y * c - x * s) <= radius + slack || abs (x * c + y * s) <= radius + slack)
+                 others
+    -- Those within the tracker's range (centre to centre, the distance as
+    -- 'vector2RhoTheta' has it: the square root of the same sum of
+    -- squares), nearest first, in index order among equally near ones (as
+    -- a stable sort of all of them by distance would have them).
+    inRange = foldPoints (\acc j qx qy d2 ->
+                let d = sqrt d2
+                in if d <= trackerRange then Near d j qx qy : acc else acc) []
     -- the bearing of a point relative to the heading
     angleTo qx qy = let (_, th) = vector2RhoTheta (Point2 qx qy .-. p)
                     in normalizeAngle (th - rHeading me)
@@ -151,40 +185,59 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
       Just QRight -> rangeRight
       Just QBack  -> rangeBack
       Nothing     -> rangeAt a
-    rangeFront = rangeAt 0
-    rangeLeft  = rangeAt (pi / 2)
-    rangeRight = rangeAt (-pi / 2)
-    rangeBack  = rangeAt pi
-    -- a ray: the nearest box, then the nearest other robot near the
-    -- ray's segment
+    -- (their directions as 'turnedBy' turns them, written out)
+    rangeFront = let Vector2 c s = headingDir in cast crossing c s
+    rangeLeft  = let Vector2 c s = headingDir in cast crossing (negate s) c
+    rangeRight = let Vector2 c s = headingDir in cast crossing s (negate c)
+    rangeBack  = let Vector2 c s = headingDir in cast crossing (negate c) (negate s)
     rangeAt a
       | not (finite a) = rangeFinderMax
-      | otherwise =
-          let ray@(Ray _ _ ux uy _ _ _ _) = rayFrom p (turnedBy (rHeading me) headingDir a)
-              -- the nearest box first; then only a robot whose centre is
-              -- within a radius of the ray up to that box can be nearer
-              boxT = rayToBoxes arena ray
-              ex = px + boxT * ux
-              ey = py + boxT * uy
-              rr = radius + slack
-          in reading (foldPointsIn (ixRobotGrid ix) (min px ex - rr) (min py ey - rr) (max px ex + rr) (max py ey + rr)
-                        (\m j -> if j == i then m
-                                 else rayToRobot ray m (Point2 (pointX (ixRobotGrid ix) j) (pointY (ixRobotGrid ix) j)))
-                        boxT)
+      | otherwise      = let Vector2 ux uy = turnedBy (rHeading me) headingDir a
+                         in cast others ux uy
+    -- a ray: the nearest box, then any nearer robot among the given ones
+    cast near ux uy =
+      reading (foldPoints (\m _ qx qy d2 -> if d2 > rayReach * rayReach then m
+                                           else rayToRobot px py ux uy m qx qy)
+                          (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) near)
     radius = simbotDiameter / 2
     -- the heading's unit vector, for all of this robot's rays: the cos and
     -- sin the robot keeps with its heading, the numbers of 'headingVector'
     headingDir = Vector2 (rCos me) (rSin me)
 
--- A point of an index near a robot: its distance and its index.
-data Near = Near !Double !Int
+-- Points of an index near a robot (index, coordinates as indexed and
+-- squared distance from the robot's centre), in a strict list.
+data Points = NoPoint
+            | Point {-# UNPACK #-} !Int {-# UNPACK #-} !Double {-# UNPACK #-} !Double
+                    {-# UNPACK #-} !Double !Points
+
+-- A strict left fold over points.
+foldPoints :: (a -> Int -> Double -> Double -> Double -> a) -> a -> Points -> a
+foldPoints f = go
+  where
+    go !z NoPoint             = z
+    go !z (Point j x y d2 ps) = go (f z j x y d2) ps
+{-# INLINE foldPoints #-}
+
+-- The points that pass a test.
+filterPoints :: (Int -> Double -> Double -> Double -> Bool) -> Points -> Points
+filterPoints keep = go
+  where
+    go NoPoint = NoPoint
+    go (Point j x y d2 ps)
+      | keep j x y d2 = Point j x y d2 (go ps)
+      | otherwise     = go ps
+{-# INLINE filterPoints #-}
+
+-- A point of an index near a robot: its distance, its index and its
+-- coordinates.
+data Near = Near !Double !Int !Double !Double
 
 -- Sort by distance, then index (an insertion sort: the lists are short).
 sortNear :: [Near] -> [Near]
 sortNear = foldr insert []
   where
     insert x [] = [x]
-    insert x@(Near d j) (y@(Near e k) : ys)
+    insert x@(Near d j _ _) (y@(Near e k _ _) : ys)
       | d < e || (d == e && j < k) = x : y : ys
       | otherwise                  = y : insert x ys
 
@@ -193,22 +246,11 @@ sortNear = foldr insert []
 -- the heading (see the module documentation). A non-finite angle reads
 -- 'rangeFinderMax'.
 rangeReading :: Arena -> [Position2] -> Position2 -> Heading -> Angle -> Distance
-rangeReading arena others p heading a
+rangeReading arena others (Point2 px py) heading a
   | not (finite a) = rangeFinderMax
-  | otherwise      = let ray = rayFrom p (rayDirection heading a)
-                     in reading (foldl (rayToRobot ray) (rayToBoxes arena ray) others)
-
--- A ray: its origin, its direction (a unit vector), and the bounding box
--- (with a margin) of its segment, as long as the range plus a robot's
--- radius: nothing further away can be the nearest hit.
-data Ray = Ray !Double !Double !Double !Double !Double !Double !Double !Double
-
-rayFrom :: Position2 -> Vector2 Double -> Ray
-rayFrom (Point2 px py) (Vector2 ux uy) =
-  let ex = px + rayLength * ux
-      ey = py + rayLength * uy
-  in Ray px py ux uy (min px ex - slack) (min py ey - slack) (max px ex + slack) (max py ey + slack)
-{-# INLINE rayFrom #-}
+  | otherwise      = let Vector2 ux uy = rayDirection heading a
+                     in reading (foldl (\m (Point2 qx qy) -> rayToRobot px py ux uy m qx qy)
+                                       (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) others)
 
 -- | The direction (a unit vector) of the range finder's ray at angle @a@
 -- for a robot with heading @h@: the heading's unit vector @(cos h, sin h)@
@@ -251,21 +293,19 @@ quarterTurn a
   | otherwise                 = Nothing
 {-# INLINE quarterTurn #-}
 
+-- How far from the robot's centre the centre of a robot it hits can be:
+-- the ray's length and a radius, and some slack.
+rayReach :: Double
+rayReach = rayLength + simbotDiameter / 2 + slack
+
 rayLength :: Double
 rayLength = rangeFinderMax + simbotDiameter / 2
 
--- The nearest box the ray hits, or the ray's length if none is nearer.
-rayToBoxes :: Arena -> Ray -> Double
-rayToBoxes arena (Ray px py ux uy x0 y0 x1 y1) =
-  foldBoxesIn (arenaIndex arena) x0 y0 x1 y1
-    (\m _ b -> case rayBox (Point2 px py) (Vector2 ux uy) b of
-                 Just t  -> min t m
-                 Nothing -> m) rayLength
-
--- The nearer of a distance and the robot (centre) the ray may hit.
-rayToRobot :: Ray -> Double -> Position2 -> Double
-rayToRobot (Ray px py ux uy _ _ _ _) m q =
-  case rayCircle (Point2 px py) (Vector2 ux uy) q (simbotDiameter / 2) of
+-- The nearer of a distance and the robot (centre) the ray from @(px, py)@
+-- in the direction @(ux, uy)@ may hit.
+rayToRobot :: Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double
+rayToRobot px py ux uy m qx qy =
+  case rayCircle (Point2 px py) (Vector2 ux uy) (Point2 qx qy) (simbotDiameter / 2) of
     Just t  -> min t m
     Nothing -> m
 {-# INLINE rayToRobot #-}

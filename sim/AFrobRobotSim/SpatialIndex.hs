@@ -1,6 +1,4 @@
-{-# LANGUAGE BangPatterns  #-}
-{-# LANGUAGE MagicHash     #-}
-{-# LANGUAGE UnboxedTuples #-}
+{-# LANGUAGE BangPatterns #-}
 -- |
 -- Module      : AFrobRobotSim.SpatialIndex
 -- Description : Uniform grids over the world, so that collision tests and
@@ -41,6 +39,8 @@ module AFrobRobotSim.SpatialIndex
   , boxIndexCount
   , boxAt
   , foldBoxesIn
+  , boxIndexRays
+  , boxIndexWild
     -- * Points
   , PointIndex
   , pointIndex
@@ -56,11 +56,11 @@ module AFrobRobotSim.SpatialIndex
   , writeD
   ) where
 
-import           Control.Monad.ST (ST, runST)
-import           GHC.Exts
-import           GHC.ST           (ST (..))
+import           Control.Monad.ST (runST)
 
-import           AFrobRobotSim.Shapes (Box (..))
+import           AFrobRobotSim.FlatArray
+import           AFrobRobotSim.RayGrid    (RayGrid, rayGrid)
+import           AFrobRobotSim.Shapes     (Box (..))
 
 ------------------------------------------------------------------------------
 -- Grids
@@ -102,13 +102,6 @@ gridCellSize = gCs
 gridCells :: Grid -> Int
 gridCells g = gNx g * gNy g
 
--- | Is a number finite (neither NaN nor infinite)? @v - v@ is 0 exactly
--- for finite @v@ and NaN otherwise (cheaper than 'isNaN' and
--- 'isInfinite', which are foreign calls).
-finite :: Double -> Bool
-finite v = v - v == 0
-{-# INLINE finite #-}
-
 -- The column (or row) of a coordinate, clamped to the grid.
 cellOf :: Double -> Double -> Int -> Double -> Int
 cellOf o cs n v =
@@ -116,72 +109,6 @@ cellOf o cs n v =
   in if c >= 1 then (if c >= fromIntegral n then n - 1 else truncate c)
      else 0
 {-# INLINE cellOf #-}
-
-------------------------------------------------------------------------------
--- Unboxed arrays (just what is needed here)
-
-data IntArr = IntArr ByteArray#
-data DblArr = DblArr ByteArray#
-data MIntArr s = MIntArr (MutableByteArray# s)
--- | A mutable array of 'Double's.
-data MDblArr s = MDblArr (MutableByteArray# s)
-
-newIntArr :: Int -> Int -> ST s (MIntArr s)
-newIntArr (I# n) (I# v) = ST $ \s -> case newByteArray# (n *# 8#) s of
-  (# s1, a #) -> case setIntArray a 0# n v s1 of s2 -> (# s2, MIntArr a #)
-  where
-    setIntArray a i m x s
-      | isTrue# (i >=# m) = s
-      | otherwise         = setIntArray a (i +# 1#) m x (writeIntArray# a i x s)
-
--- | A new array of @n@ numbers (their values unspecified).
-newDblArr :: Int -> ST s (MDblArr s)
-newDblArr (I# n) = ST $ \s -> case newByteArray# (n *# 8#) s of
-  (# s1, a #) -> (# s1, MDblArr a #)
-
--- | Read and write an element (no bounds checks).
-readD :: MDblArr s -> Int -> ST s Double
-readD (MDblArr a) (I# i) = ST $ \s -> case readDoubleArray# a i s of (# s1, x #) -> (# s1, D# x #)
-{-# INLINE readD #-}
-
-readI :: MIntArr s -> Int -> ST s Int
-readI (MIntArr a) (I# i) = ST $ \s -> case readIntArray# a i s of (# s1, x #) -> (# s1, I# x #)
-{-# INLINE readI #-}
-
-writeI :: MIntArr s -> Int -> Int -> ST s ()
-writeI (MIntArr a) (I# i) (I# x) = ST $ \s -> case writeIntArray# a i x s of s1 -> (# s1, () #)
-{-# INLINE writeI #-}
-
--- | Write a Double element (no bounds checks).
-writeD :: MDblArr s -> Int -> Double -> ST s ()
-writeD (MDblArr a) (I# i) (D# x) = ST $ \s -> case writeDoubleArray# a i x s of s1 -> (# s1, () #)
-{-# INLINE writeD #-}
-
-freezeI :: MIntArr s -> ST s IntArr
-freezeI (MIntArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, IntArr b #)
-
-freezeD :: MDblArr s -> ST s DblArr
-freezeD (MDblArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, DblArr b #)
-
-indexI :: IntArr -> Int -> Int
-indexI (IntArr a) (I# i) = I# (indexIntArray# a i)
-{-# INLINE indexI #-}
-
-indexD :: DblArr -> Int -> Double
-indexD (DblArr a) (I# i) = D# (indexDoubleArray# a i)
-{-# INLINE indexD #-}
-
--- Fill the start offsets (an exclusive prefix sum of the counts) and
--- return the total.
-prefixSums :: MIntArr s -> Int -> ST s Int
-prefixSums starts cells = go 0 0
-  where
-    go !i !acc
-      | i > cells = pure acc
-      | otherwise = do
-          c <- readI starts i
-          writeI starts i acc
-          go (i + 1) (acc + c)
 
 ------------------------------------------------------------------------------
 -- Static boxes
@@ -195,6 +122,7 @@ data BoxIndex = BoxIndex
   , biStarts :: !IntArr   -- cell c lists biItems [starts c .. starts (c + 1) - 1]
   , biItems  :: !IntArr
   , biWild   :: [Int]     -- boxes with non-finite coordinates (visited always)
+  , biRays   :: RayGrid   -- for rays ("AFrobRobotSim.RayCast"), built when first needed
   }
 
 -- | Index a list of boxes: the domain is their bounding box.
@@ -221,7 +149,8 @@ boxIndex boxes = runST $ do
             writeD coords (4 * i + 2) c
             writeD coords (4 * i + 3) d) indexed
   co <- freezeD coords
-  pure (BoxIndex grid co n st it [ i | (i, b) <- indexed, not (tameBox b) ])
+  pure (BoxIndex grid co n st it [ i | (i, b) <- indexed, not (tameBox b) ]
+                 (rayGrid (filter (tameBox . snd) indexed)))
   where
     n       = length boxes
     indexed = zip [0 ..] boxes
@@ -252,6 +181,16 @@ boxAt :: BoxIndex -> Int -> Box
 boxAt bi i = let co = biCoords bi
              in Box (indexD co (4 * i)) (indexD co (4 * i + 1)) (indexD co (4 * i + 2)) (indexD co (4 * i + 3))
 {-# INLINE boxAt #-}
+
+-- | The boxes a short ray from each place can meet ("AFrobRobotSim.RayGrid",
+-- for "AFrobRobotSim.RayCast"), built the first time a ray needs them.
+boxIndexRays :: BoxIndex -> RayGrid
+boxIndexRays = biRays
+
+-- | The positions of the boxes with non-finite coordinates (every query
+-- visits them).
+boxIndexWild :: BoxIndex -> [Int]
+boxIndexWild = biWild
 
 -- | @foldBoxesIn bi x0 y0 x1 y1 f z@ folds @f@ (strictly) over the boxes
 -- that overlap the rectangle @[x0, x1] x [y0, y1]@ (closed), giving it the

@@ -1,0 +1,120 @@
+{-# LANGUAGE BangPatterns  #-}
+{-# LANGUAGE MagicHash     #-}
+{-# LANGUAGE UnboxedTuples #-}
+-- |
+-- Module      : AFrobRobotSim.FlatArray
+-- Description : Flat unboxed arrays of numbers, just what the spatial
+--               indexes need.
+--
+-- The grids of "AFrobRobotSim.SpatialIndex" and "AFrobRobotSim.RayGrid"
+-- keep their cells and coordinates in flat unboxed arrays (base has no
+-- unboxed array type of its own that avoids bounds checks and boxing), and
+-- the physics moves robots' centres in mutable ones; a module of their own
+-- so that both indexes can use them. No bounds checks: callers index
+-- within the sizes they allocated. (And 'finite', the test for finite
+-- numbers that the indexes and their users share.)
+module AFrobRobotSim.FlatArray
+  ( -- * Immutable
+    IntArr
+  , DblArr
+  , indexI
+  , indexD
+    -- * Mutable
+  , MIntArr
+  , MDblArr
+  , newIntArr
+  , newDblArr
+  , readI
+  , writeI
+  , readD
+  , writeD
+  , freezeI
+  , freezeD
+  , prefixSums
+    -- * Numbers
+  , finite
+  ) where
+
+import           GHC.Exts
+import           GHC.ST   (ST (..))
+
+-- | An immutable array of 'Int's.
+data IntArr = IntArr ByteArray#
+-- | An immutable array of 'Double's.
+data DblArr = DblArr ByteArray#
+-- | A mutable array of 'Int's.
+data MIntArr s = MIntArr (MutableByteArray# s)
+-- | A mutable array of 'Double's.
+data MDblArr s = MDblArr (MutableByteArray# s)
+
+-- | A new array of @n@ 'Int's, all @v@.
+newIntArr :: Int -> Int -> ST s (MIntArr s)
+newIntArr (I# n) (I# v) = ST $ \s -> case newByteArray# (n *# 8#) s of
+  (# s1, a #) -> case setIntArray a 0# n v s1 of s2 -> (# s2, MIntArr a #)
+  where
+    setIntArray a i m x s
+      | isTrue# (i >=# m) = s
+      | otherwise         = setIntArray a (i +# 1#) m x (writeIntArray# a i x s)
+
+-- | A new array of @n@ numbers (their values unspecified).
+newDblArr :: Int -> ST s (MDblArr s)
+newDblArr (I# n) = ST $ \s -> case newByteArray# (n *# 8#) s of
+  (# s1, a #) -> (# s1, MDblArr a #)
+
+-- | Read a 'Double' element (no bounds checks).
+readD :: MDblArr s -> Int -> ST s Double
+readD (MDblArr a) (I# i) = ST $ \s -> case readDoubleArray# a i s of (# s1, x #) -> (# s1, D# x #)
+{-# INLINE readD #-}
+
+-- | Read an 'Int' element (no bounds checks).
+readI :: MIntArr s -> Int -> ST s Int
+readI (MIntArr a) (I# i) = ST $ \s -> case readIntArray# a i s of (# s1, x #) -> (# s1, I# x #)
+{-# INLINE readI #-}
+
+-- | Write an 'Int' element (no bounds checks).
+writeI :: MIntArr s -> Int -> Int -> ST s ()
+writeI (MIntArr a) (I# i) (I# x) = ST $ \s -> case writeIntArray# a i x s of s1 -> (# s1, () #)
+{-# INLINE writeI #-}
+
+-- | Write a Double element (no bounds checks).
+writeD :: MDblArr s -> Int -> Double -> ST s ()
+writeD (MDblArr a) (I# i) (D# x) = ST $ \s -> case writeDoubleArray# a i x s of s1 -> (# s1, () #)
+{-# INLINE writeD #-}
+
+-- | The array, immutable from now on (not copied: write no more to it).
+freezeI :: MIntArr s -> ST s IntArr
+freezeI (MIntArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, IntArr b #)
+
+-- | The array, immutable from now on (not copied: write no more to it).
+freezeD :: MDblArr s -> ST s DblArr
+freezeD (MDblArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, DblArr b #)
+
+-- | An element (no bounds checks).
+indexI :: IntArr -> Int -> Int
+indexI (IntArr a) (I# i) = I# (indexIntArray# a i)
+{-# INLINE indexI #-}
+
+-- | An element (no bounds checks).
+indexD :: DblArr -> Int -> Double
+indexD (DblArr a) (I# i) = D# (indexDoubleArray# a i)
+{-# INLINE indexD #-}
+
+-- | @prefixSums starts cells@ turns the counts @starts[0 .. cells]@ into
+-- start offsets (an exclusive prefix sum: each cell's items then run from
+-- its start to the next cell's) and returns the total.
+prefixSums :: MIntArr s -> Int -> ST s Int
+prefixSums starts cells = go 0 0
+  where
+    go !i !acc
+      | i > cells = pure acc
+      | otherwise = do
+          c <- readI starts i
+          writeI starts i acc
+          go (i + 1) (acc + c)
+
+-- | Is a number finite (neither NaN nor infinite)? @v - v@ is 0 exactly
+-- for finite @v@ and NaN otherwise (cheaper than 'isNaN' and
+-- 'isInfinite', which are foreign calls).
+finite :: Double -> Bool
+finite v = v - v == 0
+{-# INLINE finite #-}
