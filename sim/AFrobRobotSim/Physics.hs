@@ -368,18 +368,33 @@ firstContactST arena near xs ys i drift p d@(Vector2 dx dy)
             | otherwise =
                 foldBoxesIn (arenaIndex arena) (min px qx - rb) (min py qy - rb)
                                                (max px qx + rb) (max py qy + rb)
-                  (\acc _ b -> case sweepCircleBox p robotRadius d b of
-                                 Just (s, _) -> min s acc
-                                 Nothing     -> acc) (1 / 0)
+                  (\acc _ b -> boxContact px py dx dy b acc) (1 / 0)
           rr = 2 * robotRadius + drift + slack
       hit <- foldPointsInM near (min px qx - rr) (min py qy - rr) (max px qx + rr) (max py qy + rr)
                (\acc j -> if j == i then pure acc else do
                    ox <- readD xs j
                    oy <- readD ys j
-                   pure (case sweepCircleCircle p robotRadius d (Point2 ox oy) robotRadius of
-                           Just (s, _) -> min s acc
-                           Nothing     -> acc)) boxHit
+                   pure (robotContact px py dx dy ox oy acc)) boxHit
       pure (if hit == 1 / 0 then Nothing else Just hit)
+
+-- The earlier of @acc@ and the contact of a robot at @(px, py)@ moving by
+-- @(dx, dy)@ with a box (as 'sweepCircleBox' has it), and with another
+-- robot at @(ox, oy)@ ('sweepCircleCircle'). Functions of their own, not
+-- inlined into the folds that call them: inlined, GHC floated their
+-- tests on the move out of the fold's callback as thunks, allocated and
+-- evaluated at every query.
+boxContact :: Double -> Double -> Double -> Double -> Box -> Double -> Double
+boxContact px py dx dy b acc = case sweepCircleBox (Point2 px py) robotRadius (Vector2 dx dy) b of
+  Just (s, _) -> min s acc
+  Nothing     -> acc
+{-# NOINLINE boxContact #-}
+
+robotContact :: Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double
+robotContact px py dx dy ox oy acc =
+  case sweepCircleCircle (Point2 px py) robotRadius (Vector2 dx dy) (Point2 ox oy) robotRadius of
+    Just (s, _) -> min s acc
+    Nothing     -> acc
+{-# NOINLINE robotContact #-}
 
 foldST :: (b -> a -> ST s b) -> b -> [a] -> ST s b
 foldST _ z []       = pure z
