@@ -148,20 +148,20 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         -- messages and the next state, never the robots' positions now).
         -- Strict loops here and below: the step needs every element, and
         -- lazy zips would build a thunk per robot and list.
-        stepped = stepAll 0 (enAgents en)
-        stepAll !i (a : as) = case stepAgent t a (senseRobot ctx i (agOdo a) key) of
-          r@(!_, !_) -> let !rest = stepAll (i + 1) as in r : rest
-        stepAll _  []       = []
-        drives (r : rs) ((o, _) : os) = let !rest = drives rs os in (r, soDrive o) : rest
-        drives _        _             = []
+        -- The loop gives the steps and each robot with its drive command.
+        (stepped, drives) = case stepAll 0 (enAgents en) (enRobots en) of (# ss, ds #) -> (ss, ds)
+        stepAll !i (a : as) (r : rs) = case stepAgent t a (senseRobot ctx i (agOdo a) key) of
+          st@(!o, !_) -> case stepAll (i + 1) as rs of
+            (# ss, ds #) -> (# st : ss, (r, soDrive o) : ds #)
+        stepAll _  _        _        = (# [], [] #)
         snapshot = WorldState
           { wsTime     = t
-          , wsRobots   = zipWith robotState (enRobots en) (enAgents en)
+          , wsRobots   = robotStates (enRobots en) (enAgents en)
           , wsBalls    = map bPos (enBalls en)
           , wsMessages = [ printf "[%.2f] %s.%d: %s" t (rpType (agProps a)) (rpId (agProps a)) m
                          | (a, (o, _)) <- zip (enAgents en) stepped, m <- soMessages o ]
           }
-        robots' = stepRobotsNear (scRobotIndex ctx) dt arena (drives (enRobots en) stepped)
+        robots' = stepRobotsNear (scRobotIndex ctx) dt arena drives
         moved   = stepBalls dt arena robots' (enBalls en)
         balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
           Nothing -> moved
@@ -185,6 +185,11 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
       Just (ce :: ControllerError) -> ce
       Nothing                      -> ControllerError (rpType props) (rpId props) t e
 
+    -- every robot's state, all at once when the list is first needed
+    robotStates (r : rs) (a : as) = let !rest = robotStates rs as
+                                        !st   = robotState r a
+                                    in st : rest
+    robotStates _ _               = []
     robotState r a = RobotState
       { robotType = kindType (rKind r), robotId = rId r, robotPos = rPos r
       , robotHeading = rHeading r, robotSpeed = rSpeed r, robotStuck = rStuck r
