@@ -197,8 +197,16 @@ stepN n dt a = case n of
           (# g', b #) -> case rebuildComp f' g' of !n' -> (# n', b #)
   NPar f g      -> case g of
     -- first f
-    NPure FDI -> let (x, c) = a in case stepN f dt x of
-      (# f', y #) -> case firstN f' of !n' -> (# n', (y, c) #)
+    NPure FDI -> let (x, c) = a in case f of
+      -- first (arr p >>> h), the shape arrow notation gives a command
+      -- (@y <- h -< e@ is @first (arr (\env -> e) >>> h)@): h is stepped on
+      -- p x (lazily, as the inner composition would) without a step of
+      -- its own; the successor is the one the two steps would build.
+      NComp pf@(NPure (FDG p)) h -> case stepN h dt (p x) of
+        (# h', y #) -> case compNI pf h' of
+          !f' -> case firstN f' of !n' -> (# n', (y, c) #)
+      _ -> case stepN f dt x of
+        (# f', y #) -> case firstN f' of !n' -> (# n', (y, c) #)
     _         -> case f of
       -- second g
       NPure FDI -> let (c, x) = a in case stepN g dt x of
