@@ -70,3 +70,15 @@ spec = do
       let sf' = runTo sf [(0, 5)]
       isPureSF sf' `shouldBe` True
       snd (stepSF sf' 1 5) `shouldBe` 1
+
+  describe "shortcuts of the stepper" $ do
+    it "steps first (arr p >>> sf), as arrow notation builds it, as its two nodes would" $ do
+      let sf = first (arr (* 2) >>> integral) :: SF (Double, Char) (Double, Char)
+      embed sf ((1, 'a'), [(0.5, Just (2, 'b')), (0.5, Just (3, 'c')), (1, Just (0, 'd'))])
+        `shouldBe` [(0, 'a'), (1, 'b'), (3, 'c'), (9, 'd')]
+    it "keeps first (arr p >>> sf) lazy in both components" $ do
+      -- p's result reaches the delay unevaluated, and the second component
+      -- is passed on without being looked at
+      let sf = first (arr (\x -> x `seq` 'p') >>> iPre 'z') :: SF (Int, Int) (Char, Int)
+      map fst (embed sf ((1, undefined), [(1, Just (undefined, undefined))])) `shouldBe` "zp"
+      map snd (embed sf ((undefined, 7), [(1, Just (undefined, 8))])) `shouldBe` [7, 8]
