@@ -27,6 +27,7 @@ import qualified AFrob.RobotIOSpec
 import qualified AFrobRobotSim.ClearanceSpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.PhysicsSpec
+import qualified AFrobRobotSim.RayCastSpec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
 import qualified AFrobRobotSim.ShapesSpec
@@ -68,6 +69,7 @@ main = hspec $ do
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
+  describe "AFrobRobotSim.RayCast" AFrobRobotSim.RayCastSpec.spec
   describe "AFrobRobotSim.SpatialIndex" AFrobRobotSim.SpatialIndexSpec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec

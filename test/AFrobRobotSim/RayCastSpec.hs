@@ -1,0 +1,152 @@
+-- | "AFrobRobotSim.RayCast": a ray finds, through the ray grid of
+-- "AFrobRobotSim.RayGrid", every box it can meet, and the nearest hit is
+-- the one testing every box finds, bit for bit.
+module AFrobRobotSim.RayCastSpec (spec) where
+
+import           Data.List             (nub, sort)
+import           Test.Hspec
+import           Test.QuickCheck
+
+import           AFRP.Geometry
+import           AFrobRobotSim.Physics
+import           AFrobRobotSim.RayCast
+import           AFrobRobotSim.RayGrid (rayGridEntries)
+import           AFrobRobotSim.Sensors (rayDirection)
+import           AFrobRobotSim.Shapes
+import           AFrobRobotSim.SpatialIndex
+import           AFrobRobotSim.World
+import           AFrobRobotSim.WorldGen
+
+spec :: Spec
+spec = do
+  describe "foldBoxesAlong" $ do
+    it "visits every box within 1 mm of the segment (and only boxes near its bounding box)" $
+      property $ forAll genWorld $ \w -> forAll (genSegment w) $ \(ax, ay, bx, by) ->
+        let Arena boxes = arenaFor w
+            bi = boxIndex boxes
+            got = nub (sort (foldBoxesAlong bi ax ay bx by (\acc k _ -> k : acc) []))
+            near = [ k | (k, b) <- zip [0 ..] boxes, segmentBoxDistance (ax, ay) (bx, by) b <= 0.9e-3 ]
+            t = rayGridTolerance
+            inRect = and [ a <= max ax bx + t && c >= min ax bx - t && b <= max ay by + t && d >= min ay by - t
+                         | k <- got, let Box a b c d = boxes !! k ]
+        in counterexample (show (got, near)) (all (`elem` got) near && inRect)
+    it "visits a box just beyond the end of the longest segment, from a corner of a cell" $
+      -- the hardest case for the ray grid: the cell lies behind the
+      -- start, so nothing else in it is nearer the box
+      property $ forAll genWorld $ \(World bounds os) ->
+        forAll (chooseInt (0, 10)) $ \i -> forAll (chooseInt (0, 10)) $ \j ->
+        forAll (oneof [choose (-pi, -pi / 2), elements [-pi, -pi / 2, -3 * pi / 4]]) $ \th ->
+        forAll (elements [0, 1e-12, 0.5e-3, 0.85e-3]) $ \gap -> forAll (elements [0, 1e-13, -1e-13]) $ \e ->
+          let Bounds x0 y0 _ _ = bounds
+              cs = rayGridReach / 3
+              ax = x0 - 1 + fromIntegral i * cs + e
+              ay = y0 - 1 + fromIntegral j * cs - e
+              ux = cos th
+              uy = sin th
+              bx = ax + rayGridReach * ux
+              by = ay + rayGridReach * uy
+              -- a square of side 0.1 that the ray enters @gap@ after the end
+              k = gap + 0.05 / max (abs ux) (abs uy)
+              extra = boxAround (Point2 (bx + k * ux) (by + k * uy)) 0.1 0.1
+              Arena boxes0 = arenaOf bounds os
+              boxes = boxes0 ++ [extra]
+              got = foldBoxesAlong (boxIndex boxes) ax ay bx by (\acc n _ -> n : acc) []
+          in segmentBoxDistance (ax, ay) (bx, by) extra <= 0.9e-3 ==> (length boxes - 1) `elem` got
+    it "visits each box at most once when the ray grid answers" $
+      property $ forAll genWorld $ \w -> forAll (genSegment w) $ \(ax, ay, bx, by) ->
+        let Arena boxes = arenaFor w
+            bi = boxIndex boxes
+            h = halfSide w + 1
+            got = foldBoxesAlong bi ax ay bx by (\acc k _ -> k : acc) []
+            answers = abs ax <= h && abs ay <= h && (bx - ax) ^ (2 :: Int) + (by - ay) ^ (2 :: Int) <= rayGridReach ^ (2 :: Int)
+        in rayGridEntries (boxIndexRays bi) > 0 && (not answers || length got == length (nub got))
+
+  describe "rayCastBoxes" $
+    it "is the nearest hit over every box, as rayBox has it" $
+      property $ forAll genWorld $ \w -> forAll (genSegment w) $ \(ax, ay, bx, by) ->
+        forAll (elements [Nothing, Just 0, Just (pi / 2), Just pi, Just (-pi / 2)]) $ \quarter ->
+        forAll (elements [3.25, 3.3, 1, 6]) $ \len ->
+          let Arena boxes = arenaFor w
+              bi = boxIndex boxes
+              -- the segment's direction, or a quarter turn of it as the
+              -- range finder turns it
+              Vector2 ux0 uy0 = let l = sqrt ((bx - ax) ^ (2 :: Int) + (by - ay) ^ (2 :: Int))
+                                in if l > 0 then Vector2 ((bx - ax) / l) ((by - ay) / l) else Vector2 1 0
+              Vector2 ux uy = maybe (Vector2 ux0 uy0) (\a -> rayDirection (atan2 uy0 ux0) a) quarter
+              want = foldl (\m b -> maybe m (`min` m) (rayBox (Point2 ax ay) (Vector2 ux uy) b)) len boxes
+          in rayCastBoxes bi ax ay ux uy len === want
+
+-- | A segment: from anywhere (sometimes outside the boxes), or ending
+-- within a millimetre of a box (on its boundary, just outside it, at a
+-- corner), or starting on a cell boundary of the ray grid; mostly as
+-- long as a range finder's ray or a little shorter, sometimes longer.
+genSegment :: World -> Gen (Double, Double, Double, Double)
+genSegment w = do
+  let h = halfSide w
+      Arena boxes = arenaFor w
+  len <- oneof [elements [3.25, rayGridReach, 0], choose (0, rayGridReach), choose (3, 8)]
+  th  <- oneof [choose (-pi, pi), elements [0, pi / 2, pi, -pi / 2, pi / 4]]
+  let ux = cos th
+      uy = sin th
+  start <- oneof
+    [ (,) <$> choose (-h - 2, h + 2) <*> choose (-h - 2, h + 2)
+    , do Box a b c d <- elements boxes
+         tx <- oneof [elements [a, c], choose (a, c)]
+         ty <- oneof [elements [b, d], choose (b, d)]
+         ex <- elements [0, 1e-12, 0.5e-3, 0.85e-3, -1e-12]
+         ey <- elements [0, 1e-12, 0.5e-3, -0.85e-3]
+         k  <- oneof [elements [0, 1], choose (0, 1)]
+         pure (tx + ex - k * len * ux, ty + ey - k * len * uy)
+      -- ending just short of a box it points at, or starting just
+      -- past a box behind it
+    , do Box a b c d <- elements boxes
+         qx <- choose (a, c)
+         qy <- choose (b, d)
+         gap <- elements [0, 1e-12, 0.5e-3, 0.85e-3]
+         let back | ux > 0    = (qx - a) / ux
+                  | ux < 0    = (qx - c) / ux
+                  | otherwise = 1 / 0
+             down | uy > 0    = (qy - b) / uy
+                  | uy < 0    = (qy - d) / uy
+                  | otherwise = 1 / 0
+             s  = min back down     -- back from (qx, qy) to where the ray enters the box
+             ex = qx - s * ux
+             ey = qy - s * uy
+             -- forward from (qx, qy) to where the ray leaves the box
+             lx | ux > 0    = (c - qx) / ux
+                | ux < 0    = (a - qx) / ux
+                | otherwise = 1 / 0
+             ly | uy > 0    = (d - qy) / uy
+                | uy < 0    = (b - qy) / uy
+                | otherwise = 1 / 0
+             l  = min lx ly
+         elements [ (ex - (gap + len) * ux, ey - (gap + len) * uy)
+                  , (qx + (l + gap) * ux, qy + (l + gap) * uy) ]
+    , do i <- chooseInt (0, 40)
+         j <- chooseInt (0, 40)
+         e <- elements [0, 1e-13, -1e-13]
+         pure (-h - 1 + fromIntegral i * (rayGridReach / 3) + e, -h - 1 + fromIntegral j * (rayGridReach / 3) - e) ]
+  let (ax, ay) = start
+  pure (ax, ay, ax + len * ux, ay + len * uy)
+
+-- | The distance between a segment and a box (0 if they meet): from an end
+-- of the segment to the box, or from a corner of the box to the segment.
+segmentBoxDistance :: (Double, Double) -> (Double, Double) -> Box -> Double
+segmentBoxDistance (ax, ay) (bx, by) box@(Box x0 y0 x1 y1)
+  | meets     = 0
+  | otherwise = minimum ([toBox ax ay, toBox bx by] ++ [ toSegment cx cy | cx <- [x0, x1], cy <- [y0, y1] ])
+  where
+    meets = case rayBox (Point2 ax ay) (Vector2 (bx - ax) (by - ay)) box of
+      Just t  -> t <= 1
+      Nothing -> False
+    toBox px py = let dx = maximum [0, x0 - px, px - x1]
+                      dy = maximum [0, y0 - py, py - y1]
+                  in sqrt (dx * dx + dy * dy)
+    toSegment cx cy =
+      let vx = bx - ax
+          vy = by - ay
+          l2 = vx * vx + vy * vy
+          t  = if l2 > 0 then max 0 (min 1 (((cx - ax) * vx + (cy - ay) * vy) / l2)) else 0
+          dx = ax + t * vx - cx
+          dy = ay + t * vy - cy
+      in sqrt (dx * dx + dy * dy)
