@@ -259,36 +259,44 @@ pointIndex dx0 dy0 dx1 dy1 pts = runST $ do
       cellAt x y = cellOf gy cs ny y * nx + cellOf gx cs nx x
   xs <- newDblArr (max 1 n)
   ys <- newDblArr (max 1 n)
+  cellOfPt <- newIntArr (max 1 n) 0
   starts <- newIntArr (cells + 1) 0
-  let count !_ [] = pure ()
-      count !i ((x, y) : rest) = do
+  -- One pass over the list: the coordinates, each point's cell (kept for
+  -- the second pass, -1 for a point that is not finite) and the count of
+  -- every cell; the points that are not finite, in order.
+  let count !_ [] wild = pure (reverse wild)
+      count !i ((x, y) : rest) wild = do
         writeD xs i x
         writeD ys i y
         if finite x && finite y
-          then do let c = cellAt x y
+          then do let !c = cellAt x y
+                  writeI cellOfPt i c
                   readI starts c >>= writeI starts c . (+ 1)
-          else pure ()
-        count (i + 1) rest
-  count 0 pts
+                  count (i + 1) rest wild
+          else do writeI cellOfPt i (-1)
+                  count (i + 1) rest (i : wild)
+  wild <- count 0 pts []
   total <- prefixSums starts cells
   items <- newIntArr (max 1 total) 0
   fill  <- newIntArr (cells + 1) 0
-  let place !_ [] = pure ()
-      place !i ((x, y) : rest) = do
-        if finite x && finite y
-          then do let c = cellAt x y
-                  s0 <- readI starts c
-                  k  <- readI fill c
-                  writeI items (s0 + k) i
-                  writeI fill c (k + 1)
-          else pure ()
-        place (i + 1) rest
-  place 0 pts
+  -- Then every finite point into its cell's run, in order.
+  let place !i
+        | i >= n    = pure ()
+        | otherwise = do
+            c <- readI cellOfPt i
+            if c >= 0
+              then do s0 <- readI starts c
+                      k  <- readI fill c
+                      writeI items (s0 + k) i
+                      writeI fill c (k + 1)
+              else pure ()
+            place (i + 1)
+  place 0
   xs' <- freezeD xs
   ys' <- freezeD ys
   st  <- freezeI starts
   it  <- freezeI items
-  pure (PointIndex grid n xs' ys' st it [ i | (i, (x, y)) <- zip [0 ..] pts, not (finite x && finite y) ])
+  pure (PointIndex grid n xs' ys' st it wild)
   where
     n    = length pts
     grid = gridFor dx0 dy0 dx1 dy1 n
