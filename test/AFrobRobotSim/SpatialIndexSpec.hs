@@ -222,7 +222,7 @@ spec = do
             want = [ k | (k, Box a b c d) <- zip [0 ..] boxes, a <= x1, c >= x0, b <= y1, d >= y0 ]
         in got === want
 
-  describe "foldPointsIn" $
+  describe "foldPointsIn" $ do
     it "visits exactly the points in the rectangle, once each" $
       property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
         forAll (genRobots (halfSide w)) $ \rs ->
@@ -231,6 +231,20 @@ spec = do
               pix = pointIndex (-h) (-h) h h pts
               got = sort (foldPointsIn pix x0 y0 x1 y1 (flip (:)) [])
               want = [ k | (k, (x, y)) <- zip [0 ..] pts, x >= x0, x <= x1, y >= y0, y <= y1 ]
+          in got === want
+
+    it "visits every point that is not finite, whatever the rectangle, and the others as before" $
+      property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
+        forAll (genRobots (halfSide w)) $ \rs ->
+        forAll (vectorOf (length rs) (elements [Nothing, Nothing, Just (0 / 0), Just (1 / 0), Just (-1 / 0)])) $ \bad ->
+          let h = halfSide w
+              pts = [ maybe (x, y) (\v -> if even k then (v, y) else (x, v)) b
+                    | (k, Robot { rPos = Point2 x y }, b) <- zip3 [0 :: Int ..] rs bad ]
+              pix = pointIndex (-h) (-h) h h pts
+              got = sort (foldPointsIn pix x0 y0 x1 y1 (flip (:)) [])
+              finitePt (x, y) = not (isNaN x || isInfinite x || isNaN y || isInfinite y)
+              want = [ k | (k, p@(x, y)) <- zip [0 ..] pts
+                         , not (finitePt p) || (x >= x0 && x <= x1 && y >= y0 && y <= y1) ]
           in got === want
 
   describe "stepRobots" $
