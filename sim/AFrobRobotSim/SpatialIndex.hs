@@ -203,11 +203,11 @@ foldBoxesIn bi x0 y0 x1 y1 f z0
   | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
   | otherwise = cell cy0 cx0 z0
   where
-    Grid gx gy cs nx ny = biGrid bi
-    cx0 = cellOf gx cs nx x0
-    cx1 = cellOf gx cs nx x1
-    cy0 = cellOf gy cs ny y0
-    cy1 = cellOf gy cs ny y1
+    !(Grid gx gy cs nx ny) = biGrid bi
+    !cx0 = cellOf gx cs nx x0
+    !cx1 = cellOf gx cs nx x1
+    !cy0 = cellOf gy cs ny y0
+    !cy1 = cellOf gy cs ny y1
     starts = biStarts bi
     items  = biItems bi
     -- One loop, every call a tail call (so that GHC compiles it to jumps,
@@ -323,11 +323,11 @@ foldPointsIn p x0 y0 x1 y1 f z0
   | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
   | otherwise = row cy0 z0
   where
-    Grid gx gy cs nx ny = piGrid p
-    cx0 = cellOf gx cs nx x0
-    cx1 = cellOf gx cs nx x1
-    cy0 = cellOf gy cs ny y0
-    cy1 = cellOf gy cs ny y1
+    !(Grid gx gy cs nx ny) = piGrid p
+    !cx0 = cellOf gx cs nx x0
+    !cx1 = cellOf gx cs nx x1
+    !cy0 = cellOf gy cs ny y0
+    !cy1 = cellOf gy cs ny y1
     starts = piStarts p
     items  = piItems p
     -- One loop of tail calls (no closures allocated): a row's cells are
@@ -361,11 +361,11 @@ foldPointsInM p x0 y0 x1 y1 f z0
   | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
   | otherwise = row cy0 z0
   where
-    Grid gx gy cs nx ny = piGrid p
-    cx0 = cellOf gx cs nx x0
-    cx1 = cellOf gx cs nx x1
-    cy0 = cellOf gy cs ny y0
-    cy1 = cellOf gy cs ny y1
+    !(Grid gx gy cs nx ny) = piGrid p
+    !cx0 = cellOf gx cs nx x0
+    !cx1 = cellOf gx cs nx x1
+    !cy0 = cellOf gy cs ny y0
+    !cy1 = cellOf gy cs ny y1
     starts = piStarts p
     items  = piItems p
     -- One loop of tail calls (no closures allocated): a row's cells are
