@@ -126,7 +126,6 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
        | otherwise                  = error ("AFrobRobotSim.Sensors.senseRobot: no robot number " ++ show i)
     robotAt j = unsafeAt (ixRobots ix) j
     p@(Point2 px py) = rPos me
-    tr = trackerRange + slack
     -- The points of an index (all but number @skip@) within a little more
     -- than the tracker's range of the robot's centre, with their squared
     -- distances from it. An index of a few points is scanned, which costs
@@ -134,21 +133,12 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     -- 10-robot benchmark, that square covers most of the world).
     gather grid skip
       | n <= 32   = scan 0 NoPoint
-      | otherwise = foldPointsIn grid (px - tr) (py - tr) (px + tr) (py + tr) add NoPoint
+      | otherwise = gatherIn grid skip px py
       where
         n = pointIndexCount grid
-        scan !j !acc
+        scan !j acc
           | j >= n    = acc
-          | otherwise = scan (j + 1) (add acc j)
-        add acc j
-          | j == skip = acc
-          | otherwise =
-              let qx = pointX grid j
-                  qy = pointY grid j
-                  x  = qx - px
-                  y  = qy - py
-                  d2 = x * x + y * y
-              in if d2 <= tr * tr then Point j qx qy d2 acc else acc
+          | otherwise = scan (j + 1) (nearPoint grid skip px py acc j)
     -- The other robots near this one, gathered once per sample and shared
     -- by the tracker and every ray: a robot that a ray can hit within its
     -- length has its centre within 'rayLength' plus a radius (3.5 m) of
@@ -203,6 +193,31 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     -- the heading's unit vector, for all of this robot's rays: the cos and
     -- sin the robot keeps with its heading, the numbers of 'headingVector'
     headingDir = Vector2 (rCos me) (rSin me)
+
+-- The points of a larger index (all but number @skip@) within a little
+-- more than the tracker's range of @(px, py)@: those of the cells around
+-- the range. Not inlined: the grid's bounds, read before the test of the
+-- index's size, made every scan of a small one read and save them.
+gatherIn :: PointIndex -> Int -> Double -> Double -> Points
+gatherIn grid skip px py =
+  foldPointsIn grid (px - tr) (py - tr) (px + tr) (py + tr) (nearPoint grid skip px py) NoPoint
+  where tr = trackerRange + slack
+{-# NOINLINE gatherIn #-}
+
+-- Point number @j@ of an index, added to a list if it is not number @skip@
+-- and lies within a little more than the tracker's range of @(px, py)@.
+nearPoint :: PointIndex -> Int -> Double -> Double -> Points -> Int -> Points
+nearPoint grid skip px py acc j
+  | j == skip = acc
+  | otherwise =
+      let qx = pointX grid j
+          qy = pointY grid j
+          x  = qx - px
+          y  = qy - py
+          d2 = x * x + y * y
+          tr = trackerRange + slack
+      in if d2 <= tr * tr then Point j qx qy d2 acc else acc
+{-# INLINE nearPoint #-}
 
 -- Points of an index near a robot (index, coordinates as indexed and
 -- squared distance from the robot's centre), in a strict list.
