@@ -49,9 +49,13 @@ module AFRP.Parallel
   ) where
 
 import           Data.Foldable    (foldl')
-import           GHC.Exts         (Int (I#), SmallArray#, indexSmallArray#, isTrue#,
-                                   newSmallArray#, runRW#, sizeofSmallArray#, thawSmallArray#,
-                                   unsafeFreezeSmallArray#, writeSmallArray#, (+#), (-#), (<#))
+import           GHC.Exts         (ByteArray#, Double (D#), Int (I#), SmallArray#,
+                                   indexDoubleArray#, indexSmallArray#, isTrue#, newByteArray#,
+                                   newSmallArray#, reallyUnsafePtrEquality#, runRW#,
+                                   sizeofSmallArray#, thawSmallArray#, unsafeFreezeByteArray#,
+                                   unsafeFreezeSmallArray#, writeDoubleArray#, writeSmallArray#,
+                                   (*#), (*##), (+#), (+##), (-#), (<#), (==#), Int#, quotInt#,
+                                   sizeofByteArray#)
 
 import           AFRP.Event
 import           AFRP.Internal.SF
@@ -110,11 +114,71 @@ parN' stepper rf = go
 -- | 'parB' on a list: the members are kept in an array and stepped on the
 -- input directly (see 'stepArrB'), with no routed collection in between
 -- and no recursion as deep as the list is long.
+--
+-- Once every member is an 'AFRP.Integration.integral' at 'Double' that
+-- has seen the same inputs (the usual bank of integrators, after its
+-- first step), the members are kept as one unboxed array of running sums
+-- instead ('integralBank'): the same sums, stepped without a node per
+-- member.
 parBL :: [SF a b] -> SF a [b]
 parBL sfs = SF (go (arrayFromList (map sfNode sfs)))
   where
     go ns = NStep (\dt a -> case stepArrB dt a ns of
-      (# ns', cs #) -> case go ns' of !n -> (# n, cs #))
+      (# ns', cs #) -> case bankOf ns' of
+        Just (Bank sums prev) -> case integralBank sums prev of !n -> (# n, cs #)
+        Nothing               -> case go ns' of !n -> (# n, cs #))
+
+-- Running sums of integrals at 'Double' that share their previous input.
+data Bank a b where
+  Bank :: ByteArray# -> Double -> Bank Double [Double]
+
+-- The members as a bank, if every one is an integral node ('NIntD')
+-- holding the very same previous input (one pointer: they were all
+-- stepped on it). Only evaluated values are looked at: the nodes and
+-- their strict sums; the shared input is compared by pointer, never
+-- evaluated. A first member of any other kind answers at once.
+bankOf :: Arr (Node a b) -> Maybe (Bank a [b])
+bankOf (Arr sa)
+  | isTrue# (n <# 1#) = Nothing
+  | otherwise = case indexSmallArray# sa 0# of
+      (# NIntD _ prev0 #) -> runRW# (\s0 -> case newByteArray# (n *# 8#) s0 of
+        (# s1, m #) ->
+          let fill i s
+                | isTrue# (i ==# n) = case unsafeFreezeByteArray# m s of
+                    (# _, sums #) -> Just (Bank sums prev0)
+                | otherwise = case indexSmallArray# sa i of
+                    (# NIntD (D# acc) prev #)
+                      | isTrue# (reallyUnsafePtrEquality# prev prev0) ->
+                          fill (i +# 1#) (writeDoubleArray# m i acc s)
+                    _ -> Nothing
+          in fill 0# s1)
+      _ -> Nothing
+  where
+    !(I# n) = arrLength (Arr sa)
+
+-- @integralBank sums prev@: the members of a 'parB' of integrals with the
+-- given running sums and previous input, as one node. Each step is every
+-- member's 'NIntD' step, @y_n = y_(n-1) + dt_n * a_(n-1)@ (the previous
+-- input evaluated then, the current one kept unevaluated), with the
+-- outputs in the members' order.
+integralBank :: ByteArray# -> Double -> Node Double [Double]
+integralBank sums prev = NStep (\dt a -> case prev of
+  D# p -> case dt of
+    D# d -> runRW# (\s0 -> case newByteArray# (n *# 8#) s0 of
+      (# s1, m #) ->
+        let fill i acc s
+              | isTrue# (i <# 0#) = (# s, acc #)
+              | otherwise =
+                  let y = indexDoubleArray# sums i +## (d *## p)
+                  in fill (i -# 1#) (D# y : acc) (writeDoubleArray# m i y s)
+        in case fill (n -# 1#) [] s1 of
+          (# s2, ys #) -> case unsafeFreezeByteArray# m s2 of
+            (# _, sums' #) -> case integralBank sums' a of !node -> (# node, ys #)))
+  where
+    !n = bankSize sums
+
+bankSize :: ByteArray# -> Int#
+bankSize sums = quotInt# (sizeofByteArray# sums) 8#
 
 -- | @pSwitch route sfs sfe k@ runs @sfs@ as 'par' does. The event source
 -- @sfe@ sees the input and the collection's output; at its first

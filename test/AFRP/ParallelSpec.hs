@@ -11,6 +11,7 @@ import           System.Timeout    (timeout)
 import           Test.Hspec        hiding (after)
 
 import           AFRP
+import           AFRP.Internal.SF  (stepSF)
 import           TestUtil
 
 ------------------------------------------------------------------------------
@@ -86,6 +87,33 @@ parSpec = do
     it "steps every member by the same irregular time steps" $
       runSamples (parB [localTime, integral]) [(0, 1), (0.3, 2), (0.7, 3 :: Double)]
         `shouldApproxLists` [[0, 0], [0.3, 0.3], [1.0, 1.7]]
+
+    it "a bank of integrals gives, bit for bit, what each integral alone gives" $
+      -- after the first step the members are kept as one array of sums
+      let dts = [0.1, 0.3, 0.05, 1, 0.2, 0.7]
+          xs  = [1, -2.5, 3, 0.125, 7, -1, 4 :: Double]
+          samples = (head xs, [ (d, Just x) | (d, x) <- zip dts (tail xs) ])
+          one = embed integral samples
+      in embed (parB (replicate 4 integral)) samples `shouldBe` map (replicate 4) one
+
+    it "keeps a bank's members in order, each with its own sum" $ do
+      -- a running integral (frozen by kSwitch at t = 1) beside a fresh
+      -- one, and a third started later still: the same outputs as the
+      -- members side by side with &&&
+      let started = kSwitch integral (arr snd >>> arr (>= 1) >>> edge)
+          viaParB = started (\frozen () -> parB [frozen, integral, frozen] >>> arr (\ys -> sum (zipWith (*) [1, 1000, 1000000] ys)))
+          viaFan  = started (\frozen () -> (frozen &&& integral &&& frozen) >>> arr (\(a, (b, c)) -> a + 1000 * b + 1000000 * c))
+          samples = (1, [ (0.25, Just x) | x <- [2 .. 20 :: Double] ])
+      embed viaParB samples `shouldBe` embed viaFan samples
+
+    it "does not evaluate the current input in a bank of integrals" $ do
+      -- (stepped by hand: embed evaluates every input sample)
+      let (sf1, _)  = stepSF (parB (replicate 3 integral)) 0 (1 :: Double)
+          (sf2, y2) = stepSF sf1 0.5 2
+          (sf3, y3) = stepSF sf2 0.5 undefined
+          (_, y4)   = stepSF sf3 0.5 undefined
+      (y2, y3) `shouldBe` ([0.5, 0.5, 0.5], [1.5, 1.5, 1.5])
+      evaluate (sum y4) `shouldThrow` anyErrorCall
 
   describe "parZ" $ do
     it "zips the input list with the members, ignoring extra inputs" $
