@@ -82,3 +82,10 @@ spec = do
       let sf = first (arr (\x -> x `seq` 'p') >>> iPre 'z') :: SF (Int, Int) (Char, Int)
       map fst (embed sf ((1, undefined), [(1, Just (undefined, undefined))])) `shouldBe` "zp"
       map snd (embed sf ((undefined, 7), [(1, Just (undefined, 8))])) `shouldBe` [7, 8]
+    it "steps sf >>> (arr p >>> sf') as its nodes would" $ do
+      let sf = integral >>> (arr (* 2) >>> integral) :: SF Double Double
+      embed sf (1, [(0.5, Just 2), (0.5, Just 3), (1, Just 0)]) `shouldBe` [0, 0, 0.5, 3.5]
+    it "keeps sf >>> (arr p >>> sf') lazy in what sf passes on" $ do
+      -- the first delay's initial output is never evaluated: p ignores it
+      let sf = iPre undefined >>> (arr (const 'x') >>> iPre 'z') :: SF Char Char
+      embed sf ('a', [(1, Just 'b'), (1, Just 'c')]) `shouldBe` "zxx"

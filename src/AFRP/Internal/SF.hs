@@ -193,6 +193,13 @@ stepN n dt a = case n of
       (# f', c #) -> case g of
         -- ... and one behind it.
         NPure (FDG q) -> case compNI f' g of !n' -> (# n', q c #)
+        -- f >>> (arr p >>> h), the usual shape of a chain of stateful
+        -- nodes with functions between them: h is stepped on p c (lazily,
+        -- as the inner composition would) without a step of its own; the
+        -- successor is the one the two steps would build.
+        NComp gp@(NPure (FDG p)) h -> case stepN h dt (p c) of
+          (# h', b #) -> case compNI gp h' of
+            !g' -> case rebuildComp f' g' of !n' -> (# n', b #)
         _             -> case stepN g dt c of
           (# g', b #) -> case rebuildComp f' g' of !n' -> (# n', b #)
   NPar f g      -> case g of
