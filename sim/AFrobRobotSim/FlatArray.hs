@@ -31,6 +31,8 @@ module AFrobRobotSim.FlatArray
   , freezeI
   , freezeD
   , prefixSums
+  , bucketLists
+  , bucketListsUpTo
     -- * Numbers
   , finite
   ) where
@@ -111,6 +113,50 @@ prefixSums starts cells = go 0 0
           c <- readI starts i
           writeI starts i acc
           go (i + 1) (acc + c)
+
+-- | @bucketLists buckets pairs@ groups items by bucket (a counting sort),
+-- the layout of every grid's cell lists: @(starts, items)@, where bucket
+-- @b@ lists @items[starts b .. starts (b + 1) - 1]@. @pairs f@ must call
+-- @f item bucket@ (with @0 <= bucket < buckets@) for every pair, the same
+-- pairs in the same order each time: it runs twice, once to count, once to
+-- place, so each bucket lists its items in the order given.
+bucketLists :: Int -> ((Int -> Int -> ST s ()) -> ST s ()) -> ST s (IntArr, IntArr)
+bucketLists buckets pairs = do
+  (starts, total) <- countBuckets buckets pairs
+  placeBuckets buckets starts total pairs
+{-# INLINE bucketLists #-}
+
+-- | 'bucketLists', or 'Nothing' (and nothing placed) when there are more
+-- than @limit@ pairs.
+bucketListsUpTo :: Int -> Int -> ((Int -> Int -> ST s ()) -> ST s ()) -> ST s (Maybe (IntArr, IntArr))
+bucketListsUpTo buckets limit pairs = do
+  (starts, total) <- countBuckets buckets pairs
+  if total > limit then pure Nothing else Just <$> placeBuckets buckets starts total pairs
+{-# INLINE bucketListsUpTo #-}
+
+-- Every bucket's start offset, and the number of pairs.
+countBuckets :: Int -> ((Int -> Int -> ST s ()) -> ST s ()) -> ST s (MIntArr s, Int)
+countBuckets buckets pairs = do
+  starts <- newIntArr (buckets + 1) 0
+  pairs (\_ b -> readI starts b >>= writeI starts b . (+ 1))
+  total <- prefixSums starts buckets
+  pure (starts, total)
+{-# INLINE countBuckets #-}
+
+-- Every item in its bucket's run, in the order given.
+placeBuckets :: Int -> MIntArr s -> Int -> ((Int -> Int -> ST s ()) -> ST s ()) -> ST s (IntArr, IntArr)
+placeBuckets buckets starts total pairs = do
+  items <- newIntArr (max 1 total) 0
+  fill  <- newIntArr (buckets + 1) 0
+  pairs (\i b -> do
+    s0 <- readI starts b
+    k  <- readI fill b
+    writeI items (s0 + k) i
+    writeI fill b (k + 1))
+  st <- freezeI starts
+  it <- freezeI items
+  pure (st, it)
+{-# INLINE placeBuckets #-}
 
 -- | Is a number finite (neither NaN nor infinite)? @v - v@ is 0 exactly
 -- for finite @v@ and NaN otherwise (cheaper than 'isNaN' and

@@ -111,21 +111,10 @@ rayGrid [] = NoRayGrid
 rayGrid boxes
   | not (finite w && finite h && finite mag) = NoRayGrid
   | otherwise = runST $ do
-      let lists = 4 * nx * ny
-      starts <- newIntArr (lists + 1) 0
-      mapM_ (\(_, b) -> forLists b (\l -> readI starts l >>= writeI starts l . (+ 1))) boxes
-      total <- prefixSums starts lists
-      if total > maxEntries then pure NoRayGrid else do
-        items <- newIntArr (max 1 total) 0
-        fill  <- newIntArr (lists + 1) 0
-        mapM_ (\(i, b) -> forLists b (\l -> do
-                  s0 <- readI starts l
-                  k  <- readI fill l
-                  writeI items (s0 + k) i
-                  writeI fill l (k + 1))) boxes
-        st <- freezeI starts
-        it <- freezeI items
-        pure (RayGrid x0 y0 x1 y1 (1 / cs) nx ny st it)
+      lists <- bucketListsUpTo (4 * nx * ny) maxEntries (\f -> mapM_ (\(i, b) -> forLists b (f i)) boxes)
+      pure (case lists of
+        Nothing       -> NoRayGrid
+        Just (st, it) -> RayGrid x0 y0 x1 y1 (1 / cs) nx ny st it)
   where
     x0 = minimum [ a | (_, Box a _ _ _) <- boxes ]
     y0 = minimum [ b | (_, Box _ b _ _) <- boxes ]

@@ -128,20 +128,8 @@ data BoxIndex = BoxIndex
 -- | Index a list of boxes: the domain is their bounding box.
 boxIndex :: [Box] -> BoxIndex
 boxIndex boxes = runST $ do
-  let cells = gridCells grid
-  starts <- newIntArr (cells + 1) 0
-  -- count
-  mapM_ (\b -> forCells b (\c -> readI starts c >>= writeI starts c . (+ 1))) tame
-  total <- prefixSums starts cells
-  items <- newIntArr (max 1 total) 0
-  fill  <- newIntArr (cells + 1) 0
-  mapM_ (\(i, b) -> forCells b (\c -> do
-            s0 <- readI starts c
-            k  <- readI fill c
-            writeI items (s0 + k) i
-            writeI fill c (k + 1))) (filter (tameBox . snd) indexed)
-  st <- freezeI starts
-  it <- freezeI items
+  (st, it) <- bucketLists (gridCells grid) (\f ->
+    mapM_ (\(i, b) -> forCells b (f i)) (filter (tameBox . snd) indexed))
   coords <- newDblArr (max 1 (4 * n))
   mapM_ (\(i, Box a b c d) -> do
             writeD coords (4 * i) a
@@ -254,48 +242,30 @@ data PointIndex = PointIndex
 -- (@x0 y0 x1 y1@; points outside it go to the border cells).
 pointIndex :: Double -> Double -> Double -> Double -> [(Double, Double)] -> PointIndex
 pointIndex dx0 dy0 dx1 dy1 pts = runST $ do
-  let cells = gridCells grid
-      Grid gx gy cs nx ny = grid
+  let Grid gx gy cs nx ny = grid
       cellAt x y = cellOf gy cs ny y * nx + cellOf gx cs nx x
   xs <- newDblArr (max 1 n)
   ys <- newDblArr (max 1 n)
   cellOfPt <- newIntArr (max 1 n) 0
-  starts <- newIntArr (cells + 1) 0
-  -- One pass over the list: the coordinates, each point's cell (kept for
-  -- the second pass, -1 for a point that is not finite) and the count of
-  -- every cell; the points that are not finite, in order.
-  let count !_ [] wild = pure (reverse wild)
-      count !i ((x, y) : rest) wild = do
+  -- One pass over the list: the coordinates and each point's cell (-1 for
+  -- a point that is not finite); the points that are not finite, in order.
+  let scan !_ [] wild = pure (reverse wild)
+      scan !i ((x, y) : rest) wild = do
         writeD xs i x
         writeD ys i y
         if finite x && finite y
-          then do let !c = cellAt x y
-                  writeI cellOfPt i c
-                  readI starts c >>= writeI starts c . (+ 1)
-                  count (i + 1) rest wild
-          else do writeI cellOfPt i (-1)
-                  count (i + 1) rest (i : wild)
-  wild <- count 0 pts []
-  total <- prefixSums starts cells
-  items <- newIntArr (max 1 total) 0
-  fill  <- newIntArr (cells + 1) 0
-  -- Then every finite point into its cell's run, in order.
-  let place !i
-        | i >= n    = pure ()
-        | otherwise = do
-            c <- readI cellOfPt i
-            if c >= 0
-              then do s0 <- readI starts c
-                      k  <- readI fill c
-                      writeI items (s0 + k) i
-                      writeI fill c (k + 1)
-              else pure ()
-            place (i + 1)
-  place 0
+          then writeI cellOfPt i (cellAt x y) >> scan (i + 1) rest wild
+          else writeI cellOfPt i (-1) >> scan (i + 1) rest (i : wild)
+  wild <- scan 0 pts []
+  -- Then every finite point in its cell, in order.
+  let eachPoint f = go 0
+        where go !i | i >= n    = pure ()
+                    | otherwise = do c <- readI cellOfPt i
+                                     if c >= 0 then f i c else pure ()
+                                     go (i + 1)
+  (st, it) <- bucketLists (gridCells grid) eachPoint
   xs' <- freezeD xs
   ys' <- freezeD ys
-  st  <- freezeI starts
-  it  <- freezeI items
   pure (PointIndex grid n xs' ys' st it wild)
   where
     n    = length pts
