@@ -120,39 +120,66 @@ parN' stepper rf = go
 -- first step), the members are kept as one unboxed array of running sums
 -- instead ('integralBank'): the same sums, stepped without a node per
 -- member.
+--
+-- A member that is not an integral node gives the bank up for good (one
+-- look at each member until then, no allocation): members change only by
+-- stepping, and an integral node stays one, so the bank can only have
+-- been missed if a member becomes an integral later, through a switch.
 parBL :: [SF a b] -> SF a [b]
 parBL sfs = SF (go (arrayFromList (map sfNode sfs)))
   where
     go ns = NStep (\dt a -> case stepArrB dt a ns of
       (# ns', cs #) -> case bankOf ns' of
-        Just (Bank sums prev) -> case integralBank sums prev of !n -> (# n, cs #)
-        Nothing               -> case go ns' of !n -> (# n, cs #))
+        Banked (Bank sums prev) -> case integralBank sums prev of !n -> (# n, cs #)
+        NotYet                  -> case go ns' of !n -> (# n, cs #)
+        Never                   -> case general ns' of !n -> (# n, cs #))
+    general ns = NStep (\dt a -> case stepArrB dt a ns of
+      (# ns', cs #) -> case general ns' of !n -> (# n, cs #))
 
 -- Running sums of integrals at 'Double' that share their previous input.
 data Bank a b where
   Bank :: ByteArray# -> Double -> Bank Double [Double]
 
+-- Whether the members can be a bank.
+data Banking a b = Banked (Bank a b) | NotYet | Never
+
 -- The members as a bank, if every one is an integral node ('NIntD')
 -- holding the very same previous input (one pointer: they were all
--- stepped on it). Only evaluated values are looked at: the nodes and
--- their strict sums; the shared input is compared by pointer, never
--- evaluated. A first member of any other kind answers at once.
-bankOf :: Arr (Node a b) -> Maybe (Bank a [b])
+-- stepped on it); 'NotYet' if they are all integral nodes but have not
+-- all seen the same input; 'Never' if one is not an integral node. Only
+-- evaluated values are looked at: the nodes and their strict sums; the
+-- shared input is compared by pointer, never evaluated. The sums are
+-- copied only once the members have passed.
+bankOf :: Arr (Node a b) -> Banking a [b]
 bankOf (Arr sa)
-  | isTrue# (n <# 1#) = Nothing
+  | isTrue# (n <# 1#) = Never
   | otherwise = case indexSmallArray# sa 0# of
-      (# NIntD _ prev0 #) -> runRW# (\s0 -> case newByteArray# (n *# 8#) s0 of
-        (# s1, m #) ->
-          let fill i s
-                | isTrue# (i ==# n) = case unsafeFreezeByteArray# m s of
-                    (# _, sums #) -> Just (Bank sums prev0)
-                | otherwise = case indexSmallArray# sa i of
-                    (# NIntD (D# acc) prev #)
-                      | isTrue# (reallyUnsafePtrEquality# prev prev0) ->
-                          fill (i +# 1#) (writeDoubleArray# m i acc s)
-                    _ -> Nothing
-          in fill 0# s1)
-      _ -> Nothing
+      (# NIntD _ prev0 #) ->
+        let check i
+              | isTrue# (i ==# n) = Just ()
+              | otherwise = case indexSmallArray# sa i of
+                  (# NIntD _ prev #)
+                    | isTrue# (reallyUnsafePtrEquality# prev prev0) -> check (i +# 1#)
+                    | otherwise -> Nothing
+                  _ -> Nothing
+            allIntegrals i
+              | isTrue# (i ==# n) = True
+              | otherwise = case indexSmallArray# sa i of
+                  (# NIntD _ _ #) -> allIntegrals (i +# 1#)
+                  _               -> False
+        in case check 1# of
+          Nothing | allIntegrals 1# -> NotYet
+                  | otherwise       -> Never
+          Just () -> runRW# (\s0 -> case newByteArray# (n *# 8#) s0 of
+            (# s1, m #) ->
+              let copy i s
+                    | isTrue# (i ==# n) = s
+                    | otherwise = case indexSmallArray# sa i of
+                        (# NIntD (D# acc) _ #) -> copy (i +# 1#) (writeDoubleArray# m i acc s)
+                        _                      -> copy (i +# 1#) s  -- (checked above: not reached)
+              in case unsafeFreezeByteArray# m (copy 0# s1) of
+                (# _, sums #) -> Banked (Bank sums prev0))
+      _ -> Never
   where
     !(I# n) = arrLength (Arr sa)
 
