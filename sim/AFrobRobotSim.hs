@@ -89,7 +89,7 @@ module AFrobRobotSim
 
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Options
-import           AFrobRobotSim.Physics   (ballFriction, ballRestitution)
+import           AFrobRobotSim.Balls     (ballFriction, ballRestitution)
 import           AFrobRobotSim.Render    (RenderStyle (..), Scene (..), defaultRenderStyle, frameSize,
                                           renderPPM, renderSVG)
 import           AFrobRobotSim.Run

@@ -27,6 +27,7 @@ import qualified AFrob.RobotIOSpec
 import qualified AFrobRobotSim.ClearanceSpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.PhysicsSpec
+import qualified AFrobRobotSim.BallsSpec
 import qualified AFrobRobotSim.RayCastSpec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
@@ -69,6 +70,7 @@ main = hspec $ do
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
+  describe "AFrobRobotSim.Balls" AFrobRobotSim.BallsSpec.spec
   describe "AFrobRobotSim.RayCast" AFrobRobotSim.RayCastSpec.spec
   describe "AFrobRobotSim.SpatialIndex" AFrobRobotSim.SpatialIndexSpec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec

@@ -2,8 +2,8 @@
 {-# LANGUAGE PatternSynonyms #-}
 -- |
 -- Module      : AFrobRobotSim.Physics
--- Description : How simbots and balls move: differential drive with
---               translational inertia, collisions, bounces, the battery.
+-- Description : How simbots move: differential drive with translational
+--               inertia, collisions, the battery.
 --
 -- = Simbots
 --
@@ -33,20 +33,15 @@
 --
 -- Nothing here compares every robot with every other: the arena's boxes
 -- are indexed once on a grid ("AFrobRobotSim.SpatialIndex"), and each step
--- indexes the robots' (and balls') centres. A robot's sweep is tested only
--- against the boxes and robots that the grid finds near its path, a ball's
--- only against what is near its own; the results are exactly those of
--- testing everything (the grid query is a superset of what can touch, and
+-- indexes the robots' centres. A robot's sweep is tested only against the
+-- boxes and robots that the grid finds near its path; the results are
+-- exactly those of testing everything (the grid query is a superset of what can touch, and
 -- every rule that depends on order, such as which of two equally early
 -- contacts counts, is applied in the original order).
 --
 -- = Balls
 --
--- Balls roll freely, slowing down by rolling friction ('ballFriction' m/s^2),
--- bounce off walls, blocks and the boundary (restitution 'ballRestitution'),
--- are kicked by robots (a robot counts as immovable: the ball's velocity
--- relative to the robot is reflected), and collide elastically with each
--- other (equal masses). Robots are not stopped by balls.
+-- Balls are moved after the robots, by "AFrobRobotSim.Balls".
 --
 -- = Battery
 --
@@ -65,23 +60,19 @@ module AFrobRobotSim.Physics
   , Robot (..)
   , mkRobot
   , withHeading
-  , Ball (..)
   , robotVelocity
+  , robotIndex
     -- * Stepping
   , stepRobots
   , stepRobotsNear
-  , stepBalls
     -- * Parameters
-  , ballFriction
-  , ballRestitution
+  , robotRadius
+  , querySlack
   , batteryStatusOf
   , wheelCommand
   ) where
 
 import           Control.Monad.ST        (ST, runST)
-import           Data.STRef              (newSTRef, readSTRef, writeSTRef)
-import           GHC.Arr                 (Array, listArray, newSTArray, unsafeAt,
-                                          unsafeReadSTArray, unsafeWriteSTArray)
 
 import           AFRP              (DTime)
 import           AFRP.Geometry
@@ -122,24 +113,9 @@ mkRobot k i p h v stuck c = Robot k i p h v stuck c (cos h) (sin h)
 withHeading :: Heading -> Robot -> Robot
 withHeading h r = r { rHeading = h, rCos = cos h, rSin = sin h }
 
--- | A ball's physical state.
-data Ball = Ball
-  { bPos :: !Position2
-  , bVel :: !(Vector2 Double)
-  } deriving (Eq, Show)
-
--- | Rolling friction of a ball: 0.3 m/s^2.
-ballFriction :: Acceleration
-ballFriction = 0.3
-
--- | Coefficient of restitution of a ball against walls, blocks and robots:
--- 0.8.
-ballRestitution :: Double
-ballRestitution = 0.8
-
-robotRadius, ballRadius :: Length
+-- | The radius of a simbot's disc (both kinds are the same size).
+robotRadius :: Length
 robotRadius = simbotDiameter / 2
-ballRadius  = ballDiameter / 2
 
 -- | The battery status of a charge.
 batteryStatusOf :: Double -> BatteryStatus
@@ -199,7 +175,8 @@ stepRobotsNear near dt arena cmds = runST $ do
   where
     n = length cmds
 
--- The centres of robots (or of anything) on a grid over the arena.
+-- | The robots' centres on a grid over the arena ('pointsOver'): point
+-- @i@ of the index is the centre of the @i@-th robot of the list.
 robotIndex :: Arena -> [Robot] -> PointIndex
 robotIndex arena rs = pointsOver arena [ (x, y) | Robot { rPos = Point2 x y } <- rs ]
 
@@ -281,9 +258,11 @@ identical :: Double -> Double -> Bool
 identical a b = a == b && (a /= 0 || recip a == recip b)
 {-# INLINE identical #-}
 
--- Some margin around every query rectangle, for rounding.
-slack :: Double
-slack = 1e-3
+-- | The margin, 1 mm, added around every rectangle in which the grids
+-- are asked for what a move could touch, for rounding: a query never
+-- misses a box or a disc that the exact test would find.
+querySlack :: Double
+querySlack = 1e-3
 
 -- The fraction of the move at which the robot @i@ first touches something:
 -- the earliest contact over every box and every other robot (at its
@@ -301,11 +280,11 @@ firstContactST arena near xs ys i drift p d@(Vector2 dx dy)
       let Point2 px py = p
           qx = px + dx
           qy = py + dy
-          rb = robotRadius + slack
+          rb = robotRadius + querySlack
           -- No box is within reach when the clearance at the start exceeds
           -- the move and the radius (with room for rounding): testing the
           -- boxes would find no contact.
-          clear = clearanceAt (arenaClearance arena) px py - rb - slack
+          clear = clearanceAt (arenaClearance arena) px py - rb - querySlack
           -- the earliest contact so far (contacts are fractions in [0, 1];
           -- infinity for none)
           boxHit
@@ -314,7 +293,7 @@ firstContactST arena near xs ys i drift p d@(Vector2 dx dy)
                 foldBoxesIn (arenaIndex arena) (min px qx - rb) (min py qy - rb)
                                                (max px qx + rb) (max py qy + rb)
                   (\acc _ b -> boxContact px py dx dy b acc) (1 / 0)
-          rr = 2 * robotRadius + drift + slack
+          rr = 2 * robotRadius + drift + querySlack
       hit <- foldPointsInM near (min px qx - rr) (min py qy - rr) (max px qx + rr) (max py qy + rr)
                (\acc j -> if j == i then pure acc else do
                    ox <- readD xs j
@@ -340,147 +319,3 @@ robotContact px py dx dy ox oy acc =
     Just (s, _) -> min s acc
     Nothing     -> acc
 {-# NOINLINE robotContact #-}
-
-foldST :: (b -> a -> ST s b) -> b -> [a] -> ST s b
-foldST _ z []       = pure z
-foldST f z (x : xs) = do
-  !z' <- f z x
-  foldST f z' xs
-
--- | Move every ball by one step: friction, bounces off obstacles and
--- robots (at their new positions, with their velocities), then elastic
--- collisions between balls.
-stepBalls :: DTime -> Arena -> [Robot] -> [Ball] -> [Ball]
-stepBalls _ _ _ [] = []
-stepBalls dt arena robots balls =
-  resolvePairs arena (map (stepBall dt arena robotArr near) balls)
-  where
-    robotArr = listArray (0, length robots - 1) robots
-    near     = robotIndex arena robots
-
-stepBall :: DTime -> Arena -> Array Int Robot -> PointIndex -> Ball -> Ball
-stepBall dt arena robots near b0 =
-  let -- a robot that drove into the ball kicks it
-      b1 = pushOuts b0 (-1)
-      v  = slowDown (bVel b1)
-      d@(Vector2 dx dy) = (dt *^ v)
-      Point2 px py = bPos b1
-      qx = px + dx
-      qy = py + dy
-      nBoxes = boxIndexCount (arenaIndex arena)
-      -- the earliest contact; on a tie the first in the order boxes (as
-      -- listed), then robots (as listed), as a scan of everything would
-      -- find it
-      rb = ballRadius + slack
-      boxHit = foldBoxesIn (arenaIndex arena) (min px qx - rb) (min py qy - rb) (max px qx + rb) (max py qy + rb)
-        (\acc k bx -> case sweepCircleBox (bPos b1) ballRadius d bx of
-            Just (s, n) -> better (Hit s k n zeroVector) acc
-            Nothing     -> acc) NoHit
-      rr = ballRadius + robotRadius + slack
-      hit = foldPointsIn near (min px qx - rr) (min py qy - rr) (max px qx + rr) (max py qy + rr)
-        (\acc j -> let r = unsafeAt robots j
-                   in case sweepCircleCircle (bPos b1) ballRadius d (rPos r) robotRadius of
-                        Just (s, n) -> better (Hit s (nBoxes + j) n (robotVelocity r)) acc
-                        Nothing     -> acc) boxHit
-  in case hit of
-       NoHit -> b1 { bPos = bPos b1 .+^ d, bVel = v }
-       Hit s _ n vo ->
-         let p  = bPos b1 .+^ (max 0 (s - 1e-9) *^ d)
-         in b1 { bPos = p, bVel = vo ^+^ bounce n (v ^-^ vo) }
-  where
-    slowDown :: Vector2 Double -> Vector2 Double
-    slowDown v = let sp = norm v
-                     sp' = max 0 (sp - ballFriction * dt)
-                 in if sp <= 0 then zeroVector else (sp' / sp) *^ v
-    -- The robots push the ball out in order: the next robot (after the
-    -- last one that pushed) that overlaps the ball where it now is.
-    pushOuts b lastJ =
-      let Point2 px py = bPos b
-          rr = ballRadius + robotRadius + slack
-          next = foldPointsIn near (px - rr) (py - rr) (px + rr) (py + rr)
-                   (\acc j -> if j > lastJ && j < acc
-                                 && overlaps (circleCirclePenetration (bPos b) ballRadius (rPos (unsafeAt robots j)) robotRadius)
-                              then j else acc) maxBound
-      in if next == maxBound then b else pushOuts (pushOut b (unsafeAt robots next)) next
-    overlaps = maybe False (const True)
-    pushOut b r = case circleCirclePenetration (bPos b) ballRadius (rPos r) robotRadius of
-      Nothing       -> b
-      Just (depth, n) ->
-        let vr  = robotVelocity r
-            rel = bVel b ^-^ vr
-            v'  = if rel `dot` n < 0 then vr ^+^ bounce n rel else bVel b
-        in b { bPos = pushedTo b ((depth + 1e-9) *^ n), bVel = v' }
-    -- The push out of a robot is swept like any move and stops at a wall
-    -- or block: a ball squeezed between a robot and a wall stays pinned
-    -- there, overlapping the robot, and never passes through the wall.
-    pushedTo b push =
-      let Point2 px py = bPos b
-          Vector2 ux uy = push
-          rb = ballRadius + slack
-          s = foldBoxesIn (arenaIndex arena) (min px (px + ux) - rb) (min py (py + uy) - rb)
-                          (max px (px + ux) + rb) (max py (py + uy) + rb)
-                (\acc _ bx -> case sweepCircleBox (bPos b) ballRadius push bx of
-                    Just (s', _) -> min acc s'
-                    Nothing      -> acc) 1
-      in if s >= 1 then bPos b .+^ push else bPos b .+^ (max 0 (s - 1e-9) *^ push)
-    bounce :: Vector2 Double -> Vector2 Double -> Vector2 Double
-    bounce n rel = let rn = (rel `dot` n) *^ n
-                   in (rel ^-^ rn) ^-^ (ballRestitution *^ rn)
-
--- A candidate contact of a ball: fraction, order (boxes first, then
--- robots), normal, velocity of what it hits.
-data Hit = NoHit | Hit !Double !Int !(Vector2 Double) !(Vector2 Double)
-
-better :: Hit -> Hit -> Hit
-better h NoHit = h
-better NoHit h = h
-better h1@(Hit s1 k1 _ _) h2@(Hit s2 k2 _ _)
-  | s1 < s2 || (s1 == s2 && k1 < k2) = h1
-  | s2 < s1 || (s1 == s2 && k2 < k1) = h2
-  | otherwise                        = h1   -- the same box, seen from two cells
-
--- Equal-mass elastic collisions between overlapping, approaching balls,
--- pair by pair in the order (0, 1), (0, 2), ..., (1, 2), ...: for each
--- ball, the next ball after the last one it met that overlaps it where
--- both now are. Candidates come from a grid of the balls' centres before
--- this, widened by the furthest any ball has been moved since.
-resolvePairs :: Arena -> [Ball] -> [Ball]
-resolvePairs arena bs0 = runST $ do
-  arr <- newSTArray (0, n - 1) (Ball origin zeroVector)
-  mapM_ (\(k, b) -> unsafeWriteSTArray arr k b) (zip [0 ..] bs0)
-  drift <- newSTRef 0
-  let forBall !i
-        | i >= n = pure ()
-        | otherwise = pairs i i >> forBall (i + 1)
-      pairs !i !lastJ = do
-        bi <- unsafeReadSTArray arr i
-        d0 <- readSTRef drift
-        let Point2 px py = bPos bi
-            rr = 2 * ballRadius + d0 + slack
-            cands = foldPointsIn grid (px - rr) (py - rr) (px + rr) (py + rr)
-                      (\acc j -> if j > lastJ then j : acc else acc) []
-        next <- foldST (\acc j -> if j >= acc then pure acc else do
-                          bj <- unsafeReadSTArray arr j
-                          pure (case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
-                                  Just _  -> j
-                                  Nothing -> acc)) maxBound cands
-        if next == maxBound then pure () else do
-          bj <- unsafeReadSTArray arr next
-          case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
-            Nothing -> pure ()
-            Just (depth, nrm) -> do
-              let relN = (bVel bi ^-^ bVel bj) `dot` nrm
-                  half = (depth / 2 + 1e-9) *^ nrm
-                  (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
-                           | otherwise = (bVel bi, bVel bj)
-                  !bi' = Ball (bPos bi .+^ half) vi
-                  !bj' = Ball (bPos bj .-^ half) vj
-              unsafeWriteSTArray arr i bi'
-              unsafeWriteSTArray arr next bj'
-              writeSTRef drift (d0 + norm half)
-          pairs i next
-  forBall 0
-  mapM (unsafeReadSTArray arr) [0 .. n - 1]
-  where
-    n    = length bs0
-    grid = pointsOver arena [ (x, y) | Ball (Point2 x y) _ <- bs0 ]

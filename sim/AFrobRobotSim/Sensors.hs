@@ -49,6 +49,7 @@ import           GHC.Arr                (Array, listArray, unsafeAt)
 import           AFRP.Geometry
 import           AFrob.Angle            (normalizeAngle)
 import           AFrob.Dimensions
+import           AFrobRobotSim.Balls    (Ball (..))
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.RayCast  (rayCastBoxes)
 import           AFrobRobotSim.Robot

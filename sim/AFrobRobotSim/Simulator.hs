@@ -36,6 +36,7 @@ import           AFRP
 import           AFrob.Angle             (normalizeAngle, normalizeHeading)
 import           AFrob.Dimensions
 import           AFrob.RobotIO           (BatteryStatus, HasRobotProperties (..))
+import           AFrobRobotSim.Balls
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors

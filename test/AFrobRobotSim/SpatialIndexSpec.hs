@@ -1,9 +1,9 @@
 -- | The spatial index ("AFrobRobotSim.SpatialIndex") finds exactly what a
--- scan of everything finds, and the physics and sensors that use it
--- ("AFrobRobotSim.Physics", "AFrobRobotSim.Sensors") compute, bit for bit,
--- what the straightforward all-pairs versions below compute. The reference
--- versions are the simulator's original code, kept here as the
--- specification.
+-- scan of everything finds, and the robots' physics and the sensors that
+-- use it ("AFrobRobotSim.Physics", "AFrobRobotSim.Sensors") compute, bit
+-- for bit, what the straightforward all-pairs versions below compute. The
+-- reference versions are the simulator's original code, kept here as the
+-- specification (the balls' is in "AFrobRobotSim.BallsSpec").
 module AFrobRobotSim.SpatialIndexSpec (spec) where
 
 import           Data.List             (nub, sort, sortOn)
@@ -14,6 +14,7 @@ import           AFRP.Geometry
 import           AFrob.Angle           (normalizeAngle, normalizeHeading)
 import           AFrob.Dimensions      (Position2, RobotId, RobotType)
 import           AFrob.RobotIO         (BatteryStatus (..))
+import           AFrobRobotSim.Balls   (Ball (..))
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
@@ -25,57 +26,13 @@ import           AFrobRobotSim.WorldGen
 ------------------------------------------------------------------------------
 -- Generators
 
--- Worlds (World, genWorld, arenaFor, halfSide) come from AFrobRobotSim.WorldGen.
-
-genRobot :: Double -> Gen Robot
-genRobot h = do
-  k  <- elements [SimbotA, SimbotB]
-  i  <- chooseInt (1, 99)
-  x  <- choose (-h, h)
-  y  <- choose (-h, h)
-  th <- choose (-4, 4)
-  v  <- choose (-2, 2)
-  st <- arbitrary
-  c  <- elements [1, 0.5, 0.2, 0.05]
-  pure (mkRobot k i (Point2 x y) th v st c)
-
--- | Robots, often crowded (so that they touch and overlap).
-genRobots :: Double -> Gen [Robot]
-genRobots h = do
-  n <- oneof [chooseInt (0, 12), chooseInt (17, 60)]
-  crowd <- elements [h, min h 2, 1]
-  vectorOf n (genRobot crowd)
-
-genCommand :: Gen DriveCommand
-genCommand = oneof
-  [ pure DriveBrake
-  , DriveWheels <$> choose (-3, 3) <*> choose (-3, 3)
-  , DriveTR <$> choose (-3, 3) <*> choose (-8, 8)
-  ]
-
-genBall :: Double -> Gen Ball
-genBall h = do
-  x  <- choose (-h, h)
-  y  <- choose (-h, h)
-  vx <- choose (-4, 4)
-  vy <- choose (-4, 4)
-  pure (Ball (Point2 x y) (Vector2 vx vy))
-
-genBalls :: Double -> Gen [Ball]
-genBalls h = do
-  n <- oneof [chooseInt (0, 6), chooseInt (17, 40)]
-  crowd <- elements [h, 1, 0.5]
-  vectorOf n (genBall crowd)
-
-genDt :: Gen Double
-genDt = elements [0.01, 0.05, 0.3, 1, 4]
+-- Worlds, robots, balls and time steps come from AFrobRobotSim.WorldGen.
 
 ------------------------------------------------------------------------------
 -- The reference: the original all-pairs code
 
-robotRadius', ballRadius' :: Double
+robotRadius' :: Double
 robotRadius' = simbotDiameter / 2
-ballRadius'  = ballDiameter / 2
 
 refStepRobots :: Double -> Arena -> [(Robot, DriveCommand)] -> [Robot]
 refStepRobots dt arena cmds = go [] cmds
@@ -129,59 +86,6 @@ refFirstContact p d arena others
     earliest Nothing  acc      = acc
     earliest (Just s) Nothing  = Just s
     earliest (Just s) (Just t) = Just (min s t)
-
-refStepBalls :: Double -> Arena -> [Robot] -> [Ball] -> [Ball]
-refStepBalls dt arena robots balls = refResolvePairs (map (refStepBall dt arena robots) balls)
-
-refStepBall :: Double -> Arena -> [Robot] -> Ball -> Ball
-refStepBall dt arena robots b0 =
-  let b1 = foldl pushOut b0 robots
-      v  = slowDown (bVel b1)
-      d  = (dt *^ v)
-      hits = [ (s, n, zeroVector) | bx <- arenaBoxes arena, Just (s, n) <- [sweepCircleBox (bPos b1) ballRadius' d bx] ]
-          ++ [ (s, n, robotVelocity r) | r <- robots, Just (s, n) <- [sweepCircleCircle (bPos b1) ballRadius' d (rPos r) robotRadius'] ]
-  in case hits of
-       [] -> b1 { bPos = bPos b1 .+^ d, bVel = v }
-       _  -> let (s, n, vo) = minimumOn (\(x, _, _) -> x) hits
-                 p  = bPos b1 .+^ (max 0 (s - 1e-9) *^ d)
-             in b1 { bPos = p, bVel = vo ^+^ bounce n (v ^-^ vo) }
-  where
-    slowDown :: Vector2 Double -> Vector2 Double
-    slowDown v = let sp = norm v
-                     sp' = max 0 (sp - ballFriction * dt)
-                 in if sp <= 0 then zeroVector else (sp' / sp) *^ v
-    pushOut b r = case circleCirclePenetration (bPos b) ballRadius' (rPos r) robotRadius' of
-      Nothing       -> b
-      Just (depth, n) ->
-        let vr  = robotVelocity r
-            rel = bVel b ^-^ vr
-            v'  = if rel `dot` n < 0 then vr ^+^ bounce n rel else bVel b
-            push = (depth + 1e-9) *^ n
-            s = minimum (1 : [ s' | bx <- arenaBoxes arena, Just (s', _) <- [sweepCircleBox (bPos b) ballRadius' push bx] ])
-            p' = if s >= 1 then bPos b .+^ push else bPos b .+^ (max 0 (s - 1e-9) *^ push)
-        in b { bPos = p', bVel = v' }
-    bounce :: Vector2 Double -> Vector2 Double -> Vector2 Double
-    bounce n rel = let rn = (rel `dot` n) *^ n
-                   in (rel ^-^ rn) ^-^ (ballRestitution *^ rn)
-    minimumOn f = foldr1 (\x y -> if f x <= f y then x else y)
-
-refResolvePairs :: [Ball] -> [Ball]
-refResolvePairs bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 1 .. n - 1] ]
-  where
-    n = length bs0
-    resolve bs (i, j) =
-      let bi = bs !! i
-          bj = bs !! j
-      in case circleCirclePenetration (bPos bi) ballRadius' (bPos bj) ballRadius' of
-           Nothing -> bs
-           Just (depth, nrm) ->
-             let relN = (bVel bi ^-^ bVel bj) `dot` nrm
-                 half = (depth / 2 + 1e-9) *^ nrm
-                 (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
-                          | otherwise = (bVel bi, bVel bj)
-                 bi' = Ball (bPos bi .+^ half) vi
-                 bj' = Ball (bPos bj .-^ half) vj
-             in [ if k == i then bi' else if k == j then bj' else b | (k, b) <- zip [0 ..] bs ]
 
 refRange :: Arena -> [Robot] -> Int -> Double -> Double
 refRange arena robots i a
@@ -263,13 +167,6 @@ spec = do
               cmds = zip rs cs
               near = scRobotIndex (SenseContext arena rs [])
           in stepRobotsNear near dt arena cmds === refStepRobots dt arena cmds
-
-  describe "stepBalls" $
-    it "moves the balls exactly as testing every box, robot and pair of balls does" $
-      property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
-        forAll (genRobots (halfSide w)) $ \rs -> forAll (genBalls (halfSide w)) $ \bs ->
-          let arena = arenaFor w
-          in stepBalls dt arena rs bs === refStepBalls dt arena rs bs
 
   describe "rayDirection" $ do
     it "turns the heading's unit vector exactly by a quarter turn" $

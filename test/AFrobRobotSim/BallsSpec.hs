@@ -1,0 +1,138 @@
+-- | "AFrobRobotSim.Balls": the laws of a ball's step (friction, bounces,
+-- kicks, collisions) on single cases, and the whole step, bit for bit,
+-- against the straightforward all-pairs version below (the simulator's
+-- original code, kept here as the specification).
+module AFrobRobotSim.BallsSpec (spec) where
+
+import           Test.Hspec
+import           Test.QuickCheck
+
+import           AFRP.Geometry
+import           AFrobRobotSim.Balls
+import           AFrobRobotSim.Physics
+import           AFrobRobotSim.Shapes
+import           AFrobRobotSim.World
+import           AFrobRobotSim.WorldGen
+
+------------------------------------------------------------------------------
+-- The reference: the original all-pairs code
+
+robotRadius', ballRadius' :: Double
+robotRadius' = simbotDiameter / 2
+ballRadius'  = ballDiameter / 2
+
+refStepBalls :: Double -> Arena -> [Robot] -> [Ball] -> [Ball]
+refStepBalls dt arena robots balls = refResolvePairs (map (refStepBall dt arena robots) balls)
+
+refStepBall :: Double -> Arena -> [Robot] -> Ball -> Ball
+refStepBall dt arena robots b0 =
+  let b1 = foldl pushOut b0 robots
+      v  = slowDown (bVel b1)
+      d  = (dt *^ v)
+      hits = [ (s, n, zeroVector) | bx <- arenaBoxes arena, Just (s, n) <- [sweepCircleBox (bPos b1) ballRadius' d bx] ]
+          ++ [ (s, n, robotVelocity r) | r <- robots, Just (s, n) <- [sweepCircleCircle (bPos b1) ballRadius' d (rPos r) robotRadius'] ]
+  in case hits of
+       [] -> b1 { bPos = bPos b1 .+^ d, bVel = v }
+       _  -> let (s, n, vo) = minimumOn (\(x, _, _) -> x) hits
+                 p  = bPos b1 .+^ (max 0 (s - 1e-9) *^ d)
+             in b1 { bPos = p, bVel = vo ^+^ bounce n (v ^-^ vo) }
+  where
+    slowDown :: Vector2 Double -> Vector2 Double
+    slowDown v = let sp = norm v
+                     sp' = max 0 (sp - ballFriction * dt)
+                 in if sp <= 0 then zeroVector else (sp' / sp) *^ v
+    pushOut b r = case circleCirclePenetration (bPos b) ballRadius' (rPos r) robotRadius' of
+      Nothing       -> b
+      Just (depth, n) ->
+        let vr  = robotVelocity r
+            rel = bVel b ^-^ vr
+            v'  = if rel `dot` n < 0 then vr ^+^ bounce n rel else bVel b
+            push = (depth + 1e-9) *^ n
+            s = minimum (1 : [ s' | bx <- arenaBoxes arena, Just (s', _) <- [sweepCircleBox (bPos b) ballRadius' push bx] ])
+            p' = if s >= 1 then bPos b .+^ push else bPos b .+^ (max 0 (s - 1e-9) *^ push)
+        in b { bPos = p', bVel = v' }
+    bounce :: Vector2 Double -> Vector2 Double -> Vector2 Double
+    bounce n rel = let rn = (rel `dot` n) *^ n
+                   in (rel ^-^ rn) ^-^ (ballRestitution *^ rn)
+    minimumOn f = foldr1 (\x y -> if f x <= f y then x else y)
+
+refResolvePairs :: [Ball] -> [Ball]
+refResolvePairs bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 1 .. n - 1] ]
+  where
+    n = length bs0
+    resolve bs (i, j) =
+      let bi = bs !! i
+          bj = bs !! j
+      in case circleCirclePenetration (bPos bi) ballRadius' (bPos bj) ballRadius' of
+           Nothing -> bs
+           Just (depth, nrm) ->
+             let relN = (bVel bi ^-^ bVel bj) `dot` nrm
+                 half = (depth / 2 + 1e-9) *^ nrm
+                 (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
+                          | otherwise = (bVel bi, bVel bj)
+                 bi' = Ball (bPos bi .+^ half) vi
+                 bj' = Ball (bPos bj .-^ half) vj
+             in [ if k == i then bi' else if k == j then bj' else b | (k, b) <- zip [0 ..] bs ]
+
+------------------------------------------------------------------------------
+-- Single cases
+
+-- | The notes' 10 m world with nothing in it.
+emptyArena :: Arena
+emptyArena = arenaOf notesBounds []
+
+-- | Within a millionth of a millimetre.
+near :: Double -> Double -> Bool
+near a b = abs (a - b) < 1e-9
+
+-- | Velocity and position of a ball, as plain numbers.
+state :: Ball -> (Double, Double, Double, Double)
+state (Ball (Point2 x y) (Vector2 vx vy)) = (x, y, vx, vy)
+
+-- | One step of a lone ball in the empty world.
+alone :: Double -> Ball -> Ball
+alone dt b = case stepBalls dt emptyArena [] [b] of
+  [b'] -> b'
+  bs   -> error ("one ball in, " ++ show (length bs) ++ " out")
+
+spec :: Spec
+spec = do
+  describe "stepBalls" $ do
+    it "rolls a free ball on, its speed falling by ballFriction per second" $ do
+      let (x, y, vx, vy) = state (alone 0.1 (Ball (Point2 0 0) (Vector2 0.6 0.8)))
+          v' = 1 - ballFriction * 0.1
+      (near vx (0.6 * v'), near vy (0.8 * v')) `shouldBe` (True, True)
+      (near x (0.1 * 0.6 * v'), near y (0.1 * 0.8 * v')) `shouldBe` (True, True)
+
+    it "stops a slow ball where it is, without turning it round" $
+      state (alone 1 (Ball (Point2 1 2) (Vector2 0 (-0.1)))) `shouldBe` (1, 2, 0, 0)
+
+    it "bounces a ball off the boundary, keeping ballRestitution of its normal speed" $ do
+      let (x, _, vx, vy) = state (alone 0.1 (Ball (Point2 4.8 0) (Vector2 1 0)))
+      (near vx (-(ballRestitution * (1 - ballFriction * 0.1))), vy) `shouldBe` (True, 0)
+      x + ballRadius <= worldXMax `shouldBe` True
+
+    it "lets a driving robot kick a ball it overlaps, away at more than its own speed" $ do
+      let robot = mkRobot SimbotA 1 (Point2 0 0) 0 1 False 1
+          dt = 0.01
+      case stepBalls dt emptyArena [robot] [Ball (Point2 0.3 0) (Vector2 0 0)] of
+        [Ball (Point2 x y) (Vector2 vx vy)] -> do
+          -- relative velocity (-1, 0) reflected: 1 + ballRestitution * 1,
+          -- then friction
+          (near vx (1 + ballRestitution - ballFriction * dt), vy, y) `shouldBe` (True, 0, 0)
+          x >= robotRadius + ballRadius - 1e-6 `shouldBe` True
+        bs -> expectationFailure ("one ball in, " ++ show (length bs) ++ " out")
+
+    it "collides two balls head on elastically: they exchange velocities and part" $
+      case stepBalls 0.001 emptyArena [] [Ball (Point2 (-0.14) 0) (Vector2 1 0), Ball (Point2 0.14 0) (Vector2 (-1) 0)] of
+        [Ball (Point2 x0 _) (Vector2 v0 _), Ball (Point2 x1 _) (Vector2 v1 _)] -> do
+          let v = 1 - ballFriction * 0.001
+          (near v0 (-v), near v1 v) `shouldBe` (True, True)
+          x1 - x0 >= 2 * ballRadius `shouldBe` True
+        bs -> expectationFailure ("two balls in, " ++ show (length bs) ++ " out")
+
+    it "moves the balls exactly as testing every box, robot and pair of balls does" $
+      property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
+        forAll (genRobots (halfSide w)) $ \rs -> forAll (genBalls (halfSide w)) $ \bs ->
+          let arena = arenaFor w
+          in stepBalls dt arena rs bs === refStepBalls dt arena rs bs
