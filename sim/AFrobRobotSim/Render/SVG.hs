@@ -1,0 +1,144 @@
+-- |
+-- Module      : AFrobRobotSim.Render.SVG
+-- Description : An SVG picture of a whole run.
+--
+-- The second back end of "AFrobRobotSim.Render": the shapes of
+-- "AFrobRobotSim.Render.Scene" as SVG elements, with each robot's
+-- trajectory, its start and a legend.
+module AFrobRobotSim.Render.SVG
+  ( renderSVG
+  , svgMaxPoints
+  ) where
+
+import           Data.List                  (transpose)
+import           Text.Printf                (printf)
+
+import           AFrobRobotSim.Render.Raster
+import           AFrobRobotSim.Render.Scene
+import           AFrobRobotSim.Simulator    (RobotState (..), WorldState (..))
+
+-- | The most points of a trajectory in 'renderSVG': 2000. Longer ones are
+-- thinned to evenly spaced snapshots, always keeping the first and last.
+svgMaxPoints :: Int
+svgMaxPoints = 2000
+
+-- | @renderSVG style scene states@: one SVG picture of a run, @states@
+-- being its snapshots in time order (e.g. 'AFrobRobotSim.simulate' cut to
+-- length). The world is drawn as in 'renderPPM' at the /last/ snapshot
+-- (rays with 'styleRays'; 'styleTrails' is ignored), with, below the balls
+-- and robots, each robot's whole trajectory as one @\<polyline\>@ in its
+-- 'typeColour' (at most 'svgMaxPoints' points) and a start marker at its
+-- first position; a legend (colour, type and id of each robot) is to the
+-- right of the world. The picture's coordinates are the frame's pixels
+-- (see 'worldToPixel'); it is 170 pixels wider than a frame. The text
+-- starts with @\"\<svg\"@ and ends with @\"\<\/svg\>\\n\"@. With no snapshots,
+-- only the walls and blocks are drawn.
+renderSVG :: RenderStyle -> Scene -> [WorldState] -> String
+renderSVG style scene states = concat $
+  [ printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\">\n"
+      totalW totalH totalW totalH
+  , printf "<rect x=\"0\" y=\"0\" width=\"%d\" height=\"%d\" fill=\"%s\"/>\n" totalW totalH (hex backgroundColour) ]
+  ++ map (svgShape v) (floorShapes v ++ staticShapes v)
+  ++ [ svgShape v (SPolyline (typeColour (robotType r)) 2 (thin track))
+     | ok, (r, track) <- zip robots0 tracks ]
+  ++ [ svgShape v sh
+     | ok, (r, p : _) <- zip robots0 tracks
+     , let (x, y) = toImg v p
+     , sh <- [SDisc (typeColour (robotType r)) x y 5, SDisc headingColour x y 3] ]
+  ++ map (svgShape v) (maybe [] (snapshotShapes v) final)
+  ++ legend
+  ++ ["</svg>\n"]
+  where
+    v        = viewOf style scene
+    ok       = validScale v
+    (w, h)   = vSize v
+    final    = if null states then Nothing else Just (last states)
+    robots0  = case states of
+      s0 : _ -> wsRobots s0
+      []     -> []
+    tracks   = transpose (map (map robotPos . wsRobots) states)
+    legendW  = 170 :: Int
+    rowH     = 18 :: Int
+    totalW   = w + legendW
+    totalH   = max h (40 + rowH * (length robots0 + 1))
+    lx       = w + 12
+    legend   =
+      printf "<text x=\"%d\" y=\"%d\" font-family=\"sans-serif\" font-size=\"14\" font-weight=\"bold\" fill=\"%s\">Robots</text>\n"
+        lx (24 :: Int) (hex labelColour)
+      : concat
+        [ [ printf "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" stroke-width=\"2\"/>\n"
+              lx y (lx + 24) y (hex (typeColour (robotType r)))
+          , printf "<circle cx=\"%d\" cy=\"%d\" r=\"6\" fill=\"%s\" stroke=\"%s\" stroke-width=\"1\"/>\n"
+              (lx + 12) y (hex (typeColour (robotType r))) (hex (outlineColour (robotType r) False))
+          , printf "<text x=\"%d\" y=\"%d\" font-family=\"sans-serif\" font-size=\"12\" fill=\"%s\">%s %d</text>\n"
+              (lx + 32) (y + 4) (hex labelColour) (escape (robotType r)) (robotId r) ]
+        | (n, r) <- zip [1 ..] robots0, let y = 24 + rowH * n ]
+      ++ (let y = 24 + rowH * (length robots0 + 1) in
+          [ printf "<circle cx=\"%d\" cy=\"%d\" r=\"4\" fill=\"%s\" stroke=\"%s\" stroke-width=\"2\"/>\n"
+              (lx + 12) y (hex headingColour) (hex labelColour)
+          , printf "<text x=\"%d\" y=\"%d\" font-family=\"sans-serif\" font-size=\"12\" fill=\"%s\">start</text>\n"
+              (lx + 32) (y + 4) (hex labelColour) ])
+
+-- At most svgMaxPoints evenly spaced elements, the first and last kept.
+thin :: [a] -> [a]
+thin xs
+  | n <= svgMaxPoints = xs
+  | otherwise         = every xs ++ [ last xs | (n - 1) `mod` step /= 0 ]
+  where
+    n    = length xs
+    step = (n - 2) `div` (svgMaxPoints - 2) + 1
+    every ys = case ys of
+      []     -> []
+      y : _  -> y : every (drop step ys)
+
+-- One shape as an SVG element (the picture's size for 'SFill').
+svgShape :: View -> Shape -> String
+svgShape v shape = case shape of
+  SFill col -> printf "<rect x=\"0\" y=\"0\" width=\"%d\" height=\"%d\" fill=\"%s\"/>\n" w h (hex col)
+  SRect col x0 y0 x1 y1
+    | allFinite [x0, y0, x1, y1] ->
+        printf "<rect x=\"%s\" y=\"%s\" width=\"%s\" height=\"%s\" fill=\"%s\"/>\n"
+          (num x0) (num y0) (num (x1 - x0)) (num (y1 - y0)) (hex col)
+  SDisc col x y r
+    | allFinite [x, y, r] && r > 0 ->
+        printf "<circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"%s\"/>\n" (num x) (num y) (num r) (hex col)
+  STri col a b q
+    | all finitePt [a, b, q] ->
+        printf "<polygon points=\"%s\" fill=\"%s\"/>\n" (unwords (map pt [a, b, q])) (hex col)
+  SLine col t (x0, y0) (x1, y1)
+    | allFinite [x0, y0, x1, y1] ->
+        printf "<line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"%s\" stroke-width=\"%d\"/>\n"
+          (num x0) (num y0) (num x1) (num y1) (hex col) t
+  SPolyline col t ps ->
+    printf "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"%d\" stroke-linejoin=\"round\" points=\"%s\"/>\n"
+      (hex col) t (unwords (dedupe (map pt (filter finitePt (map (toImg v) ps)))))
+  SText col k (x, y) str ->
+    printf "<text x=\"%d\" y=\"%d\" font-family=\"monospace\" font-size=\"%d\" fill=\"%s\">%s</text>\n"
+      x (y + 5 * k) (7 * k) (hex col) (escape str)
+  _ -> ""
+  where
+    (w, h) = vSize v
+    allFinite = all (\d -> not (isNaN d || isInfinite d))
+    finitePt (x, y) = allFinite [x, y]
+    pt (x, y) = num x ++ "," ++ num y
+
+-- Drop the elements equal to the one before (a resting robot's points).
+dedupe :: [String] -> [String]
+dedupe (a : rest@(b : _)) | a == b = dedupe rest
+dedupe (a : rest)                  = a : dedupe rest
+dedupe []                          = []
+
+num :: Double -> String
+num = printf "%.1f"
+
+hex :: Colour -> String
+hex (Colour r g b) = printf "#%02x%02x%02x" r g b
+
+escape :: String -> String
+escape = concatMap esc
+  where
+    esc '<'  = "&lt;"
+    esc '>'  = "&gt;"
+    esc '&'  = "&amp;"
+    esc '"'  = "&quot;"
+    esc ch   = [ch]

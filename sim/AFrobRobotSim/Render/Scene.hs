@@ -1,0 +1,291 @@
+-- |
+-- Module      : AFrobRobotSim.Render.Scene
+-- Description : What a picture of the simulated world shows: its size, its
+--               colours and its shapes.
+--
+-- The part of "AFrobRobotSim.Render" that both back ends share: the
+-- coordinates (see "AFrobRobotSim.Render" for the mapping and for the table
+-- of what is drawn), the colours, and the list of shapes, in image
+-- coordinates, that a snapshot is drawn as.
+module AFrobRobotSim.Render.Scene
+  ( -- * Scenes and styles
+    Scene (..)
+  , RenderStyle (..)
+  , defaultRenderStyle
+  , frameSize
+  , frameMargin
+  , worldToPixel
+    -- * Colours
+  , Colour (..)
+  , backgroundColour
+  , boundaryColour
+  , wallColour
+  , blockColour
+  , ballColour
+  , ballRimColour
+  , rayColour
+  , headingColour
+  , labelColour
+  , typeColour
+  , bodyColour
+  , outlineColour
+  , trailColour
+    -- * Shapes, for the back ends
+  , Shape (..)
+  , View (..)
+  , viewOf
+  , validScale
+  , toImg
+  , floorShapes
+  , staticShapes
+  , trailShapes
+  , snapshotShapes
+  , floorInt
+  ) where
+
+import           AFRP.Geometry
+import           AFrob.Dimensions
+import           AFrobRobotSim.Physics      (arenaOf, robotRadius)
+import           AFrobRobotSim.Render.Raster
+import           AFrobRobotSim.Sensors      (rangeReading)
+import           AFrobRobotSim.Simulator    (RobotState (..), WorldState (..))
+import           AFrobRobotSim.World
+-- | What is pictured: the world's extent and its template. The walls and
+-- blocks are taken from the template; the robots and balls (and anything
+-- else that moves) from each 'WorldState'.
+data Scene = Scene
+  { sceneBounds :: Bounds          -- ^ the world's extent (as in 'AFrobRobotSim.SimConfig')
+  , sceneWorld  :: WorldTemplate   -- ^ the world that was simulated
+  } deriving (Eq, Show)
+
+-- | How to draw.
+data RenderStyle = RenderStyle
+  { styleScale  :: Double   -- ^ pixels per metre; must be positive and finite, else only the boundary is drawn
+  , styleRays   :: Bool     -- ^ draw each robot's four range-finder rays
+  , styleTrails :: Bool     -- ^ draw each robot's path so far (frames only; the SVG always has trajectories)
+  } deriving (Eq, Show)
+
+-- | 60 pixels per metre, no rays, no trails: 620 by 620 pixel frames of the
+-- notes' 10 m world.
+defaultRenderStyle :: RenderStyle
+defaultRenderStyle = RenderStyle 60 False False
+
+-- | The margin around the world, in pixels, on every side: 10. It shows the
+-- boundary wall.
+frameMargin :: Int
+frameMargin = 10
+
+-- The world's extent in pixels along one axis: at least 0, at most 16384.
+worldPixels :: Double -> Double -> Int
+worldPixels s len
+  | isNaN v || v <= 0 = 0
+  | otherwise         = round (min 16384 v)
+  where v = s * len
+
+-- | The width and height of a frame in pixels: the world's extent times
+-- the scale, rounded, plus 'frameMargin' on each side (each world extent
+-- counts as at most 16384 pixels). 620 by 620 for the notes' world at 60
+-- pixels per metre.
+frameSize :: RenderStyle -> Scene -> (Int, Int)
+frameSize style scene =
+  (2 * frameMargin + worldPixels s (x1 - x0), 2 * frameMargin + worldPixels s (y1 - y0))
+  where
+    Bounds x0 y0 x1 y1 = sceneBounds scene
+    s = styleScale style
+
+-- | The image point of a world point (see the module documentation): the
+-- point lies in the pixel @(floor px, floor py)@.
+worldToPixel :: RenderStyle -> Scene -> Position2 -> (Double, Double)
+worldToPixel style scene = applyMap (imageMapOf style scene)
+
+imageMapOf :: RenderStyle -> Scene -> ImageMap
+imageMapOf style scene = ImageMap s (m - x0 * s) (m + y1 * s)
+  where
+    Bounds x0 _ _ y1 = sceneBounds scene
+    s = styleScale style
+    m = fromIntegral frameMargin
+
+------------------------------------------------------------------------------
+-- Colours
+
+-- | The floor: (240, 240, 230).
+backgroundColour :: Colour
+backgroundColour = Colour 240 240 230
+
+-- | The boundary wall (the frame's margin): (45, 45, 45).
+boundaryColour :: Colour
+boundaryColour = Colour 45 45 45
+
+-- | Walls: (90, 90, 90).
+wallColour :: Colour
+wallColour = Colour 90 90 90
+
+-- | Blocks: (139, 90, 43).
+blockColour :: Colour
+blockColour = Colour 139 90 43
+
+-- | Balls: (255, 140, 0); their rim is (170, 90, 0).
+ballColour :: Colour
+ballColour = Colour 255 140 0
+
+ballRimColour :: Colour
+ballRimColour = Colour 170 90 0
+
+-- | Range-finder rays: (0, 170, 60).
+rayColour :: Colour
+rayColour = Colour 0 170 60
+
+-- | The heading mark: white, (255, 255, 255).
+headingColour :: Colour
+headingColour = Colour 255 255 255
+
+-- | Robot ids: (20, 20, 20).
+labelColour :: Colour
+labelColour = Colour 20 20 20
+
+-- | The colour of a robot type: @"SimbotA"@ blue (30, 90, 220),
+-- @"SimbotB"@ red (215, 40, 40), anything else purple (140, 60, 170).
+typeColour :: RobotType -> Colour
+typeColour t
+  | t == kindType SimbotA = Colour 30 90 220
+  | t == kindType SimbotB = Colour 215 40 40
+  | otherwise             = Colour 140 60 170
+
+-- | The body colour of a robot of a type, stuck or not: the 'typeColour',
+-- at 60 % brightness when stuck.
+bodyColour :: RobotType -> Bool -> Colour
+bodyColour t stuck
+  | stuck     = darken 0.6 (typeColour t)
+  | otherwise = typeColour t
+
+-- | The rim colour of a robot of a type, stuck or not: the 'typeColour' at
+-- half brightness, or black when stuck.
+outlineColour :: RobotType -> Bool -> Colour
+outlineColour t stuck
+  | stuck     = Colour 0 0 0
+  | otherwise = darken 0.5 (typeColour t)
+
+-- | The colour of a robot type's trail: its 'typeColour' mixed half and half
+-- with the 'backgroundColour'.
+trailColour :: RobotType -> Colour
+trailColour t = blend 0.5 (typeColour t) backgroundColour
+
+------------------------------------------------------------------------------
+-- Shapes, in image coordinates
+
+-- | What a picture is made of, in image coordinates (pixels; see
+-- 'worldToPixel'): the back ends ("AFrobRobotSim.Render" for PPM frames,
+-- "AFrobRobotSim.Render.SVG") draw a list of them in order, each over the
+-- ones before.
+data Shape
+  = SFill Colour                                                  -- the whole picture
+  | SRect Colour Double Double Double Double                      -- [x0, x1) x [y0, y1)
+  | SDisc Colour Double Double Double                             -- centre, radius
+  | STri Colour (Double, Double) (Double, Double) (Double, Double)
+  | SLine Colour Int (Double, Double) (Double, Double)            -- width in pixels
+  | SPolyline Colour Int [Position2]                              -- world points
+  | SText Colour Int (Int, Int) String                            -- magnification, top-left
+
+-- | One picture's style and scene, with what follows from them: the
+-- scale, the frame's size ('frameSize') and the world-to-image mapping.
+data View = View
+  { vStyle :: RenderStyle
+  , vScene :: Scene
+  , vScale :: Double
+  , vSize  :: (Int, Int)
+  , vMap   :: ImageMap
+  }
+
+-- | The view of a scene drawn in a style.
+viewOf :: RenderStyle -> Scene -> View
+viewOf style scene =
+  View style scene (styleScale style) (frameSize style scene) (imageMapOf style scene)
+
+-- | Is the scale positive and finite? Otherwise a picture shows only the
+-- boundary ('floorShapes' gives just the fill, the others nothing).
+validScale :: View -> Bool
+validScale v = let s = vScale v in s > 0 && not (isInfinite s)
+
+-- | The image point of a world point ('worldToPixel').
+toImg :: View -> Position2 -> (Double, Double)
+toImg v = applyMap (vMap v)
+
+-- | The boundary (the whole picture) and, over it, the floor.
+floorShapes :: View -> [Shape]
+floorShapes v = SFill boundaryColour : [ SRect backgroundColour m m (fromIntegral w - m) (fromIntegral h - m) | validScale v ]
+  where
+    (w, h) = vSize v
+    m = fromIntegral frameMargin
+
+-- | The walls and blocks of the scene's template.
+staticShapes :: View -> [Shape]
+staticShapes v = [ SRect col x0 y0 x1 y1 | validScale v, o <- sceneWorld (vScene v), Just col <- [colourOf o]
+                 , let Point2 x y = otPos o
+                       (hw, hh)   = objectHalfSize o
+                       (x0, y0)   = toImg v (Point2 (x - hw) (y + hh))
+                       (x1, y1)   = toImg v (Point2 (x + hw) (y - hh)) ]
+  where
+    colourOf o = case o of
+      OTBlock {} -> Just blockColour
+      OTVWall {} -> Just wallColour
+      OTHWall {} -> Just wallColour
+      _          -> Nothing
+
+-- | Each robot's path so far as a 1-pixel polyline in its 'trailColour',
+-- one list of world points per robot, in the robots' order.
+trailShapes :: View -> [RobotState] -> [[Position2]] -> [Shape]
+trailShapes v robots trails =
+  [ SPolyline col 1 ps | validScale v, (col, ps) <- zip cols trails ]
+  where cols = map (trailColour . robotType) robots ++ repeat (blend 0.5 (typeColour "") backgroundColour)
+
+-- | The balls, range-finder rays (with 'styleRays'), robots and ids of a
+-- snapshot, bottom to top.
+snapshotShapes :: View -> WorldState -> [Shape]
+snapshotShapes v ws
+  | not (validScale v) = []
+  | otherwise = concatMap ball (wsBalls ws) ++ rays ++ concatMap robot robots ++ map label robots
+  where
+    s      = vScale v
+    robots = wsRobots ws
+    ballR  = ballDiameter / 2 * s
+    ball p = let (cx, cy) = toImg v p
+             in [SDisc ballRimColour cx cy ballR, SDisc ballColour cx cy (ballR - max 1 (s / 60))]
+    arena  = arenaOf (sceneBounds (vScene v)) (sceneWorld (vScene v))
+    rayW   = max 1 (round (s / 60))
+    rays
+      | styleRays (vStyle v) =
+          [ SLine rayColour rayW (toImg v (p .+^ vector2Polar robotRadius dir))
+                                 (toImg v (p .+^ vector2Polar (robotRadius + d) dir))
+          | (i, r) <- zip [0 :: Int ..] robots
+          , let p = robotPos r
+                others = [ robotPos o | (j, o) <- zip [0 ..] robots, j /= i ]
+          , a <- [0, pi / 2, pi, -pi / 2]
+          , let d   = rangeReading arena others p (robotHeading r) a
+                dir = robotHeading r + a ]
+      | otherwise = []
+    rPx = robotRadius * s
+    robot r =
+      let (cx, cy) = toImg v (robotPos r)
+          stuck    = robotStuck r
+          rim      = max 1 (s / 30) * (if stuck then 2 else 1)
+          hd       = robotHeading r
+          (ux, uy) = (cos hd, negate (sin hd))
+          (nx, ny) = (negate uy, ux)
+          (bx, by) = (cx + 0.3 * rPx * ux, cy + 0.3 * rPx * uy)
+          half     = 0.3 * rPx
+      in [ SDisc (outlineColour (robotType r) stuck) cx cy rPx
+         , SDisc (bodyColour (robotType r) stuck) cx cy (rPx - rim)
+         , STri headingColour (cx + rPx * ux, cy + rPx * uy)
+                (bx + half * nx, by + half * ny) (bx - half * nx, by - half * ny) ]
+    k = max 1 (round (s / 30))
+    label r =
+      let (cx, cy) = toImg v (robotPos r)
+      in SText labelColour k (floorInt (cx + 0.72 * rPx) + 1, floorInt (cy - 0.72 * rPx) - 5 * k)
+               (show (robotId r))
+
+-- | A pixel coordinate rounded down, NaN as 0 and anything else clamped
+-- to 10^7 either way.
+floorInt :: Double -> Int
+floorInt x
+  | isNaN x   = 0
+  | otherwise = floor (max (-1e7) (min 1e7 x))
