@@ -40,6 +40,7 @@ networks :: [Network]
 networks =
   [ Network "a: 100 x arr (+1)"            chain100      (\n -> [fromIntegral i + 100 | i <- [0 .. n - 1]])
   , Network "a': one arr of the composition" chainFused  (\n -> [fromIntegral i + 100 | i <- [0 .. n - 1]])
+  , Network "as: (a) written out in the source" chainSource (\n -> [fromIntegral i + 100 | i <- [0 .. n - 1]])
   , Network "b: 10 integrals in series"    integrals10   baseIntegrals10
   , Network "c: 100 integrals, &&&, summed" fan100       baseFan100
   , Network "d: rSwitch every 10 samples"  rswitch10     baseRSwitch10
@@ -58,6 +59,23 @@ chain100 = foldr1 (>>>) (replicate 100 (arr (+ 1)))
 
 chainFused :: SF Double Double
 chainFused = arr (foldr (.) id (replicate 100 (+ 1)))
+
+-- (a) as a user writes it: the hundred stages in the source, where the
+-- library's rewrite rules fuse them at compile time. (a) itself builds the
+-- chain at run time, where they are fused by 'compN' into a composition of
+-- unknown functions.
+chainSource :: SF Double Double
+chainSource =
+      arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
+  >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
+  >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
+  >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
+  >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
+  >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
+  >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
+  >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
+  >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
+  >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1) >>> arr (+ 1)
 
 ------------------------------------------------------------------------------
 -- (b) ten integrals in series

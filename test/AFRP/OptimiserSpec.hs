@@ -32,6 +32,29 @@ spec = do
     it "keeps stateful parts stateful" $
       isPureSF (arr (+ 1) >>> integral :: SF Double Double) `shouldBe` False
 
+  -- These compositions are written in the source, so the library's
+  -- rewrite rules fuse them at compile time (this module is compiled with
+  -- optimisation, as cabal compiles the test suite); each is the left-hand
+  -- side of one of the rules. A rule that composed in the wrong order, or
+  -- that evaluated the inner function's result before the outer one asks
+  -- for it, fails here.
+  describe "at compile time (the rewrite rules)" $ do
+    it "arr f >>> arr g: f first, then g" $
+      embed (arr (+ 1) >>> arr (* 2) :: SF Int Int) (3, [(1, Just 4)]) `shouldBe` [8, 10]
+    it "arr f >>> (arr g >>> sf): f, g, then sf" $
+      embed (arr (+ 1) >>> arr (* 2) >>> iPre 0 :: SF Int Int) (3, [(1, Just 4)]) `shouldBe` [0, 8]
+    it "(sf >>> arr f) >>> arr g: sf, f, then g" $
+      embed ((iPre 0 >>> arr (+ 1)) >>> arr (* 2) :: SF Int Int) (3, [(1, Just 4)]) `shouldBe` [2, 8]
+    it "keeps each of them lazy: g's argument is evaluated only if g needs it" $ do
+      embed (arr (const undefined) >>> arr (const 'x') :: SF Int Char) (3, [(1, Just 4)])
+        `shouldBe` "xx"
+      embed (arr (const undefined) >>> arr (const 'x') >>> iPre 'z' :: SF Int Char) (3, [(1, Just 4)])
+        `shouldBe` "zx"
+      embed ((iPre 0 >>> arr (const undefined)) >>> arr (const 'x') :: SF Int Char) (3, [(1, Just 4)])
+        `shouldBe` "xx"
+    it "fuses a chain written out into one pure node" $
+      isPureSF (arr (+ 1) >>> arr (* 2) >>> arr show >>> arr length :: SF Int Int) `shouldBe` True
+
   describe "while running" $ do
     it "an after that has fired becomes a constant" $ do
       let sf = runTo (after 1 'x') [(0, ()), (0.5, ()), (0.5, ())]
