@@ -182,13 +182,40 @@ delayEventCat q
 --
 -- > embed edge (True, [(1, Just False), (1, Just True), (1, Nothing)])
 -- >   ==  [NoEvent, NoEvent, Event (), NoEvent]
+--
+-- The edge evaluates its input at every sample. Where @arr p >>> edge@
+-- (or @iEdge@) is written in the source, a rewrite rule makes it one node
+-- that applies @p@ in place, which means the same and costs a node and a
+-- thunk less a sample.
 edge :: SF Bool (Event ())
 edge = iEdge True
+{-# INLINE edge #-}
 
 -- | 'edge' with the value assumed for the sample before time 0:
 -- @iEdge False@ produces an event at time 0 if the input is 'True' then.
 iEdge :: Bool -> SF Bool (Event ())
 iEdge b0 = SF (if b0 then edgeAfterTrue else edgeAfterFalse)
+{-# NOINLINE [1] iEdge #-}
+
+-- @iEdgeOn b0 p = arr p >>> iEdge b0@, in one node: the edge evaluates its
+-- input at every step (to choose its next state), so @p@ can be applied
+-- there, at the same step, instead of in a thunk that the edge forces at
+-- once. Two nodes that step into each other, built once: stepping
+-- allocates nothing. The common idiom @arr p >>> edge@ (the notes'
+-- @arr (> 100) >>> edge@, 'AFrob.rsStuck') becomes this by the rewrite
+-- rules below wherever GHC sees it written.
+iEdgeOn :: Bool -> (a -> Bool) -> SF a (Event ())
+iEdgeOn b0 p = SF (if b0 then afterTrue else afterFalse)
+  where
+    afterTrue  = NStep (\_ a -> if p a then (# afterTrue, NoEvent #) else (# afterFalse, NoEvent #))
+    afterFalse = NStep (\_ a -> if p a then (# afterTrue, Event () #) else (# afterFalse, NoEvent #))
+
+{-# RULES
+"AFRP arr>>>iEdge" [2] forall p b0.
+  compSF (iEdge b0) (arrSF p) = iEdgeOn b0 p
+"AFRP arr>>>iEdge>>>sf" [2] forall p b0 h.
+  compSF (compSF h (iEdge b0)) (arrSF p) = compSF h (iEdgeOn b0 p)
+  #-}
 
 -- The two states of 'iEdge' (the previous input was 'True' / 'False'), as
 -- two constant nodes that step into each other: stepping allocates

@@ -52,6 +52,15 @@ spec = do
         `shouldBe` "zx"
       embed ((iPre 0 >>> arr (const undefined)) >>> arr (const 'x') :: SF Int Char) (3, [(1, Just 4)])
         `shouldBe` "xx"
+    it "arr p >>> edge: an edge of p's value, no event at time 0 for True" $
+      embed (arr (> 2) >>> edge :: SF Int (Event ())) (3, map (\x -> (1, Just x)) [1, 5, 5, 0, 4])
+        `shouldBe` [NoEvent, NoEvent, Event (), NoEvent, NoEvent, Event ()]
+    it "arr p >>> iEdge False: an event at time 0 for True" $
+      embed (arr (> 2) >>> iEdge False :: SF Int (Event ())) (3, map (\x -> (1, Just x)) [1, 5])
+        `shouldBe` [Event (), NoEvent, Event ()]
+    it "arr p >>> (edge >>> sf): the edge, then sf" $
+      embed (arr (> 2) >>> edge >>> arr isEvent :: SF Int Bool) (3, map (\x -> (1, Just x)) [1, 5, 5, 0, 4])
+        `shouldBe` [False, False, True, False, False, True]
     it "fuses a chain written out into one pure node" $
       isPureSF (arr (+ 1) >>> arr (* 2) >>> arr show >>> arr length :: SF Int Int) `shouldBe` True
 

@@ -64,7 +64,7 @@
 --   specialised node with an unboxed running sum ('NIntD');
 -- * lifted functions composed where GHC can see them (@arr f >>> arr g@
 --   written in the source, or exposed by inlining) are fused by rewrite
---   rules before GHC optimises the code (@compSF@, @arrSF@, below), so that GHC
+--   rules before GHC optimises the code ('compSF', 'arrSF'), so that GHC
 --   compiles the composed function as a whole, with its own strictness
 --   analysis, instead of 'compN' composing unknown functions lazily when
 --   the network is built. A hundred @arr (+ 1)@ written out cost about
@@ -99,6 +99,9 @@ module AFRP.Internal.SF
   , loopN
   , initN
   , mealyN
+    -- * The instances' composition and lifting (for rewrite rules)
+  , compSF
+  , arrSF
     -- * Introspection (for tests)
   , stepSF
   , isPureSF
@@ -539,8 +542,9 @@ isConstantSF _                    = False
 
 -- | The instances' composition: @compSF g f@ is @g . f@ ('compN' at run
 -- time). A function of its own, inlined only late (phase 1), so that the
--- rewrite rules below see compositions of lifted functions written in the
--- source.
+-- rewrite rules below (and those of other modules, such as
+-- "AFRP.EventSource"'s for @arr p >>> edge@) see compositions written in
+-- the source.
 compSF :: SF b c -> SF a b -> SF a c
 compSF (SF g) (SF f) = SF (compN f g)
 {-# INLINE [1] compSF #-}
