@@ -24,8 +24,9 @@ svgMaxPoints = 2000
 
 -- | @renderSVG style scene states@: one SVG picture of a run, @states@
 -- being its snapshots in time order (e.g. 'AFrobRobotSim.simulate' cut to
--- length). The world is drawn as in 'renderPPM' at the /last/ snapshot
--- (rays with 'styleRays'; 'styleTrails' is ignored), with, below the balls
+-- length). The world is drawn as in 'AFrobRobotSim.Render.renderPPM' at
+-- the /last/ snapshot (rays with 'styleRays'; 'styleTrails' is ignored),
+-- with, below the balls
 -- and robots, each robot's whole trajectory as one @\<polyline\>@ in its
 -- 'typeColour' (at most 'svgMaxPoints' points) and a start marker at its
 -- first position; a legend (colour, type and id of each robot) is to the

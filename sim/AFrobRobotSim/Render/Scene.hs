@@ -128,6 +128,7 @@ blockColour = Colour 139 90 43
 ballColour :: Colour
 ballColour = Colour 255 140 0
 
+-- | The rim of a ball: (170, 90, 0).
 ballRimColour :: Colour
 ballRimColour = Colour 170 90 0
 
