@@ -205,15 +205,13 @@ iEdge b0 = SF (if b0 then edgeAfterTrue else edgeAfterFalse)
 -- @arr (> 100) >>> edge@, 'AFrob.rsStuck') becomes this by the rewrite
 -- rules below wherever GHC sees it written.
 iEdgeOn :: Bool -> (a -> Bool) -> SF a (Event ())
-iEdgeOn b0 p = SF (if b0 then afterTrue else afterFalse)
-  where
-    afterTrue  = NStep (\_ a -> if p a then (# afterTrue, NoEvent #) else (# afterFalse, NoEvent #))
-    afterFalse = NStep (\_ a -> if p a then (# afterTrue, Event () #) else (# afterFalse, NoEvent #))
+iEdgeOn b0 p = case edgeStates p of
+  (afterTrue, afterFalse) -> SF (if b0 then afterTrue else afterFalse)
 
 {-# RULES
-"AFRP arr>>>iEdge" [2] forall p b0.
+"AFRP arr>>>iEdge" forall p b0.
   compSF (iEdge b0) (arrSF p) = iEdgeOn b0 p
-"AFRP arr>>>iEdge>>>sf" [2] forall p b0 h.
+"AFRP arr>>>iEdge>>>sf" forall p b0 h.
   compSF (compSF h (iEdge b0)) (arrSF p) = compSF h (iEdgeOn b0 p)
   #-}
 
@@ -225,8 +223,16 @@ iEdgeOn b0 p = SF (if b0 then afterTrue else afterFalse)
 -- evaluated Booleans, is returned evaluated rather than as a thunk (which
 -- is what the thunk would have evaluated to, at no risk).
 edgeAfterTrue, edgeAfterFalse :: Node Bool (Event ())
-edgeAfterTrue = NStep (\_ b -> if b then (# edgeAfterTrue, NoEvent #) else (# edgeAfterFalse, NoEvent #))
-edgeAfterFalse = NStep (\_ b -> if b then (# edgeAfterTrue, Event () #) else (# edgeAfterFalse, NoEvent #))
+(edgeAfterTrue, edgeAfterFalse) = edgeStates id
+
+-- The two states of an edge of @p@'s value (after 'True', after 'False'),
+-- for 'iEdge' (@p = id@) and 'iEdgeOn'.
+edgeStates :: (a -> Bool) -> (Node a (Event ()), Node a (Event ()))
+edgeStates p = (afterTrue, afterFalse)
+  where
+    afterTrue  = NStep (\_ a -> if p a then (# afterTrue, NoEvent #) else (# afterFalse, NoEvent #))
+    afterFalse = NStep (\_ a -> if p a then (# afterTrue, Event () #) else (# afterFalse, NoEvent #))
+{-# INLINE edgeStates #-}
 
 -- | 'edge' with a given value: @edgeTag x = edge >>> arr (`tag` x)@.
 edgeTag :: a -> SF Bool (Event a)

@@ -129,9 +129,9 @@ embed sf input = build (\cons nil -> embedFB cons nil sf input)
 -- producer of its outputs, so that when the samples come from a list
 -- producer (@[(dt, Just x) | x <- ...]@) GHC fuses the two and no input
 -- list is built (and, where 'embed' is inlined into a list consumer, no
--- output list either). @embedFB (:) []@ is exactly the recursion
--- @go n a ((dt, ma) : rest) = b : go n' a' rest@ that 'embed' has always
--- been: the same input forced, the same step, the same lazy tail.
+-- output list either). @embedFB (:) []@ is the direct recursion
+-- @go n a ((dt, ma) : rest) = b : go n' a' rest@: the same input forced,
+-- the same step, the same lazy tail.
 embedFB :: (b -> r -> r) -> r -> SF a b -> (a, [(DTime, Maybe a)]) -> r
 embedFB cons nil (SF n0) (a0, samples) = case stepN n0 0 a0 of
   (# n1, b0 #) -> b0 `cons` foldr (embedStep cons) (\ !_ _ -> nil) samples n1 a0

@@ -101,17 +101,21 @@ dSwitch (SF n0) k = SF (go n0)
           -- is @resume n' e dt0 a0 = stepN (watch n' go)@ with @n' =
           -- fanN f' g'@, case by case:
           | evaluatedNoEvent e -> case g' of
-              NPure (FDC x) -> case f' of
-                -- fanN gives a constant pair: 'unwatched' would look at
-                -- its lazy value, so that is left to 'resume'
-                NPure (FDC _)                 -> defer (fanN f' g') e dt a b
-                -- sf &&& never: the switch can never fire
-                _ | evaluatedNoEvent x        -> (# f', b #)
-                  | otherwise                 -> defer (NFan f' g') e dt a b
-              NPure _ -> case f' of
-                NPure _                       -> (# go (fanN f' g'), b #)
-                _                             -> (# goFan f' g', b #)
-              _                               -> (# goFan f' g', b #)
+              NPure _ -> case fanN f' g' of
+                m@(NFan f'' g'') -> case g'' of
+                  NPure (FDC x)
+                    -- sf &&& never: the switch can never fire ('unwatched')
+                    | evaluatedNoEvent x      -> (# f'', b #)
+                    -- a constant event that may occur: left to 'resume'
+                    | otherwise               -> defer m e dt a b
+                  _                           -> (# goFan f'' g'', b #)
+                -- a constant pair: 'unwatched' would look at its lazy
+                -- value, so that is left to 'resume'
+                m@(NPure (FDC _))             -> defer m e dt a b
+                m                             -> (# go m, b #)
+              -- a stateful event part: fanN f' g' is the fan of the two,
+              -- kept as the switch's two sides
+              _ -> (# goFan f' g', b #)
           -- An event that is still a thunk (it may depend, through a
           -- loop, on the output of this very step) is left to 'resume',
           -- as are the event occurrences.

@@ -6,9 +6,10 @@
 -- Description : The nodes that signal functions are made of: their
 --               representation, their stepping, their smart constructors.
 --
--- Internal: 'AFRP.Internal.SF.SF' is abstract outside the library, and
--- "AFRP.Internal.SF" (which re-exports this module) is where the
--- signal-function type, its loops and its instances are.
+-- Internal, not part of the API (exposed for the library's own tests and
+-- benchmarks; users import "AFRP", where 'AFRP.Internal.SF.SF' is
+-- abstract). "AFRP.Internal.SF" re-exports this module and holds the
+-- signal-function type, its loops and its instances.
 --
 -- = Design
 --
@@ -70,8 +71,8 @@
 --   rules before GHC optimises the code ('AFRP.Internal.SF.compSF',
 --   'AFRP.Internal.SF.arrSF'), so that GHC compiles the composed function
 --   as a whole, with its own strictness analysis, instead of 'compN'
---   composing unknown functions lazily when the network is built. A hundred @arr (+ 1)@ written out cost about
---   0.9 ns per sample and stage; built at run time (@foldr1 (>>>)@), 9 ns.
+--   composing unknown functions lazily when the network is built (see
+--   bench/README.md for what that saves).
 --
 -- Every such case states, next to it, the identity it relies on.
 module AFRP.Internal.Node
@@ -90,7 +91,6 @@ module AFRP.Internal.Node
   , freezeN
   , deferN
     -- * Smart constructors
-  , pureN
   , constN
   , arrN
   , idN
@@ -145,7 +145,7 @@ data Node a b where
   NStep   :: !(DTime -> a -> (# Node a b, b #)) -> Node a b
   -- | 'AFRP.Delay.iPre' holding the previous input sample (lazy: the
   -- delay never evaluates its input): outputs it and stores the current
-  -- one. Visible to 'AFRP.Internal.SF.loopN', which closes a loop through it without a
+  -- one. Visible to @loopN@ ("AFRP.Internal.SF"), which closes a loop through it without a
   -- knot.
   NPre    :: a -> Node a a
   -- | 'AFRP.Integration.integral' on 'Double' after its first sample: the
@@ -238,10 +238,8 @@ stepN n dt a = case n of
           (# g', w #) -> case rebuildFan f' g' of !n' -> (# n', (y, w) #)
   NStep s       -> s dt a
   NPre prev     -> (# NPre a, prev #)
-  -- integral: y_n = y_(n-1) + dt_n * a_(n-1), exactly as the generic
-  -- 'AFRP.Integration.integral' at 'Double' computes it.
-  NIntD acc prev -> let !acc' = acc + dt * prev
-                    in (# NIntD acc' a, acc' #)
+  -- integral: see 'stepIntD'
+  NIntD acc prev -> stepIntD acc prev dt a
 
 -- | 'stepN', with the node of an 'AFRP.Integration.integral' at 'Double'
 -- (the commonest leaf of the networks that combinators step themselves:
@@ -250,9 +248,17 @@ stepN n dt a = case n of
 -- 'NIntD', @y_n = y_(n-1) + dt_n * a_(n-1)@, and the same successor.
 stepInline :: Node a b -> DTime -> a -> (# Node a b, b #)
 stepInline n dt a = case n of
-  NIntD acc prev -> let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
+  NIntD acc prev -> stepIntD acc prev dt a
   _              -> stepN n dt a
 {-# INLINE stepInline #-}
+
+-- The step of an 'NIntD' (running sum @acc@, previous input @prev@) on
+-- the input @a@: @y_n = y_(n-1) + dt_n * a_(n-1)@, exactly as the generic
+-- 'AFRP.Integration.integral' at 'Double' computes it; the current input
+-- is stored unevaluated.
+stepIntD :: Double -> Double -> DTime -> Double -> (# Node Double Double, Double #)
+stepIntD acc prev dt a = let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
+{-# INLINE stepIntD #-}
 
 -- Rebuilding a node whose two children were both stateful before the step:
 -- as the smart constructor would, but with the common case (both still
@@ -323,11 +329,6 @@ fdFun (FDG f) = f
 
 ------------------------------------------------------------------------------
 -- Smart constructors. Each states the identity it relies on.
-
--- | A stateless node.
-pureN :: FunD a b -> Node a b
-pureN = NPure
-{-# INLINE pureN #-}
 
 -- | The constant node.
 constN :: b -> Node a b

@@ -5,7 +5,9 @@
 -- Module      : AFRP.Internal.SF
 -- Description : The signal-function type, its loops and the Arrow instances.
 --
--- This module is hidden from users: 'SF' is abstract outside the library.
+-- Internal, not part of the API (exposed for the library's own tests and
+-- benchmarks): users import "AFRP", where 'SF' is abstract.
+--
 -- A signal function is a network of nodes ("AFRP.Internal.Node", whose
 -- design notes explain the representation and what keeps it fast); this
 -- module wraps a node as an 'SF', closes loops over nodes, and gives 'SF'
@@ -15,8 +17,6 @@ module AFRP.Internal.SF
   ( -- * Signal functions
     SF (..)
   , module AFRP.Internal.Node
-    -- * Loops
-  , loopN
     -- * The instances' composition and lifting (for rewrite rules)
   , compSF
   , arrSF
@@ -24,6 +24,7 @@ module AFRP.Internal.SF
   , stepSF
   , isPureSF
   , isConstantSF
+  , isStepSF
   ) where
 
 import           Control.Arrow
@@ -122,6 +123,13 @@ isConstantSF :: SF a b -> Bool
 isConstantSF (SF (NPure (FDC _))) = True
 isConstantSF _                    = False
 
+-- | Is the signal function (in its current form) one opaque stateful
+-- node, rather than a composition or another structural node? Used by the
+-- tests that check that a rewrite rule made one node of two.
+isStepSF :: SF a b -> Bool
+isStepSF (SF (NStep _)) = True
+isStepSF _              = False
+
 ------------------------------------------------------------------------------
 -- Composition and lifting, fused at compile time
 
@@ -153,13 +161,17 @@ arrSF f = SF (arrN (\a -> f a))
 -- unknown parts when the signal function is built. These are the
 -- identities 'compN' applies at run time (@arr f >>> arr g = arr (g . f)@,
 -- and the same one step inside a composition), with the same laziness:
--- @g (f a)@ evaluates @f a@ only if @g@ needs it.
+-- @g (f a)@ evaluates @f a@ only if @g@ needs it. The rules are active
+-- from the first simplifier pass: were they held back to phase 2, full
+-- laziness would first float the parts of a composition written inside a
+-- function (one that takes an argument or a class dictionary) out to
+-- bindings of their own, where no rule can see them.
 {-# RULES
-"AFRP arr>>>arr" [2] forall f g.
+"AFRP arr>>>arr" forall f g.
   compSF (arrSF g) (arrSF f) = arrSF (\a -> g (f a))
-"AFRP arr>>>arr>>>sf" [2] forall f g h.
+"AFRP arr>>>arr>>>sf" forall f g h.
   compSF (compSF h (arrSF g)) (arrSF f) = compSF h (arrSF (\a -> g (f a)))
-"AFRP sf>>>arr>>>arr" [2] forall f g h.
+"AFRP sf>>>arr>>>arr" forall f g h.
   compSF (arrSF g) (compSF (arrSF f) h) = compSF (arrSF (\a -> g (f a))) h
   #-}
 
