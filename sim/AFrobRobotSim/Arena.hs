@@ -14,7 +14,6 @@ module AFrobRobotSim.Arena
   ( Arena (Arena, arenaBoxes)
   , arenaOf
   , arenaIndex
-  , arenaExtent
   , arenaClearance
   , pointsOver
   ) where
@@ -50,7 +49,7 @@ pattern Arena :: [Box] -> Arena
 pattern Arena { arenaBoxes } <- MkArena arenaBoxes _ _ _
   where Arena bs = let bi = boxIndex bs
                        e  = boxesExtent bs
-                   in MkArena bs bi e (clearanceOf bs bi e)
+                   in MkArena bs bi e (clearanceOf bi e)
 {-# COMPLETE Arena #-}
 
 -- | The arena of a world: its walls and blocks, and four thick boxes just

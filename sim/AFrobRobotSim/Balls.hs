@@ -33,6 +33,7 @@ module AFrobRobotSim.Balls
     Ball (..)
     -- * Stepping
   , stepBalls
+  , ballIndex
     -- * Parameters
   , ballFriction
   , ballRestitution
@@ -40,6 +41,7 @@ module AFrobRobotSim.Balls
   ) where
 
 import           Control.Monad.ST        (ST, runST)
+import           Data.Maybe              (isJust)
 import           Data.STRef              (newSTRef, readSTRef, writeSTRef)
 import           GHC.Arr                 (Array, listArray, newSTArray, unsafeAt,
                                           unsafeReadSTArray, unsafeWriteSTArray)
@@ -89,6 +91,11 @@ stepBalls dt arena robots balls =
     robotArr = listArray (0, length robots - 1) robots
     near     = robotIndex arena robots
 
+-- | The balls' centres on a grid over the arena ('pointsOver'): point @i@
+-- of the index is the centre of the @i@-th ball of the list.
+ballIndex :: Arena -> [Ball] -> PointIndex
+ballIndex arena bs = pointsOver arena [ (x, y) | Ball (Point2 x y) _ <- bs ]
+
 stepBall :: DTime -> Arena -> Array Int Robot -> PointIndex -> Ball -> Ball
 stepBall dt arena robots near b0 =
   let -- a robot that drove into the ball kicks it
@@ -130,10 +137,9 @@ stepBall dt arena robots near b0 =
           rr = ballRadius + robotRadius + querySlack
           next = foldPointsIn near (px - rr) (py - rr) (px + rr) (py + rr)
                    (\acc j -> if j > lastJ && j < acc
-                                 && overlaps (circleCirclePenetration (bPos b) ballRadius (rPos (unsafeAt robots j)) robotRadius)
+                                 && isJust (circleCirclePenetration (bPos b) ballRadius (rPos (unsafeAt robots j)) robotRadius)
                               then j else acc) maxBound
       in if next == maxBound then b else pushOuts (pushOut b (unsafeAt robots next)) next
-    overlaps = maybe False (const True)
     pushOut b r = case circleCirclePenetration (bPos b) ballRadius (rPos r) robotRadius of
       Nothing       -> b
       Just (depth, n) ->
@@ -214,4 +220,4 @@ resolvePairs arena bs0 = runST $ do
   mapM (unsafeReadSTArray arr) [0 .. n - 1]
   where
     n    = length bs0
-    grid = pointsOver arena [ (x, y) | Ball (Point2 x y) _ <- bs0 ]
+    grid = ballIndex arena bs0

@@ -29,8 +29,9 @@ module AFrobRobotSim.Clearance
   , clearanceCellSize
   ) where
 
-import           Data.Array.Base         (unsafeAt)
-import           Data.Array.Unboxed      (UArray, listArray)
+import           Control.Monad.ST        (runST)
+
+import           AFrobRobotSim.FlatArray (DblArr, freezeD, indexD, newDblArr, writeD)
 
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex
@@ -42,7 +43,7 @@ data Clearance = Clearance
   , clCs   :: {-# UNPACK #-} !Double
   , clNx   :: {-# UNPACK #-} !Int
   , clNy   :: {-# UNPACK #-} !Int
-  , clDist :: !(UArray Int Double)  -- cell (ix, iy) at iy * nx + ix
+  , clDist :: !DblArr  -- cell (ix, iy) at iy * nx + ix
   }
 
 -- | The largest bound a cell holds, 1 m: enough for a step at any speed
@@ -57,14 +58,14 @@ clearanceCap = 1
 clearanceCellSize :: Double -> Double -> Double
 clearanceCellSize w h = max 0.25 (max w h / 512)
 
--- | @clearanceOf boxes index (x0, y0, x1, y1)@: the clearance of the boxes
--- (listed in @index@) over the extent @[x0, x1] x [y0, y1]@, computed
--- once, when first needed.
-clearanceOf :: [Box] -> BoxIndex -> (Double, Double, Double, Double) -> Clearance
-clearanceOf boxes bi (x0, y0, x1, y1)
-  | not (all finiteBox boxes) || not (all finite [x0, y0, x1, y1]) || x1 < x0 || y1 < y0 =
-      Clearance 0 0 1 1 1 (listArray (0, 0) [0])
-  | otherwise = Clearance x0 y0 cs nx ny (listArray (0, nx * ny - 1) bounds)
+-- | @clearanceOf index (x0, y0, x1, y1)@: the clearance of the boxes of
+-- @index@ over the extent @[x0, x1] x [y0, y1]@, computed once, when first
+-- needed. 0 everywhere if a box is not finite.
+clearanceOf :: BoxIndex -> (Double, Double, Double, Double) -> Clearance
+clearanceOf bi (x0, y0, x1, y1)
+  | not (null (boxIndexWild bi)) || not (all finite [x0, y0, x1, y1]) || x1 < x0 || y1 < y0 =
+      Clearance 0 0 1 1 1 (fromList [0])
+  | otherwise = Clearance x0 y0 cs nx ny (fromList bounds)
   where
     cs = clearanceCellSize (x1 - x0) (y1 - y0)
     nx = max 1 (ceiling ((x1 - x0) / cs))
@@ -81,13 +82,16 @@ clearanceOf boxes bi (x0, y0, x1, y1)
                   gy = max 0 (max (by0 - ay1) (ay0 - by1))
               in min acc (sqrt (gx * gx + gy * gy)))
            clearanceCap
-    finiteBox (Box a b c d) = finite a && finite b && finite c && finite d
+    fromList xs = runST $ do
+      arr <- newDblArr (length xs)
+      mapM_ (uncurry (writeD arr)) (zip [0 ..] xs)
+      freezeD arr
 
 -- | The bound for the cell holding the point @(x, y)@: no box is nearer to
 -- the point than this. 0 for a point outside the grid (or not finite).
 clearanceAt :: Clearance -> Double -> Double -> Double
 clearanceAt cl x y
-  | fx >= 0 && fy >= 0 && ix < clNx cl && iy < clNy cl = unsafeAt (clDist cl) (iy * clNx cl + ix)
+  | fx >= 0 && fy >= 0 && ix < clNx cl && iy < clNy cl = indexD (clDist cl) (iy * clNx cl + ix)
   | otherwise                                         = 0
   where
     fx = (x - clX0 cl) / clCs cl

@@ -6,11 +6,11 @@
 -- Description : Flat unboxed arrays of numbers, just what the spatial
 --               indexes need.
 --
--- The grids of "AFrobRobotSim.SpatialIndex" and "AFrobRobotSim.RayGrid"
--- keep their cells and coordinates in flat unboxed arrays (base has no
--- unboxed array type of its own that avoids bounds checks and boxing), and
--- the physics moves robots' centres in mutable ones; a module of their own
--- so that both indexes can use them. No bounds checks: callers index
+-- The grids of "AFrobRobotSim.SpatialIndex", "AFrobRobotSim.RayGrid" and
+-- "AFrobRobotSim.Clearance" keep their cells and numbers in flat unboxed
+-- arrays (byte arrays, read without bounds checks or boxing), and the
+-- physics moves robots' centres in mutable ones; a module of their own so
+-- that all of them use one representation. No bounds checks: callers index
 -- within the sizes they allocated. (And 'finite', the test for finite
 -- numbers that the indexes and their users share.)
 module AFrobRobotSim.FlatArray
@@ -30,7 +30,6 @@ module AFrobRobotSim.FlatArray
   , writeD
   , freezeI
   , freezeD
-  , prefixSums
   , bucketLists
   , bucketListsUpTo
     -- * Numbers

@@ -53,11 +53,7 @@
 -- about 257 s.
 module AFrobRobotSim.Physics
   ( -- * State
-    Arena (Arena, arenaBoxes)
-  , arenaIndex
-  , arenaOf
-  , pointsOver
-  , Robot (..)
+    Robot (..)
   , mkRobot
   , withHeading
   , robotVelocity
@@ -81,6 +77,7 @@ import           AFrob.Dimensions
 import           AFrob.RobotIO           (BatteryStatus (..))
 import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Clearance
+import           AFrobRobotSim.FlatArray (MDblArr, newDblArr, readD, writeD)
 import           AFrobRobotSim.Robot     (DriveCommand (..))
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex

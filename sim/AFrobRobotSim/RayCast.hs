@@ -6,7 +6,7 @@
 --
 -- The range finder's rays are short, and the obstacles never move: the
 -- 'BoxIndex' of an arena keeps, for every place and quarter of
--- directions, the boxes a segment of up to 'rayGridReach' from there can
+-- directions, the boxes a segment of up to 'AFrobRobotSim.RayGrid.rayGridReach' from there can
 -- come near ("AFrobRobotSim.RayGrid"). A ray reads one such list instead
 -- of walking the grid cells its bounding box covers and looking at
 -- everything listed there (on the 10-robot benchmark, where the world's
@@ -17,13 +17,11 @@
 module AFrobRobotSim.RayCast
   ( foldBoxesAlong
   , rayCastBoxes
-  , rayGridReach
-  , rayGridTolerance
   ) where
 
 import           AFRP.Geometry              (Point2 (..), Vector2 (..))
 import           AFrobRobotSim.FlatArray    (indexI)
-import           AFrobRobotSim.RayGrid      (rayGridList, rayGridReach, rayGridTolerance)
+import           AFrobRobotSim.RayGrid      (rayGridList, rayGridTolerance)
 import           AFrobRobotSim.Shapes       (Box (..), rayBox)
 import           AFrobRobotSim.SpatialIndex
 
@@ -35,7 +33,7 @@ import           AFrobRobotSim.SpatialIndex
 -- non-finite coordinates are always visited.
 --
 -- A segment that starts within the boxes' bounding box and is at most
--- 'rayGridReach' (3.3 m) long, such as a range finder's ray, reads one
+-- 'AFrobRobotSim.RayGrid.rayGridReach' (3.3 m) long, such as a range finder's ray, reads one
 -- list of the ray grid, where every box is at most once; any other is
 -- 'foldBoxesIn' over the widened rectangle (so a segment that is not
 -- finite visits every box).

@@ -29,6 +29,7 @@ module AFrobRobotSim.RayGrid
   , rayGrid
   , rayGridReach
   , rayGridTolerance
+  , rayGridCellSide
   , rayGridEntries
   , rayGridList
   ) where
@@ -44,17 +45,19 @@ import           AFrobRobotSim.Shapes     (Box (..))
 rayGridReach :: Double
 rayGridReach = 3.3
 
--- | How near a segment a box must come to be listed for it: 1 mm (the
--- slack the simulator's queries add for rounding).
+-- | How near a segment a box must come to be listed for it: 1 mm. A query
+-- widens a segment's bounding box by this much ("AFrobRobotSim.RayCast"),
+-- for rounding, so every box it can find is listed.
 rayGridTolerance :: Double
 rayGridTolerance = 1e-3
 
--- The side of a cell: a third of the reach. A list holds the boxes near a
--- region of area @cs^2 + 2 cs R + pi R^2 / 4@ (cell, two strips and a
--- quarter disc); the quarter disc dominates below about @R / 3@, so smaller
--- cells would cost memory for little shorter lists.
-cellSide :: Double
-cellSide = rayGridReach / 3
+-- | The side of a cell: a third of the reach (cells are larger only in a
+-- world so large that it would need too many of them). A list holds the
+-- boxes near a region of area @cs^2 + 2 cs R + pi R^2 / 4@ (cell, two
+-- strips and a quarter disc); the quarter disc dominates below about
+-- @R / 3@, so smaller cells would cost memory for little shorter lists.
+rayGridCellSide :: Double
+rayGridCellSide = rayGridReach / 3
 
 -- At most this many cells (larger worlds get larger cells) and this many
 -- list entries (beyond that, no ray grid: a world of many thousands of
@@ -123,9 +126,10 @@ rayGrid boxes
     w  = x1 - x0
     h  = y1 - y0
     mag = maximum [abs x0, abs y0, abs x1, abs y1]
-    -- cells of 'cellSide', larger if there would be too many of them (the
-    -- second bound keeps a long thin domain's columns or rows in range)
-    cs = maximum [cellSide, sqrt (w * h / fromIntegral maxCells), max w h / 4096]
+    -- cells of 'rayGridCellSide', larger if there would be too many of them
+    -- (the second bound keeps a long thin domain's columns or rows in
+    -- range)
+    cs = maximum [rayGridCellSide, sqrt (w * h / fromIntegral maxCells), max w h / 4096]
     nx = max 1 (ceiling (w / cs))
     ny = max 1 (ceiling (h / cs))
     m  = 2 * rayGridTolerance + 1e-12 * mag

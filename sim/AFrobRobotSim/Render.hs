@@ -85,6 +85,7 @@ module AFrobRobotSim.Render
   , wallColour
   , blockColour
   , ballColour
+  , ballRimColour
   , rayColour
   , headingColour
   , labelColour
@@ -111,15 +112,20 @@ import           AFrobRobotSim.Simulator    (WorldState (..))
 -- the top-left. @trails@ holds each robot's path so far, one list per robot
 -- in 'wsRobots' order, oldest point first; it is drawn only with
 -- 'styleTrails'. See the module documentation for the shapes and colours.
+--
+-- @renderPPM style scene@, applied once and used for every frame of a run,
+-- prepares what the frames share (the view, and the static world the rays
+-- are cast against) once.
 renderPPM :: RenderStyle -> Scene -> [[Position2]] -> WorldState -> B.ByteString
-renderPPM style scene trails ws = createPPM w h $ \c -> mapM_ (rasterise c (vMap v)) shapes
+renderPPM style scene = \trails ws ->
+  let shapes = floorShapes v
+            ++ (if styleTrails style then trailShapes v (wsRobots ws) trails else [])
+            ++ staticShapes v
+            ++ snapshotShapes v ws
+  in createPPM w h $ \c -> mapM_ (rasterise c (vMap v)) shapes
   where
     v      = viewOf style scene
     (w, h) = vSize v
-    shapes = floorShapes v
-          ++ (if styleTrails style then trailShapes v (wsRobots ws) trails else [])
-          ++ staticShapes v
-          ++ snapshotShapes v ws
 
 -- One shape drawn on the canvas.
 rasterise :: Canvas -> ImageMap -> Shape -> IO ()

@@ -109,6 +109,7 @@ simulateRun prog opts world rcA rcB = do
       nSteps   = max 0 (round (optSeconds opts / dt)) :: Int
       scene    = Scene notesBounds world
       style    = RenderStyle (optScale opts) (optRays opts) (optTrails opts)
+      render   = renderPPM style scene   -- once: what every frame shares
       -- frame f is taken at the step nearest to simulated time f / fps
       frameAt n = let f = fromIntegral n * dt * optFps opts
                   in abs (f - fromIntegral (round f :: Int)) * 2 < dt * optFps opts
@@ -128,7 +129,7 @@ simulateRun prog opts world rcA rcB = do
         frames <- if optFrames opts && frameAt n
           then do
             writeFrame (optOut opts) (prFrames p)
-              (renderPPM style scene (map reverse trails) s)
+              (render (map reverse trails) s)
             pure (prFrames p + 1)
           else pure (prFrames p)
         let kept = if optSvg opts /= Nothing && n `mod` svgEvery == 0 then s : prKept p else prKept p

@@ -49,7 +49,8 @@ import           GHC.Arr                (Array, listArray, unsafeAt)
 import           AFRP.Geometry
 import           AFrob.Angle            (normalizeAngle)
 import           AFrob.Dimensions
-import           AFrobRobotSim.Balls    (Ball (..))
+import           AFrobRobotSim.Balls    (Ball (..), ballIndex)
+import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.RayCast  (rayCastBoxes)
 import           AFrobRobotSim.Robot
@@ -86,8 +87,8 @@ pattern SenseContext { scArena, scRobots, scBalls } <- MkSenseContext scArena sc
   where SenseContext a rs bs = MkSenseContext a rs bs (indexes a rs bs)
 {-# COMPLETE SenseContext #-}
 
--- | The robots' centres on a grid over the arena (as
--- 'AFrobRobotSim.Physics.pointsOver' indexes them), built when first needed.
+-- | The robots' centres on a grid over the arena
+-- ('AFrobRobotSim.Physics.robotIndex'), built when first needed.
 scRobotIndex :: SenseContext -> PointIndex
 scRobotIndex (MkSenseContext _ _ _ ix) = ixRobotGrid ix
 
@@ -95,15 +96,11 @@ indexes :: Arena -> [Robot] -> [Ball] -> Indexes
 indexes arena rs bs = Indexes
   { ixRobots    = listArray (0, nr - 1) rs
   , ixNRobots   = nr
-  , ixRobotGrid = pointsOver arena [ (x, y) | Robot { rPos = Point2 x y } <- rs ]
+  , ixRobotGrid = robotIndex arena rs
   , ixBalls     = listArray (0, length bs - 1) bs
-  , ixBallGrid  = pointsOver arena [ (x, y) | Ball (Point2 x y) _ <- bs ]
+  , ixBallGrid  = ballIndex arena bs
   }
   where nr = length rs
-
--- Some margin around every query rectangle, for rounding.
-slack :: Double
-slack = 1e-3
 
 -- | The input of one robot (by its index in the context's robot list),
 -- given its odometry reading and the key pressed now.
@@ -141,9 +138,8 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
           | j >= n    = acc
           | otherwise = scan (j + 1) (nearPoint grid skip px py acc j)
     -- The other robots near this one, gathered once per sample and shared
-    -- by the tracker and every ray: a robot that a ray can hit within its
-    -- length has its centre within 'rayLength' plus a radius (3.5 m) of
-    -- this one's.
+    -- by the tracker and every ray: all within 'gatherRange', which covers
+    -- the tracker's range and every robot a ray can hit.
     others = gather (ixRobotGrid ix) i
     -- Those a quarter-turn ray can hit: a ray meets a disc only if the
     -- disc's centre is within a radius of the ray's line (the
@@ -155,7 +151,8 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
                  let Vector2 c s = headingDir
                      x = qx - px
                      y = qy - py
-                 in abs (y * c - x * s) <= radius + slack || abs (x * c + y * s) <= radius + slack)
+                 in abs (y * c - x * s) <= robotRadius + querySlack
+                    || abs (x * c + y * s) <= robotRadius + querySlack)
                  others
     -- Those within the tracker's range (centre to centre, the distance as
     -- 'vector2RhoTheta' has it: the square root of the same sum of
@@ -176,37 +173,37 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
       Just QRight -> rangeRight
       Just QBack  -> rangeBack
       Nothing     -> rangeAt a
-    -- (their directions as 'turnedBy' turns them, written out)
-    rangeFront = let Vector2 c s = headingDir in cast crossing c s
-    rangeLeft  = let Vector2 c s = headingDir in cast crossing (negate s) c
-    rangeRight = let Vector2 c s = headingDir in cast crossing s (negate c)
-    rangeBack  = let Vector2 c s = headingDir in cast crossing (negate c) (negate s)
+    rangeFront = rangeQuarter QFront
+    rangeLeft  = rangeQuarter QLeft
+    rangeRight = rangeQuarter QRight
+    rangeBack  = rangeQuarter QBack
+    rangeQuarter q = let Vector2 ux uy = quarterDir q headingDir in cast crossing ux uy
+    -- any other angle (as 'rayDirection' turns it)
     rangeAt a
       | not (finite a) = rangeFinderMax
-      | otherwise      = let Vector2 ux uy = turnedBy (rHeading me) headingDir a
+      | otherwise      = let Vector2 ux uy = vector2Polar 1 (rHeading me + a)
                          in cast others ux uy
     -- a ray: the nearest box, then any nearer robot among the given ones
     cast near ux uy =
       reading (foldPoints (\m _ qx qy d2 -> if d2 > rayReach * rayReach then m
                                            else rayToRobot px py ux uy m qx qy)
                           (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) near)
-    radius = simbotDiameter / 2
     -- the heading's unit vector, for all of this robot's rays: the cos and
     -- sin the robot keeps with its heading, the numbers of 'headingVector'
     headingDir = Vector2 (rCos me) (rSin me)
 
--- The points of a larger index (all but number @skip@) within a little
--- more than the tracker's range of @(px, py)@: those of the cells around
+-- The points of a larger index (all but number @skip@) within
+-- 'gatherRange' of @(px, py)@: those of the cells around
 -- the range. Not inlined: the grid's bounds, read before the test of the
 -- index's size, made every scan of a small one read and save them.
 gatherIn :: PointIndex -> Int -> Double -> Double -> Points
 gatherIn grid skip px py =
   foldPointsIn grid (px - tr) (py - tr) (px + tr) (py + tr) (nearPoint grid skip px py) NoPoint
-  where tr = trackerRange + slack
+  where tr = gatherRange
 {-# NOINLINE gatherIn #-}
 
 -- Point number @j@ of an index, added to a list if it is not number @skip@
--- and lies within a little more than the tracker's range of @(px, py)@.
+-- and lies within 'gatherRange' of @(px, py)@.
 nearPoint :: PointIndex -> Int -> Double -> Double -> Points -> Int -> Points
 nearPoint grid skip px py acc j
   | j == skip = acc
@@ -216,7 +213,7 @@ nearPoint grid skip px py acc j
           x  = qx - px
           y  = qy - py
           d2 = x * x + y * y
-          tr = trackerRange + slack
+          tr = gatherRange
       in if d2 <= tr * tr then Point j qx qy d2 acc else acc
 {-# INLINE nearPoint #-}
 
@@ -287,12 +284,19 @@ headingVector h = Vector2 (cos h) (sin h)
 -- lazily shared heading vector is only needed for the quarter turns.
 turnedBy :: Heading -> Vector2 Double -> Angle -> Vector2 Double
 turnedBy h hv a = case quarterTurn a of
-  Just QFront -> hv
-  Just QLeft  -> let Vector2 c s = hv in Vector2 (negate s) c
-  Just QRight -> let Vector2 c s = hv in Vector2 s (negate c)
-  Just QBack  -> let Vector2 c s = hv in Vector2 (negate c) (negate s)
-  Nothing     -> vector2Polar 1 (h + a)
+  Just q  -> quarterDir q hv
+  Nothing -> vector2Polar 1 (h + a)
 {-# INLINE turnedBy #-}
+
+-- A heading's unit vector turned exactly by a quarter turn: its
+-- components swapped and negated.
+quarterDir :: QuarterTurn -> Vector2 Double -> Vector2 Double
+quarterDir q hv@(Vector2 c s) = case q of
+  QFront -> hv
+  QLeft  -> Vector2 (negate s) c
+  QRight -> Vector2 s (negate c)
+  QBack  -> Vector2 (negate c) (negate s)
+{-# INLINE quarterDir #-}
 
 -- The range finder's quarter turns, relative to the heading.
 data QuarterTurn = QFront | QLeft | QRight | QBack
@@ -312,16 +316,22 @@ quarterTurn a
 -- How far from the robot's centre the centre of a robot it hits can be:
 -- the ray's length and a radius, and some slack.
 rayReach :: Double
-rayReach = rayLength + simbotDiameter / 2 + slack
+rayReach = rayLength + robotRadius + querySlack
 
 rayLength :: Double
-rayLength = rangeFinderMax + simbotDiameter / 2
+rayLength = rangeFinderMax + robotRadius
+
+-- How far from a robot's centre the robots and balls gathered for its
+-- tracker and its rays (one gather for both) can be: a little more than
+-- the tracker's range, and in any case as far as a ray can reach a robot.
+gatherRange :: Double
+gatherRange = max (trackerRange + querySlack) rayReach
 
 -- The nearer of a distance and the robot (centre) the ray from @(px, py)@
 -- in the direction @(ux, uy)@ may hit.
 rayToRobot :: Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double
 rayToRobot px py ux uy m qx qy =
-  case rayCircle (Point2 px py) (Vector2 ux uy) (Point2 qx qy) (simbotDiameter / 2) of
+  case rayCircle (Point2 px py) (Vector2 ux uy) (Point2 qx qy) robotRadius of
     Just t  -> min t m
     Nothing -> m
 {-# INLINE rayToRobot #-}
@@ -329,4 +339,4 @@ rayToRobot px py ux uy m qx qy =
 -- The reading for the nearest hit (centre to obstacle): from the robot's
 -- edge, within the range.
 reading :: Double -> Distance
-reading nearest = max 0 (min rangeFinderMax (nearest - simbotDiameter / 2))
+reading nearest = max 0 (min rangeFinderMax (nearest - robotRadius))

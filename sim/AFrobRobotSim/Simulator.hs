@@ -37,6 +37,7 @@ import           AFrob.Angle             (normalizeAngle, normalizeHeading)
 import           AFrob.Dimensions
 import           AFrob.RobotIO           (BatteryStatus, HasRobotProperties (..))
 import           AFrobRobotSim.Balls
+import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors

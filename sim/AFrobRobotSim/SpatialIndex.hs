@@ -13,6 +13,9 @@
 -- * a 'PointIndex' of points (the centres of robots or balls, built once
 --   per step), each listed in the cell that contains it.
 --
+-- A box index also carries the ray lists of "AFrobRobotSim.RayGrid" for its
+-- boxes ('boxIndexRays'), built the first time a ray needs them.
+--
 -- A query names a rectangle and visits every item listed in a cell the
 -- rectangle overlaps: a superset of the items whose shape overlaps the
 -- rectangle. So a caller that asks for a rectangle containing every place
@@ -26,16 +29,11 @@
 -- not finite are visited by every query, so that non-finite numbers give
 -- what testing every item would give.
 module AFrobRobotSim.SpatialIndex
-  ( -- * Grids
-    Grid
-  , gridFor
-  , finite
-  , gridCellSize
-  , gridCells
+  ( -- * Numbers
+    finite
     -- * Static boxes
   , BoxIndex
   , boxIndex
-  , boxIndexGrid
   , boxIndexCount
   , boxAt
   , foldBoxesIn
@@ -49,11 +47,6 @@ module AFrobRobotSim.SpatialIndex
   , pointY
   , foldPointsIn
   , foldPointsInM
-    -- * Mutable unboxed arrays of numbers (for callers that move points)
-  , MDblArr
-  , newDblArr
-  , readD
-  , writeD
   ) where
 
 import           Control.Monad.ST (runST)
@@ -93,10 +86,6 @@ gridFor x0 y0 x1 y1 n
     cs  = max cs0 (sqrt (w * h / 65536))
     nx  = max 1 (ceiling (w / cs))
     ny  = max 1 (ceiling (h / cs))
-
--- | The cell size of a grid (infinite for a single-cell grid).
-gridCellSize :: Grid -> Double
-gridCellSize = gCs
 
 -- | The number of cells of a grid.
 gridCells :: Grid -> Int
@@ -155,10 +144,6 @@ boxIndex boxes = runST $ do
           cy0 = cellOf gy cs ny b
           cy1 = cellOf gy cs ny d
       in mapM_ k [ cy * nx + cx | cy <- [cy0 .. cy1], cx <- [cx0 .. cx1] ]
-
--- | The grid of a box index.
-boxIndexGrid :: BoxIndex -> Grid
-boxIndexGrid = biGrid
 
 -- | How many boxes are indexed.
 boxIndexCount :: BoxIndex -> Int

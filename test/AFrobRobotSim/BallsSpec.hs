@@ -8,18 +8,16 @@ import           Test.Hspec
 import           Test.QuickCheck
 
 import           AFRP.Geometry
+import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Balls
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldGen
+import           TestUtil              (shouldApprox)
 
 ------------------------------------------------------------------------------
 -- The reference: the original all-pairs code
-
-robotRadius', ballRadius' :: Double
-robotRadius' = simbotDiameter / 2
-ballRadius'  = ballDiameter / 2
 
 refStepBalls :: Double -> Arena -> [Robot] -> [Ball] -> [Ball]
 refStepBalls dt arena robots balls = refResolvePairs (map (refStepBall dt arena robots) balls)
@@ -77,14 +75,6 @@ refResolvePairs bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 
 ------------------------------------------------------------------------------
 -- Single cases
 
--- | The notes' 10 m world with nothing in it.
-emptyArena :: Arena
-emptyArena = arenaOf notesBounds []
-
--- | Within a millionth of a millimetre.
-near :: Double -> Double -> Bool
-near a b = abs (a - b) < 1e-9
-
 -- | Velocity and position of a ball, as plain numbers.
 state :: Ball -> (Double, Double, Double, Double)
 state (Ball (Point2 x y) (Vector2 vx vy)) = (x, y, vx, vy)
@@ -101,15 +91,18 @@ spec = do
     it "rolls a free ball on, its speed falling by ballFriction per second" $ do
       let (x, y, vx, vy) = state (alone 0.1 (Ball (Point2 0 0) (Vector2 0.6 0.8)))
           v' = 1 - ballFriction * 0.1
-      (near vx (0.6 * v'), near vy (0.8 * v')) `shouldBe` (True, True)
-      (near x (0.1 * 0.6 * v'), near y (0.1 * 0.8 * v')) `shouldBe` (True, True)
+      vx `shouldApprox` (0.6 * v')
+      vy `shouldApprox` (0.8 * v')
+      x `shouldApprox` (0.1 * 0.6 * v')
+      y `shouldApprox` (0.1 * 0.8 * v')
 
     it "stops a slow ball where it is, without turning it round" $
       state (alone 1 (Ball (Point2 1 2) (Vector2 0 (-0.1)))) `shouldBe` (1, 2, 0, 0)
 
     it "bounces a ball off the boundary, keeping ballRestitution of its normal speed" $ do
       let (x, _, vx, vy) = state (alone 0.1 (Ball (Point2 4.8 0) (Vector2 1 0)))
-      (near vx (-(ballRestitution * (1 - ballFriction * 0.1))), vy) `shouldBe` (True, 0)
+      vx `shouldApprox` (-(ballRestitution * (1 - ballFriction * 0.1)))
+      vy `shouldBe` 0
       x + ballRadius <= worldXMax `shouldBe` True
 
     it "lets a driving robot kick a ball it overlaps, away at more than its own speed" $ do
@@ -119,7 +112,8 @@ spec = do
         [Ball (Point2 x y) (Vector2 vx vy)] -> do
           -- relative velocity (-1, 0) reflected: 1 + ballRestitution * 1,
           -- then friction
-          (near vx (1 + ballRestitution - ballFriction * dt), vy, y) `shouldBe` (True, 0, 0)
+          vx `shouldApprox` (1 + ballRestitution - ballFriction * dt)
+          (vy, y) `shouldBe` (0, 0)
           x >= robotRadius + ballRadius - 1e-6 `shouldBe` True
         bs -> expectationFailure ("one ball in, " ++ show (length bs) ++ " out")
 
@@ -127,7 +121,8 @@ spec = do
       case stepBalls 0.001 emptyArena [] [Ball (Point2 (-0.14) 0) (Vector2 1 0), Ball (Point2 0.14 0) (Vector2 (-1) 0)] of
         [Ball (Point2 x0 _) (Vector2 v0 _), Ball (Point2 x1 _) (Vector2 v1 _)] -> do
           let v = 1 - ballFriction * 0.001
-          (near v0 (-v), near v1 v) `shouldBe` (True, True)
+          v0 `shouldApprox` (-v)
+          v1 `shouldApprox` v
           x1 - x0 >= 2 * ballRadius `shouldBe` True
         bs -> expectationFailure ("two balls in, " ++ show (length bs) ++ " out")
 

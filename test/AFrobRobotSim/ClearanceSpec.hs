@@ -9,6 +9,8 @@ import           Test.QuickCheck
 import           AFrobRobotSim.Clearance
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex
+import           AFrobRobotSim.Arena
+import           AFrobRobotSim.WorldGen (arenaFor, genWorld, halfSide, pointBoxDistance)
 
 -- | Boxes of all shapes (thin walls, blocks, long bars) in a square of
 -- half-side @h@, and a finite one always present.
@@ -22,13 +24,6 @@ genBoxes h = do
     t <- oneof [choose (0, 0.2), choose (0.2, 2)]
     elements [Box x y (x + w) (y + t), Box x y (x + t) (y + w)]
 
--- | The distance from a point to a box (0 inside it).
-distanceTo :: Double -> Double -> Box -> Double
-distanceTo x y (Box x0 y0 x1 y1) =
-  let gx = max 0 (max (x0 - x) (x - x1))
-      gy = max 0 (max (y0 - y) (y - y1))
-  in sqrt (gx * gx + gy * gy)
-
 extentOf :: [Box] -> (Double, Double, Double, Double)
 extentOf bs = (minimum (map boxMinX bs), minimum (map boxMinY bs), maximum (map boxMaxX bs), maximum (map boxMaxY bs))
 
@@ -38,12 +33,12 @@ spec = do
     it "is never more than the distance from the point to any box" $
       property $ forAll (elements [5, 20, 200]) $ \h -> forAll (genBoxes h) $ \bs ->
         forAll (vectorOf 50 ((,) <$> choose (-h - 1, 3 * h) <*> choose (-h - 1, 3 * h))) $ \pts ->
-          let cl = clearanceOf bs (boxIndex bs) (extentOf bs)
-          in conjoin [ counterexample (show (x, y, b)) (clearanceAt cl x y <= distanceTo x y b + 1e-12)
+          let cl = clearanceOf (boxIndex bs) (extentOf bs)
+          in conjoin [ counterexample (show (x, y, b)) (clearanceAt cl x y <= pointBoxDistance x y b + 1e-12)
                      | (x, y) <- pts, b <- bs ]
     it "is at most the cap, and the cap for a cell with nothing near" $ do
       let bs = [Box 0 0 0.1 0.1, Box 9.9 9.9 10 10]
-          cl = clearanceOf bs (boxIndex bs) (extentOf bs)
+          cl = clearanceOf (boxIndex bs) (extentOf bs)
       clearanceAt cl 5 5 `shouldBe` clearanceCap
       clearanceAt cl 0.05 0.05 `shouldBe` 0
       -- a point 0.6 m right of the first box: its cell starts at most one
@@ -51,10 +46,18 @@ spec = do
       clearanceAt cl 0.7 0.05 `shouldSatisfy` (\c -> c >= 0.6 - clearanceCellSize 10 10 && c <= 0.6)
     it "is 0 outside the grid and for points that are not finite" $ do
       let bs = [Box 0 0 1 1, Box 5 5 6 6]
-          cl = clearanceOf bs (boxIndex bs) (extentOf bs)
+          cl = clearanceOf (boxIndex bs) (extentOf bs)
       map (uncurry (clearanceAt cl)) [(-0.5, 3), (3, 7), (0 / 0, 3), (1 / 0, 3), (3, -1 / 0)]
         `shouldBe` [0, 0, 0, 0, 0]
     it "is 0 everywhere when a box is not finite" $ do
       let bs = [Box 0 0 1 1, Box 5 5 6 6, Box (0 / 0) 2 3 3]
-          cl = clearanceOf bs (boxIndex bs) (0, 0, 6, 6)
-      clearanceAt cl 3 4.5 `shouldBe` 0
+          cl = clearanceOf (boxIndex bs) (0, 0, 6, 6)
+      [ clearanceAt cl x y | x <- [0.5, 1.5 .. 5.5], y <- [0.5, 1.5 .. 5.5] ]
+        `shouldSatisfy` all (== 0)
+    it "is never more than the distance to any box in an arena's own clearance" $
+      property $ forAll genWorld $ \w ->
+        forAll (vectorOf 30 ((,) <$> choose (-halfSide w, halfSide w) <*> choose (-halfSide w, halfSide w))) $ \pts ->
+          let arena = arenaFor w
+              cl = arenaClearance arena
+          in conjoin [ counterexample (show (x, y, b)) (clearanceAt cl x y <= pointBoxDistance x y b + 1e-12)
+                     | (x, y) <- pts, b <- arenaBoxes arena ]

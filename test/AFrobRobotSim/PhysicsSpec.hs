@@ -10,8 +10,8 @@ import           Test.QuickCheck
 
 import           AFRP.Geometry
 import           AFrobRobotSim.Physics
-import           AFrobRobotSim.Robot
 import           AFrobRobotSim.World
+import           AFrobRobotSim.WorldGen (emptyArena, genCommand)
 
 -- | The bits of a number: tells -0 from 0, which '==' does not.
 bits :: Double -> Word
@@ -30,40 +30,28 @@ genHeading = oneof
   [ elements [0, -0, pi, -pi, pi - 1e-12, -pi + 1e-12, pi / 2]
   , choose (-pi, pi) ]
 
--- | Commands that turn (across pi, too), and some that do not turn at all.
-genCommand :: Gen DriveCommand
-genCommand = oneof
-  [ pure DriveBrake
-  , (\v -> DriveTR v 0) <$> choose (-1, 1)
-  , (\v -> DriveWheels v v) <$> choose (-1, 1)
-  , DriveTR <$> choose (-1, 1) <*> choose (-8, 8)
-  , DriveWheels <$> choose (-1, 1) <*> choose (-1, 1) ]
-
 -- | A robot alone in the middle of an empty 10 m world.
-genRobot :: Gen Robot
-genRobot = do
+genLoneRobot :: Gen Robot
+genLoneRobot = do
   k  <- elements [SimbotA, SimbotB]
   h  <- genHeading
   v  <- choose (-0.5, 0.5)
   pure (mkRobot k 1 (Point2 0 0) h v False 1)
 
-emptyArena :: Arena
-emptyArena = arenaOf notesBounds []
-
 spec :: Spec
 spec = do
   describe "mkRobot" $
     it "caches the cos and sin of the heading" $
-      property $ forAll genRobot cacheAgrees
+      property $ forAll genLoneRobot cacheAgrees
 
   describe "withHeading" $
     it "turns the robot and its cached cos and sin together" $
-      property $ forAll genRobot $ \r -> forAll genHeading $ \h ->
+      property $ forAll genLoneRobot $ \r -> forAll genHeading $ \h ->
         let r' = withHeading h r in rHeading r' === h .&&. cacheAgrees r'
 
   describe "stepRobots" $
     it "keeps every robot's cached cos and sin those of its heading, step after step" $
-      property $ forAll genRobot $ \r0 -> forAll (vectorOf 40 genCommand) $ \cs ->
+      property $ forAll genLoneRobot $ \r0 -> forAll (vectorOf 40 genCommand) $ \cs ->
         let rs = scanl (\r c -> head' (stepRobots 0.05 emptyArena [(r, c)])) r0 cs
         in conjoin (map cacheAgrees rs)
   where

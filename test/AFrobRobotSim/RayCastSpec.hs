@@ -8,9 +8,9 @@ import           Test.Hspec
 import           Test.QuickCheck
 
 import           AFRP.Geometry
-import           AFrobRobotSim.Physics
 import           AFrobRobotSim.RayCast
-import           AFrobRobotSim.RayGrid (rayGridEntries)
+import           AFrobRobotSim.Arena
+import           AFrobRobotSim.RayGrid (rayGridCellSide, rayGridEntries, rayGridReach, rayGridTolerance)
 import           AFrobRobotSim.Sensors (rayDirection)
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex
@@ -25,7 +25,7 @@ spec = do
         let Arena boxes = arenaFor w
             bi = boxIndex boxes
             got = nub (sort (foldBoxesAlong bi ax ay bx by (\acc k _ -> k : acc) []))
-            near = [ k | (k, b) <- zip [0 ..] boxes, segmentBoxDistance (ax, ay) (bx, by) b <= 0.9e-3 ]
+            near = [ k | (k, b) <- zip [0 ..] boxes, segmentBoxDistance (ax, ay) (bx, by) b <= 0.9 * rayGridTolerance ]
             t = rayGridTolerance
             inRect = and [ a <= max ax bx + t && c >= min ax bx - t && b <= max ay by + t && d >= min ay by - t
                          | k <- got, let Box a b c d = boxes !! k ]
@@ -38,7 +38,7 @@ spec = do
         forAll (oneof [choose (-pi, -pi / 2), elements [-pi, -pi / 2, -3 * pi / 4]]) $ \th ->
         forAll (elements [0, 1e-12, 0.5e-3, 0.85e-3]) $ \gap -> forAll (elements [0, 1e-13, -1e-13]) $ \e ->
           let Bounds x0 y0 _ _ = bounds
-              cs = rayGridReach / 3
+              cs = rayGridCellSide
               ax = x0 - 1 + fromIntegral i * cs + e
               ay = y0 - 1 + fromIntegral j * cs - e
               ux = cos th
@@ -51,7 +51,7 @@ spec = do
               Arena boxes0 = arenaOf bounds os
               boxes = boxes0 ++ [extra]
               got = foldBoxesAlong (boxIndex boxes) ax ay bx by (\acc n _ -> n : acc) []
-          in segmentBoxDistance (ax, ay) (bx, by) extra <= 0.9e-3 ==> (length boxes - 1) `elem` got
+          in segmentBoxDistance (ax, ay) (bx, by) extra <= 0.9 * rayGridTolerance ==> (length boxes - 1) `elem` got
     it "visits each box at most once when the ray grid answers" $
       property $ forAll genWorld $ \w -> forAll (genSegment w) $ \(ax, ay, bx, by) ->
         let Arena boxes = arenaFor w
@@ -125,7 +125,7 @@ genSegment w = do
     , do i <- chooseInt (0, 40)
          j <- chooseInt (0, 40)
          e <- elements [0, 1e-13, -1e-13]
-         pure (-h - 1 + fromIntegral i * (rayGridReach / 3) + e, -h - 1 + fromIntegral j * (rayGridReach / 3) - e) ]
+         pure (-h - 1 + fromIntegral i * (rayGridCellSide) + e, -h - 1 + fromIntegral j * (rayGridCellSide) - e) ]
   let (ax, ay) = start
   pure (ax, ay, ax + len * ux, ay + len * uy)
 
@@ -134,14 +134,11 @@ genSegment w = do
 segmentBoxDistance :: (Double, Double) -> (Double, Double) -> Box -> Double
 segmentBoxDistance (ax, ay) (bx, by) box@(Box x0 y0 x1 y1)
   | meets     = 0
-  | otherwise = minimum ([toBox ax ay, toBox bx by] ++ [ toSegment cx cy | cx <- [x0, x1], cy <- [y0, y1] ])
+  | otherwise = minimum ([pointBoxDistance ax ay box, pointBoxDistance bx by box] ++ [ toSegment cx cy | cx <- [x0, x1], cy <- [y0, y1] ])
   where
     meets = case rayBox (Point2 ax ay) (Vector2 (bx - ax) (by - ay)) box of
       Just t  -> t <= 1
       Nothing -> False
-    toBox px py = let dx = maximum [0, x0 - px, px - x1]
-                      dy = maximum [0, y0 - py, py - y1]
-                  in sqrt (dx * dx + dy * dy)
     toSegment cx cy =
       let vx = bx - ax
           vy = by - ay

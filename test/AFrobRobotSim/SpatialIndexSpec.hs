@@ -1,9 +1,13 @@
 -- | The spatial index ("AFrobRobotSim.SpatialIndex") finds exactly what a
 -- scan of everything finds, and the robots' physics and the sensors that
--- use it ("AFrobRobotSim.Physics", "AFrobRobotSim.Sensors") compute, bit
--- for bit, what the straightforward all-pairs versions below compute. The
--- reference versions are the simulator's original code, kept here as the
--- specification (the balls' is in "AFrobRobotSim.BallsSpec").
+-- use it ("AFrobRobotSim.Physics", "AFrobRobotSim.Sensors") compute what
+-- the straightforward all-pairs versions below compute ('===': bit for
+-- bit, except that 0 and -0 count as equal). The reference versions are
+-- the simulator's original code, kept here as the specification, with two
+-- pieces of the implementation in them: 'rayDirection' (the exact
+-- quarter turns of the rays) and 'withHeading' (the heading's cached cos
+-- and sin, checked on their own in "AFrobRobotSim.PhysicsSpec"). The
+-- balls' reference is in "AFrobRobotSim.BallsSpec".
 module AFrobRobotSim.SpatialIndexSpec (spec) where
 
 import           Data.List             (nub, sort, sortOn)
@@ -14,6 +18,7 @@ import           AFRP.Geometry
 import           AFrob.Angle           (normalizeAngle, normalizeHeading)
 import           AFrob.Dimensions      (Position2, RobotId, RobotType)
 import           AFrob.RobotIO         (BatteryStatus (..))
+import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Balls   (Ball (..))
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Robot
@@ -24,15 +29,8 @@ import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldGen
 
 ------------------------------------------------------------------------------
--- Generators
-
--- Worlds, robots, balls and time steps come from AFrobRobotSim.WorldGen.
-
-------------------------------------------------------------------------------
--- The reference: the original all-pairs code
-
-robotRadius' :: Double
-robotRadius' = simbotDiameter / 2
+-- The reference: the original all-pairs code (worlds, robots, balls and
+-- time steps come from AFrobRobotSim.WorldGen)
 
 refStepRobots :: Double -> Arena -> [(Robot, DriveCommand)] -> [Robot]
 refStepRobots dt arena cmds = go [] cmds

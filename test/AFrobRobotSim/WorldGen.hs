@@ -1,6 +1,7 @@
 -- | Random worlds for the simulator's specs: squares of walls and blocks,
 -- the arena "AFrobRobotSim.Arena" makes of them, and robots, balls, wheel
--- commands and time steps to put in them.
+-- commands and time steps to put in them; and what the specs' reference
+-- versions share.
 module AFrobRobotSim.WorldGen
   ( World (..)
   , genWorld
@@ -12,13 +13,19 @@ module AFrobRobotSim.WorldGen
   , genBall
   , genBalls
   , genDt
+  , emptyArena
+  , robotRadius'
+  , ballRadius'
+  , pointBoxDistance
   ) where
 
 import           Test.QuickCheck
 
 import           AFRP.Geometry
+import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Balls   (Ball (..))
 import           AFrobRobotSim.Physics
+import           AFrobRobotSim.Shapes  (Box (..))
 import           AFrobRobotSim.Robot   (DriveCommand (..))
 import           AFrobRobotSim.World
 
@@ -66,12 +73,16 @@ genRobots h = do
   crowd <- elements [h, min h 2, 1]
   vectorOf n (genRobot crowd)
 
--- | Any wheel command, some beyond the wheels' limits.
+-- | Any wheel command, some beyond the wheels' limits, some that do not
+-- turn.
 genCommand :: Gen DriveCommand
 genCommand = oneof
   [ pure DriveBrake
   , DriveWheels <$> choose (-3, 3) <*> choose (-3, 3)
   , DriveTR <$> choose (-3, 3) <*> choose (-8, 8)
+    -- commands that do not turn
+  , (\v -> DriveWheels v v) <$> choose (-3, 3)
+  , (\v -> DriveTR v 0) <$> choose (-3, 3)
   ]
 
 -- | A ball anywhere in the square of half side @h@, moving fast.
@@ -93,3 +104,20 @@ genBalls h = do
 -- | Time steps, from the usual to the huge.
 genDt :: Gen Double
 genDt = elements [0.01, 0.05, 0.3, 1, 4]
+
+-- | The notes' 10 m world with nothing in it.
+emptyArena :: Arena
+emptyArena = arenaOf notesBounds []
+
+-- | The radii of a robot and a ball, from the sizes of
+-- "AFrobRobotSim.World" (the references' own, not the implementation's).
+robotRadius', ballRadius' :: Double
+robotRadius' = simbotDiameter / 2
+ballRadius'  = ballDiameter / 2
+
+-- | The distance from a point to a box (0 inside it).
+pointBoxDistance :: Double -> Double -> Box -> Double
+pointBoxDistance x y (Box x0 y0 x1 y1) =
+  let gx = max 0 (max (x0 - x) (x - x1))
+      gy = max 0 (max (y0 - y) (y - y1))
+  in sqrt (gx * gx + gy * gy)

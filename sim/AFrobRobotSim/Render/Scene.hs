@@ -34,18 +34,20 @@ module AFrobRobotSim.Render.Scene
   , Shape (..)
   , View (..)
   , viewOf
+  , vScale
   , validScale
   , toImg
   , floorShapes
   , staticShapes
   , trailShapes
   , snapshotShapes
-  , floorInt
   ) where
 
 import           AFRP.Geometry
 import           AFrob.Dimensions
-import           AFrobRobotSim.Physics      (arenaOf, robotRadius)
+import           AFrobRobotSim.Arena        (Arena, arenaOf)
+import           AFrobRobotSim.Balls        (ballRadius)
+import           AFrobRobotSim.Physics      (robotRadius)
 import           AFrobRobotSim.Render.Raster
 import           AFrobRobotSim.Sensors      (rangeReading)
 import           AFrobRobotSim.Simulator    (RobotState (..), WorldState (..))
@@ -179,28 +181,48 @@ trailColour t = blend 0.5 (typeColour t) backgroundColour
 -- "AFrobRobotSim.Render.SVG") draw a list of them in order, each over the
 -- ones before.
 data Shape
-  = SFill Colour                                                  -- the whole picture
-  | SRect Colour Double Double Double Double                      -- [x0, x1) x [y0, y1)
-  | SDisc Colour Double Double Double                             -- centre, radius
+  = SFill Colour
+    -- ^ the whole picture
+  | SRect Colour Double Double Double Double
+    -- ^ the rectangle @[x0, x1) x [y0, y1)@
+  | SDisc Colour Double Double Double
+    -- ^ the disc of the given centre and radius
   | STri Colour (Double, Double) (Double, Double) (Double, Double)
-  | SLine Colour Int (Double, Double) (Double, Double)            -- width in pixels
-  | SPolyline Colour Int [Position2]                              -- world points
-  | SText Colour Int (Int, Int) String                            -- magnification, top-left
+    -- ^ the triangle of the three corners
+  | SLine Colour Int (Double, Double) (Double, Double)
+    -- ^ the segment between two points, the given number of pixels wide
+  | SPolyline Colour Int [Position2]
+    -- ^ a line through /world/ points (mapped by the back end), so many
+    -- pixels wide
+  | SText Colour Int (Int, Int) String
+    -- ^ digits magnified so many times, the top-left corner at the point
 
--- | One picture's style and scene, with what follows from them: the
--- scale, the frame's size ('frameSize') and the world-to-image mapping.
+-- | One picture's style and scene, with what follows from them. A view
+-- is the same for every snapshot of a run: a back end that draws many
+-- builds it once (see 'AFrobRobotSim.Render.renderPPM').
 data View = View
   { vStyle :: RenderStyle
+    -- ^ how to draw
   , vScene :: Scene
-  , vScale :: Double
+    -- ^ what is drawn
   , vSize  :: (Int, Int)
+    -- ^ the frame's size in pixels ('frameSize')
   , vMap   :: ImageMap
+    -- ^ world to image coordinates ('worldToPixel')
+  , vArena :: Arena
+    -- ^ the scene's static world, for the range-finder rays (built when
+    -- first needed)
   }
 
 -- | The view of a scene drawn in a style.
 viewOf :: RenderStyle -> Scene -> View
 viewOf style scene =
-  View style scene (styleScale style) (frameSize style scene) (imageMapOf style scene)
+  View style scene (frameSize style scene) (imageMapOf style scene)
+       (arenaOf (sceneBounds scene) (sceneWorld scene))
+
+-- | Pixels per metre ('styleScale').
+vScale :: View -> Double
+vScale = styleScale . vStyle
 
 -- | Is the scale positive and finite? Otherwise a picture shows only the
 -- boundary ('floorShapes' gives just the fill, the others nothing).
@@ -237,7 +259,7 @@ staticShapes v = [ SRect col x0 y0 x1 y1 | validScale v, o <- sceneWorld (vScene
 trailShapes :: View -> [RobotState] -> [[Position2]] -> [Shape]
 trailShapes v robots trails =
   [ SPolyline col 1 ps | validScale v, (col, ps) <- zip cols trails ]
-  where cols = map (trailColour . robotType) robots ++ repeat (blend 0.5 (typeColour "") backgroundColour)
+  where cols = map (trailColour . robotType) robots ++ repeat (trailColour "")
 
 -- | The balls, range-finder rays (with 'styleRays'), robots and ids of a
 -- snapshot, bottom to top.
@@ -248,10 +270,10 @@ snapshotShapes v ws
   where
     s      = vScale v
     robots = wsRobots ws
-    ballR  = ballDiameter / 2 * s
+    ballR  = ballRadius * s
     ball p = let (cx, cy) = toImg v p
              in [SDisc ballRimColour cx cy ballR, SDisc ballColour cx cy (ballR - max 1 (s / 60))]
-    arena  = arenaOf (sceneBounds (vScene v)) (sceneWorld (vScene v))
+    arena  = vArena v
     rayW   = max 1 (round (s / 60))
     rays
       | styleRays (vStyle v) =
