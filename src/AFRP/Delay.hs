@@ -37,6 +37,20 @@ pre = iPre (error "AFRP.Delay.pre: pre has no output at local time 0 (use iPre f
 -- > embed (iPre 0) (1, [(1, Just 2), (1, Just 3)])  ==  [0, 1, 2]
 iPre :: a -> SF a a
 iPre a0 = SF (NPre a0)
+-- Inlined only late (phase 1), so that the rule below sees it.
+{-# INLINE [1] iPre #-}
+
+-- @loop (second (iPre c) >>> arr g)@ (written so, or as @loopPre c (arr
+-- g)@: a counter, an accumulator, a state machine written as a function)
+-- is what @loopN@ builds at run time, recognising the delay and the
+-- function, as @loopPreG g c@; built directly where GHC can see @g@, the
+-- step is compiled with @g@'s body in place, and the pair @g@ returns and
+-- the two selections from it cost nothing. The same node, the same
+-- laziness: @g@ is applied lazily and both components are taken lazily.
+{-# RULES
+"AFRP loop(second iPre>>>arr)" forall c g.
+  loopSF (compSF (arrSF g) (secondSF (iPre c))) = SF (loopPreG (\a -> g a) c)
+  #-}
 
 -- | @b0 \`fby\` sf@ ("followed by") outputs @b0@ at local time 0 and then,
 -- at every later sample, the output @sf@ had at the previous sample.

@@ -56,6 +56,51 @@ integralDouble :: SF Double Double
 integralDouble = SF (initN (\a0 -> (# NIntD 0 a0, 0 #)))
 {-# NOINLINE integralDouble #-}
 
+-- | @integralDOn p q@ is @arr p >>> integral >>> arr q@ at 'Double', as
+-- one node: it stores its input sample as it comes and applies @p@ to it
+-- at the next step, where the sum needs it (the composition would store
+-- the unevaluated @p a@ and evaluate it there: the same value, evaluated
+-- at the same step, without the thunk); its output is @q@ of the running
+-- sum, lazily, @q 0@ at time 0. Inlined only late (phase 1), so that the
+-- rules below see it; once inlined, GHC compiles the step with @p@ and
+-- @q@ in place.
+integralDOn :: (a -> Double) -> (Double -> b) -> SF a b
+integralDOn p q = SF (initN (\a0 -> case go 0 a0 of !n -> (# n, q 0 #)))
+  where
+    go !acc prev = NStep (\dt a ->
+      let !acc' = acc + dt * p prev
+      in case go acc' a of !n -> (# n, q acc' #))
+{-# INLINE [1] integralDOn #-}
+
+-- The functions next to an 'integral' at 'Double', where GHC can see them
+-- (written in the source, as in @arr p >>> integral >>> arr q@, the
+-- notes' odometry and any PID controller, or exposed by inlining), are
+-- made part of one 'integralDOn' node: @integral@ is @integralDOn id id@,
+-- and @arr f >>> integralDOn p q = integralDOn (p . f) q@, @integralDOn p
+-- q >>> arr g = integralDOn p (g . q)@, alone or at the head of a chain
+-- (@... >>> sf@), with the laziness of the compositions (see
+-- 'integralDOn'). An 'integral' with no function next to it stays the
+-- specialised node 'NIntD', which the switches and 'AFRP.Parallel.parB'
+-- step in place.
+{-# RULES
+"AFRP arr>>>integral" forall f.
+  compSF integralDouble (arrSF f) = integralDOn (\a -> f a) (\c -> c)
+"AFRP arr>>>integral>>>sf" forall f h.
+  compSF (compSF h integralDouble) (arrSF f) = compSF h (integralDOn (\a -> f a) (\c -> c))
+"AFRP integral>>>arr" forall g.
+  compSF (arrSF g) integralDouble = integralDOn (\a -> a) (\c -> g c)
+"AFRP integral>>>arr>>>sf" forall g h.
+  compSF (compSF h (arrSF g)) integralDouble = compSF h (integralDOn (\a -> a) (\c -> g c))
+"AFRP arr>>>integralDOn" forall f p q.
+  compSF (integralDOn p q) (arrSF f) = integralDOn (\a -> p (f a)) q
+"AFRP arr>>>integralDOn>>>sf" forall f p q h.
+  compSF (compSF h (integralDOn p q)) (arrSF f) = compSF h (integralDOn (\a -> p (f a)) q)
+"AFRP integralDOn>>>arr" forall g p q.
+  compSF (arrSF g) (integralDOn p q) = integralDOn p (\c -> g (q c))
+"AFRP integralDOn>>>arr>>>sf" forall g p q h.
+  compSF (compSF h (arrSF g)) (integralDOn p q) = compSF h (integralDOn p (\c -> g (q c)))
+  #-}
+
 -- | The "immediate" integral from a given initial value, by the right
 -- rectangle rule: @y0@ at time 0; at each later sample the previous output
 -- plus the time step times the /current/ input.

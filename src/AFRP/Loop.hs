@@ -26,6 +26,10 @@ import           AFRP.VectorSpace
 -- > loopPre 0 (arr (\(_, n) -> (n, n + 1)))
 loopPre :: c -> SF (a, c) (b, c) -> SF a b
 loopPre c0 sf = loop (second (iPre c0) >>> sf)
+{-# INLINE loopPre #-}
+
+-- 'loopPre' is inlined, so that @loopPre c (arr g)@ meets the rewrite
+-- rule on @loop (second (iPre c) >>> arr g)@ ("AFRP.Delay").
 
 -- | @loopIntegral sf@ feeds the second output of @sf@ back to its second
 -- input through an 'integral': @sf@ outputs a derivative and sees its

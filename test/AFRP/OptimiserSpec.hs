@@ -16,6 +16,12 @@ edgeAbove :: Int -> SF Int (Event ())
 edgeAbove x = arr (> x) >>> edge
 {-# NOINLINE edgeAbove #-}
 
+-- | @loopPre@ of a function inside a function of the initial value: a
+-- counter from @k@ that outputs the count before the current sample.
+countFrom :: Int -> SF () Int
+countFrom k = loopPre k (arr (\(_, n) -> (n, n + 1)))
+{-# NOINLINE countFrom #-}
+
 -- | A switch of the given kind on @arr (* 2) &&& never@ is stateful when
 -- built and, after one step, the pure @arr (* 2)@.
 disappearsOnNever :: (SF Int (Int, Event ()) -> (() -> SF Int Int) -> SF Int Int) -> Expectation
@@ -25,6 +31,12 @@ disappearsOnNever sw = do
   let sf' = runTo sf [(0, 1)]
   isPureSF sf' `shouldBe` True
   snd (stepSF sf' 1 21) `shouldBe` 42
+
+-- | The outputs of a signal function on the given samples, at steps of 1.
+samples :: SF a b -> [a] -> [b]
+samples sf xs = case xs of
+  x : rest -> embed sf (x, map (\y -> (1, Just y)) rest)
+  []       -> []
 
 -- | Step a signal function through the given samples (the first one's
 -- time step is ignored) and return what it has become.
@@ -84,6 +96,47 @@ spec = do
       isStepSF (edgeAbove 2) `shouldBe` True
       isStepSF (arr (> (2 :: Int)) >>> edge) `shouldBe` True
       embed (edgeAbove 2) (3, map (\x -> (1, Just x)) [1, 5]) `shouldBe` [NoEvent, NoEvent, Event ()]
+    it "loopPre c (arr g): g sees the input and the stored value; it outputs the first component and stores the second" $ do
+      embed (loopPre 0 (arr (\(a, acc) -> (acc, acc + a))) :: SF Int Int) (1, map (\x -> (1, Just x)) [2, 3, 4])
+        `shouldBe` [0, 1, 3, 6]
+      embed (countFrom 5) ((), replicate 3 (1, Nothing)) `shouldBe` [5, 6, 7, 8]
+    it "loop (second (iPre c) >>> arr g), written out: the same as loopPre c (arr g)" $
+      embed (loop (second (iPre 0) >>> arr (\(a, acc) -> (acc, acc + a))) :: SF Int Int)
+        (1, map (\x -> (1, Just x)) [2, 3, 4]) `shouldBe` [0, 1, 3, 6]
+    it "keeps loopPre c (arr g) lazy: neither the stored value nor the output is evaluated unless needed" $ do
+      -- the initial value is never needed: g ignores what it is given back
+      embed (loopPre undefined (arr (\(a, _) -> (a, a))) :: SF Char Char) ('x', [(1, Just 'y')])
+        `shouldBe` "xy"
+      -- an output never looked at is never evaluated
+      length (embed (loopPre 'c' (arr (\(_, c) -> (undefined :: Int, c)))) ((), [(1, Nothing)]))
+        `shouldBe` 2
+      -- a stored value that is never needed is never evaluated
+      embed (loopPre 'c' (arr (\(a, _) -> (a, undefined))) :: SF Int Int) (1, [(1, Just 2)])
+        `shouldBe` [1, 2]
+
+    describe "integral at Double with the functions next to it" $ do
+      -- inputs 1, 2, 3, 4 at steps of 1: integral gives 0, 1, 3, 6
+      let ins = [1, 2, 3, 4] :: [Double]
+      it "arr f >>> integral: f applied to each sample, then summed" $
+        samples (arr (* 2) >>> integral) ins `shouldBe` [0, 2, 6, 12]
+      it "integral >>> arr g: g applied to the sum, also at time 0" $
+        samples (integral >>> arr (+ 1)) ins `shouldBe` [1, 2, 4, 7]
+      it "arr f >>> integral >>> arr g" $
+        samples (arr (* 2) >>> integral >>> arr (+ 1)) ins `shouldBe` [1, 3, 7, 13]
+      it "arr f >>> (arr f' >>> integral >>> arr g) >>> arr g': both functions on each side" $
+        samples (arr (+ 1) >>> (arr (* 2) >>> integral >>> arr (+ 1)) >>> arr (* 3)) ins
+          `shouldBe` [3, 15, 33, 57]
+      it "at the head of a chain: arr f >>> integral >>> sf, integral >>> arr g >>> sf" $ do
+        samples (arr (* 2) >>> integral >>> iPre (-1)) ins `shouldBe` [-1, 0, 2, 6]
+        samples (integral >>> arr (+ 1) >>> iPre (-1)) ins `shouldBe` [-1, 1, 2, 4]
+        samples (arr (+ 1) >>> (arr (* 2) >>> integral) >>> iPre (-1)) ins `shouldBe` [-1, 0, 4, 10]
+        samples ((arr (* 2) >>> integral) >>> arr (+ 1) >>> iPre (-1)) ins `shouldBe` [-1, 1, 3, 7]
+      it "applies f to a sample only at the next step, where the sum needs it" $
+        -- f fails on the last sample, which the integral never needs
+        samples (arr (\x -> if x < 0 then error "evaluated too early" else 2 * x) >>> integral >>> arr (+ 1))
+          [1, 2, -1 :: Double] `shouldBe` [1, 3, 7]
+      it "leaves its output unevaluated until it is needed" $
+        length (samples (integral >>> arr (\_ -> undefined :: Int)) ins) `shouldBe` 4
 
   describe "while running" $ do
     it "an after that has fired becomes a constant" $ do

@@ -20,6 +20,10 @@ module AFRP.Internal.SF
     -- * The instances' composition and lifting (for rewrite rules)
   , compSF
   , arrSF
+  , secondSF
+  , loopSF
+    -- * Loops (for rewrite rules)
+  , loopPreG
     -- * Introspection (for tests)
   , stepSF
   , isPureSF
@@ -82,11 +86,19 @@ loopPreN c (NPure (FDG g)) = loopPreG g c
 loopPreN c f = NStep (\dt a -> case stepN f dt (a, c) of
   (# f', bc #) -> case loopPreN (snd bc) f' of !m -> (# m, fst bc #))
 
--- @loopPreG g c = loopPreN c (arrN g)@.
+-- | @loopPreG g c@ is @loop (second (iPre c) >>> arr g)@, stepped without
+-- a knot (@loopPreN c (arrN g)@): at each step @g@ is applied, lazily, to
+-- the input and the stored value; the first component of the result is
+-- the output, the second is stored, both unevaluated. Inlined, so that
+-- where @g@ is known (the rewrite rule on @loop (second (iPre c) >>> arr
+-- g)@ in "AFRP.Delay", which 'AFRP.Loop.loopPre' meets) GHC compiles the
+-- step with @g@'s body in place: the pair that @g@ returns, and the two
+-- selections from it, then cost nothing.
 loopPreG :: ((a, c) -> (b, c)) -> c -> Node a b
 loopPreG g = go
   where
     go c = NStep (\_ a -> let bc = g (a, c) in case go (snd bc) of !m -> (# m, fst bc #))
+{-# INLINE loopPreG #-}
 
 -- | @loopK d f = loop (second d >>> f)@, by a knot: @d@ sees, as its
 -- input, the second component of the output that @f@ is producing at this
@@ -175,6 +187,20 @@ arrSF f = SF (arrN (\a -> f a))
   compSF (arrSF g) (compSF (arrSF f) h) = compSF (arrSF (\a -> g (f a))) h
   #-}
 
+-- | The instances' 'second': @secondSF sf@ is @second sf@ ('secondN' at
+-- run time). A function of its own, inlined only late (phase 1), so that
+-- rewrite rules ("AFRP.Delay"'s, for @loop (second (iPre c) >>> arr g)@)
+-- see it.
+secondSF :: SF a b -> SF (c, a) (c, b)
+secondSF (SF f) = SF (secondN f)
+{-# INLINE [1] secondSF #-}
+
+-- | The instances' 'loop' ('loopN' at run time), inlined only late (phase
+-- 1) for the same reason as 'secondSF'.
+loopSF :: SF (a, c) (b, c) -> SF a b
+loopSF (SF f) = SF (loopN f)
+{-# INLINE [1] loopSF #-}
+
 ------------------------------------------------------------------------------
 -- Instances
 
@@ -190,7 +216,9 @@ instance Arrow SF where
   arr = arrSF
   {-# INLINE arr #-}
   first (SF f) = SF (firstN f)
-  second (SF f) = SF (secondN f)
+  -- 'secondSF': seen by rewrite rules.
+  second = secondSF
+  {-# INLINE second #-}
   SF f *** SF g = SF (parN f g)
   SF f &&& SF g = SF (fanN f g)
 
@@ -200,7 +228,9 @@ instance Arrow SF where
 -- 'AFRP.Integration.integral', the @d@-combinators) or inside a lazy
 -- structure; demanding it at the same instant diverges with @<<loop>>@.
 instance ArrowLoop SF where
-  loop (SF f) = SF (loopN f)
+  -- 'loopSF': seen by rewrite rules.
+  loop = loopSF
+  {-# INLINE loop #-}
 
 -- | Choice. @left sf@ runs @sf@ on the samples that are 'Left' and passes
 -- 'Right' samples through unchanged. As in Yampa, @sf@ lives only on its
