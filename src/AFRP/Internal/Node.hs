@@ -72,7 +72,11 @@
 --   'AFRP.Internal.SF.arrSF'), so that GHC compiles the composed function
 --   as a whole, with its own strictness analysis, instead of 'compN'
 --   composing unknown functions lazily when the network is built (see
---   bench/README.md for what that saves).
+--   bench/README.md for what that saves); likewise @arr p >>> edge@
+--   ("AFRP.EventSource"), the functions next to an 'AFRP.Integration.integral'
+--   at 'Double' ("AFRP.Integration") and @loop (second (iPre c) >>> arr g)@
+--   ("AFRP.Delay") become one node each, compiled with the functions in
+--   place.
 --
 -- Every such case states, next to it, the identity it relies on.
 module AFRP.Internal.Node
