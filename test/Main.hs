@@ -31,6 +31,7 @@ import qualified AFrobRobotSim.BallsSpec
 import qualified AFrobRobotSim.RayCastSpec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
+import qualified AFrobRobotSim.SensorsSpec
 import qualified AFrobRobotSim.ShapesSpec
 import qualified Examples.Exercises14and15Spec
 import qualified Examples.Exercises1to6Spec
@@ -73,6 +74,7 @@ main = hspec $ do
   describe "AFrobRobotSim.Balls" AFrobRobotSim.BallsSpec.spec
   describe "AFrobRobotSim.RayCast" AFrobRobotSim.RayCastSpec.spec
   describe "AFrobRobotSim.SpatialIndex" AFrobRobotSim.SpatialIndexSpec.spec
+  describe "AFrobRobotSim.Sensors" AFrobRobotSim.SensorsSpec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec
   describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec
