@@ -24,11 +24,14 @@ import qualified AFRP.VectorSpaceSpec
 import qualified AFrob.AngleSpec
 import qualified AFrob.MergeableRecordSpec
 import qualified AFrob.RobotIOSpec
+import qualified AFrobRobotSim.ArenaSpec
 import qualified AFrobRobotSim.ClearanceSpec
+import qualified AFrobRobotSim.FlatArraySpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.BallsSpec
 import qualified AFrobRobotSim.RayCastSpec
+import qualified AFrobRobotSim.RayGridSpec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
 import qualified AFrobRobotSim.SensorsSpec
@@ -69,9 +72,12 @@ main = hspec $ do
   describe "AFrob.RobotIO"           AFrob.RobotIOSpec.spec
   describe "AFrobRobotSim.Shapes"    AFrobRobotSim.ShapesSpec.spec
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
+  describe "AFrobRobotSim.FlatArray" AFrobRobotSim.FlatArraySpec.spec
+  describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
   describe "AFrobRobotSim.Balls" AFrobRobotSim.BallsSpec.spec
+  describe "AFrobRobotSim.RayGrid" AFrobRobotSim.RayGridSpec.spec
   describe "AFrobRobotSim.RayCast" AFrobRobotSim.RayCastSpec.spec
   describe "AFrobRobotSim.SpatialIndex" AFrobRobotSim.SpatialIndexSpec.spec
   describe "AFrobRobotSim.Sensors" AFrobRobotSim.SensorsSpec.spec

@@ -1,10 +1,11 @@
 -- | Random worlds for the simulator's specs: squares of walls and blocks,
 -- the arena "AFrobRobotSim.Arena" makes of them, and robots, balls, wheel
--- commands and time steps to put in them; and what the specs' reference
--- versions share.
+-- commands, time steps and segments (rays) to put in them; and what the
+-- specs' reference versions share.
 module AFrobRobotSim.WorldGen
   ( World (..)
   , genWorld
+  , genMovers
   , arenaFor
   , halfSide
   , genRobot
@@ -17,6 +18,9 @@ module AFrobRobotSim.WorldGen
   , robotRadius'
   , ballRadius'
   , pointBoxDistance
+  , genSegment
+  , genSegmentAmong
+  , segmentBoxDistance
   ) where
 
 import           Test.QuickCheck
@@ -25,7 +29,8 @@ import           AFRP.Geometry
 import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Balls   (Ball (..))
 import           AFrobRobotSim.Physics
-import           AFrobRobotSim.Shapes  (Box (..))
+import           AFrobRobotSim.RayGrid (rayGridCellSide, rayGridReach)
+import           AFrobRobotSim.Shapes  (Box (..), rayBox)
 import           AFrobRobotSim.Robot   (DriveCommand (..))
 import           AFrobRobotSim.World
 
@@ -46,6 +51,17 @@ genWorld = do
     y <- choose (-h + 0.6, h - 0.6)
     elements [OTBlock (Point2 x y), OTVWall (Point2 x y), OTHWall (Point2 x y)]
   pure (World (Bounds (-h) (-h) h h) obs)
+
+-- | What moves in a world (balls and simbots of both types) anywhere in
+-- the square of half side @h@: templates that an arena leaves out.
+genMovers :: Double -> Gen [ObjectTemplate]
+genMovers h = do
+  k <- chooseInt (0, 8)
+  vectorOf k $ do
+    p  <- Point2 <$> choose (-h, h) <*> choose (-h, h)
+    i  <- chooseInt (1, 99)
+    th <- choose (-4, 4)
+    elements [OTBall p, OTSimbotA i p th, OTSimbotB i p th]
 
 arenaFor :: World -> Arena
 arenaFor (World b os) = arenaOf b os
@@ -121,3 +137,84 @@ pointBoxDistance x y (Box x0 y0 x1 y1) =
   let gx = max 0 (max (x0 - x) (x - x1))
       gy = max 0 (max (y0 - y) (y - y1))
   in sqrt (gx * gx + gy * gy)
+
+-- | A segment among a world's boxes ('genSegmentAmong').
+genSegment :: World -> Gen (Double, Double, Double, Double)
+genSegment = genSegmentAmong . arenaBoxes . arenaFor
+
+-- | A segment among boxes (at least one): from anywhere in their bounding
+-- box widened by a metre, or ending within a millimetre of a box (on its
+-- boundary, just outside it, at a corner), or starting on a cell boundary
+-- of the ray grid (of the side 'rayGridCellSide', which it has unless the
+-- boxes spread over hundreds of metres); mostly as long as a range
+-- finder's ray or a little shorter, sometimes longer.
+genSegmentAmong :: [Box] -> Gen (Double, Double, Double, Double)
+genSegmentAmong boxes = do
+  let x0 = minimum (map boxMinX boxes)
+      y0 = minimum (map boxMinY boxes)
+      x1 = maximum (map boxMaxX boxes)
+      y1 = maximum (map boxMaxY boxes)
+      cells = max 40 (ceiling (max (x1 - x0) (y1 - y0) / rayGridCellSide))
+  len <- oneof [elements [3.25, rayGridReach, 0], choose (0, rayGridReach), choose (3, 8)]
+  th  <- oneof [choose (-pi, pi), elements [0, pi / 2, pi, -pi / 2, pi / 4]]
+  let ux = cos th
+      uy = sin th
+  start <- oneof
+    [ (,) <$> choose (x0 - 1, x1 + 1) <*> choose (y0 - 1, y1 + 1)
+    , do Box a b c d <- elements boxes
+         tx <- oneof [elements [a, c], choose (a, c)]
+         ty <- oneof [elements [b, d], choose (b, d)]
+         ex <- elements [0, 1e-12, 0.5e-3, 0.85e-3, -1e-12]
+         ey <- elements [0, 1e-12, 0.5e-3, -0.85e-3]
+         k  <- oneof [elements [0, 1], choose (0, 1)]
+         pure (tx + ex - k * len * ux, ty + ey - k * len * uy)
+      -- ending just short of a box it points at, or starting just
+      -- past a box behind it
+    , do Box a b c d <- elements boxes
+         qx <- choose (a, c)
+         qy <- choose (b, d)
+         gap <- elements [0, 1e-12, 0.5e-3, 0.85e-3]
+         let back | ux > 0    = (qx - a) / ux
+                  | ux < 0    = (qx - c) / ux
+                  | otherwise = 1 / 0
+             down | uy > 0    = (qy - b) / uy
+                  | uy < 0    = (qy - d) / uy
+                  | otherwise = 1 / 0
+             s  = min back down     -- back from (qx, qy) to where the ray enters the box
+             ex = qx - s * ux
+             ey = qy - s * uy
+             -- forward from (qx, qy) to where the ray leaves the box
+             lx | ux > 0    = (c - qx) / ux
+                | ux < 0    = (a - qx) / ux
+                | otherwise = 1 / 0
+             ly | uy > 0    = (d - qy) / uy
+                | uy < 0    = (b - qy) / uy
+                | otherwise = 1 / 0
+             l  = min lx ly
+         elements [ (ex - (gap + len) * ux, ey - (gap + len) * uy)
+                  , (qx + (l + gap) * ux, qy + (l + gap) * uy) ]
+    , do i <- chooseInt (0, cells)
+         j <- chooseInt (0, cells)
+         e <- elements [0, 1e-13, -1e-13]
+         pure (x0 + fromIntegral i * rayGridCellSide + e, y0 + fromIntegral j * rayGridCellSide - e) ]
+  let (ax, ay) = start
+  pure (ax, ay, ax + len * ux, ay + len * uy)
+
+-- | The distance between a segment and a box (0 if they meet): from an end
+-- of the segment to the box, or from a corner of the box to the segment.
+segmentBoxDistance :: (Double, Double) -> (Double, Double) -> Box -> Double
+segmentBoxDistance (ax, ay) (bx, by) box@(Box x0 y0 x1 y1)
+  | meets     = 0
+  | otherwise = minimum ([pointBoxDistance ax ay box, pointBoxDistance bx by box] ++ [ toSegment cx cy | cx <- [x0, x1], cy <- [y0, y1] ])
+  where
+    meets = case rayBox (Point2 ax ay) (Vector2 (bx - ax) (by - ay)) box of
+      Just t  -> t <= 1
+      Nothing -> False
+    toSegment cx cy =
+      let vx = bx - ax
+          vy = by - ay
+          l2 = vx * vx + vy * vy
+          t  = if l2 > 0 then max 0 (min 1 (((cx - ax) * vx + (cy - ay) * vy) / l2)) else 0
+          dx = ax + t * vx - cx
+          dy = ay + t * vy - cy
+      in sqrt (dx * dx + dy * dy)

@@ -1,0 +1,170 @@
+-- | "AFrobRobotSim.RayGrid" on its own, for any boxes: when a list answers
+-- for a segment; that the list for a start and a quadrant holds every box
+-- a segment from there can reach; how the lists are laid out and counted;
+-- and when there are none. ("AFrobRobotSim.RayCastSpec" checks the rays
+-- that read the lists, through 'AFrobRobotSim.RayCast.foldBoxesAlong', in
+-- walled worlds, where the grid's last row and column lie inside a
+-- boundary wall and the margins are tested at their hardest; here the
+-- boxes are anywhere, over a few metres or spread over kilometres, where
+-- the cells are larger.)
+module AFrobRobotSim.RayGridSpec (spec) where
+
+import           Data.List               (nub, sort)
+import           Test.Hspec              hiding (after)
+import           Test.QuickCheck
+
+import           AFrobRobotSim.Arena
+import           AFrobRobotSim.FlatArray (indexI)
+import           AFrobRobotSim.RayGrid
+import           AFrobRobotSim.Shapes    (Box (..))
+import           AFrobRobotSim.WorldGen
+
+-- | Boxes (1 to 30) of all shapes (points, thin walls, blocks, long bars)
+-- in a rectangle of half sides @hx@ and @hy@.
+genBoxesIn :: (Double, Double) -> Gen [Box]
+genBoxesIn (hx, hy) = do
+  n <- chooseInt (1, 30)
+  vectorOf n $ do
+    x <- choose (-hx, hx)
+    y <- choose (-hy, hy)
+    w <- oneof [pure 0, choose (0, 0.2), choose (0.2, 2), choose (2, 2 * hx)]
+    t <- oneof [pure 0, choose (0, 0.2), choose (0.2, 2)]
+    elements [Box x y (x + w) (y + t), Box x y (x + t) (y + w)]
+
+-- | Boxes over a few metres (where a list holds many of them), in a
+-- square of half side 10, or spread over 800 m (where the cells are
+-- larger) or a strip 6 km long (where they are larger still).
+genBoxes :: Gen [Box]
+genBoxes = elements [(3, 3), (10, 10), (10, 10), (400, 400), (3000, 1)] >>= genBoxesIn
+
+-- | Boxes anywhere, or a world's.
+genAnyBoxes :: Gen [Box]
+genAnyBoxes = oneof [genBoxes, arenaBoxes . arenaFor <$> genWorld]
+
+-- | Boxes anywhere, most often over a few metres (where many of them lie
+-- in the grid's last row or column), or a world's.
+genManyBoxes :: Gen [Box]
+genManyBoxes = frequency [ (3, elements [(3, 3), (10, 10)] >>= genBoxesIn), (1, genBoxes)
+                         , (1, arenaBoxes . arenaFor <$> genWorld) ]
+
+-- | The ray grid of boxes, each with its position.
+gridOf :: [Box] -> RayGrid
+gridOf = rayGrid . zip [0 ..]
+
+-- | The list that answers for a segment, if one does.
+listFor :: RayGrid -> (Double, Double, Double, Double) -> Maybe (Int, Int, [Int])
+listFor rg (px, py, qx, qy) =
+  rayGridList rg px py qx qy (\items s e -> Just (s, e, map (indexI items) [s .. e - 1])) Nothing
+
+-- | The boxes' bounding box.
+domainOf :: [Box] -> (Double, Double, Double, Double)
+domainOf bs = (minimum (map boxMinX bs), minimum (map boxMinY bs), maximum (map boxMaxX bs), maximum (map boxMaxY bs))
+
+-- | A short segment from every point of a lattice over the domain finer
+-- than any grid's cells (and through its far edges), into each quadrant:
+-- together they read every list.
+probes :: [Box] -> [(Double, Double, Double, Double)]
+probes bs =
+  [ (x, y, x + dx, y + dy) | x <- lattice x0 x1, y <- lattice y0 y1, (dx, dy) <- quadrants ]
+  where
+    (x0, y0, x1, y1) = domainOf bs
+    lattice a b = nub (takeWhile (< b) [ a + fromIntegral k * rayGridCellSide / 2 | k <- [0 :: Int ..] ] ++ [b])
+    quadrants = [(1e-3, 1e-3), (-1e-3, 1e-3), (1e-3, -1e-3), (-1e-3, -1e-3)]
+
+-- | Does a segment from @p@ into the closed quadrant of directions @q@,
+-- at most 'rayGridReach' long, reach the box? (The part of the box in the
+-- quadrant, if any, is within the reach.)
+reaches :: (Double, Double) -> (Double, Double) -> Box -> Bool
+reaches (px, py) (sx, sy) (Box a b c d) =
+  let (a', c') = if sx > 0 then (max a px, c) else (a, min c px)
+      (b', d') = if sy > 0 then (max b py, d) else (b, min d py)
+  in a' <= c' && b' <= d' && pointBoxDistance px py (Box a' b' c' d') <= rayGridReach
+
+spec :: Spec
+spec = do
+  describe "rayGridList" $
+    it "answers for a segment exactly when it starts in the boxes' bounding box and is at most rayGridReach long, with every box near it" $
+      property $ forAll genAnyBoxes $ \bs ->
+        forAll (vectorOf 20 (frequency [(2, genSegmentAmong bs), (2, genAtLimits bs), (1, genWild)])) $ \segs ->
+          let rg = gridOf bs
+              (x0, y0, x1, y1) = domainOf bs
+          in conjoin
+               [ case listFor rg seg of
+                   Nothing -> counterexample (show seg ++ ": no answer") (not mustAnswer)
+                   Just (_, _, got) -> counterexample (show (seg, got, near)) (mayAnswer && all (`elem` got) near)
+               | seg@(px, py, qx, qy) <- segs
+               , let len = sqrt ((qx - px) ^ (2 :: Int) + (qy - py) ^ (2 :: Int))
+                     inDomain = px >= x0 && px <= x1 && py >= y0 && py <= y1
+                     -- (a segment within rounding of the reach may go either way)
+                     mustAnswer = inDomain && len <= rayGridReach * (1 - 1e-12)
+                     mayAnswer  = inDomain && len <= rayGridReach * (1 + 1e-12)
+                     near = [ k | (k, b) <- zip [0 ..] bs, segmentBoxDistance (px, py) (qx, qy) b <= 0.9 * rayGridTolerance ] ]
+
+  describe "the lists" $ do
+    it "hold, for a start and a quadrant, every box that a segment from there into the quadrant, at most rayGridReach long, reaches" $
+      property $ forAll genManyBoxes $ \bs -> forAll (vectorOf 100 (genStart bs)) $ \starts ->
+        let rg = gridOf bs
+        in conjoin [ case listFor rg (px, py, px + 1e-3 * sx, py + 1e-3 * sy) of
+                       Nothing         -> counterexample (show (p, q) ++ ": no list") False
+                       Just (_, _, is) -> counterexample (show (p, q, want, is)) (all (`elem` is) want)
+                   | p@(px, py) <- starts, q@(sx, sy) <- [(1, 1), (-1, 1), (1, -1), (-1, -1)]
+                   , let want = [ k | (k, b) <- zip [0 ..] bs, reaches p q b ] ]
+    it "hold each box at most once, in index order, end to end from 0 up to rayGridEntries" $
+      -- (over at most 42 m, for a lattice of a few thousand points)
+      property $ forAll (oneof [elements [(3, 3), (10, 10)] >>= genBoxesIn, arenaBoxes . arenaFor <$> genWorld]) $ \bs ->
+        let rg = gridOf bs
+            lists = nub (sort [ l | Just l@(s, e, _) <- map (listFor rg) (probes bs), e > s ])
+            spans = [ (s, e) | (s, e, _) <- lists ]
+            ascending xs = and (zipWith (<) xs (drop 1 xs))
+        in conjoin [ counterexample (show l) (ascending is && all (\i -> i >= 0 && i < length bs) is)
+                   | l@(_, _, is) <- lists ]
+             .&&. counterexample (show spans)
+                    (map fst spans === 0 : map snd (take (length spans - 1) spans)
+                       .&&. maybe 0 snd (lastMay spans) === rayGridEntries rg)
+
+  describe "rayGrid" $ do
+    it "has no lists, and answers for no segment, without boxes or when their extent overflows" $ do
+      let none = [gridOf [], gridOf [Box (-1e308) 0 (-1e308) 1, Box 1e308 0 1e308 1]]
+          segs = [(0, 0, 0, 0), (0, 0.5, 1, 0.5), (-1e308, 0, -1e308, 1), (1e308, 0.5, 1e308, 0.5)]
+      map rayGridEntries none `shouldBe` [0, 0]
+      [ () | rg <- none, seg <- segs, Just _ <- [listFor rg seg] ] `shouldBe` []
+    it "answers for a segment exactly rayGridReach long, and not for a longer one" $ do
+      let rg = gridOf [Box (-5) (-5) 5 5]
+          r = rayGridReach
+          answers seg = maybe False (const True) (listFor rg seg)
+      map answers [(0, 0, r, 0), (0, 0, 0, -r), (0, 0, r + 1e-12, 0), (0, 0, 0, -r - 1e-12)]
+        `shouldBe` [True, True, False, False]
+    it "has lists of up to 2^22 entries, and none beyond" $ do
+      -- boxes over the whole of the largest grid (2^18 cells, of 600 m /
+      -- 512): each is listed for every cell and quadrant, 2^20 times
+      let big = replicate 5 (Box (-300) (-300) 300 300)
+      rayGridEntries (gridOf (take 4 big)) `shouldBe` 2 ^ (22 :: Int)
+      rayGridEntries (gridOf big) `shouldBe` 0
+      listFor (gridOf big) (0, 0, 1, 1) `shouldBe` Nothing
+  where
+    -- a segment with a coordinate that is not finite
+    genWild = do
+      v <- elements [0 / 0, 1 / 0, -1 / 0]
+      k <- chooseInt (0, 3 :: Int)
+      let pick i x = if i == k then v else x
+      pure (pick 0 0, pick 1 0, pick 2 0.5, pick 3 0.5)
+    -- a segment from on the domain's edge, or just inside or outside it,
+    -- of about the reach
+    genAtLimits bs = do
+      let (x0, y0, x1, y1) = domainOf bs
+      px  <- choose (x0, x1)
+      py  <- choose (y0, y1)
+      off <- elements [0, 1e-9, -1e-9, 1e-3, -1e-3]    -- outwards
+      (sx, sy) <- elements [(px, py), (x0 - off, py), (x1 + off, py), (px, y0 - off), (px, y1 + off)]
+      len <- elements [0, 1, rayGridReach, rayGridReach * (1 - 1e-9), rayGridReach * (1 + 1e-9), rayGridReach + 1e-3]
+      th  <- oneof [choose (-pi, pi), elements [0, pi / 2, pi, -pi / 2]]
+      pure (sx, sy, sx + len * cos th, sy + len * sin th)
+    -- a start in the domain: anywhere, on its edges, or on a cell
+    -- boundary (the cells are of 'rayGridCellSide' for boxes over at most
+    -- a few hundred metres)
+    genStart bs = do
+      let (x0, y0, x1, y1) = domainOf bs
+          at a b = frequency [ (2, choose (a, b)), (1, elements [a, b]), (1, pure b)
+                             , (1, (\i -> min b (a + fromIntegral i * rayGridCellSide)) <$> chooseInt (0, 40 :: Int)) ]
+      (,) <$> at x0 x1 <*> at y0 y1
+    lastMay xs = if null xs then Nothing else Just (last xs)
