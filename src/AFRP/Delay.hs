@@ -44,9 +44,13 @@ iPre a0 = SF (NPre a0)
 -- g)@: a counter, an accumulator, a state machine written as a function)
 -- is what @loopN@ builds at run time, recognising the delay and the
 -- function, as @loopPreG g c@; built directly where GHC can see @g@, the
--- step is compiled with @g@'s body in place, and the pair @g@ returns and
--- the two selections from it cost nothing. The same node, the same
--- laziness: @g@ is applied lazily and both components are taken lazily.
+-- step is compiled with @g@'s body in place, and where @g@ returns its
+-- pair as a constructor (@\(a, s) -> (e1, e2)@) the pair and the two
+-- selections from it cost nothing (a @g@ that chooses between pairs still
+-- builds them lazily, as it must). The same node, the same laziness: @g@
+-- is applied lazily and both components are taken lazily. (@pre@, which
+-- is already a node in this module's interface, is not seen by the rule:
+-- @loop (second pre >>> arr g)@ takes the run-time path.)
 {-# RULES
 "AFRP loop(second iPre>>>arr)" forall c g.
   loopSF (compSF (arrSF g) (secondSF (iPre c))) = SF (loopPreG (\a -> g a) c)

@@ -29,6 +29,7 @@ module AFRP.Integration
   ) where
 
 import           Control.Arrow     ((***))
+import           GHC.Exts          (noinline)
 import           AFRP.Event
 import           AFRP.Hybrid       (accumBy, accumHoldBy)
 import           AFRP.Internal.SF
@@ -64,8 +65,21 @@ integralDouble = SF (initN (\a0 -> (# NIntD 0 a0, 0 #)))
 -- sum, lazily, @q 0@ at time 0. Inlined only late (phase 1), so that the
 -- rules below see it; once inlined, GHC compiles the step with @p@ and
 -- @q@ in place.
+--
+-- Two details keep it what the composition is:
+--
+-- * The time-0 output is @q@ applied to a zero that GHC cannot see as a
+--   constant ('GHC.Exts.noinline' of @const 0 a0@): otherwise @q 0@,
+--   a closed expression once inlined, would be floated out as one value
+--   shared by every run for the life of the program (a leak when @q@
+--   builds a large structure), and GHC could fold @0 + k@ to @k@, which
+--   IEEE arithmetic does not allow for @k = -0@.
+-- * A step that is replayed (the step a 'AFRP.Switch.kSwitch' interrupted,
+--   replayed by its continuation) applies @p@ again, where the
+--   composition's stored thunk would be evaluated once: the same value,
+--   computed twice, on that one step.
 integralDOn :: (a -> Double) -> (Double -> b) -> SF a b
-integralDOn p q = SF (initN (\a0 -> case go 0 a0 of !n -> (# n, q 0 #)))
+integralDOn p q = SF (initN (\a0 -> case go 0 a0 of !n -> (# n, q (noinline const 0 a0) #)))
   where
     go !acc prev = NStep (\dt a ->
       let !acc' = acc + dt * p prev

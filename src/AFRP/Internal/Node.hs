@@ -179,7 +179,9 @@ stepN n dt a = case n of
     -- it (lazily, as its own node would) without a step of its own.
     NPure (FDG p) -> case g of
       -- arr p >>> (h >>> arr q), the usual shape of a stateful node
-      -- between two functions (arr p >>> integral >>> arr q): h is stepped
+      -- between two functions (arr p >>> derivative >>> arr q; at Double,
+      -- an integral there is one node, by "AFRP.Integration"'s rules,
+      -- where GHC sees the composition): h is stepped
       -- on p a and q applied to its output, both lazily, as the two
       -- composition nodes would, without a step of the inner one. The
       -- successor is the one the two steps would build (compNI inside,

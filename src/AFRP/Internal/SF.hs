@@ -92,8 +92,9 @@ loopPreN c f = NStep (\dt a -> case stepN f dt (a, c) of
 -- the output, the second is stored, both unevaluated. Inlined, so that
 -- where @g@ is known (the rewrite rule on @loop (second (iPre c) >>> arr
 -- g)@ in "AFRP.Delay", which 'AFRP.Loop.loopPre' meets) GHC compiles the
--- step with @g@'s body in place: the pair that @g@ returns, and the two
--- selections from it, then cost nothing.
+-- step with @g@'s body in place: where @g@ returns its pair as a
+-- constructor, the pair and the two selections from it then cost
+-- nothing.
 loopPreG :: ((a, c) -> (b, c)) -> c -> Node a b
 loopPreG g = go
   where
