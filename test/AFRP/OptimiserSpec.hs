@@ -9,6 +9,7 @@ import           Test.Hspec hiding (after)
 
 import           AFRP
 import           AFRP.Internal.SF (isConstantSF, isPureSF, isStepSF, stepSF)
+import           TestUtil         (runDt)
 
 -- | @arr (> x) >>> edge@ inside a function of @x@: the shape in which the
 -- parts of a composition could be floated apart before a rule saw them.
@@ -44,13 +45,7 @@ disappearsOnNever sw = do
   isPureSF sf' `shouldBe` True
   snd (stepSF sf' 1 21) `shouldBe` 42
 
--- | The outputs of a signal function on the given samples, at steps of 1.
-samples :: SF a b -> [a] -> [b]
-samples sf xs = case xs of
-  x : rest -> embed sf (x, map (\y -> (1, Just y)) rest)
-  []       -> []
-
--- | Step a signal function through the given samples (the first one's
+-- | Step a signal function through the given runDt 1 (the first one's
 -- time step is ignored) and return what it has become.
 runTo :: SF a b -> [(DTime, a)] -> SF a b
 runTo = foldl (\sf (dt, a) -> fst (stepSF sf dt a))
@@ -130,31 +125,31 @@ spec = do
       -- inputs 1, 2, 3, 4 at steps of 1: integral gives 0, 1, 3, 6
       let ins = [1, 2, 3, 4] :: [Double]
       it "arr f >>> integral: f applied to each sample, then summed" $
-        samples (arr (* 2) >>> integral) ins `shouldBe` [0, 2, 6, 12]
+        runDt 1 (arr (* 2) >>> integral) ins `shouldBe` [0, 2, 6, 12]
       it "integral >>> arr g: g applied to the sum, also at time 0" $
-        samples (integral >>> arr (+ 1)) ins `shouldBe` [1, 2, 4, 7]
+        runDt 1 (integral >>> arr (+ 1)) ins `shouldBe` [1, 2, 4, 7]
       it "arr f >>> integral >>> arr g" $
-        samples (arr (* 2) >>> integral >>> arr (+ 1)) ins `shouldBe` [1, 3, 7, 13]
+        runDt 1 (arr (* 2) >>> integral >>> arr (+ 1)) ins `shouldBe` [1, 3, 7, 13]
       it "arr f >>> (arr f' >>> integral >>> arr g) >>> arr g': both functions on each side" $
-        samples (arr (+ 1) >>> (arr (* 2) >>> integral >>> arr (+ 1)) >>> arr (* 3)) ins
+        runDt 1 (arr (+ 1) >>> (arr (* 2) >>> integral >>> arr (+ 1)) >>> arr (* 3)) ins
           `shouldBe` [3, 15, 33, 57]
       it "at the head of a chain: arr f >>> integral >>> sf, integral >>> arr g >>> sf" $ do
-        samples (arr (* 2) >>> integral >>> iPre (-1)) ins `shouldBe` [-1, 0, 2, 6]
-        samples (integral >>> arr (+ 1) >>> iPre (-1)) ins `shouldBe` [-1, 1, 2, 4]
-        samples (arr (+ 1) >>> (arr (* 2) >>> integral) >>> iPre (-1)) ins `shouldBe` [-1, 0, 4, 10]
-        samples ((arr (* 2) >>> integral) >>> arr (+ 1) >>> iPre (-1)) ins `shouldBe` [-1, 1, 3, 7]
+        runDt 1 (arr (* 2) >>> integral >>> iPre (-1)) ins `shouldBe` [-1, 0, 2, 6]
+        runDt 1 (integral >>> arr (+ 1) >>> iPre (-1)) ins `shouldBe` [-1, 1, 2, 4]
+        runDt 1 (arr (+ 1) >>> (arr (* 2) >>> integral) >>> iPre (-1)) ins `shouldBe` [-1, 0, 4, 10]
+        runDt 1 ((arr (* 2) >>> integral) >>> arr (+ 1) >>> iPre (-1)) ins `shouldBe` [-1, 1, 3, 7]
       it "applies f to a sample only at the next step, where the sum needs it" $
         -- f fails on the last sample, which the integral never needs
-        samples (arr (\x -> if x < 0 then error "evaluated too early" else 2 * x) >>> integral >>> arr (+ 1))
+        runDt 1 (arr (\x -> if x < 0 then error "evaluated too early" else 2 * x) >>> integral >>> arr (+ 1))
           [1, 2, -1 :: Double] `shouldBe` [1, 3, 7]
       it "leaves its output unevaluated until it is needed" $
-        length (samples (integral >>> arr (\_ -> undefined :: Int)) ins) `shouldBe` 4
+        length (runDt 1 (integral >>> arr (\_ -> undefined :: Int)) ins) `shouldBe` 4
       it "integralDOn >>> (arr g >>> sf): g after the node's own function" $
-        samples ((arr (* 2) >>> integral >>> arr (+ 1)) >>> arr (* 3) >>> iPre (-1)) ins
+        runDt 1 ((arr (* 2) >>> integral >>> arr (+ 1)) >>> arr (* 3) >>> iPre (-1)) ins
           `shouldBe` [-1, 3, 9, 21]
       it "keeps the sign of a zero at time 0 (no folding of 0 + k)" $
         -- 1 / (0 + (-0)) is +Infinity: 0 + (-0) is +0
-        head (samples (integral >>> arr (\c -> 1 / (c + negZero))) ins) `shouldBe` (1 / 0)
+        head (runDt 1 (integral >>> arr (\c -> 1 / (c + negZero))) ins) `shouldBe` (1 / 0)
       it "makes each shape one node (the composition would be a composition node)" $ do
         isStepSF (arr (* 2) >>> integral :: SF Double Double) `shouldBe` True
         isStepSF (integral >>> arr (+ 1) :: SF Double Double) `shouldBe` True

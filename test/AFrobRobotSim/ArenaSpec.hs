@@ -67,11 +67,6 @@ genRect = do
   h  <- oneof [pure 0, choose (0, 6)]
   pure (x0, y0, x0 + w, y0 + h)
 
--- | The boxes' bounding box (as the arena's extent is documented).
-extentOf :: [Box] -> (Double, Double, Double, Double)
-extentOf [] = (0, 0, 0, 0)
-extentOf bs = (minimum (map boxMinX bs), minimum (map boxMinY bs), maximum (map boxMaxX bs), maximum (map boxMaxY bs))
-
 inBox :: Double -> Double -> Box -> Bool
 inBox x y (Box a b c d) = x >= a && x <= c && y >= b && y <= d
 
@@ -123,7 +118,7 @@ spec = do
       property $ forAll genArena $ \e ->
         let arena = arenaOfEither e
             boxes = arenaBoxes arena
-            (ex0, ey0, ex1, ey1) = extentOf boxes
+            (ex0, ey0, ex1, ey1) = boxesExtent boxes
             diag = clearanceCellSize (ex1 - ex0) (ey1 - ey0) * sqrt 2
             nearby = (,) <$> choose (ex0 - 1, ex1 + 1) <*> choose (ey0 - 1, ey1 + 1)
             corners = [ (x, y) | x <- [ex0, ex1], y <- [ey0, ey1] ]

@@ -10,7 +10,7 @@ import           AFrobRobotSim.Clearance
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex
 import           AFrobRobotSim.Arena
-import           AFrobRobotSim.WorldGen (arenaFor, genWorld, halfSide, pointBoxDistance)
+import           AFrobRobotSim.WorldGen (arenaFor, boxesExtent, genWorld, halfSide, pointBoxDistance)
 
 -- | Boxes of all shapes (thin walls, blocks, long bars) in a square of
 -- half-side @h@, and a finite one always present.
@@ -24,21 +24,18 @@ genBoxes h = do
     t <- oneof [choose (0, 0.2), choose (0.2, 2)]
     elements [Box x y (x + w) (y + t), Box x y (x + t) (y + w)]
 
-extentOf :: [Box] -> (Double, Double, Double, Double)
-extentOf bs = (minimum (map boxMinX bs), minimum (map boxMinY bs), maximum (map boxMaxX bs), maximum (map boxMaxY bs))
-
 spec :: Spec
 spec = do
   describe "clearanceAt" $ do
     it "is never more than the distance from the point to any box" $
       property $ forAll (elements [5, 20, 200]) $ \h -> forAll (genBoxes h) $ \bs ->
         forAll (vectorOf 50 ((,) <$> choose (-h - 1, 3 * h) <*> choose (-h - 1, 3 * h))) $ \pts ->
-          let cl = clearanceOf (boxIndex bs) (extentOf bs)
+          let cl = clearanceOf (boxIndex bs) (boxesExtent bs)
           in conjoin [ counterexample (show (x, y, b)) (clearanceAt cl x y <= pointBoxDistance x y b + 1e-12)
                      | (x, y) <- pts, b <- bs ]
     it "is at most the cap, and the cap for a cell with nothing near" $ do
       let bs = [Box 0 0 0.1 0.1, Box 9.9 9.9 10 10]
-          cl = clearanceOf (boxIndex bs) (extentOf bs)
+          cl = clearanceOf (boxIndex bs) (boxesExtent bs)
       clearanceAt cl 5 5 `shouldBe` clearanceCap
       clearanceAt cl 0.05 0.05 `shouldBe` 0
       -- a point 0.6 m right of the first box: its cell starts at most one
@@ -46,7 +43,7 @@ spec = do
       clearanceAt cl 0.7 0.05 `shouldSatisfy` (\c -> c >= 0.6 - clearanceCellSize 10 10 && c <= 0.6)
     it "is 0 outside the grid and for points that are not finite" $ do
       let bs = [Box 0 0 1 1, Box 5 5 6 6]
-          cl = clearanceOf (boxIndex bs) (extentOf bs)
+          cl = clearanceOf (boxIndex bs) (boxesExtent bs)
       map (uncurry (clearanceAt cl)) [(-0.5, 3), (3, 7), (0 / 0, 3), (1 / 0, 3), (3, -1 / 0)]
         `shouldBe` [0, 0, 0, 0, 0]
     it "is 0 everywhere when a box is not finite" $ do

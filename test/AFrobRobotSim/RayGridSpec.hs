@@ -56,10 +56,6 @@ listFor :: RayGrid -> (Double, Double, Double, Double) -> Maybe (Int, Int, [Int]
 listFor rg (px, py, qx, qy) =
   rayGridList rg px py qx qy (\items s e -> Just (s, e, map (indexI items) [s .. e - 1])) Nothing
 
--- | The boxes' bounding box.
-domainOf :: [Box] -> (Double, Double, Double, Double)
-domainOf bs = (minimum (map boxMinX bs), minimum (map boxMinY bs), maximum (map boxMaxX bs), maximum (map boxMaxY bs))
-
 -- | A short segment from every point of a lattice over the domain finer
 -- than any grid's cells (and through its far edges), into each quadrant:
 -- together they read every list.
@@ -67,7 +63,7 @@ probes :: [Box] -> [(Double, Double, Double, Double)]
 probes bs =
   [ (x, y, x + dx, y + dy) | x <- lattice x0 x1, y <- lattice y0 y1, (dx, dy) <- quadrants ]
   where
-    (x0, y0, x1, y1) = domainOf bs
+    (x0, y0, x1, y1) = boxesExtent bs
     lattice a b = nub (takeWhile (< b) [ a + fromIntegral k * rayGridCellSide / 2 | k <- [0 :: Int ..] ] ++ [b])
     quadrants = [(1e-3, 1e-3), (-1e-3, 1e-3), (1e-3, -1e-3), (-1e-3, -1e-3)]
 
@@ -87,7 +83,7 @@ spec = do
       property $ forAll genAnyBoxes $ \bs ->
         forAll (vectorOf 20 (frequency [(2, genSegmentAmong bs), (2, genAtLimits bs), (1, genWild)])) $ \segs ->
           let rg = gridOf bs
-              (x0, y0, x1, y1) = domainOf bs
+              (x0, y0, x1, y1) = boxesExtent bs
           in conjoin
                [ case listFor rg seg of
                    Nothing -> counterexample (show seg ++ ": no answer") (not mustAnswer)
@@ -151,7 +147,7 @@ spec = do
     -- a segment from on the domain's edge, or just inside or outside it,
     -- of about the reach
     genAtLimits bs = do
-      let (x0, y0, x1, y1) = domainOf bs
+      let (x0, y0, x1, y1) = boxesExtent bs
       px  <- choose (x0, x1)
       py  <- choose (y0, y1)
       off <- elements [0, 1e-9, -1e-9, 1e-3, -1e-3]    -- outwards
@@ -163,7 +159,7 @@ spec = do
     -- boundary (the cells are of 'rayGridCellSide' for boxes over at most
     -- a few hundred metres)
     genStart bs = do
-      let (x0, y0, x1, y1) = domainOf bs
+      let (x0, y0, x1, y1) = boxesExtent bs
           at a b = frequency [ (2, choose (a, b)), (1, elements [a, b]), (1, pure b)
                              , (1, (\i -> min b (a + fromIntegral i * rayGridCellSide)) <$> chooseInt (0, 40 :: Int)) ]
       (,) <$> at x0 x1 <*> at y0 y1

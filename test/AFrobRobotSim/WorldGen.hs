@@ -18,6 +18,7 @@ module AFrobRobotSim.WorldGen
   , robotRadius'
   , ballRadius'
   , pointBoxDistance
+  , boxesExtent
   , genSegment
   , genSegmentAmong
   , segmentBoxDistance
@@ -138,6 +139,12 @@ pointBoxDistance x y (Box x0 y0 x1 y1) =
       gy = max 0 (max (y0 - y) (y - y1))
   in sqrt (gx * gx + gy * gy)
 
+-- | The boxes' bounding box, @(minX, minY, maxX, maxY)@ (all 0 for no
+-- boxes), as the arena's extent is documented.
+boxesExtent :: [Box] -> (Double, Double, Double, Double)
+boxesExtent [] = (0, 0, 0, 0)
+boxesExtent bs = (minimum (map boxMinX bs), minimum (map boxMinY bs), maximum (map boxMaxX bs), maximum (map boxMaxY bs))
+
 -- | A segment among a world's boxes ('genSegmentAmong').
 genSegment :: World -> Gen (Double, Double, Double, Double)
 genSegment = genSegmentAmong . arenaBoxes . arenaFor
@@ -150,10 +157,7 @@ genSegment = genSegmentAmong . arenaBoxes . arenaFor
 -- finder's ray or a little shorter, sometimes longer.
 genSegmentAmong :: [Box] -> Gen (Double, Double, Double, Double)
 genSegmentAmong boxes = do
-  let x0 = minimum (map boxMinX boxes)
-      y0 = minimum (map boxMinY boxes)
-      x1 = maximum (map boxMaxX boxes)
-      y1 = maximum (map boxMaxY boxes)
+  let (x0, y0, x1, y1) = boxesExtent boxes
       cells = max 40 (ceiling (max (x1 - x0) (y1 - y0) / rayGridCellSide))
   len <- oneof [elements [3.25, rayGridReach, 0], choose (0, rayGridReach), choose (3, 8)]
   th  <- oneof [choose (-pi, pi), elements [0, pi / 2, pi, -pi / 2, pi / 4]]

@@ -269,28 +269,27 @@ stepIntD acc prev dt a = let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
 -- Rebuilding a node whose two children were both stateful before the step:
 -- as the smart constructor would, but with the common case (both still
 -- stateful, where no identity applies) decided by two tests and no call.
-rebuildComp :: Node a c -> Node c b -> Node a b
-rebuildComp f g = case g of
-  NPure _ -> compN f g
+-- @rebuildWith smart con@ is @smart@ if either child is now pure, @con@
+-- (the bare constructor) otherwise.
+rebuildWith :: (Node a b -> Node c d -> r) -> (Node a b -> Node c d -> r)
+            -> Node a b -> Node c d -> r
+rebuildWith smart con f g = case g of
+  NPure _ -> smart f g
   _       -> case f of
-    NPure _ -> compN f g
-    _       -> NComp f g
+    NPure _ -> smart f g
+    _       -> con f g
+{-# INLINE rebuildWith #-}
+
+rebuildComp :: Node a c -> Node c b -> Node a b
+rebuildComp f g = rebuildWith compN NComp f g
 {-# INLINE rebuildComp #-}
 
 rebuildPar :: Node a b -> Node c d -> Node (a, c) (b, d)
-rebuildPar f g = case g of
-  NPure _ -> parN f g
-  _       -> case f of
-    NPure _ -> parN f g
-    _       -> NPar f g
+rebuildPar f g = rebuildWith parN NPar f g
 {-# INLINE rebuildPar #-}
 
 rebuildFan :: Node a b -> Node a c -> Node a (b, c)
-rebuildFan f g = case g of
-  NPure _ -> fanN f g
-  _       -> case f of
-    NPure _ -> fanN f g
-    _       -> NFan f g
+rebuildFan f g = rebuildWith fanN NFan f g
 {-# INLINE rebuildFan #-}
 
 -- | 'stepN' with a boxed result.
