@@ -77,6 +77,7 @@ module AFrobRobotSim
     -- * World files
   , parseWorld
   , renderWorld
+  , parseWorldBytes
   , readWorldFile
     -- * Pictures
   , Scene (..)

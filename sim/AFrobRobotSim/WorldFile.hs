@@ -1,3 +1,4 @@
+{-# LANGUAGE BangPatterns #-}
 -- |
 -- Module      : AFrobRobotSim.WorldFile
 -- Description : A plain-text file format for world templates: parser,
@@ -20,7 +21,15 @@
 -- = Lines, tokens and comments
 --
 -- * A file is split into lines (@\\n@; a @\\r@ before it is whitespace and
---   so ignored). Lines are numbered from 1.
+--   so ignored, which accepts CRLF line ends). Lines are numbered from 1.
+--   A UTF-8 byte order mark at the start of the file is ignored.
+--
+-- * Limits, so that any file is read in time linear in its size: a line
+--   has at most 'maxLineLength' (4096) characters, a token at most
+--   'maxTokenLength' (100). A NUL character anywhere is an error (the file
+--   is probably not text). A file read with 'readWorldFile' or
+--   'parseWorldBytes' must be valid UTF-8; the first invalid byte is
+--   reported with its line and column.
 --
 -- * A @#@ starts a comment, which runs to the end of the line; it may
 --   appear anywhere, also right after a token (@ball at 0 0# centre@).
@@ -75,7 +84,9 @@
 -- A heading is an absolute direction, 0 along +x, growing
 -- counter-clockwise (see "AFrob.Dimensions"). Its unit is mandatory, so
 -- degrees and radians are never confused: @heading 90 deg@ and
--- @heading 1.5707963267948966 rad@ both face +y. Degrees are converted
+-- @heading 1.5707963267948966 rad@ both face +y. The number must lie
+-- within +-'maxHeading' (10^6) in its unit, so that it is finite and still
+-- precise in radians. Degrees are converted
 -- with @d * pi / 180@. Headings are /not/ normalised: @heading 450 deg@
 -- is stored as @5 * pi / 2@. The whole @heading@ clause may be omitted;
 -- the robot then faces +x (heading 0).
@@ -94,7 +105,11 @@
 -- just after the preceding token, and the message says
 -- @found end of line@. Nothing is returned for the lines before an error.
 --
--- The parser checks the syntax only. Whether the objects fit into the
+-- Characters that cannot be printed are shown escaped in messages (as
+-- Haskell writes them, @\\NUL@, @\\ESC@, ...), so a message never sends
+-- control codes to a terminal.
+--
+-- 'parseWorld' checks the syntax only. Whether the objects fit into the
 -- world, whether robots overlap and whether robot ids are unique is
 -- checked by 'AFrobRobotSim.World.validateWorld'.
 --
@@ -104,19 +119,27 @@
 -- the order of the template, coordinates and headings printed with 'show'
 -- and headings in radians, so that
 -- @'parseWorld' f ('renderWorld' w) == 'Right' w@ for every world whose
--- coordinates and headings are finite.
+-- coordinates are finite and whose headings lie within +-'maxHeading'.
 module AFrobRobotSim.WorldFile
   ( -- * Parsing
     parseWorld
+  , parseWorldBytes
   , readWorldFile
+    -- * Limits
+  , maxLineLength
+  , maxTokenLength
+  , maxHeading
     -- * Printing
   , renderWorld
   ) where
 
-import           Control.Exception (IOException, evaluate, try)
-import           Data.Char         (isDigit, isSpace, toLower)
-import           System.IO         (IOMode (ReadMode), hGetContents, hSetEncoding,
-                                    utf8, withFile)
+import           Control.Exception (IOException, try)
+import           Data.Bits         ((.&.), (.|.), shiftL)
+import qualified Data.ByteString   as B
+import qualified Data.ByteString.Unsafe as BU
+import           Data.Char         (chr, isDigit, isPrint, isSpace, showLitChar, toLower)
+import           Data.Word         (Word8)
+import           Numeric           (showHex)
 
 import           AFRP.Geometry     (Point2 (..))
 import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate)
@@ -138,37 +161,127 @@ import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate)
 -- >>> parseWorld "w.world" "\n\nwall v at x1 2"
 -- Left "w.world:3:11: expected a number after \"at\", found \"x1\""
 parseWorld :: FilePath -> String -> Either String WorldTemplate
-parseWorld file = go [] . zip [1 :: Int ..] . lines
+parseWorld file = go [] . zip [1 :: Int ..] . lines . dropBom
   where
+    dropBom ('\xFEFF' : r) = r
+    dropBom r              = r
     go acc [] = Right (reverse acc)
-    go acc ((n, l) : ls) = case parseLine (tokenize l) of
+    go acc ((n, l) : ls) = case checkLine l >>= parseLine of
       Right Nothing  -> go acc ls
       Right (Just o) -> go (o : acc) ls
       Left (Failure col msg) ->
         Left (file ++ ":" ++ show n ++ ":" ++ show col ++ ": " ++ msg)
 
--- | Read and parse a world file. The file is decoded as UTF-8. A file that
--- cannot be read (missing, no permission, not valid UTF-8, ...) gives
--- 'Left' with the operating system's message rather than throwing an
--- exception; a malformed file gives 'Left' with the message of
--- 'parseWorld'.
+-- | The longest line accepted, in characters: 4096.
+maxLineLength :: Int
+maxLineLength = 4096
+
+-- | The longest token accepted, in characters: 100 (the longest number
+-- 'renderWorld' writes has 24).
+maxTokenLength :: Int
+maxTokenLength = 100
+
+-- | The largest magnitude of a heading's number, in degrees or radians:
+-- 10^6.
+maxHeading :: Double
+maxHeading = 1e6
+
+-- | The limits on a line: no NUL, at most 'maxLineLength' characters,
+-- tokens of at most 'maxTokenLength'; its tokens if it keeps them.
+checkLine :: String -> Either Failure [Tok]
+checkLine l = case [ c | (c, ch) <- zip [1 ..] (take (maxLineLength + 1) l), ch == '\NUL' ] of
+  c : _ -> Left (Failure c "found a NUL character (is this a text file?)")
+  []
+    | not (null (drop maxLineLength l)) ->
+        Left (Failure (maxLineLength + 1) ("line longer than " ++ show maxLineLength ++ " characters"))
+    | otherwise -> case [ t | t@(Tok _ s) <- ts, length s > maxTokenLength ] of
+        Tok c s : _ -> Left (Failure c ("token longer than " ++ show maxTokenLength
+                                        ++ " characters, starting " ++ quote (take 20 s)))
+        []          -> Right ts
+  where
+    ts = tokenize l
+
+-- | Decode the bytes of a world file as UTF-8 and parse them with
+-- 'parseWorld'. The first byte that is not valid UTF-8 (a stray
+-- continuation byte, a truncated or overlong sequence, a surrogate, a code
+-- point beyond U+10FFFF) is an error
+-- @FILE:LINE:COLUMN: invalid UTF-8 (byte 0xNN)@, its column counted in the
+-- characters before it on its line, plus one.
+--
+-- >>> parseWorldBytes "w.world" (B.pack [98,97,108,108,32,97,116,32,48,32,255])
+-- Left "w.world:1:11: invalid UTF-8 (byte 0xff)"
+parseWorldBytes :: FilePath -> B.ByteString -> Either String WorldTemplate
+parseWorldBytes file bytes = case utf8Error bytes of
+  Just (l, c, b) -> Left (file ++ ":" ++ show l ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
+                          ++ (if b < 16 then "0" else "") ++ showHex b ")")
+  Nothing        -> parseWorld file (decodeUtf8 bytes)
+
+-- | Read and parse a world file ('parseWorldBytes'). A file that cannot be
+-- read (missing, no permission, a directory, ...) gives 'Left' with the
+-- operating system's message rather than throwing an exception; a
+-- malformed file gives 'Left' with the message of 'parseWorldBytes'.
 readWorldFile :: FilePath -> IO (Either String WorldTemplate)
 readWorldFile path = do
-  r <- try (withFile path ReadMode $ \h -> do
-              hSetEncoding h utf8
-              s <- hGetContents h
-              _ <- evaluate (length s)
-              pure s)
+  r <- try (B.readFile path)
   pure $ case r of
     Left e  -> Left (show (e :: IOException))
-    Right s -> parseWorld path s
+    Right s -> parseWorldBytes path s
+
+------------------------------------------------------------------------------
+-- UTF-8
+
+-- | The first invalid byte of a UTF-8 text, if any: its line, column (in
+-- characters) and value.
+utf8Error :: B.ByteString -> Maybe (Int, Int, Word8)
+utf8Error bs = go 0 1 1
+  where
+    n = B.length bs
+    at i = BU.unsafeIndex bs i
+    cont i lo hi = i < n && at i >= lo && at i <= hi
+    go !i !l !c
+      | i >= n    = Nothing
+      | b < 0x80  = if b == 10 then go (i + 1) (l + 1) 1 else go (i + 1) l (c + 1)
+      | b >= 0xC2 && b <= 0xDF = need 1 0x80 0xBF
+      | b == 0xE0 = need 2 0xA0 0xBF
+      | b == 0xED = need 2 0x80 0x9F
+      | b >= 0xE1 && b <= 0xEF = need 2 0x80 0xBF
+      | b == 0xF0 = need 3 0x90 0xBF
+      | b >= 0xF1 && b <= 0xF3 = need 3 0x80 0xBF
+      | b == 0xF4 = need 3 0x80 0x8F
+      | otherwise = Just (l, c, b)
+      where
+        b = at i
+        -- the second byte in [lo, hi], the others continuation bytes
+        need k lo hi
+          | not (cont (i + 1) lo hi) = Just (l, c, b)
+          | k >= 2 && not (cont (i + 2) 0x80 0xBF) = Just (l, c, b)
+          | k >= 3 && not (cont (i + 3) 0x80 0xBF) = Just (l, c, b)
+          | otherwise = go (i + 1 + k) l (c + 1)
+
+-- | Decode valid UTF-8 (as 'utf8Error' accepts it), lazily.
+decodeUtf8 :: B.ByteString -> String
+decodeUtf8 bs = go 0
+  where
+    n = B.length bs
+    at :: Int -> Int
+    at i = fromIntegral (BU.unsafeIndex bs i)
+    tl i = at i .&. 0x3F
+    go i
+      | i >= n    = []
+      | b < 0x80  = chr b : go (i + 1)
+      | b < 0xE0  = chr (((b .&. 0x1F) `shiftL` 6) .|. tl (i + 1)) : go (i + 2)
+      | b < 0xF0  = chr (((b .&. 0x0F) `shiftL` 12) .|. (tl (i + 1) `shiftL` 6) .|. tl (i + 2))
+                    : go (i + 3)
+      | otherwise = chr (((b .&. 0x07) `shiftL` 18) .|. (tl (i + 1) `shiftL` 12)
+                         .|. (tl (i + 2) `shiftL` 6) .|. tl (i + 3)) : go (i + 4)
+      where b = at i
 
 -- | Print a world in the world-file format: a header comment, then one
 -- line per object, in order. Coordinates are printed with 'show', headings
 -- in radians with 'show' followed by @rad@, so that
 -- @'parseWorld' f ('renderWorld' w) == 'Right' w@ whenever all coordinates
--- and headings of @w@ are finite (a NaN or an infinity is printed, but does
--- not parse back).
+-- of @w@ are finite and its headings lie within +-'maxHeading' (a NaN, an
+-- infinity or a larger heading is printed, but does not parse back).
 --
 -- >>> putStr (renderWorld [OTVWall (Point2 0 3), OTSimbotB 2 (Point2 1 (-1)) 0.5])
 -- # afrp world file: 2 objects (positions in metres, headings in radians)
@@ -278,8 +391,13 @@ expected what prev found note =
   ++ maybe "" (\p -> " after " ++ quote (tokText p)) prev
   ++ ", found " ++ found ++ note
 
+-- | A token in quotes, characters that cannot be printed escaped.
 quote :: String -> String
-quote s = "\"" ++ s ++ "\""
+quote s = "\"" ++ foldr esc "" s ++ "\""
+  where
+    esc ch rest
+      | isPrint ch && ch /= '"' && ch /= '\\' = ch : rest
+      | otherwise                             = showLitChar ch rest
 
 lower :: String -> String
 lower = map toLower
@@ -355,7 +473,7 @@ robot mk = do
 -- | @NUMBER unit@, in radians.
 heading :: P Double
 heading = do
-  v <- number
+  v <- token "a number" headingNumber
   f <- keywordOf "a heading unit (deg, degrees, rad or radians)"
          [ ("deg", degToRad), ("degrees", degToRad)
          , ("rad", id), ("radians", id) ]
@@ -365,6 +483,14 @@ heading = do
 
 number :: P Double
 number = token "a number" readNumber
+
+-- | A heading's number: finite, and within +-'maxHeading'.
+headingNumber :: String -> Either Rejection Double
+headingNumber s = case readNumber s of
+  Right v
+    | abs v > maxHeading ->
+        Left (Rejection ("a heading within +-" ++ show (round maxHeading :: Int)) " (out of range)")
+  r -> r
 
 ------------------------------------------------------------------------------
 -- Literals

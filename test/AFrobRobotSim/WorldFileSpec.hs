@@ -3,7 +3,12 @@
 -- example worlds in @worlds/@.
 module AFrobRobotSim.WorldFileSpec (spec) where
 
+import           Control.Exception      (evaluate)
+import qualified Data.ByteString        as B
+import qualified Data.ByteString.Char8  as BC
+import           Data.Char              (isDigit)
 import           Data.List              (isInfixOf, isPrefixOf, tails)
+import           System.Timeout         (timeout)
 import           System.Directory       (getTemporaryDirectory, removeFile)
 import           System.FilePath        ((</>))
 import           Test.Hspec
@@ -63,9 +68,11 @@ genObject = do
   p <- Point2 <$> genDouble <*> genDouble
   oneof
     [ pure (OTBlock p), pure (OTVWall p), pure (OTHWall p), pure (OTBall p)
-    , OTSimbotA <$> genId <*> pure p <*> genDouble
-    , OTSimbotB <$> genId <*> pure p <*> genDouble
+    , OTSimbotA <$> genId <*> pure p <*> genHeading
+    , OTSimbotB <$> genId <*> pure p <*> genHeading
     ]
+  where
+    genHeading = genDouble `suchThat` (\h -> abs h <= maxHeading)
 
 newtype AWorld = AWorld WorldTemplate
   deriving Show
@@ -91,9 +98,127 @@ exampleFiles :: [FilePath]
 exampleFiles = ["worlds/arena.world", "worlds/soccer.world", "worlds/corridor.world"]
 
 ------------------------------------------------------------------------------
+-- Hostile files
+
+-- | Parse bytes under the file name @h.world@.
+parseB :: B.ByteString -> Either String WorldTemplate
+parseB = parseWorldBytes "h.world"
+
+-- | The result, fully evaluated, within the given number of seconds
+-- ('Nothing' if it took longer).
+forcedWithin :: Double -> Either String WorldTemplate -> IO (Maybe (Either String WorldTemplate))
+forcedWithin secs r = timeout (round (secs * 1e6)) (evaluate (force r))
+  where
+    force x = case x of
+      Left e  -> length e `seq` x
+      Right w -> length (show w) `seq` x
+
+-- | A message starting @h.world:LINE:@ (and a column or more text).
+positioned :: String -> Bool
+positioned e = case stripPrefix' "h.world:" e of
+  Just rest -> let (l, rest') = span isDigit rest
+               in not (null l) && read l >= (1 :: Integer) && take 1 rest' == ":" && length rest' > 2
+  Nothing   -> False
+  where
+    stripPrefix' p x = if p `isPrefixOf` x then Just (drop (length p) x) else Nothing
+
+-- | A world file, valid or broken: the rendering of a world of small
+-- coordinates, then a few mutations (bytes inserted, deleted or repeated,
+-- long digit runs, NULs, invalid UTF-8, BOMs, CRs, non-finite literals).
+genHostile :: Gen B.ByteString
+genHostile = do
+  objs <- listOf genSmall
+  let base = BC.pack (renderWorld objs)
+  k <- frequency [(1, pure 0), (4, choose (1, 4))]
+  mutations k base
+  where
+    genSmall = do
+      p <- Point2 <$> choose (-6, 6) <*> choose (-6, 6)
+      i <- choose (-3, 3)
+      h <- choose (-10, 10)
+      elements [OTBlock p, OTVWall p, OTHWall p, OTBall p, OTSimbotA i p h, OTSimbotB i p h]
+    mutations :: Int -> B.ByteString -> Gen B.ByteString
+    mutations 0 b = pure b
+    mutations k b = mutate b >>= mutations (k - 1)
+    mutate b = do
+      pos <- choose (0, B.length b)
+      let (front, back) = B.splitAt pos b
+      ins <- oneof
+        [ B.pack <$> listOf1 arbitrary
+        , pure (BC.replicate 5000 '7')
+        , pure (BC.pack "1e308")
+        , pure (BC.pack " heading 1e308 deg")
+        , pure (BC.pack " NaN Infinity -inf")
+        , pure (B.pack [0])
+        , pure (B.pack [0xff, 0xfe])
+        , pure (B.pack [0xe2, 0x82])
+        , pure (B.pack [0xef, 0xbb, 0xbf])
+        , pure (BC.pack "\r\n")
+        , pure (BC.pack "simbotA 1 at 0 0\n")
+        , pure (BC.pack "   \t ")
+        ]
+      choice <- choose (0 :: Int, 3)
+      cut <- choose (0, 20)
+      pure $ case choice of
+        0 -> B.concat [front, B.drop cut back]              -- delete
+        1 -> B.concat [front, B.take cut back, back]        -- repeat
+        _ -> B.concat [front, ins, back]                    -- insert
 
 spec :: Spec
 spec = do
+  describe "hostile world files" $ do
+    it "rejects a number of a million digits within a second, with its position" $ do
+      r <- forcedWithin 1 (parseB (BC.pack ("ball at 0 0\nball at " ++ replicate 1000000 '9' ++ " 0\n")))
+      r `shouldBe` Just (Left ("h.world:2:" ++ show (maxLineLength + 1) ++ ": line longer than "
+                               ++ show maxLineLength ++ " characters"))
+    it "rejects a token longer than maxTokenLength, naming its start" $
+      parseB (BC.pack ("ball at 0 " ++ replicate 200 '1'))
+        `shouldBe` Left ("h.world:1:11: token longer than " ++ show maxTokenLength
+                         ++ " characters, starting \"" ++ replicate 20 '1' ++ "\"")
+    it "parses a large file in time linear in its size" $ do
+      -- 200,000 lines: a quadratic parser would not finish
+      let big = BC.pack (concat (replicate 100000 "# a comment line\nball at 1.25 -3.5\n"))
+      r <- forcedWithin 10 (parseB big)
+      fmap (fmap length) r `shouldBe` Just (Right 100000)
+    it "reports invalid UTF-8 with its line and column" $ do
+      parseB (B.concat [BC.pack "ball at 0 0\n# caf", B.pack [0xc3, 0xa9], BC.pack " ", B.pack [0xff], BC.pack "\n"])
+        `shouldBe` Left "h.world:2:8: invalid UTF-8 (byte 0xff)"
+      parseB (B.concat [BC.pack "ball at 0 0 # ", B.pack [0xe2, 0x82]])
+        `shouldBe` Left "h.world:1:15: invalid UTF-8 (byte 0xe2)"
+      parseB (B.pack [0xc0, 0xaf]) `shouldBe` Left "h.world:1:1: invalid UTF-8 (byte 0xc0)"
+      parseB (B.pack [0xed, 0xa0, 0x80]) `shouldBe` Left "h.world:1:1: invalid UTF-8 (byte 0xed)"
+      parseB (B.pack [0xf4, 0x90, 0x80, 0x80]) `shouldBe` Left "h.world:1:1: invalid UTF-8 (byte 0xf4)"
+    it "accepts valid UTF-8 in comments" $
+      parseB (B.concat [BC.pack "# caf", B.pack [0xc3, 0xa9, 0xe2, 0x82, 0xac, 0xf0, 0x9f, 0x98, 0x80], BC.pack "\nball at 1 2\n"])
+        `shouldBe` Right [OTBall (Point2 1 2)]
+    it "accepts a UTF-8 byte order mark, CRLF line ends and trailing whitespace" $
+      parseB (B.concat [B.pack [0xef, 0xbb, 0xbf], BC.pack "ball at 1 2 \t \r\nblock at -1 -2\r\n\r\n"])
+        `shouldBe` Right [OTBall (Point2 1 2), OTBlock (Point2 (-1) (-2))]
+    it "reports a NUL byte with its position" $
+      parseB (BC.pack "ball at 0 0\nblock at 1\NUL 2\n")
+        `shouldBe` Left "h.world:2:11: found a NUL character (is this a text file?)"
+    it "escapes control characters in messages" $
+      parseB (BC.pack "ball at \ESC[2J 0")
+        `shouldBe` Left "h.world:1:9: expected a number after \"at\", found \"\\ESC[2J\""
+    it "checks every number: huge headings, NaN, infinities" $ do
+      parseB (BC.pack "\nsimbotA 1 at 0 0 heading 1e308 deg")
+        `shouldBe` Left "h.world:2:26: expected a heading within +-1000000 after \"heading\", found \"1e308\" (out of range)"
+      parseB (BC.pack "simbotB 1 at 0 0 heading -2e6 rad")
+        `shouldSatisfy` either ("h.world:1:26: " `isPrefixOf`) (const False)
+      parseB (BC.pack "ball at nan 0") `shouldSatisfy` either ("h.world:1:9: " `isPrefixOf`) (const False)
+      parseB (BC.pack "ball at 0 +Infinity") `shouldSatisfy` either ("h.world:1:11: " `isPrefixOf`) (const False)
+      parseB (BC.pack "block at 1e309 0") `shouldSatisfy` either ("h.world:1:10: " `isPrefixOf`) (const False)
+    it "has no sizes to give: a size after an object is an error at its position" $
+      parseB (BC.pack "block at 0 0 size -1")
+        `shouldBe` Left "h.world:1:14: expected end of line or a comment after \"0\", found \"size\""
+    it "fuzz: any file, valid or broken, loads or gives an error with a position, in time" $
+      withMaxSuccess 300 $ forAll genHostile $ \bytes -> ioProperty $ do
+        r <- forcedWithin 2 (parseB bytes)
+        pure $ counterexample (show r) $ case r of
+          Nothing        -> False
+          Just (Left e)  -> positioned e
+          Just (Right _) -> True
+
   describe "parseWorld: objects" $ do
     it "parses a block" $
       parse1 "block at 2 -2" `shouldBe` Right (OTBlock (Point2 2 (-2)))
@@ -270,7 +395,7 @@ spec = do
         [ "wall v at 0.0 3.0", "simbotB 2 at 1.0 -1.0 heading 0.5 rad", "ball at 0.0 0.0" ]
     it "renders the empty world as a comment only" $
       parse (renderWorld []) `shouldBe` Right []
-    it "round-trips every finite world exactly" $
+    it "round-trips every finite world (headings within maxHeading) exactly" $
       withMaxSuccess 500 $ \(AWorld w) -> parseWorld "r.world" (renderWorld w) === Right w
     it "round-trips signed zeros" $
       fmap (map otPos) (parse (renderWorld [OTBall (Point2 (-0.0) 0)]))
