@@ -77,7 +77,7 @@ module AFrobRobotSim
     -- * World files
   , parseWorld
   , renderWorld
-  , parseWorldBytes
+  , readWorldBytes
   , readWorldFile
     -- * Pictures
   , Scene (..)

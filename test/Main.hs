@@ -44,6 +44,7 @@ import qualified Examples.Section3Spec
 import qualified AFrobRobotSim.SimulatorSpec
 import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
+import qualified AFrobRobotSim.WorldSpec
 import qualified NetworksSpec
 
 main :: IO ()
@@ -83,6 +84,7 @@ main = hspec $ do
   describe "AFrobRobotSim.Sensors" AFrobRobotSim.SensorsSpec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec
+  describe "AFrobRobotSim.World" AFrobRobotSim.WorldSpec.spec
   describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec
   describe "AFrobRobotSim.Run"       AFrobRobotSim.RunSpec.spec
   describe "examples: section 2"     Examples.Section2Spec.spec

@@ -52,11 +52,15 @@ module AFrobRobotSim.World
   , notesBounds
   , validateWorld
   , validateWorldIn
+  , maxProblems
+  , capProblems
+  , worldProblems
   , objectName
   , objectHalfSize
   ) where
 
-import           Data.List      (sort, tails)
+import qualified Data.Map.Strict as M
+import qualified Data.Set        as S
 
 import           AFRP.Geometry
 import           AFrob.Dimensions
@@ -162,42 +166,109 @@ notesBounds = Bounds worldXMin worldYMin worldXMax worldYMax
 
 -- | Check a world template: every coordinate and heading is a finite
 -- number; every object lies inside the world; no two robots of one type
--- share an id; no two robots overlap. Returns every problem found, each
--- naming the object(s), or @Right ()@.
+-- share an id; nothing overlaps at time 0 where the physics could not
+-- untangle it: a robot with a wall, block, ball or another robot, a ball
+-- with a wall or block (touching is allowed, to within a nanometre for
+-- rounding; walls and blocks may overlap
+-- each other, and balls each other). Returns the problems, each naming the
+-- object(s), in the order of the objects (a problem between two objects
+-- comes with the later one), or @Right ()@. At most 'maxProblems' are
+-- listed, then one line saying how many more there are.
 validateWorld :: WorldTemplate -> Either [String] ()
 validateWorld = validateWorldIn notesBounds
 
 -- | 'validateWorld' for a world of the given extent.
 validateWorldIn :: Bounds -> WorldTemplate -> Either [String] ()
-validateWorldIn (Bounds x0 y0 x1 y1) objs = case problems of
-  [] -> Right ()
-  ps -> Left ps
+validateWorldIn bounds objs =
+  case capProblems (map snd (worldProblems bounds (zip (repeat "") objs))) of
+    [] -> Right ()
+    ps -> Left ps
+
+-- | How many problems 'validateWorld' lists before it only counts the
+-- rest: 20.
+maxProblems :: Int
+maxProblems = 20
+
+-- | At most 'maxProblems' messages, then (if there are more) one line
+-- @... and N more problems@ (N counted up to 100000, beyond which it says
+-- @at least 100000@).
+capProblems :: [String] -> [String]
+capProblems ps = case splitAt maxProblems ps of
+  (shown, [])   -> shown
+  (shown, rest) ->
+    let limit = 100000 :: Int
+        k     = length (take limit rest)
+    in shown ++ [ "... and " ++ (if k >= limit then "at least " else "") ++ show k
+                  ++ " more problem" ++ (if k == 1 then "" else "s") ]
+
+-- | The problems of a world whose objects carry a label (appended to their
+-- names in messages, such as @" (line 3)"@), in the order of the objects,
+-- each with the position in the list of the object it is reported at:
+-- for a pair, the later one.
+worldProblems :: Bounds -> [(String, ObjectTemplate)] -> [(Int, String)]
+worldProblems (Bounds x0 y0 x1 y1) labelled = concatMap problemsOf indexed
   where
-    problems = concatMap finite objs ++ concatMap inside objs ++ duplicates ++ overlaps
-    finite o =
-      [ objectName o ++ ": coordinates and heading must be finite numbers"
-      | not (all isFinite (coords o)) ]
+    indexed = zip [0 :: Int ..] labelled
+    name (lbl, o) = objectName o ++ lbl
+    problemsOf (i, lo@(_, o))
+      | not (all isFinite (coords o)) =
+          [(i, name lo ++ ": coordinates and heading must be finite numbers")]
+      | not (insideWorld o) =
+          [(i, name lo ++ ": lies (partly) outside the world [" ++ show x0 ++ ", " ++ show x1
+                 ++ "] x [" ++ show y0 ++ ", " ++ show y1 ++ "]")]
+      | otherwise =
+          [ (i, name lo ++ " has the same id as " ++ name (labelledAt j))
+          | Just k <- [robotKindOf o], Just j <- [M.lookup (k, otRId o) firstWithId], j < i ]
+          ++ [ (i, name lo ++ " overlaps " ++ name (labelledAt j)) | j <- overlapsBefore i o ]
     coords o = let Point2 x y = otPos o
                in x : y : maybe [] (const [otHdng o]) (robotKindOf o)
     isFinite v = not (isNaN v || isInfinite v)
-    inside o
-      | not (all isFinite (coords o)) = []
-      | otherwise =
-          let Point2 x y = otPos o
-              (hw, hh)   = objectHalfSize o
-          in [ objectName o ++ ": lies (partly) outside the world [" ++ show x0 ++ ", " ++ show x1
-                 ++ "] x [" ++ show y0 ++ ", " ++ show y1 ++ "]"
-             | x - hw < x0 || x + hw > x1 || y - hh < y0 || y + hh > y1 ]
-    robots = [ (k, o) | o <- objs, Just k <- [robotKindOf o] ]
-    duplicates =
-      [ "two " ++ kindType k ++ " robots have the id " ++ show i
-      | (k, i) <- dupes (sort [ (k, otRId o) | (k, o) <- robots ]) ]
-    dupes xs = [ a | (a, b) <- zip xs (drop 1 xs), a == b ]
-    overlaps =
-      [ objectName a ++ " and " ++ objectName b ++ " overlap"
-      | ((_, a) : rest) <- tails robots, (_, b) <- rest
-      , all isFinite (coords a ++ coords b)
-      , norm (otPos a .-. otPos b) < simbotDiameter ]
+    insideWorld o =
+      let Point2 x y = otPos o
+          (hw, hh)   = objectHalfSize o
+      in not (x - hw < x0 || x + hw > x1 || y - hh < y0 || y + hh > y1)
+    placed = [ (i, o) | (i, (_, o)) <- indexed, all isFinite (coords o), insideWorld o ]
+    arr = M.fromList [ (i, lo) | (i, lo) <- indexed ]
+    labelledAt j = arr M.! j
+    firstWithId = M.fromListWith min [ ((k, otRId o), i) | (i, o) <- placed, Just k <- [robotKindOf o] ]
+    -- The placed objects on a grid of 1 m cells (no object is larger), each
+    -- in every cell its bounding box meets: a pair can only overlap if they
+    -- share a cell.
+    grid = M.fromListWith (flip (++)) [ (c, [(i, o)]) | (i, o) <- placed, c <- cellsOf o ]
+    cellsOf o =
+      let Point2 x y = otPos o
+          (hw, hh)   = objectHalfSize o
+      in [ (cx, cy) | cx <- [cell (x - hw) .. cell (x + hw)], cy <- [cell (y - hh) .. cell (y + hh)] ]
+    cell v = floor (max (-1e9) (min 1e9 v)) :: Int
+    overlapsBefore i o =
+      S.toAscList (S.fromList [ j | c <- cellsOf o, (j, p) <- M.findWithDefault [] c grid
+                                  , j < i, overlapAtStart o p ])
+
+-- | Do two objects overlap (more than touch) where the physics could not
+-- separate them: a robot and anything, or a ball and a wall or block?
+overlapAtStart :: ObjectTemplate -> ObjectTemplate -> Bool
+overlapAtStart a b = case (discRadius a, discRadius b) of
+  (Just ra, Just rb)
+    | isRobot a || isRobot b -> norm (otPos a .-. otPos b) < ra + rb - touchSlack
+    | otherwise              -> False            -- two balls: they bounce apart
+  (Just ra, Nothing) -> discInBox (otPos a) ra b
+  (Nothing, Just rb) -> discInBox (otPos b) rb a
+  (Nothing, Nothing) -> False                    -- walls and blocks may overlap
+  where
+    isRobot o = robotKindOf o /= Nothing
+    discRadius o = case o of
+      OTBall {}    -> Just (ballDiameter / 2)
+      OTSimbotA {} -> Just (simbotDiameter / 2)
+      OTSimbotB {} -> Just (simbotDiameter / 2)
+      _            -> Nothing
+    discInBox (Point2 cx cy) r box =
+      let Point2 bx by = otPos box
+          (hw, hh)     = objectHalfSize box
+          dx = max 0 (abs (cx - bx) - hw)
+          dy = max 0 (abs (cy - by) - hh)
+      in dx * dx + dy * dy < (r - touchSlack) * (r - touchSlack)
+    -- objects placed to touch exactly may overlap by a rounding error
+    touchSlack = 1e-9
 
 -- | Half the width and height of an object's bounding box, in metres.
 objectHalfSize :: ObjectTemplate -> (Double, Double)

@@ -26,9 +26,10 @@
 --
 -- * Limits, so that any file is read in time linear in its size: a line
 --   has at most 'maxLineLength' (4096) characters, a token at most
---   'maxTokenLength' (100). A NUL character anywhere is an error (the file
+--   'maxTokenLength' (100); a file describes at most 'maxObjects' (10000)
+--   objects. A NUL character anywhere is an error (the file
 --   is probably not text). A file read with 'readWorldFile' or
---   'parseWorldBytes' must be valid UTF-8; the first invalid byte is
+--   'readWorldBytes' must be valid UTF-8; the first invalid byte is
 --   reported with its line and column.
 --
 -- * A @#@ starts a comment, which runs to the end of the line; it may
@@ -109,9 +110,11 @@
 -- Haskell writes them, @\\NUL@, @\\ESC@, ...), so a message never sends
 -- control codes to a terminal.
 --
--- 'parseWorld' checks the syntax only. Whether the objects fit into the
--- world, whether robots overlap and whether robot ids are unique is
--- checked by 'AFrobRobotSim.World.validateWorld'.
+-- 'parseWorld' checks the syntax only. 'readWorldFile' and
+-- 'readWorldBytes' also check the world with
+-- 'AFrobRobotSim.World.validateWorld' (objects inside the world, ids
+-- unique, nothing overlapping at time 0), each problem reported as
+-- @FILE:LINE: ...@ with the lines of the objects involved.
 --
 -- = Printing
 --
@@ -123,12 +126,13 @@
 module AFrobRobotSim.WorldFile
   ( -- * Parsing
     parseWorld
-  , parseWorldBytes
+  , readWorldBytes
   , readWorldFile
     -- * Limits
   , maxLineLength
   , maxTokenLength
   , maxHeading
+  , maxObjects
     -- * Printing
   , renderWorld
   ) where
@@ -138,11 +142,13 @@ import           Data.Bits         ((.&.), (.|.), shiftL)
 import qualified Data.ByteString   as B
 import qualified Data.ByteString.Unsafe as BU
 import           Data.Char         (chr, isDigit, isPrint, isSpace, showLitChar, toLower)
+import qualified Data.Map.Strict   as M
 import           Data.Word         (Word8)
 import           Numeric           (showHex)
 
 import           AFRP.Geometry     (Point2 (..))
-import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate)
+import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems,
+                                      notesBounds, worldProblems)
 
 ------------------------------------------------------------------------------
 -- Public interface
@@ -161,16 +167,28 @@ import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate)
 -- >>> parseWorld "w.world" "\n\nwall v at x1 2"
 -- Left "w.world:3:11: expected a number after \"at\", found \"x1\""
 parseWorld :: FilePath -> String -> Either String WorldTemplate
-parseWorld file = go [] . zip [1 :: Int ..] . lines . dropBom
+parseWorld file = fmap (map snd) . parseNumbered file
+
+-- | 'parseWorld', each object with its line number.
+parseNumbered :: FilePath -> String -> Either String [(Int, ObjectTemplate)]
+parseNumbered file = go (0 :: Int) [] . zip [1 :: Int ..] . lines . dropBom
   where
     dropBom ('\xFEFF' : r) = r
     dropBom r              = r
-    go acc [] = Right (reverse acc)
-    go acc ((n, l) : ls) = case checkLine l >>= parseLine of
-      Right Nothing  -> go acc ls
-      Right (Just o) -> go (o : acc) ls
+    go _ acc [] = Right (reverse acc)
+    go k acc ((n, l) : ls) = case checkLine l >>= parseLine of
+      Right Nothing  -> go k acc ls
+      Right (Just o)
+        | k >= maxObjects -> Left (file ++ ":" ++ show n ++ ": too many objects (at most "
+                                   ++ show maxObjects ++ ")")
+        | otherwise       -> go (k + 1) ((n, o) : acc) ls
       Left (Failure col msg) ->
         Left (file ++ ":" ++ show n ++ ":" ++ show col ++ ": " ++ msg)
+
+-- | The most objects a world file may describe: 10000 (the notes' world
+-- holds about 1100 balls, or 400 blocks, side by side).
+maxObjects :: Int
+maxObjects = 10000
 
 -- | The longest line accepted, in characters: 4096.
 maxLineLength :: Int
@@ -201,31 +219,50 @@ checkLine l = case [ c | (c, ch) <- zip [1 ..] (take (maxLineLength + 1) l), ch 
   where
     ts = tokenize l
 
--- | Decode the bytes of a world file as UTF-8 and parse them with
--- 'parseWorld'. The first byte that is not valid UTF-8 (a stray
+-- | Decode the bytes of a world file as UTF-8, parse them with
+-- 'parseWorld' and check the world with 'validateWorld', naming each
+-- object's line. The first byte that is not valid UTF-8 (a stray
 -- continuation byte, a truncated or overlong sequence, a surrogate, a code
 -- point beyond U+10FFFF) is an error
 -- @FILE:LINE:COLUMN: invalid UTF-8 (byte 0xNN)@, its column counted in the
--- characters before it on its line, plus one.
+-- characters before it on its line, plus one. The problems of an invalid
+-- world come one per line, each as @FILE:LINE: problem@ (the line of the
+-- later object of a pair, whose message names the other's line), at most
+-- 'maxProblems' of them and then a count of the rest.
 --
--- >>> parseWorldBytes "w.world" (B.pack [98,97,108,108,32,97,116,32,48,32,255])
+-- >>> readWorldBytes "w.world" (B.pack [98,97,108,108,32,97,116,32,48,32,255])
 -- Left "w.world:1:11: invalid UTF-8 (byte 0xff)"
-parseWorldBytes :: FilePath -> B.ByteString -> Either String WorldTemplate
-parseWorldBytes file bytes = case utf8Error bytes of
+--
+-- The file @block at 0 0@, @simbotA 1 at 0.1 0@ (two lines) gives
+--
+-- @
+-- w.world:2: SimbotA 1 at (0.1, 0.0) (line 2) overlaps block at (0.0, 0.0) (line 1)
+-- @
+readWorldBytes :: FilePath -> B.ByteString -> Either String WorldTemplate
+readWorldBytes file bytes = case utf8Error bytes of
   Just (l, c, b) -> Left (file ++ ":" ++ show l ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
                           ++ (if b < 16 then "0" else "") ++ showHex b ")")
-  Nothing        -> parseWorld file (decodeUtf8 bytes)
+  Nothing        -> parseNumbered file (decodeUtf8 bytes) >>= check
+  where
+    check numbered =
+      let lineOf = M.fromList (zip [0 :: Int ..] (map fst numbered))
+          labelled = [ (" (line " ++ show n ++ ")", o) | (n, o) <- numbered ]
+          located = [ file ++ ":" ++ show (M.findWithDefault 0 i lineOf) ++ ": " ++ msg
+                    | (i, msg) <- worldProblems notesBounds labelled ]
+      in case capProblems located of
+           [] -> Right (map snd numbered)
+           ps -> Left (unlines ps)
 
--- | Read and parse a world file ('parseWorldBytes'). A file that cannot be
+-- | Read, parse and check a world file ('readWorldBytes'). A file that cannot be
 -- read (missing, no permission, a directory, ...) gives 'Left' with the
 -- operating system's message rather than throwing an exception; a
--- malformed file gives 'Left' with the message of 'parseWorldBytes'.
+-- malformed file gives 'Left' with the message of 'readWorldBytes'.
 readWorldFile :: FilePath -> IO (Either String WorldTemplate)
 readWorldFile path = do
   r <- try (B.readFile path)
   pure $ case r of
     Left e  -> Left (show (e :: IOException))
-    Right s -> parseWorldBytes path s
+    Right s -> readWorldBytes path s
 
 ------------------------------------------------------------------------------
 -- UTF-8

@@ -206,7 +206,7 @@ spec = do
     it "rejects two robots in one place" $
       validateWorld [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 0.1 0) 0] `shouldSatisfy` mentions "overlap"
     it "rejects a duplicate id within a type" $
-      validateWorld [OTSimbotB 2 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 0) 0] `shouldSatisfy` mentions "SimbotB robots have the id 2"
+      validateWorld [OTSimbotB 2 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 0) 0] `shouldSatisfy` mentions "SimbotB 2 at (2.0, 0.0) has the same id as SimbotB 2 at (0.0, 0.0)"
     it "rejects a NaN coordinate" $
       validateWorld [OTBall (Point2 (0 / 0) 0)] `shouldSatisfy` mentions "ball"
     it "accepts a good world" $

@@ -102,7 +102,7 @@ exampleFiles = ["worlds/arena.world", "worlds/soccer.world", "worlds/corridor.wo
 
 -- | Parse bytes under the file name @h.world@.
 parseB :: B.ByteString -> Either String WorldTemplate
-parseB = parseWorldBytes "h.world"
+parseB = readWorldBytes "h.world"
 
 -- | The result, fully evaluated, within the given number of seconds
 -- ('Nothing' if it took longer).
@@ -177,9 +177,14 @@ spec = do
                          ++ " characters, starting \"" ++ replicate 20 '1' ++ "\"")
     it "parses a large file in time linear in its size" $ do
       -- 200,000 lines: a quadratic parser would not finish
-      let big = BC.pack (concat (replicate 100000 "# a comment line\nball at 1.25 -3.5\n"))
+      let chunk = concat (replicate 39 "# a comment line\n") ++ "ball at 1.25 -3.5\n"
+          big = BC.pack (concat (replicate 5000 chunk))
       r <- forcedWithin 10 (parseB big)
-      fmap (fmap length) r `shouldBe` Just (Right 100000)
+      fmap (fmap length) r `shouldBe` Just (Right 5000)
+    it "rejects more than maxObjects objects, at the first one too many" $
+      parseB (BC.pack (concat (replicate (maxObjects + 1) "block at 0 0\n")))
+        `shouldBe` Left ("h.world:" ++ show (maxObjects + 1) ++ ": too many objects (at most "
+                         ++ show maxObjects ++ ")")
     it "reports invalid UTF-8 with its line and column" $ do
       parseB (B.concat [BC.pack "ball at 0 0\n# caf", B.pack [0xc3, 0xa9], BC.pack " ", B.pack [0xff], BC.pack "\n"])
         `shouldBe` Left "h.world:2:8: invalid UTF-8 (byte 0xff)"
@@ -208,6 +213,25 @@ spec = do
       parseB (BC.pack "ball at nan 0") `shouldSatisfy` either ("h.world:1:9: " `isPrefixOf`) (const False)
       parseB (BC.pack "ball at 0 +Infinity") `shouldSatisfy` either ("h.world:1:11: " `isPrefixOf`) (const False)
       parseB (BC.pack "block at 1e309 0") `shouldSatisfy` either ("h.world:1:10: " `isPrefixOf`) (const False)
+    it "rejects objects overlapping at time 0, naming both and their lines" $ do
+      parseB (BC.pack "# arena\nblock at 0 0\n\nsimbotA 1 at 0.1 0 heading 90 deg\n")
+        `shouldBe` Left "h.world:4: SimbotA 1 at (0.1, 0.0) (line 4) overlaps block at (0.0, 0.0) (line 2)\n"
+      parseB (BC.pack "ball at 1 1\nwall v at 1.1 1\n")
+        `shouldBe` Left "h.world:2: vertical wall at (1.1, 1.0) (line 2) overlaps ball at (1.0, 1.0) (line 1)\n"
+    it "reports objects outside the world and duplicate ids with their lines" $
+      parseB (BC.pack "simbotA 1 at 0 0\nball at 4.9 0\nsimbotA 1 at 2 2\n")
+        `shouldBe` Left (unlines
+          [ "h.world:2: ball at (4.9, 0.0) (line 2): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"
+          , "h.world:3: SimbotA 1 at (2.0, 2.0) (line 3) has the same id as SimbotA 1 at (0.0, 0.0) (line 1)" ])
+    it "gives 300 overlapping robots a short message, with a count of the rest" $ do
+      let pile = BC.pack (concat [ "simbotB " ++ show i ++ " at 1 1\n" | i <- [1 .. 300 :: Int] ])
+      r <- forcedWithin 2 (parseB pile)
+      case r of
+        Just (Left e) -> do
+          length (lines e) `shouldBe` maxProblems + 1
+          lines e `shouldSatisfy` all ("h.world:" `isPrefixOf`) . take maxProblems
+          last (lines e) `shouldBe` "... and 44830 more problems"
+        other -> expectationFailure (show other)
     it "has no sizes to give: a size after an object is an error at its position" $
       parseB (BC.pack "block at 0 0 size -1")
         `shouldBe` Left "h.world:1:14: expected end of line or a comment after \"0\", found \"size\""

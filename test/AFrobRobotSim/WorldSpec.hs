@@ -1,0 +1,115 @@
+-- | "AFrobRobotSim.World": 'validateWorld' rejects what overlaps at time 0
+-- (each pair named once, with both objects), accepts what only touches,
+-- caps long lists of problems; and a robot can never start inside a block
+-- or drive into one.
+module AFrobRobotSim.WorldSpec (spec) where
+
+import           Control.Exception (ErrorCall (..), evaluate)
+import           Data.List         (isInfixOf)
+import           Test.Hspec
+import           Test.QuickCheck
+
+import           AFrob             (constant, ddVelDiff, mrFinalize)
+import           AFRP.Geometry
+import           AFrobRobotSim
+import           AFrobRobotSim.World (maxProblems, objectHalfSize, objectName, worldProblems)
+
+-- | The problems of a world ([] for a valid one).
+problems :: WorldTemplate -> [String]
+problems = either id (const []) . validateWorld
+
+-- | Drive straight on at the given wheel speed.
+straight :: Double -> SimbotController
+straight v _ = constant (mrFinalize (ddVelDiff v v))
+
+spec :: Spec
+spec = do
+  describe "validateWorld: overlaps at time 0" $ do
+    let robot = OTSimbotA 1 (Point2 0 0) 0
+        pairs =
+          [ ("a wall (vertical)",   OTVWall (Point2 0.2 0))
+          , ("a wall (horizontal)", OTHWall (Point2 0 0.25))
+          , ("a block",             OTBlock (Point2 0.4 0.4))
+          , ("a ball",              OTBall (Point2 (-0.35) 0))
+          , ("another robot",       OTSimbotB 1 (Point2 0 (-0.45)) 0)
+          ]
+    mapM_ (\(what, o) -> it ("rejects a robot inside " ++ what ++ ", naming both") $
+             problems [robot, o] `shouldBe` [objectName o ++ " overlaps " ++ objectName robot])
+          pairs
+    it "rejects a ball inside a wall or a block" $ do
+      problems [OTBall (Point2 1 1), OTBlock (Point2 1.3 1.3)]
+        `shouldBe` ["block at (1.3, 1.3) overlaps ball at (1.0, 1.0)"]
+      problems [OTVWall (Point2 1 1), OTBall (Point2 1.1 1.4)]
+        `shouldBe` ["ball at (1.1, 1.4) overlaps vertical wall at (1.0, 1.0)"]
+    it "accepts objects that only touch (to within rounding)" $
+      problems [ robot, OTSimbotB 1 (Point2 0.5 0) 0, OTBlock (Point2 0 (-0.5))
+               , OTBall (Point2 (-0.4) 0), OTVWall (Point2 (-0.6) 0), OTBall (Point2 2 2)
+               , OTBlock (Point2 2 2.4) ]
+        `shouldBe` []
+    it "accepts walls and blocks overlapping each other, and balls overlapping balls" $
+      problems [ OTVWall (Point2 1 1), OTHWall (Point2 1 1), OTBlock (Point2 1.2 1)
+               , OTBall (Point2 (-2) (-2)), OTBall (Point2 (-2.1) (-2)) ]
+        `shouldBe` []
+    it "finds the same pairs as testing every pair, on random worlds" $
+      forAll (listOf genObject) $ \objs ->
+        let overlapping = length [ () | (_, m) <- worldProblems notesBounds (map ((,) "") objs)
+                                      , " overlaps " `isInfixOf` m ]
+            expected    = length [ () | (i, a) <- zip [0 :: Int ..] objs, (j, b) <- zip [0 ..] objs
+                                      , i < j, placed a, placed b, bad a b ]
+        in overlapping === expected
+    it "gives 300 robots in one place a short message: 20 problems and a count" $ do
+      let pile = [ OTSimbotA i (Point2 0 0) 0 | i <- [1 .. 300] ]
+          ps   = problems pile
+      length ps `shouldBe` maxProblems + 1
+      last ps `shouldBe` ("... and " ++ show (300 * 299 `div` 2 - maxProblems) ++ " more problems")
+      sum (map length ps) `shouldSatisfy` (< 3000)
+    it "names both robots that share an id" $
+      problems [OTSimbotB 2 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 0) 0]
+        `shouldBe` ["SimbotB 2 at (2.0, 0.0) has the same id as SimbotB 2 at (0.0, 0.0)"]
+
+  describe "robots and blocks" $ do
+    it "never starts a robot inside a block: the simulation refuses the world" $
+      evaluate (head (simulate 0.01 [OTBlock (Point2 0 0), OTSimbotA 1 (Point2 0.1 0) 0]
+                                (straight 1) (straight 1)))
+        `shouldThrow` (\(ErrorCall msg) -> "SimbotA 1 at (0.1, 0.0) overlaps block at (0.0, 0.0)" `isInfixOf` msg)
+    it "never lets a robot that starts outside a block drive into it" $
+      withMaxSuccess 40 $ forAll genStart $ \(p, h) ->
+        let world = [OTBlock (Point2 0 0), OTSimbotB 1 p h]
+            run   = take 301 (simulate 0.01 world (straight 2) (straight 2))
+            gap r = let Point2 x y = robotPos r
+                        dx = max 0 (abs x - 0.25)
+                        dy = max 0 (abs y - 0.25)
+                    in sqrt (dx * dx + dy * dy)
+        in validateWorld world == Right () ==>
+             minimum [ gap r | s <- run, r <- wsRobots s ] >= 0.25 - 1e-6
+  where
+    genStart = do
+      a <- choose (0, 2 * pi)
+      d <- choose (0.5, 1.5)
+      h <- choose (-pi, pi)
+      pure (Point2 (d * cos a) (d * sin a), a + pi + h / 4)
+    placed o = let Point2 x y = otPos o
+                   (hw, hh) = objectHalfSize o
+               in x - hw >= -5 && x + hw <= 5 && y - hh >= -5 && y + hh <= 5
+    bad a b = case (radius a, radius b) of
+      (Just ra, Just rb) -> (isRobot a || isRobot b) && norm (otPos a .-. otPos b) < ra + rb - 1e-9
+      (Just ra, Nothing) -> discBox (otPos a) ra b
+      (Nothing, Just rb) -> discBox (otPos b) rb a
+      _                  -> False
+    isRobot o = case o of { OTSimbotA {} -> True; OTSimbotB {} -> True; _ -> False }
+    radius o = case o of
+      OTBall {}    -> Just 0.15
+      OTSimbotA {} -> Just 0.25
+      OTSimbotB {} -> Just 0.25
+      _            -> Nothing
+    -- the distance from the disc's centre to the rectangle, below its radius
+    discBox (Point2 cx cy) r box =
+      let Point2 bx by = otPos box
+          (hw, hh) = objectHalfSize box
+          dx = max 0 (abs (cx - bx) - hw)
+          dy = max 0 (abs (cy - by) - hh)
+      in dx * dx + dy * dy < (r - 1e-9) * (r - 1e-9)
+    genObject = do
+      p <- Point2 <$> choose (-3, 3) <*> choose (-3, 3)
+      i <- choose (1, 1000)
+      elements [OTBlock p, OTVWall p, OTHWall p, OTBall p, OTSimbotA i p 0, OTSimbotB i p 0]
