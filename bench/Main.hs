@@ -13,6 +13,8 @@
 --   with that many robots for that many steps and prints the robot-steps
 --   per second and the speed relative to real time;
 -- * @afrp-bench --sim-table@ does that for 1, 10, 100 and 1000 robots;
+-- * @afrp-bench --balls N STEPS@ runs N balls in a crowd ('ballCrowd')
+--   for that many steps and prints the speed relative to real time;
 -- * @afrp-bench --render FRAMES@ renders that many 600x600 PPM frames of
 --   the 10-robot world and prints the frames per second;
 -- * @afrp-bench --pairs R@ times every network and its baseline R times,
@@ -58,6 +60,7 @@ main = do
     ["--sim", n, steps] -> simReport (read n) (read steps)
     ["--sim-table"] -> mapM_ (\(n, steps) -> simReport n (steps * 5)) simSizes
     ["--render", frames] -> renderReport (read frames)
+    ["--balls", n, steps] -> ballReport (read n) (read steps)
     ["--pairs", r] -> mapM_ (pairsReport (read r)) networks
     _ -> withArgs args (defaultMainWith config
       ([ bgroup (nwName nw)
@@ -69,6 +72,8 @@ main = do
        [ bgroup "simulator"
            [ bench (show n ++ " robots x " ++ show steps ++ " steps") (whnf (runBench n) steps)
            | (n, steps) <- simSizes ]
+       , bgroup "balls"
+           [ bench "1000 balls in a crowd x 50 steps" (whnf (runBallBench 1000) 50) ]
        , bgroup "render"
            [ env (evaluate (prepareFrames 10)) $ \_ ->
                bench "10 robots, 600x600 PPM x 10 frames" (whnf renderFrames 10) ]
@@ -97,6 +102,17 @@ simReport n steps = do
       simT = fromIntegral steps * simDtBench
   printf "%5d robots x %6d steps: %10.0f robot-steps/s, %8.1fx real time (CPU %.3f s, wall %.3f s, checksum %.6g)\n"
     n steps (fromIntegral (n * steps) / cpu) (simT / cpu) cpu wall s
+
+-- | Time @n@ balls of 'ballCrowd' for @steps@ steps.
+ballReport :: Int -> Int -> IO ()
+ballReport n steps = do
+  c0 <- getCPUTime
+  s  <- evaluate (runBallBench n steps)
+  c1 <- getCPUTime
+  let cpu  = fromIntegral (c1 - c0) / 1e12 :: Double
+      simT = fromIntegral steps * simDtBench
+  printf "%5d balls x %6d steps: %8.1fx real time (CPU %.3f s, checksum %.6g)\n"
+    n steps (simT / cpu) cpu s
 
 -- | Alternate timings of a network and its baseline.
 pairsReport :: Int -> Network -> IO ()

@@ -15,6 +15,8 @@ module SimBench
   , sharedWorld
   , worldChecksum
   , simDtBench
+  , ballCrowd
+  , runBallBench
   ) where
 
 import           Data.List     (foldl', sortOn)
@@ -130,3 +132,22 @@ sharedWorlds = [ (k, benchWorld k) | k <- [1, 10, 100, 1000] ]
 -- | A number that depends on every object of 'sharedWorld' (to build it).
 worldChecksum :: Int -> Double
 worldChecksum n = foldl' (\acc o -> let Point2 x y = otPos o in acc + x + y) 0 (sharedWorld n)
+
+-- | @n@ balls (at most 1024) packed 0.28 m apart on a square lattice over
+-- the notes' 10 m world, so that every ball overlaps its neighbours (the
+-- balls are 0.3 m across) and the first steps are a crowd of ball-ball
+-- contacts; one SimbotA in a corner, driving through them.
+ballCrowd :: Int -> WorldTemplate
+ballCrowd n = OTSimbotA 1 (Point2 (-4.7) (-4.7)) 0.3 : take (min 1024 n) balls
+  where
+    balls = [ OTBall (Point2 (-4.34 + 0.28 * fromIntegral i) (-4.34 + 0.28 * fromIntegral j))
+            | i <- [0 .. 31 :: Int], j <- [0 .. 31 :: Int] ]
+
+-- | Run 'ballCrowd' for @steps@ steps and return a checksum of every
+-- ball's position at every step.
+runBallBench :: Int -> Int -> Double
+runBallBench n steps =
+  foldl' (\acc ws -> foldl' (\a (Point2 x y) -> a + x + y) acc (wsBalls ws)) 0
+         (take steps (simulate simDtBench (ballCrowd n) drive drive))
+  where
+    drive _ = constant (mrFinalize (ddVelTR 1 0.2))

@@ -50,6 +50,7 @@ import           AFRP                    (DTime)
 import           AFRP.Geometry
 import           AFrob.Dimensions
 import           AFrobRobotSim.Arena
+import           AFrobRobotSim.FlatArray (newDblArr, readD, writeD)
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex
@@ -180,11 +181,18 @@ better h1@(Hit s1 k1 _ _) h2@(Hit s2 k2 _ _)
 -- pair by pair in the order (0, 1), (0, 2), ..., (1, 2), ...: for each
 -- ball, the next ball after the last one it met that overlaps it where
 -- both now are. Candidates come from a grid of the balls' centres before
--- this, widened by the furthest any ball has been moved since.
+-- this, widened by the furthest any one ball has been pushed since (the
+-- sum of its pushes bounds how far it is from where it was indexed).
+-- Widening by the sum of all pushes instead, as this once did, grew the
+-- query to the whole world in a crowd of balls: all pairs again.
 resolvePairs :: Arena -> [Ball] -> [Ball]
 resolvePairs arena bs0 = runST $ do
   arr <- newSTArray (0, n - 1) (Ball origin zeroVector)
   mapM_ (\(k, b) -> unsafeWriteSTArray arr k b) (zip [0 ..] bs0)
+  -- how far each ball has been pushed in all (an upper bound of its
+  -- distance from where it was indexed), and the largest of these
+  pushed <- newDblArr (max 1 n)
+  mapM_ (\k -> writeD pushed k 0) [0 .. n - 1]
   drift <- newSTRef 0
   let forBall !i
         | i >= n = pure ()
@@ -214,7 +222,12 @@ resolvePairs arena bs0 = runST $ do
                   !bj' = Ball (bPos bj .-^ half) vj
               unsafeWriteSTArray arr i bi'
               unsafeWriteSTArray arr next bj'
-              writeSTRef drift (d0 + norm half)
+              let step = norm half
+              pi' <- readD pushed i
+              pj' <- readD pushed next
+              writeD pushed i (pi' + step)
+              writeD pushed next (pj' + step)
+              writeSTRef drift (max d0 (max (pi' + step) (pj' + step)))
           pairs i next
   forBall 0
   mapM (unsafeReadSTArray arr) [0 .. n - 1]

@@ -141,6 +141,7 @@ import           Control.Exception (IOException, try)
 import           Data.Bits         ((.&.), (.|.), shiftL)
 import qualified Data.ByteString   as B
 import qualified Data.ByteString.Unsafe as BU
+import           Data.List         (intercalate)
 import           Data.Char         (chr, isDigit, isPrint, isSpace, showLitChar, toLower)
 import qualified Data.Map.Strict   as M
 import           Data.Word         (Word8)
@@ -251,7 +252,7 @@ readWorldBytes file bytes = case utf8Error bytes of
                     | (i, msg) <- worldProblems notesBounds labelled ]
       in case capProblems located of
            [] -> Right (map snd numbered)
-           ps -> Left (unlines ps)
+           ps -> Left (intercalate "\n" ps)
 
 -- | Read, parse and check a world file ('readWorldBytes'). A file that cannot be
 -- read (missing, no permission, a directory, ...) gives 'Left' with the

@@ -4,6 +4,8 @@
 -- original code, kept here as the specification).
 module AFrobRobotSim.BallsSpec (spec) where
 
+import           Control.Exception     (evaluate)
+import           System.Timeout        (timeout)
 import           Test.Hspec
 import           Test.QuickCheck
 
@@ -14,6 +16,7 @@ import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldGen
+import           SimBench              (runBallBench)
 import           TestUtil              (shouldApprox)
 
 ------------------------------------------------------------------------------
@@ -126,6 +129,15 @@ spec = do
           x1 - x0 >= 2 * ballRadius `shouldBe` True
         bs -> expectationFailure ("two balls in, " ++ show (length bs) ++ " out")
 
+    it "resolves a dense crowd of balls exactly as testing every pair does, step after step" $
+      withMaxSuccess 20 $ forAll (chooseInt (60, 150)) $ \n -> forAll (vectorOf n (genBall 1.2)) $ \bs ->
+        let arena = arenaFor (World notesBounds [])
+            steps f = take 4 (iterate (f 0.01 arena []) bs)
+        in steps stepBalls === steps refStepBalls
+    it "simulates 1000 balls in a crowd faster than real time" $ do
+      -- 0.5 s of simulated time; it takes about 0.05 s
+      r <- timeout 500000 (evaluate (runBallBench 1000 50))
+      r `shouldSatisfy` maybe False (not . isNaN)
     it "moves the balls exactly as testing every box, robot and pair of balls does" $
       property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
         forAll (genRobots (halfSide w)) $ \rs -> forAll (genBalls (halfSide w)) $ \bs ->

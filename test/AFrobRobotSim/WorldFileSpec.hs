@@ -7,7 +7,7 @@ import           Control.Exception      (evaluate)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Char8  as BC
 import           Data.Char              (isDigit)
-import           Data.List              (isInfixOf, isPrefixOf, tails)
+import           Data.List              (intercalate, isInfixOf, isPrefixOf, tails)
 import           System.Timeout         (timeout)
 import           System.Directory       (getTemporaryDirectory, removeFile)
 import           System.FilePath        ((</>))
@@ -215,12 +215,12 @@ spec = do
       parseB (BC.pack "block at 1e309 0") `shouldSatisfy` either ("h.world:1:10: " `isPrefixOf`) (const False)
     it "rejects objects overlapping at time 0, naming both and their lines" $ do
       parseB (BC.pack "# arena\nblock at 0 0\n\nsimbotA 1 at 0.1 0 heading 90 deg\n")
-        `shouldBe` Left "h.world:4: SimbotA 1 at (0.1, 0.0) (line 4) overlaps block at (0.0, 0.0) (line 2)\n"
+        `shouldBe` Left "h.world:4: SimbotA 1 at (0.1, 0.0) (line 4) overlaps block at (0.0, 0.0) (line 2)"
       parseB (BC.pack "ball at 1 1\nwall v at 1.1 1\n")
-        `shouldBe` Left "h.world:2: vertical wall at (1.1, 1.0) (line 2) overlaps ball at (1.0, 1.0) (line 1)\n"
+        `shouldBe` Left "h.world:2: vertical wall at (1.1, 1.0) (line 2) overlaps ball at (1.0, 1.0) (line 1)"
     it "reports objects outside the world and duplicate ids with their lines" $
       parseB (BC.pack "simbotA 1 at 0 0\nball at 4.9 0\nsimbotA 1 at 2 2\n")
-        `shouldBe` Left (unlines
+        `shouldBe` Left (intercalate "\n"
           [ "h.world:2: ball at (4.9, 0.0) (line 2): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"
           , "h.world:3: SimbotA 1 at (2.0, 2.0) (line 3) has the same id as SimbotA 1 at (0.0, 0.0) (line 1)" ])
     it "gives 300 overlapping robots a short message, with a count of the rest" $ do
