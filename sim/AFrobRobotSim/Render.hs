@@ -41,16 +41,25 @@
 -- ball           disc 0.3 m across, 1-pixel rim at 60 px\/m    (255, 140, 0)    #ff8c00
 --                                                             rim (170, 90, 0) #aa5a00
 -- range ray      line from the robot's edge to its reading    (0, 170, 60)     #00aa3c
---                (styleRays only)
--- robot body     disc 0.5 m across                            SimbotA (30, 90, 220)  #1e5adc
---                                                             SimbotB (215, 40, 40)  #d72828
---                                                             other   (140, 60, 170) #8c3caa
+--                (styleRays only), ending in a dot of         dot: the robot's colour
+--                scale \/ 30 pixels radius (at least 2)
+-- robot body     disc 0.5 m across                            the robot's colour: the first
+--                                                             of a type SimbotA (30, 90, 220)
+--                                                             #1e5adc, SimbotB (215, 40, 40)
+--                                                             #d72828, other (140, 60, 170)
+--                                                             #8c3caa; the next five of a
+--                                                             type in other shades of its
+--                                                             family ('robotColour')
 -- robot rim      scale \/ 30 pixels wide (2 px at 60 px\/m)     body colour at half brightness
 -- stuck robot    rim twice as wide, body at 60 % brightness   rim (0, 0, 0)    #000000
 -- heading mark   wedge from 0.3 of the radius to the edge,    (255, 255, 255)  #ffffff
 --                pointing along the heading
 -- robot id       3x5 pixel digits, magnified round(scale\/30)  (20, 20, 20)     #141414
 --                times, just above and right of the body
+--                (left of it, below it near the world's
+--                edge; always inside the world)
+-- time           simulated seconds, two decimals, digits as   (20, 20, 20)     #141414
+--                the ids, in the world's top-left corner      on (255, 255, 255)
 -- @
 --
 -- The SVG picture uses the same shapes and colours, and adds each robot's
@@ -90,8 +99,12 @@ module AFrobRobotSim.Render
   , headingColour
   , labelColour
   , typeColour
+  , robotColour
+  , typeRanks
   , bodyColour
   , outlineColour
+  , robotBodyColour
+  , robotOutlineColour
   , trailColour
   ) where
 

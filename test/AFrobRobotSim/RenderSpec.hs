@@ -63,7 +63,7 @@ spec = do
       BC.unpack (B.take (length header) img) `shouldBe` header
       B.length img `shouldBe` length header + 3 * 620 * 620
     it "draws the floor inside the world and the boundary in the margin" $ do
-      ppmPixel img frameMargin frameMargin `shouldBe` Just backgroundColour
+      ppmPixel img frameMargin (619 - frameMargin) `shouldBe` Just backgroundColour
       ppmPixel img (619 - frameMargin) (619 - frameMargin) `shouldBe` Just backgroundColour
       ppmPixel img 0 0 `shouldBe` Just boundaryColour
       ppmPixel img 619 619 `shouldBe` Just boundaryColour
@@ -72,9 +72,11 @@ spec = do
       at (Point2 (-3) 2.5) `shouldBe` Just (typeColour "SimbotB")
       typeColour "SimbotA" `shouldNotBe` typeColour "SimbotB"
     it "draws a stuck robot darker, with a black rim" $ do
-      at (Point2 (-1) (-1)) `shouldBe` Just (bodyColour "SimbotA" True)
+      -- the second SimbotA of the list
+      at (Point2 (-1) (-1)) `shouldBe` Just (robotBodyColour "SimbotA" 1 True)
+      robotBodyColour "SimbotA" 1 True `shouldNotBe` robotColour "SimbotA" 1
       bodyColour "SimbotA" True `shouldNotBe` typeColour "SimbotA"
-      at (Point2 (-1) (-1.24)) `shouldBe` Just (outlineColour "SimbotA" True)
+      at (Point2 (-1) (-1.24)) `shouldBe` Just (robotOutlineColour "SimbotA" 1 True)
     it "draws walls, blocks and balls in their colours at their centres" $ do
       at (Point2 2 1) `shouldBe` Just wallColour
       at (Point2 (-2) (-3)) `shouldBe` Just wallColour
@@ -109,6 +111,44 @@ spec = do
       pixelAtWorld style (scene world1) f1 p0 `shouldBe` Just backgroundColour
       pixelAtWorld style (scene world1) f0 p1 `shouldBe` Just backgroundColour
       pixelAtWorld style (scene world1) f1 p1 `shouldBe` Just (typeColour "SimbotA")
+    it "tells robots of one type apart: six shades per type, each robot in its own" $ do
+      let shadesOf t = map (robotColour t) [0 .. 5]
+          distinct xs = and [ a /= b | (i, a) <- zip [0 :: Int ..] xs, (j, b) <- zip [0 ..] xs, i < j ]
+      distinct (shadesOf "SimbotA" ++ shadesOf "SimbotB") `shouldBe` True
+      typeRanks (wsRobots ws) `shouldBe` [0, 0, 1]
+      let many = snapshot [ robotAt "SimbotB" i (Point2 (fromIntegral i - 3.5) 0) 0 False | i <- [1 .. 6] ] []
+          imgM = renderPPM style sc [] many
+      [ pixelAtWorld style sc imgM (Point2 (fromIntegral i - 3.5) 0.1) | i <- [1 .. 6 :: Int] ]
+        `shouldBe` map Just (shadesOf "SimbotB")
+    it "writes every id whole and inside the world, also at the world's edges" $ do
+      let labelPixels p = length (filter (== Just labelColour)
+                            (pixelsIn (renderPPM style (scene []) [] (snapshot [robotAt "SimbotA" 12345 p 0 False] []))
+                                      (0, 0) (619, 619)))
+          inMargin p = let f = renderPPM style (scene []) [] (snapshot [robotAt "SimbotA" 12345 p 0 False] [])
+                       in filter (== Just labelColour)
+                            [ ppmPixel f i j | j <- [0 .. 619], i <- [0 .. 619]
+                            , i < frameMargin || j < frameMargin || i >= 620 - frameMargin || j >= 620 - frameMargin ]
+          corners = [Point2 4.74 4.74, Point2 (-4.74) 4.74, Point2 4.74 (-4.74), Point2 (-4.74) (-4.74), Point2 4.74 0]
+      map labelPixels corners `shouldBe` replicate 5 (labelPixels (Point2 0 0))
+      map inMargin corners `shouldBe` replicate 5 []
+    it "carries the simulated time, in the world's top-left corner" $ do
+      let frameAt t = renderPPM style sc [] ws { wsTime = t }
+          corner f = pixelsIn f (frameMargin, frameMargin) (frameMargin + 60, frameMargin + 14)
+      corner (frameAt 0) `shouldNotBe` corner (frameAt 12.34)
+      corner (frameAt 12.34) `shouldBe` corner (frameAt 12.34)
+      Just labelColour `elem` corner (frameAt 12.34) `shouldBe` True
+      Just headingColour `elem` corner (frameAt 12.34) `shouldBe` True
+      -- the rest of the frame is the same
+      B.drop (3 * 620 * 40) (frameAt 0) `shouldBe` B.drop (3 * 620 * 40) (frameAt 12.34)
+    it "ends each ray in a dot of its robot's colour" $ do
+      let world2 = [OTVWall (Point2 2 0)]
+          sc2    = scene world2
+          two    = snapshot [ robotAt "SimbotB" 1 (Point2 (-3) (-3)) 0 False
+                            , robotAt "SimbotB" 2 (Point2 0 0) 0 False ] []
+          rays   = renderPPM style { styleRays = True } sc2 [] two
+      -- the second SimbotB's front ray ends at the wall, x = 1.95
+      pixelAtWorld style sc2 rays (Point2 1.94 0) `shouldBe` Just (robotColour "SimbotB" 1)
+      pixelAtWorld style sc2 rays (Point2 1 0) `shouldBe` Just rayColour
     it "is deterministic: the same inputs give the same bytes" $ do
       let st     = RenderStyle 60 True True
           trails = [[Point2 0 0, Point2 1 1], [Point2 (-3) 2, Point2 (-3) 2.5]]
@@ -153,9 +193,14 @@ spec = do
       svg `shouldSatisfy` ("<svg" `isPrefixOf`)
       svg `shouldSatisfy` ("</svg>\n" `isSuffixOf`)
       occurrences "<svg" svg `shouldBe` 1
-    it "has one polyline per robot, in its type's colour" $ do
+    it "has one polyline per robot, in the robot's own colour" $ do
       occurrences "<polyline" svg `shouldBe` 3
-      occurrences ("<polyline fill=\"none\" stroke=\"" ++ hexOf (typeColour "SimbotB")) svg `shouldBe` 2
+      occurrences ("<polyline fill=\"none\" stroke=\"" ++ hexOf (typeColour "SimbotB")) svg `shouldBe` 1
+      occurrences ("<polyline fill=\"none\" stroke=\"" ++ hexOf (robotColour "SimbotB" 1)) svg `shouldBe` 1
+    it "shows each robot's colour in the legend, and the time of the last snapshot" $ do
+      occurrences ("<circle cx=\"" ++ show (620 + 12 + 12 :: Int)) svg `shouldBe` 4
+      occurrences ("r=\"6\" fill=\"" ++ hexOf (robotColour "SimbotB" 1)) svg `shouldBe` 1
+      svg `shouldSatisfy` (">30.00</text>" `isInfixOf`)
     it "keeps each trajectory to at most 2000 points" $ do
       let polylines = filter ("<polyline" `isPrefixOf`) (lines svg)
           points l  = length (words (takeWhile (/= '"') (drop 1 (dropWhile (/= '"')

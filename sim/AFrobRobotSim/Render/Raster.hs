@@ -290,10 +290,11 @@ glyph ch = case ch of
   '8' -> ["###", "#.#", "###", "#.#", "###"]
   '9' -> ["###", "#.#", "###", "..#", "###"]
   '-' -> ["...", "...", "###", "...", "..."]
+  '.' -> ["...", "...", "...", "...", ".#."]
   _   -> replicate 5 "..."
 
 -- | @drawText c col k (i, j) s@ draws @s@ in the built-in 3 by 5 font
--- (digits and @\'-\'@ only) magnified @k@ times, its top-left corner at
+-- (digits, @\'-\'@ and @\'.\'@ only) magnified @k@ times, its top-left corner at
 -- pixel @(i, j)@, one glyph pixel between characters.
 drawText :: Canvas -> Colour -> Int -> (Int, Int) -> String -> IO ()
 drawText c col k0 (i0, j0) s =

@@ -40,12 +40,12 @@ renderSVG style scene states = concat $
       totalW totalH totalW totalH
   , printf "<rect x=\"0\" y=\"0\" width=\"%d\" height=\"%d\" fill=\"%s\"/>\n" totalW totalH (hex backgroundColour) ]
   ++ map (svgShape v) (floorShapes v ++ staticShapes v)
-  ++ [ svgShape v (SPolyline (typeColour (robotType r)) 2 (thin track))
-     | ok, (r, track) <- zip robots0 tracks ]
+  ++ [ svgShape v (SPolyline col 2 (thin track))
+     | ok, (col, track) <- zip colours0 tracks ]
   ++ [ svgShape v sh
-     | ok, (r, p : _) <- zip robots0 tracks
+     | ok, (col, p : _) <- zip colours0 tracks
      , let (x, y) = toImg v p
-     , sh <- [SDisc (typeColour (robotType r)) x y 5, SDisc headingColour x y 3] ]
+     , sh <- [SDisc col x y 5, SDisc headingColour x y 3] ]
   ++ map (svgShape v) (maybe [] (snapshotShapes v) final)
   ++ legend
   ++ ["</svg>\n"]
@@ -58,6 +58,7 @@ renderSVG style scene states = concat $
       s0 : _ -> wsRobots s0
       []     -> []
     tracks   = transpose (map (map robotPos . wsRobots) states)
+    colours0 = [ robotColour (robotType r) k | (r, k) <- zip robots0 (typeRanks robots0) ]
     legendW  = 170 :: Int
     rowH     = 18 :: Int
     totalW   = w + legendW
@@ -68,12 +69,12 @@ renderSVG style scene states = concat $
         lx (24 :: Int) (hex labelColour)
       : concat
         [ [ printf "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" stroke-width=\"2\"/>\n"
-              lx y (lx + 24) y (hex (typeColour (robotType r)))
+              lx y (lx + 24) y (hex col)
           , printf "<circle cx=\"%d\" cy=\"%d\" r=\"6\" fill=\"%s\" stroke=\"%s\" stroke-width=\"1\"/>\n"
-              (lx + 12) y (hex (typeColour (robotType r))) (hex (outlineColour (robotType r) False))
+              (lx + 12) y (hex col) (hex (darken 0.5 col))
           , printf "<text x=\"%d\" y=\"%d\" font-family=\"sans-serif\" font-size=\"12\" fill=\"%s\">%s %d</text>\n"
               (lx + 32) (y + 4) (hex labelColour) (escape (robotType r)) (robotId r) ]
-        | (n, r) <- zip [1 ..] robots0, let y = 24 + rowH * n ]
+        | (n, r, col) <- zip3 [1 ..] robots0 colours0, let y = 24 + rowH * n ]
       ++ (let y = 24 + rowH * (length robots0 + 1) in
           [ printf "<circle cx=\"%d\" cy=\"%d\" r=\"4\" fill=\"%s\" stroke=\"%s\" stroke-width=\"2\"/>\n"
               (lx + 12) y (hex headingColour) (hex labelColour)

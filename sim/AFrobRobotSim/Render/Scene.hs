@@ -27,8 +27,12 @@ module AFrobRobotSim.Render.Scene
   , headingColour
   , labelColour
   , typeColour
+  , robotColour
+  , typeRanks
   , bodyColour
   , outlineColour
+  , robotBodyColour
+  , robotOutlineColour
   , trailColour
     -- * Shapes, for the back ends
   , Shape (..)
@@ -42,6 +46,9 @@ module AFrobRobotSim.Render.Scene
   , trailShapes
   , snapshotShapes
   ) where
+
+import qualified Data.Map.Strict            as M
+import           Numeric                    (showFFloat)
 
 import           AFRP.Geometry
 import           AFrob.Dimensions
@@ -154,19 +161,56 @@ typeColour t
   | t == kindType SimbotB = Colour 215 40 40
   | otherwise             = Colour 140 60 170
 
--- | The body colour of a robot of a type, stuck or not: the 'typeColour',
--- at 60 % brightness when stuck.
-bodyColour :: RobotType -> Bool -> Colour
-bodyColour t stuck
-  | stuck     = darken 0.6 (typeColour t)
-  | otherwise = typeColour t
+-- | The colour of a robot that is the @k@-th of its type (from 0, in the
+-- order of the robots): its 'typeColour' for the first, then five other
+-- shades of the same family (blues for SimbotA, reds for SimbotB, purples
+-- for other types), over again from the seventh. Robots of one type are
+-- told apart by it, and by the id written next to each.
+robotColour :: RobotType -> Int -> Colour
+robotColour t k
+  | k <= 0    = typeColour t
+  | otherwise = shades !! ((k - 1) `mod` length shades)
+  where
+    shades
+      | t == kindType SimbotA = [ Colour 0 150 200, Colour 90 50 200, Colour 20 50 130
+                                , Colour 110 170 255, Colour 0 110 140 ]
+      | t == kindType SimbotB = [ Colour 210 110 0, Colour 180 20 110, Colour 130 20 20
+                                , Colour 245 120 120, Colour 150 70 30 ]
+      | otherwise             = [ Colour 190 90 210, Colour 100 30 130, Colour 210 140 230
+                                , Colour 120 60 100, Colour 160 40 120 ]
 
--- | The rim colour of a robot of a type, stuck or not: the 'typeColour' at
--- half brightness, or black when stuck.
+-- | For each robot of a list, how many robots of its type come before it:
+-- the @k@ of its 'robotColour'.
+typeRanks :: [RobotState] -> [Int]
+typeRanks = go M.empty
+  where
+    go _ [] = []
+    go seen (r : rs) = let k = M.findWithDefault 0 (robotType r) seen
+                       in k : go (M.insert (robotType r) (k + 1) seen) rs
+
+-- | The body colour of the first robot of a type, stuck or not:
+-- @'robotBodyColour' t 0@.
+bodyColour :: RobotType -> Bool -> Colour
+bodyColour t = robotBodyColour t 0
+
+-- | The rim colour of the first robot of a type, stuck or not:
+-- @'robotOutlineColour' t 0@.
 outlineColour :: RobotType -> Bool -> Colour
-outlineColour t stuck
+outlineColour t = robotOutlineColour t 0
+
+-- | The body colour of the @k@-th robot of a type ('robotColour'), at 60 %
+-- brightness when stuck.
+robotBodyColour :: RobotType -> Int -> Bool -> Colour
+robotBodyColour t k stuck
+  | stuck     = darken 0.6 (robotColour t k)
+  | otherwise = robotColour t k
+
+-- | The rim colour of the @k@-th robot of a type: its 'robotColour' at
+-- half brightness, or black when stuck.
+robotOutlineColour :: RobotType -> Int -> Bool -> Colour
+robotOutlineColour t k stuck
   | stuck     = Colour 0 0 0
-  | otherwise = darken 0.5 (typeColour t)
+  | otherwise = darken 0.5 (robotColour t k)
 
 -- | The colour of a robot type's trail: its 'typeColour' mixed half and half
 -- with the 'backgroundColour'.
@@ -254,22 +298,32 @@ staticShapes v = [ SRect col x0 y0 x1 y1 | validScale v, o <- sceneWorld (vScene
       OTHWall {} -> Just wallColour
       _          -> Nothing
 
--- | Each robot's path so far as a 1-pixel polyline in its 'trailColour',
--- one list of world points per robot, in the robots' order.
+-- | Each robot's path so far as a 1-pixel polyline in its 'robotColour'
+-- mixed half and half with the floor (the 'trailColour' for the first of a
+-- type), one list of world points per robot, in the robots' order.
 trailShapes :: View -> [RobotState] -> [[Position2]] -> [Shape]
 trailShapes v robots trails =
   [ SPolyline col 1 ps | validScale v, (col, ps) <- zip cols trails ]
-  where cols = map (trailColour . robotType) robots ++ repeat (trailColour "")
+  where cols = [ blend 0.5 (robotColour (robotType r) k) backgroundColour
+               | (r, k) <- zip robots (typeRanks robots) ] ++ repeat (trailColour "")
 
--- | The balls, range-finder rays (with 'styleRays'), robots and ids of a
--- snapshot, bottom to top.
+-- | The balls, range-finder rays (with 'styleRays'), robots, ids and the
+-- simulated time of a snapshot, bottom to top. Each robot is drawn in its
+-- 'robotColour'; each ray ends in a dot of its robot's colour, so that
+-- with many robots one sees whose reading is where. An id is written
+-- above and right of its robot, or left of it or below it where that
+-- would leave the world, and never outside the world's rectangle. The
+-- time (seconds, two decimals) is in the world's top-left corner on a
+-- white ground.
 snapshotShapes :: View -> WorldState -> [Shape]
 snapshotShapes v ws
   | not (validScale v) = []
-  | otherwise = concatMap ball (wsBalls ws) ++ rays ++ concatMap robot robots ++ map label robots
+  | otherwise = concatMap ball (wsBalls ws) ++ rays ++ concatMap robot ranked ++ map label robots
+                ++ clock
   where
     s      = vScale v
     robots = wsRobots ws
+    ranked = zip robots (typeRanks robots)
     ballR  = ballRadius * s
     ball p = let (cx, cy) = toImg v p
              in [SDisc ballRimColour cx cy ballR, SDisc ballColour cx cy (ballR - max 1 (s / 60))]
@@ -277,17 +331,19 @@ snapshotShapes v ws
     rayW   = max 1 (round (s / 60))
     rays
       | styleRays (vStyle v) =
-          [ SLine rayColour rayW (toImg v (p .+^ vector2Polar robotRadius dir))
-                                 (toImg v (p .+^ vector2Polar (robotRadius + d) dir))
-          | (i, r) <- zip [0 :: Int ..] robots
+          concat
+          [ [ SLine rayColour rayW (toImg v (p .+^ vector2Polar robotRadius dir)) (ex, ey)
+            , SDisc (robotColour (robotType r) rank) ex ey (max 2 (s / 30)) ]
+          | (i, (r, rank)) <- zip [0 :: Int ..] ranked
           , let p = robotPos r
                 others = [ robotPos o | (j, o) <- zip [0 ..] robots, j /= i ]
           , a <- [0, pi / 2, pi, -pi / 2]
           , let d   = rangeReading arena others p (robotHeading r) a
-                dir = robotHeading r + a ]
+                dir = robotHeading r + a
+                (ex, ey) = toImg v (p .+^ vector2Polar (robotRadius + d) dir) ]
       | otherwise = []
     rPx = robotRadius * s
-    robot r =
+    robot (r, rank) =
       let (cx, cy) = toImg v (robotPos r)
           stuck    = robotStuck r
           rim      = max 1 (s / 30) * (if stuck then 2 else 1)
@@ -296,15 +352,32 @@ snapshotShapes v ws
           (nx, ny) = (negate uy, ux)
           (bx, by) = (cx + 0.3 * rPx * ux, cy + 0.3 * rPx * uy)
           half     = 0.3 * rPx
-      in [ SDisc (outlineColour (robotType r) stuck) cx cy rPx
-         , SDisc (bodyColour (robotType r) stuck) cx cy (rPx - rim)
+      in [ SDisc (robotOutlineColour (robotType r) rank stuck) cx cy rPx
+         , SDisc (robotBodyColour (robotType r) rank stuck) cx cy (rPx - rim)
          , STri headingColour (cx + rPx * ux, cy + rPx * uy)
                 (bx + half * nx, by + half * ny) (bx - half * nx, by - half * ny) ]
     k = max 1 (round (s / 30))
+    (fw, fh) = vSize v
+    m = frameMargin
     label r =
       let (cx, cy) = toImg v (robotPos r)
-      in SText labelColour k (floorInt (cx + 0.72 * rPx) + 1, floorInt (cy - 0.72 * rPx) - 5 * k)
-               (show (robotId r))
+          str = show (robotId r)
+          tw  = textWidth k str
+          th  = 5 * k
+          right = floorInt (cx + 0.72 * rPx) + 1
+          left  = floorInt (cx - 0.72 * rPx) - 1 - tw
+          above = floorInt (cy - 0.72 * rPx) - th
+          below = floorInt (cy + 0.72 * rPx) + 1
+          x0 = if right + tw > fw - m then left else right
+          y0 = if above < m then below else above
+      in SText labelColour k (clampTo m (fw - m - tw) x0, clampTo m (fh - m - th) y0) str
+    clampTo lo hi x = max lo (min (max lo hi) x)
+    clock =
+      let str = showFFloat (Just 2) (max 0 (wsTime ws)) ""
+          tw  = textWidth k str
+      in [ SRect headingColour (fromIntegral m) (fromIntegral m)
+                 (fromIntegral (m + tw + 2 * k)) (fromIntegral (m + 7 * k))
+         , SText labelColour k (m + k, m + k) str ]
 
 -- | A pixel coordinate rounded down, NaN as 0 and anything else clamped
 -- to 10^7 either way.
