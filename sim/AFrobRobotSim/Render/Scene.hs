@@ -174,8 +174,9 @@ robotColour t k
     shades
       | t == kindType SimbotA = [ Colour 0 150 200, Colour 90 50 200, Colour 20 50 130
                                 , Colour 110 170 255, Colour 0 110 140 ]
-      | t == kindType SimbotB = [ Colour 210 110 0, Colour 180 20 110, Colour 130 20 20
-                                , Colour 245 120 120, Colour 150 70 30 ]
+      -- no orange: that is the balls' colour
+      | t == kindType SimbotB = [ Colour 230 90 170, Colour 150 20 90, Colour 120 20 20
+                                , Colour 245 130 110, Colour 170 90 60 ]
       | otherwise             = [ Colour 190 90 210, Colour 100 30 130, Colour 210 140 230
                                 , Colour 120 60 100, Colour 160 40 120 ]
 
