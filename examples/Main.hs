@@ -10,10 +10,9 @@ import           Data.List          (isPrefixOf, sortOn)
 import           System.Environment (getArgs, getProgName)
 import           System.Exit        (ExitCode (..), exitWith)
 import           System.IO          (hPutStrLn, stderr)
-import           Text.Printf        (printf)
 
 import           AFrobRobotSim
-import           Examples.Registry  (allExamples)
+import           Examples.Registry  (allExamples, exampleListing)
 import           Examples.Types
 
 main :: IO ()
@@ -22,7 +21,7 @@ main = do
   prog <- getProgName
   case args of
     []             -> usageError prog "give an example name, or --list"
-    ["--list"]     -> mapM_ (\e -> printf "%-18s %s\n" (exName e) (exDescription e)) allExamples
+    ["--list"]     -> putStr (exampleListing allExamples)
     ["--help"]     -> putStrLn (helpText prog)
     name : flags   -> case [ e | e <- allExamples, exName e == name ] of
       e : _ -> runExample prog e flags
@@ -34,10 +33,12 @@ runExample prog e flags = case e of
     [] -> putStr (exReport e)
     _  -> usageError prog (exName e ++ " is a signal-function example; it takes no flags")
   RobotExample {} ->
-    case parseSimArgs defaultSimOptions { optSeconds = exSeconds e } flags of
+    case parseSimArgs defaults flags of
       Left err            -> usageError prog err
       Right ShowHelp      -> putStrLn (usage (prog ++ " " ++ exName e))
       Right (RunWith opt) -> runSimWith opt (Just (exWorld e)) (exControllerA e) (exControllerB e)
+  where
+    defaults = defaultSimOptions { optSeconds = exSeconds e, optKeys = exKeys e }
 
 suggestion :: String -> String
 suggestion name = case sortOn length [ exName e | e <- allExamples, lower name `isPrefixOf` lower (exName e) ] of
@@ -51,8 +52,10 @@ helpText prog = unlines
   , "       " ++ prog ++ " NAME [simulator flags]"
   , ""
   , "Runs one example of the notes headless. Robot examples take every flag of"
-  , "the simulator (" ++ prog ++ " NAME --help lists them); signal-function"
-  , "examples print a short report."
+  , "the simulator (" ++ prog ++ " NAME --help lists them); those that read the"
+  , "keyboard take scripted key presses with --keys \"1.5:+,3:+\" (--list shows"
+  , "which, with their default script). Signal-function examples print a short"
+  , "report."
   ]
 
 usageError :: String -> String -> IO a

@@ -1,7 +1,11 @@
 -- | Every example, in the order of the notes.
 module Examples.Registry
   ( allExamples
+  , exampleListing
   ) where
+
+import           Data.List      (intercalate)
+import           Text.Printf    (printf)
 
 import           Examples.Types
 import qualified Exercises.Ex01 as Ex01
@@ -30,3 +34,25 @@ allExamples = concat
   , Ex06.examples, Ex07.examples, Ex08.examples, Ex09.examples, Ex10.examples
   , Ex11.examples, Ex12.examples, Ex13.examples, Ex14.examples, Ex15.examples
   ]
+
+-- | @--list@: every example, one per line, with what it takes: nothing
+-- (a signal-function example, which prints a report), the simulator's
+-- flags, or the flags and scripted keys (its default @--keys@ shown).
+exampleListing :: [Example] -> String
+exampleListing es = unlines $
+  [ "NAME               TAKES                     WHAT"
+  ] ++
+  [ printf "%-18s %-25s %s" (exName e) (takes e) (exDescription e) | e <- es ] ++
+  [ ""
+  , "Robot examples take the simulator's flags (NAME --help lists them); those"
+  , "marked keys read the keyboard, scripted with --keys \"TIME:KEY,...\" (the"
+  , "default script is shown). Signal-function examples print a report."
+  ]
+  where
+    takes e = case e of
+      SignalExample {} -> "-"
+      RobotExample {}
+        | null (exKeys e) -> "flags"
+        | otherwise       -> "flags, keys " ++ intercalate "," [ showKey k | k <- exKeys e ]
+    showKey (t, c) = (if t == fromIntegral (round t :: Integer) then show (round t :: Integer) else show t)
+                     ++ [':', c]

@@ -19,6 +19,8 @@ data Example
       , exControllerA :: SimbotController  -- ^ for the SimbotA robots
       , exControllerB :: SimbotController  -- ^ for the SimbotB robots
       , exSeconds     :: Double            -- ^ how long a run shows it well (default for --seconds)
+      , exKeys        :: [(Double, Char)]  -- ^ key presses (time, key) scripted when the command
+                                           -- line gives no --keys; [] for a robot that reads no keys
       }
     -- | A signal-function example from section 2: running it prints a
     -- short report (a table of sampled outputs, a property checked, ...).

@@ -63,6 +63,7 @@ examples =
       , exControllerA = bounceController
       , exControllerB = bounceController
       , exSeconds     = 40
+      , exKeys        = []
       }
   , SignalExample "ex4-table"
       "Exercise 4: the negated and the recursive xspd 0.5 on a scripted stuck flag"

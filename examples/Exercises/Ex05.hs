@@ -91,6 +91,7 @@ examples =
       , exControllerA = stopAtAlarm
       , exControllerB = stopAtAlarm
       , exSeconds     = 15
+      , exKeys        = []
       }
   ]
 

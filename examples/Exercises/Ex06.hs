@@ -1,3 +1,4 @@
+{-# LANGUAGE Arrows #-}
 -- |
 -- Module      : Exercises.Ex06
 -- Description : Exercise 6: the notes' vel with dSwitch and without rec.
@@ -13,15 +14,22 @@
 -- 'incrVelEvs' starts afresh at the instant of the key press that caused
 -- the switch and so does not see that press again (see 'incrVelEvs'),
 -- which makes the recursion well founded and the two definitions equal.
+--
+-- @ex6-robot@ shows the exercise on a simbot: 'velDriver' drives at a
+-- quarter of @vel 0@ in m/s, so each press of @+@ (scripted with
+-- @--keys@, by default at 1, 3 and 5 s) visibly speeds it up, and prints
+-- a line.
 module Exercises.Ex06
   ( vel
+  , velDriver
   , examples
   ) where
 
 import           Data.List       (zip5)
+import           Text.Printf     (printf)
 
 import           AFrob
-import           AFrobRobotSim   (SimbotInput)
+import           AFrobRobotSim   (ObjectTemplate (..), SimbotController, SimbotInput)
 
 import           Examples.Types  (Example (..))
 import qualified Paper.Section2  as S2
@@ -34,12 +42,35 @@ import           Paper.Section2  (formatTable, incrVelEvs, runEvery, scriptedInp
 vel :: Velocity -> SF SimbotInput Velocity
 vel v0 = (constant v0 &&& incrVelEvs) `dSwitch` \() -> vel (v0 + 1)
 
--- | One report: both definitions on scripted key presses.
+-- | A simbot driving straight on at a quarter of @vel 0@ (m/s), at most
+-- its maximum wheel speed: at rest until the first @+@, then 0.25 m/s
+-- faster from the sample after each press, with a console line at each
+-- press (at its instant).
+velDriver :: SimbotController
+velDriver rps = proc sbi -> do
+  v <- vel 0      -< sbi
+  e <- incrVelEvs -< sbi
+  t <- localTime  -< ()
+  let speed = min (rpWSMax rps) (0.25 * v)
+      next  = min (rpWSMax rps) (0.25 * (v + 1))
+  returnA -< mrFinalize (ddVelDiff speed speed
+               `mrMerge` tcoPrintMessage (e `tag` printf "t = %.2f s: + pressed, speed %.2f m/s from now on" t next))
+
+-- | The report, and the exercise driving a simbot.
 examples :: [Example]
 examples =
   [ SignalExample "ex6"
       "Exercise 6: vel with dSwitch and without rec, beside the notes' vel"
       report
+  , RobotExample
+      { exName        = "ex6-robot"
+      , exDescription = "Exercise 6 on a simbot: each + key press (--keys) adds 0.25 m/s"
+      , exWorld       = [OTSimbotA 1 (Point2 (-4.5) 0) 0, OTVWall (Point2 4.6 0)]
+      , exControllerA = velDriver
+      , exControllerB = velDriver
+      , exSeconds     = 12
+      , exKeys        = [(1, '+'), (3, '+'), (5, '+')]
+      }
   ]
 
 report :: String

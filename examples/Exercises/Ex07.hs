@@ -45,5 +45,6 @@ examples =
       , exControllerA = rcBlindTurnStop 0.6
       , exControllerB = rcBlindTurnStop 1.5
       , exSeconds     = 10
+      , exKeys        = []
       }
   ]

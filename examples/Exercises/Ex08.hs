@@ -64,5 +64,6 @@ examples =
       , exControllerA = rcReverseSnap (constant 0.5)
       , exControllerB = rcReverseSnap (rampUp 0.2 1.5)
       , exSeconds     = 40
+      , exKeys        = []
       }
   ]

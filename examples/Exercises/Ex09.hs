@@ -53,5 +53,6 @@ examples =
       , exControllerA = rcMoveToStop 0.6 0.1 (Point2 (-1) 2)
       , exControllerB = rcMoveToStop 1.2 0.1 (Point2 2 1)
       , exSeconds     = 25
+      , exKeys        = []
       }
   ]

@@ -45,5 +45,6 @@ examples =
       , exControllerA = rcSine 0.4 0 1.0 8
       , exControllerB = rcSine 0.45 0 1.2 5
       , exSeconds     = 24
+      , exKeys        = []
       }
   ]

@@ -56,5 +56,6 @@ examples =
       , exControllerA = rcVisit 0.6 0.2 tourA
       , exControllerB = rcVisit 1.2 0.2 tourB
       , exSeconds     = 50
+      , exKeys        = []
       }
   ]

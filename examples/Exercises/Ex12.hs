@@ -214,5 +214,6 @@ examples =
       , exControllerA = rcMazeFollower 0.3 0.4
       , exControllerB = rcMazeFollower 0.5 0.4
       , exSeconds     = 100
+      , exKeys        = []
       }
   ]

@@ -119,5 +119,6 @@ examples =
       , exControllerA = rcRobustFollower 0.3 0.4
       , exControllerB = rcRobustFollower 0.5 0.4
       , exSeconds     = 80
+      , exKeys        = []
       }
   ]

@@ -129,6 +129,7 @@ examples =
       , exControllerA = rcBraid notesBraid
       , exControllerB = rcBraid notesBraid
       , exSeconds     = 30
+      , exKeys        = []
       } ]
 
 -- The unit vector along the braid and the one a quarter turn to its left.

@@ -88,4 +88,5 @@ examples =
       , exControllerA = teamSmart
       , exControllerB = teamNaive
       , exSeconds     = 120
+      , exKeys        = []
       } ]

@@ -325,6 +325,7 @@ examples =
       , exControllerA = xspdController
       , exControllerB = xspdController
       , exSeconds     = 12
+      , exKeys        = []
       }
   , RobotExample
       { exName        = "alarmSF-robot"
@@ -333,6 +334,7 @@ examples =
       , exControllerA = alarmController
       , exControllerB = alarmController
       , exSeconds     = 45
+      , exKeys        = []
       }
   ]
 

@@ -19,6 +19,8 @@ import qualified Exercises.Ex03   as Ex03
 import qualified Exercises.Ex04   as Ex04
 import qualified Exercises.Ex05   as Ex05
 import qualified Exercises.Ex06   as Ex06
+import           Examples.Registry (allExamples, exampleListing)
+import           Examples.Types   (Example (..))
 import qualified Paper.Section2   as S2
 import           Paper.Section2   (arcPath, scriptedInput, wheelBase)
 import           TestUtil
@@ -230,6 +232,28 @@ spec = do
         let ins     = [ (dt, scriptedInput origin 0 False k) | (dt, k) <- samples ]
             presses = map (\e -> if isEvent e then 1 else 0) (run S2.incrVelEvs ins)
         in run (Ex06.vel v0) ins `shouldAllApprox` map (v0 +) (scanl (+) 0 (init presses))
+    it "ex6-robot is driven by the keyboard: still without keys, faster after each +" $ do
+      let e = head [ x | x@RobotExample {} <- Ex06.examples ]
+          runWith ks = simulateWith defaultSimConfig { simKeys = ks } (exWorld e)
+                                    (exControllerA e) (exControllerB e)
+          xAt :: [(Double, Char)] -> Double -> Double
+          xAt ks t = let Point2 x _ = robotPos (head (wsRobots (runWith ks !! round (t / 0.01)))) in x
+          keyed = exKeys e
+      keyed `shouldBe` [(1, '+'), (3, '+'), (5, '+')]
+      xAt [] 6 `shouldBe` xAt [] 0
+      -- metres covered in each 2 s after a press grow with the presses
+      let legs = [ xAt keyed (t + 2) - xAt keyed t | t <- [1, 3, 5] ]
+      legs `shouldSatisfy` (\ls -> and (zipWith (<) ls (drop 1 ls)) && head ls > 0)
+      concatMap wsMessages (take 601 (runWith keyed))
+        `shouldBe` [ "[" ++ t ++ "] SimbotA.1: t = " ++ t ++ " s: + pressed, speed " ++ v ++ " m/s from now on"
+                   | (t, v) <- [("1.00", "0.25"), ("3.00", "0.50"), ("5.00", "0.75")] ]
+    it "--list says what each example takes: nothing, flags, or flags and keys" $ do
+      let ls = lines (exampleListing allExamples)
+          rowOf n = head [ l | l <- ls, takeWhile (/= ' ') l == n ]
+      words (rowOf "ex6") !! 1 `shouldBe` "-"
+      words (rowOf "ex7") !! 1 `shouldBe` "flags"
+      take 3 (words (rowOf "ex6-robot")) `shouldBe` ["ex6-robot", "flags,", "keys"]
+      length [ () | e@RobotExample {} <- allExamples, not (null (exKeys e)) ] `shouldSatisfy` (>= 1)
   where
     stuckIns bs = [ scriptedInput origin 0 b Nothing | b <- bs ]
     genKey = frequency [(3, pure Nothing), (2, pure (Just '+')), (1, pure (Just 'a'))]
