@@ -234,7 +234,7 @@ worldProblems (Bounds x0 y0 x1 y1) labelled = concatMap problemsOf indexed
     -- The placed objects on a grid of 1 m cells (no object is larger), each
     -- in every cell its bounding box meets: a pair can only overlap if they
     -- share a cell.
-    grid = M.fromListWith (flip (++)) [ (c, [(i, o)]) | (i, o) <- placed, c <- cellsOf o ]
+    grid = M.map reverse (M.fromListWith (++) [ (c, [(i, o)]) | (i, o) <- placed, c <- cellsOf o ])
     cellsOf o =
       let Point2 x y = otPos o
           (hw, hh)   = objectHalfSize o

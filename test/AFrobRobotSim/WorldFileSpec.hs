@@ -232,6 +232,11 @@ spec = do
           lines e `shouldSatisfy` all ("h.world:" `isPrefixOf`) . take maxProblems
           last (lines e) `shouldBe` "... and 44830 more problems"
         other -> expectationFailure (show other)
+    it "checks a file of maxObjects objects in one place within seconds" $ do
+      let pile = BC.pack (concat [ "simbotA " ++ show i ++ " at 1 1\nblock at 1.2 1\n"
+                                 | i <- [1 .. maxObjects `div` 2] ])
+      r <- forcedWithin 5 (parseB pile)
+      fmap (either (length . lines) (const 0)) r `shouldBe` Just (maxProblems + 1)
     it "has no sizes to give: a size after an object is an error at its position" $
       parseB (BC.pack "block at 0 0 size -1")
         `shouldBe` Left "h.world:1:14: expected end of line or a comment after \"0\", found \"size\""
