@@ -105,6 +105,15 @@
 -- the offending token starts; when a token is missing, it is the column
 -- just after the preceding token, and the message says
 -- @found end of line@. Nothing is returned for the lines before an error.
+-- The limits give messages of the same shape:
+--
+-- @
+-- FILE:LINE:4097: line longer than 4096 characters
+-- FILE:LINE:COLUMN: token longer than 100 characters, starting \"...\"
+-- FILE:LINE:COLUMN: found a NUL character (is this a text file?)
+-- FILE:LINE:COLUMN: invalid UTF-8 (byte 0xff)
+-- FILE:LINE: too many objects (at most 10000)
+-- @
 --
 -- Characters that cannot be printed are shown escaped in messages (as
 -- Haskell writes them, @\\NUL@, @\\ESC@, ...), so a message never sends
@@ -221,7 +230,8 @@ checkLine l = case [ c | (c, ch) <- zip [1 ..] (take (maxLineLength + 1) l), ch 
     ts = tokenize l
 
 -- | Decode the bytes of a world file as UTF-8, parse them with
--- 'parseWorld' and check the world with 'validateWorld', naming each
+-- 'parseWorld' and check the world with
+-- 'AFrobRobotSim.World.validateWorld', naming each
 -- object's line. The first byte that is not valid UTF-8 (a stray
 -- continuation byte, a truncated or overlong sequence, a surrogate, a code
 -- point beyond U+10FFFF) is an error
@@ -229,7 +239,7 @@ checkLine l = case [ c | (c, ch) <- zip [1 ..] (take (maxLineLength + 1) l), ch 
 -- characters before it on its line, plus one. The problems of an invalid
 -- world come one per line, each as @FILE:LINE: problem@ (the line of the
 -- later object of a pair, whose message names the other's line), at most
--- 'maxProblems' of them and then a count of the rest.
+-- 'AFrobRobotSim.World.maxProblems' of them and then a count of the rest.
 --
 -- >>> readWorldBytes "w.world" (B.pack [98,97,108,108,32,97,116,32,48,32,255])
 -- Left "w.world:1:11: invalid UTF-8 (byte 0xff)"
