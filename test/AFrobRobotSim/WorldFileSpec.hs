@@ -113,6 +113,10 @@ forcedWithin secs r = timeout (round (secs * 1e6)) (evaluate (force r))
       Left e  -> length e `seq` x
       Right w -> length (show w) `seq` x
 
+isRight', isLeft' :: Maybe (Either String WorldTemplate) -> Bool
+isRight' = maybe False (either (const False) (const True))
+isLeft'  = maybe False (either (const True) (const False))
+
 -- | A message starting @h.world:LINE:@ (and a column or more text).
 positioned :: String -> Bool
 positioned e = case stripPrefix' "h.world:" e of
@@ -127,14 +131,14 @@ positioned e = case stripPrefix' "h.world:" e of
 -- long digit runs, NULs, invalid UTF-8, BOMs, CRs, non-finite literals).
 genHostile :: Gen B.ByteString
 genHostile = do
-  objs <- listOf genSmall
+  objs <- resize 8 (listOf genSmall)
   let base = BC.pack (renderWorld objs)
   k <- frequency [(1, pure 0), (4, choose (1, 4))]
   mutations k base
   where
     genSmall = do
-      p <- Point2 <$> choose (-6, 6) <*> choose (-6, 6)
-      i <- choose (-3, 3)
+      p <- Point2 <$> choose (-5.5, 5.5) <*> choose (-5.5, 5.5)
+      i <- choose (-3, 300)
       h <- choose (-10, 10)
       elements [OTBlock p, OTVWall p, OTHWall p, OTBall p, OTSimbotA i p h, OTSimbotB i p h]
     mutations :: Int -> B.ByteString -> Gen B.ByteString
@@ -243,7 +247,10 @@ spec = do
     it "fuzz: any file, valid or broken, loads or gives an error with a position, in time" $
       withMaxSuccess 300 $ forAll genHostile $ \bytes -> ioProperty $ do
         r <- forcedWithin 2 (parseB bytes)
-        pure $ counterexample (show r) $ case r of
+        pure $ counterexample (show r)
+             $ cover 10 (isRight' r) "loads"
+             $ cover 30 (isLeft' r) "gives an error"
+             $ case r of
           Nothing        -> False
           Just (Left e)  -> positioned e
           Just (Right _) -> True
