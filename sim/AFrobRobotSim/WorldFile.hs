@@ -1,4 +1,3 @@
-{-# LANGUAGE BangPatterns #-}
 -- |
 -- Module      : AFrobRobotSim.WorldFile
 -- Description : A plain-text file format for world templates: parser,
@@ -147,18 +146,15 @@ module AFrobRobotSim.WorldFile
   ) where
 
 import           Control.Exception (IOException, try)
-import           Data.Bits         ((.&.), (.|.), shiftL)
 import qualified Data.ByteString   as B
-import qualified Data.ByteString.Unsafe as BU
 import           Data.List         (intercalate)
-import           Data.Char         (chr, isDigit, isPrint, isSpace, showLitChar, toLower)
 import qualified Data.Map.Strict   as M
-import           Data.Word         (Word8)
 import           Numeric           (showHex)
 
 import           AFRP.Geometry     (Point2 (..))
 import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems,
                                       notesBounds, worldProblems)
+import           AFrobRobotSim.WorldFile.Lexical
 
 ------------------------------------------------------------------------------
 -- Public interface
@@ -275,55 +271,6 @@ readWorldFile path = do
     Left e  -> Left (show (e :: IOException))
     Right s -> readWorldBytes path s
 
-------------------------------------------------------------------------------
--- UTF-8
-
--- | The first invalid byte of a UTF-8 text, if any: its line, column (in
--- characters) and value.
-utf8Error :: B.ByteString -> Maybe (Int, Int, Word8)
-utf8Error bs = go 0 1 1
-  where
-    n = B.length bs
-    at i = BU.unsafeIndex bs i
-    cont i lo hi = i < n && at i >= lo && at i <= hi
-    go !i !l !c
-      | i >= n    = Nothing
-      | b < 0x80  = if b == 10 then go (i + 1) (l + 1) 1 else go (i + 1) l (c + 1)
-      | b >= 0xC2 && b <= 0xDF = need 1 0x80 0xBF
-      | b == 0xE0 = need 2 0xA0 0xBF
-      | b == 0xED = need 2 0x80 0x9F
-      | b >= 0xE1 && b <= 0xEF = need 2 0x80 0xBF
-      | b == 0xF0 = need 3 0x90 0xBF
-      | b >= 0xF1 && b <= 0xF3 = need 3 0x80 0xBF
-      | b == 0xF4 = need 3 0x80 0x8F
-      | otherwise = Just (l, c, b)
-      where
-        b = at i
-        -- the second byte in [lo, hi], the others continuation bytes
-        need k lo hi
-          | not (cont (i + 1) lo hi) = Just (l, c, b)
-          | k >= 2 && not (cont (i + 2) 0x80 0xBF) = Just (l, c, b)
-          | k >= 3 && not (cont (i + 3) 0x80 0xBF) = Just (l, c, b)
-          | otherwise = go (i + 1 + k) l (c + 1)
-
--- | Decode valid UTF-8 (as 'utf8Error' accepts it), lazily.
-decodeUtf8 :: B.ByteString -> String
-decodeUtf8 bs = go 0
-  where
-    n = B.length bs
-    at :: Int -> Int
-    at i = fromIntegral (BU.unsafeIndex bs i)
-    tl i = at i .&. 0x3F
-    go i
-      | i >= n    = []
-      | b < 0x80  = chr b : go (i + 1)
-      | b < 0xE0  = chr (((b .&. 0x1F) `shiftL` 6) .|. tl (i + 1)) : go (i + 2)
-      | b < 0xF0  = chr (((b .&. 0x0F) `shiftL` 12) .|. (tl (i + 1) `shiftL` 6) .|. tl (i + 2))
-                    : go (i + 3)
-      | otherwise = chr (((b .&. 0x07) `shiftL` 18) .|. (tl (i + 1) `shiftL` 12)
-                         .|. (tl (i + 2) `shiftL` 6) .|. tl (i + 3)) : go (i + 4)
-      where b = at i
-
 -- | Print a world in the world-file format: a header comment, then one
 -- line per object, in order. Coordinates are printed with 'show', headings
 -- in radians with 'show' followed by @rad@, so that
@@ -356,29 +303,6 @@ renderObject o = case o of
     robotLine kw i p hd = kw ++ " " ++ show i ++ at p ++ " heading " ++ show hd ++ " rad"
 
 ------------------------------------------------------------------------------
--- Tokens
-
--- | A token: the column (1-based) of its first character and its text.
-data Tok = Tok !Int String
-
--- | The tokens of a line, comment removed.
-tokenize :: String -> [Tok]
-tokenize = go 1 . takeWhile (/= '#')
-  where
-    go _ [] = []
-    go c s@(ch : rest)
-      | isSpace ch = go (c + 1) rest
-      | otherwise  = let (t, rest') = break isSpace s
-                     in Tok c t : go (c + length t) rest'
-
-tokText :: Tok -> String
-tokText (Tok _ t) = t
-
--- | The column just after a token.
-tokEnd :: Tok -> Int
-tokEnd (Tok c t) = c + length t
-
-------------------------------------------------------------------------------
 -- A small parser over the tokens of one line
 
 -- | A parse error: the column and the message (without the location).
@@ -407,10 +331,6 @@ instance Monad P where
     Left e        -> Left e
     Right (a, s') -> let P q = k a in q s'
 
--- | Why a token was rejected: what was expected instead, and a note to
--- append to the message (possibly empty).
-data Rejection = Rejection String String
-
 -- | Consume the next token if the check accepts it; otherwise fail with
 -- @expected WHAT after "PREV", found "TOKEN"@ (WHAT and a note from the
 -- check), or @..., found end of line@ (WHAT from the first argument) when
@@ -438,17 +358,6 @@ expected what prev found note =
   "expected " ++ what
   ++ maybe "" (\p -> " after " ++ quote (tokText p)) prev
   ++ ", found " ++ found ++ note
-
--- | A token in quotes, characters that cannot be printed escaped.
-quote :: String -> String
-quote s = "\"" ++ foldr esc "" s ++ "\""
-  where
-    esc ch rest
-      | isPrint ch && ch /= '"' && ch /= '\\' = ch : rest
-      | otherwise                             = showLitChar ch rest
-
-lower :: String -> String
-lower = map toLower
 
 -- | One of the given keywords (case-insensitively), returning its value.
 keywordOf :: String -> [(String, a)] -> P a
@@ -540,73 +449,3 @@ headingNumber s = case readNumber s of
         Left (Rejection ("a heading within +-" ++ show (round maxHeading :: Int)) " (out of range)")
   r -> r
 
-------------------------------------------------------------------------------
--- Literals
-
--- | A robot id: an optionally signed decimal integer that fits in an 'Int'.
-robotId :: String -> Either Rejection Int
-robotId s = case integerLit s of
-  Just n
-    | n >= toInteger (minBound :: Int) && n <= toInteger (maxBound :: Int)
-                -> Right (fromInteger n)
-    | otherwise -> Left (Rejection "a robot id (an integer)" " (out of range)")
-  Nothing       -> Left (Rejection "a robot id (an integer)" "")
-
--- | An optionally signed decimal integer.
-integerLit :: String -> Maybe Integer
-integerLit s = case signed s of
-  (neg, ds) | not (null ds), all isDigit ds -> Just (applySign neg (digitsValue ds))
-  _                                         -> Nothing
-
--- | Split off an optional sign: whether it was a minus, and the rest.
-signed :: String -> (Bool, String)
-signed ('-' : r) = (True, r)
-signed ('+' : r) = (False, r)
-signed r         = (False, r)
-
-applySign :: Num a => Bool -> a -> a
-applySign neg x = if neg then negate x else x
-
-digitsValue :: String -> Integer
-digitsValue = foldl (\acc d -> acc * 10 + toInteger (fromEnum d - fromEnum '0')) 0
-
--- | A finite number literal (see the module documentation), converted to
--- the nearest 'Double'.
-readNumber :: String -> Either Rejection Double
-readNumber s
-  | lower (snd (signed s)) `elem` ["nan", "inf", "infinity"] =
-      Left (Rejection "a finite number" " (NaN and infinities are not allowed)")
-  | otherwise = case decimalLit s of
-      Nothing -> Left (Rejection "a number" "")
-      Just d
-        | isInfinite d -> Left (Rejection "a finite number" " (too large for a Double)")
-        | otherwise    -> Right d
-
--- | @[+-]DIGITS[.DIGITS][(e|E)[+-]DIGITS]@, correctly rounded; infinite if
--- too large.
-decimalLit :: String -> Maybe Double
-decimalLit s0 = do
-  let (neg, s1) = signed s0
-      (intPart, s2) = span isDigit s1
-  nonEmpty intPart
-  (fracPart, s3) <- case s2 of
-    '.' : r -> let (f, r') = span isDigit r in nonEmpty f >> Just (f, r')
-    _       -> Just ("", s2)
-  ex <- case s3 of
-    []      -> Just 0
-    c : r | c == 'e' || c == 'E' -> integerLit r
-    _       -> Nothing
-  let mant   = digitsValue (intPart ++ fracPart)
-      -- value = mant * 10 ^ p
-      p      = ex - toInteger (length fracPart)
-      nDigits = toInteger (length (show mant))
-  pure . applySign neg $
-    if mant == 0 || nDigits + p <= -325
-      then 0                            -- below half the smallest denormal
-      else if nDigits - 1 + p > 309
-        then 1 / 0                      -- at least 1e310: overflows
-        else if p >= 0
-          then fromRational (fromInteger (mant * 10 ^ p))
-          else fromRational (fromInteger mant / fromInteger (10 ^ negate p))
-  where
-    nonEmpty xs = if null xs then Nothing else Just ()
