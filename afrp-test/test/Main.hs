@@ -1,0 +1,11 @@
+-- | The afrp-test kit's own tests: the kit checked on properties of the
+-- afrp library it is for.
+module Main (main) where
+
+import           Test.Hspec
+
+import qualified AFRP.Test.StreamSpec
+
+main :: IO ()
+main = hspec $ do
+  describe "AFRP.Test.Stream" AFRP.Test.StreamSpec.spec
