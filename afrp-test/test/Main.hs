@@ -4,8 +4,10 @@ module Main (main) where
 
 import           Test.Hspec
 
+import qualified AFRP.Test.LTLSpec
 import qualified AFRP.Test.StreamSpec
 
 main :: IO ()
 main = hspec $ do
   describe "AFRP.Test.Stream" AFRP.Test.StreamSpec.spec
+  describe "AFRP.Test.LTL" AFRP.Test.LTLSpec.spec

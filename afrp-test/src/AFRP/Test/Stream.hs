@@ -37,7 +37,7 @@ module AFRP.Test.Stream
   , evalFutureSF
   ) where
 
-import AFRP (DTime, FutureSF, SF, evalAt, evalAtZero)
+import AFRP (DTime, FutureSF, SF, evalAt, evalAtZero, localTime)
 
 -- | A finite signal: samples with the time step since the previous sample;
 -- the first sample's time step is 0 (its value is ignored by 'evalSF').
@@ -59,10 +59,10 @@ samples :: SignalSampleStream a -> [a]
 samples = map snd
 
 -- | The time of each sample since the start: the first is 0, each later
--- one the sum of the time steps so far.
+-- one the sum of the time steps so far, as the library's 'localTime'
+-- measures it (a compensated sum: ten steps of 0.1 are exactly 1.0).
 sampleTimes :: SignalSampleStream a -> [DTime]
-sampleTimes []            = []
-sampleTimes ((_, _) : ss) = scanl (+) 0 (map fst ss)
+sampleTimes s = samples (fst (evalSF localTime s))
 
 -- | The value at time 0. Partial: an error on the empty stream.
 firstSample :: SignalSampleStream a -> a
