@@ -5,9 +5,11 @@ module Main (main) where
 import           Test.Hspec
 
 import qualified AFRP.Test.LTLSpec
+import qualified AFRP.Test.PropertiesSpec
 import qualified AFRP.Test.StreamSpec
 
 main :: IO ()
 main = hspec $ do
   describe "AFRP.Test.Stream" AFRP.Test.StreamSpec.spec
   describe "AFRP.Test.LTL" AFRP.Test.LTLSpec.spec
+  describe "Properties of afrp, written with the kit" AFRP.Test.PropertiesSpec.spec
