@@ -7,9 +7,11 @@ import           Test.Hspec
 import qualified AFRP.Test.LTLSpec
 import qualified AFRP.Test.PropertiesSpec
 import qualified AFRP.Test.StreamSpec
+import qualified AFrobRobotSim.TestSpec
 
 main :: IO ()
 main = hspec $ do
   describe "AFRP.Test.Stream" AFRP.Test.StreamSpec.spec
   describe "AFRP.Test.LTL" AFRP.Test.LTLSpec.spec
   describe "Properties of afrp, written with the kit" AFRP.Test.PropertiesSpec.spec
+  describe "AFrobRobotSim.Test" AFrobRobotSim.TestSpec.spec

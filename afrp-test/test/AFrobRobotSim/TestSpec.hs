@@ -1,0 +1,102 @@
+{-# LANGUAGE Arrows #-}
+-- | Properties of whole simbot runs, written with "AFrobRobotSim.Test".
+module AFrobRobotSim.TestSpec (spec) where
+
+import           Data.List             (isInfixOf)
+import           System.Directory      (getTemporaryDirectory, removeFile)
+import           System.FilePath       ((</>))
+import           Test.Hspec            hiding (after)
+import           Test.QuickCheck
+import           Test.QuickCheck.Random (mkQCGen)
+
+import           AFrob                 hiding (forAll)
+import           AFrobRobotSim
+import           AFrobRobotSim.Test
+import           AFRP.Test.LTL
+
+-- Every robot drives at full speed on a circle of its own (by its id), so
+-- robots meet each other and the walls.
+wander :: SimbotController
+wander props = constant (mrFinalize (ddVelTR 2 (fromIntegral (rpId props `mod` 5 - 2) * 0.6)))
+
+-- The notes' wall follower (section 3.3, "Home on the range"): a PD
+-- controller keeping the left range finder's reading at d.
+rcFollowLeftWall :: Velocity -> Distance -> SimbotController
+rcFollowLeftWall v d _ = proc sbi -> do
+  let r = rfLeft sbi
+  dr <- derivative -< r
+  let omega = kp * (r - d) + kd * dr
+      kd    = 5
+      kp    = v * kd * kd / 4
+  returnA -< mrFinalize (ddVelTR v (max (-0.2) (min 0.2 omega)))
+
+-- The wall follower with the sign of its steering flipped: it turns
+-- towards the wall it should keep its distance from.
+rcFollowLeftWallBroken :: Velocity -> Distance -> SimbotController
+rcFollowLeftWallBroken v d _ = proc sbi -> do
+  let r = rfLeft sbi
+  dr <- derivative -< r
+  let omega = negate (v * 25 / 4 * (r - d) + 5 * dr)
+  returnA -< mrFinalize (ddVelTR v (max (-0.2) (min 0.2 omega)))
+
+-- A straight corridor of unit wall segments running east, 1.2 to 2.5 m
+-- wide, 5 to 8 m long, somewhere in the notes' world; one SimbotA at its
+-- west end, heading roughly east, its left edge 0.1 to 0.5 m from the
+-- northern wall.
+genCorridor :: Gen WorldTemplate
+genCorridor = do
+  width  <- choose (1.2, 2.5)
+  len    <- chooseInt (5, 8)
+  yc     <- choose (-3, 3)
+  gap    <- choose (0.1, 0.5)
+  h      <- choose (-0.2, 0.2)
+  let x0    = -4.5
+      north = yc + width / 2
+      south = yc - width / 2
+      walls = [ OTHWall (Point2 (x0 + 0.5 + fromIntegral k) y) | y <- [north, south], k <- [0 .. len - 1] ]
+      robotY = north - wallThickness / 2 - gap - simbotDiameter / 2
+  pure (OTSimbotA 1 (Point2 (x0 + 0.5) robotY) h : walls)
+
+-- How long a corridor's robot is watched: 12 s, in which at 0.3 m/s it
+-- drives at most 3.6 m, and stays in the shortest corridor (5 m). A fixed
+-- time, so that a world that loses objects while shrinking runs as long.
+corridorTime :: Double
+corridorTime = 12
+
+-- The robot in the corridor never comes closer to a wall than the given
+-- clearance. (The physics stops a robot at contact, within a nanometre of
+-- the wall, so overlapping is impossible; touching is the failure.)
+keepsClear :: Double -> WorldTemplate -> TPred WorldState
+keepsClear margin w = Always (SP (arr (all ((> margin) . robotClearance w) . wsRobots)))
+
+spec :: Spec
+spec = do
+  tmp <- runIO getTemporaryDirectory
+  it "random worlds are valid (property)" $
+    forAll (genWorld defaultWorldMix notesBounds) $ \w ->
+      counterexample (renderWorld w) (validateWorld w === Right ())
+
+  it "robots never overlap each other (property)" $
+    forAllWorlds (tmp </> "afrp-test-robots.world") (genWorld defaultWorldMix { mixRobots = (2, 8) } notesBounds) $
+      runT defaultSimConfig { simDt = 0.05 } 10 wander wander
+           (Always (SP (arr (\ws -> robotGap ws >= -1e-9))))
+
+  it "the notes' wall follower never comes within 1 mm of a wall in random corridors (property)" $
+    forAllWorlds (tmp </> "afrp-test-corridor.world") genCorridor $ \w ->
+      runT defaultSimConfig { simDt = 0.02 } corridorTime (rcFollowLeftWall 0.3 0.25) wander
+           (keepsClear 1e-3 w) w
+
+  it "a wall follower steering the wrong way is caught, in a world of at most 3 objects (property)" $ do
+    let file = tmp </> "afrp-test-broken.world"
+    result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 3, 0) } $
+      forAllWorlds file genCorridor $ \w ->
+        runT defaultSimConfig { simDt = 0.02 } corridorTime (rcFollowLeftWallBroken 0.3 0.25) wander
+             (keepsClear 1e-3 w) w
+    case result of
+      Failure { failingTestCase = shown : _ } -> do
+        written <- readWorldFile file
+        removeFile file
+        fmap length written `shouldSatisfy` either (const False) (<= 3)
+        fmap renderWorld written `shouldBe` Right shown
+        output result `shouldSatisfy` ("decided false at t = " `isInfixOf`)
+      _ -> expectationFailure ("the broken wall follower was not caught: " ++ output result)
