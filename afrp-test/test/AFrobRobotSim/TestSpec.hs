@@ -57,9 +57,14 @@ genCorridor = do
       robotY = north - wallThickness / 2 - gap - simbotDiameter / 2
   pure (OTSimbotA 1 (Point2 (x0 + 0.5) robotY) h : walls)
 
--- How long a corridor's robot is watched: 12 s, in which at 0.3 m/s it
--- drives at most 3.6 m, and stays in the shortest corridor (5 m). A fixed
--- time, so that a world that loses objects while shrinking runs as long.
+-- How long a corridor's robot is watched. The property is false beyond
+-- the corridor: where the wall on its left ends or has a gap, the notes'
+-- follower turns left towards where it expects the wall and drives into the
+-- end of the next segment (shrunk to a robot and one wall segment ahead on
+-- its left: docs/TESTING.md). So the robot is watched for 12 s, in which
+-- at 0.3 m/s it drives at most 3.6 m and stays in the shortest corridor
+-- (5 m). A fixed time, so that a world that loses objects while shrinking
+-- runs as long.
 corridorTime :: Double
 corridorTime = 12
 
