@@ -81,6 +81,17 @@ spec = do
     forAll (genWorld defaultWorldMix notesBounds) $ \w ->
       counterexample (renderWorld w) (validateWorld w === Right ())
 
+  it "robotView follows one robot through a run (fixed)" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 2) 0]
+        run   = runStream defaultSimConfig { simDt = 0.1 } 2 world wander rcBrake
+        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
+        viewB = robotView "SimbotB" 1 run
+    length run `shouldBe` 21
+    map fst viewB `shouldBe` map fst run
+    evalT (Always (SP (arr ((== Point2 2 2) . robotPos)))) viewB `shouldBe` True
+    evalT (Eventually (SP (arr ((/= Point2 0 0) . robotPos)))) (robotView "SimbotA" 1 run) `shouldBe` True
+    robotView "SimbotA" 2 run `shouldBe` []
+
   it "robots never overlap each other (property)" $
     forAllWorlds (tmp </> "afrp-test-robots.world") (genWorld defaultWorldMix { mixRobots = (2, 8) } notesBounds) $
       runT defaultSimConfig { simDt = 0.05 } 10 wander wander

@@ -1,10 +1,61 @@
 module AFRP.Test.LTLSpec (spec) where
 
 import           Test.Hspec
+import           Test.QuickCheck
 
-import           AFRP             (SF, arr, localTime, (>>>))
+import           AFRP             (SF, arr, iPre, localTime, (>>>))
 import           AFRP.Test.LTL
+import           AFRP.Test.QuickCheck
 import           AFRP.Test.Stream
+
+-- A formula, as data that can be shown, over four atoms (two of them with
+-- state, to see that atoms keep their state from time 0).
+data F = Atom Int | FAnd F F | FOr F F | FNot F | FImplies F F | FAlways F
+       | FEventually F | FNext F | FUntil F F
+  deriving (Show)
+
+genF :: Int -> Gen F
+genF 0 = Atom <$> chooseInt (0, 3)
+genF k = oneof
+  [ Atom <$> chooseInt (0, 3), FAnd <$> sub <*> sub, FOr <$> sub <*> sub, FNot <$> sub
+  , FImplies <$> sub <*> sub, FAlways <$> sub, FEventually <$> sub, FNext <$> sub, FUntil <$> sub <*> sub ]
+  where sub = genF (k - 1)
+
+atom :: Int -> SF Int Bool
+atom 0 = arr even
+atom 1 = arr (> 0)
+atom 2 = iPre 0 >>> arr (< 0)
+atom _ = localTime >>> arr (< 1)
+
+toTPred :: F -> TPred Int
+toTPred f = case f of
+  Atom k        -> SP (atom k)
+  FAnd a b      -> And (toTPred a) (toTPred b)
+  FOr a b       -> Or (toTPred a) (toTPred b)
+  FNot a        -> Not (toTPred a)
+  FImplies a b  -> Implies (toTPred a) (toTPred b)
+  FAlways a     -> Always (toTPred a)
+  FEventually a -> Eventually (toTPred a)
+  FNext a       -> Next (toTPred a)
+  FUntil a b    -> Until (toTPred a) (toTPred b)
+
+-- The reference: yampa-test's recursive definition read at sample i of
+-- a stream of n samples, each atom run over the whole stream.
+reference :: F -> SignalSampleStream Int -> Bool
+reference f0 s = at f0 0
+  where
+    n = length s
+    at f i = case f of
+      Atom k        -> samples (fst (evalSF (atom k) s)) !! i
+      FAnd a b      -> at a i && at b i
+      FOr a b       -> at a i || at b i
+      FNot a        -> not (at a i)
+      FImplies a b  -> not (at a i) || at b i
+      FAlways a     -> at a i && next (FAlways a) i
+      FEventually a -> if i == n - 1 then at a i else at a i || at (FEventually a) (i + 1)
+      FNext a       -> next a i
+      FUntil a b    -> (at a i && next (FUntil a b) i) || at b i
+    next f i = i == n - 1 || at f (i + 1)
 
 -- A predicate on the current sample only.
 is :: (a -> Bool) -> TPred a
@@ -16,6 +67,13 @@ count = groupDeltas [0 .. 9] (repeat 0.1)
 
 spec :: Spec
 spec = do
+  describe "evalT against yampa-test's recursive definition (property)" $ do
+    it "agrees on random formulas and streams" $
+      forAll (genF 3) $ \f -> forAllStreams (generateStream DistRandom (Nothing, Just 0.5) (Just (Left 12))) $ \s ->
+        evalT (toTPred f) s === reference f s
+    it "explainT explains exactly the failures" $
+      forAll (genF 3) $ \f -> forAllStreams (generateStream DistRandom (Nothing, Just 0.5) (Just (Left 12))) $ \s ->
+        fmap (const ()) (explainT (toTPred f) s) === (if evalT (toTPred f) s then Nothing else Just ())
   describe "evalT, yampa-test's operators (fixed)" $ do
     it "SP is the signal function's output at time 0" $ do
       evalT (is (== 0)) count `shouldBe` True
