@@ -74,6 +74,38 @@ corridorTime = 12
 keepsClear :: Double -> WorldTemplate -> TPred WorldState
 keepsClear margin w = Always (SP (arr (all ((> margin) . robotClearance w) . wsRobots)))
 
+-- A ball's speed (from its positions at the last three samples, the time
+-- step apart) grows only when something was near enough to touch it at
+-- one of the last two samples: a robot, another ball, or (for a bounce,
+-- which can turn a slowing ball around) a wall, block or the world's edge.
+ballsSpeedUpOnlyOnContact :: DTime -> WorldTemplate -> TPred WorldState
+ballsSpeedUpOnlyOnContact dt world = Always $ SP $ proc ws -> do
+  prev  <- iPre Nothing -< Just ws
+  prev2 <- iPre Nothing -< prev
+  returnA -< case (prev2, prev) of
+    (Just w0, Just w1) -> and
+      [ speed b1 b2 <= speed b0 b1 + 1e-9 || near w1 b1 || near ws b2
+      | (b0, b1, b2) <- zip3 (wsBalls w0) (wsBalls w1) (wsBalls ws) ]
+    _ -> True
+  where
+    speed (Point2 ax ay) (Point2 bx by) = sqrt ((bx - ax) ^ (2 :: Int) + (by - ay) ^ (2 :: Int)) / dt
+    reach = 0.15
+    near w b =
+      any (\r -> dist (robotPos r) b < (simbotDiameter + ballDiameter) / 2 + reach) (wsRobots w)
+      || length (filter (\o -> dist o b < ballDiameter + reach) (wsBalls w)) > 1
+      || any (\o -> boxDist b (objectBox o) < ballDiameter / 2 + reach) (filter isObstacle world)
+      || nearEdge b
+    nearEdge (Point2 x y) = minimum [x - worldXMin, worldXMax - x, y - worldYMin, worldYMax - y] < ballDiameter / 2 + reach
+    isObstacle OTBlock {} = True
+    isObstacle OTVWall {} = True
+    isObstacle OTHWall {} = True
+    isObstacle _          = False
+    dist (Point2 ax ay) (Point2 bx by) = sqrt ((bx - ax) ^ (2 :: Int) + (by - ay) ^ (2 :: Int))
+    boxDist (Point2 x y) (x0, y0, x1, y1) =
+      let gx = maximum [0, x0 - x, x - x1]
+          gy = maximum [0, y0 - y, y - y1]
+      in sqrt (gx * gx + gy * gy)
+
 spec :: Spec
 spec = do
   tmp <- runIO getTemporaryDirectory
@@ -96,6 +128,11 @@ spec = do
     forAllWorlds (tmp </> "afrp-test-robots.world") (genWorld defaultWorldMix { mixRobots = (2, 8) } notesBounds) $
       runT defaultSimConfig { simDt = 0.05 } 10 wander wander
            (Always (SP (arr (\ws -> robotGap ws >= -1e-9))))
+
+  it "a ball speeds up only when something touches it (property)" $
+    forAllWorlds (tmp </> "afrp-test-balls.world")
+                 (genWorld defaultWorldMix { mixBalls = (1, 4), mixRobots = (1, 5) } notesBounds) $ \w ->
+      runT defaultSimConfig { simDt = 0.05 } 15 wander wander (ballsSpeedUpOnlyOnContact 0.05 w) w
 
   it "the notes' wall follower never comes within 1 mm of a wall in random corridors (property)" $
     forAllWorlds (tmp </> "afrp-test-corridor.world") genCorridor $ \w ->
