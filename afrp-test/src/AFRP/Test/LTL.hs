@@ -1,0 +1,316 @@
+{-# LANGUAGE GADTs #-}
+-- |
+-- Module      : AFRP.Test.LTL
+-- Description : Linear temporal logic over signal functions on finite
+--               sample streams: yampa-test's future operators, time
+--               bounds, past operators, and explanations of failures.
+--
+-- A temporal predicate ('TPred') is evaluated at time 0 of a finite
+-- 'SignalSampleStream'. Its atoms are signal functions from the input to
+-- 'Bool' ('SP'); each atom runs once over the whole stream from time 0, so
+-- an atom under 'Always' or 'Eventually' keeps its state from sample to
+-- sample, and the truth of @SP sf@ at a sample is @sf@'s output there. This
+-- is yampa-test's meaning; afrp evaluates each atom once and combines the
+-- truth values sample by sample from the end, so a predicate costs time
+-- linear in the stream (times the window for the time-bounded forms).
+--
+-- A finite stream ends: each operator says below what it means at the last
+-- sample, where there is no next one. The rule, as in yampa-test, is that
+-- the missing future does not count against a predicate ('Next' is true at
+-- the end), except for 'Eventually', which must be seen to happen.
+--
+-- Design note: 'TPred' exports exactly yampa-test's nine constructors. The
+-- time-bounded forms 'eventuallyWithin' and 'alwaysFor' measure time from
+-- the sample the enclosing operator is at, which no atom can see (an atom
+-- runs from time 0), so they are two further constructors that are not
+-- exported. Past-time operators need no constructor: the past is what a
+-- signal function sees, so they are signal functions to use inside 'SP'.
+module AFRP.Test.LTL
+  ( -- * Temporal predicates
+    TPred (SP, And, Or, Not, Implies, Always, Eventually, Next, Until)
+  , evalT
+    -- * Time-bounded future
+  , eventuallyWithin
+  , alwaysFor
+    -- * Explaining a failure
+  , Explanation (..)
+  , explainT
+  , showExplanation
+    -- * Past time, as signal functions
+  , previously
+  , hasAlwaysBeen
+  , hasEverBeen
+  , since
+    -- ** yampa-test's names
+  , andSF
+  , orSF
+  , notSF
+  , impliesSF
+  , sofarSF
+  , everSF
+  , lastSF
+  , untilSF
+    -- * Rewriting predicates
+  , tPredMap
+  ) where
+
+import           AFRP             (DTime, SF, arr, iPre, loopPre, (&&&), (>>>))
+
+import           AFRP.Test.Stream
+
+-- | A temporal predicate over a signal of @a@.
+data TPred a where
+  -- | A signal predicate: true at a sample when the signal function's
+  -- output there is 'True'. The signal function starts at time 0 of the
+  -- stream, wherever the atom sits in the formula.
+  SP         :: SF a Bool -> TPred a
+  -- | Both hold at this sample.
+  And        :: TPred a -> TPred a -> TPred a
+  -- | Either holds at this sample.
+  Or         :: TPred a -> TPred a -> TPred a
+  -- | It does not hold at this sample.
+  Not        :: TPred a -> TPred a
+  -- | If the first holds at this sample, so does the second.
+  Implies    :: TPred a -> TPred a -> TPred a
+  -- | It holds at this sample and at every later one. At the last sample:
+  -- it holds there.
+  Always     :: TPred a -> TPred a
+  -- | It holds at this sample or at a later one. At the last sample: it
+  -- holds there (a stream that ends before it happens fails it).
+  Eventually :: TPred a -> TPred a
+  -- | It holds at the next sample. At the last sample: true (nothing is
+  -- known against it).
+  Next       :: TPred a -> TPred a
+  -- | @Until p q@: @q@ holds at this sample, or @p@ does and @Until p q@
+  -- holds at the next sample. At the last sample: @p@ or @q@ holds there
+  -- (a weak until: @p@ holding to the end of the stream is enough).
+  Until      :: TPred a -> TPred a -> TPred a
+  -- Not exported: built by 'eventuallyWithin' and 'alwaysFor'.
+  EventuallyWithin :: DTime -> TPred a -> TPred a
+  AlwaysFor        :: DTime -> TPred a -> TPred a
+
+-- | @eventuallyWithin d p@: @p@ holds at some sample no more than @d@
+-- seconds after this one (this one included; up to a relative rounding
+-- slack of 1e-9, so that three steps of 0.1 are within 0.3).
+--
+-- At the end of the stream: if the stream ends less than @d@ after this
+-- sample and @p@ has not held, true (the deadline has not passed; as for
+-- 'Next', the missing future does not count against it). So a 'False' is a
+-- real miss of the deadline.
+eventuallyWithin :: DTime -> TPred a -> TPred a
+eventuallyWithin = EventuallyWithin
+
+-- | @alwaysFor d p@: @p@ holds at this sample and at every sample no more
+-- than @d@ seconds after it (with the slack of 'eventuallyWithin').
+--
+-- At the end of the stream: the samples there are must hold (the missing
+-- ones do not count against it).
+alwaysFor :: DTime -> TPred a -> TPred a
+alwaysFor = AlwaysFor
+
+-- | Whether the predicate holds at time 0 of the stream, with the meaning
+-- at the end of the stream given for each constructor. The empty stream
+-- has no time 0: every predicate is true on it (so there @Not p@ is not
+-- the complement of @p@); the generators never produce it.
+evalT :: TPred a -> SignalSampleStream a -> Bool
+evalT p s = case truths Closed (length s) p s of
+  []      -> True
+  (v : _) -> v == T
+
+-- Three truth values: false, unknown (decided by samples not yet seen),
+-- true; 'min' is conjunction and 'max' disjunction (Kleene's logic).
+data Tri = F | U | T
+  deriving (Eq, Ord, Show)
+
+notTri :: Tri -> Tri
+notTri F = T
+notTri U = U
+notTri T = F
+
+-- Whether the stream ends after the samples seen (the meaning at the end
+-- applies) or may go on (what is beyond is unknown).
+data Ending = Closed | Open
+
+-- | @truths ending m p s@: the truth of @p@ at each of the first @m@
+-- samples of @s@. Times in a window are measured from its first sample
+-- with the library's clock, and a sample within a billionth of the bound
+-- (relative) counts as inside it: sums of steps like 0.1 round either way
+-- (three steps of 0.1 read 0.30000000000000004), and a window of 0.3
+-- should see them.
+truths :: Ending -> Int -> TPred a -> SignalSampleStream a -> [Tri]
+truths ending m p0 s = go p0
+  where
+    beyond = case ending of
+      Closed -> T
+      Open   -> U
+    go p = case p of
+      SP sf            -> map (\(_, b) -> if b then T else F) (take m (fst (evalSF sf s)))
+      And a b          -> zipWith min (go a) (go b)
+      Or a b           -> zipWith max (go a) (go b)
+      Not a            -> map notTri (go a)
+      Implies a b      -> zipWith max (map notTri (go a)) (go b)
+      Next a           -> drop 1 (go a) ++ [beyond | m > 0]
+      Always a         -> fromEnd (\v next -> min v next) beyond (go a)
+      Eventually a     -> fromEnd (\v next -> max v next) endEventually (go a)
+      Until a b        -> fromEnd (\(va, vb) next -> max vb (min va next)) beyond (zip (go a) (go b))
+      EventuallyWithin d a -> windowed d (go a) max F
+      AlwaysFor d a    -> windowed d (go a) min T
+    -- 'Eventually' at the last sample of a closed stream is its argument
+    -- there: the next value is false, not true.
+    endEventually = case ending of
+      Closed -> F
+      Open   -> U
+    -- Each value combined with the one at the next sample, from the end;
+    -- the last sample combines with the value beyond the end.
+    fromEnd f end vs = init (scanr f end vs)
+    -- The window of samples from each one to d seconds after it, folded;
+    -- if the stream seen so far reaches past the window, the window is
+    -- complete, otherwise the samples beyond decide (unknown while the
+    -- stream is open; at the end of a closed stream the value given).
+    windowed d vs combine unit =
+      [ let elapsed = sampleTimes (restartAt suffix)
+            (inWindow, after') = span ((<= d + slack) . fst) (zip elapsed vsFrom)
+            slack = 1e-9 * max 1e-3 (abs d)
+            end | not (null after') = unit
+                | otherwise         = case ending of
+                    Closed -> T
+                    Open   -> U
+        in foldr (combine . snd) end inWindow
+      | (suffix, vsFrom) <- zip (suffixes (take m s)) (suffixes vs) ]
+    restartAt []            = []
+    restartAt ((_, a) : ss) = (0, a) : ss
+
+suffixes :: [x] -> [[x]]
+suffixes [] = []
+suffixes xs@(_ : xs') = xs : suffixes xs'
+
+-- | Where a predicate failed on a stream.
+data Explanation a = Explanation
+  { explFrame   :: Int
+    -- ^ the index of the sample (0 = time 0) at which the predicate was
+    -- decided false: the samples up to it already falsify it, whatever
+    -- follows (or it is the last sample, for a failure the end decides)
+  , explTime    :: DTime
+    -- ^ that sample's time since the start of the stream
+  , explAround  :: [(Int, DTime, a)]
+    -- ^ the samples around it (up to three before and two after), with
+    -- their index and time
+  } deriving (Show)
+
+-- | @explainT p s@ is 'Nothing' when @'evalT' p s@ holds, and otherwise
+-- the first sample at which the predicate was decided false: the shortest
+-- prefix of the stream that falsifies it whatever samples followed (the
+-- whole stream, when only its end decides, as for 'Eventually').
+explainT :: TPred a -> SignalSampleStream a -> Maybe (Explanation a)
+explainT p s
+  | evalT p s = Nothing
+  | otherwise = Just (explanationAt (search 1 n))
+  where
+    n  = length s
+    ts = sampleTimes s
+    falseOpen k = case truths Open k p s of
+      (F : _) -> True
+      _       -> False
+    -- More samples only resolve unknowns (Kleene's logic is monotone), so
+    -- the prefixes that falsify are all those from some length on; binary
+    -- search for it, with the closed stream as the last resort.
+    search lo hi
+      | lo >= hi  = lo
+      | falseOpen mid = search lo mid
+      | otherwise = search (mid + 1) hi
+      where mid = (lo + hi) `div` 2
+    explanationAt k =
+      let i = k - 1
+      in Explanation
+           { explFrame  = i
+           , explTime   = ts !! i
+           , explAround = [ (j, t, a) | (j, t, a) <- zip3 [0 ..] ts (samples s), j >= i - 3, j <= i + 2 ]
+           }
+
+-- | The explanation as a small table: index, time, value, with the sample
+-- that decided marked with @>@.
+showExplanation :: Show a => Explanation a -> String
+showExplanation e = unlines $
+  ("decided false at sample " ++ show (explFrame e) ++ ", t = " ++ show (explTime e) ++ ":")
+  : [ (if j == explFrame e then "  > " else "    ") ++ pad 5 (show j) ++ pad 12 (show t) ++ show a
+    | (j, t, a) <- explAround e ]
+  where pad w str = str ++ replicate (w - length str) ' '
+
+-- | @previously p@: @p@ held at the previous sample. False at time 0.
+previously :: SF a Bool -> SF a Bool
+previously p = p >>> lastSF
+
+-- | @hasAlwaysBeen p@: @p@ has held at every sample so far, this one
+-- included.
+hasAlwaysBeen :: SF a Bool -> SF a Bool
+hasAlwaysBeen p = p >>> sofarSF
+
+-- | @hasEverBeen p@: @p@ has held at some sample so far, this one included.
+hasEverBeen :: SF a Bool -> SF a Bool
+hasEverBeen p = p >>> everSF
+
+-- | @p \`since\` q@: @q@ has held at some sample so far (this one
+-- included), and @p@ at every sample after the latest such one (this one
+-- included). At time 0: @q@ holds.
+since :: SF a Bool -> SF a Bool -> SF a Bool
+since p q = (p &&& q) >>> loopPre False (arr step)
+  where step ((vp, vq), before) = let now' = vq || (vp && before) in (now', now')
+
+-- | Conjunction of two boolean signals, sample by sample.
+andSF :: SF (Bool, Bool) Bool
+andSF = arr (uncurry (&&))
+
+-- | Disjunction of two boolean signals, sample by sample.
+orSF :: SF (Bool, Bool) Bool
+orSF = arr (uncurry (||))
+
+-- | Negation of a boolean signal, sample by sample.
+notSF :: SF Bool Bool
+notSF = arr not
+
+-- | Implication between two boolean signals, sample by sample.
+impliesSF :: SF (Bool, Bool) Bool
+impliesSF = arr (\(a, b) -> not a || b)
+
+-- | True while the input has been true at every sample so far (this one
+-- included); false from the first false input on.
+sofarSF :: SF Bool Bool
+sofarSF = loopPre True (arr (\(v, acc) -> let acc' = v && acc in (acc', acc')))
+
+-- | True from the first true input on (this one included).
+everSF :: SF Bool Bool
+everSF = loopPre False (arr (\(v, acc) -> let acc' = v || acc in (acc', acc')))
+
+-- | The input at the previous sample; false at time 0.
+lastSF :: SF Bool Bool
+lastSF = iPre False
+
+-- | yampa-test's past until of @(i, u)@: true while @i@ has held at every
+-- sample so far; from the first sample at which @u@ holds while the output
+-- so far was true (at time 0: while nothing was false yet), it is instead
+-- whether @u@ has held at every sample since that one (this one included).
+untilSF :: SF (Bool, Bool) Bool
+untilSF = loopPre (True, False) (arr step)
+  where
+    -- The state: the previous output, and whether the switch to @u@ has
+    -- happened.
+    step ((i, u), (prev, switched))
+      | switched  = let out = u && prev in (out, (out, True))
+      | prev && u = (True, (True, True))
+      | otherwise = let out = prev && i in (out, (out, False))
+
+-- | Apply a function to every atom of a predicate, keeping its shape and
+-- time bounds.
+tPredMap :: (SF a Bool -> SF a Bool) -> TPred a -> TPred a
+tPredMap f p = case p of
+  SP sf                -> SP (f sf)
+  And a b              -> And (tPredMap f a) (tPredMap f b)
+  Or a b               -> Or (tPredMap f a) (tPredMap f b)
+  Not a                -> Not (tPredMap f a)
+  Implies a b          -> Implies (tPredMap f a) (tPredMap f b)
+  Always a             -> Always (tPredMap f a)
+  Eventually a         -> Eventually (tPredMap f a)
+  Next a               -> Next (tPredMap f a)
+  Until a b            -> Until (tPredMap f a) (tPredMap f b)
+  EventuallyWithin d a -> EventuallyWithin d (tPredMap f a)
+  AlwaysFor d a        -> AlwaysFor d (tPredMap f a)

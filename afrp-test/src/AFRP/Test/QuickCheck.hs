@@ -1,0 +1,231 @@
+-- fixedDelayStreamWith keeps yampa-test's type, whose Arbitrary constraint
+-- it does not use.
+{-# OPTIONS_GHC -Wno-redundant-constraints #-}
+-- |
+-- Module      : AFRP.Test.QuickCheck
+-- Description : QuickCheck generators of sample streams, shrinking them
+--               to short counterexamples, and printing them as tables.
+--
+-- The generators have yampa-test's names and types. What yampa-test lacks
+-- is shrinking: QuickCheck reports the first random stream that fails,
+-- often hundreds of samples with time steps like 0.0137. 'shrinkStream'
+-- makes a failing stream shorter (fewer samples), its values simpler (with
+-- the values' own shrinker) and its time steps rounder, and 'forAllStreams'
+-- prints the result as a table, one sample a line:
+--
+-- > stream of 3 samples:
+-- >     #   dt          t           value
+-- >     0   0.0         0.0         0
+-- >     1   0.5         0.5         1
+-- >     2   1.0         1.5         -1
+module AFRP.Test.QuickCheck
+  ( -- * Random stream generation
+    generateStream
+  , generateStreamWith
+    -- ** Parameters used to generate random input streams
+  , Distribution (..)
+  , Range
+  , Length
+    -- ** Helpers for common cases
+  , uniDistStream
+  , uniDistStreamMaxDT
+  , fixedDelayStream
+  , fixedDelayStreamWith
+    -- * Shrinking and showing
+  , shrinkStream
+  , shrinkStreamWith
+  , showStream
+  , forAllStreams
+  , forAllStreamsWith
+    -- * Temporal predicates as properties
+  , propT
+  ) where
+
+import           Data.List        (nub)
+import           Test.QuickCheck
+
+import           AFRP             (DTime)
+import           AFRP.Test.LTL
+import           AFRP.Test.Stream
+
+-- | How the time steps of a generated stream are distributed.
+data Distribution
+  = DistConstant
+    -- ^ one time step, drawn from the range, for the whole stream
+  | DistNormal (DTime, DTime)
+    -- ^ each time step drawn from a normal distribution with this mean and
+    -- standard deviation, kept inside the range and positive
+  | DistRandom
+    -- ^ each time step drawn uniformly from the range (any positive
+    -- 'Double' when the range is open)
+  deriving (Eq, Show)
+
+-- | The smallest and largest time step, each optional.
+type Range = (Maybe DTime, Maybe DTime)
+
+-- | The length of a stream: @Nothing@ for one that grows with QuickCheck's
+-- size parameter, @Left n@ for @n@ time steps (so @n + 1@ samples), @Right
+-- t@ for time steps until the stream reaches (or passes) time @t@.
+type Length = Maybe (Either Int DTime)
+
+-- | @generateStream dist range len@: a stream with time steps as @dist@
+-- and @range@ say, @len@ long, and arbitrary values. The first sample is at
+-- time 0.
+generateStream :: Arbitrary a => Distribution -> Range -> Length -> Gen (SignalSampleStream a)
+generateStream = generateStreamWith (\_ _ -> arbitrary)
+
+-- | @generateStreamWith value dist range len@: as 'generateStream', with
+-- the sample number @k@ (0 at time 0) having the value @value k dt@, where
+-- @dt@ is its time step (0 for the first sample).
+generateStreamWith :: (Int -> DTime -> Gen a) -> Distribution -> Range -> Length -> Gen (SignalSampleStream a)
+generateStreamWith value dist range len = do
+  dts <- case dist of
+    DistConstant -> do
+      dt <- deltaIn range
+      case len of
+        Just (Right t) -> pure (replicate (stepsToReach dt t) dt)
+        _              -> (`replicate` dt) <$> stepCount
+    DistRandom             -> deltas (deltaIn range)
+    DistNormal (mean, dev) -> deltas (normalDelta mean dev range)
+  xs <- sequence (zipWith value [0 ..] (0 : dts))
+  pure (zip (0 : dts) xs)
+  where
+    stepCount = case len of
+      Just (Left n) -> pure (max 0 n)
+      _             -> sized (\n -> choose (0, n))
+    deltas gen = case len of
+      Just (Right t) -> untilTime gen t
+      _              -> stepCount >>= (`vectorOf` gen)
+    stepsToReach dt t = max 0 (ceiling (t / dt))
+
+-- Time steps until their sum reaches t (the last one may pass it).
+untilTime :: Gen DTime -> DTime -> Gen [DTime]
+untilTime gen t
+  | t <= 0    = pure []
+  | otherwise = do
+      dt <- gen
+      (dt :) <$> untilTime gen (t - dt)
+
+-- A positive time step inside the range, uniformly.
+deltaIn :: Range -> Gen DTime
+deltaIn range = case range of
+  (Just lo, Just hi) -> choose (max tiny lo, max tiny hi)
+  (Just lo, Nothing) -> (max tiny lo +) . getNonNegative <$> arbitrary
+  (Nothing, Just hi) -> choose (tiny, max tiny hi)
+  (Nothing, Nothing) -> getPositive <$> arbitrary
+  where tiny = 1e-6
+
+-- A normally distributed time step, redrawn until positive and inside the
+-- range (Box-Muller).
+normalDelta :: DTime -> DTime -> Range -> Gen DTime
+normalDelta mean dev (lo, hi) = draw `suchThat` inside
+  where
+    draw = do
+      u1 <- choose (1e-12, 1)
+      u2 <- choose (0, 1)
+      pure (mean + dev * sqrt (-2 * log u1) * cos (2 * pi * u2))
+    inside x = x > 0 && maybe True (<= x) lo && maybe True (x <=) hi
+
+-- | Streams of any length with time steps of any positive size, uniformly
+-- distributed, and arbitrary values.
+uniDistStream :: Arbitrary a => Gen (SignalSampleStream a)
+uniDistStream = generateStream DistRandom (Nothing, Nothing) Nothing
+
+-- | @uniDistStreamMaxDT maxDT@: as 'uniDistStream', with time steps no
+-- longer than @maxDT@.
+uniDistStreamMaxDT :: Arbitrary a => DTime -> Gen (SignalSampleStream a)
+uniDistStreamMaxDT maxDT = generateStream DistRandom (Nothing, Just maxDT) Nothing
+
+-- | @fixedDelayStream dt@: streams of any length, every time step @dt@.
+fixedDelayStream :: Arbitrary a => DTime -> Gen (SignalSampleStream a)
+fixedDelayStream dt = generateStream DistConstant (Just dt, Just dt) Nothing
+
+-- | @fixedDelayStreamWith f dt@: streams of any length, every time step
+-- @dt@, the sample at time @t@ having the value @f t@. (The constraint is
+-- yampa-test's; no value is arbitrary.)
+fixedDelayStreamWith :: Arbitrary a => (DTime -> a) -> DTime -> Gen (SignalSampleStream a)
+fixedDelayStreamWith f dt =
+  generateStreamWith (\k _ -> pure (f (fromIntegral k * dt))) DistConstant (Just dt, Just dt) Nothing
+
+-- | Shrink a stream with the values' 'shrink', keeping every time step
+-- positive. See 'shrinkStreamWith'.
+shrinkStream :: Arbitrary a => SignalSampleStream a -> [SignalSampleStream a]
+shrinkStream = shrinkStreamWith (Nothing, Nothing) shrink
+
+-- | @shrinkStreamWith range shrinkValue s@: the streams QuickCheck tries in
+-- place of a failing @s@, simplest first:
+--
+-- * fewer samples: the first half, all but the last sample, and @s@
+--   without one of its later samples (whose time step goes to the next
+--   sample, so the others keep their times);
+-- * rounder time steps: each step rounded to fewer decimals (at least
+--   one significant digit kept, never 0), kept inside @range@;
+-- * simpler values: one value at a time, with @shrinkValue@.
+--
+-- The first sample always stays, at time step 0. Each candidate is smaller
+-- (fewer samples, fewer decimals, or a simpler value), so shrinking ends.
+shrinkStreamWith :: Range -> (a -> [a]) -> SignalSampleStream a -> [SignalSampleStream a]
+shrinkStreamWith range shrinkValue s = fewer ++ rounder ++ simpler
+  where
+    n = length s
+    fewer =
+      [take (n `div` 2) s | n >= 4] ++ [take (n - 1) s | n >= 2]
+      ++ [ removeAt k s | k <- [1 .. n - 2] ]
+    rounder =
+      [ replaceAt k (dt', a)
+      | (k, (dt, a)) <- zip [1 ..] (drop 1 s)
+      , dt' <- roundings dt
+      , inRange dt' ]
+    simpler =
+      [ replaceAt k (dt, a')
+      | (k, (dt, a)) <- zip [0 ..] s
+      , a' <- shrinkValue a ]
+    replaceAt k x = take k s ++ x : drop (k + 1) s
+    inRange x = maybe True (<= x) (fst range) && maybe True (x <=) (snd range)
+
+-- Without the sample number k (k >= 1): its time step is added to the
+-- next one's.
+removeAt :: Int -> SignalSampleStream a -> SignalSampleStream a
+removeAt k s = case splitAt k s of
+  (before, (dt, _) : (dt', b) : rest) -> before ++ (dt + dt', b) : rest
+  (before, _)                         -> before
+
+-- A time step rounded to fewer decimals: the candidates, roundest first.
+roundings :: DTime -> [DTime]
+roundings dt = nub [ r | k <- [0 .. decimals dt - 1], let r = roundTo k dt, r > 0, r /= dt ]
+  where
+    roundTo :: Int -> DTime -> DTime
+    roundTo k x = fromIntegral (round (x * 10 ^ k) :: Integer) / 10 ^ k
+    decimals x = head ([k | k <- [0 .. 8], roundTo k x == x] ++ [9])
+
+-- | A stream as a table, one sample a line: number, time step, time since
+-- the start, value; headed by its number of samples.
+showStream :: Show a => SignalSampleStream a -> String
+showStream s = unlines $
+  ("stream of " ++ show (length s) ++ " samples:")
+  : ("    " ++ pad 5 "#" ++ pad 12 "dt" ++ pad 12 "t" ++ "value")
+  : [ "    " ++ pad 5 (show k) ++ pad 12 (show dt) ++ pad 12 (show t) ++ show a
+    | (k, (dt, a), t) <- zip3 [0 :: Int ..] s (sampleTimes s) ]
+  where pad w str = str ++ replicate (w - length str) ' '
+
+-- | @forAllStreams gen prop@: @prop@ for streams from @gen@, shrunk with
+-- 'shrinkStream' and printed with 'showStream' when one fails.
+forAllStreams :: (Arbitrary a, Show a, Testable prop)
+              => Gen (SignalSampleStream a) -> (SignalSampleStream a -> prop) -> Property
+forAllStreams gen = forAllShrinkShow gen shrinkStream showStream
+
+-- | @forAllStreamsWith range shrinkValue gen prop@: 'forAllStreams' with a
+-- range the shrunk time steps must keep (the generator's) and the values'
+-- own shrinker.
+forAllStreamsWith :: (Show a, Testable prop)
+                  => Range -> (a -> [a]) -> Gen (SignalSampleStream a)
+                  -> (SignalSampleStream a -> prop) -> Property
+forAllStreamsWith range shrinkValue gen =
+  forAllShrinkShow gen (shrinkStreamWith range shrinkValue) showStream
+
+-- | @propT p s@: 'evalT' as a property; when it fails, 'explainT' says at
+-- which sample it was decided false and shows the samples around it.
+propT :: Show a => TPred a -> SignalSampleStream a -> Property
+propT p s = case explainT p s of
+  Nothing -> property True
+  Just e  -> counterexample (showExplanation e) False

@@ -1,0 +1,241 @@
+-- |
+-- Module      : AFrobRobotSim.Test
+-- Description : Properties of whole simbot runs: random valid worlds that
+--               shrink by losing objects, temporal predicates over the
+--               stream of world states, and the failing world written as a
+--               world file.
+--
+-- A property of a controller is a 'TPred' over the world states of a run
+-- ('WorldState', one per time step of 'simulateWith'), checked on random
+-- worlds:
+--
+-- > forAllWorlds "failing.world" (genWorld defaultWorldMix notesBounds) $
+-- >   runT defaultSimConfig 20 myController myController
+-- >        (Always (SP (arr (all (not . robotStuck) . wsRobots))))
+--
+-- When it fails, QuickCheck removes objects from the world as long as it
+-- still fails, prints the smallest world in the world-file format with the
+-- instant the predicate was decided false, and writes it to the file, to
+-- be run again with @simbot --world failing.world@.
+--
+-- Everything here uses the simulator's public API only.
+module AFrobRobotSim.Test
+  ( -- * Random worlds
+    WorldMix (..)
+  , defaultWorldMix
+  , genWorld
+  , genRobotIn
+  , shrinkWorld
+  , objectBox
+  , boxesOverlap
+    -- * Runs as streams
+  , runStream
+  , robotView
+  , showWorldState
+    -- * Properties
+  , forAllWorlds
+  , runT
+    -- * Distances, for predicates
+  , robotClearance
+  , robotGap
+  ) where
+
+import           Data.List            (tails)
+import           Test.QuickCheck
+
+import           AFRP                 (Time)
+import           AFRP.Geometry        (Point2 (..))
+import           AFrob.Dimensions     (RobotId, RobotType)
+import           AFrobRobotSim
+import           AFRP.Test.LTL
+import           AFRP.Test.Stream
+
+-- | How many objects of each kind 'genWorld' places: a range for each.
+data WorldMix = WorldMix
+  { mixWalls  :: (Int, Int)   -- ^ wall segments (horizontal or vertical)
+  , mixBlocks :: (Int, Int)   -- ^ blocks
+  , mixBalls  :: (Int, Int)   -- ^ balls
+  , mixRobots :: (Int, Int)   -- ^ simbots (of both types)
+  } deriving (Eq, Show)
+
+-- | Up to 12 walls, 4 blocks, 3 balls and 1 to 5 robots.
+defaultWorldMix :: WorldMix
+defaultWorldMix = WorldMix (0, 12) (0, 4) (0, 3) (1, 5)
+
+-- | @genWorld mix bounds@: a valid world of the given extent (see
+-- 'validateWorldIn'), with the numbers of objects @mix@ asks for as far as
+-- they fit: each object is placed at a random free spot, where its
+-- bounding box ('objectBox') overlaps no other object's and lies inside
+-- the world, so that robots start overlapping nothing. Robots get ids
+-- 1, 2, ... per type and random headings. An object that finds no free
+-- spot in 20 tries is left out.
+genWorld :: WorldMix -> Bounds -> Gen WorldTemplate
+genWorld mix bounds = do
+  let count (lo, hi) = chooseInt (max 0 lo, max 0 hi)
+  nWalls  <- count (mixWalls mix)
+  nBlocks <- count (mixBlocks mix)
+  nBalls  <- count (mixBalls mix)
+  nRobots <- count (mixRobots mix)
+  kinds <- vectorOf nRobots (elements [SimbotA, SimbotB])
+  let robotMakers = zipWith robotOf kinds (idsPerKind kinds)
+      makers = replicate nWalls wallAt ++ replicate nBlocks (pure . OTBlock)
+               ++ replicate nBalls (pure . OTBall) ++ robotMakers
+  placeAll bounds makers []
+  where
+    wallAt p = elements [OTHWall p, OTVWall p]
+    robotOf k i p = do
+      h <- choose (-pi, pi)
+      pure (case k of
+              SimbotA -> OTSimbotA i p h
+              SimbotB -> OTSimbotB i p h)
+    idsPerKind ks = [ length (filter (== k) (take n ks)) + 1 | (n, k) <- zip [0 ..] ks ]
+
+-- Place each object (a maker given its centre) at a free spot.
+placeAll :: Bounds -> [Point2 Double -> Gen ObjectTemplate] -> WorldTemplate -> Gen WorldTemplate
+placeAll _ [] placed = pure (reverse placed)
+placeAll bounds (make : rest) placed = do
+  mo <- tryPlace (20 :: Int)
+  placeAll bounds rest (maybe placed (: placed) mo)
+  where
+    Bounds x0 y0 x1 y1 = bounds
+    tryPlace 0 = pure Nothing
+    tryPlace k = do
+      p <- Point2 <$> choose (x0, x1) <*> choose (y0, y1)
+      o <- make p
+      if fits o then pure (Just o) else tryPlace (k - 1)
+    fits o = inside (objectBox o) && not (any (boxesOverlap (objectBox o) . objectBox) placed)
+    inside (a, b, c, d) = a >= x0 && b >= y0 && c <= x1 && d <= y1
+
+-- | @genRobotIn bounds world@: a robot of either kind, with the next free
+-- id of its kind, at a free spot of @world@ (as 'genWorld' places it), or
+-- the world unchanged if there is none.
+genRobotIn :: Bounds -> WorldTemplate -> Gen WorldTemplate
+genRobotIn bounds world = do
+  k <- elements [SimbotA, SimbotB]
+  h <- choose (-pi, pi)
+  let i = 1 + maximum (0 : [ otRId o | o <- world, sameKind k o ])
+      make p = pure (case k of
+                       SimbotA -> OTSimbotA i p h
+                       SimbotB -> OTSimbotB i p h)
+  placeAll bounds [make] (reverse world)
+  where
+    sameKind SimbotA OTSimbotA {} = True
+    sameKind SimbotB OTSimbotB {} = True
+    sameKind _       _            = False
+
+-- | The worlds QuickCheck tries in place of a failing one: the world
+-- without one of its objects, each in turn (the first half of its objects
+-- first, when it has more than 8). Removing objects keeps a world valid.
+shrinkWorld :: WorldTemplate -> [WorldTemplate]
+shrinkWorld w =
+  [ take (n `div` 2) w | n > 8 ] ++ [ drop (n `div` 2) w | n > 8 ]
+  ++ [ take k w ++ drop (k + 1) w | k <- [0 .. n - 1] ]
+  where n = length w
+
+-- | An object's bounding box, @(xMin, yMin, xMax, yMax)@ in metres, from
+-- its centre and the sizes of "AFrobRobotSim.World".
+objectBox :: ObjectTemplate -> (Double, Double, Double, Double)
+objectBox o =
+  let Point2 x y = otPos o
+      (hw, hh) = case o of
+        OTBlock {}   -> (blockSide / 2, blockSide / 2)
+        OTVWall {}   -> (wallThickness / 2, wallLength / 2)
+        OTHWall {}   -> (wallLength / 2, wallThickness / 2)
+        OTBall {}    -> (ballDiameter / 2, ballDiameter / 2)
+        OTSimbotA {} -> (simbotDiameter / 2, simbotDiameter / 2)
+        OTSimbotB {} -> (simbotDiameter / 2, simbotDiameter / 2)
+  in (x - hw, y - hh, x + hw, y + hh)
+
+-- | Whether two boxes share more than an edge.
+boxesOverlap :: (Double, Double, Double, Double) -> (Double, Double, Double, Double) -> Bool
+boxesOverlap (a0, b0, a1, b1) (c0, d0, c1, d1) = a0 < c1 && c0 < a1 && b0 < d1 && d0 < b1
+
+-- | @runStream config duration world rcA rcB@: the run of 'simulateWith'
+-- as a stream, one world state per time step of @config@ from time 0 to
+-- @duration@ (the first sample at time step 0).
+runStream :: SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController
+          -> SignalSampleStream WorldState
+runStream config duration world rcA rcB =
+  let dt    = simDt config
+      steps = floor (duration / dt + 1e-9) :: Int
+  in zip (0 : repeat dt) (take (steps + 1) (simulateWith config world rcA rcB))
+
+-- | One robot's view of a run: its state at every sample, found by its
+-- type (@\"SimbotA\"@ or @\"SimbotB\"@) and id. A robot that is not in the
+-- world gives the empty stream.
+robotView :: RobotType -> RobotId -> SignalSampleStream WorldState -> SignalSampleStream RobotState
+robotView ty i s = case traverse pick s of
+  Just rs -> rs
+  Nothing -> []
+  where
+    pick (dt, ws) = case [ r | r <- wsRobots ws, robotType r == ty, robotId r == i ] of
+      (r : _) -> Just (dt, r)
+      []      -> Nothing
+
+-- | A world state in one line: the time, then each robot's type, id,
+-- position and heading (and @stuck@ if it is), and the balls.
+showWorldState :: WorldState -> String
+showWorldState ws =
+  "t=" ++ fixed 2 (wsTime ws) ++ concatMap robot (wsRobots ws)
+  ++ (if null (wsBalls ws) then "" else "  balls" ++ concatMap pos (wsBalls ws))
+  where
+    robot r = "  " ++ robotType r ++ " " ++ show (robotId r) ++ pos (robotPos r)
+              ++ " h=" ++ fixed 2 (robotHeading r) ++ (if robotStuck r then " stuck" else "")
+    pos (Point2 x y) = " (" ++ fixed 3 x ++ ", " ++ fixed 3 y ++ ")"
+    fixed :: Int -> Double -> String
+    fixed k v = let m = 10 ^ k :: Integer
+                    r = round (abs v * fromIntegral m) :: Integer
+                    (q, f) = r `divMod` m
+                    fs = show f
+                in (if v < 0 && r /= 0 then "-" else "") ++ show q ++ "." ++ replicate (k - length fs) '0' ++ fs
+
+-- | @forAllWorlds file gen prop@: @prop@ for worlds from @gen@, shrunk
+-- with 'shrinkWorld'. A failing world is printed in the world-file format
+-- and, once shrinking is done, written to @file@.
+forAllWorlds :: Testable prop => FilePath -> Gen WorldTemplate -> (WorldTemplate -> prop) -> Property
+forAllWorlds file gen prop =
+  forAllShrinkShow gen shrinkWorld renderWorld $ \w ->
+    whenFail (writeFile file (renderWorld w))
+             (counterexample ("(the world is written to " ++ file ++ ")") (prop w))
+
+-- | @runT config duration rcA rcB p world@: the predicate @p@ holds at
+-- time 0 of the run of @world@ ('runStream'). When it does not, the
+-- counterexample says at which instant it was decided false, with the
+-- world states around it ('showWorldState').
+runT :: SimConfig -> Time -> SimbotController -> SimbotController -> TPred WorldState
+     -> WorldTemplate -> Property
+runT config duration rcA rcB p world =
+  case explainT p (runStream config duration world rcA rcB) of
+    Nothing -> property True
+    Just e  -> counterexample (explanation e) False
+  where
+    explanation e = unlines $
+      ("decided false at t = " ++ show (explTime e) ++ " (step " ++ show (explFrame e) ++ "):")
+      : [ (if j == explFrame e then "  > " else "    ") ++ showWorldState ws | (j, _, ws) <- explAround e ]
+
+-- | @robotClearance world r@: the distance from the edge of robot @r@'s
+-- disc to the nearest wall segment or block of @world@ (negative if they
+-- overlap). The world's boundary does not count. Infinite if there is
+-- none.
+robotClearance :: WorldTemplate -> RobotState -> Double
+robotClearance world r =
+  minimum (1 / 0 : [ boxDistance (robotPos r) (objectBox o) - simbotDiameter / 2 | o <- world, isObstacle o ])
+  where
+    isObstacle OTBlock {} = True
+    isObstacle OTVWall {} = True
+    isObstacle OTHWall {} = True
+    isObstacle _          = False
+
+-- The distance from a point to a box (0 inside it).
+boxDistance :: Point2 Double -> (Double, Double, Double, Double) -> Double
+boxDistance (Point2 x y) (x0, y0, x1, y1) =
+  let gx = maximum [0, x0 - x, x - x1]
+      gy = maximum [0, y0 - y, y - y1]
+  in sqrt (gx * gx + gy * gy)
+
+-- | The smallest distance between the edges of two robots' discs in a
+-- world state (negative if two overlap); infinite with fewer than two.
+robotGap :: WorldState -> Double
+robotGap ws = minimum (1 / 0 : [ dist (robotPos a) (robotPos b) - simbotDiameter
+                               | (a : rest) <- tails (wsRobots ws), b <- rest ])
+  where dist (Point2 ax ay) (Point2 bx by) = sqrt ((ax - bx) ^ (2 :: Int) + (ay - by) ^ (2 :: Int))

@@ -1,0 +1,130 @@
+module AFRP.Test.LTLSpec (spec) where
+
+import           Test.Hspec
+import           Test.QuickCheck
+
+import           AFRP             (SF, arr, iPre, localTime, (>>>))
+import           AFRP.Test.LTL
+import           AFRP.Test.QuickCheck
+import           AFRP.Test.Stream
+
+-- A formula, as data that can be shown, over four atoms (two of them with
+-- state, to see that atoms keep their state from time 0).
+data F = Atom Int | FAnd F F | FOr F F | FNot F | FImplies F F | FAlways F
+       | FEventually F | FNext F | FUntil F F
+  deriving (Show)
+
+genF :: Int -> Gen F
+genF 0 = Atom <$> chooseInt (0, 3)
+genF k = oneof
+  [ Atom <$> chooseInt (0, 3), FAnd <$> sub <*> sub, FOr <$> sub <*> sub, FNot <$> sub
+  , FImplies <$> sub <*> sub, FAlways <$> sub, FEventually <$> sub, FNext <$> sub, FUntil <$> sub <*> sub ]
+  where sub = genF (k - 1)
+
+atom :: Int -> SF Int Bool
+atom 0 = arr even
+atom 1 = arr (> 0)
+atom 2 = iPre 0 >>> arr (< 0)
+atom _ = localTime >>> arr (< 1)
+
+toTPred :: F -> TPred Int
+toTPred f = case f of
+  Atom k        -> SP (atom k)
+  FAnd a b      -> And (toTPred a) (toTPred b)
+  FOr a b       -> Or (toTPred a) (toTPred b)
+  FNot a        -> Not (toTPred a)
+  FImplies a b  -> Implies (toTPred a) (toTPred b)
+  FAlways a     -> Always (toTPred a)
+  FEventually a -> Eventually (toTPred a)
+  FNext a       -> Next (toTPred a)
+  FUntil a b    -> Until (toTPred a) (toTPred b)
+
+-- The reference: yampa-test's recursive definition read at sample i of
+-- a stream of n samples, each atom run over the whole stream.
+reference :: F -> SignalSampleStream Int -> Bool
+reference f0 s = at f0 0
+  where
+    n = length s
+    at f i = case f of
+      Atom k        -> samples (fst (evalSF (atom k) s)) !! i
+      FAnd a b      -> at a i && at b i
+      FOr a b       -> at a i || at b i
+      FNot a        -> not (at a i)
+      FImplies a b  -> not (at a i) || at b i
+      FAlways a     -> at a i && next (FAlways a) i
+      FEventually a -> if i == n - 1 then at a i else at a i || at (FEventually a) (i + 1)
+      FNext a       -> next a i
+      FUntil a b    -> (at a i && next (FUntil a b) i) || at b i
+    next f i = i == n - 1 || at f (i + 1)
+
+-- A predicate on the current sample only.
+is :: (a -> Bool) -> TPred a
+is f = SP (arr f)
+
+-- Ten samples 0.1 s apart with the values 0..9.
+count :: SignalSampleStream Int
+count = groupDeltas [0 .. 9] (repeat 0.1)
+
+spec :: Spec
+spec = do
+  describe "evalT against yampa-test's recursive definition (property)" $ do
+    it "agrees on random formulas and streams" $
+      forAll (genF 3) $ \f -> forAllStreams (generateStream DistRandom (Nothing, Just 0.5) (Just (Left 12))) $ \s ->
+        evalT (toTPred f) s === reference f s
+    it "explainT explains exactly the failures" $
+      forAll (genF 3) $ \f -> forAllStreams (generateStream DistRandom (Nothing, Just 0.5) (Just (Left 12))) $ \s ->
+        fmap (const ()) (explainT (toTPred f) s) === (if evalT (toTPred f) s then Nothing else Just ())
+  describe "evalT, yampa-test's operators (fixed)" $ do
+    it "SP is the signal function's output at time 0" $ do
+      evalT (is (== 0)) count `shouldBe` True
+      evalT (is (== 1)) count `shouldBe` False
+    it "Always and Eventually range over the later samples" $ do
+      evalT (Always (is (< 10))) count `shouldBe` True
+      evalT (Always (is (< 9))) count `shouldBe` False
+      evalT (Eventually (is (== 9))) count `shouldBe` True
+      evalT (Eventually (is (== 10))) count `shouldBe` False
+    it "atoms keep their state under Always (the clock is the stream's)" $
+      evalT (Always (SP (localTime >>> arr (< 0.95)))) count `shouldBe` True
+    it "Next is true at the last sample, Eventually is its argument there" $ do
+      let one = [(0, 5 :: Int)]
+      evalT (Next (is (const False))) one `shouldBe` True
+      evalT (Eventually (is (== 6))) one `shouldBe` False
+    it "Until is weak: holding to the end is enough" $ do
+      evalT (Until (is (< 10)) (is (== 42))) count `shouldBe` True
+      evalT (Until (is (< 5)) (is (== 5))) count `shouldBe` True
+      evalT (Until (is (< 4)) (is (== 5))) count `shouldBe` False
+    it "Not, And, Or, Implies combine at the same sample" $ do
+      evalT (Not (is (== 0))) count `shouldBe` False
+      evalT (Always (Implies (is (> 5)) (is (> 4)))) count `shouldBe` True
+      evalT (Or (is (== 1)) (And (is (== 0)) (Next (is (== 1))))) count `shouldBe` True
+  describe "time-bounded operators (fixed)" $ do
+    it "eventuallyWithin sees the samples up to the bound" $ do
+      evalT (eventuallyWithin 0.3 (is (== 3))) count `shouldBe` True
+      evalT (eventuallyWithin 0.25 (is (== 3))) count `shouldBe` False
+    it "eventuallyWithin is true when the stream ends before the deadline" $
+      evalT (Always (Implies (is (== 8)) (eventuallyWithin 1 (is (== 20))))) count `shouldBe` True
+    it "alwaysFor looks only inside its window" $ do
+      evalT (alwaysFor 0.45 (is (< 5))) count `shouldBe` True
+      evalT (alwaysFor 0.5 (is (< 5))) count `shouldBe` False
+  describe "past operators (fixed)" $ do
+    let run :: SF Int Bool -> [Bool]
+        run sf = samples (fst (evalSF sf count))
+    it "previously is the last sample's value, false at time 0" $
+      run (previously (arr even)) `shouldBe` [False, True, False, True, False, True, False, True, False, True]
+    it "hasAlwaysBeen and hasEverBeen" $ do
+      run (hasAlwaysBeen (arr (< 3))) `shouldBe` map (< 3) [0 .. 9 :: Int]
+      run (hasEverBeen (arr (== 3))) `shouldBe` map (>= 3) [0 .. 9 :: Int]
+    it "since: q at some sample, p at every one after it" $
+      run (since (arr (< 6)) (arr (== 2))) `shouldBe` map (\x -> x >= 2 && x < 6) [0 .. 9 :: Int]
+  describe "explainT (fixed)" $ do
+    it "is Nothing when the predicate holds" $
+      fmap explFrame (explainT (Always (is (< 10))) count) `shouldBe` Nothing
+    it "gives the first sample that breaks Always, and its neighbours" $ do
+      let e = explainT (Always (is (< 6))) count
+      fmap explFrame e `shouldBe` Just 6
+      fmap (\x -> abs (explTime x - 0.6) < 1e-9) e `shouldBe` Just True
+      fmap (map (\(j, _, a) -> (j, a)) . explAround) e `shouldBe` Just [(j, j) | j <- [3 .. 8]]
+    it "gives the sample where a deadline passed" $
+      fmap explFrame (explainT (eventuallyWithin 0.25 (is (== 3))) count) `shouldBe` Just 3
+    it "gives the last sample when only the end decides" $
+      fmap explFrame (explainT (Eventually (is (== 10))) count) `shouldBe` Just 9

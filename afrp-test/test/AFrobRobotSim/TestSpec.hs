@@ -1,0 +1,155 @@
+{-# LANGUAGE Arrows #-}
+-- | Properties of whole simbot runs, written with "AFrobRobotSim.Test".
+module AFrobRobotSim.TestSpec (spec) where
+
+import           Data.List             (isInfixOf)
+import           System.Directory      (getTemporaryDirectory, removeFile)
+import           System.FilePath       ((</>))
+import           Test.Hspec            hiding (after)
+import           Test.QuickCheck
+import           Test.QuickCheck.Random (mkQCGen)
+
+import           AFrob                 hiding (forAll)
+import           AFrobRobotSim
+import           AFrobRobotSim.Test
+import           AFRP.Test.LTL
+
+-- Every robot drives at full speed on a circle of its own (by its id), so
+-- robots meet each other and the walls.
+wander :: SimbotController
+wander props = constant (mrFinalize (ddVelTR 2 (fromIntegral (rpId props `mod` 5 - 2) * 0.6)))
+
+-- The notes' wall follower (section 3.3, "Home on the range"): a PD
+-- controller keeping the left range finder's reading at d.
+rcFollowLeftWall :: Velocity -> Distance -> SimbotController
+rcFollowLeftWall v d _ = proc sbi -> do
+  let r = rfLeft sbi
+  dr <- derivative -< r
+  let omega = kp * (r - d) + kd * dr
+      kd    = 5
+      kp    = v * kd * kd / 4
+  returnA -< mrFinalize (ddVelTR v (max (-0.2) (min 0.2 omega)))
+
+-- The wall follower with the sign of its steering flipped: it turns
+-- towards the wall it should keep its distance from.
+rcFollowLeftWallBroken :: Velocity -> Distance -> SimbotController
+rcFollowLeftWallBroken v d _ = proc sbi -> do
+  let r = rfLeft sbi
+  dr <- derivative -< r
+  let omega = negate (v * 25 / 4 * (r - d) + 5 * dr)
+  returnA -< mrFinalize (ddVelTR v (max (-0.2) (min 0.2 omega)))
+
+-- A straight corridor of unit wall segments running east, 1.2 to 2.5 m
+-- wide, 5 to 8 m long, somewhere in the notes' world; one SimbotA at its
+-- west end, heading roughly east, its left edge 0.1 to 0.5 m from the
+-- northern wall.
+genCorridor :: Gen WorldTemplate
+genCorridor = do
+  width  <- choose (1.2, 2.5)
+  len    <- chooseInt (5, 8)
+  yc     <- choose (-3, 3)
+  gap    <- choose (0.1, 0.5)
+  h      <- choose (-0.2, 0.2)
+  let x0    = -4.5
+      north = yc + width / 2
+      south = yc - width / 2
+      walls = [ OTHWall (Point2 (x0 + 0.5 + fromIntegral k) y) | y <- [north, south], k <- [0 .. len - 1] ]
+      robotY = north - wallThickness / 2 - gap - simbotDiameter / 2
+  pure (OTSimbotA 1 (Point2 (x0 + 0.5) robotY) h : walls)
+
+-- How long a corridor's robot is watched. The property is false beyond
+-- the corridor: where the wall on its left ends or has a gap, the notes'
+-- follower turns left towards where it expects the wall and drives into the
+-- end of the next segment (shrunk to a robot and one wall segment ahead on
+-- its left: docs/TESTING.md). So the robot is watched for 12 s, in which
+-- at 0.3 m/s it drives at most 3.6 m and stays in the shortest corridor
+-- (5 m). A fixed time, so that a world that loses objects while shrinking
+-- runs as long.
+corridorTime :: Double
+corridorTime = 12
+
+-- The robot in the corridor never comes closer to a wall than the given
+-- clearance. (The physics stops a robot at contact, within a nanometre of
+-- the wall, so overlapping is impossible; touching is the failure.)
+keepsClear :: Double -> WorldTemplate -> TPred WorldState
+keepsClear margin w = Always (SP (arr (all ((> margin) . robotClearance w) . wsRobots)))
+
+-- A ball's speed (from its positions at the last three samples, the time
+-- step apart) grows only when something was near enough to touch it at
+-- one of the last two samples: a robot, another ball, or (for a bounce,
+-- which can turn a slowing ball around) a wall, block or the world's edge.
+ballsSpeedUpOnlyOnContact :: DTime -> WorldTemplate -> TPred WorldState
+ballsSpeedUpOnlyOnContact dt world = Always $ SP $ proc ws -> do
+  prev  <- iPre Nothing -< Just ws
+  prev2 <- iPre Nothing -< prev
+  returnA -< case (prev2, prev) of
+    (Just w0, Just w1) -> and
+      [ speed b1 b2 <= speed b0 b1 + 1e-9 || near w1 b1 || near ws b2
+      | (b0, b1, b2) <- zip3 (wsBalls w0) (wsBalls w1) (wsBalls ws) ]
+    _ -> True
+  where
+    speed (Point2 ax ay) (Point2 bx by) = sqrt ((bx - ax) ^ (2 :: Int) + (by - ay) ^ (2 :: Int)) / dt
+    reach = 0.15
+    near w b =
+      any (\r -> dist (robotPos r) b < (simbotDiameter + ballDiameter) / 2 + reach) (wsRobots w)
+      || length (filter (\o -> dist o b < ballDiameter + reach) (wsBalls w)) > 1
+      || any (\o -> boxDist b (objectBox o) < ballDiameter / 2 + reach) (filter isObstacle world)
+      || nearEdge b
+    nearEdge (Point2 x y) = minimum [x - worldXMin, worldXMax - x, y - worldYMin, worldYMax - y] < ballDiameter / 2 + reach
+    isObstacle OTBlock {} = True
+    isObstacle OTVWall {} = True
+    isObstacle OTHWall {} = True
+    isObstacle _          = False
+    dist (Point2 ax ay) (Point2 bx by) = sqrt ((bx - ax) ^ (2 :: Int) + (by - ay) ^ (2 :: Int))
+    boxDist (Point2 x y) (x0, y0, x1, y1) =
+      let gx = maximum [0, x0 - x, x - x1]
+          gy = maximum [0, y0 - y, y - y1]
+      in sqrt (gx * gx + gy * gy)
+
+spec :: Spec
+spec = do
+  tmp <- runIO getTemporaryDirectory
+  it "random worlds are valid (property)" $
+    forAll (genWorld defaultWorldMix notesBounds) $ \w ->
+      counterexample (renderWorld w) (validateWorld w === Right ())
+
+  it "robotView follows one robot through a run (fixed)" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 2) 0]
+        run   = runStream defaultSimConfig { simDt = 0.1 } 2 world wander rcBrake
+        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
+        viewB = robotView "SimbotB" 1 run
+    length run `shouldBe` 21
+    map fst viewB `shouldBe` map fst run
+    evalT (Always (SP (arr ((== Point2 2 2) . robotPos)))) viewB `shouldBe` True
+    evalT (Eventually (SP (arr ((/= Point2 0 0) . robotPos)))) (robotView "SimbotA" 1 run) `shouldBe` True
+    robotView "SimbotA" 2 run `shouldBe` []
+
+  it "robots never overlap each other (property)" $
+    forAllWorlds (tmp </> "afrp-test-robots.world") (genWorld defaultWorldMix { mixRobots = (2, 8) } notesBounds) $
+      runT defaultSimConfig { simDt = 0.05 } 10 wander wander
+           (Always (SP (arr (\ws -> robotGap ws >= -1e-9))))
+
+  it "a ball speeds up only when something touches it (property)" $
+    forAllWorlds (tmp </> "afrp-test-balls.world")
+                 (genWorld defaultWorldMix { mixBalls = (1, 4), mixRobots = (1, 5) } notesBounds) $ \w ->
+      runT defaultSimConfig { simDt = 0.05 } 15 wander wander (ballsSpeedUpOnlyOnContact 0.05 w) w
+
+  it "the notes' wall follower never comes within 1 mm of a wall in random corridors (property)" $
+    forAllWorlds (tmp </> "afrp-test-corridor.world") genCorridor $ \w ->
+      runT defaultSimConfig { simDt = 0.02 } corridorTime (rcFollowLeftWall 0.3 0.25) wander
+           (keepsClear 1e-3 w) w
+
+  it "a wall follower steering the wrong way is caught, in a world of at most 3 objects (property)" $ do
+    let file = tmp </> "afrp-test-broken.world"
+    result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 3, 0) } $
+      forAllWorlds file genCorridor $ \w ->
+        runT defaultSimConfig { simDt = 0.02 } corridorTime (rcFollowLeftWallBroken 0.3 0.25) wander
+             (keepsClear 1e-3 w) w
+    case result of
+      Failure { failingTestCase = shown : _ } -> do
+        written <- readWorldFile file
+        removeFile file
+        fmap length written `shouldSatisfy` either (const False) (<= 3)
+        fmap renderWorld written `shouldBe` Right shown
+        output result `shouldSatisfy` ("decided false at t = " `isInfixOf`)
+      _ -> expectationFailure ("the broken wall follower was not caught: " ++ output result)
