@@ -27,6 +27,7 @@ import qualified AFrob.RobotIOSpec
 import qualified AFrobRobotSim.ArenaSpec
 import qualified AFrobRobotSim.ClearanceSpec
 import qualified AFrobRobotSim.FlatArraySpec
+import qualified AFrobRobotSim.JSONSpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.BallsSpec
@@ -74,6 +75,7 @@ main = hspec $ do
   describe "AFrobRobotSim.Shapes"    AFrobRobotSim.ShapesSpec.spec
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
   describe "AFrobRobotSim.FlatArray" AFrobRobotSim.FlatArraySpec.spec
+  describe "AFrobRobotSim.JSON"      AFrobRobotSim.JSONSpec.spec
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
