@@ -28,6 +28,7 @@ import qualified AFrobRobotSim.ArenaSpec
 import qualified AFrobRobotSim.ClearanceSpec
 import qualified AFrobRobotSim.FlatArraySpec
 import qualified AFrobRobotSim.JSONSpec
+import qualified AFrobRobotSim.LogSpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.BallsSpec
@@ -76,6 +77,7 @@ main = hspec $ do
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
   describe "AFrobRobotSim.FlatArray" AFrobRobotSim.FlatArraySpec.spec
   describe "AFrobRobotSim.JSON"      AFrobRobotSim.JSONSpec.spec
+  describe "AFrobRobotSim.Log"       AFrobRobotSim.LogSpec.spec
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
