@@ -29,6 +29,7 @@ import qualified AFrobRobotSim.ClearanceSpec
 import qualified AFrobRobotSim.FlatArraySpec
 import qualified AFrobRobotSim.JSONSpec
 import qualified AFrobRobotSim.LogSpec
+import qualified AFrobRobotSim.ReplayBrowserSpec
 import qualified AFrobRobotSim.ReplaySpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.PhysicsSpec
@@ -80,6 +81,7 @@ main = hspec $ do
   describe "AFrobRobotSim.JSON"      AFrobRobotSim.JSONSpec.spec
   describe "AFrobRobotSim.Log"       AFrobRobotSim.LogSpec.spec
   describe "AFrobRobotSim.Replay"    AFrobRobotSim.ReplaySpec.spec
+  describe "AFrobRobotSim.Replay in Chromium" AFrobRobotSim.ReplayBrowserSpec.spec
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
