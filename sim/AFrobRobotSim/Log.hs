@@ -16,6 +16,9 @@
 -- the heading's change over the step that ended at the instant (0 at time
 -- 0), so they are what the robot did, not what its controller asked for.
 --
+-- The numbers of a frame are rounded: positions, angles, speeds and
+-- the charge to a millionth, times to a nanosecond.
+--
 -- Frames are the runner's: frame @f@ is the step nearest simulated time
 -- @f / fps@ (the first step is frame 0). A frame line carries the events
 -- and the messages of its period: the steps after the previous frame, up
@@ -175,9 +178,9 @@ newEvents cfg (Just p) s = reverse (bumps ++ scores)
 
 frameOf :: LogConfig -> LogState -> WorldState -> [LogEvent] -> [String] -> LogFrame
 frameOf cfg st s events lines' = LogFrame
-  { lfTime = wsTime s
+  { lfTime = roundTo 1e9 (wsTime s)
   , lfRobots = zipWith3 robotOf [0 ..] (wsRobots s) prevRobots
-  , lfBalls = map xy (wsBalls s)
+  , lfBalls = [ (r6 x, r6 y) | (x, y) <- map xy (wsBalls s) ]
   , lfScores = lcScores cfg s
   , lfEvents = events
   , lfConsole = [ l | l <- lines', not (any (\r -> ownLine r l /= Nothing) (wsRobots s)) ] }
@@ -196,17 +199,30 @@ frameOf cfg st s events lines' = LogFrame
           Point2 ox oy = robotOdometry r
           Point2 x y = robotPos r
       in LogRobot
-           { lrX = x, lrY = y, lrHeading = robotHeading r
-           , lrWheelLeft = v - omega * half, lrWheelRight = v + omega * half
-           , lrSpeed = v, lrRotVel = omega, lrBumper = robotStuck r
-           , lrRange = map (siRange input) rangeAngles
-           , lrSeen = [ LogSighting "robot" (Just ty) (Just k) a d | (ty, k, a, d) <- siRobots input ]
-                      ++ [ LogSighting "ball" Nothing Nothing a d | (a, d) <- siBalls input ]
+           { lrX = r6 x, lrY = r6 y, lrHeading = r6 (robotHeading r)
+           , lrWheelLeft = r6 (v - omega * half), lrWheelRight = r6 (v + omega * half)
+           , lrSpeed = r6 v, lrRotVel = r6 omega, lrBumper = robotStuck r
+           , lrRange = map (r6 . siRange input) rangeAngles
+           , lrSeenRobots = [ (ty, k, r6 a, r6 d) | (ty, k, a, d) <- siRobots input ]
+           , lrSeenBalls  = [ (r6 a, r6 d) | (a, d) <- siBalls input ]
            , lrBattery = case robotBattery r of
                BSHigh -> "high"; BSLow -> "low"; BSCritical -> "critical"
-           , lrCharge = robotCharge r, lrOdoX = ox, lrOdoY = oy
+           , lrCharge = r6 (robotCharge r), lrOdoX = r6 ox, lrOdoY = r6 oy
            , lrMessages = [ m | l <- lines', Just m <- [ownLine r l] ] }
     kindOfType ty = if ty == kindType SimbotB then SimbotB else SimbotA
+
+-- Frame values are rounded to a millionth (of a metre, radian, m/s):
+-- far finer than anything the page can show or a controller can act on,
+-- and it halves the size of a log.
+r6 :: Double -> Double
+r6 = roundTo 1e6
+
+-- Rounded to a multiple of @1 / k@ (non-finite numbers and numbers too
+-- large for the multiple to be exact stay as they are).
+roundTo :: Double -> Double -> Double
+roundTo k x
+  | isNaN x || isInfinite x || abs x * k > 1e15 = x
+  | otherwise = fromIntegral (round (x * k) :: Integer) / k
 
 -- A console line the robot printed, as (time, text): the simulator writes
 -- them as @[t] Type.id: text@.

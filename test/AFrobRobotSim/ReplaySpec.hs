@@ -6,6 +6,8 @@ import           System.Directory         (getTemporaryDirectory, removeFile)
 import           System.IO                (hClose, openTempFile)
 import           Test.Hspec
 
+import           AFrob                    (constant, ddVelDiff, mrFinalize)
+import           AFrobRobotSim            (defaultWorld, simulate)
 import           AFrobRobotSim.JSON
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.LogFixture
@@ -53,6 +55,14 @@ spec = do
     it "has the controls the brief names (fixed)" $
       mapM_ (\i -> page `shouldSatisfy` (("id=\"" ++ i ++ "\"") `isInfixOf`))
         ["world", "play", "back", "fwd", "slider", "speed", "rays", "trails", "sightings", "info", "time"]
+
+  describe "the page of the default world's 30-second run" $
+    it "stays under 3 MB (fixed)" $ do
+      let cfg = defaultLogConfig { lcWorld = defaultWorld, lcDt = 0.01, lcFps = 25 }
+          steer _ = constant (mrFinalize (ddVelDiff 0.6 0.8))
+          states = take 3001 (simulate 0.01 defaultWorld steer steer)
+          big = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing)
+      length big `shouldSatisfy` (< 3000000)
 
   describe "ReplayRecorder" $
     it "records, step by step, the same page as replayPage of the pure log (fixed)" $ do

@@ -22,7 +22,6 @@ module AFrobRobotSim.Log.Records
     -- * Frames
   , LogFrame (..)
   , LogRobot (..)
-  , LogSighting (..)
   , LogEvent (..)
     -- * The summary
   , LogSummary (..)
@@ -107,21 +106,15 @@ data LogRobot = LogRobot
   , lrRotVel        :: !Double     -- ^ rotational velocity (rad/s, counter-clockwise), over the last step
   , lrBumper        :: !Bool       -- ^ stuck against an obstacle
   , lrRange         :: [Double]    -- ^ range readings (m) at the header's angles
-  , lrSeen          :: [LogSighting] -- ^ what its tracker sees, nearest first
+  , lrSeenRobots    :: [(String, Int, Double, Double)]
+    -- ^ the robots its tracker sees, nearest first: type, id, angle
+    -- relative to its heading (rad), distance between centres (m)
+  , lrSeenBalls     :: [(Double, Double)]
+    -- ^ the balls its tracker sees, nearest first: angle (rad), distance (m)
   , lrBattery       :: String      -- ^ @"high"@, @"low"@ or @"critical"@
   , lrCharge        :: !Double     -- ^ battery charge, 1 = full
   , lrOdoX, lrOdoY  :: !Double     -- ^ what its odometry reads (m)
   , lrMessages      :: [(Double, String)] -- ^ lines it printed in the period, each with its time
-  } deriving (Eq, Show)
-
--- | A tracker sighting: a robot (type and id) or a ball, at an angle
--- relative to the seer's heading and a distance between centres.
-data LogSighting = LogSighting
-  { sgWhat     :: String       -- ^ @"robot"@ or @"ball"@
-  , sgType     :: Maybe String -- ^ a robot's type
-  , sgId       :: Maybe Int    -- ^ a robot's id
-  , sgAngle    :: !Double      -- ^ (rad)
-  , sgDistance :: !Double      -- ^ (m)
   } deriving (Eq, Show)
 
 -- | Something that happened at an instant.
@@ -169,14 +162,12 @@ logLineJSON (LineFrame f) = JObject
       [ ("x", num (lrX r)), ("y", num (lrY r)), ("heading", num (lrHeading r))
       , ("wheels", JArray [num (lrWheelLeft r), num (lrWheelRight r)])
       , ("v", num (lrSpeed r)), ("omega", num (lrRotVel r)), ("bumper", JBool (lrBumper r))
-      , ("range", JArray (map num (lrRange r))), ("seen", JArray (map sighting (lrSeen r)))
+      , ("range", JArray (map num (lrRange r)))
+      , ("seenRobots", JArray [ JArray [JString ty, int i, num a, num d] | (ty, i, a, d) <- lrSeenRobots r ])
+      , ("seenBalls", JArray (map xy (lrSeenBalls r)))
       , ("battery", JString (lrBattery r)), ("charge", num (lrCharge r))
       , ("odometry", xy (lrOdoX r, lrOdoY r))
       , ("messages", JArray [ JArray [num t, JString m] | (t, m) <- lrMessages r ]) ]
-    sighting s = JObject ([ ("what", JString (sgWhat s)) ]
-                          ++ maybe [] (\t -> [("type", JString t)]) (sgType s)
-                          ++ maybe [] (\i -> [("id", int i)]) (sgId s)
-                          ++ [ ("angle", num (sgAngle s)), ("distance", num (sgDistance s)) ])
     event e = JObject ([ ("t", num (evTime e)), ("kind", JString (evKind e)) ]
                        ++ maybe [] (\(ty, i) -> [("robot", JArray [JString ty, int i])]) (evRobot e)
                        ++ [ ("text", JString (evText e)) ])
@@ -239,14 +230,14 @@ logLineFromJSON v = do
       (ox, oy) <- f "odometry" toXY
       LogRobot <$> f "x" asNumber <*> f "y" asNumber <*> f "heading" asNumber <*> pure wl <*> pure wr
         <*> f "v" asNumber <*> f "omega" asNumber <*> f "bumper" asBool <*> f "range" (listOf asNumber)
-        <*> f "seen" (listOf sighting) <*> f "battery" asString <*> f "charge" asNumber
+        <*> f "seenRobots" (listOf seenRobot) <*> f "seenBalls" (listOf toXY) <*> f "battery" asString <*> f "charge" asNumber
         <*> pure ox <*> pure oy <*> f "messages" (listOf message)
     message m = asArray m >>= \xs -> case xs of
       [t, s] -> (,) <$> asNumber t <*> asString s
       _      -> Left "expected a message as [time, text]"
-    sighting s = LogSighting <$> (member "what" s >>= asString)
-      <*> (memberMaybe "type" s >>= traverse asString) <*> (memberMaybe "id" s >>= traverse asInt)
-      <*> (member "angle" s >>= asNumber) <*> (member "distance" s >>= asNumber)
+    seenRobot x = asArray x >>= \xs -> case xs of
+      [ty, i, a, d] -> (,,,) <$> asString ty <*> asInt i <*> asNumber a <*> asNumber d
+      _             -> Left "expected a sighting as [type, id, angle, distance]"
     event e = LogEvent <$> (member "t" e >>= asNumber) <*> (member "kind" e >>= asString)
       <*> (memberMaybe "robot" e >>= traverse robotRef) <*> (member "text" e >>= asString)
     robotRef r = asArray r >>= \xs -> case xs of

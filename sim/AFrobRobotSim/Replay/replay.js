@@ -7,6 +7,11 @@
   var header = lines[0];
   var frames = lines.filter(function (l) { return l.kind === 'frame'; });
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
+  if (frames.length === 0) {
+    document.getElementById('meta').textContent = 'This log has no frames: the run stopped before its first.';
+    window.afrpReplay = { header: header, summary: summary, frameCount: function () { return 0; } };
+    return;
+  }
   var canvas = document.getElementById('world');
   var ctx = canvas.getContext('2d');
   var $ = function (id) { return document.getElementById(id); };
@@ -85,11 +90,11 @@
         });
       }
       if ($('sightings').checked) {
-        r.seen.forEach(function (s) {
-          line(here, toCanvas(r.x + s.distance * Math.cos(r.heading + s.angle),
-                              r.y + s.distance * Math.sin(r.heading + s.angle)),
-               s.what === 'ball' ? 'rgba(200,110,0,0.8)' : 'rgba(120,40,160,0.8)', 1, [4, 3]);
-        });
+        var sight = function (a, d, colour) {
+          line(here, toCanvas(r.x + d * Math.cos(r.heading + a), r.y + d * Math.sin(r.heading + a)), colour, 1, [4, 3]);
+        };
+        r.seenRobots.forEach(function (s) { sight(s[2], s[3], 'rgba(120,40,160,0.8)'); });
+        r.seenBalls.forEach(function (s) { sight(s[0], s[1], 'rgba(200,110,0,0.8)'); });
       }
     });
     f.robots.forEach(function (r, i) {
@@ -126,11 +131,11 @@
     out.push('range     ' + header.rangeAngles.map(function (a, k) {
       return (names[k] || num(a, 2)) + ' ' + num(r.range[k], 2);
     }).join('  ') + ' m');
-    out.push('tracker   ' + (r.seen.length === 0 ? 'nothing' : ''));
-    r.seen.forEach(function (s) {
-      out.push('  ' + (s.what === 'robot' ? s.type + ' ' + s.id : 'ball') + ' at ' + num(s.angle, 2) +
-               ' rad, ' + num(s.distance, 2) + ' m');
+    out.push('tracker   ' + (r.seenRobots.length + r.seenBalls.length === 0 ? 'nothing' : ''));
+    r.seenRobots.forEach(function (s) {
+      out.push('  ' + s[0] + ' ' + s[1] + ' at ' + num(s[2], 2) + ' rad, ' + num(s[3], 2) + ' m');
     });
+    r.seenBalls.forEach(function (s) { out.push('  ball at ' + num(s[0], 2) + ' rad, ' + num(s[1], 2) + ' m'); });
     out.push('messages (up to now, newest last):');
     var msgs = [];
     for (var j = 0; j <= state.frame; j++) {
