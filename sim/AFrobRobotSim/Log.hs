@@ -258,7 +258,8 @@ writeLogState (LogWriter cfg h ref) s = do
   case mf of
     Just f  -> do
       hPutStrLn h (encodeLogLine (LineFrame f)) >> hFlush h
-      writeIORef ref (st', k + 1)
+      let k' = k + 1
+      k' `seq` writeIORef ref (st', k')
     Nothing -> st' `seq` writeIORef ref (st', k)
 
 -- | How many frame lines the writer has written.

@@ -120,7 +120,7 @@ data LogRobot = LogRobot
 -- | Something that happened at an instant.
 data LogEvent = LogEvent
   { evTime  :: !Double    -- ^ (s)
-  , evKind  :: String     -- ^ @"bump"@ (a robot got stuck), @"score"@, @"failure"@
+  , evKind  :: String     -- ^ @"bump"@ (a robot got stuck) or @"score"@
   , evRobot :: Maybe (String, Int) -- ^ the robot concerned, if one is
   , evText  :: String     -- ^ a sentence for people
   } deriving (Eq, Show)
@@ -132,7 +132,10 @@ data LogSummary = LogSummary
   , lsFrames      :: !Int          -- ^ frame lines written
   , lsWallTime    :: !Double       -- ^ wall-clock time of the run (s)
   , lsInterrupted :: !Bool         -- ^ stopped by Ctrl-C
-  , lsFailure     :: Maybe String  -- ^ a controller's failure, as printed
+  , lsFailure     :: Maybe String
+    -- ^ a controller's failure, as printed (@displayException@ of the
+    -- 'AFrobRobotSim.Simulator.ControllerError', which names the robot
+    -- and the time): the failing step has no state, so no frame shows it
   , lsScores      :: [(String, Int)] -- ^ final scores, if any
   } deriving (Eq, Show)
 
