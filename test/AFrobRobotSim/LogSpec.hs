@@ -5,6 +5,7 @@ module AFrobRobotSim.LogSpec (spec) where
 import           Data.List                (isInfixOf, isPrefixOf)
 import           System.Directory         (getTemporaryDirectory, removeFile)
 import           System.IO                (hClose, openTempFile)
+import           System.Process           (readProcessWithExitCode)
 import           Test.Hspec
 
 import           AFrob                    hiding (forAll)
@@ -81,6 +82,14 @@ spec = do
       map evKind evs `shouldBe` ["bump"]
       map evRobot evs `shouldBe` [Just ("SimbotB", 1)]
 
+  describe "score events" $
+    it "mark each rise of a score, at the step it rose, in the frame of its period (fixed)" $ do
+      let cfg = fixtureConfig { lcScores = \s -> [("seconds", floor (wsTime s + 1e-9))] }
+          fs  = logFrames cfg fixtureStates
+      [ (lfTime f, evTime e, evText e) | f <- fs, e <- lfEvents f ]
+        `shouldBe` [(1, 1, "seconds scores: 1"), (2, 2, "seconds scores: 2")]
+      lfScores (last fs) `shouldBe` [("seconds", 2)]
+
   describe "readLog" $ do
     it "reads back exactly the log of a real run (fixed)" $
       readLog fixtureLogText `shouldBe` Right fixtureLog
@@ -98,7 +107,7 @@ spec = do
     it "reads a log cut short (no summary) (fixed)" $
       fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
 
-  describe "LogWriter" $
+  describe "LogWriter" $ do
     it "writes, step by step, the same lines as the pure function (fixed)" $ do
       tmp <- getTemporaryDirectory
       (path, h) <- openTempFile tmp "afrp-log.jsonl"
@@ -109,3 +118,14 @@ spec = do
       r <- readLogFile path
       removeFile path
       r `shouldBe` Right fixtureLog
+    it "leaves a valid log, line by line, while the run goes (fixed)" $ do
+      tmp <- getTemporaryDirectory
+      (path, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      w <- openLogWriter fixtureConfig path
+      mapM_ (writeLogState w) (take 41 fixtureStates)
+      -- another process reads the file before the writer is closed
+      (_, txt, _) <- readProcessWithExitCode "cat" [path] ""
+      closeLogWriter w (LogSummary 0.4 41 (-1) 0 True Nothing [])
+      removeFile path
+      fmap (\l -> (length (rlFrames l), rlSummary l)) (readLog txt) `shouldBe` Right (11, Nothing)
