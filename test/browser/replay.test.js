@@ -57,6 +57,17 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
     check(near(await bodyPixel(info.first.robots[1], radiusPx), red, 2), 'at time 0 SimbotB 2 is drawn at its logged position');
     check(near(await pixelAt(-4.5, -4.5, 0, 0), background, 0), 'empty floor is the background colour');
 
+    // the toggles: SimbotA 1's front ray crosses (0, 0) at time 0 (its reading is 3 m from x = -2)
+    // (a 1-pixel line is anti-aliased over two rows of pixels: either is greenish)
+    const greenish = c => c[1] > c[0] + 40 && c[1] > c[2] + 40;
+    const rayRows = async () => [await pixelAt(0, 0, 0, -1), await pixelAt(0, 0, 0, 0)];
+    check((await rayRows()).some(greenish), 'range rays are drawn (front ray of SimbotA 1 at (0, 0))');
+    await page.uncheck('#rays');
+    check((await rayRows()).every(c => near(c, background, 0)), 'unticking "range rays" hides them');
+    await page.check('#rays');
+    await page.selectOption('#speed', '4');
+    check(await page.evaluate(() => document.getElementById('speed').value) === '4', 'the speed can be set');
+
     // drag the slider to the end (keyboard End on the focused range input: a real input event)
     await page.focus('#slider');
     await page.keyboard.press('End');
