@@ -27,6 +27,10 @@ import qualified AFrob.RobotIOSpec
 import qualified AFrobRobotSim.ArenaSpec
 import qualified AFrobRobotSim.ClearanceSpec
 import qualified AFrobRobotSim.FlatArraySpec
+import qualified AFrobRobotSim.JSONSpec
+import qualified AFrobRobotSim.LogSpec
+import qualified AFrobRobotSim.ReplayBrowserSpec
+import qualified AFrobRobotSim.ReplaySpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.BallsSpec
@@ -74,6 +78,10 @@ main = hspec $ do
   describe "AFrobRobotSim.Shapes"    AFrobRobotSim.ShapesSpec.spec
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
   describe "AFrobRobotSim.FlatArray" AFrobRobotSim.FlatArraySpec.spec
+  describe "AFrobRobotSim.JSON"      AFrobRobotSim.JSONSpec.spec
+  describe "AFrobRobotSim.Log"       AFrobRobotSim.LogSpec.spec
+  describe "AFrobRobotSim.Replay"    AFrobRobotSim.ReplaySpec.spec
+  describe "AFrobRobotSim.Replay in Chromium" AFrobRobotSim.ReplayBrowserSpec.spec
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec

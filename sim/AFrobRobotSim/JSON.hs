@@ -1,0 +1,345 @@
+-- |
+-- Module      : AFrobRobotSim.JSON
+-- Description : A small JSON value type, its encoder and its parser.
+--
+-- The run log and the replay page are JSON, and the library depends only
+-- on GHC's own packages, so it reads and writes JSON itself. This module
+-- knows nothing of robots: a value type, an encoder that writes RFC 8259
+-- JSON, and a parser that reports where a text stops being JSON.
+--
+-- = What the encoder writes
+--
+-- * Output is pure ASCII: every character outside printable ASCII is
+--   written as a @\\uXXXX@ escape (a surrogate pair above U+FFFF), so the
+--   text means the same whatever encoding a file is read with.
+-- * @\<@, @\>@ and @&@ are written as @\\u003c@, @\\u003e@ and @\\u0026@,
+--   and U+2028 and U+2029 as escapes too, so an encoded value can be
+--   pasted inside an HTML @\<script\>@ element: no string can close it
+--   (@\<\/script\>@) or open a comment there.
+-- * Surrogate code points (U+D800 to U+DFFF, which are not characters
+--   and cannot be encoded in UTF-8) are written as U+FFFD, the
+--   replacement character.
+-- * Numbers: an integral value of magnitude below 10^15 is written
+--   without a fraction (@3@, not @3.0@); any other finite number with
+--   enough digits to read back the same 'Double'. JSON has no NaN or
+--   infinity: __a non-finite number is written as @null@__.
+-- * No whitespace between tokens; object members in the order given.
+module AFrobRobotSim.JSON
+  ( -- * Values
+    JSON (..)
+    -- * Encoding
+  , encodeJSON
+  , encodeString
+  , encodeNumber
+    -- * Parsing
+  , parseJSON
+  , maxDepth
+    -- * Reading values
+  , member
+  , memberMaybe
+  , asNumber
+  , asInt
+  , asString
+  , asBool
+  , asArray
+  ) where
+
+import           Data.Char   (chr, isDigit, isHexDigit, ord, digitToInt)
+import           Numeric     (showHex)
+
+-- | A JSON value. An object keeps its members in order; a duplicate name
+-- is kept as it is (the lookups below take the first).
+data JSON
+  = JNull
+  | JBool !Bool
+  | JNumber !Double
+  | JString String
+  | JArray [JSON]
+  | JObject [(String, JSON)]
+  deriving (Eq, Show)
+
+-- | The JSON text of a value, on one line (see the module documentation
+-- for escapes and numbers).
+encodeJSON :: JSON -> String
+encodeJSON v = go v ""
+  where
+    go JNull         = showString "null"
+    go (JBool b)     = showString (if b then "true" else "false")
+    go (JNumber x)   = showString (encodeNumber x)
+    go (JString s)   = showString (encodeString s)
+    go (JArray xs)   = showChar '[' . commaSep (map go xs) . showChar ']'
+    go (JObject kvs) = showChar '{' . commaSep [ showString (encodeString k) . showChar ':' . go x
+                                               | (k, x) <- kvs ] . showChar '}'
+    commaSep []       = id
+    commaSep (f : fs) = f . foldr (\g acc -> showChar ',' . g . acc) id fs
+
+-- | A number's JSON text: @null@ for NaN and the infinities; integral
+-- values of magnitude below 10^15 without a fraction; otherwise Haskell's
+-- shortest exact form (@0.1@, @1.0e-2@), which is valid JSON.
+encodeNumber :: Double -> String
+encodeNumber x
+  | isNaN x || isInfinite x                           = "null"
+  | abs x < 1e15 && x == fromIntegral (round x :: Integer) = show (round x :: Integer)
+  | otherwise                                         = show x
+
+-- | A string's JSON text, quotes included (see the module documentation).
+encodeString :: String -> String
+encodeString s = '"' : foldr esc "\"" s
+  where
+    esc c rest = case c of
+      '"'  -> '\\' : '"' : rest
+      '\\' -> '\\' : '\\' : rest
+      '\n' -> '\\' : 'n' : rest
+      '\r' -> '\\' : 'r' : rest
+      '\t' -> '\\' : 't' : rest
+      '<'  -> u 0x3c rest
+      '>'  -> u 0x3e rest
+      '&'  -> u 0x26 rest
+      _ | n >= 0xD800 && n <= 0xDFFF -> u 0xFFFD rest
+        | n < 0x20 || n >= 0x7f && n <= 0xFFFF -> u n rest
+        | n > 0xFFFF -> let m = n - 0x10000
+                        in u (0xD800 + m `div` 0x400) (u (0xDC00 + m `mod` 0x400) rest)
+        | otherwise  -> c : rest
+      where n = ord c
+    u :: Int -> String -> String
+    u n rest = '\\' : 'u' : pad (showHex n "") ++ rest
+    pad h = replicate (4 - length h) '0' ++ h
+
+-- | How deeply arrays and objects may nest in a text 'parseJSON' accepts:
+-- 512 (deeper input is rejected, not a stack to exhaust).
+maxDepth :: Int
+maxDepth = 512
+
+-- A position in the text: line and column, both from 1.
+data Pos = Pos !Int !Int
+
+advance :: Pos -> Char -> Pos
+advance (Pos l _) '\n' = Pos (l + 1) 1
+advance (Pos l c) _    = Pos l (c + 1)
+
+-- The parser's input: the position and the rest of the text.
+data Input = Input !Pos String
+
+newtype P a = P { runP :: Input -> Either (Pos, String) (a, Input) }
+
+instance Functor P where
+  fmap f (P p) = P (\i -> fmap (\(a, i') -> (f a, i')) (p i))
+
+instance Applicative P where
+  pure a = P (\i -> Right (a, i))
+  P pf <*> P pa = P (\i -> case pf i of
+    Left e        -> Left e
+    Right (f, i') -> case pa i' of
+      Left e         -> Left e
+      Right (a, i'') -> Right (f a, i''))
+
+instance Monad P where
+  P p >>= k = P (\i -> case p i of
+    Left e        -> Left e
+    Right (a, i') -> runP (k a) i')
+
+failHere :: String -> P a
+failHere msg = P (\(Input pos _) -> Left (pos, msg))
+
+peek :: P (Maybe Char)
+peek = P (\i@(Input _ s) -> Right (case s of { c : _ -> Just c; [] -> Nothing }, i))
+
+next :: P Char
+next = P (\(Input pos s) -> case s of
+  c : rest -> Right (c, Input (advance pos c) rest)
+  []       -> Left (pos, "unexpected end of input"))
+
+skipSpace :: P ()
+skipSpace = P (\(Input pos s) -> let go p (c : r) | c `elem` " \t\r\n" = go (advance p c) r
+                                     go p r = Input p r
+                                 in Right ((), go pos s))
+
+-- What the next character is, for messages.
+describeNext :: Maybe Char -> String
+describeNext Nothing  = "end of input"
+describeNext (Just c) = show c
+
+expect :: Char -> P ()
+expect c = do
+  m <- peek
+  if m == Just c then () <$ next
+    else failHere ("expected " ++ show c ++ ", found " ++ describeNext m)
+
+-- | Parse a JSON text (one value, with optional whitespace around it).
+-- An error says where, as @line L, column C: what was expected@; a
+-- @null@ stays 'JNull' (the readers of this library take it, in a place
+-- of a number, for a non-finite number).
+parseJSON :: String -> Either String JSON
+parseJSON txt = case runP (skipSpace *> value 0 <* skipSpace <* end) (Input (Pos 1 1) txt) of
+  Left (Pos l c, msg) -> Left ("line " ++ show l ++ ", column " ++ show c ++ ": " ++ msg)
+  Right (v, _)        -> Right v
+  where
+    end = peek >>= \m -> case m of
+      Nothing -> pure ()
+      Just _  -> failHere ("expected the end of the text, found " ++ describeNext m)
+
+value :: Int -> P JSON
+value depth = do
+  m <- peek
+  case m of
+    Just '{' -> nested (JObject <$> (next *> skipSpace *> members))
+    Just '[' -> nested (JArray <$> (next *> skipSpace *> elements))
+    Just '"' -> JString <$> stringLit
+    Just 't' -> JBool True <$ keyword "true"
+    Just 'f' -> JBool False <$ keyword "false"
+    Just 'n' -> JNull <$ keyword "null"
+    Just c | c == '-' || isDigit c -> JNumber <$> number
+    _ -> failHere ("expected a JSON value, found " ++ describeNext m)
+  where
+    nested p | depth >= maxDepth = failHere ("nested more than " ++ show maxDepth ++ " deep")
+             | otherwise         = p
+    members = peek >>= \m -> case m of
+      Just '}' -> [] <$ next
+      _        -> let one = do
+                        k <- skipSpace *> (peek >>= \q -> if q == Just '"' then stringLit
+                                             else failHere ("expected a member name (a string), found "
+                                                            ++ describeNext q))
+                        skipSpace *> expect ':' *> skipSpace
+                        x <- value (depth + 1)
+                        skipSpace
+                        pure (k, x)
+                      more = peek >>= \q -> case q of
+                        Just ',' -> next *> ((:) <$> one <*> more)
+                        Just '}' -> [] <$ next
+                        _        -> failHere ("expected ',' or '}', found " ++ describeNext q)
+                  in (:) <$> one <*> more
+    elements = peek >>= \m -> case m of
+      Just ']' -> [] <$ next
+      _        -> let one = skipSpace *> value (depth + 1) <* skipSpace
+                      more = peek >>= \q -> case q of
+                        Just ',' -> next *> ((:) <$> one <*> more)
+                        Just ']' -> [] <$ next
+                        _        -> failHere ("expected ',' or ']', found " ++ describeNext q)
+                  in (:) <$> one <*> more
+
+keyword :: String -> P ()
+keyword w = mapM_ (\c -> peek >>= \m -> if m == Just c then () <$ next
+                                        else failHere ("expected " ++ show w ++ ", found " ++ describeNext m)) w
+
+number :: P Double
+number = do
+  start <- P (\i@(Input pos _) -> Right (pos, i))
+  sign <- optionalChar '-'
+  int  <- digits1 "a digit"
+  case int of
+    '0' : _ : _ -> P (\_ -> Left (start, "a number may not have a leading zero"))
+    _           -> pure ()
+  frac <- peek >>= \m -> if m == Just '.' then next *> (('.' :) <$> digits1 "a digit after '.'") else pure ""
+  ex   <- peek >>= \m -> if m == Just 'e' || m == Just 'E'
+            then do
+              _ <- next
+              s <- peek >>= \q -> if q == Just '+' || q == Just '-' then (: []) <$> next else pure ""
+              ds <- digits1 "a digit in the exponent"
+              pure ('e' : filter (/= '+') s ++ ds)
+            else pure ""
+  let frac' = if null frac then ".0" else frac
+  pure (read (sign ++ int ++ frac' ++ clampExp ex))
+  where
+    optionalChar c = peek >>= \m -> if m == Just c then (: []) <$> next else pure ""
+    digits1 what = do
+      m <- peek
+      case m of
+        Just c | isDigit c -> manyDigits
+        _ -> failHere ("expected " ++ what ++ ", found " ++ describeNext m)
+    manyDigits = peek >>= \m -> case m of
+      Just c | isDigit c -> (:) <$> next <*> manyDigits
+      _                  -> pure ""
+    -- 'read' of an exponent of millions of digits would take that long:
+    -- any exponent beyond +-9999 is an overflow or underflow anyway.
+    clampExp ""        = ""
+    clampExp ('e' : r) = let (s, ds) = span (== '-') r
+                             ds' = dropWhile (== '0') ds
+                         in 'e' : s ++ (if length ds' > 4 then "9999" else if null ds' then "0" else ds')
+    clampExp r         = r
+
+stringLit :: P String
+stringLit = expect '"' *> go
+  where
+    go = next >>= \c -> case c of
+      '"'  -> pure ""
+      '\\' -> escape >>= \e -> (e :) <$> go
+      _ | ord c < 0x20 -> backOne ("a control character (code " ++ show (ord c)
+                                   ++ ") must be escaped in a string")
+        | otherwise    -> (c :) <$> go
+    -- report a character just consumed at its own column
+    backOne msg = P (\(Input (Pos l col) _) -> Left (Pos l (col - 1), msg))
+    escape = next >>= \c -> case c of
+      '"'  -> pure '"'
+      '\\' -> pure '\\'
+      '/'  -> pure '/'
+      'b'  -> pure '\b'
+      'f'  -> pure '\f'
+      'n'  -> pure '\n'
+      'r'  -> pure '\r'
+      't'  -> pure '\t'
+      'u'  -> hex4 >>= \h ->
+        if h >= 0xD800 && h <= 0xDBFF
+          then lowSurrogate h
+          else pure (chr h)
+      _    -> backOne ("unknown escape \\" ++ [c])
+    lowSurrogate h = P (\i@(Input _ s) -> case s of
+      '\\' : 'u' : _ -> case runP (next *> next *> hex4) i of
+        Right (l, i') | l >= 0xDC00 && l <= 0xDFFF ->
+          Right (chr (0x10000 + (h - 0xD800) * 0x400 + (l - 0xDC00)), i')
+        _ -> Right (chr h, i)
+      _ -> Right (chr h, i))
+    hex4 = do
+      ds <- sequence (replicate 4 (peek >>= \m -> case m of
+              Just d | isHexDigit d -> next
+              _ -> failHere ("expected four hex digits after \\u, found " ++ describeNext m)))
+      pure (foldl (\a d -> a * 16 + digitToInt d) 0 ds)
+
+-- | The value of an object's member (the first of that name), or an error
+-- naming the member.
+member :: String -> JSON -> Either String JSON
+member k (JObject kvs) = maybe (Left ("missing field " ++ show k)) Right (lookup k kvs)
+member k _             = Left ("expected an object with field " ++ show k)
+
+-- | The value of an object's member, 'Nothing' when it is absent or
+-- @null@.
+memberMaybe :: String -> JSON -> Either String (Maybe JSON)
+memberMaybe k (JObject kvs) = Right (case lookup k kvs of
+                                       Just JNull -> Nothing
+                                       other      -> other)
+memberMaybe k _             = Left ("expected an object with field " ++ show k)
+
+-- | A number; @null@ reads as NaN (how the encoder writes a non-finite
+-- number).
+asNumber :: JSON -> Either String Double
+asNumber (JNumber x) = Right x
+asNumber JNull       = Right (0 / 0)
+asNumber v           = Left ("expected a number, found " ++ kind v)
+
+-- | An integral number.
+asInt :: JSON -> Either String Int
+asInt (JNumber x) | x == fromIntegral (round x :: Int) = Right (round x)
+asInt v = Left ("expected an integer, found " ++ kind v)
+
+-- | A string.
+asString :: JSON -> Either String String
+asString (JString s) = Right s
+asString v           = Left ("expected a string, found " ++ kind v)
+
+-- | A Boolean.
+asBool :: JSON -> Either String Bool
+asBool (JBool b) = Right b
+asBool v         = Left ("expected true or false, found " ++ kind v)
+
+-- | An array's elements.
+asArray :: JSON -> Either String [JSON]
+asArray (JArray xs) = Right xs
+asArray v           = Left ("expected an array, found " ++ kind v)
+
+kind :: JSON -> String
+kind v = case v of
+  JNull     -> "null"
+  JBool _   -> "a Boolean"
+  JNumber x -> "the number " ++ encodeNumber x
+  JString _ -> "a string"
+  JArray _  -> "an array"
+  JObject _ -> "an object"

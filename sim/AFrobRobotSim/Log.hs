@@ -1,0 +1,323 @@
+-- |
+-- Module      : AFrobRobotSim.Log
+-- Description : The run log: JSON lines made from a simulation's states.
+--
+-- A run log is what a person needs to answer "what did my robot see and
+-- do at 12.3 s?" after a headless run, and what the replay page draws
+-- ("AFrobRobotSim.Replay"). Its format is documented field by field in
+-- @docs/LOG.md@; the records are in "AFrobRobotSim.Log.Records".
+--
+-- The log is made from what 'simulate' gives, the stream of
+-- 'WorldState's, one per step, and nothing else: the simulator does not
+-- report wheel speeds or sensor readings, so they are recomputed here.
+-- Range readings and tracker sightings are the sensors'
+-- ('AFrobRobotSim.Sensors.senseRobot') at the frame's instant, exactly
+-- what the controllers saw; wheel speeds and rotational velocity come from
+-- the heading's change over the step that ended at the instant (0 at time
+-- 0), so they are what the robot did, not what its controller asked for.
+--
+-- The numbers of a frame are rounded: positions, angles, speeds and
+-- the charge to a millionth, times to a nanosecond.
+--
+-- Frames are the runner's: frame @f@ is the step nearest simulated time
+-- @f / fps@ (the first step is frame 0). A frame line carries the events
+-- and the messages of its period: the steps after the previous frame, up
+-- to and including its own.
+--
+-- Three ways to use it: 'logStep' one state at a time (what a streaming
+-- writer needs), 'logFrames' on a whole list, and 'LogWriter', which
+-- writes a file as the run goes.
+module AFrobRobotSim.Log
+  ( -- * Settings
+    LogConfig (..)
+  , defaultLogConfig
+    -- * From states to records
+  , logHeader
+  , LogState
+  , logStart
+  , logStep
+  , logFrames
+  , isFrameStep
+    -- * Writing a file as the run goes
+  , LogWriter
+  , openLogWriter
+  , writeLogState
+  , closeLogWriter
+  , logWriterFrames
+    -- * Reading a log back
+  , RunLog (..)
+  , readLog
+  , readLogFile
+    -- * The records
+  , module AFrobRobotSim.Log.Records
+  ) where
+
+import           Data.IORef
+import           Data.List                 (stripPrefix)
+import           System.IO
+
+import           AFrob.Angle               (normalizeAngle)
+import           AFrob.RobotIO             (BatteryStatus (..))
+import           AFRP.Geometry
+import           AFrob.Dimensions          (Position2)
+import           AFrobRobotSim.Arena       (Arena, arenaOf)
+import           AFrobRobotSim.Balls       (Ball (..))
+import           AFrobRobotSim.Log.Records
+import           AFrobRobotSim.Physics     (mkRobot)
+import           AFrobRobotSim.Robot
+import           AFrobRobotSim.Sensors
+import           AFrobRobotSim.Simulator
+import           AFrobRobotSim.World
+
+-- | What a log needs besides the states: the world and how it was run.
+data LogConfig = LogConfig
+  { lcBounds      :: Bounds                    -- ^ the world's extent
+  , lcWorld       :: WorldTemplate             -- ^ the world at time 0
+  , lcDt          :: Double                    -- ^ the simulation's time step (s)
+  , lcFps         :: Double                    -- ^ frames per simulated second
+  , lcSeed        :: Int                       -- ^ the odometry noise's seed
+  , lcCommandLine :: [String]                  -- ^ the program's name and arguments
+  , lcGoals       :: [LogRect]                 -- ^ goal areas to draw, if any
+  , lcScores      :: WorldState -> [(String, Int)]
+    -- ^ the program's scores in a state; a rise between two steps is a
+    -- @"score"@ event
+  }
+
+-- | The notes' world bounds, an empty world, dt 0.01 s, 25 fps, seed 0,
+-- no command line, no goals, no scores.
+defaultLogConfig :: LogConfig
+defaultLogConfig = LogConfig notesBounds [] 0.01 25 0 [] [] (const [])
+
+-- | The header line of a run.
+logHeader :: LogConfig -> LogHeader
+logHeader cfg = LogHeader
+  { lhFormat = logFormatName, lhVersion = logFormatVersion
+  , lhBounds = let Bounds x0 y0 x1 y1 = lcBounds cfg
+               in LogRect ((x0 + x1) / 2) ((y0 + y1) / 2) (x1 - x0) (y1 - y0)
+  , lhWalls  = [ box o | o <- world, isWall o ]
+  , lhBlocks = [ box o | o@OTBlock {} <- world ]
+  , lhBalls  = [ xy (otPos o) | o@OTBall {} <- world ]
+  , lhBallRadius = ballDiameter / 2
+  , lhGoals  = lcGoals cfg
+  , lhRobots = [ LogRobotInfo (kindType k) (otRId o) (simbotDiameter / 2) (kindWheelBase k)
+                              (kindWSMax k) sensorNames
+               | o <- world, Just k <- [robotKindOf o] ]
+  , lhRangeAngles = rangeAngles, lhRangeMax = rangeFinderMax, lhTrackerRange = trackerRange
+  , lhDt = lcDt cfg, lhFps = lcFps cfg, lhSeed = lcSeed cfg, lhCommandLine = lcCommandLine cfg }
+  where
+    world = lcWorld cfg
+    isWall o = case o of { OTVWall {} -> True; OTHWall {} -> True; _ -> False }
+    box o = let Point2 x y = otPos o
+                (hw, hh)   = objectHalfSize o
+            in LogRect x y (2 * hw) (2 * hh)
+    sensorNames = ["odometry", "bumper", "battery", "rangeFinder", "tracker", "console"]
+
+-- | The angles of the logged range readings: front, left, back, right
+-- (0, pi/2, pi, -pi/2), those of 'AFrob.rfFront' and its siblings.
+rangeAngles :: [Double]
+rangeAngles = [0, pi / 2, pi, -pi / 2]
+
+xy :: Position2 -> (Double, Double)
+xy (Point2 x y) = (x, y)
+
+-- | What 'logStep' remembers between steps.
+data LogState = LogState
+  { stStep    :: !Int
+  , stPrev    :: Maybe WorldState     -- the previous step's state
+  , stEvents  :: [LogEvent]           -- of the period so far, newest first
+  , stLines   :: [String]             -- console lines of the period so far, newest first
+  , stArena   :: Arena
+  }
+
+-- | The state before the first step.
+logStart :: LogConfig -> LogState
+logStart cfg = LogState 0 Nothing [] [] (arenaOf (lcBounds cfg) (lcWorld cfg))
+
+-- | Is step @n@ (from 0) a frame's step, at @fps@ frames per second and
+-- time step @dt@: the step nearest a multiple of @1 / fps@ (and step 0)?
+isFrameStep :: Double -> Double -> Int -> Bool
+isFrameStep dt fps n =
+  let f = fromIntegral n * dt * fps
+  in n == 0 || abs (f - fromIntegral (round f :: Int)) * 2 < dt * fps
+
+-- | Take the next step's state (the first call gets the state at time 0):
+-- the new 'LogState', and the frame record when this step is a frame's.
+logStep :: LogConfig -> LogState -> WorldState -> (LogState, Maybe LogFrame)
+logStep cfg st s
+  | isFrameStep (lcDt cfg) (lcFps cfg) n =
+      (st' { stEvents = [], stLines = [] }, Just (frameOf cfg st s (reverse events) (reverse lines')))
+  | otherwise = (st', Nothing)
+  where
+    n       = stStep st
+    events  = newEvents cfg (stPrev st) s ++ stEvents st
+    lines'  = reverse (wsMessages s) ++ stLines st
+    st'     = st { stStep = n + 1, stPrev = Just s, stEvents = events, stLines = lines' }
+
+-- | The frames of a list of states (every step, from time 0), lazily.
+logFrames :: LogConfig -> [WorldState] -> [LogFrame]
+logFrames cfg = go (logStart cfg)
+  where
+    go _ []       = []
+    go st (s : ss) = case logStep cfg st s of
+      (st', Just f)  -> f : go st' ss
+      (st', Nothing) -> go st' ss
+
+-- Events from one step to the next (newest first): a robot that got
+-- stuck, a score that rose.
+newEvents :: LogConfig -> Maybe WorldState -> WorldState -> [LogEvent]
+newEvents _ Nothing _ = []
+newEvents cfg (Just p) s = reverse (bumps ++ scores)
+  where
+    t = wsTime s
+    bumps = [ LogEvent t "bump" (Just (robotType r, robotId r))
+                (robotType r ++ " " ++ show (robotId r) ++ " bumped into something")
+            | (r0, r) <- zip (wsRobots p) (wsRobots s), robotStuck r, not (robotStuck r0) ]
+    before = lcScores cfg p
+    scores = [ LogEvent t "score" Nothing (k ++ " scores: " ++ show v)
+             | (k, v) <- lcScores cfg s, maybe True (< v) (lookup k before) , v > 0 ]
+
+frameOf :: LogConfig -> LogState -> WorldState -> [LogEvent] -> [String] -> LogFrame
+frameOf cfg st s events lines' = LogFrame
+  { lfTime = roundTo 1e9 (wsTime s)
+  , lfRobots = zipWith3 robotOf [0 ..] (wsRobots s) prevRobots
+  , lfBalls = [ (r6 x, r6 y) | (x, y) <- map xy (wsBalls s) ]
+  , lfScores = lcScores cfg s
+  , lfEvents = events
+  , lfConsole = [ l | l <- lines', not (any (\r -> ownLine r l /= Nothing) (wsRobots s)) ] }
+  where
+    prevRobots = maybe (map Just (wsRobots s)) (map Just . wsRobots) (stPrev st) ++ repeat Nothing
+    physical = [ mkRobot (kindOfType (robotType r)) (robotId r) (robotPos r) (robotHeading r)
+                         (robotSpeed r) (robotStuck r) (robotCharge r) | r <- wsRobots s ]
+    ctx = SenseContext (stArena st) physical [ Ball p zeroVector | p <- wsBalls s ]
+    robotOf i r prev =
+      let input = senseRobot ctx i (robotOdometry r, robotHeading r) Nothing
+          omega = case (prev, stPrev st) of
+            (Just r0, Just _) | lcDt cfg > 0 -> normalizeAngle (robotHeading r - robotHeading r0) / lcDt cfg
+            _                                -> 0
+          half = kindWheelBase (kindOfType (robotType r)) / 2
+          v = robotSpeed r
+          Point2 ox oy = robotOdometry r
+          Point2 x y = robotPos r
+      in LogRobot
+           { lrX = r6 x, lrY = r6 y, lrHeading = r6 (robotHeading r)
+           , lrWheelLeft = r6 (v - omega * half), lrWheelRight = r6 (v + omega * half)
+           , lrSpeed = r6 v, lrRotVel = r6 omega, lrBumper = robotStuck r
+           , lrRange = map (r6 . siRange input) rangeAngles
+           , lrSeenRobots = [ (ty, k, r6 a, r6 d) | (ty, k, a, d) <- siRobots input ]
+           , lrSeenBalls  = [ (r6 a, r6 d) | (a, d) <- siBalls input ]
+           , lrBattery = case robotBattery r of
+               BSHigh -> "high"; BSLow -> "low"; BSCritical -> "critical"
+           , lrCharge = r6 (robotCharge r), lrOdoX = r6 ox, lrOdoY = r6 oy
+           , lrMessages = [ m | l <- lines', Just m <- [ownLine r l] ] }
+    kindOfType ty = if ty == kindType SimbotB then SimbotB else SimbotA
+
+-- Frame values are rounded to a millionth (of a metre, radian, m/s):
+-- far finer than anything the page can show or a controller can act on,
+-- and it halves the size of a log.
+r6 :: Double -> Double
+r6 = roundTo 1e6
+
+-- Rounded to a multiple of @1 / k@ (non-finite numbers and numbers too
+-- large for the multiple to be exact stay as they are).
+roundTo :: Double -> Double -> Double
+roundTo k x
+  | isNaN x || isInfinite x || abs x * k > 1e15 = x
+  | otherwise = fromIntegral (round (x * k) :: Integer) / k
+
+-- A console line the robot printed, as (time, text): the simulator writes
+-- them as @[t] Type.id: text@.
+ownLine :: RobotState -> String -> Maybe (Double, String)
+ownLine r l = case l of
+  '[' : rest | (ts, ']' : ' ' : body) <- break (== ']') rest
+             , [(t, "")] <- reads ts
+             , Just txt <- stripPrefix (robotType r ++ "." ++ show (robotId r) ++ ": ") body
+             -> Just (t, txt)
+  _ -> Nothing
+
+-- | A log file being written: the header at once, a frame line for every
+-- frame step, the summary at the end, each line flushed as it is written
+-- so that a run that stops (Ctrl-C, a crash) leaves a log that is valid up
+-- to its last frame.
+data LogWriter = LogWriter LogConfig Handle (IORef (LogState, Int))
+
+-- | Create (or truncate) the file and write the header.
+openLogWriter :: LogConfig -> FilePath -> IO LogWriter
+openLogWriter cfg path = do
+  h <- openFile path WriteMode
+  hSetEncoding h utf8   -- the encoder writes ASCII only; this is for safety
+  hSetBuffering h (BlockBuffering Nothing)
+  hPutStrLn h (encodeLogLine (LineHeader (logHeader cfg))) >> hFlush h
+  LogWriter cfg h <$> newIORef (logStart cfg, 0)
+
+-- | Give the writer the next step's state (call it for every step, the
+-- first at time 0); it writes a frame line when the step is a frame's.
+writeLogState :: LogWriter -> WorldState -> IO ()
+writeLogState (LogWriter cfg h ref) s = do
+  (st, k) <- readIORef ref
+  let (st', mf) = logStep cfg st s
+  case mf of
+    Just f  -> do
+      hPutStrLn h (encodeLogLine (LineFrame f)) >> hFlush h
+      let k' = k + 1
+      k' `seq` writeIORef ref (st', k')
+    Nothing -> st' `seq` writeIORef ref (st', k)
+
+-- | How many frame lines the writer has written.
+logWriterFrames :: LogWriter -> IO Int
+logWriterFrames (LogWriter _ _ ref) = snd <$> readIORef ref
+
+-- | Write the summary line and close the file. Pass the summary the
+-- runner prints ('lsFrames' is taken from the writer's count when it is
+-- negative).
+closeLogWriter :: LogWriter -> LogSummary -> IO ()
+closeLogWriter w@(LogWriter _ h _) s = do
+  k <- logWriterFrames w
+  let s' = if lsFrames s < 0 then s { lsFrames = k } else s
+  hPutStrLn h (encodeLogLine (LineSummary s')) >> hClose h
+
+-- | A log read back.
+data RunLog = RunLog
+  { rlHeader  :: LogHeader
+  , rlFrames  :: [LogFrame]
+  , rlSummary :: Maybe LogSummary  -- ^ absent when the run stopped before writing it
+  } deriving (Eq, Show)
+
+-- | Parse a log's text: a header of this format and version, frames, and
+-- at most one summary, last. Errors say @line N: ...@ (or @line N,
+-- column C: ...@ for a line that is not JSON). Blank lines are
+-- ignored.
+readLog :: String -> Either String RunLog
+readLog txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all (`elem` " \t\r") l) ] of
+  [] -> Left "line 1: an empty log (expected a header line)"
+  (i0, l0) : rest -> do
+    h <- at i0 (decodeLogLine l0) >>= \ln -> case ln of
+      LineHeader h -> Right h
+      _            -> Left ("line " ++ show i0 ++ ": expected the header line first")
+    at i0 (checkVersion h)
+    go h [] rest
+  where
+    -- a line's JSON error is at "line 1, column C" of that line
+    at i = either (\e -> Left ("line " ++ show i ++ maybe (": " ++ e) (", " ++) (stripPrefix "line 1, " e))) Right
+    checkVersion h
+      | lhFormat h /= logFormatName = Left ("not an afrp log (format " ++ show (lhFormat h) ++ ")")
+      | lhVersion h /= logFormatVersion =
+          Left ("a log of version " ++ show (lhVersion h) ++ "; this reader reads version "
+                ++ show logFormatVersion)
+      | otherwise = Right ()
+    go h acc [] = Right (RunLog h (reverse acc) Nothing)
+    go h acc ((i, l) : rest) = at i (decodeLogLine l) >>= \ln -> case ln of
+      LineFrame f   -> go h (f : acc) rest
+      LineSummary s -> case rest of
+        []           -> Right (RunLog h (reverse acc) (Just s))
+        (j, _) : _   -> Left ("line " ++ show j ++ ": a line after the summary")
+      LineHeader _  -> Left ("line " ++ show i ++ ": a second header")
+
+-- | 'readLog' of a file (read as UTF-8), the error prefixed with its name.
+readLogFile :: FilePath -> IO (Either String RunLog)
+readLogFile path = do
+  h <- openFile path ReadMode
+  hSetEncoding h utf8
+  txt <- hGetContents h
+  let r = either (\e -> Left (path ++ ": " ++ e)) Right (readLog txt)
+  either (const ()) (const ()) r `seq` hClose h
+  pure r

@@ -1,0 +1,267 @@
+-- |
+-- Module      : AFrobRobotSim.Log.Records
+-- Description : The records of a run log and their JSON, line by line.
+--
+-- A run log (@docs/LOG.md@) is JSON lines: a 'LogHeader', then one
+-- 'LogFrame' per frame period, then a 'LogSummary'. This module holds the
+-- plain records and their JSON both ways; "AFrobRobotSim.Log" makes them
+-- from a simulation and writes and reads files. Every position is in the
+-- world's frame (metres, x to the right, y up), every heading and angle in
+-- radians (headings counter-clockwise from +x, sensor angles relative to
+-- the robot's heading, counter-clockwise positive), times in seconds of
+-- simulated time.
+module AFrobRobotSim.Log.Records
+  ( -- * Lines
+    LogLine (..)
+  , logFormatName
+  , logFormatVersion
+    -- * The header
+  , LogHeader (..)
+  , LogRect (..)
+  , LogRobotInfo (..)
+    -- * Frames
+  , LogFrame (..)
+  , LogRobot (..)
+  , LogEvent (..)
+    -- * The summary
+  , LogSummary (..)
+    -- * JSON
+  , logLineJSON
+  , encodeLogLine
+  , logLineFromJSON
+  , decodeLogLine
+  ) where
+
+import           AFrobRobotSim.JSON
+
+-- | The format's name, the header's @format@: @"afrp-log"@.
+logFormatName :: String
+logFormatName = "afrp-log"
+
+-- | The format's version, the header's @version@: 1. A reader refuses a
+-- log of another version.
+logFormatVersion :: Int
+logFormatVersion = 1
+
+-- | One line of a log.
+data LogLine
+  = LineHeader LogHeader
+  | LineFrame LogFrame
+  | LineSummary LogSummary
+  deriving (Eq, Show)
+
+-- | An axis-aligned rectangle, by its centre and size (m).
+data LogRect = LogRect
+  { rectX :: !Double, rectY :: !Double, rectWidth :: !Double, rectHeight :: !Double }
+  deriving (Eq, Show)
+
+-- | The first line: what the run was, and the world at time 0.
+data LogHeader = LogHeader
+  { lhFormat       :: String          -- ^ 'logFormatName'
+  , lhVersion      :: !Int            -- ^ 'logFormatVersion'
+  , lhBounds       :: LogRect         -- ^ the world's extent
+  , lhWalls        :: [LogRect]       -- ^ wall segments
+  , lhBlocks       :: [LogRect]       -- ^ blocks
+  , lhBalls        :: [(Double, Double)] -- ^ balls' centres at time 0
+  , lhBallRadius   :: !Double         -- ^ a ball's radius (m)
+  , lhGoals        :: [LogRect]       -- ^ goal areas, if the program has any
+  , lhRobots       :: [LogRobotInfo]  -- ^ every robot, in template order
+  , lhRangeAngles  :: [Double]        -- ^ the angles of the logged range readings (rad, relative to the heading)
+  , lhRangeMax     :: !Double         -- ^ the range finder's maximum range (m)
+  , lhTrackerRange :: !Double         -- ^ the tracker's range, centre to centre (m)
+  , lhDt           :: !Double         -- ^ the simulation's time step (s)
+  , lhFps          :: !Double         -- ^ frames per simulated second: one frame line per 1/fps s
+  , lhSeed         :: !Int            -- ^ the seed of the odometry noise
+  , lhCommandLine  :: [String]        -- ^ the program's name and arguments
+  } deriving (Eq, Show)
+
+-- | A robot as the header lists it.
+data LogRobotInfo = LogRobotInfo
+  { riType          :: String   -- ^ @"SimbotA"@ or @"SimbotB"@
+  , riId            :: !Int     -- ^ its id, unique within its type
+  , riRadius        :: !Double  -- ^ body radius (m)
+  , riWheelBase     :: !Double  -- ^ distance between the wheels (m)
+  , riMaxWheelSpeed :: !Double  -- ^ (m/s)
+  , riSensors       :: [String] -- ^ the sensors it has, by name
+  } deriving (Eq, Show)
+
+-- | One frame period: the world at the frame's instant, and what happened
+-- since the previous frame.
+data LogFrame = LogFrame
+  { lfTime     :: !Double          -- ^ simulated time of the frame (s)
+  , lfRobots   :: [LogRobot]       -- ^ every robot, in the header's order
+  , lfBalls    :: [(Double, Double)] -- ^ every ball's centre, in template order
+  , lfScores   :: [(String, Int)]  -- ^ the program's scores now, if it keeps any
+  , lfEvents   :: [LogEvent]       -- ^ events since the previous frame (after it, up to this one)
+  , lfConsole  :: [String]         -- ^ console lines of the period that no robot printed
+  } deriving (Eq, Show)
+
+-- | One robot at a frame's instant.
+data LogRobot = LogRobot
+  { lrX, lrY        :: !Double     -- ^ true position of its centre (m)
+  , lrHeading       :: !Double     -- ^ true heading (rad)
+  , lrWheelLeft     :: !Double     -- ^ left wheel speed (m/s), over the last step
+  , lrWheelRight    :: !Double     -- ^ right wheel speed (m/s), over the last step
+  , lrSpeed         :: !Double     -- ^ translational velocity (m/s, signed: negative backwards)
+  , lrRotVel        :: !Double     -- ^ rotational velocity (rad/s, counter-clockwise), over the last step
+  , lrBumper        :: !Bool       -- ^ stuck against an obstacle
+  , lrRange         :: [Double]    -- ^ range readings (m) at the header's angles
+  , lrSeenRobots    :: [(String, Int, Double, Double)]
+    -- ^ the robots its tracker sees, nearest first: type, id, angle
+    -- relative to its heading (rad), distance between centres (m)
+  , lrSeenBalls     :: [(Double, Double)]
+    -- ^ the balls its tracker sees, nearest first: angle (rad), distance (m)
+  , lrBattery       :: String      -- ^ @"high"@, @"low"@ or @"critical"@
+  , lrCharge        :: !Double     -- ^ battery charge, 1 = full
+  , lrOdoX, lrOdoY  :: !Double     -- ^ what its odometry reads (m)
+  , lrMessages      :: [(Double, String)] -- ^ lines it printed in the period, each with its time
+  } deriving (Eq, Show)
+
+-- | Something that happened at an instant.
+data LogEvent = LogEvent
+  { evTime  :: !Double    -- ^ (s)
+  , evKind  :: String     -- ^ @"bump"@ (a robot got stuck) or @"score"@
+  , evRobot :: Maybe (String, Int) -- ^ the robot concerned, if one is
+  , evText  :: String     -- ^ a sentence for people
+  } deriving (Eq, Show)
+
+-- | The last line: the same facts as the summary the runner prints.
+data LogSummary = LogSummary
+  { lsSimulated   :: !Double       -- ^ simulated time (s)
+  , lsSteps       :: !Int          -- ^ steps taken
+  , lsFrames      :: !Int          -- ^ frame lines written
+  , lsWallTime    :: !Double       -- ^ wall-clock time of the run (s)
+  , lsInterrupted :: !Bool         -- ^ stopped by Ctrl-C
+  , lsFailure     :: Maybe String
+    -- ^ a controller's failure, as printed (@displayException@ of the
+    -- 'AFrobRobotSim.Simulator.ControllerError', which names the robot
+    -- and the time): the failing step has no state, so no frame shows it
+  , lsScores      :: [(String, Int)] -- ^ final scores, if any
+  } deriving (Eq, Show)
+
+-- | A line as a JSON object (its @kind@ is @header@, @frame@ or
+-- @summary@).
+logLineJSON :: LogLine -> JSON
+logLineJSON (LineHeader h) = JObject
+  [ ("kind", JString "header"), ("format", JString (lhFormat h)), ("version", int (lhVersion h))
+  , ("bounds", rect (lhBounds h)), ("walls", JArray (map rect (lhWalls h)))
+  , ("blocks", JArray (map rect (lhBlocks h))), ("balls", JArray (map xy (lhBalls h)))
+  , ("ballRadius", num (lhBallRadius h)), ("goals", JArray (map rect (lhGoals h)))
+  , ("robots", JArray (map robotInfo (lhRobots h)))
+  , ("rangeAngles", JArray (map num (lhRangeAngles h))), ("rangeMax", num (lhRangeMax h))
+  , ("trackerRange", num (lhTrackerRange h)), ("dt", num (lhDt h)), ("fps", num (lhFps h))
+  , ("seed", int (lhSeed h)), ("commandLine", JArray (map JString (lhCommandLine h))) ]
+  where
+    robotInfo r = JObject
+      [ ("type", JString (riType r)), ("id", int (riId r)), ("radius", num (riRadius r))
+      , ("wheelBase", num (riWheelBase r)), ("maxWheelSpeed", num (riMaxWheelSpeed r))
+      , ("sensors", JArray (map JString (riSensors r))) ]
+logLineJSON (LineFrame f) = JObject
+  [ ("kind", JString "frame"), ("t", num (lfTime f)), ("robots", JArray (map robot (lfRobots f)))
+  , ("balls", JArray (map xy (lfBalls f))), ("scores", scores (lfScores f))
+  , ("events", JArray (map event (lfEvents f))), ("console", JArray (map JString (lfConsole f))) ]
+  where
+    robot r = JObject
+      [ ("x", num (lrX r)), ("y", num (lrY r)), ("heading", num (lrHeading r))
+      , ("wheels", JArray [num (lrWheelLeft r), num (lrWheelRight r)])
+      , ("v", num (lrSpeed r)), ("omega", num (lrRotVel r)), ("bumper", JBool (lrBumper r))
+      , ("range", JArray (map num (lrRange r)))
+      , ("seenRobots", JArray [ JArray [JString ty, int i, num a, num d] | (ty, i, a, d) <- lrSeenRobots r ])
+      , ("seenBalls", JArray (map xy (lrSeenBalls r)))
+      , ("battery", JString (lrBattery r)), ("charge", num (lrCharge r))
+      , ("odometry", xy (lrOdoX r, lrOdoY r))
+      , ("messages", JArray [ JArray [num t, JString m] | (t, m) <- lrMessages r ]) ]
+    event e = JObject ([ ("t", num (evTime e)), ("kind", JString (evKind e)) ]
+                       ++ maybe [] (\(ty, i) -> [("robot", JArray [JString ty, int i])]) (evRobot e)
+                       ++ [ ("text", JString (evText e)) ])
+logLineJSON (LineSummary s) = JObject
+  [ ("kind", JString "summary"), ("simulated", num (lsSimulated s)), ("steps", int (lsSteps s))
+  , ("frames", int (lsFrames s)), ("wallTime", num (lsWallTime s))
+  , ("interrupted", JBool (lsInterrupted s)), ("failure", maybe JNull JString (lsFailure s))
+  , ("scores", scores (lsScores s)) ]
+
+num :: Double -> JSON
+num = JNumber
+
+int :: Int -> JSON
+int = JNumber . fromIntegral
+
+xy :: (Double, Double) -> JSON
+xy (x, y) = JArray [num x, num y]
+
+rect :: LogRect -> JSON
+rect (LogRect x y w h) = JObject [("x", num x), ("y", num y), ("width", num w), ("height", num h)]
+
+scores :: [(String, Int)] -> JSON
+scores ss = JObject [ (k, int n) | (k, n) <- ss ]
+
+-- | A line's JSON text, one line without its newline.
+encodeLogLine :: LogLine -> String
+encodeLogLine = encodeJSON . logLineJSON
+
+-- | Parse one line's text ('parseJSON', then 'logLineFromJSON').
+decodeLogLine :: String -> Either String LogLine
+decodeLogLine txt = parseJSON txt >>= logLineFromJSON
+
+-- | A line from its JSON object, or what is missing or wrong. A header's
+-- version is not checked here (see 'AFrobRobotSim.Log.readLog').
+logLineFromJSON :: JSON -> Either String LogLine
+logLineFromJSON v = do
+  k <- member "kind" v >>= asString
+  case k of
+    "header"  -> LineHeader <$> header
+    "frame"   -> LineFrame <$> frame
+    "summary" -> LineSummary <$> summary
+    _         -> Left ("unknown kind of line " ++ show k)
+  where
+    field f p = member f v >>= p
+    header = LogHeader <$> field "format" asString <*> field "version" asInt
+      <*> field "bounds" toRect <*> field "walls" (listOf toRect) <*> field "blocks" (listOf toRect)
+      <*> field "balls" (listOf toXY) <*> field "ballRadius" asNumber <*> field "goals" (listOf toRect)
+      <*> field "robots" (listOf robotInfo) <*> field "rangeAngles" (listOf asNumber)
+      <*> field "rangeMax" asNumber <*> field "trackerRange" asNumber <*> field "dt" asNumber
+      <*> field "fps" asNumber <*> field "seed" asInt <*> field "commandLine" (listOf asString)
+    robotInfo r = LogRobotInfo <$> (member "type" r >>= asString) <*> (member "id" r >>= asInt)
+      <*> (member "radius" r >>= asNumber) <*> (member "wheelBase" r >>= asNumber)
+      <*> (member "maxWheelSpeed" r >>= asNumber) <*> (member "sensors" r >>= listOf asString)
+    frame = LogFrame <$> field "t" asNumber <*> field "robots" (listOf robot)
+      <*> field "balls" (listOf toXY) <*> field "scores" toScores <*> field "events" (listOf event)
+      <*> field "console" (listOf asString)
+    robot r = do
+      let f name p = member name r >>= p
+      (wl, wr) <- f "wheels" toXY
+      (ox, oy) <- f "odometry" toXY
+      LogRobot <$> f "x" asNumber <*> f "y" asNumber <*> f "heading" asNumber <*> pure wl <*> pure wr
+        <*> f "v" asNumber <*> f "omega" asNumber <*> f "bumper" asBool <*> f "range" (listOf asNumber)
+        <*> f "seenRobots" (listOf seenRobot) <*> f "seenBalls" (listOf toXY) <*> f "battery" asString <*> f "charge" asNumber
+        <*> pure ox <*> pure oy <*> f "messages" (listOf message)
+    message m = asArray m >>= \xs -> case xs of
+      [t, s] -> (,) <$> asNumber t <*> asString s
+      _      -> Left "expected a message as [time, text]"
+    seenRobot x = asArray x >>= \xs -> case xs of
+      [ty, i, a, d] -> (,,,) <$> asString ty <*> asInt i <*> asNumber a <*> asNumber d
+      _             -> Left "expected a sighting as [type, id, angle, distance]"
+    event e = LogEvent <$> (member "t" e >>= asNumber) <*> (member "kind" e >>= asString)
+      <*> (memberMaybe "robot" e >>= traverse robotRef) <*> (member "text" e >>= asString)
+    robotRef r = asArray r >>= \xs -> case xs of
+      [ty, i] -> (,) <$> asString ty <*> asInt i
+      _       -> Left "expected a robot as [type, id]"
+    summary = LogSummary <$> field "simulated" asNumber <*> field "steps" asInt
+      <*> field "frames" asInt <*> field "wallTime" asNumber <*> field "interrupted" asBool
+      <*> (memberMaybe "failure" v >>= traverse asString) <*> field "scores" toScores
+
+listOf :: (JSON -> Either String a) -> JSON -> Either String [a]
+listOf p v = asArray v >>= traverse p
+
+toXY :: JSON -> Either String (Double, Double)
+toXY v = asArray v >>= \xs -> case xs of
+  [x, y] -> (,) <$> asNumber x <*> asNumber y
+  _      -> Left "expected a pair [x, y]"
+
+toRect :: JSON -> Either String LogRect
+toRect v = LogRect <$> (member "x" v >>= asNumber) <*> (member "y" v >>= asNumber)
+  <*> (member "width" v >>= asNumber) <*> (member "height" v >>= asNumber)
+
+toScores :: JSON -> Either String [(String, Int)]
+toScores (JObject kvs) = traverse (\(k, n) -> (,) k <$> asInt n) kvs
+toScores _             = Left "expected scores as an object"

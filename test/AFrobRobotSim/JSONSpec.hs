@@ -1,0 +1,97 @@
+-- | The JSON encoder and parser: round trips on random values, hostile
+-- strings, and the parser's positioned errors.
+module AFrobRobotSim.JSONSpec (spec) where
+
+import           Data.Char             (ord)
+import           Data.List             (isInfixOf, isPrefixOf)
+import           Test.Hspec
+import           Test.QuickCheck
+
+import           AFrobRobotSim.JSON
+
+-- | Random values, a few levels deep; strings without surrogate code
+-- points (which the encoder replaces, see the module documentation).
+newtype AnyJSON = AnyJSON JSON
+  deriving (Show)
+
+instance Arbitrary AnyJSON where
+  arbitrary = AnyJSON <$> sized (gen . min 4 . (`div` 8))
+    where
+      gen :: Int -> Gen JSON
+      gen d = oneof (leaves ++ if d <= 0 then [] else
+        [ JArray <$> resize 5 (listOf (gen (d - 1)))
+        , JObject <$> resize 5 (listOf ((,) <$> str <*> gen (d - 1))) ])
+      leaves = [ pure JNull, JBool <$> arbitrary, JNumber <$> num, JString <$> str ]
+      num = oneof [ arbitrary, fromIntegral <$> (arbitrary :: Gen Int), pure 1e300, pure 5e-324
+                  , pure (-0.5), pure 1e15, pure 123456789012345678 ]
+      str = listOf (oneof [ arbitrary `suchThat` notSurrogate
+                          , elements "\"\\/<>&\n\r\t\b\f\0\DEL\x2028\x2029\x1F600\xFFFF" ])
+      notSurrogate c = ord c < 0xD800 || ord c > 0xDFFF
+  shrink (AnyJSON v) = map AnyJSON (case v of
+    JArray xs  -> xs ++ map JArray (shrinkList (: []) xs)
+    JObject kv -> map snd kv ++ map JObject (shrinkList (: []) kv)
+    JString s  -> map JString (shrink s)
+    _          -> [])
+
+hostile :: String
+hostile = "</script><img src=x onerror=\"alert('x')\">\\\"\n\r\t\0\x1b<!-- -->\x2028]]>&amp;"
+
+spec :: Spec
+spec = do
+  describe "encodeJSON and parseJSON" $ do
+    it "round trip any value (property)" $ property $ \(AnyJSON v) ->
+      parseJSON (encodeJSON v) === Right v
+    it "write pure printable ASCII, one line (property)" $ property $ \(AnyJSON v) ->
+      all (\c -> c >= ' ' && c <= '~') (encodeJSON v)
+    it "never write '<', '>' or '&' (so no string closes a <script>) (property)" $ property $ \(AnyJSON v) ->
+      not (any (`elem` "<>&") (encodeJSON v))
+    it "round trip a hostile string (fixed)" $
+      parseJSON (encodeJSON (JString hostile)) `shouldBe` Right (JString hostile)
+    it "escape a hostile string so that no markup survives (fixed)" $ do
+      let t = encodeJSON (JString hostile)
+      t `shouldNotSatisfy` ("</" `isInfixOf`)
+      t `shouldNotSatisfy` ("<!--" `isInfixOf`)
+      t `shouldSatisfy` ("\\u003c/script\\u003e" `isInfixOf`)
+      t `shouldSatisfy` ("\\u0000" `isInfixOf`)
+      t `shouldSatisfy` ("\\u2028" `isInfixOf`)
+    it "write characters above U+FFFF as surrogate pairs, and read them back (fixed)" $ do
+      encodeJSON (JString "\x1F600") `shouldBe` "\"\\ud83d\\ude00\""
+      parseJSON "\"\\uD83D\\uDE00\"" `shouldBe` Right (JString "\x1F600")
+    it "replace surrogate code points by U+FFFD (fixed)" $
+      encodeJSON (JString "a\xD800z") `shouldBe` "\"a\\ufffdz\""
+
+  describe "encodeNumber" $ do
+    it "writes non-finite numbers as null (fixed)" $
+      map encodeNumber [0 / 0, 1 / 0, -1 / 0] `shouldBe` ["null", "null", "null"]
+    it "writes integral values without a fraction, others exactly (fixed)" $
+      map encodeNumber [3, -2, 0.1, 1e15, 2.5e-3] `shouldBe` ["3", "-2", "0.1", "1.0e15", "2.5e-3"]
+    it "reads back every finite Double exactly (property)" $ property $ \x ->
+      parseJSON (encodeNumber x) === Right (JNumber x)
+
+  describe "parseJSON" $ do
+    it "accepts whitespace and the escapes of RFC 8259 (fixed)" $
+      parseJSON " { \"a\" : [1, -0.5e1, true, false, null, \"\\/\\b\\f\\u00e9\"] } \n"
+        `shouldBe` Right (JObject [("a", JArray [ JNumber 1, JNumber (-5), JBool True, JBool False
+                                                , JNull, JString "/\b\f\233" ])])
+    let errorAt txt l c = case parseJSON txt of
+          Left e  -> e `shouldSatisfy` (("line " ++ show l ++ ", column " ++ show (c :: Int) ++ ": ") `isPrefixOf`)
+          Right v -> expectationFailure ("parsed " ++ show v)
+    it "reports a missing comma with its line and column (fixed)" $
+      errorAt "{\"a\": 1,\n \"b\": 2 \"c\": 3}" (2 :: Int) 9
+    it "rejects a raw control character in a string, at its column (fixed)" $
+      errorAt "[\"ab\tc\"]" (1 :: Int) 5
+    it "rejects trailing text, NaN, leading zeros, single quotes, trailing commas (fixed)" $ do
+      errorAt "1 2" (1 :: Int) 3
+      errorAt "NaN" (1 :: Int) 1
+      errorAt "[012]" (1 :: Int) 2
+      errorAt "'a'" (1 :: Int) 1
+      errorAt "[1,]" (1 :: Int) 4
+      errorAt "" (1 :: Int) 1
+      errorAt "\"abc" (1 :: Int) 5
+    it "rejects nesting deeper than maxDepth, and accepts it up to there (fixed)" $ do
+      parseJSON (replicate maxDepth '[' ++ replicate maxDepth ']') `shouldSatisfy` either (const False) (const True)
+      parseJSON (replicate (maxDepth + 1) '[' ++ replicate (maxDepth + 1) ']')
+        `shouldSatisfy` either ("deep" `isInfixOf`) (const False)
+    it "reads a huge exponent quickly, as an infinity or zero (fixed)" $ do
+      parseJSON ("1e" ++ replicate 100000 '9') `shouldSatisfy` either (const False) (== JNumber (1 / 0))
+      parseJSON ("1e-" ++ replicate 100000 '9') `shouldBe` Right (JNumber 0)

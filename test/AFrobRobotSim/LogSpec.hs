@@ -1,0 +1,131 @@
+-- | The run log: records made from a real run, read back, written as the
+-- run goes.
+module AFrobRobotSim.LogSpec (spec) where
+
+import           Data.List                (isInfixOf, isPrefixOf)
+import           System.Directory         (getTemporaryDirectory, removeFile)
+import           System.IO                (hClose, openTempFile)
+import           System.Process           (readProcessWithExitCode)
+import           Test.Hspec
+
+import           AFrob                    hiding (forAll)
+import           AFrobRobotSim
+import           AFrobRobotSim.Log
+import           AFrobRobotSim.LogFixture
+
+-- The two robots of a frame (the fixture has two).
+pair :: [a] -> (a, a)
+pair xs = case xs of
+  [a, b] -> (a, b)
+  _      -> error ("expected two robots, got " ++ show (length xs))
+
+spec :: Spec
+spec = do
+  let frames = rlFrames fixtureLog
+  describe "logFrames" $ do
+    it "gives one frame per 1/fps s, at time 0 and at the end (fixed)" $ do
+      length frames `shouldBe` 51
+      map lfTime (take 3 frames) `shouldBe` [0, 0.04, 0.08]
+      lfTime (last frames) `shouldSatisfy` (\t -> abs (t - 2) < 1e-9)
+    it "gives every robot's true pose of the frame's step (fixed)" $ do
+      let at k = fixtureStates !! (4 * k)
+      -- to the millionth the log keeps
+      sequence_ [ [ (lrX l - x, lrY l - y, lrHeading l - robotHeading r)
+                  | (l, r) <- zip (lfRobots f) (wsRobots (at k)), let Point2 x y = robotPos r ]
+                    `shouldSatisfy` all (\(dx, dy, dh) -> maximum (map abs [dx, dy, dh]) <= 5e-7)
+                | (k, f) <- zip [0 ..] frames ]
+      map (length . lfRobots) frames `shouldSatisfy` all (== 2)
+    it "derives the wheel speeds from the motion: 0 at time 0, then the commanded ones once up to speed (fixed)" $ do
+      let (a0, _) = pair (lfRobots (head frames))
+          (a, b)  = pair (lfRobots (last frames))
+      (lrWheelLeft a0, lrWheelRight a0) `shouldBe` (0, 0)
+      -- SimbotA accelerates at 0.2 m/s^2: not yet at its 0.45 m/s at 2 s,
+      -- but turning as the wheels' difference says, 0.1 m/s over 0.5 m
+      lrSpeed a `shouldSatisfy` (\v -> v > 0.3 && v < 0.45)
+      (lrWheelLeft a + lrWheelRight a) / 2 `shouldSatisfy` (\v -> abs (v - lrSpeed a) <= 1e-6)
+      lrWheelRight a - lrWheelLeft a `shouldSatisfy` (\d -> abs (d - 0.1) <= 2e-6)
+      lrRotVel a `shouldSatisfy` (\w -> abs (w - 0.2) < 1e-6)
+      lrRotVel b `shouldBe` 0
+      lrSpeed b `shouldSatisfy` (\v -> abs (v - 1) < 1e-6)
+    it "gives the range readings and the tracker's sightings the controllers saw (fixed)" $ do
+      let (a, b) = pair (lfRobots (head frames))
+      -- SimbotA at (-2, 0) facing +x: the wall at x = 4 - 0.05 is far
+      -- beyond the range finder's 3 m in front
+      lrRange a `shouldSatisfy` (\rs -> length rs == 4 && head rs == 3)
+      -- SimbotB is 4.27 m away: beyond the tracker's 4 m; the ball at 2.83 m
+      -- is seen, at 45 degrees to the right; SimbotB is 4.03 m from the ball
+      lrSeenRobots a `shouldBe` []
+      map (\(ang, d) -> (abs (ang + pi / 4) <= 5e-7, abs (d - sqrt 8) <= 5e-7)) (lrSeenBalls a)
+        `shouldBe` [(True, True)]
+      (lrSeenRobots b, lrSeenBalls b) `shouldBe` ([], [])
+    it "gives a robot's messages to that robot, with their time, in the frame of their period (fixed)" $ do
+      let msgs = [ (lfTime f, m) | f <- frames, m <- lrMessages (head (lfRobots f)) ]
+      map (snd . snd) msgs `shouldBe` [hostileMessage]
+      let (tf, (tm, txt)) = head msgs
+      txt `shouldBe` hostileMessage
+      tm `shouldSatisfy` (\t -> abs (t - 0.5) < 0.011)
+      tf `shouldSatisfy` (\t -> t >= tm && t < tm + 0.04 + 1e-9)
+      concatMap lfConsole frames `shouldBe` []
+    it "lists the balls and the header lists the world (fixed)" $ do
+      lfBalls (head frames) `shouldBe` [(0, -2)]
+      let h = rlHeader fixtureLog
+      map (\r -> (riType r, riId r, riRadius r)) (lhRobots h) `shouldBe` [("SimbotA", 1, 0.25), ("SimbotB", 2, 0.25)]
+      lhWalls h `shouldBe` [LogRect 4 (-2) 0.1 1, LogRect 0 (-4) 1 0.1]
+      lhBlocks h `shouldBe` [LogRect (-3) 3 0.5 0.5]
+      lhBounds h `shouldBe` LogRect 0 0 10 10
+
+  describe "bump events" $
+    it "say when a robot gets stuck (fixed)" $ do
+      let world = [OTSimbotB 1 (Point2 0 0) 0, OTVWall (Point2 1 0)]
+          run = take 301 (simulate 0.01 world (\_ -> constant (mrFinalize ddBrake)) (\_ -> constant (mrFinalize (ddVelDiff 1 1))))
+          evs = concatMap lfEvents (logFrames defaultLogConfig { lcWorld = world } run)
+      map evKind evs `shouldBe` ["bump"]
+      map evRobot evs `shouldBe` [Just ("SimbotB", 1)]
+
+  describe "score events" $
+    it "mark each rise of a score, at the step it rose, in the frame of its period (fixed)" $ do
+      let cfg = fixtureConfig { lcScores = \s -> [("seconds", floor (wsTime s + 1e-9))] }
+          fs  = logFrames cfg fixtureStates
+      [ (lfTime f, evTime e, evText e) | f <- fs, e <- lfEvents f ]
+        `shouldBe` [(1, 1, "seconds scores: 1"), (2, 2, "seconds scores: 2")]
+      lfScores (last fs) `shouldBe` [("seconds", 2)]
+
+  describe "readLog" $ do
+    it "reads back exactly the log of a real run (fixed)" $
+      readLog fixtureLogText `shouldBe` Right fixtureLog
+    it "keeps the hostile message intact on one line (fixed)" $ do
+      length (lines fixtureLogText) `shouldBe` 53
+      fixtureLogText `shouldNotSatisfy` ("</script" `isInfixOf`)
+    it "refuses another version, saying which (fixed)" $ do
+      let h = (rlHeader fixtureLog) { lhVersion = 2 }
+          txt = unlines (encodeLogLine (LineHeader h) : drop 1 (lines fixtureLogText))
+      readLog txt `shouldSatisfy` either ("version 2" `isInfixOf`) (const False)
+    it "refuses a log that is not one, or a broken line, with its line number (fixed)" $ do
+      readLog "" `shouldSatisfy` either ("line 1" `isInfixOf`) (const False)
+      readLog (unlines (take 3 (lines fixtureLogText) ++ ["{\"kind\": \"frame\""]))
+        `shouldSatisfy` either ("line 4, column 17:" `isPrefixOf`) (const False)
+    it "reads a log cut short (no summary) (fixed)" $
+      fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
+
+  describe "LogWriter" $ do
+    it "writes, step by step, the same lines as the pure function (fixed)" $ do
+      tmp <- getTemporaryDirectory
+      (path, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      w <- openLogWriter fixtureConfig path
+      mapM_ (writeLogState w) fixtureStates
+      closeLogWriter w (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing [])
+      r <- readLogFile path
+      removeFile path
+      r `shouldBe` Right fixtureLog
+    it "leaves a valid log, line by line, while the run goes (fixed)" $ do
+      tmp <- getTemporaryDirectory
+      (path, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      w <- openLogWriter fixtureConfig path
+      mapM_ (writeLogState w) (take 41 fixtureStates)
+      -- another process reads the file before the writer is closed
+      (_, txt, _) <- readProcessWithExitCode "cat" [path] ""
+      closeLogWriter w (LogSummary 0.4 41 (-1) 0 True Nothing [])
+      removeFile path
+      fmap (\l -> (length (rlFrames l), rlSummary l)) (readLog txt) `shouldBe` Right (11, Nothing)

@@ -1,0 +1,101 @@
+-- | The replay page, as text: the log is embedded intact and safely.
+module AFrobRobotSim.ReplaySpec (spec) where
+
+import           Data.List                (isInfixOf, isPrefixOf, tails)
+import           System.Directory         (getTemporaryDirectory, removeFile)
+import           System.IO                (hClose, openTempFile)
+import           Test.Hspec
+
+import           AFrob                    (constant, ddVelDiff, mrFinalize)
+import           AFrobRobotSim            (defaultWorld, simulate)
+import           AFrobRobotSim.JSON
+import           AFrobRobotSim.Log
+import           AFrobRobotSim.LogFixture
+import           AFrobRobotSim.Replay
+
+occurrences :: String -> String -> Int
+occurrences needle hay = length (filter (needle `isPrefixOf`) (tails hay))
+
+-- The text of the page's data element.
+embeddedData :: String -> Maybe String
+embeddedData page = case [ rest | rest <- tails page, openTag `isPrefixOf` rest ] of
+  rest : _ -> Just (takeUntil "</script>" (drop (length openTag) rest))
+  []       -> Nothing
+  where
+    openTag = "<script id=\"afrp-log\" type=\"application/json\">"
+    takeUntil end s@(c : cs) | end `isPrefixOf` s = ""
+                             | otherwise          = c : takeUntil end cs
+    takeUntil _ [] = ""
+
+spec :: Spec
+spec = do
+  let page = replayPage fixtureLog
+  describe "replayPage" $ do
+    it "closes exactly its two script elements: no string of the run ends one (fixed)" $ do
+      occurrences "</script" page `shouldBe` 2
+      occurrences "<script" page `shouldBe` 2
+    it "embeds no markup from the hostile message (fixed)" $ do
+      page `shouldNotSatisfy` ("<img" `isInfixOf`)
+      page `shouldNotSatisfy` ("<!--" `isInfixOf`)
+      page `shouldNotSatisfy` ("\x2028" `isInfixOf`)
+    it "embeds the log as JSON that reads back to the same records, hostile message included (fixed)" $
+      case embeddedData page of
+        Nothing  -> expectationFailure "no data element"
+        Just txt -> do
+          let parsed = parseJSON txt >>= asArray >>= traverse logLineFromJSON
+          parsed `shouldBe` Right (LineHeader (rlHeader fixtureLog) : map LineFrame (rlFrames fixtureLog)
+                                    ++ maybe [] ((: []) . LineSummary) (rlSummary fixtureLog))
+          txt `shouldSatisfy` ("\\u003c/script\\u003e\\u003cimg src=x onerror=\\\"window.__pwned=1\\\"\\u003e'\\\\\\\"\\n\\t\\u0000" `isInfixOf`)
+    it "is ASCII, needs no network, and allows only its own script (fixed)" $ do
+      page `shouldSatisfy` all (\c -> c < '\DEL')
+      page `shouldNotSatisfy` ("http:" `isInfixOf`)
+      page `shouldNotSatisfy` ("https:" `isInfixOf`)
+      page `shouldSatisfy` ("default-src 'none'; script-src 'nonce-" `isInfixOf`)
+      page `shouldNotSatisfy` ("script-src 'unsafe-inline'" `isInfixOf`)
+    it "has the controls the brief names (fixed)" $
+      mapM_ (\i -> page `shouldSatisfy` (("id=\"" ++ i ++ "\"") `isInfixOf`))
+        ["world", "play", "back", "fwd", "slider", "speed", "rays", "trails", "sightings", "info", "time"]
+
+  describe "the page of the default world's 30-second run" $
+    it "stays under 3 MB, and its log reads back (fixed)" $ do
+      let cfg = defaultLogConfig { lcWorld = defaultWorld, lcDt = 0.01, lcFps = 25 }
+          steer _ = constant (mrFinalize (ddVelDiff 0.6 0.8))
+          states = take 3001 (simulate 0.01 defaultWorld steer steer)
+          runLog = RunLog (logHeader cfg) (logFrames cfg states) Nothing
+          big = replayPage runLog
+      length big `shouldSatisfy` (< 3000000)
+      readLog (unlines (map encodeLogLine (LineHeader (rlHeader runLog) : map LineFrame (rlFrames runLog))))
+        `shouldBe` Right runLog
+
+  describe "ReplayRecorder" $
+    it "records, step by step, the same page as replayPage of the pure log (fixed)" $ do
+      rec <- newReplayRecorder fixtureConfig
+      mapM_ (recordReplayState rec) fixtureStates
+      tmp <- getTemporaryDirectory
+      (path, h) <- openTempFile tmp "afrp-replay.html"
+      hClose h
+      writeReplay rec (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing []) path
+      written <- readFile path
+      length written `seq` removeFile path
+      written `shouldBe` page
+
+  describe "writeReplayFromLog" $ do
+    it "turns a log file into the same page (fixed)" $ do
+      tmp <- getTemporaryDirectory
+      (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      writeFile logPath fixtureLogText
+      let out = logPath ++ ".html"
+      r <- writeReplayFromLog logPath out
+      written <- readFile out
+      length written `seq` mapM_ removeFile [logPath, out]
+      r `shouldBe` Right ()
+      written `shouldBe` page
+    it "refuses a file that is not a log, writing nothing (fixed)" $ do
+      tmp <- getTemporaryDirectory
+      (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      writeFile logPath "{\"kind\": \"header\", \"format\": \"other\"}\n"
+      r <- writeReplayFromLog logPath (logPath ++ ".html")
+      removeFile logPath
+      r `shouldSatisfy` either ("line 1" `isInfixOf`) (const False)

@@ -1,0 +1,122 @@
+// Loads an afrp replay page in headless Chromium and checks it works:
+//   node replay.test.js PAGE.html [SCREENSHOT.png]
+// The page must be that of the test fixture (test/AFrobRobotSim/LogFixture.hs):
+// SimbotA 1 and SimbotB 2, and SimbotA 1 prints a hostile message at 0.5 s.
+// Chromium: $CHROMIUM, else /usr/bin/chromium (Debian: apt-get install chromium).
+// Exits 0 when every check passes, 1 with the failures listed otherwise.
+'use strict';
+const path = require('path');
+const fs = require('fs');
+const { chromium } = require('playwright-core');
+
+const pagePath = process.argv[2];
+const shotPath = process.argv[3] || path.join(__dirname, '..', '..', 'docs', 'images', 'replay.png');
+if (!pagePath) { console.error('usage: node replay.test.js PAGE.html [SCREENSHOT.png]'); process.exit(2); }
+const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
+if (!fs.existsSync(executablePath)) {
+  console.error('no Chromium at ' + executablePath + ' (on Debian: apt-get install -y chromium; or set CHROMIUM)');
+  process.exit(2);
+}
+
+const failures = [];
+function check(ok, what) { console.log((ok ? 'ok   ' : 'FAIL ') + what); if (!ok) failures.push(what); }
+const background = [240, 240, 230];
+function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); }
+
+(async () => {
+  const browser = await chromium.launch({ executablePath, headless: true, args: ['--no-sandbox'] });
+  try {
+    const page = await browser.newPage({ viewport: { width: 1200, height: 800 } });
+    const errors = [];
+    const requests = [];
+    page.on('console', m => { if (m.type() === 'error') errors.push(m.type() + ': ' + m.text()); });
+    page.on('pageerror', e => errors.push('page error: ' + e.message));
+    page.on('request', r => { if (!r.url().startsWith('file:') && !r.url().startsWith('data:')) requests.push(r.url()); });
+    await page.goto('file://' + path.resolve(pagePath));
+    await page.waitForFunction(() => window.afrpReplay !== undefined, null, { timeout: 10000 });
+
+    // the pixel of the canvas under a world point, shifted (dx, dy) canvas pixels
+    const pixelAt = (x, y, dx, dy) => page.evaluate(([x, y, dx, dy]) => {
+      const c = document.getElementById('world');
+      const p = window.afrpReplay.worldToCanvas(x, y);
+      return Array.from(c.getContext('2d').getImageData(Math.round(p[0] + dx), Math.round(p[1] + dy), 1, 1).data.slice(0, 3));
+    }, [x, y, dx, dy]);
+    // a point of a robot's body behind its centre (the heading line runs forward from it)
+    const bodyPixel = async (r, radiusPx) => pixelAt(r.x, r.y, -0.5 * radiusPx * Math.cos(r.heading), 0.5 * radiusPx * Math.sin(r.heading));
+    const info = await page.evaluate(() => ({
+      n: window.afrpReplay.frameCount(), robots: window.afrpReplay.header.robots,
+      first: window.afrpReplay.frameData(0), last: window.afrpReplay.frameData(window.afrpReplay.frameCount() - 1),
+      scale: window.afrpReplay.worldToCanvas(1, 0)[0] - window.afrpReplay.worldToCanvas(0, 0)[0] }));
+    check(info.n > 10, 'the page has the log\'s frames (' + info.n + ')');
+    check(info.robots.length === 2 && info.robots[0].type === 'SimbotA', 'the header lists the fixture\'s robots');
+    const radiusPx = info.robots[0].radius * info.scale;
+    const blue = [30, 90, 220], red = [215, 40, 40];
+
+    // time 0: each robot drawn where the log puts it
+    check(near(await bodyPixel(info.first.robots[0], radiusPx), blue, 2), 'at time 0 SimbotA 1 is drawn at its logged position');
+    check(near(await bodyPixel(info.first.robots[1], radiusPx), red, 2), 'at time 0 SimbotB 2 is drawn at its logged position');
+    check(near(await pixelAt(-4.5, -4.5, 0, 0), background, 0), 'empty floor is the background colour');
+
+    // the toggles: SimbotA 1's front ray crosses (0, 0) at time 0 (its reading is 3 m from x = -2)
+    // (a 1-pixel line is anti-aliased over two rows of pixels: either is greenish)
+    const greenish = c => c[1] > c[0] + 40 && c[1] > c[2] + 40;
+    const rayRows = async () => [await pixelAt(0, 0, 0, -1), await pixelAt(0, 0, 0, 0)];
+    check((await rayRows()).some(greenish), 'range rays are drawn (front ray of SimbotA 1 at (0, 0))');
+    await page.uncheck('#rays');
+    check((await rayRows()).every(c => near(c, background, 0)), 'unticking "range rays" hides them');
+    await page.check('#rays');
+    await page.selectOption('#speed', '4');
+    check(await page.evaluate(() => document.getElementById('speed').value) === '4', 'the speed can be set');
+
+    // drag the slider to the end (keyboard End on the focused range input: a real input event)
+    await page.focus('#slider');
+    await page.keyboard.press('End');
+    const frameAtEnd = await page.evaluate(() => window.afrpReplay.frame());
+    check(frameAtEnd === info.n - 1, 'the slider at its end shows the last frame (' + frameAtEnd + ')');
+    check(near(await bodyPixel(info.last.robots[1], radiusPx), red, 2), 'at the end SimbotB 2 is drawn at its final logged position');
+    check(!near(await bodyPixel(info.first.robots[1], radiusPx), red, 30), 'and no longer at its first position');
+    check(near(await bodyPixel(info.last.robots[0], radiusPx), blue, 2), 'at the end SimbotA 1 is drawn at its final logged position');
+
+    // click a robot: its readings appear
+    const box = await page.locator('#world').boundingBox();
+    const p = await page.evaluate(r => window.afrpReplay.worldToCanvas(r.x, r.y), info.last.robots[0]);
+    await page.mouse.click(box.x + p[0] - 0.5 * radiusPx * Math.cos(info.last.robots[0].heading), box.y + p[1]);
+    const text = await page.locator('#info').textContent();
+    check(text.includes('SimbotA 1'), 'clicking SimbotA 1 shows its panel');
+    check(/wheels\s+left -?\d/.test(text) && /range\s+front \d/.test(text) && text.includes('battery'),
+          'the panel shows its wheel speeds, range readings and battery');
+    check(text.includes('</script><img src=x onerror="window.__pwned=1">'), 'its hostile message is shown as text');
+    const pwned = await page.evaluate(() => ({ flag: window.__pwned, imgs: document.querySelectorAll('img').length,
+                                               scripts: document.querySelectorAll('script').length }));
+    check(pwned.flag === undefined && pwned.imgs === 0 && pwned.scripts === 2, 'the hostile message ran no script and made no element');
+
+    // keyboard: arrows step, space plays and pauses
+    await page.locator('#world').focus().catch(() => {});
+    await page.evaluate(() => document.activeElement && document.activeElement.blur());
+    await page.keyboard.press('ArrowLeft');
+    check(await page.evaluate(() => window.afrpReplay.frame()) === info.n - 2, 'left arrow steps one frame back');
+    await page.keyboard.press('ArrowRight');
+    check(await page.evaluate(() => window.afrpReplay.frame()) === info.n - 1, 'right arrow steps one frame forward');
+    await page.evaluate(() => window.afrpReplay.setFrame(0));
+    await page.keyboard.press(' ');
+    check(await page.evaluate(() => window.afrpReplay.playing()), 'space plays');
+    await page.waitForTimeout(300);
+    await page.keyboard.press(' ');
+    const after = await page.evaluate(() => ({ playing: window.afrpReplay.playing(), frame: window.afrpReplay.frame() }));
+    check(!after.playing && after.frame > 0, 'space pauses, after time moved on (frame ' + after.frame + ')');
+
+    // the picture for the docs: half-way, sightings on, SimbotA 1 selected
+    await page.evaluate(() => { window.afrpReplay.setFrame(Math.floor(window.afrpReplay.frameCount() * 0.75)); });
+    await page.check('#sightings');
+    await page.evaluate(() => window.afrpReplay.selectRobot(0));
+    await page.screenshot({ path: shotPath, fullPage: true });
+    console.log('screenshot: ' + shotPath);
+
+    check(errors.length === 0, 'no console errors' + (errors.length ? ': ' + errors.join(' | ') : ''));
+    check(requests.length === 0, 'no network requests' + (requests.length ? ': ' + requests.join(' ') : ''));
+  } finally {
+    await browser.close();
+  }
+  if (failures.length) { console.error(failures.length + ' check(s) failed'); process.exit(1); }
+  console.log('all checks passed');
+})().catch(e => { console.error(e && e.stack || String(e)); process.exit(1); });
