@@ -228,6 +228,11 @@ instance Arrow SF where
 -- value fed back may only be /used/ after a delay ('AFRP.Delay.iPre',
 -- 'AFRP.Integration.integral', the @d@-combinators) or inside a lazy
 -- structure; demanding it at the same instant diverges with @<<loop>>@.
+-- No signal function of the library demands its input before its own
+-- output is demanded (a stateful one folds its input into its state at
+-- the next sample), so a stateful signal function may watch the value fed
+-- back as long as nothing needs its output at that instant, as in Yampa
+-- (see "AFRP.Loop").
 instance ArrowLoop SF where
   -- 'loopSF': seen by rewrite rules.
   loop = loopSF
