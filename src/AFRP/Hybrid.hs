@@ -1,3 +1,4 @@
+{-# LANGUAGE BangPatterns #-}
 {-# LANGUAGE UnboxedTuples #-}
 -- |
 -- Module      : AFRP.Hybrid
@@ -96,10 +97,16 @@ accumBy f = accumFilter (\b a -> let b' = f b a in (b', Just b'))
 
 -- | @accumHoldBy f b0@: the accumulator of 'accumBy', held as a signal.
 accumHoldBy :: (b -> a -> b) -> b -> SF (Event a) b
-accumHoldBy f b0 = SF (mealyN step b0)
+accumHoldBy f b0 = SF (go b0)
   where
-    step b NoEvent   = (b, b)
-    step b (Event a) = let b' = f b a in (b', b')
+    -- The output is the next state: kept unevaluated, and forced at the
+    -- start of the next step (an event is folded in only then, or when
+    -- the output is demanded).
+    go acc = NStep (\_ e -> case acc of
+      !b -> let out = case e of
+                  NoEvent -> b
+                  Event a -> f b a
+            in (# go out, out #))
 
 -- | Delayed 'accumHoldBy'.
 dAccumHoldBy :: (b -> a -> b) -> b -> SF (Event a) b

@@ -186,11 +186,15 @@ unwatched n = case n of
 -- at the instant of the event (its first output is the output there). An
 -- event at time 0 replaces @sf@ before it produces any output.
 rSwitch :: SF a b -> SF (a, Event (SF a b)) b
-rSwitch (SF n0) = SF (lazyN (go n0))
+rSwitch (SF n0) = SF (NStep (step n0))
   where
-    go n = NStep (\dt (a, e) -> case e of
-      NoEvent      -> case stepN n dt a of (# n', b #) -> case go n' of !r -> (# r, b #)
-      Event (SF m) -> case stepN m dt a of (# m', b #) -> case go m' of !r -> (# r, b #))
+    -- Lazy: the step (and so the look at the event) is performed when the
+    -- output is demanded, or at the start of the next step.
+    step n dt ae =
+      let r = case snd ae of
+            NoEvent      -> boxStep n dt (fst ae)
+            Event (SF m) -> boxStep m dt (fst ae)
+      in (# NStep (\dt' ae' -> case r of Boxed n' _ -> step n' dt' ae'), case r of Boxed _ b -> b #)
 
 -- | Delayed 'rSwitch': at an event instant the output is still the current
 -- signal function's; the new one starts at that instant and supplies the
