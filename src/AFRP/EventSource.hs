@@ -215,17 +215,24 @@ iEdgeOn b0 p = SF (edgeFrom p b0)
   compSF (compSF h (iEdge b0)) (arrSF p) = compSF h (iEdgeOn b0 p)
   #-}
 
--- An edge of @p@'s value, holding @p@ of the previous input sample,
+-- An edge of @p@'s value. The state is what the previous step left,
 -- unevaluated until this step (when the previous sample is complete):
--- after 'True' the output is the evaluated 'NoEvent' whatever the input
--- (which a decoupled switch can see without forcing anything); after
--- 'False' it is a thunk on @p@ of the current input.
+-- after an output 'NoEvent' that needed no look at the input (the
+-- previous value was 'True'), @p@ of the previous input; otherwise the
+-- previous output itself, an occurrence exactly when the previous value
+-- was 'True'. After 'True' the output is the evaluated 'NoEvent' whatever
+-- the input (which a decoupled switch can see without forcing anything);
+-- after 'False' it is a thunk on @p@ of the current input, which is also
+-- the next state: one thunk and one node a step.
 edgeFrom :: (a -> Bool) -> Bool -> Node a (Event ())
 edgeFrom p = afterValue
   where
-    afterValue prev = NStep (\_ a -> let pa = p a in case prev of
-      True  -> (# afterValue pa, NoEvent #)
-      False -> (# afterValue pa, if pa then Event () else NoEvent #))
+    afterValue prev = NStep (\_ a -> if prev then afterTrue a else afterFalse a)
+    afterEvent prev = NStep (\_ a -> case prev of
+      Event () -> afterTrue a
+      NoEvent  -> afterFalse a)
+    afterTrue a  = (# afterValue (p a), NoEvent #)
+    afterFalse a = let e = if p a then Event () else NoEvent in (# afterEvent e, e #)
 {-# INLINE edgeFrom #-}
 
 -- | 'edge' with a given value: @edgeTag x = edge >>> arr (`tag` x)@.
