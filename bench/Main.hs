@@ -20,6 +20,9 @@
 -- * @afrp-bench --pairs R@ times every network and its baseline R times,
 --   alternately (CPU time), and prints the best times and the median of
 --   the R ratios: steadier than separate runs on a busy machine.
+-- * @afrp-bench --loop NAME N@ runs the combinator NAME of "Residency"
+--   inside a loop, its output discarded (@NAME+@: used), for N samples,
+--   and prints the sum of the outputs.
 module Main (main) where
 
 import           Control.Exception  (evaluate)
@@ -33,8 +36,9 @@ import           System.Exit        (exitFailure)
 import           System.IO          (hPutStrLn, stderr)
 import           Text.Printf        (printf)
 
-import           AFRP               (arr)
+import           AFRP               (SF, arr)
 import           Networks
+import           Residency          (loopNetwork, loopNetworks)
 import           RenderBench        (prepareFrames, renderFrames)
 import           SimBench
 
@@ -62,6 +66,7 @@ main = do
     ["--render", frames] -> renderReport (read frames)
     ["--balls", n, steps] -> ballReport (read n) (read steps)
     ["--pairs", r] -> mapM_ (pairsReport (read r)) networks
+    ["--loop", name, n] -> withLoopNetwork name $ \nw -> print (sumNetwork nw (read n))
     _ -> withArgs args (defaultMainWith config
       ([ bgroup (nwName nw)
            [ bench "afrp"     (whnf (sumNetwork (nwSF nw)) samples)
@@ -146,3 +151,16 @@ renderReport frames = do
   let cpu = fromIntegral (c1 - c0) / 1e12 :: Double
   printf "%d frames of 600x600: %.1f frames/s (CPU %.3f s)\n"
     s (fromIntegral s / cpu) cpu
+
+-- The network of "Residency" named (with a final @+@: its output used).
+withLoopNetwork :: String -> (SF Double Double -> IO ()) -> IO ()
+withLoopNetwork name k =
+  let (base, used) = case reverse name of
+        '+' : rest -> (reverse rest, True)
+        _          -> (name, False)
+  in case lookup base loopNetworks of
+       Just sf -> k (loopNetwork used sf)
+       Nothing -> do
+         hPutStrLn stderr ("no such network: " ++ name ++ "; one of "
+                           ++ unwords (map fst loopNetworks))
+         exitFailure

@@ -12,6 +12,7 @@ import qualified AFRP.HybridSpec
 import qualified AFRP.IntegrationSpec
 import qualified AFRP.LawsSpec
 import qualified AFRP.LoopSpec
+import qualified AFRP.LoopLazinessSpec
 import qualified AFRP.NoiseSpec
 import qualified AFRP.NotesSpec
 import qualified AFRP.OptimiserSpec
@@ -60,6 +61,7 @@ main = hspec $ do
   describe "AFRP.Delay"       AFRP.DelaySpec.spec
   describe "AFRP.Integration" AFRP.IntegrationSpec.spec
   describe "AFRP.Loop"        AFRP.LoopSpec.spec
+  describe "AFRP.Loop laziness" AFRP.LoopLazinessSpec.spec
   describe "AFRP.Switch"      AFRP.SwitchSpec.spec
   describe "AFRP.Parallel"    AFRP.ParallelSpec.spec
   describe "AFRP.Noise"       AFRP.NoiseSpec.spec

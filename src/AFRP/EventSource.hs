@@ -183,10 +183,12 @@ delayEventCat q
 -- > embed edge (True, [(1, Just False), (1, Just True), (1, Nothing)])
 -- >   ==  [NoEvent, NoEvent, Event (), NoEvent]
 --
--- The edge evaluates its input at every sample. Where @arr p >>> edge@
--- (or @iEdge@) is written in the source, a rewrite rule makes it one node
--- that applies @p@ in place, which means the same and costs a node and a
--- thunk less a sample.
+-- The edge evaluates its input only when its output is demanded, or at
+-- the next sample (to know the previous value), so it may watch a signal
+-- fed back through a 'Control.Arrow.loop' whose output nobody needs at
+-- this instant. Where @arr p >>> edge@ (or @iEdge@) is written in the
+-- source, a rewrite rule makes it one node that applies @p@ in place,
+-- which means the same and costs a node a sample less.
 edge :: SF Bool (Event ())
 edge = iEdge True
 {-# INLINE edge #-}
@@ -194,19 +196,17 @@ edge = iEdge True
 -- | 'edge' with the value assumed for the sample before time 0:
 -- @iEdge False@ produces an event at time 0 if the input is 'True' then.
 iEdge :: Bool -> SF Bool (Event ())
-iEdge b0 = SF (if b0 then edgeAfterTrue else edgeAfterFalse)
+iEdge b0 = SF (edgeFrom id b0)
 {-# NOINLINE [1] iEdge #-}
 
--- @iEdgeOn b0 p = arr p >>> iEdge b0@, in one node: the edge evaluates its
--- input at every step (to choose its next state), so @p@ can be applied
--- there, at the same step, instead of in a thunk that the edge forces at
--- once. Two nodes that step into each other, built once: stepping
--- allocates nothing. The common idiom @arr p >>> edge@ (the notes'
--- @arr (> 100) >>> edge@, 'AFrob.rsStuck') becomes this by the rewrite
--- rules below wherever GHC sees it written.
+-- @iEdgeOn b0 p = arr p >>> iEdge b0@, in one node: @p@ is applied
+-- where the edge stands, in the one thunk that both the output and the
+-- next step read, instead of in a node and a thunk of its own. The common
+-- idiom @arr p >>> edge@ (the notes' @arr (> 100) >>> edge@,
+-- 'AFrob.rsStuck') becomes this by the rewrite rules below wherever GHC
+-- sees it written.
 iEdgeOn :: Bool -> (a -> Bool) -> SF a (Event ())
-iEdgeOn b0 p = case edgeStates p of
-  (afterTrue, afterFalse) -> SF (if b0 then afterTrue else afterFalse)
+iEdgeOn b0 p = SF (edgeFrom p b0)
 
 {-# RULES
 "AFRP arr>>>iEdge" forall p b0.
@@ -215,24 +215,25 @@ iEdgeOn b0 p = case edgeStates p of
   compSF (compSF h (iEdge b0)) (arrSF p) = compSF h (iEdgeOn b0 p)
   #-}
 
--- The two states of 'iEdge' (the previous input was 'True' / 'False'), as
--- two constant nodes that step into each other: stepping allocates
--- nothing. This is @mealyN (\prev b -> (b, if b && not prev then Event ()
--- else NoEvent))@ with its state forced, as there: the input is evaluated
--- to choose the next state, and then the event, a total function of two
--- evaluated Booleans, is returned evaluated rather than as a thunk (which
--- is what the thunk would have evaluated to, at no risk).
-edgeAfterTrue, edgeAfterFalse :: Node Bool (Event ())
-(edgeAfterTrue, edgeAfterFalse) = edgeStates id
-
--- The two states of an edge of @p@'s value (after 'True', after 'False'),
--- for 'iEdge' (@p = id@) and 'iEdgeOn'.
-edgeStates :: (a -> Bool) -> (Node a (Event ()), Node a (Event ()))
-edgeStates p = (afterTrue, afterFalse)
+-- An edge of @p@'s value. The state is what the previous step left,
+-- unevaluated until this step (when the previous sample is complete):
+-- after an output 'NoEvent' that needed no look at the input (the
+-- previous value was 'True'), @p@ of the previous input; otherwise the
+-- previous output itself, an occurrence exactly when the previous value
+-- was 'True'. After 'True' the output is the evaluated 'NoEvent' whatever
+-- the input (which a decoupled switch can see without forcing anything);
+-- after 'False' it is a thunk on @p@ of the current input, which is also
+-- the next state: one thunk and one node a step.
+edgeFrom :: (a -> Bool) -> Bool -> Node a (Event ())
+edgeFrom p = afterValue
   where
-    afterTrue  = NStep (\_ a -> if p a then (# afterTrue, NoEvent #) else (# afterFalse, NoEvent #))
-    afterFalse = NStep (\_ a -> if p a then (# afterTrue, Event () #) else (# afterFalse, NoEvent #))
-{-# INLINE edgeStates #-}
+    afterValue prev = NStep (\_ a -> if prev then afterTrue a else afterFalse a)
+    afterEvent prev = NStep (\_ a -> case prev of
+      Event () -> afterTrue a
+      NoEvent  -> afterFalse a)
+    afterTrue a  = (# afterValue (p a), NoEvent #)
+    afterFalse a = let e = if p a then Event () else NoEvent in (# afterEvent e, e #)
+{-# INLINE edgeFrom #-}
 
 -- | 'edge' with a given value: @edgeTag x = edge >>> arr (`tag` x)@.
 edgeTag :: a -> SF Bool (Event a)
@@ -252,7 +253,8 @@ edgeJust = SF (mealyN step True)
 -- | The general edge detector: @edgeBy f a0@ applies @f@ to the previous
 -- and the current input sample and produces an occurrence whenever it
 -- returns 'Just'. At time 0 the previous sample is taken to be @a0@. Each
--- input sample is evaluated (to weak head normal form) when it is stored.
+-- input sample is evaluated (to weak head normal form) at the next sample,
+-- or earlier if the output is demanded.
 edgeBy :: (a -> a -> Maybe b) -> a -> SF a (Event b)
 edgeBy f a0 = SF (mealyN (\prev a -> (a, maybeToEvent (f prev a))) a0)
 
@@ -267,7 +269,7 @@ once = takeEvents 1
 -- | Let the first @n@ occurrences through, then none (the source then
 -- becomes 'never' and can disappear from the network).
 takeEvents :: Int -> SF (Event a) (Event a)
-takeEvents n0 = SF (go n0)
+takeEvents n0 = SF (lazyN (go n0))
   where
     go n | n <= 0    = neverN
          | otherwise = NStep (\_ e -> case e of
@@ -276,7 +278,7 @@ takeEvents n0 = SF (go n0)
 
 -- | Suppress the first @n@ occurrences, then let all through.
 dropEvents :: Int -> SF (Event a) (Event a)
-dropEvents n0 = SF (go n0)
+dropEvents n0 = SF (lazyN (go n0))
   where
     go n | n <= 0    = idN
          | otherwise = NStep (\_ e -> case e of

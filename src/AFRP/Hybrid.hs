@@ -1,3 +1,4 @@
+{-# LANGUAGE BangPatterns #-}
 {-# LANGUAGE UnboxedTuples #-}
 -- |
 -- Module      : AFRP.Hybrid
@@ -12,8 +13,13 @@
 -- later. Delayed forms do not evaluate their current input, so they can
 -- close a feedback loop.
 --
--- Accumulated values are evaluated (to weak head normal form) when an
--- event is folded in, so a long run accumulates no thunks.
+-- No combinator here evaluates its input before its output is demanded:
+-- an event is folded into the state at the next sample (or when the
+-- output is demanded), so every combinator can watch a signal fed back
+-- through a 'Control.Arrow.loop' whose output nobody needs at that
+-- instant. Accumulated values are evaluated (to weak head normal form)
+-- when the next sample folds them in, so a long run accumulates no
+-- thunks.
 module AFRP.Hybrid
   ( -- * Holding
     hold
@@ -40,11 +46,16 @@ import           AFRP.Internal.SF
 --
 -- > embed (hold 0) (NoEvent, [(1, Just (Event 5)), (1, Just NoEvent)])  ==  [0, 5, 5]
 hold :: a -> SF (Event a) a
-hold a0 = SF (go a0)
+hold a0 = SF (go a0 NoEvent)
   where
-    go held = NStep (\_ e -> case e of
-      NoEvent -> (# go held, held #)
-      Event x -> (# go x, x #))
+    -- The previous sample's event is folded in only now (not when it
+    -- arrived), so the input is evaluated only if the output is demanded.
+    go held ePrev = NStep (\_ e -> case ePrev of
+      NoEvent -> (# go held e, current held e #)
+      Event x -> (# go x e, current x e #))
+    current held e = case e of
+      NoEvent -> held
+      Event x -> x
 
 -- | Delayed 'hold': @a0@ at time 0, then at each sample what 'hold' output
 -- at the previous one (Yampa: @hold a0 >>> iPre a0@).
@@ -86,10 +97,16 @@ accumBy f = accumFilter (\b a -> let b' = f b a in (b', Just b'))
 
 -- | @accumHoldBy f b0@: the accumulator of 'accumBy', held as a signal.
 accumHoldBy :: (b -> a -> b) -> b -> SF (Event a) b
-accumHoldBy f b0 = SF (mealyN step b0)
+accumHoldBy f b0 = SF (go b0)
   where
-    step b NoEvent   = (b, b)
-    step b (Event a) = let b' = f b a in (b', b')
+    -- The output is the next state: kept unevaluated, and forced at the
+    -- start of the next step (an event is folded in only then, or when
+    -- the output is demanded).
+    go acc = NStep (\_ e -> case acc of
+      !b -> let out = case e of
+                  NoEvent -> b
+                  Event a -> f b a
+            in (# go out, out #))
 
 -- | Delayed 'accumHoldBy'.
 dAccumHoldBy :: (b -> a -> b) -> b -> SF (Event a) b

@@ -123,9 +123,10 @@ integralDOn p q = SF (initN (\a0 -> case go 0 a0 of !n -> (# n, q (noinline cons
 imIntegral :: VectorSpace a s => a -> SF a a
 imIntegral y0 = SF (initN (\_ -> (# go y0, y0 #)))
   where
-    go !acc = NStep (\dt a ->
-      let !acc' = acc ^+^ realToFrac dt *^ a
-      in case go acc' of !n -> (# n, acc' #))
+    -- The sum is forced at the next sample (or when the output is
+    -- demanded), so the current input is not evaluated before then.
+    go acc = NStep (\dt a -> case acc of
+      !s -> let acc' = s ^+^ realToFrac dt *^ a in (# go acc', acc' #))
 {-# INLINABLE imIntegral #-}
 
 -- | The integral by the trapezoid rule: 0 at time 0; then the previous
@@ -134,9 +135,9 @@ imIntegral y0 = SF (initN (\_ -> (# go y0, y0 #)))
 trapezoidIntegral :: VectorSpace a s => SF a a
 trapezoidIntegral = SF (initN (\a0 -> case go zeroVector a0 of !n -> (# n, zeroVector #)))
   where
-    go !acc prev = NStep (\dt a ->
-      let !acc' = acc ^+^ (realToFrac dt / 2) *^ (prev ^+^ a)
-      in case go acc' a of !n -> (# n, acc' #))
+    -- As in 'imIntegral', the sum is forced at the next sample.
+    go acc prev = NStep (\dt a -> case acc of
+      !s -> let acc' = s ^+^ (realToFrac dt / 2) *^ (prev ^+^ a) in (# go acc' a, acc' #))
 {-# INLINABLE trapezoidIntegral #-}
 
 -- | The 'integral' of the first input plus the sum of the values of the
@@ -157,9 +158,10 @@ count = accumBy (\n _ -> n + 1) 0
 --
 -- > embed derivative (1, [(0.5, Just 2), (0.5, Just 2)])  ==  [0, 2, 0]
 derivative :: VectorSpace a s => SF a a
-derivative = SF (initN (\a0 -> case go a0 of !n -> (# n, zeroVector #)))
+derivative = SF (initN (\a0 -> (# go a0, zeroVector #)))
   where
-    go !prev = NStep (\dt a ->
-      let !d = (a ^-^ prev) ^/ realToFrac dt
-      in case go a of !n -> (# n, d #))
+    -- The previous sample is evaluated only now, the current one only if
+    -- the output is demanded (or at the next sample).
+    go prev = NStep (\dt a -> case prev of
+      !p -> (# go a, (a ^-^ p) ^/ realToFrac dt #))
 {-# INLINABLE derivative #-}

@@ -6,6 +6,25 @@
 -- instance of 'SF' (re-exported by "AFRP"). The two loops here close the
 -- feedback path through a primitive that never looks at its current
 -- input, so they are always well founded.
+--
+-- = Laziness inside a loop
+--
+-- No signal function of the library evaluates its input, or the output of
+-- a signal function it runs, before that value is demanded downstream at
+-- the same sample: a stateful one (an edge, a hold, an accumulator, a
+-- switch, a collection, 'AFRP.Integration.derivative', ...) keeps what it
+-- needs of its input unevaluated and folds it into its state at the start
+-- of the next sample, when every value of the previous sample exists. So
+-- the knot of a loop is tied whenever the network is causal, as in Yampa:
+--
+-- > -- outputs its input at every sample; the edge watches the fed-back
+-- > -- flag, and nobody needs the edge's output
+-- > loop (second edge >>> arr (\(a, _) -> (a, a > 0)))
+--
+-- and a stateful signal function's output may be fed back through a delay
+-- ('AFRP.Delay.iPre', 'loopPre'). Since each sample forces what the
+-- previous one left, no thunk outlives one sample: a network runs in
+-- constant space (bench/residency.sh measures it for each combinator).
 module AFRP.Loop
   ( loopPre
   , loopIntegral

@@ -24,6 +24,12 @@
 -- at a switching instant the collection is /frozen/ just before the
 -- current step, so members carried over into the new collection resume
 -- without losing or repeating time, and new members start at that instant.
+-- Every collection steps lazily ('AFRP.Internal.Node.lazyN'): its input
+-- is routed, and its switching event looked at, only when its output is
+-- demanded or at the next sample, so a collection may watch a signal fed
+-- back through a 'Control.Arrow.loop' that does not use its output at
+-- that instant ('parB' on a list needs no such wrapper: broadcasting
+-- never looks at the input).
 -- As with the basic switches, the delayed forms are decoupled: their output
 -- never depends on their event at the same instant, so the event may be
 -- computed, through a loop, from the collection's own output.
@@ -89,7 +95,7 @@ par = parWith stepColT
 {-# NOINLINE [1] par #-}
 
 parWith :: Functor col => Stepper col -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c) -> SF a (col c)
-parWith stepper rf sfs = SF (parN' stepper rf (fmap sfNode sfs))
+parWith stepper rf sfs = SF (lazyN (parN' stepper rf (fmap sfNode sfs)))
 {-# INLINE parWith #-}
 
 -- | @parB sfs@ runs every member on the same input.
@@ -221,7 +227,7 @@ pSwitch = pSwitchWith stepColT
 pSwitchWith :: Functor col => Stepper col
             -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
             -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-pSwitchWith stepper rf sfs (SF e0) k = SF (go (fmap sfNode sfs) e0)
+pSwitchWith stepper rf sfs (SF e0) k = SF (lazyN (go (fmap sfNode sfs) e0))
   where
     go ns ne = NStep (\dt a -> case stepper dt (rf a ns) of
       (# ns', cs #) -> case stepN ne dt (a, cs) of
@@ -240,7 +246,7 @@ dpSwitch = dpSwitchWith stepColT
 dpSwitchWith :: Functor col => Stepper col
              -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
              -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-dpSwitchWith stepper rf sfs (SF e0) k = SF (go (fmap sfNode sfs) e0)
+dpSwitchWith stepper rf sfs (SF e0) k = SF (lazyN (go (fmap sfNode sfs) e0))
   where
     go ns ne = NStep (\dt a -> case stepper dt (rf a ns) of
       (# ns', cs #) ->
@@ -290,7 +296,7 @@ rpSwitch = rpSwitchWith stepColT
 rpSwitchWith :: Functor col => Stepper col
              -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
              -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
-rpSwitchWith stepper rf sfs = SF (go (fmap sfNode sfs))
+rpSwitchWith stepper rf sfs = SF (lazyN (go (fmap sfNode sfs)))
   where
     go ns = NStep (\dt (a, e) ->
       let ns0 = event ns (\f -> fmap sfNode (f (freezeCol ns dt))) e
@@ -308,7 +314,7 @@ drpSwitch = drpSwitchWith stepColT
 drpSwitchWith :: Functor col => Stepper col
               -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
               -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
-drpSwitchWith stepper rf sfs = SF (go (fmap sfNode sfs))
+drpSwitchWith stepper rf sfs = SF (lazyN (go (fmap sfNode sfs)))
   where
     go ns = NStep (\dt ae -> case stepper dt (rf (fst ae) ns) of
       (# ns', cs #) ->

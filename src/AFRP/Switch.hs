@@ -38,6 +38,14 @@
 -- every sample, so, as everywhere in a loop ('Control.Arrow.loop'), it may
 -- only delay a fed-back value, never inspect it at the same instant.
 --
+-- The immediate switches ('switch', 'rSwitch', 'kSwitch') look at their
+-- event only when their output is demanded, or at the next sample (unless
+-- it is already the evaluated 'NoEvent'). So a switch
+-- whose event is computed from a fed-back signal may sit inside a
+-- 'Control.Arrow.loop' that does not use its output at that instant, as
+-- in Yampa; the network is still stepped, and its thunks forced, once a
+-- sample.
+--
 -- A switch whose event source has become 'AFRP.EventSource.never' (for
 -- example @sf &&& never@, or an 'AFRP.EventSource.after' that cannot fire
 -- again) removes itself from the network.
@@ -65,10 +73,26 @@ import           AFRP.Internal.SF
 switch :: SF a (b, Event c) -> (c -> SF a b) -> SF a b
 switch (SF n0) k = SF (go n0)
   where
-    go n = NStep (\dt a -> case stepN n dt a of
-      (# n', (b, e) #) -> case e of
-        Event c -> stepN (sfNode (k c)) dt a
-        NoEvent -> case watch n' go of !m -> (# m, b #))
+    go n = NStep (step n)
+    -- sf &&& e, the usual shape: the two sides are stepped apart, so that
+    -- the event is seen as it stands. If it is already the evaluated
+    -- 'NoEvent' (as an edge after 'True' or 'never' returns it) the switch
+    -- continues at once, and a switch on 'never' removes itself.
+    step n dt a = case n of
+      NFan f g -> case stepN f dt a of
+        (# f', b #) -> case stepN g dt a of
+          (# g', e #)
+            | evaluatedNoEvent e -> case fanN f' g' of !n' -> case watch n' go of !m -> (# m, b #)
+            | otherwise          -> decide (fanN f' g') b e dt a
+      _        -> case stepN n dt a of (# n', be #) -> decide n' (fst be) (snd be) dt a
+    -- Otherwise the event may depend on the input (through a loop, on a
+    -- value this very step produces): whether it occurred is looked at
+    -- only when the output is demanded, or at the next step.
+    decide n' b e dt a =
+      let r = case e of
+            NoEvent -> Boxed (watch n' go) b
+            Event c -> boxStep (sfNode (k c)) dt a
+      in (# NStep (\dt' a' -> case r of Boxed m _ -> stepN m dt' a'), case r of Boxed _ o -> o #)
 
 -- | @dSwitch sf k@ is 'switch' except at the switching instant, where the
 -- output is still @sf@'s; @k c@ is started at that instant (its first
@@ -162,18 +186,22 @@ unwatched n = case n of
 -- at the instant of the event (its first output is the output there). An
 -- event at time 0 replaces @sf@ before it produces any output.
 rSwitch :: SF a b -> SF (a, Event (SF a b)) b
-rSwitch (SF n0) = SF (go n0)
+rSwitch (SF n0) = SF (NStep (step n0))
   where
-    go n = NStep (\dt (a, e) -> case e of
-      NoEvent      -> case stepN n dt a of (# n', b #) -> case go n' of !r -> (# r, b #)
-      Event (SF m) -> case stepN m dt a of (# m', b #) -> case go m' of !r -> (# r, b #))
+    -- Lazy: the step (and so the look at the event) is performed when the
+    -- output is demanded, or at the start of the next step.
+    step n dt ae =
+      let r = case snd ae of
+            NoEvent      -> boxStep n dt (fst ae)
+            Event (SF m) -> boxStep m dt (fst ae)
+      in (# NStep (\dt' ae' -> case r of Boxed n' _ -> step n' dt' ae'), case r of Boxed _ b -> b #)
 
 -- | Delayed 'rSwitch': at an event instant the output is still the current
 -- signal function's; the new one starts at that instant and supplies the
 -- outputs from the next sample on. Used by the notes' @vel@, where the new
 -- signal function is built from the switch's own output.
 drSwitch :: SF a b -> SF (a, Event (SF a b)) b
-drSwitch (SF n0) = SF (go n0)
+drSwitch (SF n0) = SF (lazyN (go n0))
   where
     go n = NStep (\dt ae -> case stepN n dt (fst ae) of
       (# n', b #) ->
@@ -190,7 +218,7 @@ drSwitch (SF n0) = SF (go n0)
 -- new signal function's first output. An event at time 0 passes the
 -- original, unstarted @sf@.
 kSwitch :: SF a b -> SF (a, b) (Event c) -> (SF a b -> c -> SF a b) -> SF a b
-kSwitch (SF n0) (SF e0) k = SF (go n0 e0)
+kSwitch (SF n0) (SF e0) k = SF (lazyN (go n0 e0))
   where
     go n ne = NStep (\dt a -> case stepN n dt a of
       (# n', b #) -> case stepN ne dt (a, b) of
@@ -200,7 +228,7 @@ kSwitch (SF n0) (SF e0) k = SF (go n0 e0)
 -- | Delayed 'kSwitch': at the switching instant the output is still
 -- @sf@'s; @k sf' c@ starts there (first output discarded).
 dkSwitch :: SF a b -> SF (a, b) (Event c) -> (SF a b -> c -> SF a b) -> SF a b
-dkSwitch (SF n0) (SF e0) k = SF (go n0 e0)
+dkSwitch (SF n0) (SF e0) k = SF (lazyN (go n0 e0))
   where
     go n ne = NStep (\dt a -> case stepN n dt a of
       (# n', b #) ->

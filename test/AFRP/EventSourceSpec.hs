@@ -196,8 +196,8 @@ spec = do
       runDt 1 (edgeBy rise 0) [3, 2, 5, 5, 7 :: Int] `shouldBe` [e 3, n, e 3, n, e 2]
     it "uses the initial value as the previous sample at time 0" $
       runDt 1 (edgeBy rise 10) [3, 4 :: Int] `shouldBe` [n, e 1]
-    it "evaluates each input sample when it is stored" $
-      forceEvents (runDt 1 (bottomWhereNothing (edgeBy (\_ _ -> Nothing :: Maybe ()) (0 :: Int))) [Just 1, Nothing])
+    it "evaluates each input sample at the next sample" $
+      forceEvents (runDt 1 (bottomWhereNothing (edgeBy (\_ _ -> Nothing :: Maybe ()) (0 :: Int))) [Just 1, Nothing, Just 2])
         `shouldThrow` anyErrorCall
 
   describe "notYet" $ do

@@ -120,8 +120,8 @@ spec = do
       embed (accum 0) (e (+ 1), [(1, Just n), (1, Just (e (* 10)))]) `shouldBe` [e 1, n, e (10 :: Int)]
     it "has no occurrence at time 0 without an input event" $
       runDt 1 (accum 'x') [n, e succ] `shouldBe` [n, e 'y']
-    it "evaluates the accumulated value when an event is folded in" $
-      evaluate (length (runDt 1 (accum (0 :: Int)) [e (const undefined)]))
+    it "evaluates the accumulated value at the next sample" $
+      evaluate (length (runDt 1 (accum (0 :: Int)) [e (const undefined), n]))
         `shouldThrow` anyErrorCall
 
   describe "accumHold" $ do

@@ -37,10 +37,21 @@
 -- A step returns an unboxed pair of the next node and the output. The next
 -- node is always evaluated (every structural field is strict, 'stepN'
 -- builds every structural successor with @case@ rather than as a lazy
--- application of a smart constructor, and every primitive builds its
--- successor with its state forced), so a network never accumulates thunks
--- however long it runs; the /output/ stays lazy, which is what makes
--- 'loop' and recursive arrow notation work.
+-- application of a smart constructor), and the /output/ stays lazy, which
+-- is what makes 'loop' and recursive arrow notation work.
+--
+-- = Laziness in the input
+--
+-- /No step evaluates its input sample./ A primitive whose next state
+-- depends on its input (an edge, a hold, an accumulator, a switch)
+-- keeps that dependency unevaluated in its successor and evaluates it at
+-- the start of its /next/ step, when every value of the previous sample
+-- is available: 'mealyN' and 'lazyN' are the two general forms, and the
+-- edges, 'AFRP.Hybrid.hold' and 'AFRP.Integration.derivative' do the same
+-- by hand. So a stateful node inside a 'loop' whose output nobody needs
+-- never demands the value fed back, as in Yampa; and since each step
+-- forces what the previous one left, a thunk never outlives one step and
+-- a network runs in constant space however long it runs.
 --
 -- = Performance
 --
@@ -105,6 +116,7 @@ module AFRP.Internal.Node
   , fanN
   , initN
   , mealyN
+  , lazyN
   ) where
 
 ------------------------------------------------------------------------------
@@ -445,9 +457,34 @@ initN f = NStep (\_ a -> f a)
 {-# INLINE initN #-}
 
 -- | A time-independent state machine: state, output function and
--- transition, the state forced at every step.
+-- transition. The step does not evaluate its input: the transition is
+-- applied lazily, and its new state is forced at the start of the next
+-- step (so a state never holds more than one step's thunk).
 mealyN :: (s -> a -> (s, b)) -> s -> Node a b
-mealyN f = go
+mealyN f s0 = NStep (\_ a -> let r = f s0 a in (# pending r, snd r #))
   where
-    go !s = NStep (\_ a -> case f s a of (!s', b) -> case go s' of !n -> (# n, b #))
+    pending r = NStep (\_ a -> case r of
+      (!s, _) -> let r' = f s a in (# pending r', snd r' #))
 {-# INLINE mealyN #-}
+
+-- | @lazyN n@ behaves as @n@, but each of its steps is performed only
+-- when its output is demanded or, at the latest, at the start of the next
+-- step. For primitives whose step evaluates their input (a switch
+-- deciding whether its event occurred, a collection routing its input):
+-- wrapped, they no longer demand their input before someone downstream
+-- demands their output. A successor that has become pure is returned as
+-- it is, and so stops paying for the wrapper.
+lazyN :: Node a b -> Node a b
+lazyN n = case n of
+  NPure _ -> n
+  _       -> NStep (stepLazyN n)
+
+stepLazyN :: Node a b -> DTime -> a -> (# Node a b, b #)
+stepLazyN n dt a =
+  let r = boxStep n dt a
+  in (# NStep (resumeLazyN r), case r of Boxed _ b -> b #)
+
+resumeLazyN :: Boxed a b -> DTime -> a -> (# Node a b, b #)
+resumeLazyN (Boxed n _) dt a = case n of
+  NPure _ -> stepN n dt a
+  _       -> stepLazyN n dt a

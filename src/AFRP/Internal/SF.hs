@@ -228,6 +228,11 @@ instance Arrow SF where
 -- value fed back may only be /used/ after a delay ('AFRP.Delay.iPre',
 -- 'AFRP.Integration.integral', the @d@-combinators) or inside a lazy
 -- structure; demanding it at the same instant diverges with @<<loop>>@.
+-- No signal function of the library demands its input before its own
+-- output is demanded (a stateful one folds its input into its state at
+-- the next sample), so a stateful signal function may watch the value fed
+-- back as long as nothing needs its output at that instant, as in Yampa
+-- (see "AFRP.Loop").
 instance ArrowLoop SF where
   -- 'loopSF': seen by rewrite rules.
   loop = loopSF
@@ -247,11 +252,19 @@ leftN :: Node a b -> Node (Either a c) (Either b c)
 -- left (arr f) = arr (left f)
 leftN (NPure FDI) = NPure FDI
 leftN (NPure fd)  = let f = fdFun fd in NPure (FDG (either (Left . f) Right))
-leftN n           = self
+-- Stepped lazily ('lazyN'): which side a sample is on is looked at only
+-- when the output is demanded, or at the next sample.
+leftN n           = lazyN (leftE n)
+
+leftE :: Node a b -> Node (Either a c) (Either b c)
+leftE n = self
   where
     self = NStep (\dt e -> case e of
       Right c -> (# self, Right c #)
-      Left a  -> case stepN n dt a of (# n', b #) -> case leftN n' of !m -> (# m, Left b #))
+      Left a  -> case stepN n dt a of
+        (# n', b #) -> case n' of
+          NPure _ -> case leftN n' of !m -> (# m, Left b #)
+          _       -> case leftE n' of !m -> (# m, Left b #))
 
 -- | @fmap f sf = sf >>> arr f@.
 instance Functor (SF a) where
