@@ -4,6 +4,8 @@
 module AFrobRobotSim.RunSpec (spec) where
 
 import           Control.Exception   (bracket, finally, try)
+import           Data.Maybe          (isJust)
+import           System.Environment  (lookupEnv, setEnv)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, sort)
@@ -17,6 +19,8 @@ import           Test.Hspec          hiding (after)
 
 import           AFrob               hiding (forAll)
 import           AFrobRobotSim
+import           AFrobRobotSim.Log   (LogSummary (..), RunLog (..), readLogFile)
+import           AFrobRobotSim.Replay (writeReplayFromLog)
 
 world :: WorldTemplate
 world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2)]
@@ -25,7 +29,8 @@ drive :: SimbotController
 drive _ = constant (mrFinalize (ddVelDiff 1 1))
 
 quick :: FilePath -> SimOptions
-quick dir = defaultSimOptions { optSeconds = 2, optOut = dir, optQuiet = True }
+quick dir = defaultSimOptions { optSeconds = 2, optOut = dir, optQuiet = True, optFrames = True
+                              , optSvg = Nothing, optReplay = Nothing }
 
 -- | Run an action with stdout and stderr captured into files; return what
 -- they received and how the action ended.
@@ -122,6 +127,7 @@ spec = do
                                      , "--keys", "1.5:a,3:b", "--seed", "7", "--quiet", "--rays", "--trails"]
         `shouldBe` Right (RunWith defaultSimOptions
           { optSeconds = 5, optDt = 0.02, optFps = 10, optOut = "x", optScale = 30
+          , optSvg = Just ("x" </> "run.svg"), optReplay = Just ("x" </> "replay.html")
           , optKeys = [(1.5, 'a'), (3, 'b')], optSeed = 7, optQuiet = True, optRays = True, optTrails = True })
     it "reports an invalid world, naming the object, with exit code 2" $ do
       (_, err, r) <- captured (runSimWith defaultSimOptions { optFrames = False } (Just [OTSimbotB 9 (Point2 7 0) 0]) drive drive)
@@ -147,6 +153,98 @@ spec = do
       err `shouldSatisfy` ("SimbotA 1" `isInfixOf`)
       err `shouldSatisfy` ("0.500" `isInfixOf`)
       err `shouldSatisfy` ("simultaneous" `isInfixOf`)
+
+  describe "checks before the run (exit code 2, nothing simulated, nothing written)" $ do
+    let refused opts check = withTempDir $ \dir -> do
+          (out, err, r) <- captured (runSimWith (opts dir) (Just world) drive drive)
+          r `shouldBe` Left (ExitFailure 2)
+          out `shouldBe` ""
+          err `shouldSatisfy` check
+          listDirectory dir `shouldReturn` []
+    it "an --svg, --log or --replay in a folder that does not exist, all reported in one message" $
+      refused (\dir -> (quick (dir </> "f")) { optSvg = Just (dir </> "no" </> "run.svg")
+                                            , optLog = Just (dir </> "nolog" </> "run.jsonl")
+                                            , optReplay = Just (dir </> "nopage" </> "r.html") })
+              (\e -> all (`isInfixOf` e) ["--svg", "--log", "--replay", "does not exist"]
+                     && length (filter ("cannot run" `isInfixOf`) (lines e)) == 1)
+    it "an --out whose parent folder does not exist" $
+      refused (\dir -> quick (dir </> "a" </> "b")) ("does not exist" `isInfixOf`)
+    it "an empty --out" $ do
+      parseSimArgs defaultSimOptions ["--out", ""] `shouldSatisfy` either ("--out" `isInfixOf`) (const False)
+      refused (\_ -> (quick "") { optFrames = True }) ("--out" `isInfixOf`)
+    it "a step count that overflows or is beyond the maximum" $ do
+      refused (\dir -> (quick dir) { optSeconds = 1e20 }) ("steps" `isInfixOf`)
+      refused (\dir -> (quick dir) { optDt = 1e-300 }) ("steps" `isInfixOf`)
+      refused (\dir -> (quick dir) { optSeconds = 0 / 0 }) ("finite" `isInfixOf`)
+      parseSimArgs defaultSimOptions ["--seconds", "1e20"] `shouldSatisfy` either ("steps" `isInfixOf`) (const False)
+      parseSimArgs defaultSimOptions ["--dt", "NaN"] `shouldSatisfy` either ("--dt" `isInfixOf`) (const False)
+    it "a --scale beyond a sane frame" $
+      refused (\dir -> (quick dir) { optScale = 5000 }) ("--scale" `isInfixOf`)
+    it "a --dt that does not divide the frame period, saying which --fps would work" $ do
+      refused (\dir -> (quick dir) { optDt = 0.03 }) ("--fps 33.333 or 16.667 would work" `isInfixOf`)
+      validateOptions defaultSimOptions { optDt = 0.03, optFps = 33.333 } `shouldBe` []
+    it "--video without ffmpeg on the PATH" $ withTempDir $ \empty -> do
+      saved <- lookupEnv "PATH"
+      setEnv "PATH" empty
+      (do refused (\dir -> (quick (dir </> "f")) { optVideo = Just (dir </> "run.mp4") }) ("ffmpeg" `isInfixOf`))
+        `finally` maybe (pure ()) (setEnv "PATH") saved
+    it "--video without --frames" $
+      refused (\dir -> (quick (dir </> "f")) { optFrames = False, optVideo = Just (dir </> "run.mp4") })
+              ("--frames" `isInfixOf`)
+
+  describe "writes that fail during the run (exit code 1, the summary so far)" $ do
+    it "a full disk for the SVG (/dev/full)" $ withTempDir $ \dir -> do
+      (out, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just "/dev/full" } (Just world) drive drive)
+      r `shouldBe` Left (ExitFailure 1)
+      out `shouldSatisfy` ("2.00 s simulated" `isInfixOf`)
+      err `shouldSatisfy` ("/dev/full" `isInfixOf`)
+    it "a full disk for the log (/dev/full)" $ withTempDir $ \dir -> do
+      (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just "/dev/full" } (Just world) drive drive)
+      r `shouldSatisfy` either (/= ExitSuccess) (const False)
+      err `shouldSatisfy` ("/dev/full" `isInfixOf`)
+    it "a frame that cannot be written stops the run, leaving whole frames and no .tmp file" $ withTempDir $ \dir -> do
+      let out = dir </> "f"
+      createDirectory out
+      createDirectory (out </> "frame-000003.ppm")   -- in the way of the fourth frame
+      (o, err, r) <- captured (runSimWith (quick out) (Just world) drive drive)
+      r `shouldBe` Left (ExitFailure 1)
+      o `shouldSatisfy` ("stopped: 0.11 s simulated in 12 steps, 3 frames" `isInfixOf`)
+      err `shouldSatisfy` ("a write failed" `isInfixOf`)
+      names <- listDirectory out
+      filter (".tmp" `isInfixOf`) names `shouldBe` []
+      length names `shouldBe` 4
+
+  describe "the run log and the replay page" $ do
+    it "--log and --replay with --no-frames: a log of every frame period and a page" $ withTempDir $ \dir -> do
+      (_, _, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just (dir </> "run.jsonl")
+                                                    , optReplay = Just (dir </> "run.html") } (Just world) drive drive)
+      r `shouldBe` Right ()
+      Right l <- readLogFile (dir </> "run.jsonl")
+      length (rlFrames l) `shouldBe` 51
+      fmap (\s -> (lsSteps s, lsFrames s, lsInterrupted s, lsFailure s)) (rlSummary l) `shouldBe` Just (201, 51, False, Nothing)
+      page <- readFile (dir </> "run.html")
+      ("<!DOCTYPE html>" `isPrefixOf` page, "afrp-log" `isInfixOf` page) `shouldBe` (True, True)
+      writeReplayFromLog (dir </> "run.jsonl") (dir </> "again.html") `shouldReturn` Right ()
+      readFile (dir </> "again.html") `shouldReturn` page
+    it "a controller's failure closes the log with the failure and still writes the page" $ withTempDir $ \dir -> do
+      let bad _ = localTime >>> arr (\t -> mrFinalize (tcoPrintMessage
+                    (if t >= 0.5 then merge (Event "a") (Event "b") else NoEvent)))
+      (_, _, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just (dir </> "run.jsonl")
+                                                    , optReplay = Just (dir </> "run.html") } (Just world) bad drive)
+      r `shouldBe` Left (ExitFailure 1)
+      Right l <- readLogFile (dir </> "run.jsonl")
+      fmap (fmap ("SimbotA 1" `isInfixOf`) . lsFailure) (rlSummary l) `shouldBe` Just (Just True)
+      page <- readFile (dir </> "run.html")
+      "simultaneous" `isInfixOf` page `shouldBe` True
+    it "the defaults write the SVG and the page into simbot-out, no frames; --out moves them" $ do
+      (optFrames defaultSimOptions, optSvg defaultSimOptions, optReplay defaultSimOptions)
+        `shouldBe` (False, Just ("simbot-out" </> "run.svg"), Just ("simbot-out" </> "replay.html"))
+      fmap (\c -> case c of RunWith o -> Just (optSvg o, optReplay o, optFrames o, isJust (optLog o)); ShowHelp -> Nothing)
+           (parseSimArgs defaultSimOptions ["--out", "x", "--frames", "--log", "l.jsonl"])
+        `shouldBe` Right (Just (Just ("x" </> "run.svg"), Just ("x" </> "replay.html"), True, True))
+      fmap (\c -> case c of RunWith o -> (optSvg o, optReplay o); ShowHelp -> (Nothing, Nothing))
+           (parseSimArgs defaultSimOptions ["--no-svg", "--replay", "p.html"])
+        `shouldBe` Right (Nothing, Just "p.html")
   where
     pixel :: BS.ByteString -> Double -> Double -> Maybe (Word8, Word8, Word8)
     pixel bytes x y = ppmAt bytes (worldPx x) (worldPy y)
