@@ -1,3 +1,4 @@
+{-# LANGUAGE BangPatterns        #-}
 {-# LANGUAGE ScopedTypeVariables #-}
 -- |
 -- Module      : AFrobRobotSim.Run
@@ -34,8 +35,8 @@ import           Control.Exception         (AsyncException (UserInterrupt), Exce
 import           Control.Monad             (forM, forM_, unless, when)
 import qualified Data.ByteString           as BS
 import           Data.IORef
-import           Data.List                 (foldl', nub)
-import           Data.Maybe                (catMaybes)
+import           Data.List                 (foldl', isInfixOf, nub)
+import           Data.Maybe                (catMaybes, listToMaybe)
 import           GHC.Clock                 (getMonotonicTime)
 import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
                                             findExecutable, getPermissions, removeFile, renameFile,
@@ -48,7 +49,8 @@ import           System.IO                 (BufferMode (..), hFlush, hIsTerminal
 import           System.Process            (rawSystem)
 import           Text.Printf               (printf)
 
-import           AFRP.Geometry             (Point2)
+import           AFRP.Geometry             (norm, (.-.))
+import           AFrob.Dimensions          (Position2)
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
@@ -143,16 +145,119 @@ preflight opts = do
             Left (e :: IOException) -> [ "cannot write frames to " ++ show dir ++ ": " ++ show e ]
             Right ()                -> []
 
-data Progress = Progress
-  { prSteps  :: !Int
-  , prFrames :: !Int
-  , prTrails :: [[Point2 Double]]   -- newest first, one list per robot
-  , prKept   :: [WorldState]        -- snapshots kept for the SVG, newest first
-  }
-
 -- How a run's loop ended.
 data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOException
 
+-- | One output of a run: a consumer of the stream of world states (every
+-- step's, from time 0) with its own small strict state, and what it does
+-- when the run ends (the messages of the writes that failed).
+data Sink = Sink
+  { sinkStep   :: Int -> WorldState -> IO ()
+  , sinkFinish :: LogSummary -> IO [String]
+  }
+
+-- A sink with nothing to finish.
+stepOnly :: (Int -> WorldState -> IO ()) -> Sink
+stepOnly f = Sink f (const (pure []))
+
+-- The robots' console messages, printed as they happen.
+messagesSink :: Sink
+messagesSink = stepOnly $ \_ s -> unless (null (wsMessages s)) (mapM_ putStrLn (wsMessages s) >> hFlush stdout)
+
+-- The progress line on a terminal.
+progressSink :: Int -> IORef Int -> Sink
+progressSink nSteps framesRef = stepOnly $ \n _ -> when (n `mod` 100 == 0) $ do
+  frames <- readIORef framesRef
+  hPutStr stderr (printf "\r%3d%%  %d frames " ((100 * n) `div` max 1 nSteps) frames)
+
+-- A trail: the points of a robot's path that are more than a pixel from
+-- the previous one, newest first, at most 'trailMax'.
+data Trail = Trail !Int ![Position2]
+
+trailMax :: Int
+trailMax = 20000
+
+-- Add a point to a trail when it moved more than @px@ metres.
+extendTrail :: Double -> Position2 -> Trail -> Trail
+extendTrail px p t@(Trail k ps) = case ps of
+  q : _ | near q -> t
+  _ | k >= 2 * trailMax -> Trail (trailMax + 1) (p : take trailMax ps)   -- amortised trimming
+    | otherwise         -> Trail (k + 1) (p : ps)
+  where near q = norm (p .-. q) <= px
+
+trailPoints :: Trail -> [Position2]
+trailPoints (Trail _ ps) = reverse (take trailMax ps)
+
+-- The PPM frames (with the trails, when drawn), written as the run goes;
+-- the count is shared with the progress line and the summary.
+framesSink :: SimOptions -> (Int -> Bool) -> ([[Position2]] -> WorldState -> BS.ByteString) -> IORef Int -> IO Sink
+framesSink opts frameAt render countRef = do
+  trailsRef <- newIORef []
+  let px = 1 / optScale opts
+      step n s = do
+        trails <- if optTrails opts
+          then do
+            old <- readIORef trailsRef
+            let new = zipWith (extendTrail px) (map robotPos (wsRobots s)) (old ++ repeat (Trail 0 []))
+            _ <- evaluate (foldl' (\acc (Trail k _) -> acc + k) 0 new)
+            new <$ writeIORef trailsRef new
+          else pure []
+        when (frameAt n) $ do
+          k <- readIORef countRef
+          writeFrame (optOut opts) k (render (map trailPoints trails) s)
+          writeIORef countRef $! k + 1
+      -- A stopped run leaves at most the next frame's temporary file.
+      finish _ = do
+        k <- readIORef countRef
+        [] <$ (try (removeFile (frameTemp (optOut opts) k)) :: IO (Either IOException ()))
+  pure (Sink step finish)
+
+-- The SVG: at most 'svgMaxPoints' + 1 snapshots, taken every @every@
+-- steps when a robot moved more than a pixel since the last one, and the
+-- last state; written at the end.
+svgSink :: SimOptions -> Int -> (RenderStyle, Scene) -> FilePath -> IO Sink
+svgSink opts every (style, scene) file = do
+  ref <- newIORef ([], Nothing)
+  let px = 1 / optScale opts
+      moved a b = or (zipWith (\p q -> norm (robotPos p .-. robotPos q) > px)
+                              (wsRobots a) (wsRobots b))
+                  || length (wsRobots a) /= length (wsRobots b)
+      step n s = do
+        (kept, _) <- readIORef ref
+        let kept' = case kept of
+              k : _ | n `mod` every /= 0 || not (moved k s) -> kept
+              _ | n `mod` every == 0 -> s : kept
+              _                      -> kept
+        kept' `seq` writeIORef ref (kept', Just s)
+      finish _ = do
+        (kept, final) <- readIORef ref
+        let states = reverse (maybe kept (\f -> if maybe False ((== wsTime f) . wsTime) (listToMaybe kept)
+                                                   then kept else f : kept) final)
+        attempt (show file) (writeFile file (renderSVG style scene states))
+  pure (Sink step finish)
+
+-- The run log, written as the run goes.
+logSink :: LogWriter -> Sink
+logSink w = Sink (const (writeLogState w)) (\summary -> attempt "the log" (closeLogWriter w summary))
+
+-- The replay page, written at the end. It keeps every frame's line: the
+-- page holds the whole run, so its size (and this sink's memory) grows
+-- with the run's length, about 70 kB per simulated second of the default
+-- world.
+replaySink :: ReplayRecorder -> FilePath -> Sink
+replaySink r file = Sink (const (recordReplayState r)) (\summary -> attempt (show file) (writeReplay r summary file))
+
+-- Run a write; its failure as a message.
+attempt :: String -> IO () -> IO [String]
+attempt what act = do
+  r <- try act
+  pure $ case r of
+    Left (e :: IOException) -> [ "cannot write " ++ what ++ ": " ++ show e ]
+    Right ()                -> []
+
+-- One pass over the states: every sink takes every state; nothing else
+-- keeps a state, so the run's memory is the sinks' (constant but for the
+-- replay page's frames).
 simulateRun :: String -> SimOptions -> WorldTemplate -> SimbotController -> SimbotController -> IO ()
 simulateRun prog opts world rcA rcB = do
   start <- getMonotonicTime
@@ -164,7 +269,6 @@ simulateRun prog opts world rcA rcB = do
       nSteps   = max 0 (round (optSeconds opts / dt)) :: Int
       scene    = Scene notesBounds world
       style    = RenderStyle (optScale opts) (optRays opts) (optTrails opts)
-      render   = renderPPM style scene   -- once: what every frame shares
       logCfg   = defaultLogConfig { lcBounds = notesBounds, lcWorld = world, lcDt = dt
                                   , lcFps = optFps opts, lcSeed = optSeed opts
                                   , lcCommandLine = prog : args }
@@ -172,47 +276,36 @@ simulateRun prog opts world rcA rcB = do
       frameAt n = let f = fromIntegral n * dt * optFps opts
                   in abs (f - fromIntegral (round f :: Int)) * 2 < dt * optFps opts
                      || n == 0
-      svgEvery = max 1 (nSteps `div` 2000)
+      svgEvery = max 1 (nSteps `div` svgMaxPoints)
       states   = take (nSteps + 1) (simulateWith cfg world rcA rcB)
   mlog <- forM (optLog opts) $ \file -> do
     r <- try (openLogWriter logCfg file)
     either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ show e)) pure r
   mrec <- forM (optReplay opts) (const (newReplayRecorder logCfg))
-  ref <- newIORef (Progress 0 0 [] [])
-  let loop [] = pure Finished
-      loop (s : rest) = do
+  stepsRef  <- newIORef (0 :: Int)
+  framesRef <- newIORef (0 :: Int)
+  frames <- if optFrames opts then Just <$> framesSink opts frameAt (renderPPM style scene) framesRef
+                              else pure Nothing
+  svg <- forM (optSvg opts) (svgSink opts svgEvery (style, scene))
+  let sinks = [ messagesSink | not (optQuiet opts) ]
+              ++ [ progressSink nSteps framesRef | tty, not (optQuiet opts) ]
+              ++ catMaybes [ logSink <$> mlog, replaySink <$> mrec <*> optReplay opts, frames, svg ]
+      loop !_ [] = pure Finished
+      loop !n (s : rest) = do
         _ <- evaluate (forceState s)
-        unless (optQuiet opts) (mapM_ putStrLn (wsMessages s) >> hFlush stdout)
-        forM_ mlog (`writeLogState` s)
-        forM_ mrec (`recordReplayState` s)
-        p <- readIORef ref
-        let trails = if optTrails opts
-                       then zipWith (:) (map robotPos (wsRobots s)) (padTo (length (wsRobots s)) (prTrails p))
-                       else []
-            n = prSteps p
-        frames <- if optFrames opts && frameAt n
-          then do
-            writeFrame (optOut opts) (prFrames p)
-              (render (map reverse trails) s)
-            pure (prFrames p + 1)
-          else pure (prFrames p)
-        let kept = if optSvg opts /= Nothing && n `mod` svgEvery == 0 then s : prKept p else prKept p
-        writeIORef ref (Progress (n + 1) frames trails kept)
-        when (tty && not (optQuiet opts) && n `mod` 100 == 0) $
-          hPutStr stderr (printf "\r%3d%%  %d frames " ((100 * n) `div` max 1 nSteps) frames)
-        loop rest
-  ending <- ((loop states `catch` \e -> case e of
+        mapM_ (\k -> sinkStep k n s) sinks
+        writeIORef stepsRef $! n + 1
+        loop (n + 1) rest
+  ending <- ((loop 0 states `catch` \e -> case e of
                      UserInterrupt -> pure Interrupted
                      _             -> throwIO e)
              `catch` (pure . Failed))
             `catch` (pure . WriteFailed)
   when tty (hPutStr stderr "\r                         \r")
-  p <- readIORef ref
-  -- A stopped run leaves at most the next frame's temporary file.
-  when (optFrames opts) $
-    () <$ (try (removeFile (frameTemp (optOut opts) (prFrames p))) :: IO (Either IOException ()))
+  steps <- readIORef stepsRef
+  nFrames <- readIORef framesRef
   end <- getMonotonicTime
-  let simulated = fromIntegral (max 0 (prSteps p - 1)) * dt
+  let simulated = fromIntegral (max 0 (steps - 1)) * dt
       wall      = end - start
       failure   = case ending of
         Failed ce -> Just ce
@@ -220,45 +313,33 @@ simulateRun prog opts world rcA rcB = do
       interrupted = case ending of
         Interrupted -> True
         _           -> False
-      summary   = LogSummary simulated (prSteps p) (-1) wall interrupted (displayException <$> failure) []
-      attempt what act = do
-        r <- try act
-        pure $ case r of
-          Left (e :: IOException) -> [ "cannot write " ++ what ++ ": " ++ show e ]
-          Right ()                -> []
-  logErrs <- maybe (pure []) (\w -> attempt "the log" (closeLogWriter w summary)) mlog
-  pageErrs <- case (mrec, optReplay opts) of
-    (Just r, Just file) -> attempt (show file) (writeReplay r summary file)
-    _                   -> pure []
-  svgErrs <- case optSvg opts of
-    Just file -> attempt (show file) (writeFile file (renderSVG style scene (reverse (prKept p))))
-    Nothing   -> pure []
+      summary   = LogSummary simulated steps (-1) wall interrupted (displayException <$> failure) []
+  errs <- concat <$> mapM (`sinkFinish` summary) sinks
   let runErrs = case ending of
         WriteFailed e -> [ "the run stopped: a write failed: " ++ show e ]
         _             -> []
-      errs = runErrs ++ logErrs ++ pageErrs ++ svgErrs
   printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
     (case ending of
        Interrupted   -> "interrupted: "
        Failed _      -> "failed: "
        WriteFailed _ -> "stopped: "
        Finished      -> "" :: String)
-    simulated (prSteps p) (prFrames p) wall (if wall > 0 then simulated / wall else 0)
-  forM_ (optSvg opts) $ \file -> when (null svgErrs && not (optQuiet opts)) (putStrLn ("wrote " ++ file))
-  forM_ (optReplay opts) $ \file -> when (null pageErrs && not (optQuiet opts)) (putStrLn ("wrote " ++ file ++ " (open it in a browser)"))
+    simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
+  unless (optQuiet opts) $ do
+    forM_ (optSvg opts) $ \file -> unless (any (show file `isInfixOf`) errs) (putStrLn ("wrote " ++ file))
+    forM_ (optReplay opts) $ \file -> unless (any (show file `isInfixOf`) errs)
+      (putStrLn ("wrote " ++ file ++ " (open it in a browser)"))
   hFlush stdout
   videoErrs <- case (ending, optVideo opts) of
     (Finished, Just file) | null errs -> makeVideo opts file
     _                                 -> pure []
-  let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ errs ++ videoErrs)
+  let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs ++ videoErrs)
   unless (null allErrs) (putErr (unlines allErrs))
   case ending of
     Interrupted -> exitWith (ExitFailure 130)
     Failed _    -> exitWith (ExitFailure 1)
     _ | not (null allErrs) -> exitWith (ExitFailure 1)
       | otherwise          -> pure ()
-  where
-    padTo k xs = take k (xs ++ repeat [])
 
 forceState :: WorldState -> ()
 forceState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsBalls s)

@@ -1,11 +1,12 @@
 {-# LANGUAGE ScopedTypeVariables #-}
 -- | 'runSimWith' run headless into temporary folders: frames, the world
 -- file round trip, every reported fault, determinism.
-module AFrobRobotSim.RunSpec (spec) where
+module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 
 import           Control.Exception   (bracket, finally, try)
 import           Data.Maybe          (isJust)
-import           System.Environment  (lookupEnv, setEnv)
+import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
+import           System.Process      (proc, readCreateProcessWithExitCode, env)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, sort)
@@ -68,8 +69,30 @@ framesIn dir = do
   names <- sort . filter ("frame-" `isPrefixOf`) <$> listDirectory dir
   mapM (BS.readFile . (dir </>)) names
 
+-- | The environment variable that makes the test binary run 'child'
+-- instead of the specs.
+childVariable :: String
+childVariable = "AFRP_SPEC_RUN_CHILD"
+
+-- | What the test binary does when started as a child by the memory test:
+-- a simulated hour of the default world with the SVG and trails, under
+-- the heap limit the parent gives it (@+RTS -M40m@); a leak ends it with
+-- heap overflow (exit code 251).
+child :: String -> IO ()
+child dir = runSimWith defaultSimOptions
+  { optSeconds = 3600, optQuiet = True, optTrails = True, optFrames = False
+  , optSvg = Just (dir </> "run.svg"), optReplay = Nothing, optOut = dir } Nothing drive drive
+
 spec :: Spec
 spec = do
+  describe "memory" $
+    it "a simulated hour with the SVG and trails runs in 40 MB of heap (+RTS -M40m)" $ withTempDir $ \dir -> do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (code, out, err) <- readCreateProcessWithExitCode
+        (proc self ["+RTS", "-M40m", "-RTS"]) { env = Just ((childVariable, dir) : environment) } ""
+      (code, err) `shouldBe` (ExitSuccess, "")
+      out `shouldSatisfy` ("3600.00 s simulated in 360001 steps" `isPrefixOf`)
   describe "frames" $ do
     it "writes one P6 frame per 1/fps of simulated time, time 0 included" $ withTempDir $ \dir -> do
       (_, _, r) <- captured (runSimWith (quick (dir </> "f")) (Just world) drive drive)
