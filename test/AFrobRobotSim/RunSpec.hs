@@ -6,7 +6,9 @@ module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 import           Control.Exception   (bracket, finally, try)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
-import           System.Process      (proc, readCreateProcessWithExitCode, env)
+import           Control.Concurrent  (threadDelay)
+import           System.Process      (CreateProcess (..), StdStream (..), createProcess, interruptProcessGroupOf,
+                                      proc, readCreateProcessWithExitCode, waitForProcess)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, sort)
@@ -74,14 +76,22 @@ framesIn dir = do
 childVariable :: String
 childVariable = "AFRP_SPEC_RUN_CHILD"
 
--- | What the test binary does when started as a child by the memory test:
--- a simulated hour of the default world with the SVG and trails, under
--- the heap limit the parent gives it (@+RTS -M40m@); a leak ends it with
--- heap overflow (exit code 251).
+-- | What the test binary does when started as a child (the variable's
+-- value is @what:folder@). @hour@: a simulated hour of the default world
+-- with the SVG and trails, under the heap limit the parent gives it
+-- (@+RTS -M40m@); a leak ends it with heap overflow (exit code 251).
+-- @long@: ten simulated hours with small frames, the log and the page,
+-- for the parent to interrupt.
 child :: String -> IO ()
-child dir = runSimWith defaultSimOptions
-  { optSeconds = 3600, optQuiet = True, optTrails = True, optFrames = False
-  , optSvg = Just (dir </> "run.svg"), optReplay = Nothing, optOut = dir } Nothing drive drive
+child arg = case break (== ':') arg of
+  ("hour", _ : dir) -> runSimWith defaultSimOptions
+    { optSeconds = 3600, optQuiet = True, optTrails = True, optFrames = False
+    , optSvg = Just (dir </> "run.svg"), optReplay = Nothing, optOut = dir } Nothing drive drive
+  ("long", _ : dir) -> runSimWith defaultSimOptions
+    { optSeconds = 36000, optQuiet = True, optFrames = True, optScale = 10, optOut = dir </> "f"
+    , optSvg = Just (dir </> "run.svg"), optLog = Just (dir </> "run.jsonl")
+    , optReplay = Just (dir </> "run.html") } Nothing drive drive
+  _ -> ioError (userError ("unknown child " ++ show arg))
 
 spec :: Spec
 spec = do
@@ -90,9 +100,35 @@ spec = do
       self <- getExecutablePath
       environment <- getEnvironment
       (code, out, err) <- readCreateProcessWithExitCode
-        (proc self ["+RTS", "-M40m", "-RTS"]) { env = Just ((childVariable, dir) : environment) } ""
+        (proc self ["+RTS", "-M40m", "-RTS"]) { env = Just ((childVariable, "hour:" ++ dir) : environment) } ""
       (code, err) `shouldBe` (ExitSuccess, "")
       out `shouldSatisfy` ("3600.00 s simulated in 360001 steps" `isPrefixOf`)
+
+  describe "Ctrl-C" $
+    it "stops with exit code 130, the summary, whole frames, a log with its summary and the page" $ withTempDir $ \dir -> do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (_, Just hout, _, ph) <- createProcess (proc self [])
+        { env = Just ((childVariable, "long:" ++ dir) : environment), create_group = True
+        , std_out = CreatePipe, std_err = Inherit }
+      let waitForFrames k = do
+            names <- listDirectory (dir </> "f") `orElse` []
+            if length names >= 20 || k > (200 :: Int) then pure () else threadDelay 50000 >> waitForFrames (k + 1)
+          orElse act d = either (\(_ :: IOError) -> d) id <$> try act
+      waitForFrames 0
+      interruptProcessGroupOf ph
+      code <- waitForProcess ph
+      code `shouldBe` ExitFailure 130
+      out <- hGetContents hout
+      out `shouldSatisfy` ("interrupted: " `isPrefixOf`)
+      names <- listDirectory (dir </> "f")
+      filter (".tmp" `isInfixOf`) names `shouldBe` []
+      frames <- framesIn (dir </> "f")
+      all ((== 15 + 3 * 120 * 120) . BS.length) frames `shouldBe` True
+      Right l <- readLogFile (dir </> "run.jsonl")
+      fmap lsInterrupted (rlSummary l) `shouldBe` Just True
+      page <- readFile (dir </> "run.html")
+      "<!DOCTYPE html>" `isPrefixOf` page `shouldBe` True
   describe "frames" $ do
     it "writes one P6 frame per 1/fps of simulated time, time 0 included" $ withTempDir $ \dir -> do
       (_, _, r) <- captured (runSimWith (quick (dir </> "f")) (Just world) drive drive)
