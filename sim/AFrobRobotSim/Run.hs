@@ -25,6 +25,18 @@
 -- temporary file and renamed; no temporary file is left), and the summary
 -- is printed. Two runs with the same world, controllers and flags write
 -- byte-identical frames.
+--
+-- The design that keeps a run's memory independent of its length: the
+-- simulation is one lazy list of world states walked once, and each output
+-- (the messages, the progress line, the frames with their trails, the SVG,
+-- the log, the replay page) is a sink, a strict fold with its own small
+-- state that takes every state and is finished at the end; nothing else
+-- holds a state. Trails keep only points more than a pixel apart (at most
+-- 20,000 a robot), the SVG at most 2,001 snapshots. The exception is the
+-- replay page, which holds the whole run by design: its sink keeps each
+-- frame period's encoded line (about 70 kB per simulated second of the
+-- default world), so the page and that memory grow with the run's length;
+-- leave it out (@--no-replay@) for long runs and write a log instead.
 module AFrobRobotSim.Run
   ( runSim
   , runSimWith
