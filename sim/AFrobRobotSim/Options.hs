@@ -168,8 +168,10 @@ validateOptions o =
      | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
   ++ [ "--dt " ++ num dt ++ " does not divide the frame period 1/" ++ num fps ++ " s; --fps "
        ++ suggestion ++ " would work"
-     | finite fps, finite dt, dt > 0, fps > 0, fps * dt <= 1 + 1e-9, not tooMany
+     | finite fps, finite dt, dt > 0, fps > 0, fps * dt <= 1 + 1e-9, fps * dt >= 1e-9, not tooMany
      , let k = 1 / (fps * dt), abs (k - fromIntegral (round k :: Int)) > 1e-4 * k ]
+  ++ [ "--fps " ++ num fps ++ " is less than one frame in 10^9 steps of --dt " ++ num dt
+     | finite fps, finite dt, fps > 0, dt > 0, fps * dt < 1e-9 ]
   ++ [ "--out must not be empty" | null (optOut o) ]
   where
     secs = optSeconds o; dt = optDt o; fps = optFps o; scale = optScale o

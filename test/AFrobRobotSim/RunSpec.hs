@@ -242,6 +242,7 @@ spec = do
     it "a --dt that does not divide the frame period, saying which --fps would work" $ do
       refused (\dir -> (quick dir) { optDt = 0.03 }) ("--fps 33.333 or 16.667 would work" `isInfixOf`)
       validateOptions defaultSimOptions { optDt = 0.03, optFps = 33.333 } `shouldBe` []
+      validateOptions defaultSimOptions { optFps = 1e-300 } `shouldSatisfy` any ("--fps" `isInfixOf`)
     it "--video without ffmpeg on the PATH" $ withTempDir $ \empty -> do
       saved <- lookupEnv "PATH"
       setEnv "PATH" empty
