@@ -4,14 +4,38 @@
 -- point ('rcMoveTo'), and the SimbotBs align their headings ('rcAlign'),
 -- backing off whenever they get stuck.
 -- Every flag of 'runSim' applies (@--help@ lists them).
+--
+-- @simbot --replay-from RUN.jsonl --replay OUT.html@ simulates nothing: it
+-- turns a run log (written with @--log@) into a replay page.
 module Main (main) where
+
+import           System.Environment (getArgs, getProgName)
+import           System.Exit        (exitWith, ExitCode (..))
+import           System.IO          (hPutStr, stderr)
 
 import           AFrob
 import           AFrobRobotSim
-import           Paper.Section3 (rcAlign, rcFollowLeftWall, rcMoveTo, rcReverse)
+import           AFrobRobotSim.Replay (writeReplayFromLog)
+import           Paper.Section3     (rcAlign, rcFollowLeftWall, rcMoveTo, rcReverse)
 
 main :: IO ()
-main = runSim Nothing demoA demoB
+main = do
+  args <- getArgs
+  if "--replay-from" `elem` args then replayFrom args else runSim Nothing demoA demoB
+
+-- | @--replay-from F.jsonl --replay OUT.html@, in either order.
+replayFrom :: [String] -> IO ()
+replayFrom args = do
+  prog <- getProgName
+  let failWith msg = hPutStr stderr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure 2)
+  case args of
+    ["--replay-from", f, "--replay", o] -> go failWith f o
+    ["--replay", o, "--replay-from", f] -> go failWith f o
+    _ -> failWith "--replay-from FILE.jsonl needs --replay OUT.html and no other flag"
+  where
+    go failWith f o = do
+      r <- writeReplayFromLog f o
+      either (failWith . ((f ++ ": ") ++)) (const (putStrLn ("wrote " ++ o))) r
 
 -- | The SimbotA demos, by id.
 demoA :: SimbotController

@@ -30,6 +30,9 @@ module AFrobRobotSim
   , Command (..)
   , parseSimArgs
   , parseKeys
+  , validateOptions
+  , maxSteps
+  , maxFrameSide
   , usage
   , defaultWorld
     -- * Controllers and their input and output

@@ -51,9 +51,13 @@ import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified AFrobRobotSim.WorldSpec
 import qualified NetworksSpec
+import           System.Environment (lookupEnv)
 
 main :: IO ()
-main = hspec $ do
+main = lookupEnv AFrobRobotSim.RunSpec.childVariable >>= maybe specs AFrobRobotSim.RunSpec.child
+
+specs :: IO ()
+specs = hspec $ do
   describe "AFRP.Basic"       AFRP.BasicSpec.spec
   describe "AFRP.Event"       AFRP.EventSpec.spec
   describe "AFRP.EventSource" AFRP.EventSourceSpec.spec

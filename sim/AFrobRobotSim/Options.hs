@@ -9,8 +9,9 @@
 -- --seconds T        simulated time to run                 (default 30)
 -- --dt D             fixed time step, seconds              (default 0.01)
 -- --fps F            frames per simulated second           (default 25)
--- --out DIR          folder for the PPM frames             (default frames)
--- --no-frames        write no frames
+-- --out DIR          output folder (frames, default SVG and page) (default simbot-out)
+-- --frames           also write PPM frames into the output folder
+-- --no-frames        write no frames (the default)
 -- --scale PX         pixels per metre                      (default 60)
 -- --keys "1.5:a,3:b" scripted key presses (time:key, ...)
 -- --seed N           seed of the random parts              (default 0)
@@ -20,29 +21,43 @@
 -- --dump-world       print the world in the world-file format and exit
 -- --rays             draw the four range-finder rays
 -- --trails           draw each robot's path so far
--- --svg FILE         also write one SVG picture of the whole run
--- --video FILE.mp4   assemble the frames into a video (needs ffmpeg)
+-- --svg FILE         write one SVG picture of the whole run  (default simbot-out/run.svg)
+-- --no-svg           write no SVG
+-- --replay FILE      write the HTML replay page              (default simbot-out/replay.html)
+-- --no-replay        write no replay page
+-- --log FILE.jsonl   write the JSON-lines run log (docs/LOG.md)
+-- --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames)
 -- --help             print this usage and exit
 -- @
+--
+-- 'validateOptions' checks the numbers together before anything is
+-- simulated: the step count @seconds / dt@ is finite and at most
+-- 'maxSteps', the frame period @1 / fps@ is a whole number of steps, the
+-- frame is at most 'maxFrameSide' pixels wide.
 module AFrobRobotSim.Options
   ( SimOptions (..)
   , defaultSimOptions
   , Command (..)
   , parseSimArgs
   , parseKeys
+  , validateOptions
+  , maxSteps
+  , maxFrameSide
   , usage
   ) where
 
-import           Data.Char  (isSpace)
-import           Data.List  (intercalate)
-import           Text.Read  (readMaybe)
+import           Data.Char       (isSpace)
+import           Data.List       (intercalate)
+import           System.FilePath ((</>))
+import           Text.Printf     (printf)
+import           Text.Read       (readMaybe)
 
 -- | The settings of a run.
 data SimOptions = SimOptions
   { optSeconds       :: !Double            -- ^ simulated seconds to run
   , optDt            :: !Double            -- ^ the fixed time step (s)
   , optFps           :: !Double            -- ^ frames per simulated second
-  , optOut           :: FilePath           -- ^ folder for the frames
+  , optOut           :: FilePath           -- ^ the output folder (the frames go there)
   , optFrames        :: !Bool              -- ^ write frames at all
   , optScale         :: !Double            -- ^ pixels per metre
   , optKeys          :: [(Double, Char)]   -- ^ scripted key presses
@@ -55,15 +70,22 @@ data SimOptions = SimOptions
   , optTrails        :: !Bool              -- ^ draw trails
   , optSvg           :: Maybe FilePath     -- ^ write an SVG of the whole run
   , optVideo         :: Maybe FilePath     -- ^ assemble an mp4 with ffmpeg
+  , optLog           :: Maybe FilePath     -- ^ write the JSON-lines run log
+  , optReplay        :: Maybe FilePath     -- ^ write the HTML replay page
   } deriving (Eq, Show)
 
--- | The defaults listed in the module documentation.
+-- | The defaults listed in the module documentation: no frames, the SVG
+-- and the replay page in @simbot-out/@ (a 30 s run writes about 2 MB).
 defaultSimOptions :: SimOptions
 defaultSimOptions = SimOptions
-  { optSeconds = 30, optDt = 0.01, optFps = 25, optOut = "frames", optFrames = True
+  { optSeconds = 30, optDt = 0.01, optFps = 25, optOut = defaultOut, optFrames = False
   , optScale = 60, optKeys = [], optSeed = 0, optOdometryNoise = 0, optQuiet = False
   , optWorldFile = Nothing, optDumpWorld = False, optRays = False, optTrails = False
-  , optSvg = Nothing, optVideo = Nothing }
+  , optSvg = Just (defaultOut </> "run.svg"), optVideo = Nothing, optLog = Nothing
+  , optReplay = Just (defaultOut </> "replay.html") }
+
+defaultOut :: FilePath
+defaultOut = "simbot-out"
 
 -- | What a command line asks for.
 data Command
@@ -80,6 +102,9 @@ parseSimArgs o args = case args of
   "--help" : _             -> Right ShowHelp
   "-h" : _                 -> Right ShowHelp
   "--no-frames" : rest     -> parseSimArgs o { optFrames = False } rest
+  "--frames" : rest        -> parseSimArgs o { optFrames = True } rest
+  "--no-svg" : rest        -> parseSimArgs o { optSvg = Nothing } rest
+  "--no-replay" : rest     -> parseSimArgs o { optReplay = Nothing } rest
   "--quiet" : rest         -> parseSimArgs o { optQuiet = True } rest
   "--dump-world" : rest    -> parseSimArgs o { optDumpWorld = True } rest
   "--rays" : rest          -> parseSimArgs o { optRays = True } rest
@@ -93,7 +118,9 @@ parseSimArgs o args = case args of
       [ ("--seconds", \v -> (\x -> o { optSeconds = x }) <$> number "--seconds" (>= 0) v)
       , ("--dt",      \v -> (\x -> o { optDt = x }) <$> number "--dt" (> 0) v)
       , ("--fps",     \v -> (\x -> o { optFps = x }) <$> number "--fps" (> 0) v)
-      , ("--out",     \v -> Right o { optOut = v })
+      , ("--out",     \v -> if null v then Left "--out expects a folder name, got \"\""
+                             else Right o { optOut = v, optSvg = moved v <$> optSvg o
+                                          , optReplay = moved v <$> optReplay o })
       , ("--scale",   \v -> (\x -> o { optScale = x }) <$> number "--scale" (> 0) v)
       , ("--keys",    \v -> (\ks -> o { optKeys = ks }) <$> parseKeys v)
       , ("--seed",    \v -> maybe (Left ("--seed expects a whole number, got " ++ show v))
@@ -102,16 +129,67 @@ parseSimArgs o args = case args of
       , ("--world",   \v -> Right o { optWorldFile = Just v })
       , ("--svg",     \v -> Right o { optSvg = Just v })
       , ("--video",   \v -> Right o { optVideo = Just v })
+      , ("--log",     \v -> Right o { optLog = Just v })
+      , ("--replay",  \v -> Right o { optReplay = Just v })
       ]
+    -- a default output file follows the output folder
+    moved dir f | f `elem` [optOut o </> "run.svg", optOut o </> "replay.html"] = dir </> drop (length (optOut o) + 1) f
+                | otherwise = f
     number flag ok v = case readMaybe (trim v) :: Maybe Double of
       Just x | not (isNaN x || isInfinite x) && ok x -> Right x
       _ -> Left (flag ++ " expects a " ++ what flag ++ " number, got " ++ show v)
     what flag | flag `elem` ["--seconds", "--odometry-noise"] = "non-negative"
               | otherwise                                      = "positive"
-    check opts
-      | optFps opts * optDt opts > 1 + 1e-9 =
-          Left "--fps times --dt must not exceed 1 (at most one frame per time step)"
-      | otherwise = Right (RunWith opts)
+    check opts = case validateOptions opts of
+      []   -> Right (RunWith opts)
+      errs -> Left (intercalate "; " errs)
+
+-- | The most steps a run may take: 10^8 (about 280 simulated hours at the
+-- default step).
+maxSteps :: Double
+maxSteps = 1e8
+
+-- | The widest frame (and SVG) 'optScale' may ask for, in pixels.
+maxFrameSide :: Double
+maxFrameSide = 8000
+
+-- | The faults of a set of options that no flag alone shows, one message
+-- each (empty when the options are fine). Checked by 'parseSimArgs' and
+-- again by 'AFrobRobotSim.runSimWith' before simulating.
+validateOptions :: SimOptions -> [String]
+validateOptions o =
+  [ "--seconds and --dt must be finite numbers, --dt positive" | not (all finite [secs, dt, fps, scale]) || dt <= 0 || fps <= 0 ]
+  ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is " ++ num steps
+       ++ " steps, more than the " ++ num maxSteps ++ " allowed"
+     | all finite [secs, dt], dt > 0, tooMany ]
+  ++ [ "--scale " ++ num scale ++ " makes a frame " ++ num side ++ " pixels wide, more than " ++ num maxFrameSide
+     | finite scale, side > maxFrameSide ]
+  ++ [ "--fps times --dt must not exceed 1 (at most one frame per time step)"
+     | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
+  ++ [ "--dt " ++ num dt ++ " does not divide the frame period 1/" ++ num fps ++ " s; --fps "
+       ++ suggestion ++ " would work"
+     | finite fps, finite dt, dt > 0, fps > 0, fps * dt <= 1 + 1e-9, fps * dt >= 1e-9, not tooMany
+     , let k = 1 / (fps * dt), abs (k - fromIntegral (round k :: Int)) > 1e-4 * k ]
+  ++ [ "--fps " ++ num fps ++ " is less than one frame in 10^9 steps of --dt " ++ num dt
+     | finite fps, finite dt, fps > 0, dt > 0, fps * dt < 1e-9 ]
+  ++ [ "--out must not be empty" | null (optOut o) ]
+  where
+    secs = optSeconds o; dt = optDt o; fps = optFps o; scale = optScale o
+    steps = secs / dt
+    tooMany = isNaN steps || steps > maxSteps
+    side = 10 * scale + 20
+    finite x = not (isNaN x || isInfinite x)
+    suggestion :: String
+    suggestion = let k = max 1 (round (1 / (fps * dt)) :: Int)
+                     good j = num (1 / (fromIntegral j * dt))
+                 in good k ++ " or " ++ good (k + 1)
+
+-- A number as a person writes it: 25, 0.01, 33.333, 1e+20.
+num :: Double -> String
+num x
+  | x /= 0 && (abs x < 1e-3 || abs x >= 1e9) = printf "%.3e" x
+  | otherwise = let s = printf "%.3f" x :: String
+                in reverse (dropWhile (== '.') (dropWhile (== '0') (reverse s)))
 
 -- | Parse scripted key presses: @"1.5:a,3:b"@ is @a@ at 1.5 s and @b@ at
 -- 3 s. Times must be non-negative; a key is one character.
@@ -139,13 +217,15 @@ usage prog = intercalate "\n"
   [ "usage: " ++ prog ++ " [flags]"
   , ""
   , "Runs the simbot simulator headless: prints the robots' console messages,"
-  , "writes PPM frames, and ends with a one-line summary."
+  , "writes an SVG of the run and an HTML replay page (PPM frames with --frames),"
+  , "and ends with a one-line summary."
   , ""
   , "  --seconds T        simulated time to run                 (default 30)"
   , "  --dt D             fixed time step, seconds              (default 0.01)"
   , "  --fps F            frames per simulated second           (default 25)"
-  , "  --out DIR          folder for the PPM frames             (default frames)"
-  , "  --no-frames        write no frames"
+  , "  --out DIR          output folder                         (default simbot-out)"
+  , "  --frames           also write PPM frames (1.15 MB each: 866 MB for 30 s at 25 fps)"
+  , "  --no-frames        write no frames (the default)"
   , "  --scale PX         pixels per metre                      (default 60)"
   , "  --keys \"1.5:a,3:b\" scripted key presses (time:key, ...)"
   , "  --seed N           seed of the random parts              (default 0)"
@@ -155,7 +235,11 @@ usage prog = intercalate "\n"
   , "  --dump-world       print the world in the world-file format and exit"
   , "  --rays             draw the four range-finder rays"
   , "  --trails           draw each robot's path so far"
-  , "  --svg FILE         also write one SVG picture of the whole run"
-  , "  --video FILE.mp4   assemble the frames into a video (needs ffmpeg)"
+  , "  --svg FILE         write one SVG picture of the whole run  (default simbot-out/run.svg)"
+  , "  --no-svg           write no SVG"
+  , "  --replay FILE      write the HTML replay page              (default simbot-out/replay.html)"
+  , "  --no-replay        write no replay page"
+  , "  --log FILE.jsonl   write the JSON-lines run log (see docs/LOG.md)"
+  , "  --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames)"
   , "  --help             print this usage and exit"
   ]

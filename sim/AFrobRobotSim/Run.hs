@@ -1,3 +1,4 @@
+{-# LANGUAGE BangPatterns        #-}
 {-# LANGUAGE ScopedTypeVariables #-}
 -- |
 -- Module      : AFrobRobotSim.Run
@@ -5,18 +6,37 @@
 --
 -- @runSim (Just world) rcA rcB@ reads its settings from the command line
 -- (see "AFrobRobotSim.Options" for the flags), simulates, prints the
--- robots' console messages as they happen, writes PPM frames, and ends with
--- a one-line summary.
+-- robots' console messages as they happen, writes the SVG, the replay
+-- page, the run log and PPM frames as asked, and ends with a one-line
+-- summary.
 --
--- Faults are reported before anything is simulated when possible: an
--- unknown flag, a world file that cannot be read or parsed (with its line
--- and column), an invalid world, an output folder that cannot be written
--- all print a message to standard error and exit with code 2. A controller
--- that throws stops the run with a message naming the robot and the
--- simulated time (exit code 1). Ctrl-C stops the run: every frame written
--- so far is complete (frames are written to a temporary file and renamed),
--- the summary is printed, and the exit code is 130. Two runs with the same
--- world, controllers and flags write byte-identical frames.
+-- Every fault that can be found before simulating is reported before
+-- simulating, all of them in one message on standard error, with exit
+-- code 2: an unknown flag, a world file that cannot be read or parsed
+-- (with its line and column), an invalid world, options that do not fit
+-- together ('validateOptions'), an output file or folder whose folder
+-- does not exist or cannot be written, @--video@ without @ffmpeg@ on the
+-- PATH. A controller that throws stops the run with a message naming the
+-- robot and the simulated time (exit code 1). A write that fails during
+-- the run (a full disk) stops it with a message (exit code 1). Ctrl-C
+-- stops the run (exit code 130). In each case the outputs are finished
+-- with what was simulated (the log gets its summary, the page and the SVG
+-- are written), every frame written is complete (frames are written to a
+-- temporary file and renamed; no temporary file is left), and the summary
+-- is printed. Two runs with the same world, controllers and flags write
+-- byte-identical frames.
+--
+-- The design that keeps a run's memory independent of its length: the
+-- simulation is one lazy list of world states walked once, and each output
+-- (the messages, the progress line, the frames with their trails, the SVG,
+-- the log, the replay page) is a sink, a strict fold with its own small
+-- state that takes every state and is finished at the end; nothing else
+-- holds a state. Trails keep only points more than a pixel apart (at most
+-- 20,000 a robot), the SVG at most 2,001 snapshots. The exception is the
+-- replay page, which holds the whole run by design: its sink keeps each
+-- frame period's encoded line (about 70 kB per simulated second of the
+-- default world), so the page and that memory grow with the run's length;
+-- leave it out (@--no-replay@) for long runs and write a log instead.
 module AFrobRobotSim.Run
   ( runSim
   , runSimWith
@@ -24,25 +44,30 @@ module AFrobRobotSim.Run
 
 import           Control.Exception         (AsyncException (UserInterrupt), Exception (..), IOException, catch,
                                             evaluate, throwIO, try)
-import           Control.Monad             (forM_, unless, when)
+import           Control.Monad             (forM, forM_, unless, when)
 import qualified Data.ByteString           as BS
 import           Data.IORef
-import           Data.List                 (foldl')
+import           Data.List                 (foldl', isInfixOf, nub)
+import           Data.Maybe                (catMaybes, listToMaybe)
 import           GHC.Clock                 (getMonotonicTime)
-import           System.Directory          (createDirectoryIfMissing, findExecutable, removeFile,
-                                            renameFile)
+import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
+                                            findExecutable, getPermissions, removeFile, renameFile,
+                                            writable)
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
-import           System.FilePath           ((</>))
-import           System.IO                 (hFlush, hIsTerminalDevice, hPutStr, hPutStrLn, stderr,
-                                            stdout)
+import           System.FilePath           (takeDirectory, (</>))
+import           System.IO                 (BufferMode (..), hFlush, hIsTerminalDevice, hPutStr,
+                                            hSetBuffering, stderr, stdout)
 import           System.Process            (rawSystem)
 import           Text.Printf               (printf)
 
-import           AFRP.Geometry             (Point2)
+import           AFRP.Geometry             (norm, (.-.))
+import           AFrob.Dimensions          (Position2)
 import           AFrobRobotSim.DefaultWorld
+import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
 import           AFrobRobotSim.Render
+import           AFrobRobotSim.Replay
 import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
@@ -62,7 +87,7 @@ runSim mworld rcA rcB = do
     Right (RunWith opts) -> runSimWith opts mworld rcA rcB
 
 -- | Run a simbot program with settings given in code (the command line is
--- not read).
+-- not read; the log's header records the program's real arguments).
 runSimWith :: SimOptions -> Maybe WorldTemplate -> SimbotController -> SimbotController -> IO ()
 runSimWith opts mworld rcA rcB = do
   prog  <- getProgName
@@ -75,94 +100,258 @@ runSimWith opts mworld rcA rcB = do
   if optDumpWorld opts
     then putStr (renderWorld world)
     else do
-      when (optFrames opts) (prepareFolder prog (optOut opts))
-      when (optVideo opts /= Nothing && not (optFrames opts)) $
-        failWith 2 (prog ++ ": --video needs the frames (drop --no-frames)")
+      errs <- preflight opts
+      unless (null errs) $
+        failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
       simulateRun prog opts world rcA rcB
 
--- Create the output folder and prove it writable, before simulating.
-prepareFolder :: String -> FilePath -> IO ()
-prepareFolder prog dir = do
-  r <- try (do createDirectoryIfMissing True dir
-               let probe = dir </> ".afrp-write-test"
-               writeFile probe "ok"
-               removeFile probe)
-  case r of
-    Left (e :: IOException) ->
-      failWith 2 (prog ++ ": cannot write frames to " ++ show dir ++ ": " ++ show e)
-    Right () -> pure ()
+-- Every check of the options and the file system that can be made before
+-- simulating; creates the output folder when something goes there.
+preflight :: SimOptions -> IO [String]
+preflight opts = do
+  let out   = optOut opts
+      files = catMaybes [ (,) "--svg" <$> optSvg opts, (,) "--log" <$> optLog opts
+                        , (,) "--replay" <$> optReplay opts, (,) "--video" <$> optVideo opts ]
+      inOut = optFrames opts || any ((== out) . takeDirectory . snd) files
+  ffmpeg <- maybe (pure Nothing) (const (findExecutable "ffmpeg")) (optVideo opts)
+  fileErrs <- forM files $ \(flag, f) ->
+    if takeDirectory f == out && inOut then checkTarget flag f Nothing else checkTarget flag f (Just (takeDirectory f))
+  let pre = validateOptions opts
+            ++ [ "--video needs the frames (add --frames)" | optVideo opts /= Nothing, not (optFrames opts) ]
+            ++ [ "--video needs ffmpeg on the PATH (on Debian: apt-get install ffmpeg)"
+               | optVideo opts /= Nothing, ffmpeg == Nothing ]
+            ++ [ "two outputs go to the same file" | let fs = map snd files, length (nub fs) /= length fs ]
+            ++ concat fileErrs
+  -- the output folder is created only when nothing else is wrong
+  if inOut && null pre then checkFolder out else pure pre
+  where
+    -- a file to write: not a folder, and its folder exists and is writable
+    checkTarget flag f mdir = do
+      isDir <- doesDirectoryExist f
+      dirErr <- case mdir of
+        Nothing  -> pure []
+        Just dir -> folderWritable flag f dir
+      pure ([ flag ++ " " ++ show f ++ " is a folder" | isDir ] ++ dirErr)
+    folderWritable flag f dir = do
+      there <- doesDirectoryExist dir
+      if not there
+        then pure [ flag ++ " " ++ show f ++ ": the folder " ++ show dir ++ " does not exist" ]
+        else do
+          w <- writable <$> getPermissions dir
+          exists <- doesFileExist f
+          fw <- if exists then writable <$> getPermissions f else pure True
+          pure [ flag ++ " " ++ show f ++ ": cannot write there" | not (w || (exists && fw)) ]
+    -- the output folder: created if its parent exists, then proven writable
+    checkFolder dir = do
+      there <- doesDirectoryExist dir
+      parentThere <- doesDirectoryExist (takeDirectory dir)
+      if not there && not parentThere
+        then pure [ "cannot write frames to " ++ show dir ++ ": the folder " ++ show (takeDirectory dir)
+                    ++ " does not exist" ]
+        else do
+          r <- try (do unless there (createDirectory dir)
+                       let probe = dir </> ".afrp-write-test"
+                       writeFile probe "ok"
+                       removeFile probe)
+          pure $ case r of
+            Left (e :: IOException) -> [ "cannot write frames to " ++ show dir ++ ": " ++ show e ]
+            Right ()                -> []
 
-data Progress = Progress
-  { prSteps  :: !Int
-  , prFrames :: !Int
-  , prTrails :: [[Point2 Double]]   -- newest first, one list per robot
-  , prKept   :: [WorldState]        -- snapshots kept for the SVG, newest first
+-- How a run's loop ended.
+data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOException
+
+-- | One output of a run: a consumer of the stream of world states (every
+-- step's, from time 0) with its own small strict state, and what it does
+-- when the run ends (the messages of the writes that failed).
+data Sink = Sink
+  { sinkStep   :: Int -> WorldState -> IO ()
+  , sinkFinish :: LogSummary -> IO [String]
   }
 
+-- A sink with nothing to finish.
+stepOnly :: (Int -> WorldState -> IO ()) -> Sink
+stepOnly f = Sink f (const (pure []))
+
+-- The robots' console messages, printed as they happen.
+messagesSink :: Sink
+messagesSink = stepOnly $ \_ s -> unless (null (wsMessages s)) (mapM_ putStrLn (wsMessages s) >> hFlush stdout)
+
+-- The progress line on a terminal.
+progressSink :: Int -> IORef Int -> Sink
+progressSink nSteps framesRef = stepOnly $ \n _ -> when (n `mod` 100 == 0) $ do
+  frames <- readIORef framesRef
+  hPutStr stderr (printf "\r%3d%%  %d frames " ((100 * n) `div` max 1 nSteps) frames)
+
+-- A trail: the points of a robot's path that are more than a pixel from
+-- the previous one, newest first, at most 'trailMax'.
+data Trail = Trail !Int ![Position2]
+
+trailMax :: Int
+trailMax = 20000
+
+-- Add a point to a trail when it moved more than @px@ metres.
+extendTrail :: Double -> Position2 -> Trail -> Trail
+extendTrail px p t@(Trail k ps) = case ps of
+  q : _ | near q -> t
+  _ | k >= 2 * trailMax -> Trail (trailMax + 1) (p : take trailMax ps)   -- amortised trimming
+    | otherwise         -> Trail (k + 1) (p : ps)
+  where near q = norm (p .-. q) <= px
+
+trailPoints :: Trail -> [Position2]
+trailPoints (Trail _ ps) = reverse (take trailMax ps)
+
+-- The PPM frames (with the trails, when drawn), written as the run goes;
+-- the count is shared with the progress line and the summary.
+framesSink :: SimOptions -> (Int -> Bool) -> ([[Position2]] -> WorldState -> BS.ByteString) -> IORef Int -> IO Sink
+framesSink opts frameAt render countRef = do
+  trailsRef <- newIORef []
+  let px = 1 / optScale opts
+      step n s = do
+        trails <- if optTrails opts
+          then do
+            old <- readIORef trailsRef
+            let new = zipWith (extendTrail px) (map robotPos (wsRobots s)) (old ++ repeat (Trail 0 []))
+            _ <- evaluate (foldl' (\acc (Trail k _) -> acc + k) 0 new)
+            new <$ writeIORef trailsRef new
+          else pure []
+        when (frameAt n) $ do
+          k <- readIORef countRef
+          writeFrame (optOut opts) k (render (map trailPoints trails) s)
+          writeIORef countRef $! k + 1
+      -- A stopped run leaves at most the next frame's temporary file.
+      finish _ = do
+        k <- readIORef countRef
+        [] <$ (try (removeFile (frameTemp (optOut opts) k)) :: IO (Either IOException ()))
+  pure (Sink step finish)
+
+-- The SVG: at most 'svgMaxPoints' + 1 snapshots, taken every @every@
+-- steps when a robot moved more than a pixel since the last one, and the
+-- last state; written at the end.
+svgSink :: SimOptions -> Int -> (RenderStyle, Scene) -> FilePath -> IO Sink
+svgSink opts every (style, scene) file = do
+  ref <- newIORef ([], Nothing)
+  let px = 1 / optScale opts
+      moved a b = or (zipWith (\p q -> norm (robotPos p .-. robotPos q) > px)
+                              (wsRobots a) (wsRobots b))
+                  || length (wsRobots a) /= length (wsRobots b)
+      step n s = do
+        (kept, _) <- readIORef ref
+        let kept' = case kept of
+              k : _ | n `mod` every /= 0 || not (moved k s) -> kept
+              _ | n `mod` every == 0 -> s : kept
+              _                      -> kept
+        kept' `seq` writeIORef ref (kept', Just s)
+      finish _ = do
+        (kept, final) <- readIORef ref
+        let states = reverse (maybe kept (\f -> if maybe False ((== wsTime f) . wsTime) (listToMaybe kept)
+                                                   then kept else f : kept) final)
+        attempt (show file) (writeFile file (renderSVG style scene states))
+  pure (Sink step finish)
+
+-- The run log, written as the run goes.
+logSink :: LogWriter -> Sink
+logSink w = Sink (const (writeLogState w)) (\summary -> attempt "the log" (closeLogWriter w summary))
+
+-- The replay page, written at the end. It keeps every frame's line: the
+-- page holds the whole run, so its size (and this sink's memory) grows
+-- with the run's length, about 70 kB per simulated second of the default
+-- world.
+replaySink :: ReplayRecorder -> FilePath -> Sink
+replaySink r file = Sink (const (recordReplayState r)) (\summary -> attempt (show file) (writeReplay r summary file))
+
+-- Run a write; its failure as a message.
+attempt :: String -> IO () -> IO [String]
+attempt what act = do
+  r <- try act
+  pure $ case r of
+    Left (e :: IOException) -> [ "cannot write " ++ what ++ ": " ++ show e ]
+    Right ()                -> []
+
+-- One pass over the states: every sink takes every state; nothing else
+-- keeps a state, so the run's memory is the sinks' (constant but for the
+-- replay page's frames).
 simulateRun :: String -> SimOptions -> WorldTemplate -> SimbotController -> SimbotController -> IO ()
 simulateRun prog opts world rcA rcB = do
   start <- getMonotonicTime
   tty   <- hIsTerminalDevice stderr
+  args  <- getArgs
   let dt       = optDt opts
       cfg      = defaultSimConfig { simDt = dt, simKeys = optKeys opts, simSeed = optSeed opts
                                   , simOdometryNoise = optOdometryNoise opts }
       nSteps   = max 0 (round (optSeconds opts / dt)) :: Int
       scene    = Scene notesBounds world
       style    = RenderStyle (optScale opts) (optRays opts) (optTrails opts)
-      render   = renderPPM style scene   -- once: what every frame shares
+      logCfg   = defaultLogConfig { lcBounds = notesBounds, lcWorld = world, lcDt = dt
+                                  , lcFps = optFps opts, lcSeed = optSeed opts
+                                  , lcCommandLine = prog : args }
       -- frame f is taken at the step nearest to simulated time f / fps
       frameAt n = let f = fromIntegral n * dt * optFps opts
                   in abs (f - fromIntegral (round f :: Int)) * 2 < dt * optFps opts
                      || n == 0
-      svgEvery = max 1 (nSteps `div` 2000)
+      svgEvery = max 1 (nSteps `div` svgMaxPoints)
       states   = take (nSteps + 1) (simulateWith cfg world rcA rcB)
-  ref <- newIORef (Progress 0 0 [] [])
-  let loop [] = pure False
-      loop (s : rest) = do
+  mlog <- forM (optLog opts) $ \file -> do
+    r <- try (openLogWriter logCfg file)
+    either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ show e)) pure r
+  mrec <- forM (optReplay opts) (const (newReplayRecorder logCfg))
+  stepsRef  <- newIORef (0 :: Int)
+  framesRef <- newIORef (0 :: Int)
+  frames <- if optFrames opts then Just <$> framesSink opts frameAt (renderPPM style scene) framesRef
+                              else pure Nothing
+  svg <- forM (optSvg opts) (svgSink opts svgEvery (style, scene))
+  let sinks = [ messagesSink | not (optQuiet opts) ]
+              ++ [ progressSink nSteps framesRef | tty, not (optQuiet opts) ]
+              ++ catMaybes [ logSink <$> mlog, replaySink <$> mrec <*> optReplay opts, frames, svg ]
+      loop !_ [] = pure Finished
+      loop !n (s : rest) = do
         _ <- evaluate (forceState s)
-        unless (optQuiet opts) (mapM_ putStrLn (wsMessages s) >> hFlush stdout)
-        p <- readIORef ref
-        let trails = if optTrails opts
-                       then zipWith (:) (map robotPos (wsRobots s)) (padTo (length (wsRobots s)) (prTrails p))
-                       else []
-            n = prSteps p
-        frames <- if optFrames opts && frameAt n
-          then do
-            writeFrame (optOut opts) (prFrames p)
-              (render (map reverse trails) s)
-            pure (prFrames p + 1)
-          else pure (prFrames p)
-        let kept = if optSvg opts /= Nothing && n `mod` svgEvery == 0 then s : prKept p else prKept p
-        writeIORef ref (Progress (n + 1) frames trails kept)
-        when (tty && not (optQuiet opts) && n `mod` 100 == 0) $
-          hPutStr stderr (printf "\r%3d%%  %d frames " ((100 * n) `div` max 1 nSteps) frames)
-        loop rest
-  interrupted <- (loop states `catch` \e -> case e of
-                     UserInterrupt -> pure True
+        mapM_ (\k -> sinkStep k n s) sinks
+        writeIORef stepsRef $! n + 1
+        loop (n + 1) rest
+  ending <- ((loop 0 states `catch` \e -> case e of
+                     UserInterrupt -> pure Interrupted
                      _             -> throwIO e)
-                 `catch` \(ce :: ControllerError) -> do
-                   when tty (hPutStr stderr "\r")
-                   failWith 1 (prog ++ ": " ++ displayException ce)
+             `catch` (pure . Failed))
+            `catch` (pure . WriteFailed)
   when tty (hPutStr stderr "\r                         \r")
-  p <- readIORef ref
-  -- An interrupted write leaves at most the next frame's temporary file.
-  when (interrupted && optFrames opts) $
-    () <$ (try (removeFile (frameTemp (optOut opts) (prFrames p))) :: IO (Either IOException ()))
-  forM_ (optSvg opts) $ \file -> do
-    r <- try (writeFile file (renderSVG style scene (reverse (prKept p))))
-    case r of
-      Left (e :: IOException) -> hPutStrLn stderr (prog ++ ": cannot write " ++ show file ++ ": " ++ show e)
-      Right ()                -> pure ()
+  steps <- readIORef stepsRef
+  nFrames <- readIORef framesRef
   end <- getMonotonicTime
-  let simulated = fromIntegral (max 0 (prSteps p - 1)) * dt
+  let simulated = fromIntegral (max 0 (steps - 1)) * dt
       wall      = end - start
+      failure   = case ending of
+        Failed ce -> Just ce
+        _         -> Nothing
+      interrupted = case ending of
+        Interrupted -> True
+        _           -> False
+      summary   = LogSummary simulated steps (-1) wall interrupted (displayException <$> failure) []
+  errs <- concat <$> mapM (`sinkFinish` summary) sinks
+  let runErrs = case ending of
+        WriteFailed e -> [ "the run stopped: a write failed: " ++ show e ]
+        _             -> []
   printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
-    (if interrupted then "interrupted: " else "" :: String)
-    simulated (prSteps p) (prFrames p) wall (if wall > 0 then simulated / wall else 0)
-  unless interrupted $ forM_ (optVideo opts) (makeVideo prog opts)
-  when interrupted (exitWith (ExitFailure 130))
-  where
-    padTo k xs = take k (xs ++ repeat [])
+    (case ending of
+       Interrupted   -> "interrupted: "
+       Failed _      -> "failed: "
+       WriteFailed _ -> "stopped: "
+       Finished      -> "" :: String)
+    simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
+  unless (optQuiet opts) $ do
+    forM_ (optSvg opts) $ \file -> unless (any (show file `isInfixOf`) errs) (putStrLn ("wrote " ++ file))
+    forM_ (optReplay opts) $ \file -> unless (any (show file `isInfixOf`) errs)
+      (putStrLn ("wrote " ++ file ++ " (open it in a browser)"))
+  hFlush stdout
+  videoErrs <- case (ending, optVideo opts) of
+    (Finished, Just file) | null errs -> makeVideo opts file
+    _                                 -> pure []
+  let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs ++ videoErrs)
+  unless (null allErrs) (putErr (unlines allErrs))
+  case ending of
+    Interrupted -> exitWith (ExitFailure 130)
+    Failed _    -> exitWith (ExitFailure 1)
+    _ | not (null allErrs) -> exitWith (ExitFailure 1)
+      | otherwise          -> pure ()
 
 forceState :: WorldState -> ()
 forceState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsBalls s)
@@ -180,18 +369,28 @@ writeFrame dir k bytes = do
 frameTemp :: FilePath -> Int -> FilePath
 frameTemp dir k = dir </> printf "frame-%06d.ppm.tmp" k
 
-makeVideo :: String -> SimOptions -> FilePath -> IO ()
-makeVideo prog opts file = do
+-- Assemble the frames with ffmpeg (found on the PATH before the run); the
+-- errors, if any.
+makeVideo :: SimOptions -> FilePath -> IO [String]
+makeVideo opts file = do
   ffmpeg <- findExecutable "ffmpeg"
   case ffmpeg of
-    Nothing -> hPutStrLn stderr (prog ++ ": --video needs ffmpeg on the PATH (on Debian: apt-get install ffmpeg); the frames are in "
-                                 ++ optOut opts)
+    Nothing -> pure ["--video needs ffmpeg on the PATH; the frames are in " ++ optOut opts]
     Just exe -> do
       code <- rawSystem exe [ "-y", "-loglevel", "error", "-framerate", show (optFps opts)
                             , "-i", optOut opts </> "frame-%06d.ppm", "-pix_fmt", "yuv420p", file ]
       case code of
-        ExitSuccess   -> putStrLn ("wrote " ++ file)
-        ExitFailure c -> hPutStrLn stderr (prog ++ ": ffmpeg failed with exit code " ++ show c)
+        ExitSuccess   -> [] <$ putStrLn ("wrote " ++ file)
+        ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ optOut opts]
+
+-- Write a message to standard error in one piece (stderr is unbuffered,
+-- which would write it a character at a time).
+putErr :: String -> IO ()
+putErr msg = do
+  hSetBuffering stderr (BlockBuffering Nothing)
+  hPutStr stderr msg
+  hFlush stderr
+  hSetBuffering stderr NoBuffering
 
 failWith :: Int -> String -> IO a
-failWith code msg = hPutStrLn stderr msg >> exitWith (ExitFailure code)
+failWith code msg = putErr (if null msg || last msg /= '\n' then msg ++ "\n" else msg) >> exitWith (ExitFailure code)

@@ -1,9 +1,14 @@
 {-# LANGUAGE ScopedTypeVariables #-}
 -- | 'runSimWith' run headless into temporary folders: frames, the world
 -- file round trip, every reported fault, determinism.
-module AFrobRobotSim.RunSpec (spec) where
+module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 
 import           Control.Exception   (bracket, finally, try)
+import           Data.Maybe          (isJust)
+import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
+import           Control.Concurrent  (threadDelay)
+import           System.Process      (CreateProcess (..), StdStream (..), createProcess, interruptProcessGroupOf,
+                                      proc, readCreateProcessWithExitCode, waitForProcess)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, sort)
@@ -17,6 +22,8 @@ import           Test.Hspec          hiding (after)
 
 import           AFrob               hiding (forAll)
 import           AFrobRobotSim
+import           AFrobRobotSim.Log   (LogSummary (..), RunLog (..), readLogFile)
+import           AFrobRobotSim.Replay (writeReplayFromLog)
 
 world :: WorldTemplate
 world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2)]
@@ -25,7 +32,8 @@ drive :: SimbotController
 drive _ = constant (mrFinalize (ddVelDiff 1 1))
 
 quick :: FilePath -> SimOptions
-quick dir = defaultSimOptions { optSeconds = 2, optOut = dir, optQuiet = True }
+quick dir = defaultSimOptions { optSeconds = 2, optOut = dir, optQuiet = True, optFrames = True
+                              , optSvg = Nothing, optReplay = Nothing }
 
 -- | Run an action with stdout and stderr captured into files; return what
 -- they received and how the action ended.
@@ -63,8 +71,64 @@ framesIn dir = do
   names <- sort . filter ("frame-" `isPrefixOf`) <$> listDirectory dir
   mapM (BS.readFile . (dir </>)) names
 
+-- | The environment variable that makes the test binary run 'child'
+-- instead of the specs.
+childVariable :: String
+childVariable = "AFRP_SPEC_RUN_CHILD"
+
+-- | What the test binary does when started as a child (the variable's
+-- value is @what:folder@). @hour@: a simulated hour of the default world
+-- with the SVG and trails, under the heap limit the parent gives it
+-- (@+RTS -M40m@); a leak ends it with heap overflow (exit code 251).
+-- @long@: ten simulated hours with small frames, the log and the page,
+-- for the parent to interrupt.
+child :: String -> IO ()
+child arg = case break (== ':') arg of
+  ("hour", _ : dir) -> runSimWith defaultSimOptions
+    { optSeconds = 3600, optQuiet = True, optTrails = True, optFrames = False
+    , optSvg = Just (dir </> "run.svg"), optReplay = Nothing, optOut = dir } Nothing drive drive
+  ("long", _ : dir) -> runSimWith defaultSimOptions
+    { optSeconds = 36000, optQuiet = True, optFrames = True, optScale = 10, optOut = dir </> "f"
+    , optSvg = Just (dir </> "run.svg"), optLog = Just (dir </> "run.jsonl")
+    , optReplay = Just (dir </> "run.html") } Nothing drive drive
+  _ -> ioError (userError ("unknown child " ++ show arg))
+
 spec :: Spec
 spec = do
+  describe "memory" $
+    it "a simulated hour with the SVG and trails runs in 40 MB of heap (+RTS -M40m)" $ withTempDir $ \dir -> do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (code, out, err) <- readCreateProcessWithExitCode
+        (proc self ["+RTS", "-M40m", "-RTS"]) { env = Just ((childVariable, "hour:" ++ dir) : environment) } ""
+      (code, err) `shouldBe` (ExitSuccess, "")
+      out `shouldSatisfy` ("3600.00 s simulated in 360001 steps" `isPrefixOf`)
+
+  describe "Ctrl-C" $
+    it "stops with exit code 130, the summary, whole frames, a log with its summary and the page" $ withTempDir $ \dir -> do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (_, Just hout, _, ph) <- createProcess (proc self [])
+        { env = Just ((childVariable, "long:" ++ dir) : environment), create_group = True
+        , std_out = CreatePipe, std_err = Inherit }
+      let waitForFrames k = do
+            names <- listDirectory (dir </> "f") `orElse` []
+            if length names >= 20 || k > (200 :: Int) then pure () else threadDelay 50000 >> waitForFrames (k + 1)
+          orElse act d = either (\(_ :: IOError) -> d) id <$> try act
+      waitForFrames 0
+      interruptProcessGroupOf ph
+      code <- waitForProcess ph
+      code `shouldBe` ExitFailure 130
+      out <- hGetContents hout
+      out `shouldSatisfy` ("interrupted: " `isPrefixOf`)
+      names <- listDirectory (dir </> "f")
+      filter (".tmp" `isInfixOf`) names `shouldBe` []
+      frames <- framesIn (dir </> "f")
+      all ((== 15 + 3 * 120 * 120) . BS.length) frames `shouldBe` True
+      Right l <- readLogFile (dir </> "run.jsonl")
+      fmap lsInterrupted (rlSummary l) `shouldBe` Just True
+      page <- readFile (dir </> "run.html")
+      "<!DOCTYPE html>" `isPrefixOf` page `shouldBe` True
   describe "frames" $ do
     it "writes one P6 frame per 1/fps of simulated time, time 0 included" $ withTempDir $ \dir -> do
       (_, _, r) <- captured (runSimWith (quick (dir </> "f")) (Just world) drive drive)
@@ -122,6 +186,7 @@ spec = do
                                      , "--keys", "1.5:a,3:b", "--seed", "7", "--quiet", "--rays", "--trails"]
         `shouldBe` Right (RunWith defaultSimOptions
           { optSeconds = 5, optDt = 0.02, optFps = 10, optOut = "x", optScale = 30
+          , optSvg = Just ("x" </> "run.svg"), optReplay = Just ("x" </> "replay.html")
           , optKeys = [(1.5, 'a'), (3, 'b')], optSeed = 7, optQuiet = True, optRays = True, optTrails = True })
     it "reports an invalid world, naming the object, with exit code 2" $ do
       (_, err, r) <- captured (runSimWith defaultSimOptions { optFrames = False } (Just [OTSimbotB 9 (Point2 7 0) 0]) drive drive)
@@ -147,6 +212,99 @@ spec = do
       err `shouldSatisfy` ("SimbotA 1" `isInfixOf`)
       err `shouldSatisfy` ("0.500" `isInfixOf`)
       err `shouldSatisfy` ("simultaneous" `isInfixOf`)
+
+  describe "checks before the run (exit code 2, nothing simulated, nothing written)" $ do
+    let refused opts check = withTempDir $ \dir -> do
+          (out, err, r) <- captured (runSimWith (opts dir) (Just world) drive drive)
+          r `shouldBe` Left (ExitFailure 2)
+          out `shouldBe` ""
+          err `shouldSatisfy` check
+          listDirectory dir `shouldReturn` []
+    it "an --svg, --log or --replay in a folder that does not exist, all reported in one message" $
+      refused (\dir -> (quick (dir </> "f")) { optSvg = Just (dir </> "no" </> "run.svg")
+                                            , optLog = Just (dir </> "nolog" </> "run.jsonl")
+                                            , optReplay = Just (dir </> "nopage" </> "r.html") })
+              (\e -> all (`isInfixOf` e) ["--svg", "--log", "--replay", "does not exist"]
+                     && length (filter ("cannot run" `isInfixOf`) (lines e)) == 1)
+    it "an --out whose parent folder does not exist" $
+      refused (\dir -> quick (dir </> "a" </> "b")) ("does not exist" `isInfixOf`)
+    it "an empty --out" $ do
+      parseSimArgs defaultSimOptions ["--out", ""] `shouldSatisfy` either ("--out" `isInfixOf`) (const False)
+      refused (\_ -> (quick "") { optFrames = True }) ("--out" `isInfixOf`)
+    it "a step count that overflows or is beyond the maximum" $ do
+      refused (\dir -> (quick dir) { optSeconds = 1e20 }) ("steps" `isInfixOf`)
+      refused (\dir -> (quick dir) { optDt = 1e-300 }) ("steps" `isInfixOf`)
+      refused (\dir -> (quick dir) { optSeconds = 0 / 0 }) ("finite" `isInfixOf`)
+      parseSimArgs defaultSimOptions ["--seconds", "1e20"] `shouldSatisfy` either ("steps" `isInfixOf`) (const False)
+      parseSimArgs defaultSimOptions ["--dt", "NaN"] `shouldSatisfy` either ("--dt" `isInfixOf`) (const False)
+    it "a --scale beyond a sane frame" $
+      refused (\dir -> (quick dir) { optScale = 5000 }) ("--scale" `isInfixOf`)
+    it "a --dt that does not divide the frame period, saying which --fps would work" $ do
+      refused (\dir -> (quick dir) { optDt = 0.03 }) ("--fps 33.333 or 16.667 would work" `isInfixOf`)
+      validateOptions defaultSimOptions { optDt = 0.03, optFps = 33.333 } `shouldBe` []
+      validateOptions defaultSimOptions { optFps = 1e-300 } `shouldSatisfy` any ("--fps" `isInfixOf`)
+    it "--video without ffmpeg on the PATH" $ withTempDir $ \empty -> do
+      saved <- lookupEnv "PATH"
+      setEnv "PATH" empty
+      (do refused (\dir -> (quick (dir </> "f")) { optVideo = Just (dir </> "run.mp4") }) ("ffmpeg" `isInfixOf`))
+        `finally` maybe (pure ()) (setEnv "PATH") saved
+    it "--video without --frames" $
+      refused (\dir -> (quick (dir </> "f")) { optFrames = False, optVideo = Just (dir </> "run.mp4") })
+              ("--frames" `isInfixOf`)
+
+  describe "writes that fail during the run (exit code 1, the summary so far)" $ do
+    it "a full disk for the SVG (/dev/full)" $ withTempDir $ \dir -> do
+      (out, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just "/dev/full" } (Just world) drive drive)
+      r `shouldBe` Left (ExitFailure 1)
+      out `shouldSatisfy` ("2.00 s simulated" `isInfixOf`)
+      err `shouldSatisfy` ("/dev/full" `isInfixOf`)
+    it "a full disk for the log (/dev/full)" $ withTempDir $ \dir -> do
+      (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just "/dev/full" } (Just world) drive drive)
+      r `shouldSatisfy` either (/= ExitSuccess) (const False)
+      err `shouldSatisfy` ("/dev/full" `isInfixOf`)
+    it "a frame that cannot be written stops the run, leaving whole frames and no .tmp file" $ withTempDir $ \dir -> do
+      let out = dir </> "f"
+      createDirectory out
+      createDirectory (out </> "frame-000003.ppm")   -- in the way of the fourth frame
+      (o, err, r) <- captured (runSimWith (quick out) (Just world) drive drive)
+      r `shouldBe` Left (ExitFailure 1)
+      o `shouldSatisfy` ("stopped: 0.11 s simulated in 12 steps, 3 frames" `isInfixOf`)
+      err `shouldSatisfy` ("a write failed" `isInfixOf`)
+      names <- listDirectory out
+      filter (".tmp" `isInfixOf`) names `shouldBe` []
+      length names `shouldBe` 4
+
+  describe "the run log and the replay page" $ do
+    it "--log and --replay with --no-frames: a log of every frame period and a page" $ withTempDir $ \dir -> do
+      (_, _, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just (dir </> "run.jsonl")
+                                                    , optReplay = Just (dir </> "run.html") } (Just world) drive drive)
+      r `shouldBe` Right ()
+      Right l <- readLogFile (dir </> "run.jsonl")
+      length (rlFrames l) `shouldBe` 51
+      fmap (\s -> (lsSteps s, lsFrames s, lsInterrupted s, lsFailure s)) (rlSummary l) `shouldBe` Just (201, 51, False, Nothing)
+      page <- readFile (dir </> "run.html")
+      ("<!DOCTYPE html>" `isPrefixOf` page, "afrp-log" `isInfixOf` page) `shouldBe` (True, True)
+      writeReplayFromLog (dir </> "run.jsonl") (dir </> "again.html") `shouldReturn` Right ()
+      readFile (dir </> "again.html") `shouldReturn` page
+    it "a controller's failure closes the log with the failure and still writes the page" $ withTempDir $ \dir -> do
+      let bad _ = localTime >>> arr (\t -> mrFinalize (tcoPrintMessage
+                    (if t >= 0.5 then merge (Event "a") (Event "b") else NoEvent)))
+      (_, _, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just (dir </> "run.jsonl")
+                                                    , optReplay = Just (dir </> "run.html") } (Just world) bad drive)
+      r `shouldBe` Left (ExitFailure 1)
+      Right l <- readLogFile (dir </> "run.jsonl")
+      fmap (fmap ("SimbotA 1" `isInfixOf`) . lsFailure) (rlSummary l) `shouldBe` Just (Just True)
+      page <- readFile (dir </> "run.html")
+      "simultaneous" `isInfixOf` page `shouldBe` True
+    it "the defaults write the SVG and the page into simbot-out, no frames; --out moves them" $ do
+      (optFrames defaultSimOptions, optSvg defaultSimOptions, optReplay defaultSimOptions)
+        `shouldBe` (False, Just ("simbot-out" </> "run.svg"), Just ("simbot-out" </> "replay.html"))
+      fmap (\c -> case c of RunWith o -> Just (optSvg o, optReplay o, optFrames o, isJust (optLog o)); ShowHelp -> Nothing)
+           (parseSimArgs defaultSimOptions ["--out", "x", "--frames", "--log", "l.jsonl"])
+        `shouldBe` Right (Just (Just ("x" </> "run.svg"), Just ("x" </> "replay.html"), True, True))
+      fmap (\c -> case c of RunWith o -> (optSvg o, optReplay o); ShowHelp -> (Nothing, Nothing))
+           (parseSimArgs defaultSimOptions ["--no-svg", "--replay", "p.html"])
+        `shouldBe` Right (Nothing, Just "p.html")
   where
     pixel :: BS.ByteString -> Double -> Double -> Maybe (Word8, Word8, Word8)
     pixel bytes x y = ppmAt bytes (worldPx x) (worldPy y)
