@@ -44,6 +44,9 @@ import           Data.IORef
 import           Data.List                 (foldl', intercalate)
 import           Data.Word                 (Word64)
 import           Numeric                   (showHex)
+import           Control.Exception         (IOException, catch, finally)
+import           Control.Monad             (unless)
+import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.IO
 
 import           AFrobRobotSim.Log
@@ -59,7 +62,14 @@ replayPage l = replayPageFromLines (map encodeLogLine (LineHeader (rlHeader l) :
 -- writes them: a header first). The lines are embedded as they are, so
 -- they must come from 'encodeLogLine' (which writes no @<@).
 replayPageFromLines :: [String] -> String
-replayPageFromLines ls = concat
+replayPageFromLines ls = pre ++ intercalate ",\n" ls ++ post
+  where
+    (pre, post) = replayPageParts (showHex (foldl' fnv fnvBasis ls) "")
+
+-- The page around the log's lines, for a given nonce: what comes before
+-- the first line and what comes after the last.
+replayPageParts :: String -> (String, String)
+replayPageParts nonce = (concat
   [ "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
   , "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'nonce-"
   , nonce, "'; style-src 'unsafe-inline'; img-src data:\">\n"
@@ -79,12 +89,17 @@ replayPageFromLines ls = concat
   , "<label><input id=\"sightings\" type=\"checkbox\"> tracker sightings</label>\n"
   , "</div>\n</div>\n<div id=\"side\">\n<pre id=\"info\"></pre>\n<h1>events</h1>\n<pre id=\"events\"></pre>\n"
   , "</div>\n</div>\n"
-  , "<script id=\"afrp-log\" type=\"application/json\">\n[", intercalate ",\n" ls, "]\n</script>\n"
-  , "<script nonce=\"", nonce, "\">\n", replayScript, "</script>\n</body>\n</html>\n" ]
-  where
-    -- a nonce that depends on the page's data (FNV-1a), so pages differ
-    nonce = showHex (foldl' (\h c -> (h `xor` fromIntegral (ord c)) * 1099511628211)
-                            (14695981039346656037 :: Word64) (concat ls)) ""
+  , "<script id=\"afrp-log\" type=\"application/json\">\n[" ]
+  , concat [ "]\n</script>\n"
+           , "<script nonce=\"", nonce, "\">\n", replayScript, "</script>\n</body>\n</html>\n" ])
+
+-- The page's nonce depends on its data, so that pages differ: an FNV-1a
+-- hash of the log's lines, one after the other.
+fnv :: Word64 -> String -> Word64
+fnv = foldl' (\h c -> (h `xor` fromIntegral (ord c)) * 1099511628211)
+
+fnvBasis :: Word64
+fnvBasis = 14695981039346656037
 
 -- | Read a log file and write its page: what @simbot --replay-from
 -- FILE.jsonl --replay OUT.html@ does. A log that does not read is a
@@ -96,34 +111,67 @@ writeReplayFromLog logPath out = do
     Left e  -> pure (Left e)
     Right l -> Right <$> writeAscii out (replayPage l)
 
--- | A page being recorded as a run goes: it keeps each frame's line,
--- encoded at once (so no state of the simulation is held), and writes the
--- page at the end.
-data ReplayRecorder = ReplayRecorder LogConfig (IORef (LogState, [BC.ByteString]))
+-- | A page being recorded as a run goes. Each frame's line is encoded at
+-- once and appended to a temporary file (in the system's temporary
+-- folder), so recording holds neither the simulation's states nor the
+-- frames: memory stays constant however long the run. 'writeReplay'
+-- streams that file into the page and removes it.
+data ReplayRecorder = ReplayRecorder LogConfig FilePath Handle (IORef Recording)
 
--- | Start recording a run.
+-- What the recorder carries from frame to frame: the log's state, the
+-- number of frames written and the page's nonce hash so far.
+data Recording = Recording !LogState !Int !Word64
+
+-- | Start recording a run (creates the temporary file).
 newReplayRecorder :: LogConfig -> IO ReplayRecorder
-newReplayRecorder cfg = ReplayRecorder cfg <$> newIORef (logStart cfg, [])
+newReplayRecorder cfg = do
+  tmp <- getTemporaryDirectory
+  (path, h) <- openBinaryTempFile tmp "afrp-replay.frames"
+  hSetBuffering h (BlockBuffering Nothing)
+  let h0 = fnv fnvBasis (encodeLogLine (LineHeader (logHeader cfg)))
+  ReplayRecorder cfg path h <$> newIORef (Recording (logStart cfg) 0 h0)
 
 -- | Give the recorder the next step's state (every step, the first at
 -- time 0).
 recordReplayState :: ReplayRecorder -> WorldState -> IO ()
-recordReplayState (ReplayRecorder cfg ref) s = do
-  (st, acc) <- readIORef ref
+recordReplayState (ReplayRecorder cfg _ h ref) s = do
+  Recording st n hash <- readIORef ref
   case logStep cfg st s of
-    (st', Just f)  -> let !line = BC.pack (encodeLogLine (LineFrame f))
-                      in writeIORef ref (st', line : acc)
-    (st', Nothing) -> st' `seq` writeIORef ref (st', acc)
+    (st', Just f)  -> do
+      let line = encodeLogLine (LineFrame f)
+      BC.hPutStrLn h (BC.pack line)
+      writeIORef ref (Recording st' (n + 1) (fnv hash line))
+    (st', Nothing) -> writeIORef ref (Recording st' n hash)
 
 -- | Write the page of the run recorded so far, with its summary
--- ('lsFrames' is the recorder's count when it is negative).
+-- ('lsFrames' is the recorder's count when it is negative), and remove
+-- the recorder's temporary file (also when the page cannot be written).
+-- Call it once, at the end of the run.
 writeReplay :: ReplayRecorder -> LogSummary -> FilePath -> IO ()
-writeReplay (ReplayRecorder cfg ref) s out = do
-  (_, acc) <- readIORef ref
-  let s' = if lsFrames s < 0 then s { lsFrames = length acc } else s
-  writeAscii out (replayPageFromLines (encodeLogLine (LineHeader (logHeader cfg))
-                                       : map BC.unpack (reverse acc)
-                                       ++ [encodeLogLine (LineSummary s')]))
+writeReplay (ReplayRecorder cfg path h ref) s out =
+  (do hClose h
+      Recording _ n hash <- readIORef ref
+      let s'      = if lsFrames s < 0 then s { lsFrames = n } else s
+          summary = encodeLogLine (LineSummary s')
+          (pre, post) = replayPageParts (showHex (fnv hash summary) "")
+      withBinaryFile path ReadMode $ \fh ->
+        withBinaryFile out WriteMode $ \oh -> do
+          hSetBuffering oh (BlockBuffering Nothing)
+          BC.hPutStr oh (BC.pack pre)
+          BC.hPutStr oh (BC.pack (encodeLogLine (LineHeader (logHeader cfg))))
+          let copy = do
+                eof <- hIsEOF fh
+                unless eof $ do
+                  l <- BC.hGetLine fh
+                  BC.hPutStr oh (BC.pack ",\n")
+                  BC.hPutStr oh l
+                  copy
+          copy
+          BC.hPutStr oh (BC.pack (",\n" ++ summary))
+          BC.hPutStr oh (BC.pack post))
+  `finally` removeIfExists path
+  where
+    removeIfExists p = removeFile p `catch` \e -> const (pure ()) (e :: IOException)
 
 -- The page is ASCII (the encoder escapes everything else, the assets are
 -- ASCII), written as UTF-8 whatever the locale.

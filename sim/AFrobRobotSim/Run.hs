@@ -32,11 +32,12 @@
 -- the log, the replay page) is a sink, a strict fold with its own small
 -- state that takes every state and is finished at the end; nothing else
 -- holds a state. Trails keep only points more than a pixel apart (at most
--- 20,000 a robot), the SVG at most 2,001 snapshots. The exception is the
--- replay page, which holds the whole run by design: its sink keeps each
--- frame period's encoded line (about 70 kB per simulated second of the
--- default world), so the page and that memory grow with the run's length;
--- leave it out (@--no-replay@) for long runs and write a log instead.
+-- 20,000 a robot), the SVG at most 2,001 snapshots. The replay page's
+-- recorder spools each frame's encoded line to a temporary file and streams
+-- it into the page at the end, so its memory is constant too; the page
+-- itself grows with the run (about 70 kB per simulated second of the
+-- default world): leave it out (@--no-replay@) for very long runs and
+-- write a log instead.
 module AFrobRobotSim.Run
   ( runSim
   , runSimWith
@@ -252,10 +253,9 @@ svgSink opts every (style, scene) file = do
 logSink :: LogWriter -> Sink
 logSink w = Sink (const (writeLogState w)) (\summary -> attempt "the log" (closeLogWriter w summary))
 
--- The replay page, written at the end. It keeps every frame's line: the
--- page holds the whole run, so its size (and this sink's memory) grows
--- with the run's length, about 70 kB per simulated second of the default
--- world.
+-- The replay page, written at the end from the recorder's temporary file
+-- (constant memory; the page grows with the run's length, about 70 kB per
+-- simulated second of the default world).
 replaySink :: ReplayRecorder -> FilePath -> Sink
 replaySink r file = Sink (const (recordReplayState r)) (\summary -> attempt (show file) (writeReplay r summary file))
 

@@ -1,8 +1,8 @@
 -- | The replay page, as text: the log is embedded intact and safely.
 module AFrobRobotSim.ReplaySpec (spec) where
 
-import           Data.List                (isInfixOf, isPrefixOf, tails)
-import           System.Directory         (getTemporaryDirectory, removeFile)
+import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf, tails)
+import           System.Directory         (getTemporaryDirectory, listDirectory, removeFile)
 import           System.IO                (hClose, openTempFile)
 import           Test.Hspec
 
@@ -68,16 +68,22 @@ spec = do
         `shouldBe` Right runLog
 
   describe "ReplayRecorder" $
-    it "records, step by step, the same page as replayPage of the pure log (fixed)" $ do
+    it "records, step by step, the same page as replayPage of the pure log, through a temporary file it removes (fixed)" $ do
+      tmp <- getTemporaryDirectory
+      let spools = length . filter (\f -> "afrp-replay" `isPrefixOf` f && ".frames" `isSuffixOf` f) <$> listDirectory tmp
+      spoolsBefore <- spools
       rec <- newReplayRecorder fixtureConfig
       mapM_ (recordReplayState rec) fixtureStates
-      tmp <- getTemporaryDirectory
+      during <- spools
+      during `shouldBe` spoolsBefore + 1
       (path, h) <- openTempFile tmp "afrp-replay.html"
       hClose h
       writeReplay rec (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing []) path
       written <- readFile path
       length written `seq` removeFile path
       written `shouldBe` page
+      spoolsAfter <- spools
+      spoolsAfter `shouldBe` spoolsBefore
 
   describe "writeReplayFromLog" $ do
     it "turns a log file into the same page (fixed)" $ do
