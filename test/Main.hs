@@ -4,6 +4,7 @@ module Main (main) where
 import           Test.Hspec
 
 import qualified AFRP.BasicSpec
+import qualified AFRP.ConditionalSpec
 import qualified AFRP.DelaySpec
 import qualified AFRP.EventSourceSpec
 import qualified AFRP.EventSpec
@@ -18,6 +19,7 @@ import qualified AFRP.OptimiserSpec
 import qualified AFRP.ParallelSpec
 import qualified AFRP.ReferenceSpec
 import qualified AFRP.RunSpec
+import qualified AFRP.ScanSpec
 import qualified AFRP.SwitchSpec
 import qualified AFRP.TaskSpec
 import qualified AFRP.VectorSpaceSpec
@@ -49,6 +51,7 @@ import qualified NetworksSpec
 main :: IO ()
 main = hspec $ do
   describe "AFRP.Basic"       AFRP.BasicSpec.spec
+  describe "AFRP.Conditional" AFRP.ConditionalSpec.spec
   describe "AFRP.Event"       AFRP.EventSpec.spec
   describe "AFRP.EventSource" AFRP.EventSourceSpec.spec
   describe "AFRP.Hybrid"      AFRP.HybridSpec.spec
@@ -59,6 +62,7 @@ main = hspec $ do
   describe "AFRP.Parallel"    AFRP.ParallelSpec.spec
   describe "AFRP.Noise"       AFRP.NoiseSpec.spec
   describe "AFRP.Run"         AFRP.RunSpec.spec
+  describe "AFRP.Scan"        AFRP.ScanSpec.spec
   describe "AFRP.Task"        AFRP.TaskSpec.spec
   describe "AFRP.VectorSpace" AFRP.VectorSpaceSpec.spec
   describe "AFRP.Geometry"    AFRP.GeometrySpec.spec

@@ -12,6 +12,7 @@
 module AFRP.Basic
   ( -- * Lifting
     arr2
+  , dup
   , identity
   , constant
     -- * Time
@@ -36,6 +37,12 @@ infixr 0 -->, >--, -=>, >=-
 arr2 :: (a -> b -> c) -> SF (a, b) c
 arr2 f = arr (uncurry f)
 {-# INLINE arr2 #-}
+
+-- | Duplicate a value: @dup x = (x, x)@. As Yampa's; handy as
+-- @arr dup@ to feed one signal to both halves of '***'.
+dup :: a -> (a, a)
+dup x = (x, x)
+{-# INLINE dup #-}
 
 -- | The identity signal function: output equals input at every sample.
 -- Equal to @arr id@ and to 'Control.Category.id', but recognised by the
@@ -77,10 +84,14 @@ time = localTime
 (-->) :: b -> SF a b -> SF a b
 b0 --> SF n = SF (initN (\a -> case stepN n 0 a of (# n', _ #) -> (# n', b0 #)))
 
--- | A synonym for '-->': @initially b0 sf@ outputs @b0@ at time 0, then
--- the output of @sf@.
-initially :: b -> SF a b -> SF a b
-initially = (-->)
+-- | @initially a0@ outputs @a0@ at the first sample (local time 0) and its
+-- input at every later sample: @initially a0 = a0 --> identity@, Yampa's
+-- type. (afrp's earlier @initially b0 sf@ was a synonym of '-->'; write
+-- @b0 --> sf@ for that.)
+--
+-- > embed (initially 0) (5, [(1, Just 6), (1, Just 7)])  ==  [0, 6, 7]
+initially :: a -> SF a a
+initially a0 = a0 --> identity
 
 -- | @a0 >-- sf@ gives @sf@ the input @a0@ at the first sample instead of
 -- the real one; later samples are passed unchanged.
