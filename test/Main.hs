@@ -16,6 +16,7 @@ import qualified AFRP.LoopSpec
 import qualified AFRP.NoiseSpec
 import qualified AFRP.NotesSpec
 import qualified AFRP.OptimiserSpec
+import qualified AFRP.ParallelFunctorSpec
 import qualified AFRP.ParallelSpec
 import qualified AFRP.ReferenceSpec
 import qualified AFRP.RunSpec
@@ -47,6 +48,7 @@ import qualified AFrobRobotSim.SimulatorSpec
 import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified NetworksSpec
+import qualified Ported.CarTrackerSpec
 
 main :: IO ()
 main = hspec $ do
@@ -60,6 +62,7 @@ main = hspec $ do
   describe "AFRP.Loop"        AFRP.LoopSpec.spec
   describe "AFRP.Switch"      AFRP.SwitchSpec.spec
   describe "AFRP.Parallel"    AFRP.ParallelSpec.spec
+  describe "AFRP.Parallel"    AFRP.ParallelFunctorSpec.spec
   describe "AFRP.Noise"       AFRP.NoiseSpec.spec
   describe "AFRP.Run"         AFRP.RunSpec.spec
   describe "AFRP.Scan"        AFRP.ScanSpec.spec
@@ -94,3 +97,4 @@ main = hspec $ do
   describe "exercises 1-6"           Examples.Exercises1to6Spec.spec
   describe "exercises 7-13"          Examples.Exercises7to13Spec.spec
   describe "exercises 14 and 15"     Examples.Exercises14and15Spec.spec
+  describe "ported Yampa programs"   Ported.CarTrackerSpec.spec
