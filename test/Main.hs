@@ -24,6 +24,7 @@ import qualified AFRP.ScanSpec
 import qualified AFRP.SwitchSpec
 import qualified AFRP.TaskSpec
 import qualified AFRP.VectorSpaceSpec
+import qualified AFRP.YampaNamesSpec
 import qualified AFrob.AngleSpec
 import qualified AFrob.MergeableRecordSpec
 import qualified AFrob.RobotIOSpec
@@ -68,6 +69,7 @@ main = hspec $ do
   describe "AFRP.Scan"        AFRP.ScanSpec.spec
   describe "AFRP.Task"        AFRP.TaskSpec.spec
   describe "AFRP.VectorSpace" AFRP.VectorSpaceSpec.spec
+  describe "Yampa names"      AFRP.YampaNamesSpec.spec
   describe "AFRP.Geometry"    AFRP.GeometrySpec.spec
   describe "optimiser"        AFRP.OptimiserSpec.spec
   describe "reference model"  AFRP.ReferenceSpec.spec

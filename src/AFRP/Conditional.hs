@@ -1,3 +1,4 @@
+{-# LANGUAGE UnboxedTuples #-}
 -- |
 -- Module      : AFRP.Conditional
 -- Description : Running signal functions conditionally: while a predicate
@@ -8,6 +9,7 @@
 -- they switch in starts afresh (local time 0) at the switching instant.
 module AFRP.Conditional
   ( provided
+  , pause
   , recur
   , andThen
   ) where
@@ -35,6 +37,24 @@ provided p sfT sfF =
   where
     whileT = switch (sfT &&& ((not . p) ^>> edge)) (const whileF)
     whileF = switch (sfF &&& (p ^>> edge)) (const whileT)
+
+-- | @pause b0 cond sf@ runs @sf@ at the samples where @cond@ (which runs
+-- at every sample) is 'False', and freezes it where @cond@ is 'True': then
+-- @sf@ is not stepped, the output is its last output (@b0@ if it has not run
+-- yet), and the time that passes is not seen by @sf@ (as in Yampa, it
+-- resumes with only the time step of the sample that resumes it). If @cond@
+-- is 'True' at local time 0, @sf@ starts at the first sample where it is
+-- 'False'.
+--
+-- > embed (pause 0 (arr id) localTime) (False, map ((,) 1 . Just) [False, True, True, False])
+-- >   ==  [0, 1, 1, 1, 2]
+pause :: b -> SF a Bool -> SF a b -> SF a b
+pause b0 (SF cond0) (SF sf0) = SF (go cond0 sf0 b0)
+  where
+    go cond sf b = NStep (\dt a -> case stepN cond dt a of
+      (# cond', paused #)
+        | paused    -> (# go cond' sf b, b #)
+        | otherwise -> case stepN sf dt a of (# sf', b' #) -> (# go cond' sf' b', b' #))
 
 -- | @recur sfe@ outputs the events of @sfe@ after local time 0, and restarts
 -- @sfe@ (at its local time 0) at the instant of each event it outputs. At
