@@ -23,6 +23,7 @@ import qualified AFRP.RunSpec
 import qualified AFRP.ScanSpec
 import qualified AFRP.SwitchSpec
 import qualified AFRP.TaskSpec
+import qualified AFRP.TimeAccountingSpec
 import qualified AFRP.VectorSpaceSpec
 import qualified AFRP.YampaNamesSpec
 import qualified AFrob.AngleSpec
@@ -68,6 +69,7 @@ main = hspec $ do
   describe "AFRP.Run"         AFRP.RunSpec.spec
   describe "AFRP.Scan"        AFRP.ScanSpec.spec
   describe "AFRP.Task"        AFRP.TaskSpec.spec
+  describe "time accounting"  AFRP.TimeAccountingSpec.spec
   describe "AFRP.VectorSpace" AFRP.VectorSpaceSpec.spec
   describe "Yampa names"      AFRP.YampaNamesSpec.spec
   describe "AFRP.Geometry"    AFRP.GeometrySpec.spec
