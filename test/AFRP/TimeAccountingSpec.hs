@@ -77,6 +77,27 @@ spec = describe "every event due at t fires at the first sample with localTime >
     in eventIndices (runSamples (sampleWindow 1000 q) samples)
          === eventIndices (runSamples (repeatedly q ()) samples)
 
+  it "after, switched in: its clock restarts at the switch (property)" $ property $
+    forAll genDts $ \dts -> forAll genQ $ \s -> forAll genQ $ \q ->
+      let samples = [(dt, ()) | dt <- 0 : dts]
+          lts = runSamples (switch (constant 0 &&& after s ()) (const localTime)) samples
+          evs = runSamples (switch (constant NoEvent &&& after s ()) (const (after q ()))) samples
+          start = firstAtOrAfter (localTimes dts) s
+      in eventIndices evs
+           === [st + i | Just st <- [start], Just i <- [firstAtOrAfter (drop st lts) q]]
+
+  it "a member of a collection keeps its clock across the collection's switches (property)" $ property $
+    forAll genDts $ \dts -> forAll genQ $ \q ->
+      forAll (vectorOf (length dts + 1) (frequency [(4, pure False), (1, pure True)])) $ \adds ->
+        let member = localTime &&& after q ()
+            edits  = arr (\add -> ((), if add then Event (++ [member]) else NoEvent))
+            out    = runSamples (edits >>> rpSwitchB [member]) (zip (0 : dts) adds)
+            column k = [m !! k | m <- out, length m > k]
+            ok k = let col = column k
+                       ltk = map fst col
+                   in eventIndices (map snd col) == maybe [] pure (firstAtOrAfter ltk q)
+        in conjoin [counterexample ("member " ++ show k) (ok k) | k <- [0 .. length (last out) - 1]]
+
   describe "the examples of docs/YAMPA.md (Time accounting)" $ do
     let at001 sf n = runDt 0.01 sf (replicate n ())
     it "afterEach [(3.0, ()), (2.0, ())] at dt 0.01 fires at t = 3.00 and 5.00 (samples 300, 500)" $
