@@ -10,13 +10,14 @@
 --
 -- A collection is any 'Functor' container of signal functions (a list, a
 -- 'Data.Map.Map', a 'Data.Sequence.Seq', a user's own type with only a
--- 'Functor' instance), as in Yampa. On lists (the common case) every member
--- is stepped, and its state evaluated, at every sample, even when nobody
--- looks at its output, so a list never accumulates thunks. Any other
--- collection can only be mapped over, not walked: there, as in Yampa, a
--- member is stepped when its output or its successor is demanded, and a
--- member whose output is never demanded builds up one suspended step per
--- sample.
+-- 'Functor' instance), as in Yampa. On lists (the common case) and on
+-- the containers' 'Map.Map', 'IntMap.IntMap' and 'Seq.Seq' (rewrite rules
+-- pick a specialised stepper), every member is stepped, and its state
+-- evaluated, at every sample, even when nobody looks at its output, so the
+-- collection never accumulates thunks. Any other collection can only be
+-- mapped over, not walked: there, as in Yampa, a member is stepped when its
+-- output or its successor is demanded, and a member whose output is never
+-- demanded builds up one suspended step per sample.
 --
 -- Naming, as in Yampa: no suffix takes a /routing function/
 -- @forall sf. a -> col sf -> col (b, sf)@ that decides what input each
@@ -60,6 +61,11 @@ import           GHC.Exts         (ByteArray#, Double (D#), Int (I#), SmallArray
                                    unsafeFreezeSmallArray#, writeDoubleArray#, writeSmallArray#,
                                    (*#), (*##), (+#), (+##), (-#), (<#), (==#), Int#, quotInt#,
                                    sizeofByteArray#)
+
+import           Data.Foldable    (foldl')
+import qualified Data.IntMap      as IntMap
+import qualified Data.Map         as Map
+import qualified Data.Sequence    as Seq
 
 import           AFRP.Event
 import           AFRP.Internal.SF
@@ -374,6 +380,26 @@ stepColF dt routed =
   let stepped = fmap (\(b, n) -> boxStep n dt b) routed
   in (# fmap (\(Boxed n _) -> n) stepped, fmap (\(Boxed _ c) -> c) stepped #)
 
+-- Step every member of a 'Traversable', evaluating every successor node, so
+-- that no member accumulates suspended steps. The rules below use it at
+-- the containers' 'Map.Map', 'IntMap.IntMap' and 'Seq.Seq', which Yampa
+-- programs use as collections; it computes the same collections as
+-- 'stepColF', more evaluated.
+stepColT :: Traversable col => DTime -> col (b, Node b c) -> (# col (Node b c), col c #)
+stepColT dt routed =
+  let stepped = fmap (\(b, n) -> boxStep n dt b) routed
+      nodes   = fmap (\(Boxed n _) -> n) stepped
+  in foldl' (\_ x -> x `seq` ()) () nodes `seq` (# nodes, fmap (\(Boxed _ c) -> c) stepped #)
+
+stepMap :: Stepper (Map.Map k)
+stepMap = stepColT
+
+stepIntMap :: Stepper IntMap.IntMap
+stepIntMap = stepColT
+
+stepSeq :: Stepper Seq.Seq
+stepSeq = stepColT
+
 -- 'stepColF' on lists, in one pass: the members are stepped in order, each
 -- successor evaluated, the outputs left lazy.
 stepColL :: DTime -> [(b, Node b c)] -> (# [Node b c], [c] #)
@@ -445,4 +471,38 @@ freezeCol ns dt = fmap (\n -> SF (freezeN n dt)) ns
 "rpSwitchB/list"  rpSwitchB  = rpSwitchWith stepColL broadcast
 "drpSwitch/list"  drpSwitch  = drpSwitchWith stepColL
 "drpSwitchB/list" drpSwitchB = drpSwitchWith stepColL broadcast
+  #-}
+
+-- Maps and sequences: every combinator over 'stepColT' (strict stepping).
+{-# RULES
+"par/map" par = parWith stepMap
+"pSwitch/map" pSwitch = pSwitchWith stepMap
+"dpSwitch/map" dpSwitch = dpSwitchWith stepMap
+"rpSwitch/map" rpSwitch = rpSwitchWith stepMap
+"drpSwitch/map" drpSwitch = drpSwitchWith stepMap
+"pSwitchB/map" pSwitchB = pSwitchWith stepMap broadcast
+"dpSwitchB/map" dpSwitchB = dpSwitchWith stepMap broadcast
+"rpSwitchB/map" rpSwitchB = rpSwitchWith stepMap broadcast
+"drpSwitchB/map" drpSwitchB = drpSwitchWith stepMap broadcast
+"parB/map" parB = parWith stepMap broadcast
+"par/intmap" par = parWith stepIntMap
+"pSwitch/intmap" pSwitch = pSwitchWith stepIntMap
+"dpSwitch/intmap" dpSwitch = dpSwitchWith stepIntMap
+"rpSwitch/intmap" rpSwitch = rpSwitchWith stepIntMap
+"drpSwitch/intmap" drpSwitch = drpSwitchWith stepIntMap
+"pSwitchB/intmap" pSwitchB = pSwitchWith stepIntMap broadcast
+"dpSwitchB/intmap" dpSwitchB = dpSwitchWith stepIntMap broadcast
+"rpSwitchB/intmap" rpSwitchB = rpSwitchWith stepIntMap broadcast
+"drpSwitchB/intmap" drpSwitchB = drpSwitchWith stepIntMap broadcast
+"parB/intmap" parB = parWith stepIntMap broadcast
+"par/seq" par = parWith stepSeq
+"pSwitch/seq" pSwitch = pSwitchWith stepSeq
+"dpSwitch/seq" dpSwitch = dpSwitchWith stepSeq
+"rpSwitch/seq" rpSwitch = rpSwitchWith stepSeq
+"drpSwitch/seq" drpSwitch = drpSwitchWith stepSeq
+"pSwitchB/seq" pSwitchB = pSwitchWith stepSeq broadcast
+"dpSwitchB/seq" dpSwitchB = dpSwitchWith stepSeq broadcast
+"rpSwitchB/seq" rpSwitchB = rpSwitchWith stepSeq broadcast
+"drpSwitchB/seq" drpSwitchB = drpSwitchWith stepSeq broadcast
+"parB/seq" parB = parWith stepSeq broadcast
   #-}
