@@ -50,6 +50,7 @@ import qualified AFrobRobotSim.SimulatorSpec
 import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified NetworksSpec
+import qualified Ported.BouncingBallSpec
 import qualified Ported.CarTrackerSpec
 
 main :: IO ()
@@ -102,3 +103,4 @@ main = hspec $ do
   describe "exercises 7-13"          Examples.Exercises7to13Spec.spec
   describe "exercises 14 and 15"     Examples.Exercises14and15Spec.spec
   describe "ported Yampa programs"   Ported.CarTrackerSpec.spec
+  describe "ported Yampa programs"   Ported.BouncingBallSpec.spec
