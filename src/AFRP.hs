@@ -49,6 +49,8 @@ module AFRP
   , module AFRP.EventSource
     -- * Hybrid: holding and accumulating
   , module AFRP.Hybrid
+    -- * Scanning: step-by-step accumulation
+  , module AFRP.Scan
     -- * Delays
   , module AFRP.Delay
     -- * Integration and differentiation
@@ -57,6 +59,8 @@ module AFRP
   , module AFRP.Loop
     -- * Switching
   , module AFRP.Switch
+    -- * Conditional and sequenced signal functions
+  , module AFRP.Conditional
     -- * Parallel composition and collections
   , module AFRP.Parallel
     -- * Noise
@@ -73,6 +77,7 @@ module AFRP
 import           Control.Arrow
 
 import           AFRP.Basic
+import           AFRP.Conditional
 import           AFRP.Delay
 import           AFRP.Event
 import           AFRP.EventSource
@@ -84,6 +89,7 @@ import           AFRP.Loop
 import           AFRP.Noise
 import           AFRP.Parallel
 import           AFRP.Run
+import           AFRP.Scan
 import           AFRP.Switch
 import           AFRP.Task
 import           AFRP.VectorSpace

@@ -4,6 +4,7 @@ module Main (main) where
 import           Test.Hspec
 
 import qualified AFRP.BasicSpec
+import qualified AFRP.ConditionalSpec
 import qualified AFRP.DelaySpec
 import qualified AFRP.EventSourceSpec
 import qualified AFRP.EventSpec
@@ -16,12 +17,16 @@ import qualified AFRP.LoopLazinessSpec
 import qualified AFRP.NoiseSpec
 import qualified AFRP.NotesSpec
 import qualified AFRP.OptimiserSpec
+import qualified AFRP.ParallelFunctorSpec
 import qualified AFRP.ParallelSpec
 import qualified AFRP.ReferenceSpec
 import qualified AFRP.RunSpec
+import qualified AFRP.ScanSpec
 import qualified AFRP.SwitchSpec
 import qualified AFRP.TaskSpec
+import qualified AFRP.TimeAccountingSpec
 import qualified AFRP.VectorSpaceSpec
+import qualified AFRP.YampaNamesSpec
 import qualified AFrob.AngleSpec
 import qualified AFrob.MergeableRecordSpec
 import qualified AFrob.RobotIOSpec
@@ -51,6 +56,8 @@ import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified AFrobRobotSim.WorldSpec
 import qualified NetworksSpec
+import qualified Ported.BouncingBallSpec
+import qualified Ported.CarTrackerSpec
 import           System.Environment (lookupEnv)
 
 main :: IO ()
@@ -59,6 +66,7 @@ main = lookupEnv AFrobRobotSim.RunSpec.childVariable >>= maybe specs AFrobRobotS
 specs :: IO ()
 specs = hspec $ do
   describe "AFRP.Basic"       AFRP.BasicSpec.spec
+  describe "AFRP.Conditional" AFRP.ConditionalSpec.spec
   describe "AFRP.Event"       AFRP.EventSpec.spec
   describe "AFRP.EventSource" AFRP.EventSourceSpec.spec
   describe "AFRP.Hybrid"      AFRP.HybridSpec.spec
@@ -68,10 +76,14 @@ specs = hspec $ do
   describe "AFRP.Loop laziness" AFRP.LoopLazinessSpec.spec
   describe "AFRP.Switch"      AFRP.SwitchSpec.spec
   describe "AFRP.Parallel"    AFRP.ParallelSpec.spec
+  describe "AFRP.Parallel"    AFRP.ParallelFunctorSpec.spec
   describe "AFRP.Noise"       AFRP.NoiseSpec.spec
   describe "AFRP.Run"         AFRP.RunSpec.spec
+  describe "AFRP.Scan"        AFRP.ScanSpec.spec
   describe "AFRP.Task"        AFRP.TaskSpec.spec
+  describe "time accounting"  AFRP.TimeAccountingSpec.spec
   describe "AFRP.VectorSpace" AFRP.VectorSpaceSpec.spec
+  describe "Yampa names"      AFRP.YampaNamesSpec.spec
   describe "AFRP.Geometry"    AFRP.GeometrySpec.spec
   describe "optimiser"        AFRP.OptimiserSpec.spec
   describe "reference model"  AFRP.ReferenceSpec.spec
@@ -106,3 +118,5 @@ specs = hspec $ do
   describe "exercises 1-6"           Examples.Exercises1to6Spec.spec
   describe "exercises 7-13"          Examples.Exercises7to13Spec.spec
   describe "exercises 14 and 15"     Examples.Exercises14and15Spec.spec
+  describe "ported Yampa programs"   Ported.CarTrackerSpec.spec
+  describe "ported Yampa programs"   Ported.BouncingBallSpec.spec

@@ -78,7 +78,7 @@ module Exercises.Ex12
   , examples
   ) where
 
-import           AFrob
+import           AFrob hiding (andThen)  -- this exercise names its own (a switch)
 import           AFrobRobotSim
 import           Examples.Types
 

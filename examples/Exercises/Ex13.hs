@@ -42,7 +42,7 @@ module Exercises.Ex13
   , examples
   ) where
 
-import           AFrob
+import           AFrob hiding (andThen)  -- Ex12 names its own (a switch)
 import           AFrobRobotSim
 import           Examples.Types
 import           Exercises.Ex12 (andThen, brakingSpeed, pose, rcMazeFollower, turnTo)

@@ -12,6 +12,10 @@
 module AFRP.Basic
   ( -- * Lifting
     arr2
+  , arr3
+  , arr4
+  , arr5
+  , dup
   , identity
   , constant
     -- * Time
@@ -19,6 +23,7 @@ module AFRP.Basic
   , time
     -- * Initialisation
   , (-->)
+  , (-:>)
   , (>--)
   , (-=>)
   , (>=-)
@@ -29,13 +34,34 @@ import           Control.Arrow     (arr)
 import           AFRP.Internal.Clock
 import           AFRP.Internal.SF
 
-infixr 0 -->, >--, -=>, >=-
+infixr 0 -->, -:>, >--, -=>, >=-
 
 -- | Lift a binary function to a signal function on pairs:
 -- @arr2 f = arr (uncurry f)@. For example @arr2 (+) :: Num a => SF (a, a) a@.
 arr2 :: (a -> b -> c) -> SF (a, b) c
 arr2 f = arr (uncurry f)
 {-# INLINE arr2 #-}
+
+-- | Lift a ternary function to a signal function on triples.
+arr3 :: (a -> b -> c -> d) -> SF (a, b, c) d
+arr3 f = arr (\(a, b, c) -> f a b c)
+{-# INLINE arr3 #-}
+
+-- | Lift a function of four arguments to a signal function on 4-tuples.
+arr4 :: (a -> b -> c -> d -> e) -> SF (a, b, c, d) e
+arr4 f = arr (\(a, b, c, d) -> f a b c d)
+{-# INLINE arr4 #-}
+
+-- | Lift a function of five arguments to a signal function on 5-tuples.
+arr5 :: (a -> b -> c -> d -> e -> f) -> SF (a, b, c, d, e) f
+arr5 f = arr (\(a, b, c, d, e) -> f a b c d e)
+{-# INLINE arr5 #-}
+
+-- | Duplicate a value: @dup x = (x, x)@. As Yampa's; handy as
+-- @arr dup@ to feed one signal to both halves of '***'.
+dup :: a -> (a, a)
+dup x = (x, x)
+{-# INLINE dup #-}
 
 -- | The identity signal function: output equals input at every sample.
 -- Equal to @arr id@ and to 'Control.Category.id', but recognised by the
@@ -77,10 +103,24 @@ time = localTime
 (-->) :: b -> SF a b -> SF a b
 b0 --> SF n = SF (initN (\a -> case stepN n 0 a of (# n', _ #) -> (# n', b0 #)))
 
--- | A synonym for '-->': @initially b0 sf@ outputs @b0@ at time 0, then
--- the output of @sf@.
-initially :: b -> SF a b -> SF a b
-initially = (-->)
+-- | @initially a0@ outputs @a0@ at the first sample (local time 0) and its
+-- input at every later sample: @initially a0 = a0 --> identity@, Yampa's
+-- type. (afrp's earlier @initially b0 sf@ was a synonym of '-->'; write
+-- @b0 --> sf@ for that.)
+--
+-- > embed (initially 0) (5, [(1, Just 6), (1, Just 7)])  ==  [0, 6, 7]
+initially :: a -> SF a a
+initially a0 = a0 --> identity
+
+-- | @b0 -:> sf@ inserts @b0@ as the first output and delays @sf@ by one
+-- sample: @sf@ does not run at the first sample (local time 0); it starts
+-- (its own local time 0) at the second sample, with that sample's input,
+-- and supplies every later output. Unlike '-->', nothing of @sf@ is lost.
+--
+-- > embed (0 -:> identity) (5, [(1, Just 6), (1, Just 7)])  ==  [0, 6, 7]
+-- > embed (0 -:> localTime) ((), [(1, Nothing), (1, Nothing)])  ==  [0, 0, 1]
+(-:>) :: b -> SF a b -> SF a b
+b0 -:> SF n = SF (initN (\_ -> (# n, b0 #)))
 
 -- | @a0 >-- sf@ gives @sf@ the input @a0@ at the first sample instead of
 -- the real one; later samples are passed unchanged.

@@ -63,9 +63,13 @@ b0 `fby` SF n = SF (compN n (sfNode (iPre b0)))
 
 -- | @delay q a0@ delays its input signal by @q@ seconds. At local time @t@
 -- it outputs @a0@ while @t < q@, and afterwards the input sample taken at
--- the latest sample time @s@ with @s <= t - q@ (the delayed signal is
--- piecewise constant between samples). This holds for any sequence of
--- time steps, however irregular. @delay 0@ is the identity; a negative
+-- the latest sample time @s@ with @s + q <= t@ (the delayed signal is
+-- piecewise constant between samples): a sample is due out at @s + q@ and
+-- released at the first sample whose 'AFRP.Basic.localTime' is >= that,
+-- as every timed event of the library. This holds for any sequence of
+-- time steps, however irregular; at dt 0.05, @delay 1.1@ releases the
+-- sample of time 0 at exactly t = 1.1 (Yampa, summing floats, may be one
+-- sample late). @delay 0@ is the identity; a negative
 -- delay is an error.
 --
 -- > embed (delay 1 0) (1, [(0.5, Just 2), (0.5, Just 3), (0.5, Just 4)])  ==  [0, 0, 1, 2]
@@ -73,20 +77,23 @@ delay :: forall a. Time -> a -> SF a a
 delay q a0
   | q < 0 || isNaN q = error ("AFRP.Delay.delay: negative or NaN delay, got " ++ show q)
   | q == 0           = SF idN
-  | otherwise        = SF (initN (\a -> step clockZero (Seq.singleton (0, a))))
+  | otherwise        = SF (initN (\a -> step clockZero (Seq.singleton (q, a))))
   where
+    -- The buffer holds each sample with the time it is due out (its local
+    -- time plus q): a sample is released at the first sample whose local
+    -- time is >= its due time, the rule of every timed event in the library.
     step :: Clock -> Seq (Time, a) -> (# Node a a, a #)
     step clock buf =
-      let !target = clockTime clock - q
-          buf'    = dropOld target buf
-          out     = case Seq.viewl buf' of
-            (s, x) :< _ | s <= target -> x
-            _                         -> a0
+      let !now = clockTime clock
+          buf' = dropOld now buf
+          out  = case Seq.viewl buf' of
+            (due, x) :< _ | due <= now -> x
+            _                          -> a0
       in (# go clock buf', out #)
     go !clock !buf = NStep (\dt a ->
       let !clock' = tick clock dt
-      in step clock' (buf |> (clockTime clock', a)))
-    -- Drop every sample that a later sample, itself old enough, supersedes.
-    dropOld target buf = case Seq.viewl buf of
-      _ :< rest | (s, _) :< _ <- Seq.viewl rest, s <= target -> dropOld target rest
-      _                                                        -> buf
+      in step clock' (buf |> (clockTime clock' + q, a)))
+    -- Drop every sample that a later sample, itself due, supersedes.
+    dropOld now buf = case Seq.viewl buf of
+      _ :< rest | (due, _) :< _ <- Seq.viewl rest, due <= now -> dropOld now rest
+      _                                                       -> buf

@@ -13,6 +13,8 @@ module AFRP.Event
   ( -- * The type
     Event (..)
   , noEvent
+  , noEventFst
+  , noEventSnd
   , event
   , fromEvent
   , isEvent
@@ -88,6 +90,15 @@ instance NFData a => NFData (Event a) where
 -- | The absence of an occurrence: 'NoEvent'.
 noEvent :: Event a
 noEvent = NoEvent
+
+-- | Replace the event in the first component of a pair by 'NoEvent' (handy
+-- to suppress the event that caused a switch in the continuation's input).
+noEventFst :: (Event a, b) -> (Event c, b)
+noEventFst (_, b) = (NoEvent, b)
+
+-- | Replace the event in the second component of a pair by 'NoEvent'.
+noEventSnd :: (a, Event b) -> (a, Event c)
+noEventSnd (a, _) = (a, NoEvent)
 
 -- | The eliminator, like 'maybe': @event d f NoEvent = d@ and
 -- @event d f (Event x) = f x@.

@@ -19,6 +19,11 @@
 -- * When a sample interval spans several scheduled occurrences, the plain
 --   sources deliver only one (no backlog builds up) and the @Cat@ variants
 --   deliver all of them, in order, as a list.
+-- * This differs from Yampa, whose plain float sums often fall just short
+--   of a due time with decimal steps: @afterEach [(3.0, ()), (2.0, ())]@ at
+--   dt 0.01 fires at t = 3.00 and 5.00 here, at 3.01 and 5.01 in Yampa, and
+--   two events due 0.001 s apart (at 3.0 and 3.001) land in two samples
+--   here, in one in Yampa. See docs/YAMPA.md, "Time accounting".
 module AFRP.EventSource
   ( -- * Basic sources
     never

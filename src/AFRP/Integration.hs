@@ -26,6 +26,7 @@ module AFRP.Integration
   , impulseIntegral
   , count
   , derivative
+  , iterFrom
   ) where
 
 import           Control.Arrow     ((***))
@@ -165,3 +166,14 @@ derivative = SF (initN (\a0 -> (# go a0, zeroVector #)))
     go prev = NStep (\dt a -> case prev of
       !p -> (# go a, (a ^-^ p) ^/ realToFrac dt #))
 {-# INLINABLE derivative #-}
+
+-- | @iterFrom f b0@ outputs @b0@ at the first sample (local time 0) and
+-- then, at each sample, @f aPrev a dt b@, from the previous input @aPrev@,
+-- the current input @a@, the time step @dt@ between them and the previous
+-- output @b@: a custom integration rule ('trapezoidIntegral' is one).
+--
+-- > embed (iterFrom (\a a' dt v -> v + dt * (a + a') / 2) 0) (0, [(1, Just 2), (1, Just 2)])  ==  [0, 1, 3]
+iterFrom :: (a -> a -> DTime -> b -> b) -> b -> SF a b
+iterFrom f b0 = SF (initN (\a0 -> (# go a0 b0, b0 #)))
+  where
+    go aPrev b = NStep (\dt a -> let b' = f aPrev a dt b in (# go a b', b' #))

@@ -8,11 +8,16 @@
 -- Description : Collections of signal functions running side by side, and
 --               switching on the whole collection.
 --
--- A collection is any 'Traversable' container of signal functions (a list,
--- a 'Data.Map.Map', a 'Data.Sequence.Seq', ...). Yampa asks only for
--- 'Functor'; we ask for 'Traversable' so that every member is stepped, and
--- its state evaluated, at every sample, even when nobody looks at its
--- output: a collection never accumulates thunks.
+-- A collection is any 'Functor' container of signal functions (a list, a
+-- 'Data.Map.Map', a 'Data.Sequence.Seq', a user's own type with only a
+-- 'Functor' instance), as in Yampa. On lists (the common case) and on
+-- the containers' 'Map.Map', 'IntMap.IntMap' and 'Seq.Seq' (rewrite rules
+-- pick a specialised stepper), every member is stepped, and its state
+-- evaluated, at every sample, even when nobody looks at its output, so the
+-- collection never accumulates thunks. Any other collection can only be
+-- mapped over, not walked: there, as in Yampa, a member is stepped when its
+-- output or its successor is demanded, and a member whose output is never
+-- demanded builds up one suspended step per sample.
 --
 -- Naming, as in Yampa: no suffix takes a /routing function/
 -- @forall sf. a -> col sf -> col (b, sf)@ that decides what input each
@@ -38,6 +43,7 @@ module AFRP.Parallel
     par
   , parB
   , parZ
+  , parC
     -- * Switching a collection
   , pSwitch
   , dpSwitch
@@ -54,7 +60,6 @@ module AFRP.Parallel
   , drpSwitchZ
   ) where
 
-import           Data.Foldable    (foldl')
 import           GHC.Exts         (ByteArray#, Double (D#), Int (I#), SmallArray#,
                                    indexDoubleArray#, indexSmallArray#, isTrue#, newByteArray#,
                                    newSmallArray#, reallyUnsafePtrEquality#, runRW#,
@@ -62,6 +67,11 @@ import           GHC.Exts         (ByteArray#, Double (D#), Int (I#), SmallArray
                                    unsafeFreezeSmallArray#, writeDoubleArray#, writeSmallArray#,
                                    (*#), (*##), (+#), (+##), (-#), (<#), (==#), Int#, quotInt#,
                                    sizeofByteArray#)
+
+import           Data.Foldable    (foldl')
+import qualified Data.IntMap      as IntMap
+import qualified Data.Map         as Map
+import qualified Data.Sequence    as Seq
 
 import           AFRP.Event
 import           AFRP.Internal.SF
@@ -72,13 +82,14 @@ import           AFRP.Internal.SF
 -- Every combinator below is written once, over a /stepper/: the function
 -- that steps a routed collection, evaluating every member's successor and
 -- returning the successors and the (lazy) outputs in the collection's
--- shape. 'stepColT' works for any 'Traversable'; 'stepColL' is the same
+-- shape. 'stepColF' works for any 'Functor'; 'stepColL' is the same
 -- function on lists, done in one strict pass with no intermediate
--- collections. The public combinators use 'stepColT'; at lists, rewrite
--- rules (see the end of the module) replace them by the same combinator
--- over 'stepColL', which computes the same collections:
+-- collections, every successor evaluated. The public combinators use
+-- 'stepColF'; at lists, rewrite rules (see the end of the module) replace
+-- them by the same combinator over 'stepColL', which computes the same
+-- collections (more evaluated):
 --
--- > stepColL dt routed  ==  stepColT dt routed        (routed :: [(b, Node b c)])
+-- > stepColL dt routed  ==  stepColF dt routed        (routed :: [(b, Node b c)])
 --
 -- and 'parB' on a list, which needs no routing at all, by 'parBL':
 --
@@ -90,8 +101,8 @@ type Stepper col = forall b c. DTime -> col (b, Node b c) -> (# col (Node b c), 
 -- | @par route sfs@ runs every member of @sfs@ at every sample; @route@
 -- gives each member its input sample. The output is the collection of the
 -- members' outputs, in the same shape.
-par :: Traversable col => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c) -> SF a (col c)
-par = parWith stepColT
+par :: Functor col => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c) -> SF a (col c)
+par = parWith stepColF
 {-# NOINLINE [1] par #-}
 
 parWith :: Functor col => Stepper col -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c) -> SF a (col c)
@@ -101,7 +112,7 @@ parWith stepper rf sfs = SF (lazyN (parN' stepper rf (fmap sfNode sfs)))
 -- | @parB sfs@ runs every member on the same input.
 --
 -- > embed (parB [constant 1, localTime]) ((), [(0.5, Nothing)])  ==  [[1, 0], [1, 0.5]]
-parB :: Traversable col => col (SF a b) -> SF a (col b)
+parB :: Functor col => col (SF a b) -> SF a (col b)
 parB = par broadcast
 {-# NOINLINE [1] parB #-}
 
@@ -110,6 +121,15 @@ parB = par broadcast
 -- stepped, naming the function); extra inputs are ignored.
 parZ :: [SF a b] -> SF [a] [b]
 parZ = parWith stepColL (zipRoute "parZ")
+
+-- | @parC sf@ runs one copy of @sf@ per element of its input list, the i-th
+-- on the i-th element. The number of copies is the length of the input
+-- list at local time 0; later a shorter list is an error (as for 'parZ'),
+-- extra elements are ignored.
+--
+-- > embed (parC localTime) ("ab", [(1, Just "cd")])  ==  [[0, 0], [1, 1]]
+parC :: SF a b -> SF [a] [b]
+parC sf = SF (initN (\as0 -> stepN (sfNode (parZ (map (const sf) as0))) 0 as0))
 
 parN' :: Stepper col -> (forall sf. a -> col sf -> col (b, sf)) -> col (Node b c) -> Node a (col c)
 parN' stepper rf = go
@@ -218,10 +238,10 @@ bankSize sums = quotInt# (sizeofByteArray# sums) 8#
 -- occurrence @Event d@ the whole thing becomes @k sfs' d@, where @sfs'@ is
 -- the collection frozen just before the current step. The output at that
 -- instant is the new signal function's first output.
-pSwitch :: Traversable col
+pSwitch :: Functor col
         => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
         -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-pSwitch = pSwitchWith stepColT
+pSwitch = pSwitchWith stepColF
 {-# NOINLINE [1] pSwitch #-}
 
 pSwitchWith :: Functor col => Stepper col
@@ -237,10 +257,10 @@ pSwitchWith stepper rf sfs (SF e0) k = SF (lazyN (go (fmap sfNode sfs) e0))
 -- | Delayed 'pSwitch': at the switching instant the output is still the
 -- old collection's; @k sfs' d@ starts at that instant (its first output
 -- discarded).
-dpSwitch :: Traversable col
+dpSwitch :: Functor col
          => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
          -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-dpSwitch = dpSwitchWith stepColT
+dpSwitch = dpSwitchWith stepColF
 {-# NOINLINE [1] dpSwitch #-}
 
 dpSwitchWith :: Functor col => Stepper col
@@ -259,14 +279,14 @@ dpSwitchWith stepper rf sfs (SF e0) k = SF (lazyN (go (fmap sfNode sfs) e0))
         in (# deferN next, cs #))
 
 -- | 'pSwitch' with the input broadcast to every member.
-pSwitchB :: Traversable col
+pSwitchB :: Functor col
          => col (SF a b) -> SF (a, col b) (Event c) -> (col (SF a b) -> c -> SF a (col b))
          -> SF a (col b)
 pSwitchB = pSwitch broadcast
 {-# NOINLINE [1] pSwitchB #-}
 
 -- | 'dpSwitch' with the input broadcast to every member.
-dpSwitchB :: Traversable col
+dpSwitchB :: Functor col
           => col (SF a b) -> SF (a, col b) (Event c) -> (col (SF a b) -> c -> SF a (col b))
           -> SF a (col b)
 dpSwitchB = dpSwitch broadcast
@@ -287,10 +307,10 @@ dpSwitchZ = dpSwitchWith stepColL (zipRoute "dpSwitchZ")
 -- seamlessly and new ones start at local time 0). The output at that
 -- instant is the new collection's. An event at time 0 changes the
 -- collection before it produces any output.
-rpSwitch :: Traversable col
+rpSwitch :: Functor col
          => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
          -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
-rpSwitch = rpSwitchWith stepColT
+rpSwitch = rpSwitchWith stepColF
 {-# NOINLINE [1] rpSwitch #-}
 
 rpSwitchWith :: Functor col => Stepper col
@@ -305,10 +325,10 @@ rpSwitchWith stepper rf sfs = SF (lazyN (go (fmap sfNode sfs)))
 -- | Delayed 'rpSwitch': at an event instant the output is still the old
 -- collection's; the new collection starts at that instant and supplies
 -- the outputs from the next sample on.
-drpSwitch :: Traversable col
+drpSwitch :: Functor col
           => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
           -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
-drpSwitch = drpSwitchWith stepColT
+drpSwitch = drpSwitchWith stepColF
 {-# NOINLINE [1] drpSwitch #-}
 
 drpSwitchWith :: Functor col => Stepper col
@@ -326,13 +346,13 @@ drpSwitchWith stepper rf sfs = SF (lazyN (go (fmap sfNode sfs)))
         in (# deferN next, cs #))
 
 -- | 'rpSwitch' with the input broadcast to every member.
-rpSwitchB :: Traversable col
+rpSwitchB :: Functor col
           => col (SF a b) -> SF (a, Event (col (SF a b) -> col (SF a b))) (col b)
 rpSwitchB = rpSwitch broadcast
 {-# NOINLINE [1] rpSwitchB #-}
 
 -- | 'drpSwitch' with the input broadcast to every member.
-drpSwitchB :: Traversable col
+drpSwitchB :: Functor col
            => col (SF a b) -> SF (a, Event (col (SF a b) -> col (SF a b))) (col b)
 drpSwitchB = drpSwitch broadcast
 {-# NOINLINE [1] drpSwitchB #-}
@@ -359,17 +379,34 @@ zipRoute name = go
     go []       _        = error ("AFRP.Parallel." ++ name
       ++ ": the input list is shorter than the list of signal functions")
 
--- Step every member, evaluating every successor node: any 'Traversable'.
+-- Step every member of any 'Functor': each member is stepped once, when its
+-- successor or its output is first demanded (a Functor cannot be walked).
+stepColF :: Functor col => DTime -> col (b, Node b c) -> (# col (Node b c), col c #)
+stepColF dt routed =
+  let stepped = fmap (\(b, n) -> boxStep n dt b) routed
+  in (# fmap (\(Boxed n _) -> n) stepped, fmap (\(Boxed _ c) -> c) stepped #)
+
+-- Step every member of a 'Traversable', evaluating every successor node, so
+-- that no member accumulates suspended steps. The rules below use it at
+-- the containers' 'Map.Map', 'IntMap.IntMap' and 'Seq.Seq', which Yampa
+-- programs use as collections; it computes the same collections as
+-- 'stepColF', more evaluated.
 stepColT :: Traversable col => DTime -> col (b, Node b c) -> (# col (Node b c), col c #)
 stepColT dt routed =
   let stepped = fmap (\(b, n) -> boxStep n dt b) routed
       nodes   = fmap (\(Boxed n _) -> n) stepped
-  in forceAll nodes `seq` (# nodes, fmap (\(Boxed _ c) -> c) stepped #)
+  in foldl' (\_ x -> x `seq` ()) () nodes `seq` (# nodes, fmap (\(Boxed _ c) -> c) stepped #)
 
-forceAll :: Foldable t => t a -> ()
-forceAll = foldl' (\_ x -> x `seq` ()) ()
+stepMap :: Stepper (Map.Map k)
+stepMap = stepColT
 
--- 'stepColT' on lists, in one pass: the members are stepped in order, each
+stepIntMap :: Stepper IntMap.IntMap
+stepIntMap = stepColT
+
+stepSeq :: Stepper Seq.Seq
+stepSeq = stepColT
+
+-- 'stepColF' on lists, in one pass: the members are stepped in order, each
 -- successor evaluated, the outputs left lazy.
 stepColL :: DTime -> [(b, Node b c)] -> (# [Node b c], [c] #)
 stepColL dt = go
@@ -440,4 +477,38 @@ freezeCol ns dt = fmap (\n -> SF (freezeN n dt)) ns
 "rpSwitchB/list"  rpSwitchB  = rpSwitchWith stepColL broadcast
 "drpSwitch/list"  drpSwitch  = drpSwitchWith stepColL
 "drpSwitchB/list" drpSwitchB = drpSwitchWith stepColL broadcast
+  #-}
+
+-- Maps and sequences: every combinator over 'stepColT' (strict stepping).
+{-# RULES
+"par/map" par = parWith stepMap
+"pSwitch/map" pSwitch = pSwitchWith stepMap
+"dpSwitch/map" dpSwitch = dpSwitchWith stepMap
+"rpSwitch/map" rpSwitch = rpSwitchWith stepMap
+"drpSwitch/map" drpSwitch = drpSwitchWith stepMap
+"pSwitchB/map" pSwitchB = pSwitchWith stepMap broadcast
+"dpSwitchB/map" dpSwitchB = dpSwitchWith stepMap broadcast
+"rpSwitchB/map" rpSwitchB = rpSwitchWith stepMap broadcast
+"drpSwitchB/map" drpSwitchB = drpSwitchWith stepMap broadcast
+"parB/map" parB = parWith stepMap broadcast
+"par/intmap" par = parWith stepIntMap
+"pSwitch/intmap" pSwitch = pSwitchWith stepIntMap
+"dpSwitch/intmap" dpSwitch = dpSwitchWith stepIntMap
+"rpSwitch/intmap" rpSwitch = rpSwitchWith stepIntMap
+"drpSwitch/intmap" drpSwitch = drpSwitchWith stepIntMap
+"pSwitchB/intmap" pSwitchB = pSwitchWith stepIntMap broadcast
+"dpSwitchB/intmap" dpSwitchB = dpSwitchWith stepIntMap broadcast
+"rpSwitchB/intmap" rpSwitchB = rpSwitchWith stepIntMap broadcast
+"drpSwitchB/intmap" drpSwitchB = drpSwitchWith stepIntMap broadcast
+"parB/intmap" parB = parWith stepIntMap broadcast
+"par/seq" par = parWith stepSeq
+"pSwitch/seq" pSwitch = pSwitchWith stepSeq
+"dpSwitch/seq" dpSwitch = dpSwitchWith stepSeq
+"rpSwitch/seq" rpSwitch = rpSwitchWith stepSeq
+"drpSwitch/seq" drpSwitch = drpSwitchWith stepSeq
+"pSwitchB/seq" pSwitchB = pSwitchWith stepSeq broadcast
+"dpSwitchB/seq" dpSwitchB = dpSwitchWith stepSeq broadcast
+"rpSwitchB/seq" rpSwitchB = rpSwitchWith stepSeq broadcast
+"drpSwitchB/seq" drpSwitchB = drpSwitchWith stepSeq broadcast
+"parB/seq" parB = parWith stepSeq broadcast
   #-}

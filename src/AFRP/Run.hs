@@ -21,6 +21,7 @@ module AFRP.Run
   , FutureSF
   , evalAtZero
   , evalAt
+  , evalFuture
     -- * Running on lists
   , embed
   , embedSynch
@@ -113,6 +114,13 @@ evalAtZero (SF n) a = case stepN n 0 a of (# n', b #) -> (b, FutureSF n')
 -- evaluated when the result pair is.
 evalAt :: FutureSF a b -> DTime -> a -> (b, FutureSF a b)
 evalAt (FutureSF n) dt a = case stepN n dt a of (# n', b #) -> (b, FutureSF n')
+
+-- | @evalFuture sf a dt@ runs the first sample (local time 0) of @sf@ on
+-- input @a@ and returns its output and the rest of @sf@ as a signal
+-- function whose first sample comes @dt@ after that one (whatever time step
+-- it is later run with). For tests and debugging, as 'evalAt'.
+evalFuture :: SF a b -> a -> DTime -> (b, SF a b)
+evalFuture (SF n) a dt = case stepN n 0 a of (# n', b #) -> (b, SF (freezeN n' dt))
 
 -- | @embed sf (a0, samples)@ runs @sf@ purely: @a0@ is the input at local
 -- time 0, each @(dt, ma)@ a later sample. The result has one output per

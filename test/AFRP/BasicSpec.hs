@@ -36,8 +36,12 @@ spec = do
       runDt 1 (0 --> identity) [5, 6, 7 :: Int] `shouldBe` [0, 6, 7]
     it "--> still runs the signal function at time 0" $
       runDt 1 (100 --> integral) [2, 2, 2 :: Double] `shouldBe` [100, 2, 4]
-    it "initially is -->" $
-      runDt 1 (initially 'x' (arr head)) ["ab", "cd"] `shouldBe` "xc"
+    it "initially replaces the first output and passes the input after" $
+      runDt 1 (initially 'x') "abc" `shouldBe` "xbc"
+    it "initially changes what a following integral sees at time 0" $
+      runDt 1 (initially 0 >>> integral) [5, 2, 3 :: Double] `shouldBe` [0, 0, 2]
+    it "dup duplicates" $
+      dup 'q' `shouldBe` ('q', 'q')
     it ">-- replaces only the input at time 0" $
       runDt 1 (10 >-- iPre 0) [1, 2, 3 :: Int] `shouldBe` [0, 10, 2]
     it "-=> maps the output at time 0 only" $

@@ -163,7 +163,7 @@ cases =
   , (">--",              fed id (0 >-- (arr pos >>> hold 0)) id)
   , ("-=>",              fed id (negate -=> derivative) id)
   , (">=-",              fed id (negate >=- derivative) id)
-  , ("initially",        fed id (initially 0 (arr pos >>> hold 0)) id)
+  , ("initially",        fed id (arr pos >>> hold 0 >>> initially 0) id)
   -- switches
   , ("switch",           fed id (switch (identity &&& arr big) (\x -> constant x)) id)
   , ("switch on an edge", fed id (switch (identity &&& (arr (> 2) >>> edge)) (\() -> derivative)) id)
