@@ -16,7 +16,9 @@
 -- When it fails, QuickCheck removes objects from the world as long as it
 -- still fails, prints the smallest world in the world-file format with the
 -- instant the predicate was decided false, and writes it to the file, to
--- be run again with @simbot --world failing.world@.
+-- be run again with @simbot --world failing.world@. 'forAllRuns' does
+-- both at once and also writes the failing run's replay page
+-- (@failing.world.html@), to watch in a browser.
 --
 -- Everything here uses the simulator's public API only.
 module AFrobRobotSim.Test
@@ -35,6 +37,8 @@ module AFrobRobotSim.Test
     -- * Properties
   , forAllWorlds
   , runT
+  , forAllRuns
+  , runReplayPage
     -- * Distances, for predicates
   , robotClearance
   , robotGap
@@ -47,6 +51,9 @@ import           AFRP                 (Time)
 import           AFRP.Geometry        (Point2 (..))
 import           AFrob.Dimensions     (RobotId, RobotType)
 import           AFrobRobotSim
+import           AFrobRobotSim.Log    (LogConfig (..), LogSummary (..), RunLog (..), defaultLogConfig,
+                                       logFrames, logHeader)
+import           AFrobRobotSim.Replay (replayPage)
 import           AFRP.Test.LTL
 import           AFRP.Test.Stream
 
@@ -212,6 +219,42 @@ runT config duration rcA rcB p world =
     explanation e = unlines $
       ("decided false at t = " ++ show (explTime e) ++ " (step " ++ show (explFrame e) ++ "):")
       : [ (if j == explFrame e then "  > " else "    ") ++ showWorldState ws | (j, _, ws) <- explAround e ]
+
+-- | @forAllRuns file config duration rcA rcB gen p@: the predicate @p w@
+-- ('runT') holds for the run of every world @w@ from @gen@. A failing world is
+-- shrunk ('shrinkWorld'); the smallest is printed, written to @file@ in the
+-- world-file format and its run's replay page ('runReplayPage') to
+-- @file ++ \".html\"@.
+--
+-- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB
+-- >   (genWorld defaultWorldMix notesBounds)
+-- >   (\_ -> Always (SP (arr (all (not . robotStuck) . wsRobots))))
+forAllRuns :: FilePath -> SimConfig -> Time -> SimbotController -> SimbotController
+           -> Gen WorldTemplate -> (WorldTemplate -> TPred WorldState) -> Property
+forAllRuns file config duration rcA rcB gen p =
+  forAllShrinkShow gen shrinkWorld renderWorld $ \w ->
+    whenFail (do writeFile file (renderWorld w)
+                 writeFile page (runReplayPage config duration w rcA rcB))
+             (counterexample ("(the world is written to " ++ file ++ ", its run's replay page to " ++ page ++ ")")
+                             (runT config duration rcA rcB (p w) w))
+  where
+    page = file ++ ".html"
+
+-- | @runReplayPage config duration world rcA rcB@: the self-contained
+-- HTML replay page ("AFrobRobotSim.Replay") of the run of 'runStream',
+-- frames at 25 per simulated second, as @simbot --replay@ writes it. The
+-- page is ASCII text.
+runReplayPage :: SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController -> String
+runReplayPage config duration world rcA rcB =
+  replayPage (RunLog (logHeader cfg) frames (Just summary))
+  where
+    cfg     = defaultLogConfig { lcBounds = simBounds config, lcWorld = world, lcDt = simDt config
+                               , lcSeed = simSeed config, lcCommandLine = ["afrp-test"] }
+    states  = map snd (runStream config duration world rcA rcB)
+    frames  = logFrames cfg states
+    summary = LogSummary { lsSimulated = if null states then 0 else wsTime (last states)
+                         , lsSteps = max 0 (length states - 1), lsFrames = length frames
+                         , lsWallTime = 0, lsInterrupted = False, lsFailure = Nothing, lsScores = [] }
 
 -- | @robotClearance world r@: the distance from the edge of robot @r@'s
 -- disc to the nearest wall segment or block of @world@ (negative if they

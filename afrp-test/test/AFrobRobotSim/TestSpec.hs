@@ -2,7 +2,7 @@
 -- | Properties of whole simbot runs, written with "AFrobRobotSim.Test".
 module AFrobRobotSim.TestSpec (spec) where
 
-import           Data.List             (isInfixOf)
+import           Data.List             (isInfixOf, isPrefixOf, tails)
 import           System.Directory      (getTemporaryDirectory, removeFile)
 import           System.FilePath       ((</>))
 import           Test.Hspec            hiding (after)
@@ -153,3 +153,26 @@ spec = do
         fmap renderWorld written `shouldBe` Right shown
         output result `shouldSatisfy` ("decided false at t = " `isInfixOf`)
       _ -> expectationFailure ("the broken wall follower was not caught: " ++ output result)
+
+  it "forAllRuns writes the shrunk world and its run's replay page (property)" $ do
+    let file = tmp </> "afrp-test-broken-runs.world"
+    result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 3, 0) } $
+      forAllRuns file defaultSimConfig { simDt = 0.02 } corridorTime (rcFollowLeftWallBroken 0.3 0.25) wander
+        genCorridor (keepsClear 1e-3)
+    case result of
+      Failure { failingTestCase = shown : _ } -> do
+        written <- readWorldFile file
+        page <- readFile (file ++ ".html")
+        length page `seq` removeFile (file ++ ".html")
+        removeFile file
+        page `shouldSatisfy` ("<!DOCTYPE html>" `isPrefixOf`)
+        page `shouldSatisfy` ("id=\"afrp-log\"" `isInfixOf`)
+        occurrences "\"frame\"" page `shouldSatisfy` (> 1)
+        fmap length written `shouldSatisfy` either (const False) (<= 3)
+        fmap renderWorld written `shouldBe` Right shown
+        output result `shouldSatisfy` ("decided false at t = " `isInfixOf`)
+      _ -> expectationFailure ("the broken wall follower was not caught: " ++ output result)
+
+-- How many times a text occurs in another.
+occurrences :: String -> String -> Int
+occurrences needle hay = length (filter (needle `isPrefixOf`) (tails hay))
