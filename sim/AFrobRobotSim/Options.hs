@@ -47,7 +47,7 @@ module AFrobRobotSim.Options
   ) where
 
 import           Data.Char       (isSpace)
-import           Data.List       (intercalate)
+import           Data.List       (intercalate, isSuffixOf)
 import           System.FilePath ((</>))
 import           Text.Printf     (printf)
 import           Text.Read       (readMaybe)
@@ -242,4 +242,6 @@ usage prog = intercalate "\n"
   , "  --log FILE.jsonl   write the JSON-lines run log (see docs/LOG.md)"
   , "  --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames)"
   , "  --help             print this usage and exit"
-  ]
+  ] ++ concat [ "\n\n" ++ prog ++ " --replay-from F.jsonl --replay OUT.html\n"
+                ++ "  turns a run log written with --log into a replay page (simulates nothing)"
+              | "simbot" `isSuffixOf` prog ]
