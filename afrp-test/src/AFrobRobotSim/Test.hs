@@ -51,6 +51,7 @@ import           AFRP                 (Time)
 import           AFRP.Geometry        (Point2 (..))
 import           AFrob.Dimensions     (RobotId, RobotType)
 import           AFrobRobotSim
+import           AFrobRobotSim.World  (objectHalfSize)
 import           AFrobRobotSim.Log    (LogConfig (..), LogSummary (..), RunLog (..), defaultLogConfig,
                                        logFrames, logHeader)
 import           AFrobRobotSim.Replay (replayPage)
@@ -144,13 +145,7 @@ shrinkWorld w =
 objectBox :: ObjectTemplate -> (Double, Double, Double, Double)
 objectBox o =
   let Point2 x y = otPos o
-      (hw, hh) = case o of
-        OTBlock {}   -> (blockSide / 2, blockSide / 2)
-        OTVWall {}   -> (wallThickness / 2, wallLength / 2)
-        OTHWall {}   -> (wallLength / 2, wallThickness / 2)
-        OTBall {}    -> (ballDiameter / 2, ballDiameter / 2)
-        OTSimbotA {} -> (simbotDiameter / 2, simbotDiameter / 2)
-        OTSimbotB {} -> (simbotDiameter / 2, simbotDiameter / 2)
+      (hw, hh)   = objectHalfSize o
   in (x - hw, y - hh, x + hw, y + hh)
 
 -- | Whether two boxes share more than an edge.
