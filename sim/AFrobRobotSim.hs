@@ -34,6 +34,12 @@ module AFrobRobotSim
   , maxSteps
   , maxFrameSide
   , usage
+  , parseParam
+    -- ** Parameters and the result line of a sweep
+  , getSimParams
+  , simParamsOf
+  , lookupSimParam
+  , paramOr
   , defaultWorld
     -- * Controllers and their input and output
   , SimbotController
@@ -93,6 +99,7 @@ module AFrobRobotSim
 
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Options
+import           AFrobRobotSim.Result      (getSimParams, lookupSimParam, paramOr, simParamsOf)
 import           AFrobRobotSim.Balls     (ballFriction, ballRestitution)
 import           AFrobRobotSim.Render    (RenderStyle (..), Scene (..), defaultRenderStyle, frameSize,
                                           renderPPM, renderSVG)

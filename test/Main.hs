@@ -46,6 +46,7 @@ import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
 import qualified AFrobRobotSim.SensorsSpec
 import qualified AFrobRobotSim.ShapesSpec
+import qualified AFrobRobotSim.SweepSpec
 import qualified Examples.Exercises14and15Spec
 import qualified Examples.Exercises1to6Spec
 import qualified Examples.Exercises7to13Spec
@@ -61,7 +62,8 @@ import qualified Ported.CarTrackerSpec
 import           System.Environment (lookupEnv)
 
 main :: IO ()
-main = lookupEnv AFrobRobotSim.RunSpec.childVariable >>= maybe specs AFrobRobotSim.RunSpec.child
+main = lookupEnv AFrobRobotSim.SweepSpec.childVariable >>= maybe runChild AFrobRobotSim.SweepSpec.child
+  where runChild = lookupEnv AFrobRobotSim.RunSpec.childVariable >>= maybe specs AFrobRobotSim.RunSpec.child
 
 specs :: IO ()
 specs = hspec $ do
@@ -113,6 +115,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.World" AFrobRobotSim.WorldSpec.spec
   describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec
   describe "AFrobRobotSim.Run"       AFrobRobotSim.RunSpec.spec
+  describe "AFrobRobotSim.Sweep"     AFrobRobotSim.SweepSpec.spec
   describe "examples: section 2"     Examples.Section2Spec.spec
   describe "examples: section 3"     Examples.Section3Spec.spec
   describe "exercises 1-6"           Examples.Exercises1to6Spec.spec

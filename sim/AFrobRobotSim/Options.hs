@@ -27,6 +27,9 @@
 -- --no-replay        write no replay page
 -- --log FILE.jsonl   write the JSON-lines run log (docs/LOG.md)
 -- --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames)
+-- --result FILE      write the run's settings and outcome as one JSON line
+-- --param NAME=VALUE a parameter for the controllers (repeatable; see
+--                    'AFrobRobotSim.Result.getSimParams')
 -- --help             print this usage and exit
 -- @
 --
@@ -40,6 +43,7 @@ module AFrobRobotSim.Options
   , Command (..)
   , parseSimArgs
   , parseKeys
+  , parseParam
   , validateOptions
   , maxSteps
   , maxFrameSide
@@ -72,6 +76,8 @@ data SimOptions = SimOptions
   , optVideo         :: Maybe FilePath     -- ^ assemble an mp4 with ffmpeg
   , optLog           :: Maybe FilePath     -- ^ write the JSON-lines run log
   , optReplay        :: Maybe FilePath     -- ^ write the HTML replay page
+  , optResult        :: Maybe FilePath     -- ^ write the result line (settings and outcome)
+  , optParams        :: [(String, String)] -- ^ the @--param@s, in order, one per name
   } deriving (Eq, Show)
 
 -- | The defaults listed in the module documentation: no frames, the SVG
@@ -82,7 +88,7 @@ defaultSimOptions = SimOptions
   , optScale = 60, optKeys = [], optSeed = 0, optOdometryNoise = 0, optQuiet = False
   , optWorldFile = Nothing, optDumpWorld = False, optRays = False, optTrails = False
   , optSvg = Just (defaultOut </> "run.svg"), optVideo = Nothing, optLog = Nothing
-  , optReplay = Just (defaultOut </> "replay.html") }
+  , optReplay = Just (defaultOut </> "replay.html"), optResult = Nothing, optParams = [] }
 
 defaultOut :: FilePath
 defaultOut = "simbot-out"
@@ -131,6 +137,8 @@ parseSimArgs o args = case args of
       , ("--video",   \v -> Right o { optVideo = Just v })
       , ("--log",     \v -> Right o { optLog = Just v })
       , ("--replay",  \v -> Right o { optReplay = Just v })
+      , ("--result",  \v -> Right o { optResult = Just v })
+      , ("--param",   \v -> (\p -> o { optParams = setParam p (optParams o) }) <$> parseParam v)
       ]
     -- a default output file follows the output folder
     moved dir f | f `elem` [optOut o </> "run.svg", optOut o </> "replay.html"] = dir </> drop (length (optOut o) + 1) f
@@ -143,6 +151,20 @@ parseSimArgs o args = case args of
     check opts = case validateOptions opts of
       []   -> Right (RunWith opts)
       errs -> Left (intercalate "; " errs)
+
+-- | Parse a @--param@ value, @NAME=VALUE@: the name is what comes before
+-- the first @=@ and must not be empty; the value may be empty or hold @=@.
+parseParam :: String -> Either String (String, String)
+parseParam v = case break (== '=') v of
+  (name, '=' : value) | not (null name) -> Right (name, value)
+  _ -> Left ("--param expects NAME=VALUE, got " ++ show v)
+
+-- | Set a parameter: a later @--param@ of the same name replaces the
+-- earlier one where it stood.
+setParam :: (String, String) -> [(String, String)] -> [(String, String)]
+setParam (k, v) ps
+  | any ((== k) . fst) ps = [ (k', if k' == k then v else v') | (k', v') <- ps ]
+  | otherwise             = ps ++ [(k, v)]
 
 -- | The most steps a run may take: 10^8 (about 280 simulated hours at the
 -- default step).
@@ -241,6 +263,8 @@ usage prog = intercalate "\n"
   , "  --no-replay        write no replay page"
   , "  --log FILE.jsonl   write the JSON-lines run log (see docs/LOG.md)"
   , "  --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames)"
+  , "  --result FILE      write the run's settings and outcome as one JSON line"
+  , "  --param NAME=VALUE a parameter the controllers read (repeatable)"
   , "  --help             print this usage and exit"
   ] ++ concat [ "\n\n" ++ prog ++ " --replay-from F.jsonl --replay OUT.html\n"
                 ++ "  turns a run log written with --log into a replay page (simulates nothing)"

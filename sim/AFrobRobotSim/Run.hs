@@ -7,7 +7,8 @@
 -- @runSim (Just world) rcA rcB@ reads its settings from the command line
 -- (see "AFrobRobotSim.Options" for the flags), simulates, prints the
 -- robots' console messages as they happen, writes the SVG, the replay
--- page, the run log and PPM frames as asked, and ends with a one-line
+-- page, the run log, PPM frames and the result line
+-- ("AFrobRobotSim.Result") as asked, and ends with a one-line
 -- summary.
 --
 -- Every fault that can be found before simulating is reported before
@@ -68,7 +69,9 @@ import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
 import           AFrobRobotSim.Render
+import           AFrobRobotSim.JSON        (encodeJSON)
 import           AFrobRobotSim.Replay
+import           AFrobRobotSim.Result      (RobotTally, resultJSON, startTallies, stepTallies)
 import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
@@ -112,7 +115,8 @@ preflight :: SimOptions -> IO [String]
 preflight opts = do
   let out   = optOut opts
       files = catMaybes [ (,) "--svg" <$> optSvg opts, (,) "--log" <$> optLog opts
-                        , (,) "--replay" <$> optReplay opts, (,) "--video" <$> optVideo opts ]
+                        , (,) "--replay" <$> optReplay opts, (,) "--video" <$> optVideo opts
+                        , (,) "--result" <$> optResult opts ]
       inOut = optFrames opts || any ((== out) . takeDirectory . snd) files
   ffmpeg <- maybe (pure Nothing) (const (findExecutable "ffmpeg")) (optVideo opts)
   fileErrs <- forM files $ \(flag, f) ->
@@ -259,6 +263,19 @@ logSink w = Sink (const (writeLogState w)) (\summary -> attempt "the log" (close
 replaySink :: ReplayRecorder -> FilePath -> Sink
 replaySink r file = Sink (const (recordReplayState r)) (\summary -> attempt (show file) (writeReplay r summary file))
 
+-- The result line (settings and outcome), written at the end however the
+-- run ended; the robots' tallies are its only state.
+resultSink :: String -> SimOptions -> FilePath -> IO Sink
+resultSink prog opts file = do
+  ref <- newIORef ([] :: [RobotTally])
+  let step n s = do
+        old <- readIORef ref
+        writeIORef ref $! if n == 0 then startTallies s else stepTallies (optDt opts) s old
+      finish summary = do
+        tallies <- readIORef ref
+        attempt (show file) (writeFile file (encodeJSON (resultJSON prog opts summary tallies) ++ "\n"))
+  pure (Sink step finish)
+
 -- Run a write; its failure as a message.
 attempt :: String -> IO () -> IO [String]
 attempt what act = do
@@ -299,9 +316,10 @@ simulateRun prog opts world rcA rcB = do
   frames <- if optFrames opts then Just <$> framesSink opts frameAt (renderPPM style scene) framesRef
                               else pure Nothing
   svg <- forM (optSvg opts) (svgSink opts svgEvery (style, scene))
+  result <- forM (optResult opts) (resultSink prog opts)
   let sinks = [ messagesSink | not (optQuiet opts) ]
               ++ [ progressSink nSteps framesRef | tty, not (optQuiet opts) ]
-              ++ catMaybes [ logSink <$> mlog, replaySink <$> mrec <*> optReplay opts, frames, svg ]
+              ++ catMaybes [ logSink <$> mlog, replaySink <$> mrec <*> optReplay opts, frames, svg, result ]
       loop !_ [] = pure Finished
       loop !n (s : rest) = do
         _ <- evaluate (forceState s)

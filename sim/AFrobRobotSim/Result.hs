@@ -1,0 +1,140 @@
+{-# LANGUAGE BangPatterns #-}
+-- |
+-- Module      : AFrobRobotSim.Result
+-- Description : A run's result line (@--result FILE@) and the parameters
+--               (@--param NAME=VALUE@) its controllers read.
+--
+-- A sweep runs one program over many seeds, worlds and parameters and
+-- compares the outcomes. Each run says what it was and how it ended in
+-- one JSON line, written by @--result FILE@ when the run ends, however it
+-- ends (a controller that throws still gets its line, with the failure):
+--
+-- @
+-- {"program":"simbot","world":"default","seed":3,"dt":0.01,"seconds":30,
+--  "params":{"speed":"0.5"},
+--  "outcome":{"simulated":30,"steps":3001,"interrupted":false,"failure":null,
+--             "robots":[{"type":"SimbotA","id":1,"x":..,"y":..,"heading":..,
+--                        "distance":..,"bumps":2,"stuckTime":1.25,"battery":0.98}],
+--             "scores":{}}}
+-- @
+--
+-- (on one line). @world@ is the @--world@ file, or @"default"@ for the
+-- program's own world. Per robot: the final true pose, the distance its
+-- centre travelled (the sum of the steps' displacements), @bumps@ the
+-- number of times it became stuck against something (a robot stuck at
+-- time 0 counts one), @stuckTime@ the simulated seconds it spent stuck,
+-- @battery@ its charge left (1 = full). No wall-clock time is written, so
+-- two runs with the same flags write the same line.
+--
+-- Parameters: the controllers of a program are built before 'runSim'
+-- reads the command line, so a parameter is read in 'IO' first, from the
+-- same command line:
+--
+-- @
+-- main = do
+--   speed <- 'paramOr' \"speed\" 0.5
+--   runSim Nothing (wander speed) (wander speed)
+-- @
+module AFrobRobotSim.Result
+  ( -- * Parameters
+    getSimParams
+  , simParamsOf
+  , lookupSimParam
+  , paramOr
+    -- * The result line
+  , RobotTally (..)
+  , startTallies
+  , stepTallies
+  , resultJSON
+  ) where
+
+import           Data.List            (foldl')
+import           System.Environment   (getArgs)
+import           Text.Read            (readMaybe)
+
+import           AFRP.Geometry        (norm, point2X, point2Y, (.-.))
+import           AFrobRobotSim.JSON
+import           AFrobRobotSim.Log.Records (LogSummary (..))
+import           AFrobRobotSim.Options
+import           AFrobRobotSim.Simulator
+
+-- | The @--param NAME=VALUE@ pairs of this program's command line, in the
+-- order given (a name given twice keeps its last value, in its first
+-- place). A command line that does not parse gives @[]@; 'runSim' then
+-- reports the fault before anything is simulated.
+getSimParams :: IO [(String, String)]
+getSimParams = simParamsOf <$> getArgs
+
+-- | The @--param@ pairs of a command line (as 'getSimParams', purely).
+simParamsOf :: [String] -> [(String, String)]
+simParamsOf args = case parseSimArgs defaultSimOptions args of
+  Right (RunWith o) -> optParams o
+  _                 -> []
+
+-- | The value of one @--param@ of this program's command line, if given.
+lookupSimParam :: String -> IO (Maybe String)
+lookupSimParam name = lookup name <$> getSimParams
+
+-- | @paramOr name def@: the @--param name=VALUE@ of this program's
+-- command line read with 'Read' (a 'String' parameter must then be
+-- quoted), or @def@ when it is not given. A value that does not read is an
+-- 'IOError' naming the parameter, thrown before anything is simulated.
+paramOr :: Read a => String -> a -> IO a
+paramOr name def = do
+  mv <- lookupSimParam name
+  case mv of
+    Nothing -> pure def
+    Just v  -> maybe (ioError (userError ("--param " ++ name ++ "=" ++ v ++ ": cannot read the value " ++ show v)))
+                     pure (readMaybe v)
+
+-- | What the result line keeps of one robot while the run goes: strict,
+-- so its memory is constant however long the run.
+data RobotTally = RobotTally
+  { tallyLast     :: !RobotState  -- ^ the robot's latest state
+  , tallyDistance :: !Double      -- ^ metres its centre travelled so far
+  , tallyBumps    :: !Int         -- ^ times it became stuck
+  , tallyStuck    :: !Double      -- ^ simulated seconds spent stuck
+  }
+
+-- | The tallies at time 0: nothing travelled, a bump for a robot stuck
+-- already.
+startTallies :: WorldState -> [RobotTally]
+startTallies s = [ RobotTally r 0 (if robotStuck r then 1 else 0) 0 | r <- wsRobots s ]
+
+-- | Take the next step's state (@dt@ after the previous one): add the
+-- displacement, a bump when a robot becomes stuck, @dt@ of stuck time for
+-- a robot stuck at this step.
+stepTallies :: Double -> WorldState -> [RobotTally] -> [RobotTally]
+stepTallies dt s ts = forceAll (zipWith one ts (wsRobots s))
+  where
+    one (RobotTally old d b st) r =
+      RobotTally r (d + norm (robotPos r .-. robotPos old))
+                 (if robotStuck r && not (robotStuck old) then b + 1 else b)
+                 (if robotStuck r then st + dt else st)
+    forceAll xs = foldl' (\acc x -> x `seq` acc) () xs `seq` xs
+
+-- | The result line of a run: its settings (the program's name and
+-- options) and its outcome (the summary and the robots' tallies at the
+-- last state simulated). See the module documentation for the fields.
+resultJSON :: String -> SimOptions -> LogSummary -> [RobotTally] -> JSON
+resultJSON prog o summary tallies = JObject
+  [ ("program", JString prog)
+  , ("world", JString (maybe "default" id (optWorldFile o)))
+  , ("seed", JNumber (fromIntegral (optSeed o)))
+  , ("dt", JNumber (optDt o))
+  , ("seconds", JNumber (optSeconds o))
+  , ("params", JObject [ (k, JString v) | (k, v) <- optParams o ])
+  , ("outcome", JObject
+      [ ("simulated", JNumber (lsSimulated summary))
+      , ("steps", JNumber (fromIntegral (lsSteps summary)))
+      , ("interrupted", JBool (lsInterrupted summary))
+      , ("failure", maybe JNull JString (lsFailure summary))
+      , ("robots", JArray (map robot tallies))
+      , ("scores", JObject [ (k, JNumber (fromIntegral v)) | (k, v) <- lsScores summary ]) ]) ]
+  where
+    robot (RobotTally r d b st) = JObject
+      [ ("type", JString (robotType r)), ("id", JNumber (fromIntegral (robotId r)))
+      , ("x", JNumber (point2X (robotPos r))), ("y", JNumber (point2Y (robotPos r)))
+      , ("heading", JNumber (robotHeading r)), ("distance", JNumber d)
+      , ("bumps", JNumber (fromIntegral b)), ("stuckTime", JNumber st)
+      , ("battery", JNumber (robotCharge r)) ]

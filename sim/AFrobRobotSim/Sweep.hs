@@ -1,0 +1,118 @@
+-- |
+-- Module      : AFrobRobotSim.Sweep
+-- Description : Merging the result lines of a sweep into one table.
+--
+-- A sweep (@scripts/sweep@, @scripts/sweep.sbatch@) writes one result line
+-- per run ("AFrobRobotSim.Result"), in shards, in whatever order the runs
+-- finished. 'mergeResults' groups the runs by their setting (the
+-- parameters and the world: every field of the settings but the seed) and
+-- prints, per group, the mean, minimum and maximum of every outcome over
+-- its runs. The table does not depend on the order of the lines (the
+-- values are sorted before they are summed), so shards merged in any order
+-- give the same table. A run that failed (a controller error, or a line
+-- the sweep wrote for a run that wrote none) is counted and listed under
+-- its group, never dropped; its outcome, as far as it got, still counts.
+module AFrobRobotSim.Sweep
+  ( mergeResults
+  , sweepMergeMain
+  ) where
+
+import           Data.Either         (partitionEithers)
+import           Data.List           (nub, sort, sortOn)
+import           Data.Maybe          (fromMaybe)
+import           System.Environment  (getArgs)
+import           System.Exit         (exitWith, ExitCode (..))
+import           System.IO           (hPutStrLn, stderr)
+import           Text.Printf         (printf)
+
+import           AFrobRobotSim.JSON
+
+-- One run as the table needs it.
+data Run = Run
+  { runGroup   :: [(String, String)]   -- the setting: world and parameters
+  , runSeed    :: String
+  , runFailure :: Maybe String
+  , runValues  :: [(String, Double)]   -- outcome name, value
+  }
+
+-- | The table of a sweep's result lines (the text of one or more result
+-- files, one JSON object a line; blank lines are skipped), or the first
+-- line that is not a result, with its number.
+mergeResults :: String -> Either String String
+mergeResults text = do
+  runs <- mapM readLine [ (k, l) | (k, l) <- zip [1 :: Int ..] (lines text), any (/= ' ') l ]
+  let groups = nub (sort (map runGroup runs))
+  pure (unlines (concatMap (table runs) groups))
+  where
+    readLine (k, l) = either (\e -> Left ("line " ++ show k ++ ": " ++ e)) Right (parseJSON l >>= readRun)
+
+readRun :: JSON -> Either String Run
+readRun v = do
+  world  <- memberMaybe "world" v >>= maybe (Right "?") asString
+  params <- memberMaybe "params" v >>= \mp -> case mp of
+    Just (JObject kvs) -> mapM (\(k, x) -> (,) k <$> asString x) kvs
+    _                  -> Right []
+  seed   <- maybe "?" encodeJSON <$> memberMaybe "seed" v
+  mout   <- memberMaybe "outcome" v
+  failure <- memberMaybe "failure" v >>= traverse asString
+  case mout of
+    Nothing -> pure (Run (("world", world) : sort params) seed (Just (fromMaybe "no result" failure)) [])
+    Just out -> do
+      outFailure <- memberMaybe "failure" out >>= traverse asString
+      interrupted <- maybe False (== JBool True) <$> memberMaybe "interrupted" out
+      simulated <- member "simulated" out >>= asNumber
+      steps     <- member "steps" out >>= asNumber
+      robots    <- maybe (Right []) asArray =<< memberMaybe "robots" out
+      perRobot  <- concat <$> mapM robotValues robots
+      scores    <- memberMaybe "scores" out >>= \ms -> case ms of
+        Just (JObject kvs) -> mapM (\(k, x) -> (,) ("score " ++ k) <$> asNumber x) kvs
+        _                  -> Right []
+      let fault = case (outFailure, interrupted) of
+            (Just f, _)   -> Just f
+            (_, True)     -> Just "interrupted"
+            _             -> Nothing
+      pure (Run (("world", world) : sort params) seed fault
+                ([("simulated", simulated), ("steps", steps)] ++ perRobot ++ scores))
+  where
+    robotValues r = do
+      ty <- member "type" r >>= asString
+      i  <- member "id" r >>= asInt
+      let name f = ty ++ " " ++ show i ++ " " ++ f
+      mapM (\f -> (,) (name f) <$> (member f r >>= asNumber))
+           ["x", "y", "heading", "distance", "bumps", "stuckTime", "battery"]
+
+-- One group's lines of the table.
+table :: [Run] -> [(String, String)] -> [String]
+table runs g =
+  [ "== " ++ unwords [ k ++ "=" ++ v | (k, v) <- g ]
+    ++ printf "  (%d runs, %d failed)" (length mine) (length failed) ]
+  ++ [ printf "  %-28s %14s %14s %14s" ("outcome" :: String) ("mean" :: String) ("min" :: String) ("max" :: String)
+     | not (null names) ]
+  ++ [ printf "  %-28s %14s %14s %14s" n (number (mean xs)) (number (minimum xs)) (number (maximum xs))
+       ++ (if length xs < length mine then printf "  (%d runs)" (length xs) else "")
+     | n <- names, let xs = sort [ x | r <- mine, Just x <- [lookup n (runValues r)] ] ]
+  ++ [ "  FAILED seed " ++ runSeed r ++ ": " ++ f
+     | r <- sortOn runSeed failed, Just f <- [runFailure r] ]
+  where
+    mine   = [ r | r <- runs, runGroup r == g ]
+    failed = [ r | r <- mine, runFailure r /= Nothing ]
+    names  = nub (concatMap (map fst . runValues) (sortOn runSeed mine))
+    mean xs = sum xs / fromIntegral (length xs)
+    number :: Double -> String
+    number x
+      | x /= 0 && (abs x < 1e-3 || abs x >= 1e7) = printf "%.4e" x
+      | otherwise                                 = printf "%.4f" x
+
+-- | The @afrp-sweep-merge FILE...@ program (and @scripts/sweep-merge@):
+-- print the table of the result files (standard input when none is
+-- given); exit code 1 with the message when a line is not a result.
+sweepMergeMain :: IO ()
+sweepMergeMain = do
+  args <- getArgs
+  texts <- if null args then (: []) <$> getContents else mapM readFile args
+  let (errs, tables) = partitionEithers [ mergeResults (concatMap ensureNewline texts) ]
+  mapM_ putStr tables
+  mapM_ (hPutStrLn stderr . ("afrp-sweep-merge: " ++)) errs
+  if null errs then pure () else exitWith (ExitFailure 1)
+  where
+    ensureNewline t = if null t || last t == '\n' then t else t ++ "\n"

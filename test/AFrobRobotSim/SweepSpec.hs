@@ -1,0 +1,245 @@
+{-# LANGUAGE ScopedTypeVariables #-}
+-- | @--result@, @--param@ and the sweep scripts (@scripts/sweep@,
+-- @scripts/sweep.sbatch@, @scripts/sweep-merge@), run as child processes:
+-- the program of a sweep is this test binary started with
+-- 'childVariable' set.
+module AFrobRobotSim.SweepSpec (spec, childVariable, child) where
+
+import           Control.Exception   (bracket, try)
+import           Control.Monad       (forM, forM_, unless)
+import           Data.List           (isInfixOf, sort)
+import           System.Directory    (createDirectory, doesFileExist, findExecutable, getPermissions,
+                                      getTemporaryDirectory, makeAbsolute, removeDirectoryRecursive,
+                                      setOwnerExecutable, setPermissions)
+import           System.Environment  (getArgs, getEnvironment, getExecutablePath)
+import           System.Exit         (ExitCode (..))
+import           System.FilePath     ((</>))
+import           System.Process      (CreateProcess (..), proc, readCreateProcessWithExitCode,
+                                      readProcessWithExitCode)
+import           Test.Hspec
+
+import           AFrob
+import           AFrobRobotSim
+import           AFrobRobotSim.JSON
+import           AFrobRobotSim.Sweep (sweepMergeMain)
+
+-- | The environment variable that makes the test binary run 'child'.
+childVariable :: String
+childVariable = "AFRP_SPEC_SWEEP_CHILD"
+
+-- | The test binary as a child: @program@ is a runSim program whose robot
+-- starts further right the larger the seed, drives at @--param speed=V@
+-- (default 0.1) and whose controller throws from @--param failAt=T@ on;
+-- @merge@ is @afrp-sweep-merge@.
+child :: String -> IO ()
+child "merge" = sweepMergeMain
+child "program" = do
+  args <- getArgs
+  speed  <- paramOr "speed" (0.1 :: Double)
+  failAt <- paramOr "failAt" (1 / 0 :: Double)
+  let seed = case parseSimArgs defaultSimOptions args of
+        Right (RunWith o) -> optSeed o
+        _                 -> 0
+      start = -3 + 0.25 * fromIntegral (seed `mod` 8)
+      world = [OTSimbotA 1 (Point2 start 0) 0, OTVWall (Point2 0 0), OTBall (Point2 0 2)]
+      ctl _ = localTime >>> arr (\t -> if t >= failAt then error "the test controller gives up"
+                                       else mrFinalize (ddVelDiff speed speed))
+  runSim (Just world) ctl ctl
+child other = ioError (userError ("unknown child " ++ show other))
+
+withTempDir :: (FilePath -> IO a) -> IO a
+withTempDir act = do
+  tmp <- getTemporaryDirectory
+  let go k = do
+        let d = tmp </> ("afrp-sweepspec-" ++ show (k :: Int))
+        r <- try (createDirectory d)
+        either (\(_ :: IOError) -> go (k + 1)) (const (pure d)) r
+  bracket (go 0) removeDirectoryRecursive act
+
+-- A script in @dir@ that starts this test binary as the given child.
+childScript :: FilePath -> String -> IO FilePath
+childScript dir what = do
+  self <- getExecutablePath
+  let file = dir </> what
+  writeFile file ("#!/bin/sh\n" ++ childVariable ++ "=" ++ what ++ " exec '" ++ self ++ "' \"$@\"\n")
+  p <- getPermissions file
+  setPermissions file (setOwnerExecutable True p)
+  pure file
+
+-- Run the program once with these flags and a result file; its exit code,
+-- standard error and result line.
+runOnce :: FilePath -> [String] -> IO (ExitCode, String, String)
+runOnce dir flags = do
+  prog <- childScript dir "program"
+  let file = dir </> "result.json"
+  (code, _, err) <- readProcessWithExitCode prog (["--quiet", "--no-svg", "--no-replay"] ++ flags ++ ["--result", file]) ""
+  there <- doesFileExist file
+  line <- if there then readFile file else pure ""
+  length line `seq` pure (code, err, line)
+
+field :: [String] -> JSON -> JSON
+field path v = either error id (foldl (\acc k -> acc >>= member k) (Right v) path)
+
+parsed :: String -> JSON
+parsed = either error id . parseJSON
+
+-- A script of this repository, or a failure saying where it was looked for.
+script :: String -> IO FilePath
+script name = do
+  f <- makeAbsolute ("scripts" </> name)
+  there <- doesFileExist f
+  unless there (expectationFailure ("no " ++ f ++ " (run the tests from the repository's root)"))
+  pure f
+
+-- GNU parallel, or a failed test that says how to install it.
+requireParallel :: IO ()
+requireParallel = do
+  found <- findExecutable "parallel"
+  ok <- case found of
+    Nothing -> pure False
+    Just p  -> do
+      (_, out, _) <- readProcessWithExitCode p ["--version"] ""
+      pure ("GNU parallel" `isInfixOf` out)
+  unless ok (expectationFailure "the sweep tests need GNU parallel on the PATH (Debian: apt-get install parallel)")
+
+-- Run a script with these extra environment variables; fail the test
+-- with its messages unless it succeeds; its standard output.
+runScript :: [(String, String)] -> FilePath -> [String] -> IO String
+runScript extraEnv file args = do
+  environment <- filter ((`notElem` map fst extraEnv) . fst) <$> getEnvironment
+  (code, out, err) <- readCreateProcessWithExitCode (proc "bash" (file : args)) { env = Just (extraEnv ++ environment) } ""
+  unless (code == ExitSuccess) (expectationFailure (file ++ " " ++ unwords args ++ " failed: " ++ show code ++ "\n" ++ err))
+  pure out
+
+-- The merged table of result files, by scripts/sweep-merge.
+merged :: FilePath -> [FilePath] -> IO String
+merged dir files = do
+  merger <- childScript dir "merge"
+  sweepMerge <- script "sweep-merge"
+  runScript [("AFRP_SWEEP_MERGE", merger)] sweepMerge files
+
+seeds :: [Int]
+seeds = [1 .. 8]
+
+speeds :: [String]
+speeds = ["0.05", "0.1"]
+
+-- The sweep's runs one after the other, in the job list's order.
+sequentialLines :: FilePath -> IO [String]
+sequentialLines dir = fmap concat . forM speeds $ \v -> forM seeds $ \s -> do
+  (code, err, line) <- runOnce dir ["--seconds", "3", "--seed", show s, "--param", "speed=" ++ v]
+  (code, err) `shouldBe` (ExitSuccess, "")
+  pure (filter (/= '\n') line)
+
+spec :: Spec
+spec = do
+  describe "--param" $ do
+    it "collects NAME=VALUE pairs in order, a repeated name keeping its last value" $
+      simParamsOf ["--seed", "3", "--param", "a=1", "--param", "b=x=y", "--param", "a=2", "--param", "c="]
+        `shouldBe` [("a", "2"), ("b", "x=y"), ("c", "")]
+    it "rejects a value without a name or an =" $ do
+      parseSimArgs defaultSimOptions ["--param", "speed"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
+      parseSimArgs defaultSimOptions ["--param", "=1"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
+    it "paramOr: a value that does not read stops the program before it runs, naming it" $ withTempDir $ \dir -> do
+      (code, err, line) <- runOnce dir ["--seconds", "1", "--param", "speed=fast"]
+      code `shouldNotBe` ExitSuccess
+      err `shouldSatisfy` ("speed=fast" `isInfixOf`)
+      line `shouldBe` ""
+
+  describe "--result" $ do
+    it "writes one JSON line with the settings and the outcome; the parameter reaches the controller" $ withTempDir $ \dir -> do
+      results <- forM ["0.05", "0.1"] $ \v -> do
+        (code, err, line) <- runOnce dir ["--seconds", "2", "--seed", "3", "--param", "speed=" ++ v, "--param", "tag=a=b"]
+        (code, err) `shouldBe` (ExitSuccess, "")
+        length (lines line) `shouldBe` 1
+        pure (parsed line)
+      forM_ results $ \r -> do
+        field ["world"] r `shouldBe` JString "default"
+        field ["seed"] r `shouldBe` JNumber 3
+        field ["dt"] r `shouldBe` JNumber 0.01
+        field ["seconds"] r `shouldBe` JNumber 2
+        field ["outcome", "simulated"] r `shouldBe` JNumber 2
+        field ["outcome", "steps"] r `shouldBe` JNumber 201
+        field ["outcome", "interrupted"] r `shouldBe` JBool False
+        field ["outcome", "failure"] r `shouldBe` JNull
+        field ["outcome", "scores"] r `shouldBe` JObject []
+      map (field ["params"]) results `shouldBe`
+        [ JObject [("speed", JString v), ("tag", JString "a=b")] | v <- ["0.05", "0.1"] ]
+      let robot r = case field ["outcome", "robots"] r of
+            JArray [x] -> x
+            other      -> error ("one robot expected: " ++ show other)
+          number k r = either error id (asNumber (field [k] (robot r)))
+      map (field ["type"] . robot) results `shouldBe` replicate 2 (JString "SimbotA")
+      -- the robot starts at x = -2.25 (seed 3) and drives along y = 0
+      forM_ results $ \r -> do
+        number "x" r - (-2.25) `shouldSatisfy` (\dx -> abs (dx - number "distance" r) < 1e-9)
+        number "battery" r `shouldSatisfy` (\b -> b > 0 && b <= 1)
+        number "bumps" r `shouldBe` 0
+        number "stuckTime" r `shouldBe` 0
+      map (number "distance") results `shouldSatisfy` (\ds -> case ds of
+        [slow, fast] -> slow > 0.05 && fast > 1.5 * slow
+        _            -> False)
+    it "counts the bumps and the time stuck against a wall" $ withTempDir $ \dir -> do
+      (code, err, line) <- runOnce dir ["--seconds", "10", "--seed", "7", "--param", "speed=1"]
+      (code, err) `shouldBe` (ExitSuccess, "")
+      let robotOf = case field ["outcome", "robots"] (parsed line) of
+            JArray [x] -> x
+            other      -> error (show other)
+          number k = either error id (asNumber (field [k] robotOf))
+      number "bumps" `shouldBe` 1
+      number "stuckTime" `shouldSatisfy` (\t -> t > 1 && t < 9)
+    it "a controller that throws: exit code 1, and the line has the failure and the time simulated" $ withTempDir $ \dir -> do
+      (code, err, line) <- runOnce dir ["--seconds", "2", "--param", "failAt=0.5"]
+      code `shouldBe` ExitFailure 1
+      err `shouldSatisfy` ("gives up" `isInfixOf`)
+      let r = parsed line
+      field ["outcome", "failure"] r `shouldSatisfy` \f -> case f of
+        JString s -> all (`isInfixOf` s) ["SimbotA 1", "0.500", "gives up"]
+        _         -> False
+      field ["outcome", "simulated"] r `shouldBe` JNumber 0.49
+
+  describe "scripts/sweep" $ do
+    it "8 seeds x 2 speeds with GNU parallel give the lines and the table of the runs one by one" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      _ <- runScript [] sweep ["-j", "4", "--seeds", "1..8", "--param", "speed=" ++ concatMap (++ ",") (init speeds) ++ last speeds
+                              , prog, dir </> "sweep.jsonl", "--", "--seconds", "3"]
+      swept <- lines <$> readFile (dir </> "sweep.jsonl")
+      one <- sequentialLines dir
+      swept `shouldBe` one
+      writeFile (dir </> "one.jsonl") (unlines one)
+      table <- merged dir [dir </> "sweep.jsonl"]
+      merged dir [dir </> "one.jsonl"] `shouldReturn` table
+      table `shouldSatisfy` \t -> all (`isInfixOf` t) ["speed=0.05", "speed=0.1", "(8 runs, 0 failed)", "SimbotA 1 distance"]
+
+    it "the Slurm script's task for every SLURM_ARRAY_TASK_ID gives the same results and table" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sbatch <- script "sweep.sbatch"
+      forM_ [0 .. 2 :: Int] $ \i ->
+        runScript [("SLURM_ARRAY_TASK_ID", show i), ("SLURM_ARRAY_TASK_COUNT", "3")] sbatch
+                  [dir </> "out", prog, "--seeds", "1..8", "--param", "speed=0.05,0.1", "--", "--seconds", "3"]
+      let shards = [ dir </> "out" </> ("shard-" ++ show i ++ ".jsonl") | i <- [2, 0, 1 :: Int] ]
+      shardLines <- concat <$> mapM (fmap lines . readFile) shards
+      map length [shardLines] `shouldBe` [16]
+      one <- sequentialLines dir
+      sort shardLines `shouldBe` sort one
+      writeFile (dir </> "one.jsonl") (unlines one)
+      expected <- merged dir [dir </> "one.jsonl"]
+      merged dir shards `shouldReturn` expected
+
+    it "a run that fails, or writes no result at all, is in the merged table" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      writeFile (dir </> "jobs") (unlines
+        [ "# seed 2 throws, seed 3 has a flag the program rejects"
+        , "--seed 1 --param speed=1", "--seed 2 --param speed=1 --param failAt=0.5", ""
+        , "--seed 3 --param speed=1 --no-such-flag" ])
+      _ <- runScript [] sweep ["--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "2"]
+      table <- merged dir [dir </> "r.jsonl"]
+      table `shouldSatisfy` ("speed=1  (2 runs, 1 failed)" `isInfixOf`)
+      table `shouldSatisfy` ("failAt=0.5 speed=1  (1 runs, 1 failed)" `isInfixOf`)
+      table `shouldSatisfy` ("FAILED seed 2: the controller of SimbotA 1 failed at t = 0.500" `isInfixOf`)
+      table `shouldSatisfy` ("FAILED seed 3: exit code 2, no result" `isInfixOf`)
