@@ -17,11 +17,12 @@ import           System.FilePath     ((</>))
 import           System.Process      (CreateProcess (..), proc, readCreateProcessWithExitCode,
                                       readProcessWithExitCode)
 import           Test.Hspec
+import           Test.QuickCheck     (forAll, shuffle)
 
-import           AFrob
+import           AFrob               hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.JSON
-import           AFrobRobotSim.Sweep (sweepMergeMain)
+import           AFrobRobotSim.Sweep (mergeResults, sweepMergeMain)
 
 -- | The environment variable that makes the test binary run 'child'.
 childVariable :: String
@@ -131,8 +132,37 @@ sequentialLines dir = fmap concat . forM speeds $ \v -> forM seeds $ \s -> do
   (code, err) `shouldBe` (ExitSuccess, "")
   pure (filter (/= '\n') line)
 
+-- A result line as a run writes it, with one robot.
+resultLine :: Int -> String -> Double -> Maybe String -> String
+resultLine seed speed dist failure = encodeJSON $ JObject
+  [ ("program", JString "p"), ("world", JString "default"), ("seed", JNumber (fromIntegral seed))
+  , ("dt", JNumber 0.01), ("seconds", JNumber 1), ("params", JObject [("speed", JString speed)])
+  , ("outcome", JObject
+      [ ("simulated", JNumber 1), ("steps", JNumber 101), ("interrupted", JBool False)
+      , ("failure", maybe JNull JString failure)
+      , ("robots", JArray [JObject [ ("type", JString "SimbotA"), ("id", JNumber 1), ("x", JNumber 0)
+                                   , ("y", JNumber 0), ("heading", JNumber 0), ("distance", JNumber dist)
+                                   , ("bumps", JNumber 0), ("stuckTime", JNumber 0), ("battery", JNumber 1) ]])
+      , ("scores", JObject [("goals", JNumber (fromIntegral seed))]) ]) ]
+
 spec :: Spec
 spec = do
+  describe "mergeResults" $ do
+    let sampleLines = [ resultLine 1 "0.1" 1 Nothing, resultLine 2 "0.1" 2 Nothing, resultLine 3 "0.1" 6 Nothing
+                 , resultLine 1 "0.2" 0.1 Nothing, resultLine 2 "0.2" 0.3 (Just "it broke") ]
+    it "gives per setting the mean, min and max of every outcome, and the failed runs" $ do
+      table <- either (\e -> expectationFailure e >> pure "") pure (mergeResults (unlines sampleLines))
+      lines table `shouldSatisfy` elem "== world=default speed=0.1  (3 runs, 0 failed)"
+      lines table `shouldSatisfy` elem "== world=default speed=0.2  (2 runs, 1 failed)"
+      map words (lines table) `shouldSatisfy` elem ["SimbotA", "1", "distance", "3.0000", "1.0000", "6.0000"]
+      map words (lines table) `shouldSatisfy` elem ["score", "goals", "2.0000", "1.0000", "3.0000"]
+      map words (lines table) `shouldSatisfy` elem ["SimbotA", "1", "distance", "0.2000", "0.1000", "0.3000"]
+      table `shouldSatisfy` ("  FAILED seed 2: it broke" `isInfixOf`)
+    it "does not depend on the order of the lines" $
+      forAll (shuffle sampleLines) $ \ls -> mergeResults (unlines ls) == mergeResults (unlines sampleLines)
+    it "reports a line that is not JSON with its number" $
+      mergeResults (unlines [head sampleLines, "not json"]) `shouldSatisfy` either ("line 2" `isInfixOf`) (const False)
+
   describe "--param" $ do
     it "collects NAME=VALUE pairs in order, a repeated name keeping its last value" $
       simParamsOf ["--seed", "3", "--param", "a=1", "--param", "b=x=y", "--param", "a=2", "--param", "c="]
