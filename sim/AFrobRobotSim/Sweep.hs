@@ -7,7 +7,9 @@
 -- finished. 'mergeResults' groups the runs by their setting (the
 -- parameters and the world: every field of the settings but the seed) and
 -- prints, per group, the mean, minimum and maximum of every outcome over
--- its runs. The table does not depend on the order of the lines (the
+-- its runs; when two or more settings vary (two parameters, or a parameter
+-- and the world), it then prints the same per value of each setting, over
+-- all the values of the others. The table does not depend on the order of the lines (the
 -- values are sorted before they are summed), so shards merged in any order
 -- give the same table. A run that failed (a controller error, or a line
 -- the sweep wrote for a run that wrote none) is counted and listed under
@@ -41,8 +43,14 @@ data Run = Run
 mergeResults :: String -> Either String String
 mergeResults text = do
   runs <- mapM readLine [ (k, l) | (k, l) <- zip [1 :: Int ..] (lines text), any (/= ' ') l ]
-  let groups = nub (sort (map runGroup runs))
-  pure (unlines (concatMap (table runs) groups))
+  let groups   = nub (sort (map runGroup runs))
+      settings = nub (sort (concatMap runGroup runs))
+      varying  = [ k | k <- nub (map fst settings), length (filter ((== k) . fst) settings) > 1 ]
+      -- with two or more settings varying, also each value of each over all the others
+      marginal = [ kv | length varying > 1, kv@(k, _) <- settings, k `elem` varying ]
+  pure (unlines (  concatMap (\g -> table (showSetting g) [ r | r <- runs, runGroup r == g ]) groups
+                ++ concatMap (\kv -> table (showSetting [kv] ++ " over all other settings")
+                                           [ r | r <- runs, kv `elem` runGroup r ]) marginal))
   where
     readLine (k, l) = either (\e -> Left ("line " ++ show k ++ ": " ++ e)) Right (parseJSON l >>= readRun)
 
@@ -81,10 +89,13 @@ readRun v = do
       mapM (\f -> (,) (name f) <$> (member f r >>= asNumber))
            ["x", "y", "heading", "distance", "bumps", "stuckTime", "battery"]
 
--- One group's lines of the table.
-table :: [Run] -> [(String, String)] -> [String]
-table runs g =
-  [ "== " ++ unwords [ k ++ "=" ++ v | (k, v) <- g ]
+showSetting :: [(String, String)] -> String
+showSetting g = unwords [ k ++ "=" ++ v | (k, v) <- g ]
+
+-- One group's lines of the table: its heading and its runs.
+table :: String -> [Run] -> [String]
+table heading mine =
+  [ "== " ++ heading
     ++ printf "  (%d runs, %d failed)" (length mine) (length failed) ]
   ++ [ printf "  %-28s %14s %14s %14s" ("outcome" :: String) ("mean" :: String) ("min" :: String) ("max" :: String)
      | not (null names) ]
@@ -94,7 +105,6 @@ table runs g =
   ++ [ "  FAILED seed " ++ runSeed r ++ ": " ++ f
      | r <- sortOn runSeed failed, Just f <- [runFailure r] ]
   where
-    mine   = [ r | r <- runs, runGroup r == g ]
     failed = [ r | r <- mine, runFailure r /= Nothing ]
     names  = nub (concatMap (map fst . runValues) (sortOn runSeed mine))
     mean xs = sum xs / fromIntegral (length xs)

@@ -7,7 +7,7 @@ module AFrobRobotSim.SweepSpec (spec, childVariable, child) where
 
 import           Control.Exception   (bracket, try)
 import           Control.Monad       (forM, forM_, unless)
-import           Data.List           (isInfixOf, sort)
+import           Data.List           (isInfixOf, isPrefixOf, sort)
 import           System.Directory    (createDirectory, doesFileExist, findExecutable, getPermissions,
                                       getTemporaryDirectory, makeAbsolute, removeDirectoryRecursive,
                                       setOwnerExecutable, setPermissions)
@@ -133,10 +133,10 @@ sequentialLines dir = fmap concat . forM speeds $ \v -> forM seeds $ \s -> do
   pure (filter (/= '\n') line)
 
 -- A result line as a run writes it, with one robot.
-resultLine :: Int -> String -> Double -> Maybe String -> String
-resultLine seed speed dist failure = encodeJSON $ JObject
+resultLine :: Int -> [(String, String)] -> Double -> Maybe String -> String
+resultLine seed params dist failure = encodeJSON $ JObject
   [ ("program", JString "p"), ("world", JString "default"), ("seed", JNumber (fromIntegral seed))
-  , ("dt", JNumber 0.01), ("seconds", JNumber 1), ("params", JObject [("speed", JString speed)])
+  , ("dt", JNumber 0.01), ("seconds", JNumber 1), ("params", JObject [ (k, JString v) | (k, v) <- params ])
   , ("outcome", JObject
       [ ("simulated", JNumber 1), ("steps", JNumber 101), ("interrupted", JBool False)
       , ("failure", maybe JNull JString failure)
@@ -148,8 +148,8 @@ resultLine seed speed dist failure = encodeJSON $ JObject
 spec :: Spec
 spec = do
   describe "mergeResults" $ do
-    let sampleLines = [ resultLine 1 "0.1" 1 Nothing, resultLine 2 "0.1" 2 Nothing, resultLine 3 "0.1" 6 Nothing
-                 , resultLine 1 "0.2" 0.1 Nothing, resultLine 2 "0.2" 0.3 (Just "it broke") ]
+    let sampleLines = [ resultLine 1 [("speed", "0.1")] 1 Nothing, resultLine 2 [("speed", "0.1")] 2 Nothing, resultLine 3 [("speed", "0.1")] 6 Nothing
+                 , resultLine 1 [("speed", "0.2")] 0.1 Nothing, resultLine 2 [("speed", "0.2")] 0.3 (Just "it broke") ]
     it "gives per setting the mean, min and max of every outcome, and the failed runs" $ do
       table <- either (\e -> expectationFailure e >> pure "") pure (mergeResults (unlines sampleLines))
       lines table `shouldSatisfy` elem "== world=default speed=0.1  (3 runs, 0 failed)"
@@ -158,6 +158,16 @@ spec = do
       map words (lines table) `shouldSatisfy` elem ["score", "goals", "2.0000", "1.0000", "3.0000"]
       map words (lines table) `shouldSatisfy` elem ["SimbotA", "1", "distance", "0.2000", "0.1000", "0.3000"]
       table `shouldSatisfy` ("  FAILED seed 2: it broke" `isInfixOf`)
+    it "with two parameters varying, adds each value over all the values of the other" $ do
+      let two = [ resultLine i [("speed", v), ("k", k)] (fromIntegral i) Nothing
+                | (i, (v, k)) <- zip [1 ..] [("0.1", "a"), ("0.2", "b"), ("0.1", "b"), ("0.2", "a"), ("0.1", "a")] ]
+      table <- either (\e -> expectationFailure e >> pure "") pure (mergeResults (unlines two))
+      lines table `shouldSatisfy` elem "== world=default k=a speed=0.1  (2 runs, 0 failed)"
+      lines table `shouldSatisfy` elem "== k=a over all other settings  (3 runs, 0 failed)"
+      lines table `shouldSatisfy` elem "== k=b over all other settings  (2 runs, 0 failed)"
+      lines table `shouldSatisfy` elem "== speed=0.1 over all other settings  (3 runs, 0 failed)"
+      -- the world is the same in every run: no line for it
+      lines table `shouldSatisfy` all (not . ("== world=default over" `isPrefixOf`))
     it "does not depend on the order of the lines" $
       forAll (shuffle sampleLines) $ \ls -> mergeResults (unlines ls) == mergeResults (unlines sampleLines)
     it "reports a line that is not JSON with its number" $
