@@ -26,7 +26,7 @@
 -- @battery@ its charge left (1 = full). No wall-clock time is written, so
 -- two runs with the same flags write the same line.
 --
--- Parameters: the controllers of a program are built before 'runSim'
+-- Parameters: the controllers of a program are built before 'AFrobRobotSim.runSim'
 -- reads the command line, so a parameter is read in 'IO' first, from the
 -- same command line:
 --
@@ -60,7 +60,7 @@ import           AFrobRobotSim.Simulator
 
 -- | The @--param NAME=VALUE@ pairs of this program's command line, in the
 -- order given (a name given twice keeps its last value, in its first
--- place). A command line that does not parse gives @[]@; 'runSim' then
+-- place). A command line that does not parse gives @[]@; 'AFrobRobotSim.runSim' then
 -- reports the fault before anything is simulated.
 getSimParams :: IO [(String, String)]
 getSimParams = simParamsOf <$> getArgs
