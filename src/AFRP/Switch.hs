@@ -142,8 +142,13 @@ dSwitch (SF n0) k = SF (go n0)
               _ -> (# goFan f' g', b #)
           -- An event that is still a thunk (it may depend, through a
           -- loop, on the output of this very step) is left to 'resume',
-          -- as are the event occurrences.
-          | otherwise -> defer (fanN f' g') e dt a b
+          -- as are the event occurrences. While the event part stays
+          -- stateful, @fanN f' g'@ is @NFan f' g'@, which 'unwatched'
+          -- leaves watched, so 'resume' would step the two sides again
+          -- on 'NoEvent': 'resumeFan' does that without building the fan.
+          | otherwise -> case g' of
+              NPure _ -> defer (fanN f' g') e dt a b
+              _       -> (# NStep (resumeFan f' g' e dt a), b #)
     defer n' e dt a b = case n' of !m -> (# NStep (resume m e dt a), b #)
     -- Decoupled: whether the event @e@ occurred at the step that produced
     -- it is examined only at the next step (this is @deferN next@ with
@@ -152,6 +157,10 @@ dSwitch (SF n0) k = SF (go n0)
       NoEvent -> case unwatched n' of
         Just m  -> stepN m dt a
         Nothing -> step n' dt a
+      Event c -> case stepN (sfNode (k c)) dt0 a0 of (# m, _ #) -> stepN m dt a
+    -- 'resume' on @NFan f' g'@ with @g'@ stateful.
+    resumeFan f' g' e dt0 a0 dt a = case e of
+      NoEvent -> stepFan f' g' dt a
       Event c -> case stepN (sfNode (k c)) dt0 a0 of (# m, _ #) -> stepN m dt a
 
 -- Is the value, as it stands, the evaluated constructor 'NoEvent'? It is
@@ -192,8 +201,8 @@ rSwitch (SF n0) = SF (NStep (step n0))
     -- output is demanded, or at the start of the next step.
     step n dt ae =
       let r = case snd ae of
-            NoEvent      -> boxStep n dt (fst ae)
-            Event (SF m) -> boxStep m dt (fst ae)
+            NoEvent      -> case stepInline n dt (fst ae) of (# n', b #) -> Boxed n' b
+            Event (SF m) -> case stepInline m dt (fst ae) of (# m', b #) -> Boxed m' b
       in (# NStep (\dt' ae' -> case r of Boxed n' _ -> step n' dt' ae'), case r of Boxed _ b -> b #)
 
 -- | Delayed 'rSwitch': at an event instant the output is still the current

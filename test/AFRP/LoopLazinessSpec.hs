@@ -145,6 +145,8 @@ cases =
   , ("dAccumHold",       fed (fmap (+) . pos) (dAccumHold 0) id)
   , ("accumBy",          fed pos (accumBy (+) 0) ev)
   , ("accumHoldBy",      fed pos (accumHoldBy (+) 0) id)
+  , ("arr p >>> accumHold", arr (\(_, c) -> c) >>> (arr (fmap (+) . pos) >>> accumHold 0) >>> arr id)
+  , ("arr p >>> accumHoldBy", arr (\(_, c) -> c) >>> (arr pos >>> accumHoldBy (+) 0) >>> arr id)
   , ("dAccumHoldBy",     fed pos (dAccumHoldBy (+) 0) id)
   , ("accumFilter",      fed pos (accumFilter (\s x -> (s + x, if x > 2 then Just s else Nothing)) 0) ev)
   -- delays
