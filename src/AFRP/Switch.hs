@@ -195,15 +195,34 @@ unwatched n = case n of
 -- at the instant of the event (its first output is the output there). An
 -- event at time 0 replaces @sf@ before it produces any output.
 rSwitch :: SF a b -> SF (a, Event (SF a b)) b
-rSwitch (SF n0) = SF (NStep (step n0))
+rSwitch sf = SF (rSwitchFrom (\ae -> ae) sf)
+{-# NOINLINE [1] rSwitch #-}
+
+-- @rSwitchOn p sf = arr p >>> rSwitch sf@, in one node: @p@ is applied in
+-- the thunk of the step, instead of in a thunk of its own. The usual shape
+-- (the input and the event computed by one function) becomes this by the
+-- rewrite rules below wherever GHC sees it written.
+rSwitchOn :: (c -> (a, Event (SF a b))) -> SF a b -> SF c b
+rSwitchOn p sf = SF (rSwitchFrom p sf)
+
+{-# RULES
+"AFRP arr>>>rSwitch" forall p sf.
+  compSF (rSwitch sf) (arrSF p) = rSwitchOn p sf
+"AFRP arr>>>rSwitch>>>sf" forall p sf h.
+  compSF (compSF h (rSwitch sf)) (arrSF p) = compSF h (rSwitchOn p sf)
+  #-}
+
+rSwitchFrom :: (c -> (a, Event (SF a b))) -> SF a b -> Node c b
+rSwitchFrom p (SF n0) = NStep (step n0)
   where
     -- Lazy: the step (and so the look at the event) is performed when the
     -- output is demanded, or at the start of the next step.
-    step n dt ae =
-      let r = case snd ae of
-            NoEvent      -> case stepInline n dt (fst ae) of (# n', b #) -> Boxed n' b
-            Event (SF m) -> case stepInline m dt (fst ae) of (# m', b #) -> Boxed m' b
-      in (# NStep (\dt' ae' -> case r of Boxed n' _ -> step n' dt' ae'), case r of Boxed _ b -> b #)
+    step n dt c =
+      let r = case p c of
+            (a, NoEvent)      -> case stepInline n dt a of (# n', b #) -> Boxed n' b
+            (a, Event (SF m)) -> case stepInline m dt a of (# m', b #) -> Boxed m' b
+      in (# NStep (\dt' c' -> case r of Boxed n' _ -> step n' dt' c'), case r of Boxed _ b -> b #)
+{-# INLINE rSwitchFrom #-}
 
 -- | Delayed 'rSwitch': at an event instant the output is still the current
 -- signal function's; the new one starts at that instant and supplies the

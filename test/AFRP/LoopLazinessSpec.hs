@@ -171,6 +171,7 @@ cases =
   , ("switch on an edge", fed id (switch (identity &&& (arr (> 2) >>> edge)) (\() -> derivative)) id)
   , ("dSwitch",          fed id (dSwitch (identity &&& arr big) (\x -> constant x)) id)
   , ("rSwitch",          fed (\c -> (c, fmap (\x -> arr (* x)) (big c))) (rSwitch identity) id)
+  , ("arr p >>> rSwitch", arr (\(_, c) -> (c, fmap (\x -> arr (* x)) (big c))) >>> rSwitch identity >>> arr id)
   , ("drSwitch",         fed (\c -> (c, fmap (\x -> arr (* x)) (big c))) (drSwitch identity) id)
   , ("kSwitch",          fed id (kSwitch integral (arr (big . fst)) (\sf _ -> sf)) id)
   , ("dkSwitch",         fed id (dkSwitch integral (arr (big . fst)) (\sf _ -> sf)) id)
