@@ -97,6 +97,9 @@ accumBy :: (b -> a -> b) -> b -> SF (Event a) (Event b)
 accumBy f = accumFilter (\b a -> let b' = f b a in (b', Just b'))
 
 -- | @accumHoldBy f b0@: the accumulator of 'accumBy', held as a signal.
+-- Where @arr p >>> accumHoldBy f b0@ (or @accumHold@) is written in the
+-- source, a rewrite rule makes it one node that applies @p@ in the
+-- output's thunk, which means the same and allocates less.
 accumHoldBy :: (b -> a -> b) -> b -> SF (Event a) b
 accumHoldBy f b0 = SF (accumHoldFrom f (\e -> e) b0)
 {-# NOINLINE [1] accumHoldBy #-}

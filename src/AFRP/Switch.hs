@@ -194,6 +194,11 @@ unwatched n = case n of
 -- into the signal function carried by each event of the second component,
 -- at the instant of the event (its first output is the output there). An
 -- event at time 0 replaces @sf@ before it produces any output.
+--
+-- The step, and so the look at the event, is performed when the output is
+-- demanded, or at the next sample. Where @arr p >>> rSwitch sf@ is written
+-- in the source, a rewrite rule makes it one node that applies @p@ in that
+-- deferred step, which means the same and allocates less.
 rSwitch :: SF a b -> SF (a, Event (SF a b)) b
 rSwitch sf = SF (rSwitchFrom (\ae -> ae) sf)
 {-# NOINLINE [1] rSwitch #-}
