@@ -84,6 +84,7 @@ accum = accumBy (\a f -> f a)
 -- at the instant of each event.
 accumHold :: a -> SF (Event (a -> a)) a
 accumHold = accumHoldBy (\a f -> f a)
+{-# INLINE accumHold #-}
 
 -- | Delayed 'accumHold': the accumulated value excluding the current
 -- sample's event.
@@ -96,17 +97,40 @@ accumBy :: (b -> a -> b) -> b -> SF (Event a) (Event b)
 accumBy f = accumFilter (\b a -> let b' = f b a in (b', Just b'))
 
 -- | @accumHoldBy f b0@: the accumulator of 'accumBy', held as a signal.
+-- Where @arr p >>> accumHoldBy f b0@ (or @accumHold@) is written in the
+-- source, a rewrite rule makes it one node that applies @p@ in the
+-- output's thunk, which means the same and allocates less.
 accumHoldBy :: (b -> a -> b) -> b -> SF (Event a) b
-accumHoldBy f b0 = SF (go b0)
+accumHoldBy f b0 = SF (accumHoldFrom f (\e -> e) b0)
+{-# NOINLINE [1] accumHoldBy #-}
+
+-- @accumHoldByOn f p b0 = arr p >>> accumHoldBy f b0@, in one node: @p@
+-- is applied in the one thunk that both the output and the next step
+-- read, instead of in a thunk of its own. The idiom @arr (\e -> tag e g)
+-- >>> accumHold a0@ becomes this by the rewrite rules below wherever GHC
+-- sees it written.
+accumHoldByOn :: (b -> a -> b) -> (c -> Event a) -> b -> SF c b
+accumHoldByOn f p b0 = SF (accumHoldFrom f p b0)
+
+{-# RULES
+"AFRP arr>>>accumHoldBy" forall p f b0.
+  compSF (accumHoldBy f b0) (arrSF p) = accumHoldByOn f p b0
+"AFRP arr>>>accumHoldBy>>>sf" forall p f b0 h.
+  compSF (compSF h (accumHoldBy f b0)) (arrSF p) = compSF h (accumHoldByOn f p b0)
+  #-}
+
+-- The accumulator of @p@'s events. The output is the next state: kept
+-- unevaluated, and forced at the start of the next step (an event is
+-- folded in only then, or when the output is demanded).
+accumHoldFrom :: (b -> a -> b) -> (c -> Event a) -> b -> Node c b
+accumHoldFrom f p = go
   where
-    -- The output is the next state: kept unevaluated, and forced at the
-    -- start of the next step (an event is folded in only then, or when
-    -- the output is demanded).
-    go acc = NStep (\_ e -> case acc of
-      !b -> let out = case e of
+    go acc = NStep (\_ c -> case acc of
+      !b -> let out = case p c of
                   NoEvent -> b
                   Event a -> f b a
             in (# go out, out #))
+{-# INLINE accumHoldFrom #-}
 
 -- | Delayed 'accumHoldBy'.
 dAccumHoldBy :: (b -> a -> b) -> b -> SF (Event a) b

@@ -142,8 +142,13 @@ dSwitch (SF n0) k = SF (go n0)
               _ -> (# goFan f' g', b #)
           -- An event that is still a thunk (it may depend, through a
           -- loop, on the output of this very step) is left to 'resume',
-          -- as are the event occurrences.
-          | otherwise -> defer (fanN f' g') e dt a b
+          -- as are the event occurrences. While the event part stays
+          -- stateful, @fanN f' g'@ is @NFan f' g'@, which 'unwatched'
+          -- leaves watched, so 'resume' would step the two sides again
+          -- on 'NoEvent': 'resumeFan' does that without building the fan.
+          | otherwise -> case g' of
+              NPure _ -> defer (fanN f' g') e dt a b
+              _       -> (# NStep (resumeFan f' g' e dt a), b #)
     defer n' e dt a b = case n' of !m -> (# NStep (resume m e dt a), b #)
     -- Decoupled: whether the event @e@ occurred at the step that produced
     -- it is examined only at the next step (this is @deferN next@ with
@@ -152,6 +157,10 @@ dSwitch (SF n0) k = SF (go n0)
       NoEvent -> case unwatched n' of
         Just m  -> stepN m dt a
         Nothing -> step n' dt a
+      Event c -> case stepN (sfNode (k c)) dt0 a0 of (# m, _ #) -> stepN m dt a
+    -- 'resume' on @NFan f' g'@ with @g'@ stateful.
+    resumeFan f' g' e dt0 a0 dt a = case e of
+      NoEvent -> stepFan f' g' dt a
       Event c -> case stepN (sfNode (k c)) dt0 a0 of (# m, _ #) -> stepN m dt a
 
 -- Is the value, as it stands, the evaluated constructor 'NoEvent'? It is
@@ -185,16 +194,40 @@ unwatched n = case n of
 -- into the signal function carried by each event of the second component,
 -- at the instant of the event (its first output is the output there). An
 -- event at time 0 replaces @sf@ before it produces any output.
+--
+-- The step, and so the look at the event, is performed when the output is
+-- demanded, or at the next sample. Where @arr p >>> rSwitch sf@ is written
+-- in the source, a rewrite rule makes it one node that applies @p@ in that
+-- deferred step, which means the same and allocates less.
 rSwitch :: SF a b -> SF (a, Event (SF a b)) b
-rSwitch (SF n0) = SF (NStep (step n0))
+rSwitch sf = SF (rSwitchFrom (\ae -> ae) sf)
+{-# NOINLINE [1] rSwitch #-}
+
+-- @rSwitchOn p sf = arr p >>> rSwitch sf@, in one node: @p@ is applied in
+-- the thunk of the step, instead of in a thunk of its own. The usual shape
+-- (the input and the event computed by one function) becomes this by the
+-- rewrite rules below wherever GHC sees it written.
+rSwitchOn :: (c -> (a, Event (SF a b))) -> SF a b -> SF c b
+rSwitchOn p sf = SF (rSwitchFrom p sf)
+
+{-# RULES
+"AFRP arr>>>rSwitch" forall p sf.
+  compSF (rSwitch sf) (arrSF p) = rSwitchOn p sf
+"AFRP arr>>>rSwitch>>>sf" forall p sf h.
+  compSF (compSF h (rSwitch sf)) (arrSF p) = compSF h (rSwitchOn p sf)
+  #-}
+
+rSwitchFrom :: (c -> (a, Event (SF a b))) -> SF a b -> Node c b
+rSwitchFrom p (SF n0) = NStep (step n0)
   where
     -- Lazy: the step (and so the look at the event) is performed when the
     -- output is demanded, or at the start of the next step.
-    step n dt ae =
-      let r = case snd ae of
-            NoEvent      -> boxStep n dt (fst ae)
-            Event (SF m) -> boxStep m dt (fst ae)
-      in (# NStep (\dt' ae' -> case r of Boxed n' _ -> step n' dt' ae'), case r of Boxed _ b -> b #)
+    step n dt c =
+      let r = case p c of
+            (a, NoEvent)      -> case stepInline n dt a of (# n', b #) -> Boxed n' b
+            (a, Event (SF m)) -> case stepInline m dt a of (# m', b #) -> Boxed m' b
+      in (# NStep (\dt' c' -> case r of Boxed n' _ -> step n' dt' c'), case r of Boxed _ b -> b #)
+{-# INLINE rSwitchFrom #-}
 
 -- | Delayed 'rSwitch': at an event instant the output is still the current
 -- signal function's; the new one starts at that instant and supplies the

@@ -145,6 +145,8 @@ cases =
   , ("dAccumHold",       fed (fmap (+) . pos) (dAccumHold 0) id)
   , ("accumBy",          fed pos (accumBy (+) 0) ev)
   , ("accumHoldBy",      fed pos (accumHoldBy (+) 0) id)
+  , ("arr p >>> accumHold", arr (\(_, c) -> c) >>> (arr (fmap (+) . pos) >>> accumHold 0) >>> arr id)
+  , ("arr p >>> accumHoldBy", arr (\(_, c) -> c) >>> (arr pos >>> accumHoldBy (+) 0) >>> arr id)
   , ("dAccumHoldBy",     fed pos (dAccumHoldBy (+) 0) id)
   , ("accumFilter",      fed pos (accumFilter (\s x -> (s + x, if x > 2 then Just s else Nothing)) 0) ev)
   -- delays
@@ -169,6 +171,7 @@ cases =
   , ("switch on an edge", fed id (switch (identity &&& (arr (> 2) >>> edge)) (\() -> derivative)) id)
   , ("dSwitch",          fed id (dSwitch (identity &&& arr big) (\x -> constant x)) id)
   , ("rSwitch",          fed (\c -> (c, fmap (\x -> arr (* x)) (big c))) (rSwitch identity) id)
+  , ("arr p >>> rSwitch", arr (\(_, c) -> (c, fmap (\x -> arr (* x)) (big c))) >>> rSwitch identity >>> arr id)
   , ("drSwitch",         fed (\c -> (c, fmap (\x -> arr (* x)) (big c))) (drSwitch identity) id)
   , ("kSwitch",          fed id (kSwitch integral (arr (big . fst)) (\sf _ -> sf)) id)
   , ("dkSwitch",         fed id (dkSwitch integral (arr (big . fst)) (\sf _ -> sf)) id)
