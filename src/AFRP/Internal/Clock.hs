@@ -8,9 +8,15 @@
 -- 'AFRP.Delay.delay', ...) measures its local time as the sum of the time
 -- steps it has seen. A naive floating-point sum drifts: ten steps of 0.1
 -- add up to 0.9999999999999999, so an @after 1@ would fire one sample late.
--- We keep a Neumaier-compensated sum instead, which is exact to the last
--- bit for all practical step sequences (ten steps of 0.1 give exactly 1.0),
--- at the cost of two extra additions per step.
+-- We keep a Neumaier-compensated sum instead, at the cost of two extra
+-- additions per step. It is the exact sum of the steps as given, to within
+-- one unit in the last place (ten steps of 0.1 give exactly 1.0), which
+-- is not always the decimal number a person expects: the steps are binary
+-- fractions, so three steps of 0.1 read 0.30000000000000004, as
+-- @0.1 + 0.1 + 0.1@ does.
+-- What the library promises is one rule for every time-based combinator:
+-- an event due at time t happens at the first sample whose clock reads
+-- t or more.
 module AFRP.Internal.Clock
   ( Clock
   , clockZero
