@@ -52,6 +52,7 @@ module AFrobRobotSim.Log
   , module AFrobRobotSim.Log.Records
   ) where
 
+import           Control.Exception         (evaluate, uninterruptibleMask_)
 import           Data.IORef
 import           Data.List                 (stripPrefix)
 import           System.IO
@@ -257,10 +258,16 @@ writeLogState (LogWriter cfg h ref) s = do
   let (st', mf) = logStep cfg st s
   case mf of
     Just f  -> do
-      hPutStrLn h (encodeLogLine (LineFrame f)) >> hFlush h
+      line <- evaluate (forceString (encodeLogLine (LineFrame f)))
+      -- a whole line or none: Ctrl-C (an asynchronous exception) waits
+      -- for the line to be written, so an interrupted run's log reads back
       let k' = k + 1
-      k' `seq` writeIORef ref (st', k')
+      uninterruptibleMask_ (hPutStrLn h line >> hFlush h >> (k' `seq` writeIORef ref (st', k')))
     Nothing -> st' `seq` writeIORef ref (st', k)
+
+-- A string evaluated to its last character.
+forceString :: String -> String
+forceString str = length str `seq` str
 
 -- | How many frame lines the writer has written.
 logWriterFrames :: LogWriter -> IO Int

@@ -44,7 +44,7 @@ import           Data.IORef
 import           Data.List                 (foldl', intercalate)
 import           Data.Word                 (Word64)
 import           Numeric                   (showHex)
-import           Control.Exception         (IOException, catch, finally)
+import           Control.Exception         (IOException, catch, evaluate, finally, uninterruptibleMask_)
 import           Control.Monad             (unless)
 import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.IO
@@ -139,8 +139,10 @@ recordReplayState (ReplayRecorder cfg _ h ref) s = do
   case logStep cfg st s of
     (st', Just f)  -> do
       let line = encodeLogLine (LineFrame f)
-      BC.hPutStrLn h (BC.pack line)
-      writeIORef ref (Recording st' (n + 1) (fnv hash line))
+      !bytes <- evaluate (BC.pack line)
+      let !hash' = fnv hash line
+      -- a whole line or none, whatever the moment of a Ctrl-C
+      uninterruptibleMask_ (BC.hPutStrLn h bytes >> writeIORef ref (Recording st' (n + 1) hash'))
     (st', Nothing) -> writeIORef ref (Recording st' n hash)
 
 -- | Write the page of the run recorded so far, with its summary

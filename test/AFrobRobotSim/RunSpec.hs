@@ -125,8 +125,8 @@ spec = do
       filter (".tmp" `isInfixOf`) names `shouldBe` []
       frames <- framesIn (dir </> "f")
       all ((== 15 + 3 * 120 * 120) . BS.length) frames `shouldBe` True
-      Right l <- readLogFile (dir </> "run.jsonl")
-      fmap lsInterrupted (rlSummary l) `shouldBe` Just True
+      logRead <- readLogFile (dir </> "run.jsonl")
+      fmap (fmap lsInterrupted . rlSummary) logRead `shouldBe` Right (Just True)
       page <- readFile (dir </> "run.html")
       "<!DOCTYPE html>" `isPrefixOf` page `shouldBe` True
   describe "frames" $ do
