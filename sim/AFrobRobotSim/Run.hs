@@ -229,6 +229,12 @@ framesSink opts frameAt render countRef = do
         [] <$ (try (removeFile (frameTemp (optOut opts) k)) :: IO (Either IOException ()))
   pure (Sink step finish)
 
+-- The most frames a replay page holds (6 minutes at 25 frames a second,
+-- about 25 MB for the default world); a longer run's page thins its
+-- frames evenly to stay under it.
+replayMaxFrames :: Int
+replayMaxFrames = 9000
+
 -- The SVG: at most 'svgMaxPoints' + 1 snapshots, taken every @every@
 -- steps when a robot moved more than a pixel since the last one, and the
 -- last state; written at the end.
@@ -302,15 +308,19 @@ simulateRun prog opts world rcA rcB = do
                                   , lcFps = optFps opts, lcSeed = optSeed opts
                                   , lcCommandLine = prog : args }
       -- frame f is taken at the step nearest to simulated time f / fps
-      frameAt n = let f = fromIntegral n * dt * optFps opts
-                  in abs (f - fromIntegral (round f :: Int)) * 2 < dt * optFps opts
-                     || n == 0
+      -- (the same steps as the log's frames)
+      frameAt  = isFrameStep dt (optFps opts)
+      -- the replay page shows every frame period's state up to
+      -- 'replayMaxFrames' frames, and every k-th beyond (a page of a
+      -- long run stays a few tens of MB)
+      replayThin = max 1 (ceiling (optSeconds opts * optFps opts / fromIntegral replayMaxFrames)) :: Int
+      replayCfg  = logCfg { lcFps = optFps opts / fromIntegral replayThin }
       svgEvery = max 1 (nSteps `div` svgMaxPoints)
       states   = take (nSteps + 1) (simulateWith cfg world rcA rcB)
   mlog <- forM (optLog opts) $ \file -> do
     r <- try (openLogWriter logCfg file)
     either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ show e)) pure r
-  mrec <- forM (optReplay opts) (const (newReplayRecorder logCfg))
+  mrec <- forM (optReplay opts) (const (newReplayRecorder replayCfg))
   stepsRef  <- newIORef (0 :: Int)
   framesRef <- newIORef (0 :: Int)
   frames <- if optFrames opts then Just <$> framesSink opts frameAt (renderPPM style scene) framesRef
@@ -358,7 +368,9 @@ simulateRun prog opts world rcA rcB = do
   unless (optQuiet opts) $ do
     forM_ (optSvg opts) $ \file -> unless (any (show file `isInfixOf`) errs) (putStrLn ("wrote " ++ file))
     forM_ (optReplay opts) $ \file -> unless (any (show file `isInfixOf`) errs)
-      (putStrLn ("wrote " ++ file ++ " (open it in a browser)"))
+      (putStrLn ("wrote " ++ file ++ " (open it in a browser)"
+                 ++ (if replayThin > 1 then "; this long run's page keeps one frame period in " ++ show replayThin
+                                       else "")))
   hFlush stdout
   videoErrs <- case (ending, optVideo opts) of
     (Finished, Just file) | null errs -> makeVideo opts file

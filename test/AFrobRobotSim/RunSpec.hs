@@ -11,7 +11,7 @@ import           System.Process      (CreateProcess (..), StdStream (..), create
                                       proc, readCreateProcessWithExitCode, waitForProcess)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
-import           Data.List           (isInfixOf, isPrefixOf, sort)
+import           Data.List           (isInfixOf, isPrefixOf, sort, tails)
 import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
 import           System.Directory    (createDirectory, getTemporaryDirectory, listDirectory,
                                       removeDirectoryRecursive)
@@ -286,6 +286,17 @@ spec = do
       ("<!DOCTYPE html>" `isPrefixOf` page, "afrp-log" `isInfixOf` page) `shouldBe` (True, True)
       writeReplayFromLog (dir </> "run.jsonl") (dir </> "again.html") `shouldReturn` Right ()
       readFile (dir </> "again.html") `shouldReturn` page
+    it "a run longer than the page's 9000 frames keeps one frame period in k, evenly; the log keeps them all" $ withTempDir $ \dir -> do
+      -- 400 s at 25 frames a second: 10,001 frame periods, so one in 2
+      (out, _, r) <- captured (runSimWith (quick dir) { optSeconds = 400, optDt = 0.04, optFrames = False, optQuiet = False
+                                                    , optLog = Just (dir </> "run.jsonl")
+                                                    , optReplay = Just (dir </> "run.html") } (Just world) drive drive)
+      r `shouldBe` Right ()
+      Right l <- readLogFile (dir </> "run.jsonl")
+      length (rlFrames l) `shouldBe` 10001
+      page <- readFile (dir </> "run.html")
+      occurrences "\"kind\":\"frame\"" page `shouldBe` 5001
+      out `shouldSatisfy` ("keeps one frame period in 2" `isInfixOf`)
     it "a controller's failure closes the log with the failure and still writes the page" $ withTempDir $ \dir -> do
       let bad _ = localTime >>> arr (\t -> mrFinalize (tcoPrintMessage
                     (if t >= 0.5 then merge (Event "a") (Event "b") else NoEvent)))
@@ -313,3 +324,7 @@ spec = do
     ppmAt bytes px py =
       let off = length "P6\n620 620\n255\n" + 3 * (py * 620 + px)
       in if off + 2 < BS.length bytes then Just (BS.index bytes off, BS.index bytes (off + 1), BS.index bytes (off + 2)) else Nothing
+
+-- How many times a text occurs in another.
+occurrences :: String -> String -> Int
+occurrences needle hay = length (filter (needle `isPrefixOf`) (tails hay))
