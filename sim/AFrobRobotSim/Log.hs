@@ -52,7 +52,7 @@ module AFrobRobotSim.Log
   , module AFrobRobotSim.Log.Records
   ) where
 
-import           Control.Exception         (evaluate, uninterruptibleMask_)
+import           Control.Exception         (IOException, evaluate, try, uninterruptibleMask_)
 import           Data.IORef
 import           Data.List                 (stripPrefix)
 import           System.IO
@@ -319,10 +319,17 @@ readLog txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all 
         (j, _) : _   -> Left ("line " ++ show j ++ ": a line after the summary")
       LineHeader _  -> Left ("line " ++ show i ++ ": a second header")
 
--- | 'readLog' of a file (read as UTF-8), the error prefixed with its name.
+-- | 'readLog' of a file (read as UTF-8), the error prefixed with its name;
+-- a file that cannot be opened is a 'Left' too.
 readLogFile :: FilePath -> IO (Either String RunLog)
 readLogFile path = do
-  h <- openFile path ReadMode
+  opened <- try (openFile path ReadMode)
+  case opened of
+    Left e  -> pure (Left (path ++ ": " ++ show (e :: IOException)))
+    Right h -> readLogHandle path h
+
+readLogHandle :: FilePath -> Handle -> IO (Either String RunLog)
+readLogHandle path h = do
   hSetEncoding h utf8
   txt <- hGetContents h
   let r = either (\e -> Left (path ++ ": " ++ e)) Right (readLog txt)

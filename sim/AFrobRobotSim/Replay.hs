@@ -44,7 +44,7 @@ import           Data.IORef
 import           Data.List                 (foldl', intercalate)
 import           Data.Word                 (Word64)
 import           Numeric                   (showHex)
-import           Control.Exception         (IOException, catch, evaluate, finally, uninterruptibleMask_)
+import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
 import           Control.Monad             (unless)
 import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.IO
@@ -103,13 +103,15 @@ fnvBasis = 14695981039346656037
 
 -- | Read a log file and write its page: what @simbot --replay-from
 -- FILE.jsonl --replay OUT.html@ does. A log that does not read is a
--- 'Left' with the reader's message (nothing is written then).
+-- 'Left' with the reader's message (nothing is written then); a page that
+-- cannot be written is a 'Left' naming it.
 writeReplayFromLog :: FilePath -> FilePath -> IO (Either String ())
 writeReplayFromLog logPath out = do
   r <- readLogFile logPath
   case r of
     Left e  -> pure (Left e)
-    Right l -> Right <$> writeAscii out (replayPage l)
+    Right l -> either (\e -> Left (out ++ ": " ++ show (e :: IOException))) Right
+                 <$> try (writeAscii out (replayPage l))
 
 -- | A page being recorded as a run goes. Each frame's line is encoded at
 -- once and appended to a temporary file (in the system's temporary

@@ -320,7 +320,9 @@ simulateRun prog opts world rcA rcB = do
   mlog <- forM (optLog opts) $ \file -> do
     r <- try (openLogWriter logCfg file)
     either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ show e)) pure r
-  mrec <- forM (optReplay opts) (const (newReplayRecorder replayCfg))
+  mrec <- forM (optReplay opts) $ \file -> do
+    r <- try (newReplayRecorder replayCfg)
+    either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ show e)) pure r
   stepsRef  <- newIORef (0 :: Int)
   framesRef <- newIORef (0 :: Int)
   frames <- if optFrames opts then Just <$> framesSink opts frameAt (renderPPM style scene) framesRef

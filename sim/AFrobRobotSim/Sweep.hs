@@ -19,6 +19,7 @@ module AFrobRobotSim.Sweep
   , sweepMergeMain
   ) where
 
+import           Control.Exception   (IOException, try)
 import           Data.Either         (partitionEithers)
 import           Data.List           (nub, sort, sortOn)
 import           Data.Maybe          (fromMaybe)
@@ -119,10 +120,14 @@ table heading mine =
 sweepMergeMain :: IO ()
 sweepMergeMain = do
   args <- getArgs
-  texts <- if null args then (: []) <$> getContents else mapM readFile args
+  texts <- if null args then (: []) <$> getContents else mapM readOrExit args
   let (errs, tables) = partitionEithers [ mergeResults (concatMap ensureNewline texts) ]
   mapM_ putStr tables
   mapM_ (hPutStrLn stderr . ("afrp-sweep-merge: " ++)) errs
   if null errs then pure () else exitWith (ExitFailure 1)
   where
     ensureNewline t = if null t || last t == '\n' then t else t ++ "\n"
+    readOrExit f = try (readFile f) >>= either (cannotRead f) pure
+    cannotRead f e = do
+      hPutStrLn stderr ("afrp-sweep-merge: " ++ f ++ ": " ++ show (e :: IOException))
+      exitWith (ExitFailure 2)

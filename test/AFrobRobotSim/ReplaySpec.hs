@@ -105,3 +105,15 @@ spec = do
       r <- writeReplayFromLog logPath (logPath ++ ".html")
       removeFile logPath
       r `shouldSatisfy` either ("line 1" `isInfixOf`) (const False)
+    it "reports a log that does not exist and a page that cannot be written as Left, naming the file (fixed)" $ do
+      tmp <- getTemporaryDirectory
+      let missing = tmp ++ "/afrp-no-such-log.jsonl"
+      r1 <- writeReplayFromLog missing (missing ++ ".html")
+      r1 `shouldSatisfy` either (missing `isInfixOf`) (const False)
+      (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      writeFile logPath fixtureLogText
+      let out = tmp ++ "/afrp-no-such-folder/page.html"
+      r2 <- writeReplayFromLog logPath out
+      removeFile logPath
+      r2 `shouldSatisfy` either (out `isInfixOf`) (const False)

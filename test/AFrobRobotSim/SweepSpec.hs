@@ -107,10 +107,15 @@ requireParallel = do
 -- with its messages unless it succeeds; its standard output.
 runScript :: [(String, String)] -> FilePath -> [String] -> IO String
 runScript extraEnv file args = do
-  environment <- filter ((`notElem` map fst extraEnv) . fst) <$> getEnvironment
-  (code, out, err) <- readCreateProcessWithExitCode (proc "bash" (file : args)) { env = Just (extraEnv ++ environment) } ""
+  (code, out, err) <- runScriptCode extraEnv file args
   unless (code == ExitSuccess) (expectationFailure (file ++ " " ++ unwords args ++ " failed: " ++ show code ++ "\n" ++ err))
   pure out
+
+-- A script's exit code, standard output and error, whatever the code.
+runScriptCode :: [(String, String)] -> FilePath -> [String] -> IO (ExitCode, String, String)
+runScriptCode extraEnv file args = do
+  environment <- filter ((`notElem` map fst extraEnv) . fst) <$> getEnvironment
+  readCreateProcessWithExitCode (proc "bash" (file : args)) { env = Just (extraEnv ++ environment) } ""
 
 -- The merged table of result files, by scripts/sweep-merge.
 merged :: FilePath -> [FilePath] -> IO String
@@ -277,7 +282,8 @@ spec = do
         [ "# seed 2 throws, seed 3 has a flag the program rejects"
         , "--seed 1 --param speed=1", "--seed 2 --param speed=1 --param failAt=0.5", ""
         , "--seed 3 --param speed=1 --no-such-flag" ])
-      _ <- runScript [] sweep ["--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "2"]
+      (code, _, err) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "2"]
+      (code, "3 runs, 2 failed" `isInfixOf` err) `shouldBe` (ExitFailure 1, True)
       table <- merged dir [dir </> "r.jsonl"]
       table `shouldSatisfy` ("speed=1  (2 runs, 1 failed)" `isInfixOf`)
       table `shouldSatisfy` ("failAt=0.5 speed=1  (1 runs, 1 failed)" `isInfixOf`)
