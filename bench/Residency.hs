@@ -46,6 +46,11 @@ loopNetworks =
                        >>> arr sum)
   , ("loopPre",      loopPre 0 (arr (\(c, s) -> (s, 0.5 * s + c))))
   , ("loopIntegral", loopIntegral (arr (\(c, x) -> (x, sin c - x))))
+  , ("sscan",        sscan (\b c -> 0.5 * b + c) 0)
+  , ("sscanPrim",    sscanPrim (\s c -> if sin c > 0 then Just (0.5 * s + c, s) else Nothing) 0 0)
+  , ("iterFrom",     iterFrom (\a a' h v -> 0.5 * v + h * (a + a') / 2) 0)
+  , ("pause",        pause 0 (arr (\c -> sin c > 0)) integral)
+  , ("parC",         arr (\c -> [c, c]) >>> parC integral >>> arr sum)
   ]
   where
     evU = event 0 (const 1)

@@ -33,7 +33,8 @@ done
 # main; see bench/README.md) and are run here with their output used only.
 for key in edge iEdge edgeJust edgeBy once takeEvents hold accumHold accumBy delayEvent \
            integral imIntegral trapezoid derivative switch rSwitch kSwitch left parZ \
-           pSwitchB rpSwitchB loopIntegral delay sampleWindow loopPre; do
+           pSwitchB rpSwitchB loopIntegral sscan sscanPrim iterFrom pause parC \
+           delay sampleWindow loopPre; do
   case $key in
     delay|sampleWindow|loopPre) variants="$key+" ;;
     *)                          variants="$key $key+" ;;

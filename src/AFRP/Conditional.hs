@@ -44,12 +44,13 @@ provided p sfT sfF =
 -- yet), and the time that passes is not seen by @sf@ (as in Yampa, it
 -- resumes with only the time step of the sample that resumes it). If @cond@
 -- is 'True' at local time 0, @sf@ starts at the first sample where it is
--- 'False'.
+-- 'False'. Each step waits until its output is demanded (or the next step
+-- starts), so @pause@ does not evaluate its input early inside 'loop'.
 --
 -- > embed (pause 0 (arr id) localTime) (False, map ((,) 1 . Just) [False, True, True, False])
 -- >   ==  [0, 1, 1, 1, 2]
 pause :: b -> SF a Bool -> SF a b -> SF a b
-pause b0 (SF cond0) (SF sf0) = SF (go cond0 sf0 b0)
+pause b0 (SF cond0) (SF sf0) = SF (lazyN (go cond0 sf0 b0))
   where
     go cond sf b = NStep (\dt a -> case stepN cond dt a of
       (# cond', paused #)

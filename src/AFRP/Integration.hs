@@ -176,4 +176,7 @@ derivative = SF (initN (\a0 -> (# go a0, zeroVector #)))
 iterFrom :: (a -> a -> DTime -> b -> b) -> b -> SF a b
 iterFrom f b0 = SF (initN (\a0 -> (# go a0 b0, b0 #)))
   where
-    go aPrev b = NStep (\dt a -> let b' = f aPrev a dt b in (# go a b', b' #))
+    -- the previous output is evaluated at the start of the next step (the
+    -- input is never evaluated here): no chain of thunks, however long
+    go aPrev b = NStep (\dt a -> case b of
+      !bv -> let b' = f aPrev a dt bv in (# go a b', b' #))

@@ -125,11 +125,12 @@ parZ = parWith stepColL (zipRoute "parZ")
 -- | @parC sf@ runs one copy of @sf@ per element of its input list, the i-th
 -- on the i-th element. The number of copies is the length of the input
 -- list at local time 0; later a shorter list is an error (as for 'parZ'),
--- extra elements are ignored.
+-- extra elements are ignored. The input list is looked at only when the
+-- output is demanded (or at the next sample), as for every collection.
 --
 -- > embed (parC localTime) ("ab", [(1, Just "cd")])  ==  [[0, 0], [1, 1]]
 parC :: SF a b -> SF [a] [b]
-parC sf = SF (initN (\as0 -> stepN (sfNode (parZ (map (const sf) as0))) 0 as0))
+parC sf = SF (lazyN (initN (\as0 -> stepN (sfNode (parZ (map (const sf) as0))) 0 as0)))
 
 parN' :: Stepper col -> (forall sf. a -> col sf -> col (b, sf)) -> col (Node b c) -> Node a (col c)
 parN' stepper rf = go

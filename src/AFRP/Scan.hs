@@ -20,16 +20,21 @@ import           AFRP.Internal.SF
 --
 -- > embed (sscan (+) 10) (1, [(1, Just 2), (1, Just 3)])  ==  [11, 13, 16]
 sscan :: (b -> a -> b) -> b -> SF a b
-sscan f b0 = sscanPrim (\b a -> let b' = f b a in Just (b', b')) b0 b0
+sscan f b0 = SF (mealyN (\b a -> let b' = f b a in (b', b')) b0)
 
 -- | @sscanPrim f c0 b0@ is a scan with a hidden accumulator @c@ and a held
 -- output: at each sample, the first (local time 0) included, @f c a@ either
 -- gives @Just (c', b')@, and then @b'@ is output and @c'@ is the new
 -- accumulator, or @Nothing@, and then the accumulator is kept and the last
--- output is repeated (@b0@ if @f@ has never given @Just@).
+-- output is repeated (@b0@ if @f@ has never given @Just@). Like every
+-- stateful signal function here it does not evaluate its input before its
+-- output is demanded; the accumulator is evaluated at the start of the
+-- next sample, so it never builds up a chain of thunks.
 sscanPrim :: (c -> a -> Maybe (c, b)) -> c -> b -> SF a b
 sscanPrim f c0 b0 = SF (mealyN step (c0, b0))
   where
     step s@(c, b) a = case f c a of
       Nothing       -> (s, b)
-      Just (c', b') -> ((c', b'), b')
+      -- the state's pair is built only once c' is evaluated: 'mealyN'
+      -- forces the state, and so c', at the next step
+      Just (c', b') -> (c' `seq` (c', b'), b')

@@ -198,6 +198,15 @@ cases =
   , ("loopIntegral",     fed id (loopIntegral (arr (\(c, x) -> (x, c - x)))) id)
   -- tasks
   , ("runTask_",         fed id (runTask_ (mkTask (identity &&& arr big) >>= \x -> constT x)) id)
+  -- Yampa's names
+  , ("sscan",            fed id (sscan (+) 0) id)
+  , ("sscanPrim",        fed id (sscanPrim (\c a -> if a > 2 then Just (c + a, c) else Nothing) 0 0) id)
+  , ("iterFrom",         fed id (iterFrom (\a a' h v -> v + h * (a + a') / 2) 0) id)
+  , ("provided",         fed id (provided (> 0) integral derivative) id)
+  , ("recur",            fed id (recur (arr big >>> notYet)) ev)
+  , ("andThen",          fed id ((arr big >>> once) `andThen` (arr pos >>> once)) ev)
+  , ("pause",            fed id (pause 0 (arr (> 2)) integral) id)
+  , ("parC",             fed twice (parC integral) sum)
   ]
   where
     evU' = event 0 id
