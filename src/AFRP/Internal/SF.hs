@@ -109,12 +109,32 @@ loopK :: Node c d -> Node (a, d) (b, c) -> Node a b
 loopK d f = NStep (\dt a ->
   let r = case stepN d dt c of
         (# d', y #) -> case stepN f dt (a, y) of
-          (# f', bc #) -> Loop d' f' bc
-      c = case r of Loop _ _ (_, c') -> c'
-  in case r of Loop d' f' bc -> case loopN2 d' f' of !m -> (# m, fst bc #))
+          (# f', out #) -> Loop d' f' out
+      bc = loopOut r
+      c  = loopFed bc
+  in case r of Loop d' f' _ -> case loopN2 d' f' of !m -> (# m, fst bc #))
 
 -- The result of a loop's step, in a box (the knot needs a lifted value).
 data Loop c d a b x = Loop !(Node c d) !(Node (a, d) x) x
+
+-- The fed-back value is taken in two steps: @bc = loopOut r@, the pair @f@
+-- produced, then @c = loopFed bc@. The loop's output is @fst bc@, so when
+-- it is demanded @bc@ is evaluated and overwritten by that pair, and from
+-- then on the fed-back value refers to the pair alone. Taken from the step
+-- in one pattern, @case r of Loop _ _ (_, c') -> c'@, it referred to the
+-- whole step, successor nodes included, for as long as it stayed
+-- unevaluated: a delay whose output nobody reads stores its input
+-- unevaluated, so each stored value kept the step before it, and that
+-- step the value stored before, and so on (307 MB at 10^6 samples for
+-- @delay@, tested by "AFRP.LoopResidencySpec"). Both are NOINLINE: inlined,
+-- GHC merges the two selections back into one pattern on the step.
+loopOut :: Loop c d a b x -> x
+loopOut (Loop _ _ x) = x
+{-# NOINLINE loopOut #-}
+
+loopFed :: (b, c) -> c
+loopFed (_, c) = c
+{-# NOINLINE loopFed #-}
 
 ------------------------------------------------------------------------------
 -- Introspection
