@@ -54,7 +54,7 @@ module AFRP.Test.LTL
   , tPredMap
   ) where
 
-import           AFRP             (DTime, SF, arr, iPre, loopPre, (&&&), (>>>))
+import           AFRP             (DTime, SF, arr, iPre, sscan, (&&&), (>>>))
 
 import           AFRP.Test.Stream
 
@@ -168,7 +168,7 @@ truths ending m p0 s = go p0
     -- complete, otherwise the samples beyond decide (unknown while the
     -- stream is open; at the end of a closed stream the value given).
     windowed d vs combine unit =
-      [ let elapsed = sampleTimes (restartAt suffix)
+      [ let elapsed = sampleTimes (sClipBeforeFrame 0 suffix)  -- times from the suffix's start
             (inWindow, after') = span ((<= d + slack) . fst) (zip elapsed vsFrom)
             slack = 1e-9 * max 1e-3 (abs d)
             end | not (null after') = unit
@@ -177,8 +177,6 @@ truths ending m p0 s = go p0
                     Open   -> U
         in foldr (combine . snd) end inWindow
       | (suffix, vsFrom) <- zip (suffixes (take m s)) (suffixes vs) ]
-    restartAt []            = []
-    restartAt ((_, a) : ss) = (0, a) : ss
 
 suffixes :: [x] -> [[x]]
 suffixes [] = []
@@ -253,8 +251,7 @@ hasEverBeen p = p >>> everSF
 -- included), and @p@ at every sample after the latest such one (this one
 -- included). At time 0: @q@ holds.
 since :: SF a Bool -> SF a Bool -> SF a Bool
-since p q = (p &&& q) >>> loopPre False (arr step)
-  where step ((vp, vq), before) = let now' = vq || (vp && before) in (now', now')
+since p q = (p &&& q) >>> sscan (\before (vp, vq) -> vq || (vp && before)) False
 
 -- | Conjunction of two boolean signals, sample by sample.
 andSF :: SF (Bool, Bool) Bool
@@ -275,11 +272,11 @@ impliesSF = arr (\(a, b) -> not a || b)
 -- | True while the input has been true at every sample so far (this one
 -- included); false from the first false input on.
 sofarSF :: SF Bool Bool
-sofarSF = loopPre True (arr (\(v, acc) -> let acc' = v && acc in (acc', acc')))
+sofarSF = sscan (&&) True
 
 -- | True from the first true input on (this one included).
 everSF :: SF Bool Bool
-everSF = loopPre False (arr (\(v, acc) -> let acc' = v || acc in (acc', acc')))
+everSF = sscan (||) False
 
 -- | The input at the previous sample; false at time 0.
 lastSF :: SF Bool Bool
@@ -290,14 +287,13 @@ lastSF = iPre False
 -- so far was true (at time 0: while nothing was false yet), it is instead
 -- whether @u@ has held at every sample since that one (this one included).
 untilSF :: SF (Bool, Bool) Bool
-untilSF = loopPre (True, False) (arr step)
+untilSF = sscan step (True, False) >>> arr fst
   where
-    -- The state: the previous output, and whether the switch to @u@ has
-    -- happened.
-    step ((i, u), (prev, switched))
-      | switched  = let out = u && prev in (out, (out, True))
-      | prev && u = (True, (True, True))
-      | otherwise = let out = prev && i in (out, (out, False))
+    -- The state: the output, and whether the switch to @u@ has happened.
+    step (prev, switched) (i, u)
+      | switched  = (u && prev, True)
+      | prev && u = (True, True)
+      | otherwise = (prev && i, False)
 
 -- | Apply a function to every atom of a predicate, keeping its shape and
 -- time bounds.

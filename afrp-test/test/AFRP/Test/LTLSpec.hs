@@ -116,6 +116,11 @@ spec = do
       run (hasEverBeen (arr (== 3))) `shouldBe` map (>= 3) [0 .. 9 :: Int]
     it "since: q at some sample, p at every one after it" $
       run (since (arr (< 6)) (arr (== 2))) `shouldBe` map (\x -> x >= 2 && x < 6) [0 .. 9 :: Int]
+    it "untilSF: i until u holds, then u at every sample since" $ do
+      run (arr (\x -> (x < 5, x >= 3 && x /= 6)) >>> untilSF)
+        `shouldBe` map (< 6) [0 .. 9 :: Int]
+      run (arr (\x -> (x < 2, x == 4)) >>> untilSF)
+        `shouldBe` map (< 2) [0 .. 9 :: Int]
   describe "explainT (fixed)" $ do
     it "is Nothing when the predicate holds" $
       fmap explFrame (explainT (Always (is (< 10))) count) `shouldBe` Nothing
