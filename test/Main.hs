@@ -14,13 +14,13 @@ import qualified AFRP.IntegrationSpec
 import qualified AFRP.LawsSpec
 import qualified AFRP.LoopSpec
 import qualified AFRP.LoopLazinessSpec
-import qualified AFRP.LoopResidencySpec
 import qualified AFRP.NoiseSpec
 import qualified AFRP.NotesSpec
 import qualified AFRP.OptimiserSpec
 import qualified AFRP.ParallelFunctorSpec
 import qualified AFRP.ParallelSpec
 import qualified AFRP.ReferenceSpec
+import qualified AFRP.ResidencySpec
 import qualified AFRP.RunSpec
 import qualified AFRP.ScanSpec
 import qualified AFRP.SwitchSpec
@@ -65,7 +65,7 @@ import           System.Environment (lookupEnv)
 main :: IO ()
 main = lookupEnv AFrobRobotSim.SweepSpec.childVariable >>= maybe runChild AFrobRobotSim.SweepSpec.child
   where runChild = lookupEnv AFrobRobotSim.RunSpec.childVariable >>= maybe loopChild AFrobRobotSim.RunSpec.child
-        loopChild = lookupEnv AFRP.LoopResidencySpec.childVariable >>= maybe specs AFRP.LoopResidencySpec.child
+        loopChild = lookupEnv AFRP.ResidencySpec.childVariable >>= maybe specs AFRP.ResidencySpec.child
 
 specs :: IO ()
 specs = hspec $ do
@@ -78,7 +78,7 @@ specs = hspec $ do
   describe "AFRP.Integration" AFRP.IntegrationSpec.spec
   describe "AFRP.Loop"        AFRP.LoopSpec.spec
   describe "AFRP.Loop laziness" AFRP.LoopLazinessSpec.spec
-  describe "AFRP.Loop residency" AFRP.LoopResidencySpec.spec
+  describe "AFRP residency" AFRP.ResidencySpec.spec
   describe "AFRP.Switch"      AFRP.SwitchSpec.spec
   describe "AFRP.Parallel"    AFRP.ParallelSpec.spec
   describe "AFRP.Parallel"    AFRP.ParallelFunctorSpec.spec

@@ -80,20 +80,31 @@ import           AFRP.Internal.SF
 -- Implementation note
 --
 -- Every combinator below is written once, over a /stepper/: the function
--- that steps a routed collection, evaluating every member's successor and
--- returning the successors and the (lazy) outputs in the collection's
--- shape. 'stepColF' works for any 'Functor'; 'stepColL' is the same
--- function on lists, done in one strict pass with no intermediate
--- collections, every successor evaluated. The public combinators use
--- 'stepColF'; at lists, rewrite rules (see the end of the module) replace
--- them by the same combinator over 'stepColL', which computes the same
--- collections (more evaluated):
+-- that steps a routed collection, returning the successors and the (lazy)
+-- outputs in the collection's shape. 'stepColF' works for any 'Functor'
+-- (each member stepped when first demanded: a Functor cannot be walked);
+-- 'stepColL' is the same function on lists, done in one strict pass with
+-- no intermediate collections, every successor evaluated; 'stepColT' the
+-- same on a 'Traversable' (used at 'Map.Map', 'IntMap.IntMap' and
+-- 'Seq.Seq'). The public combinators take their stepper from
+-- 'stepperFor', which is 'stepColF', and which rewrite rules (at the end
+-- of the module) replace wherever the collection's type is one of those
+-- four: the combinators are inlined, so the rule sees the type at the
+-- user's call. Each strict stepper computes the same collections as
+-- 'stepColF', more evaluated:
 --
 -- > stepColL dt routed  ==  stepColF dt routed        (routed :: [(b, Node b c)])
+-- > stepColT dt routed  ==  stepColF dt routed        (any Traversable)
 --
--- and 'parB' on a list, which needs no routing at all, by 'parBL':
+-- and 'parB' on a list, which needs no routing at all, is replaced by
+-- 'parBL':
 --
 -- > parBL sfs  ==  par broadcast sfs                  (sfs :: [SF a b])
+--
+-- Rules fire only where GHC optimises (not at -O0, not in GHCi) and only
+-- where the type is known at the call (not in code generic over the
+-- collection); elsewhere the combinators step on demand, as for any other
+-- Functor.
 
 -- | Steps a routed collection: successors (evaluated) and outputs (lazy).
 type Stepper col = forall b c. DTime -> col (b, Node b c) -> (# col (Node b c), col c #)
@@ -102,8 +113,8 @@ type Stepper col = forall b c. DTime -> col (b, Node b c) -> (# col (Node b c), 
 -- gives each member its input sample. The output is the collection of the
 -- members' outputs, in the same shape.
 par :: Functor col => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c) -> SF a (col c)
-par = parWith stepColF
-{-# NOINLINE [1] par #-}
+par = parWith stepperFor
+{-# INLINE par #-}
 
 parWith :: Functor col => Stepper col -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c) -> SF a (col c)
 parWith stepper rf sfs = SF (lazyN (parN' stepper rf (fmap sfNode sfs)))
@@ -113,8 +124,8 @@ parWith stepper rf sfs = SF (lazyN (parN' stepper rf (fmap sfNode sfs)))
 --
 -- > embed (parB [constant 1, localTime]) ((), [(0.5, Nothing)])  ==  [[1, 0], [1, 0.5]]
 parB :: Functor col => col (SF a b) -> SF a (col b)
-parB = par broadcast
-{-# NOINLINE [1] parB #-}
+parB = parWith stepperFor broadcast
+{-# INLINE [1] parB #-}
 
 -- | @parZ sfs@ runs the i-th member on the i-th element of the input list.
 -- An input list shorter than @sfs@ is an error (raised when that sample is
@@ -242,8 +253,8 @@ bankSize sums = quotInt# (sizeofByteArray# sums) 8#
 pSwitch :: Functor col
         => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
         -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-pSwitch = pSwitchWith stepColF
-{-# NOINLINE [1] pSwitch #-}
+pSwitch = pSwitchWith stepperFor
+{-# INLINE pSwitch #-}
 
 pSwitchWith :: Functor col => Stepper col
             -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
@@ -261,8 +272,8 @@ pSwitchWith stepper rf sfs (SF e0) k = SF (lazyN (go (fmap sfNode sfs) e0))
 dpSwitch :: Functor col
          => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
          -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-dpSwitch = dpSwitchWith stepColF
-{-# NOINLINE [1] dpSwitch #-}
+dpSwitch = dpSwitchWith stepperFor
+{-# INLINE dpSwitch #-}
 
 dpSwitchWith :: Functor col => Stepper col
              -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
@@ -283,15 +294,15 @@ dpSwitchWith stepper rf sfs (SF e0) k = SF (lazyN (go (fmap sfNode sfs) e0))
 pSwitchB :: Functor col
          => col (SF a b) -> SF (a, col b) (Event c) -> (col (SF a b) -> c -> SF a (col b))
          -> SF a (col b)
-pSwitchB = pSwitch broadcast
-{-# NOINLINE [1] pSwitchB #-}
+pSwitchB = pSwitchWith stepperFor broadcast
+{-# INLINE pSwitchB #-}
 
 -- | 'dpSwitch' with the input broadcast to every member.
 dpSwitchB :: Functor col
           => col (SF a b) -> SF (a, col b) (Event c) -> (col (SF a b) -> c -> SF a (col b))
           -> SF a (col b)
-dpSwitchB = dpSwitch broadcast
-{-# NOINLINE [1] dpSwitchB #-}
+dpSwitchB = dpSwitchWith stepperFor broadcast
+{-# INLINE dpSwitchB #-}
 
 -- | 'pSwitch' with zipped inputs (as 'parZ').
 pSwitchZ :: [SF a b] -> SF ([a], [b]) (Event c) -> ([SF a b] -> c -> SF [a] [b]) -> SF [a] [b]
@@ -311,8 +322,8 @@ dpSwitchZ = dpSwitchWith stepColL (zipRoute "dpSwitchZ")
 rpSwitch :: Functor col
          => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
          -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
-rpSwitch = rpSwitchWith stepColF
-{-# NOINLINE [1] rpSwitch #-}
+rpSwitch = rpSwitchWith stepperFor
+{-# INLINE rpSwitch #-}
 
 rpSwitchWith :: Functor col => Stepper col
              -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
@@ -329,8 +340,8 @@ rpSwitchWith stepper rf sfs = SF (lazyN (go (fmap sfNode sfs)))
 drpSwitch :: Functor col
           => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
           -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)
-drpSwitch = drpSwitchWith stepColF
-{-# NOINLINE [1] drpSwitch #-}
+drpSwitch = drpSwitchWith stepperFor
+{-# INLINE drpSwitch #-}
 
 drpSwitchWith :: Functor col => Stepper col
               -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
@@ -349,14 +360,14 @@ drpSwitchWith stepper rf sfs = SF (lazyN (go (fmap sfNode sfs)))
 -- | 'rpSwitch' with the input broadcast to every member.
 rpSwitchB :: Functor col
           => col (SF a b) -> SF (a, Event (col (SF a b) -> col (SF a b))) (col b)
-rpSwitchB = rpSwitch broadcast
-{-# NOINLINE [1] rpSwitchB #-}
+rpSwitchB = rpSwitchWith stepperFor broadcast
+{-# INLINE rpSwitchB #-}
 
 -- | 'drpSwitch' with the input broadcast to every member.
 drpSwitchB :: Functor col
            => col (SF a b) -> SF (a, Event (col (SF a b) -> col (SF a b))) (col b)
-drpSwitchB = drpSwitch broadcast
-{-# NOINLINE [1] drpSwitchB #-}
+drpSwitchB = drpSwitchWith stepperFor broadcast
+{-# INLINE drpSwitchB #-}
 
 -- | 'rpSwitch' with zipped inputs (as 'parZ').
 rpSwitchZ :: [SF a b] -> SF ([a], Event ([SF a b] -> [SF a b])) [b]
@@ -379,6 +390,13 @@ zipRoute name = go
     go (a : as) (s : ss) = (a, s) : go as ss
     go []       _        = error ("AFRP.Parallel." ++ name
       ++ ": the input list is shorter than the list of signal functions")
+
+-- The stepper of a collection type: 'stepColF', replaced by the rules at
+-- the end of the module at lists, maps, int maps and sequences. Never
+-- inlined, so that the rules can see it.
+stepperFor :: Functor col => Stepper col
+stepperFor = stepColF
+{-# NOINLINE stepperFor #-}
 
 -- Step every member of any 'Functor': each member is stepped once, when its
 -- successor or its output is first demanded (a Functor cannot be walked).
@@ -465,51 +483,12 @@ freezeCol :: Functor col => col (Node b c) -> DTime -> col (SF b c)
 freezeCol ns dt = fmap (\n -> SF (freezeN n dt)) ns
 
 ------------------------------------------------------------------------------
--- Lists: every combinator over 'stepColL' (see the note at the top).
+-- The strict steppers, chosen by type (see the note at the top).
 
 {-# RULES
-"par/list"        par        = parWith stepColL
-"parB/list"       parB       = parBL
-"pSwitch/list"    pSwitch    = pSwitchWith stepColL
-"pSwitchB/list"   pSwitchB   = pSwitchWith stepColL broadcast
-"dpSwitch/list"   dpSwitch   = dpSwitchWith stepColL
-"dpSwitchB/list"  dpSwitchB  = dpSwitchWith stepColL broadcast
-"rpSwitch/list"   rpSwitch   = rpSwitchWith stepColL
-"rpSwitchB/list"  rpSwitchB  = rpSwitchWith stepColL broadcast
-"drpSwitch/list"  drpSwitch  = drpSwitchWith stepColL
-"drpSwitchB/list" drpSwitchB = drpSwitchWith stepColL broadcast
-  #-}
-
--- Maps and sequences: every combinator over 'stepColT' (strict stepping).
-{-# RULES
-"par/map" par = parWith stepMap
-"pSwitch/map" pSwitch = pSwitchWith stepMap
-"dpSwitch/map" dpSwitch = dpSwitchWith stepMap
-"rpSwitch/map" rpSwitch = rpSwitchWith stepMap
-"drpSwitch/map" drpSwitch = drpSwitchWith stepMap
-"pSwitchB/map" pSwitchB = pSwitchWith stepMap broadcast
-"dpSwitchB/map" dpSwitchB = dpSwitchWith stepMap broadcast
-"rpSwitchB/map" rpSwitchB = rpSwitchWith stepMap broadcast
-"drpSwitchB/map" drpSwitchB = drpSwitchWith stepMap broadcast
-"parB/map" parB = parWith stepMap broadcast
-"par/intmap" par = parWith stepIntMap
-"pSwitch/intmap" pSwitch = pSwitchWith stepIntMap
-"dpSwitch/intmap" dpSwitch = dpSwitchWith stepIntMap
-"rpSwitch/intmap" rpSwitch = rpSwitchWith stepIntMap
-"drpSwitch/intmap" drpSwitch = drpSwitchWith stepIntMap
-"pSwitchB/intmap" pSwitchB = pSwitchWith stepIntMap broadcast
-"dpSwitchB/intmap" dpSwitchB = dpSwitchWith stepIntMap broadcast
-"rpSwitchB/intmap" rpSwitchB = rpSwitchWith stepIntMap broadcast
-"drpSwitchB/intmap" drpSwitchB = drpSwitchWith stepIntMap broadcast
-"parB/intmap" parB = parWith stepIntMap broadcast
-"par/seq" par = parWith stepSeq
-"pSwitch/seq" pSwitch = pSwitchWith stepSeq
-"dpSwitch/seq" dpSwitch = dpSwitchWith stepSeq
-"rpSwitch/seq" rpSwitch = rpSwitchWith stepSeq
-"drpSwitch/seq" drpSwitch = drpSwitchWith stepSeq
-"pSwitchB/seq" pSwitchB = pSwitchWith stepSeq broadcast
-"dpSwitchB/seq" dpSwitchB = dpSwitchWith stepSeq broadcast
-"rpSwitchB/seq" rpSwitchB = rpSwitchWith stepSeq broadcast
-"drpSwitchB/seq" drpSwitchB = drpSwitchWith stepSeq broadcast
-"parB/seq" parB = parWith stepSeq broadcast
+"stepperFor/list"   stepperFor = stepColL
+"stepperFor/map"    stepperFor = stepMap
+"stepperFor/intmap" stepperFor = stepIntMap
+"stepperFor/seq"    stepperFor = stepSeq
+"parB/list"         parB       = parBL
   #-}

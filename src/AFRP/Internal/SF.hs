@@ -126,7 +126,7 @@ data Loop c d a b x = Loop !(Node c d) !(Node (a, d) x) x
 -- unevaluated: a delay whose output nobody reads stores its input
 -- unevaluated, so each stored value kept the step before it, and that
 -- step the value stored before, and so on (307 MB at 10^6 samples for
--- @delay@, tested by "AFRP.LoopResidencySpec"). Both are NOINLINE: inlined,
+-- @delay@, tested by "AFRP.ResidencySpec"). Both are NOINLINE: inlined,
 -- GHC merges the two selections back into one pattern on the step.
 loopOut :: Loop c d a b x -> x
 loopOut (Loop _ _ x) = x

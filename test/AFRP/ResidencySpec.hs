@@ -1,0 +1,106 @@
+-- | Memory of long runs where part of a network is never read.
+--
+-- /A delay inside 'loop' whose output nobody reads./ A delay stores the
+-- value fed back to it unevaluated (its semantics: a delay never looks at
+-- what it stores), and when its output is discarded nothing ever
+-- evaluates those values, so whatever each of them refers to lives as
+-- long as the delay keeps it. A fed-back value that referred to the whole
+-- step of the loop (its successor nodes, and through them the values
+-- stored at earlier steps) made a chain as long as the run: 307 MB at
+-- 10^6 samples for @delay@. The loop now takes the fed-back value from
+-- the step's output pair only ('AFRP.Internal.SF.loopK').
+--
+-- /A collection member whose output nobody reads./ On lists, 'Map.Map',
+-- 'IntMap.IntMap' and 'Seq.Seq' every member is stepped, and its state
+-- evaluated, at every sample ("AFRP.Parallel" picks a strict stepper for
+-- those types by rewrite rules); a member left to be stepped on demand
+-- would pile up one suspended step per sample.
+--
+-- Each case runs a child process (this test binary, started again with
+-- 'childVariable' set) for 10^6 samples under a 16 MB heap limit
+-- (@+RTS -M16m@); a leak ends it with a heap overflow.
+module AFRP.ResidencySpec
+  ( spec
+  , childVariable
+  , child
+  ) where
+
+import           Data.List          (foldl')
+import qualified Data.IntMap        as IntMap
+import qualified Data.Map           as Map
+import qualified Data.Sequence      as Seq
+import           System.Environment (getEnvironment, getExecutablePath)
+import           System.Exit        (ExitCode (..))
+import           System.Process     (env, proc, readCreateProcessWithExitCode)
+import           Test.Hspec
+
+import           AFRP
+
+-- | The environment variable that makes the test binary run 'child'.
+childVariable :: String
+childVariable = "AFRP_SPEC_RESIDENCY_CHILD"
+
+-- The delays, each fed from a 'Double', their output made a 'Double'.
+delays :: [(String, SF Double Double)]
+delays =
+  [ ("delay",         delay 0.5 0)
+  , ("sampleWindow",  sampleWindow 3 0.05 >>> arr (event 0 sum))
+  , ("iPre",          iPre 0)
+  , ("pre",           pre)
+  , ("delayEvent",    arr (\c -> if c > 0 then Event c else NoEvent) >>> delayEvent 0.05
+                        >>> arr (event 0 id))
+  , ("fby",           0 `fby` identity)
+  ]
+
+-- The collections: two integrals of the input, only the first one read
+-- (the loop outputs the input plus a hundred-millionth of it, so that
+-- the expected sum stays exact).
+collections :: [(String, SF Double Double)]
+collections =
+  [ ("parB on a list",       parB [integral, integral] >>> arr (read1 . head))
+  , ("parB on a Map",        parB (Map.fromList [(1 :: Int, integral), (2, integral)]) >>> arr (read1 . (Map.! 1)))
+  , ("par on an IntMap",     par (\a -> fmap (\sf -> (a, sf))) (IntMap.fromList [(1, integral), (2, integral)])
+                               >>> arr (read1 . (IntMap.! 1)))
+  , ("rpSwitchB on a Seq",   arr (\a -> (a, NoEvent)) >>> rpSwitchB (Seq.fromList [integral, integral])
+                               >>> arr (read1 . (`Seq.index` 0)))
+  , ("dpSwitchB on a list",  dpSwitchB [integral, integral] never (\sfs () -> parB sfs) >>> arr (read1 . head))
+  ]
+  where read1 x = x * 0
+
+-- The network for a delay: it watches the input, fed back through the
+-- loop, and its output is discarded (the loop outputs its input).
+delayNetwork :: SF Double Double -> SF Double Double
+delayNetwork sf = loop (second sf >>> arr (\(a, _) -> (a, a)))
+
+-- The network for a collection: the input plus the read output (zero).
+collectionNetwork :: SF Double Double -> SF Double Double
+collectionNetwork sf = (identity &&& sf) >>> arr (uncurry (+))
+
+samples :: Int
+samples = 1000000
+
+-- | Runs the named case's network for 10^6 samples at dt = 0.01 on the
+-- inputs 0, 1, 2, ... and prints the sum of its outputs.
+child :: String -> IO ()
+child name = case lookup name cases of
+  Just sf -> print (foldl' (+) 0 (embed sf (0, [ (0.01, Just (fromIntegral i)) | i <- [1 .. samples - 1] ])))
+  Nothing -> ioError (userError ("unknown child " ++ show name))
+
+cases :: [(String, SF Double Double)]
+cases = [ (n, delayNetwork sf) | (n, sf) <- delays ] ++ [ (n, collectionNetwork sf) | (n, sf) <- collections ]
+
+spec :: Spec
+spec = do
+  describe "a delay in a loop, its output discarded, for 10^6 samples" $
+    mapM_ (\(name, _) -> it (name ++ " runs in 16 MB of heap (+RTS -M16m)") (bounded name)) delays
+  describe "a collection with a member nobody reads, for 10^6 samples" $
+    mapM_ (\(name, _) -> it (name ++ " runs in 16 MB of heap (+RTS -M16m)") (bounded name)) collections
+  where
+    bounded name = do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (code, out, err) <- readCreateProcessWithExitCode
+        (proc self ["+RTS", "-M16m", "-RTS"]) { env = Just ((childVariable, name) : environment) } ""
+      (code, err) `shouldBe` (ExitSuccess, "")
+      -- every network outputs its input: 0 + 1 + ... + (10^6 - 1)
+      read out `shouldBe` (fromIntegral (samples * (samples - 1) `div` 2) :: Double)
