@@ -31,6 +31,10 @@ module AFrobRobotSim
   , parseSimArgs
   , parseKeys
   , validateOptions
+  , validateOptionsIn
+  , scaleFor
+  , fitScale
+  , fitPixels
   , maxSteps
   , maxFrameSide
   , usage
@@ -50,6 +54,12 @@ module AFrobRobotSim
     -- * Worlds
   , WorldTemplate
   , ObjectTemplate (..)
+  , worldSize
+  , worldBounds
+  , worldBoundsOr
+  , sizeBounds
+  , minWorldSide
+  , maxWorldSide
   , worldXMin
   , worldYMin
   , worldXMax

@@ -53,9 +53,10 @@ pattern Arena { arenaBoxes } <- MkArena arenaBoxes _ _ _
 {-# COMPLETE Arena #-}
 
 -- | The arena of a world: its walls and blocks, and four thick boxes just
--- outside its bounds.
+-- outside its bounds (the template's 'OTSize' if it has one, else the
+-- bounds given: 'worldBoundsOr').
 arenaOf :: Bounds -> WorldTemplate -> Arena
-arenaOf bounds world = Arena (map boxOf (filter isStatic world) ++ boundaryBoxes bounds)
+arenaOf bounds world = Arena (map boxOf (filter isStatic world) ++ boundaryBoxes (worldBoundsOr bounds world))
 
 isStatic :: ObjectTemplate -> Bool
 isStatic o = case o of

@@ -72,7 +72,7 @@ import           AFrobRobotSim.World
 
 -- | What a log needs besides the states: the world and how it was run.
 data LogConfig = LogConfig
-  { lcBounds      :: Bounds                    -- ^ the world's extent
+  { lcBounds      :: Bounds                    -- ^ the world's extent, unless 'lcWorld' has an 'OTSize' (which wins)
   , lcWorld       :: WorldTemplate             -- ^ the world at time 0
   , lcDt          :: Double                    -- ^ the simulation's time step (s)
   , lcFps         :: Double                    -- ^ frames per simulated second
@@ -93,7 +93,7 @@ defaultLogConfig = LogConfig notesBounds [] 0.01 25 0 [] [] (const [])
 logHeader :: LogConfig -> LogHeader
 logHeader cfg = LogHeader
   { lhFormat = logFormatName, lhVersion = logFormatVersion
-  , lhBounds = let Bounds x0 y0 x1 y1 = lcBounds cfg
+  , lhBounds = let Bounds x0 y0 x1 y1 = worldBoundsOr (lcBounds cfg) (lcWorld cfg)
                in LogRect ((x0 + x1) / 2) ((y0 + y1) / 2) (x1 - x0) (y1 - y0)
   , lhWalls  = [ box o | o <- world, isWall o ]
   , lhBlocks = [ box o | o@OTBlock {} <- world ]

@@ -12,7 +12,7 @@
 -- --out DIR          output folder (frames, default SVG and page) (default simbot-out)
 -- --frames           also write PPM frames into the output folder
 -- --no-frames        write no frames (the default)
--- --scale PX         pixels per metre                      (default 60)
+-- --scale PX         pixels per metre  (default: the world's long side 600 px, 'fitScale')
 -- --keys "1.5:a,3:b" scripted key presses (time:key, ...)
 -- --seed N           seed of the random parts              (default 0)
 -- --odometry-noise X relative odometry error per step      (default 0 = exact)
@@ -35,8 +35,17 @@
 --
 -- 'validateOptions' checks the numbers together before anything is
 -- simulated: the step count @seconds / dt@ is finite and at most
--- 'maxSteps', the frame period @1 / fps@ is a whole number of steps, the
--- frame is at most 'maxFrameSide' pixels wide.
+-- 'maxSteps', the frame period @1 / fps@ is a whole number of steps;
+-- 'validateOptionsIn', once the world is known, also that the frame is at
+-- most 'maxFrameSide' pixels wide and tall.
+--
+-- = Scale
+--
+-- Frames, the SVG and the replay page show the whole world. Without
+-- @--scale@ the scale fits the world ('fitScale'): its long side is
+-- 'fitPixels' (600) pixels, so the notes' 10 m world is drawn at 60
+-- pixels per metre (a 620 by 620 frame with the margin), a 100 m world
+-- at 6, a 30 by 10 m world at 20 (a 620 by 220 frame).
 module AFrobRobotSim.Options
   ( SimOptions (..)
   , defaultSimOptions
@@ -45,6 +54,10 @@ module AFrobRobotSim.Options
   , parseKeys
   , parseParam
   , validateOptions
+  , validateOptionsIn
+  , scaleFor
+  , fitScale
+  , fitPixels
   , maxSteps
   , maxFrameSide
   , usage
@@ -56,6 +69,8 @@ import           System.FilePath ((</>))
 import           Text.Printf     (printf)
 import           Text.Read       (readMaybe)
 
+import           AFrobRobotSim.World (Bounds (..))
+
 -- | The settings of a run.
 data SimOptions = SimOptions
   { optSeconds       :: !Double            -- ^ simulated seconds to run
@@ -63,7 +78,7 @@ data SimOptions = SimOptions
   , optFps           :: !Double            -- ^ frames per simulated second
   , optOut           :: FilePath           -- ^ the output folder (the frames go there)
   , optFrames        :: !Bool              -- ^ write frames at all
-  , optScale         :: !Double            -- ^ pixels per metre
+  , optScale         :: !(Maybe Double)    -- ^ pixels per metre; 'Nothing' fits the world ('scaleFor')
   , optKeys          :: [(Double, Char)]   -- ^ scripted key presses
   , optSeed          :: !Int               -- ^ seed of the random parts
   , optOdometryNoise :: !Double            -- ^ relative odometry error per step
@@ -85,7 +100,7 @@ data SimOptions = SimOptions
 defaultSimOptions :: SimOptions
 defaultSimOptions = SimOptions
   { optSeconds = 30, optDt = 0.01, optFps = 25, optOut = defaultOut, optFrames = False
-  , optScale = 60, optKeys = [], optSeed = 0, optOdometryNoise = 0, optQuiet = False
+  , optScale = Nothing, optKeys = [], optSeed = 0, optOdometryNoise = 0, optQuiet = False
   , optWorldFile = Nothing, optDumpWorld = False, optRays = False, optTrails = False
   , optSvg = Just (defaultOut </> "run.svg"), optVideo = Nothing, optLog = Nothing
   , optReplay = Just (defaultOut </> "replay.html"), optResult = Nothing, optParams = [] }
@@ -127,7 +142,7 @@ parseSimArgs o args = case args of
       , ("--out",     \v -> if null v then Left "--out expects a folder name, got \"\""
                              else Right o { optOut = v, optSvg = moved v <$> optSvg o
                                           , optReplay = moved v <$> optReplay o })
-      , ("--scale",   \v -> (\x -> o { optScale = x }) <$> number "--scale" (> 0) v)
+      , ("--scale",   \v -> (\x -> o { optScale = Just x }) <$> number "--scale" (> 0) v)
       , ("--keys",    \v -> (\ks -> o { optKeys = ks }) <$> parseKeys v)
       , ("--seed",    \v -> maybe (Left ("--seed expects a whole number, got " ++ show v))
                                   (\x -> Right o { optSeed = x }) (readMaybe v))
@@ -171,21 +186,38 @@ setParam (k, v) ps
 maxSteps :: Double
 maxSteps = 1e8
 
--- | The widest frame (and SVG) 'optScale' may ask for, in pixels.
+-- | The widest (and tallest) frame, and SVG, 'optScale' may ask for, in
+-- pixels.
 maxFrameSide :: Double
 maxFrameSide = 8000
 
--- | The faults of a set of options that no flag alone shows, one message
--- each (empty when the options are fine). Checked by 'parseSimArgs' and
--- again by 'AFrobRobotSim.runSimWith' before simulating.
+-- | The pixels the long side of a world spans at the default scale
+-- ('fitScale'): 600.
+fitPixels :: Double
+fitPixels = 600
+
+-- | The scale, in pixels per metre, at which the long side of a world of
+-- this extent spans 'fitPixels': 60 for the notes' 10 m world, 6 for a
+-- 100 m one. A frame is then at most 620 pixels on each side (with its
+-- margin), whatever the world's size and shape.
+fitScale :: Bounds -> Double
+fitScale (Bounds x0 y0 x1 y1) = fitPixels / max (x1 - x0) (y1 - y0)
+
+-- | The scale a run draws at, in a world of this extent: @--scale@ if
+-- given, else 'fitScale'.
+scaleFor :: Bounds -> SimOptions -> Double
+scaleFor b o = maybe (fitScale b) id (optScale o)
+
+-- | The faults of a set of options that no flag alone shows and that do
+-- not depend on the world, one message each (empty when the options are
+-- fine). Checked by 'parseSimArgs'; 'validateOptionsIn' adds the frame's
+-- size.
 validateOptions :: SimOptions -> [String]
 validateOptions o =
   [ "--seconds and --dt must be finite numbers, --dt positive" | not (all finite [secs, dt, fps, scale]) || dt <= 0 || fps <= 0 ]
   ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is " ++ num steps
        ++ " steps, more than the " ++ num maxSteps ++ " allowed"
      | all finite [secs, dt], dt > 0, tooMany ]
-  ++ [ "--scale " ++ num scale ++ " makes a frame " ++ num side ++ " pixels wide, more than " ++ num maxFrameSide
-     | finite scale, side > maxFrameSide ]
   ++ [ "--fps times --dt must not exceed 1 (at most one frame per time step)"
      | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
   ++ [ "--dt " ++ num dt ++ " does not divide the frame period 1/" ++ num fps ++ " s; --fps "
@@ -196,15 +228,31 @@ validateOptions o =
      | finite fps, finite dt, fps > 0, dt > 0, fps * dt < 1e-9 ]
   ++ [ "--out must not be empty" | null (optOut o) ]
   where
-    secs = optSeconds o; dt = optDt o; fps = optFps o; scale = optScale o
+    secs = optSeconds o; dt = optDt o; fps = optFps o; scale = maybe 1 id (optScale o)
     steps = secs / dt
     tooMany = isNaN steps || steps > maxSteps
-    side = 10 * scale + 20
     finite x = not (isNaN x || isInfinite x)
     suggestion :: String
     suggestion = let k = max 1 (round (1 / (fps * dt)) :: Int)
                      good j = num (1 / (fromIntegral j * dt))
                  in good k ++ " or " ++ good (k + 1)
+
+-- | 'validateOptions' and the faults that depend on the world, of this
+-- extent: a frame (world and margin) at the scale in effect ('scaleFor')
+-- more than 'maxFrameSide' pixels wide or tall. Checked by
+-- 'AFrobRobotSim.runSimWith' before simulating.
+validateOptionsIn :: Bounds -> SimOptions -> [String]
+validateOptionsIn b@(Bounds x0 y0 x1 y1) o =
+  validateOptions o
+  ++ [ "--scale " ++ num scale ++ " makes the frame of this " ++ num w ++ " by " ++ num h
+       ++ " m world " ++ num side ++ " pixels on its long side, more than " ++ num maxFrameSide
+     | finite scale, side > maxFrameSide ]
+  where
+    scale = scaleFor b o
+    w = x1 - x0
+    h = y1 - y0
+    side = max w h * scale + 20
+    finite x = not (isNaN x || isInfinite x)
 
 -- A number as a person writes it: 25, 0.01, 33.333, 1e+20.
 num :: Double -> String
@@ -248,7 +296,7 @@ usage prog = intercalate "\n"
   , "  --out DIR          output folder                         (default simbot-out)"
   , "  --frames           also write PPM frames (1.15 MB each: 866 MB for 30 s at 25 fps)"
   , "  --no-frames        write no frames (the default)"
-  , "  --scale PX         pixels per metre                      (default 60)"
+  , "  --scale PX         pixels per metre   (default: the world's long side is 600 px)"
   , "  --keys \"1.5:a,3:b\" scripted key presses (time:key, ...)"
   , "  --seed N           seed of the random parts              (default 0)"
   , "  --odometry-noise X relative odometry error per step      (default 0 = exact)"

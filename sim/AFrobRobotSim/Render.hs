@@ -78,6 +78,7 @@ module AFrobRobotSim.Render
     Scene (..)
   , RenderStyle (..)
   , defaultRenderStyle
+  , sceneExtent
   , frameSize
   , frameMargin
   , worldToPixel

@@ -104,15 +104,16 @@ runSimWith opts mworld rcA rcB = do
   if optDumpWorld opts
     then putStr (renderWorld world)
     else do
-      errs <- preflight opts
+      errs <- preflight (worldBounds world) opts
       unless (null errs) $
         failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
       simulateRun prog opts world rcA rcB
 
 -- Every check of the options and the file system that can be made before
--- simulating; creates the output folder when something goes there.
-preflight :: SimOptions -> IO [String]
-preflight opts = do
+-- simulating, in a world of the given extent; creates the output folder
+-- when something goes there.
+preflight :: Bounds -> SimOptions -> IO [String]
+preflight bounds opts = do
   let out   = optOut opts
       files = catMaybes [ (,) "--svg" <$> optSvg opts, (,) "--log" <$> optLog opts
                         , (,) "--replay" <$> optReplay opts, (,) "--video" <$> optVideo opts
@@ -121,7 +122,7 @@ preflight opts = do
   ffmpeg <- maybe (pure Nothing) (const (findExecutable "ffmpeg")) (optVideo opts)
   fileErrs <- forM files $ \(flag, f) ->
     if takeDirectory f == out && inOut then checkTarget flag f Nothing else checkTarget flag f (Just (takeDirectory f))
-  let pre = validateOptions opts
+  let pre = validateOptionsIn bounds opts
             ++ [ "--video needs the frames (add --frames)" | optVideo opts /= Nothing, not (optFrames opts) ]
             ++ [ "--video needs ffmpeg on the PATH (on Debian: apt-get install ffmpeg)"
                | optVideo opts /= Nothing, ffmpeg == Nothing ]
@@ -207,10 +208,11 @@ trailPoints (Trail _ ps) = reverse (take trailMax ps)
 
 -- The PPM frames (with the trails, when drawn), written as the run goes;
 -- the count is shared with the progress line and the summary.
-framesSink :: SimOptions -> (Int -> Bool) -> ([[Position2]] -> WorldState -> BS.ByteString) -> IORef Int -> IO Sink
-framesSink opts frameAt render countRef = do
+framesSink :: SimOptions -> Double -> (Int -> Bool) -> ([[Position2]] -> WorldState -> BS.ByteString) -> IORef Int
+           -> IO Sink
+framesSink opts scale frameAt render countRef = do
   trailsRef <- newIORef []
-  let px = 1 / optScale opts
+  let px = 1 / scale
       step n s = do
         trails <- if optTrails opts
           then do
@@ -238,10 +240,10 @@ replayMaxFrames = 9000
 -- The SVG: at most 'svgMaxPoints' + 1 snapshots, taken every @every@
 -- steps when a robot moved more than a pixel since the last one, and the
 -- last state; written at the end.
-svgSink :: SimOptions -> Int -> (RenderStyle, Scene) -> FilePath -> IO Sink
-svgSink opts every (style, scene) file = do
+svgSink :: Int -> (RenderStyle, Scene) -> FilePath -> IO Sink
+svgSink every (style, scene) file = do
   ref <- newIORef ([], Nothing)
-  let px = 1 / optScale opts
+  let px = 1 / styleScale style
       moved a b = or (zipWith (\p q -> norm (robotPos p .-. robotPos q) > px)
                               (wsRobots a) (wsRobots b))
                   || length (wsRobots a) /= length (wsRobots b)
@@ -299,12 +301,14 @@ simulateRun prog opts world rcA rcB = do
   tty   <- hIsTerminalDevice stderr
   args  <- getArgs
   let dt       = optDt opts
+      bounds   = worldBounds world
+      scale    = scaleFor bounds opts
       cfg      = defaultSimConfig { simDt = dt, simKeys = optKeys opts, simSeed = optSeed opts
-                                  , simOdometryNoise = optOdometryNoise opts }
+                                  , simOdometryNoise = optOdometryNoise opts, simBounds = bounds }
       nSteps   = max 0 (round (optSeconds opts / dt)) :: Int
-      scene    = Scene notesBounds world
-      style    = RenderStyle (optScale opts) (optRays opts) (optTrails opts)
-      logCfg   = defaultLogConfig { lcBounds = notesBounds, lcWorld = world, lcDt = dt
+      scene    = Scene bounds world
+      style    = RenderStyle scale (optRays opts) (optTrails opts)
+      logCfg   = defaultLogConfig { lcBounds = bounds, lcWorld = world, lcDt = dt
                                   , lcFps = optFps opts, lcSeed = optSeed opts
                                   , lcCommandLine = prog : args }
       -- frame f is taken at the step nearest to simulated time f / fps
@@ -325,9 +329,9 @@ simulateRun prog opts world rcA rcB = do
     either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ show e)) pure r
   stepsRef  <- newIORef (0 :: Int)
   framesRef <- newIORef (0 :: Int)
-  frames <- if optFrames opts then Just <$> framesSink opts frameAt (renderPPM style scene) framesRef
+  frames <- if optFrames opts then Just <$> framesSink opts scale frameAt (renderPPM style scene) framesRef
                               else pure Nothing
-  svg <- forM (optSvg opts) (svgSink opts svgEvery (style, scene))
+  svg <- forM (optSvg opts) (svgSink svgEvery (style, scene))
   result <- forM (optResult opts) (resultSink prog opts)
   let sinks = [ messagesSink | not (optQuiet opts) ]
               ++ [ progressSink nSteps framesRef | tty, not (optQuiet opts) ]

@@ -49,7 +49,7 @@ data SimConfig = SimConfig
   , simKeys           :: [(Time, Char)] -- ^ scripted key presses: each is down for the first sample at or after its time
   , simSeed           :: !Int           -- ^ seed of the odometry noise
   , simOdometryNoise  :: !Double        -- ^ relative odometry error per step (0 = exact odometry)
-  , simBounds         :: !Bounds        -- ^ the world's extent
+  , simBounds         :: !Bounds        -- ^ the world's extent, unless the template has an 'OTSize' (which wins)
   , simBallRule       :: Time -> [Position2] -> Maybe [Position2]
     -- ^ a referee: after each step, given the time and the balls' new
     -- positions, 'Just' new positions puts the balls there, at rest (for

@@ -3,9 +3,11 @@
 -- Description : World templates: what a simulated world is made of, the
 --               dimensions of everything in it, and their validation.
 --
--- A world is the square @[worldXMin, worldXMax] x [worldYMin, worldYMax]@
--- (10 m by 10 m, centred on the origin, as in the notes), walled in on all
--- four sides. A 'WorldTemplate' lists the objects in it by their centres.
+-- A world is a rectangle centred on the origin, walled in on all four
+-- sides: by default the square @[worldXMin, worldXMax] x [worldYMin,
+-- worldYMax]@ (10 m by 10 m, as in the notes), or @W@ by @H@ metres when its
+-- template holds an @'OTSize' W H@ ('worldBounds'). A 'WorldTemplate' lists
+-- the objects in it by their centres.
 --
 -- = Dimensions
 --
@@ -30,6 +32,12 @@ module AFrobRobotSim.World
     WorldTemplate
   , ObjectTemplate (..)
     -- * The world's extent
+  , worldSize
+  , worldBounds
+  , worldBoundsOr
+  , sizeBounds
+  , minWorldSide
+  , maxWorldSide
   , worldXMin
   , worldYMin
   , worldXMax
@@ -65,7 +73,8 @@ import qualified Data.Set        as S
 import           AFRP.Geometry
 import           AFrob.Dimensions
 
--- | A world: the objects in it.
+-- | A world: the objects in it, and optionally its size (an 'OTSize';
+-- without one, the notes' 10 m by 10 m).
 type WorldTemplate = [ObjectTemplate]
 
 -- | One object of a world, placed by its centre. Headings are in radians
@@ -77,7 +86,51 @@ data ObjectTemplate
   | OTBall    { otPos :: Position2 }                                 -- ^ a ball, 0.3 m across
   | OTSimbotA { otRId :: RobotId, otPos :: Position2, otHdng :: Heading } -- ^ a simbot of type A
   | OTSimbotB { otRId :: RobotId, otPos :: Position2, otHdng :: Heading } -- ^ a simbot of type B
+  | OTSize    { otWidth :: Length, otHeight :: Length }
+    -- ^ not an object but the world's size: the world is @otWidth@ by
+    -- @otHeight@ metres, centred on the origin ('worldBounds'), from time 0
+    -- on. At most one per template, each side between 'minWorldSide' and
+    -- 'maxWorldSide' ('validateWorld'); where it stands in the list does
+    -- not matter. It has no 'otPos'.
   deriving (Eq, Show)
+
+-- | The size a template gives its world, width and height in metres: its
+-- first 'OTSize', if any.
+worldSize :: WorldTemplate -> Maybe (Length, Length)
+worldSize objs = case [ (w, h) | OTSize w h <- objs ] of
+  wh : _ -> Just wh
+  []     -> Nothing
+
+-- | The extent of a template's world: @'sizeBounds' w h@ for its
+-- 'worldSize', the notes' 'notesBounds' without one.
+--
+-- >>> worldBounds [OTSize 30 10, OTBall (Point2 0 0)]
+-- Bounds (-15.0) (-5.0) 15.0 5.0
+worldBounds :: WorldTemplate -> Bounds
+worldBounds = worldBoundsOr notesBounds
+
+-- | The extent of a template's world, given the extent to use when it has
+-- no 'OTSize': a size in the template wins over the bounds given
+-- alongside it (in 'AFrobRobotSim.SimConfig', a scene or a log's
+-- settings).
+worldBoundsOr :: Bounds -> WorldTemplate -> Bounds
+worldBoundsOr b = maybe b (uncurry sizeBounds) . worldSize
+
+-- | The extent of a world @w@ by @h@ metres centred on the origin:
+-- @Bounds (-w/2) (-h/2) (w/2) (h/2)@.
+sizeBounds :: Length -> Length -> Bounds
+sizeBounds w h = Bounds (negate (w / 2)) (negate (h / 2)) (w / 2) (h / 2)
+
+-- | The shortest side a world may have: 1 m (room for a simbot, 0.5 m
+-- across, to turn).
+minWorldSide :: Length
+minWorldSide = 1
+
+-- | The longest side a world may have: 1000 m (a hundred times the notes'
+-- world; the grids of the physics and sensors coarsen beyond a few
+-- hundred metres, and a frame shows a simbot as less than a pixel).
+maxWorldSide :: Length
+maxWorldSide = 1000
 
 -- | The world's left edge, in metres: -5.
 worldXMin :: Position
@@ -146,6 +199,7 @@ kindAccMax SimbotB = 0.5
 -- | A short human-readable name for an object, used in error messages:
 -- @"SimbotA 3 at (1.0, 2.0)"@, @"ball at (0.0, 0.0)"@.
 objectName :: ObjectTemplate -> String
+objectName (OTSize w h) = "world size " ++ show w ++ " by " ++ show h
 objectName o = what o ++ " at " ++ showPos (otPos o)
   where
     what OTBlock {}   = "block"
@@ -154,6 +208,7 @@ objectName o = what o ++ " at " ++ showPos (otPos o)
     what OTBall {}    = "ball"
     what r@OTSimbotA {} = "SimbotA " ++ show (otRId r)
     what r@OTSimbotB {} = "SimbotB " ++ show (otRId r)
+    what OTSize {}    = "world size"
     showPos (Point2 x y) = "(" ++ show x ++ ", " ++ show y ++ ")"
 
 -- | The extent of a world: @Bounds xMin yMin xMax yMax@, in metres.
@@ -164,8 +219,10 @@ data Bounds = Bounds !Double !Double !Double !Double
 notesBounds :: Bounds
 notesBounds = Bounds worldXMin worldYMin worldXMax worldYMax
 
--- | Check a world template: every coordinate and heading is a finite
--- number; every object lies inside the world; no two robots of one type
+-- | Check a world template: it has at most one 'OTSize', whose sides are
+-- finite and between 'minWorldSide' and 'maxWorldSide'; every coordinate
+-- and heading is a finite number; every object lies inside the world
+-- (of the template's size, else the notes' 10 m); no two robots of one type
 -- share an id; nothing overlaps at time 0 where the physics could not
 -- untangle it: a robot with a wall, block, ball or another robot, a ball
 -- with a wall or block (touching is allowed, to within a nanometre for
@@ -177,7 +234,8 @@ notesBounds = Bounds worldXMin worldYMin worldXMax worldYMax
 validateWorld :: WorldTemplate -> Either [String] ()
 validateWorld = validateWorldIn notesBounds
 
--- | 'validateWorld' for a world of the given extent.
+-- | 'validateWorld' for a world of the given extent, unless the template
+-- gives its own ('OTSize'), which wins ('worldBoundsOr').
 validateWorldIn :: Bounds -> WorldTemplate -> Either [String] ()
 validateWorldIn bounds objs =
   case capProblems (map snd (worldProblems bounds (zip (repeat "") objs))) of
@@ -204,12 +262,27 @@ capProblems ps = case splitAt maxProblems ps of
 -- | The problems of a world whose objects carry a label (appended to their
 -- names in messages, such as @" (line 3)"@), in the order of the objects,
 -- each with the position in the list of the object it is reported at:
--- for a pair, the later one.
+-- for a pair, the later one. The objects must lie inside the template's
+-- 'OTSize' if it has one that is valid, else inside the given bounds.
 worldProblems :: Bounds -> [(String, ObjectTemplate)] -> [(Int, String)]
-worldProblems (Bounds x0 y0 x1 y1) labelled = concatMap problemsOf indexed
+worldProblems bounds labelled = concatMap problemsOf indexed
   where
     indexed = zip [0 :: Int ..] labelled
     name (lbl, o) = objectName o ++ lbl
+    sizes = [ (i, lo) | (i, lo@(_, OTSize {})) <- indexed ]
+    Bounds x0 y0 x1 y1 = case sizes of
+      (_, (_, OTSize w h)) : _ | goodSide w && goodSide h -> sizeBounds w h
+      _                                                   -> bounds
+    goodSide v = isFinite v && v >= minWorldSide && v <= maxWorldSide
+    problemsOf (i, lo@(_, OTSize w h)) = case sizes of
+      (j, first) : _ | j < i ->
+        [(i, name lo ++ ": a world has one size, and it was given by " ++ name first)]
+      _ | not (isFinite w && isFinite h) ->
+            [(i, name lo ++ ": the width and height must be finite numbers")]
+        | not (goodSide w && goodSide h) ->
+            [(i, name lo ++ ": each side must be between " ++ show minWorldSide ++ " and "
+                   ++ show maxWorldSide ++ " metres")]
+        | otherwise -> []
     problemsOf (i, lo@(_, o))
       | not (all isFinite (coords o)) =
           [(i, name lo ++ ": coordinates and heading must be finite numbers")]
@@ -227,7 +300,10 @@ worldProblems (Bounds x0 y0 x1 y1) labelled = concatMap problemsOf indexed
       let Point2 x y = otPos o
           (hw, hh)   = objectHalfSize o
       in not (x - hw < x0 || x + hw > x1 || y - hh < y0 || y + hh > y1)
-    placed = [ (i, o) | (i, (_, o)) <- indexed, all isFinite (coords o), insideWorld o ]
+    placed = [ (i, o) | (i, (_, o)) <- indexed, notSize o, all isFinite (coords o), insideWorld o ]
+    notSize o = case o of
+      OTSize {} -> False
+      _         -> True
     arr = M.fromList [ (i, lo) | (i, lo) <- indexed ]
     labelledAt j = arr M.! j
     firstWithId = M.fromListWith min [ ((k, otRId o), i) | (i, o) <- placed, Just k <- [robotKindOf o] ]
@@ -270,7 +346,8 @@ overlapAtStart a b = case (discRadius a, discRadius b) of
     -- objects placed to touch exactly may overlap by a rounding error
     touchSlack = 1e-9
 
--- | Half the width and height of an object's bounding box, in metres.
+-- | Half the width and height of an object's bounding box, in metres (for
+-- an 'OTSize', half the world's).
 objectHalfSize :: ObjectTemplate -> (Double, Double)
 objectHalfSize o = case o of
   OTBlock {}   -> (blockSide / 2, blockSide / 2)
@@ -279,3 +356,4 @@ objectHalfSize o = case o of
   OTBall {}    -> (ballDiameter / 2, ballDiameter / 2)
   OTSimbotA {} -> (simbotDiameter / 2, simbotDiameter / 2)
   OTSimbotB {} -> (simbotDiameter / 2, simbotDiameter / 2)
+  OTSize w h   -> (w / 2, h / 2)

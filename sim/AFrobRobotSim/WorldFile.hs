@@ -7,7 +7,8 @@
 -- line, for example:
 --
 -- @
--- # A small arena (the world is [-5, 5] x [-5, 5], walled in on all sides).
+-- # A small arena, 12 m by 8 m: [-6, 6] x [-4, 4], walled in on all sides.
+-- size 12 8                  # without a size line: 10 by 10, [-5, 5] x [-5, 5]
 -- wall v at 0 3              # a vertical wall segment centred on (0, 3)
 -- wall h at -1 2.5           # a horizontal one centred on (-1, 2.5)
 -- block at 2 -2
@@ -37,16 +38,18 @@
 -- * What is left of a line is split into tokens at whitespace (spaces,
 --   tabs, ...); tokens must be separated by whitespace (@at0@ is one
 --   token, not @at 0@). A line without tokens (blank, or only a comment)
---   is ignored; every other line describes exactly one object.
+--   is ignored; every other line describes exactly one object, or the
+--   world's size.
 --
--- * Keywords (@simbotA@, @simbotB@, @wall@, @v@, @h@, @block@, @ball@,
---   @at@, @heading@ and the units) are case-insensitive: @SimbotA@,
+-- * Keywords (@size@, @simbotA@, @simbotB@, @wall@, @v@, @h@, @block@,
+--   @ball@, @at@, @heading@ and the units) are case-insensitive: @SimbotA@,
 --   @SIMBOTA@ and @simbota@ are the same keyword.
 --
 -- = Grammar
 --
 -- @
--- line    ::= [ object ] [ comment ]
+-- line    ::= [ object | size ] [ comment ]
+-- size    ::= \"size\" NUMBER NUMBER                          (at most one per file)
 -- object  ::= robot | wall | block | ball
 -- robot   ::= ( \"simbotA\" | \"simbotB\" ) ID \"at\" NUMBER NUMBER [ heading ]
 -- heading ::= \"heading\" NUMBER unit
@@ -66,6 +69,20 @@
 -- "AFrobRobotSim.World": @wall v@ is an 'OTVWall', @wall h@ an 'OTHWall',
 -- @block@ an 'OTBlock', @ball@ an 'OTBall', @simbotA@ \/ @simbotB@ an
 -- 'OTSimbotA' \/ 'OTSimbotB' with the given robot id.
+--
+-- == The world's size
+--
+-- @size W H@ makes the world @W@ metres wide (along x) and @H@ metres
+-- tall (along y), centred on the origin: @[-W\/2, W\/2] x [-H\/2, H\/2]@,
+-- walled in on all four sides. It is an 'OTSize' in the template. Without
+-- a @size@ line the world is the notes' 10 by 10
+-- ('AFrobRobotSim.World.notesBounds'). A file has at most one @size@
+-- line, anywhere in it (the objects are checked against it wherever it
+-- stands); each side is a number from 'AFrobRobotSim.World.minWorldSide'
+-- (1) to 'AFrobRobotSim.World.maxWorldSide' (1000) metres. The frames,
+-- the SVG and the replay page of a run picture the whole world, at a
+-- default scale that keeps them about 600 pixels on the long side
+-- (see "AFrobRobotSim.Options").
 --
 -- == Numbers
 --
@@ -112,7 +129,11 @@
 -- FILE:LINE:COLUMN: found a NUL character (is this a text file?)
 -- FILE:LINE:COLUMN: invalid UTF-8 (byte 0xff)
 -- FILE:LINE: too many objects (at most 10000)
+-- FILE:LINE: the world's size is given twice (first on line N)
 -- @
+--
+-- A side of @size@ out of range is reported like any other bad token:
+-- @w.world:1:6: expected a world side from 1 to 1000 metres after \"size\", found \"0\" (out of range)@.
 --
 -- Characters that cannot be printed are shown escaped in messages (as
 -- Haskell writes them, @\\NUL@, @\\ESC@, ...), so a message never sends
@@ -153,7 +174,7 @@ import           Numeric           (showHex)
 
 import           AFRP.Geometry     (Point2 (..))
 import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems,
-                                      notesBounds, worldProblems)
+                                      maxWorldSide, minWorldSide, notesBounds, worldProblems)
 import           AFrobRobotSim.WorldFile.Lexical
 
 ------------------------------------------------------------------------------
@@ -177,22 +198,28 @@ parseWorld file = fmap (map snd) . parseNumbered file
 
 -- | 'parseWorld', each object with its line number.
 parseNumbered :: FilePath -> String -> Either String [(Int, ObjectTemplate)]
-parseNumbered file = go (0 :: Int) [] . zip [1 :: Int ..] . lines . dropBom
+parseNumbered file = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . lines . dropBom
   where
     dropBom ('\xFEFF' : r) = r
     dropBom r              = r
-    go _ acc [] = Right (reverse acc)
-    go k acc ((n, l) : ls) = case checkLine l >>= parseLine of
-      Right Nothing  -> go k acc ls
+    -- k objects so far; the line of the size, if one was given
+    go _ _ acc [] = Right (reverse acc)
+    go k sizeLine acc ((n, l) : ls) = case checkLine l >>= parseLine of
+      Right Nothing  -> go k sizeLine acc ls
+      Right (Just o@OTSize {}) -> case sizeLine of
+        Just first -> Left (file ++ ":" ++ show n ++ ": the world's size is given twice (first on line "
+                            ++ show first ++ ")")
+        Nothing    -> go k (Just n) ((n, o) : acc) ls
       Right (Just o)
         | k >= maxObjects -> Left (file ++ ":" ++ show n ++ ": too many objects (at most "
                                    ++ show maxObjects ++ ")")
-        | otherwise       -> go (k + 1) ((n, o) : acc) ls
+        | otherwise       -> go (k + 1) sizeLine ((n, o) : acc) ls
       Left (Failure col msg) ->
         Left (file ++ ":" ++ show n ++ ":" ++ show col ++ ": " ++ msg)
 
 -- | The most objects a world file may describe: 10000 (the notes' world
--- holds about 1100 balls, or 400 blocks, side by side).
+-- holds about 1100 balls, or 400 blocks, side by side). The @size@ line
+-- is not an object.
 maxObjects :: Int
 maxObjects = 10000
 
@@ -285,8 +312,12 @@ readWorldFile path = do
 renderWorld :: WorldTemplate -> String
 renderWorld w = unlines (header : map renderObject w)
   where
-    header = "# afrp world file: " ++ show (length w) ++ " object"
-             ++ (if length w == 1 then "" else "s")
+    k = length [ () | o <- w, not (isSize o) ]
+    isSize o = case o of
+      OTSize {} -> True
+      _         -> False
+    header = "# afrp world file: " ++ show k ++ " object"
+             ++ (if k == 1 then "" else "s")
              ++ " (positions in metres, headings in radians)"
 
 -- | One object as one line (without the newline).
@@ -298,6 +329,7 @@ renderObject o = case o of
   OTBall p          -> "ball" ++ at p
   OTSimbotA i p hd  -> robotLine "simbotA" i p hd
   OTSimbotB i p hd  -> robotLine "simbotB" i p hd
+  OTSize wd ht      -> "size " ++ show wd ++ " " ++ show ht
   where
     at (Point2 x y) = " at " ++ show x ++ " " ++ show y
     robotLine kw i p hd = kw ++ " " ++ show i ++ at p ++ " heading " ++ show hd ++ " rad"
@@ -389,14 +421,15 @@ parseLine ts = case p (PState Nothing ts) of
   where
     P p = object
 
-data Kind = KSimbotA | KSimbotB | KWall | KBlock | KBall
+data Kind = KSimbotA | KSimbotB | KWall | KBlock | KBall | KSize
 
 object :: P ObjectTemplate
 object = do
-  k <- keywordOf "an object keyword (simbotA, simbotB, wall, block or ball)"
+  k <- keywordOf "an object keyword (simbotA, simbotB, wall, block or ball) or size"
          [ ("simbota", KSimbotA), ("simbotb", KSimbotB), ("wall", KWall)
-         , ("block", KBlock), ("ball", KBall) ]
+         , ("block", KBlock), ("ball", KBall), ("size", KSize) ]
   o <- case k of
+    KSize    -> OTSize <$> side <*> side
     KSimbotA -> robot OTSimbotA
     KSimbotB -> robot OTSimbotB
     KWall    -> do
@@ -440,6 +473,17 @@ heading = do
 
 number :: P Double
 number = token "a number" readNumber
+
+-- | A side of the world: a number from 'minWorldSide' to 'maxWorldSide'.
+side :: P Double
+side = token what $ \t -> case readNumber t of
+  Right v
+    | v < minWorldSide || v > maxWorldSide -> Left (Rejection what " (out of range)")
+  r -> r
+  where
+    what = "a world side from " ++ metres minWorldSide ++ " to " ++ metres maxWorldSide ++ " metres"
+    metres v = let n = round v :: Int
+               in if fromIntegral n == v then show n else show v
 
 -- | A heading's number: finite, and within +-'maxHeading'.
 headingNumber :: String -> Either Rejection Double

@@ -21,6 +21,12 @@ pair xs = case xs of
 
 spec :: Spec
 spec = do
+  describe "the header's bounds" $ do
+    it "are the notes' 10 by 10 for a world without a size" $
+      lhBounds (logHeader defaultLogConfig { lcWorld = [OTBall (Point2 0 0)] }) `shouldBe` LogRect 0 0 10 10
+    it "are the world's size when it has one, whatever lcBounds says" $
+      lhBounds (logHeader defaultLogConfig { lcWorld = [OTSize 30 10, OTBall (Point2 12 0)] })
+        `shouldBe` LogRect 0 0 30 10
   let frames = rlFrames fixtureLog
   describe "logFrames" $ do
     it "gives one frame per 1/fps s, at time 0 and at the end (fixed)" $ do

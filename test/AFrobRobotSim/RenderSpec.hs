@@ -43,6 +43,24 @@ driveAt vl vr _ = constant (mrFinalize (ddVelDiff vl vr))
 
 spec :: Spec
 spec = do
+  describe "worlds of any size" $ do
+    let wide = Scene notesBounds [OTSize 30 10, OTSimbotA 1 (Point2 12 0) 0]
+        wideStyle = style { styleScale = fitScale (sceneExtent wide) }
+    it "fitScale keeps the long side at 600 pixels: 60 px/m for the notes' world, 6 for 100 m, 20 for 30 by 10" $ do
+      fitScale notesBounds `shouldBe` 60
+      fitScale (sizeBounds 100 100) `shouldBe` 6
+      fitScale (sizeBounds 30 10) `shouldBe` 20
+      fitScale (sizeBounds 10 1000) `shouldBe` 0.6
+    it "a 30 by 10 world's frame is 620 by 220 pixels (its size wins over the scene's bounds)" $ do
+      sceneExtent wide `shouldBe` Bounds (-15) (-5) 15 5
+      frameSize wideStyle wide `shouldBe` (620, 220)
+      BC.take 15 (renderPPM wideStyle wide [] (snapshot [] [])) `shouldBe` BC.pack "P6\n620 220\n255\n"
+    it "draws a robot near the far end of a 30 by 10 world" $ do
+      let img = renderPPM wideStyle wide [] (snapshot [robotAt "SimbotA" 1 (Point2 12 0) 0 False] [])
+      pixelAtWorld wideStyle wide img (Point2 11.9 0.1) `shouldBe` Just (robotColour "SimbotA" 0)
+      pixelAtWorld wideStyle wide img (Point2 14.9 4.9) `shouldBe` Just backgroundColour
+    it "a 30 by 10 world's SVG has the frame's height and a viewBox 170 pixels wider" $
+      renderSVG wideStyle wide [] `shouldSatisfy` ("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"790\" height=\"220\" viewBox=\"0 0 790 220\">" `isPrefixOf`)
   describe "frameSize" $ do
     it "is 600 by 600 plus a 10-pixel margin for the notes' world at 60 px/m" $
       frameSize style (scene []) `shouldBe` (620, 620)

@@ -13,30 +13,61 @@ import           System.IO                (hClose, openTempFile)
 import           System.Process           (readProcessWithExitCode)
 import           Test.Hspec
 
+import           AFrob                    hiding (forAll)
+import           AFrobRobotSim
+import           AFrobRobotSim.Log
 import           AFrobRobotSim.LogFixture
 import           AFrobRobotSim.Replay
 
+-- | The page of a 1 s run of a world, its robots driving slowly ahead.
+pageOf :: WorldTemplate -> String
+pageOf w = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing)
+  where
+    cfg    = defaultLogConfig { lcWorld = w, lcDt = 0.01, lcFps = 25 }
+    states = take 101 (simulate 0.01 w slow slow)
+    slow _ = constant (mrFinalize (ddVelDiff 0.2 0.2))
+
 spec :: Spec
-spec = it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $ do
-  node     <- findExecutable "node"
-  chromium <- lookupEnv "CHROMIUM" >>= maybe (pure "/usr/bin/chromium") pure
-  haveChromium <- doesFileExist chromium
-  haveModules  <- doesDirectoryExist ("test" </> "browser" </> "node_modules" </> "playwright-core")
-  let missing = [ "node (apt-get install -y nodejs npm)" | node == Nothing ]
-             ++ [ "Chromium at " ++ chromium ++ " (apt-get install -y chromium, or set CHROMIUM)" | not haveChromium ]
-             ++ [ "playwright-core (cd test/browser && npm ci)" | not haveModules ]
-  unless (null missing) $
-    expectationFailure ("the browser test needs: " ++ concatMap ("\n  - " ++) missing
-                        ++ "\n(.ci/run installs them)")
-  tmp <- getTemporaryDirectory
-  (page, h) <- openTempFile tmp "afrp-replay.html"
-  hClose h
-  writeFile page (replayPage fixtureLog)
-  shot <- lookupEnv "AFRP_REPLAY_SCREENSHOT" >>= maybe (pure (page ++ ".png")) pure
-  (code, out, err) <- readProcessWithExitCode (maybe "node" id node)
-                        ["test" </> "browser" </> "replay.test.js", page, shot] ""
-  removeFile page
-  case code of
-    ExitSuccess   -> pure ()
-    ExitFailure c -> expectationFailure ("node test/browser/replay.test.js exited with " ++ show c
-                                         ++ ":\n" ++ out ++ err)
+spec = do
+  it "shows the whole of a 30 by 10 m and a 100 m world, robots near their far corners where the log says (fixed)" $ do
+    node <- findExecutable "node"
+    haveModules <- doesDirectoryExist ("test" </> "browser" </> "node_modules" </> "playwright-core")
+    unless (node /= Nothing && haveModules) $
+      expectationFailure "the browser test needs node and playwright-core (cd test/browser && npm ci; .ci/run installs them)"
+    tmp <- getTemporaryDirectory
+    let worlds = [ [OTSize 30 10, OTSimbotA 1 (Point2 (-14.5) 4.5) 0, OTSimbotB 2 (Point2 14.5 (-4.5)) pi]
+                 , [OTSize 100 100, OTSimbotA 1 (Point2 (-49) 49) 0, OTSimbotB 2 (Point2 49 (-49)) pi] ]
+    mapM_ (\w -> do
+            (page, h) <- openTempFile tmp "afrp-replay-size.html"
+            hClose h
+            writeFile page (pageOf w)
+            (code, out, err) <- readProcessWithExitCode (maybe "node" id node)
+                                  ["test" </> "browser" </> "replay-size.test.js", page] ""
+            removeFile page
+            case code of
+              ExitSuccess   -> pure ()
+              ExitFailure c -> expectationFailure ("node test/browser/replay-size.test.js exited with " ++ show c
+                                                   ++ ":\n" ++ out ++ err)) worlds
+  it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $ do
+    node     <- findExecutable "node"
+    chromium <- lookupEnv "CHROMIUM" >>= maybe (pure "/usr/bin/chromium") pure
+    haveChromium <- doesFileExist chromium
+    haveModules  <- doesDirectoryExist ("test" </> "browser" </> "node_modules" </> "playwright-core")
+    let missing = [ "node (apt-get install -y nodejs npm)" | node == Nothing ]
+               ++ [ "Chromium at " ++ chromium ++ " (apt-get install -y chromium, or set CHROMIUM)" | not haveChromium ]
+               ++ [ "playwright-core (cd test/browser && npm ci)" | not haveModules ]
+    unless (null missing) $
+      expectationFailure ("the browser test needs: " ++ concatMap ("\n  - " ++) missing
+                          ++ "\n(.ci/run installs them)")
+    tmp <- getTemporaryDirectory
+    (page, h) <- openTempFile tmp "afrp-replay.html"
+    hClose h
+    writeFile page (replayPage fixtureLog)
+    shot <- lookupEnv "AFRP_REPLAY_SCREENSHOT" >>= maybe (pure (page ++ ".png")) pure
+    (code, out, err) <- readProcessWithExitCode (maybe "node" id node)
+                          ["test" </> "browser" </> "replay.test.js", page, shot] ""
+    removeFile page
+    case code of
+      ExitSuccess   -> pure ()
+      ExitFailure c -> expectationFailure ("node test/browser/replay.test.js exited with " ++ show c
+                                           ++ ":\n" ++ out ++ err)

@@ -22,7 +22,8 @@ import           Test.Hspec          hiding (after)
 
 import           AFrob               hiding (forAll)
 import           AFrobRobotSim
-import           AFrobRobotSim.Log   (LogSummary (..), RunLog (..), readLogFile)
+import           AFrobRobotSim.Log   (LogFrame (..), LogHeader (..), LogRect (..), LogRobot (..), LogSummary (..),
+                                      RunLog (..), readLogFile)
 import           AFrobRobotSim.Replay (writeReplayFromLog)
 
 world :: WorldTemplate
@@ -88,13 +89,72 @@ child arg = case break (== ':') arg of
     { optSeconds = 3600, optQuiet = True, optTrails = True, optFrames = False
     , optSvg = Just (dir </> "run.svg"), optReplay = Nothing, optOut = dir } Nothing drive drive
   ("long", _ : dir) -> runSimWith defaultSimOptions
-    { optSeconds = 36000, optQuiet = True, optFrames = True, optScale = 10, optOut = dir </> "f"
+    { optSeconds = 36000, optQuiet = True, optFrames = True, optScale = Just 10, optOut = dir </> "f"
     , optSvg = Just (dir </> "run.svg"), optLog = Just (dir </> "run.jsonl")
     , optReplay = Just (dir </> "run.html") } Nothing drive drive
   _ -> ioError (userError ("unknown child " ++ show arg))
 
 spec :: Spec
 spec = do
+  describe "worlds of any size" $ do
+    it "runs worlds/big.world (100 m): 620 by 620 frames, an SVG and a log of the whole world" $ withTempDir $ \dir -> do
+      (_, _, r) <- captured (runSimWith (quick (dir </> "f")) { optSeconds = 0.2, optWorldFile = Just "worlds/big.world"
+                                                            , optSvg = Just (dir </> "run.svg"), optLog = Just (dir </> "run.jsonl") }
+                                        Nothing drive drive)
+      r `shouldBe` Right ()
+      frames <- framesIn (dir </> "f")
+      map (BS.take 15) frames `shouldBe` replicate 6 (BS.pack (map (toEnum . fromEnum) "P6\n620 620\n255\n"))
+      svg <- readFile (dir </> "run.svg")
+      svg `shouldSatisfy` ("viewBox=\"0 0 790 620\"" `isInfixOf`)
+      svg `shouldSatisfy` ("... and 170 more<" `isInfixOf`)
+      Right l <- readLogFile (dir </> "run.jsonl")
+      lhBounds (rlHeader l) `shouldBe` LogRect 0 0 100 100
+      length (lhRobots (rlHeader l)) `shouldBe` 200
+    it "a robot of a 100 m world drives beyond the notes' walls" $ withTempDir $ \dir -> do
+      let big = [OTSize 100 100, OTSimbotA 1 (Point2 0 0) 0]
+      (_, _, r) <- captured (runSimWith (quick dir) { optSeconds = 20, optFrames = False, optLog = Just (dir </> "run.jsonl") }
+                                        (Just big) drive drive)
+      r `shouldBe` Right ()
+      Right l <- readLogFile (dir </> "run.jsonl")
+      map lrX (lfRobots (last (rlFrames l))) `shouldSatisfy` all (> 10)
+    it "a 30 by 10 world: 620 by 220 frames, a non-square SVG and log bounds" $ withTempDir $ \dir -> do
+      let wide = [OTSize 30 10, OTSimbotA 1 (Point2 (-12) 0) 0, OTBall (Point2 12 4)]
+      (_, _, r) <- captured (runSimWith (quick (dir </> "f")) { optSvg = Just (dir </> "run.svg")
+                                                            , optLog = Just (dir </> "run.jsonl") }
+                                        (Just wide) drive drive)
+      r `shouldBe` Right ()
+      frames <- framesIn (dir </> "f")
+      length frames `shouldBe` 51
+      map BS.length frames `shouldBe` replicate 51 (length "P6\n620 220\n255\n" + 3 * 620 * 220)
+      svg <- readFile (dir </> "run.svg")
+      svg `shouldSatisfy` ("width=\"790\" height=\"220\" viewBox=\"0 0 790 220\"" `isInfixOf`)
+      Right l <- readLogFile (dir </> "run.jsonl")
+      lhBounds (rlHeader l) `shouldBe` LogRect 0 0 30 10
+    it "--scale still sets the scale, checked against the world's size" $ withTempDir $ \dir -> do
+      (_, _, r) <- captured (runSimWith (quick (dir </> "f")) { optSeconds = 0, optScale = Just 10 }
+                                        (Just [OTSize 30 10]) drive drive)
+      r `shouldBe` Right ()
+      frames <- framesIn (dir </> "f")
+      map (BS.take 15) frames `shouldBe` [BS.pack (map (toEnum . fromEnum) "P6\n320 120\n255\n")]
+      (_, err, r') <- captured (runSimWith (quick (dir </> "g")) { optScale = Just 100 } (Just [OTSize 100 10]) drive drive)
+      r' `shouldBe` Left (ExitFailure 2)
+      err `shouldSatisfy` ("--scale 100 makes the frame of this 100 by 10 m world 10020 pixels" `isInfixOf`)
+      validateOptionsIn notesBounds defaultSimOptions { optScale = Just 100 } `shouldBe` []
+    it "a world file with a bad size is reported with its line, simulating nothing" $ withTempDir $ \dir -> do
+      writeFile (dir </> "bad.world") "ball at 0 0\nsize 2000 10\n"
+      (_, err, r) <- captured (runSimWith (quick (dir </> "f")) { optWorldFile = Just (dir </> "bad.world") } Nothing drive drive)
+      r `shouldBe` Left (ExitFailure 2)
+      err `shouldSatisfy` ((dir </> "bad.world:2:6: expected a world side from 1 to 1000 metres") `isInfixOf`)
+    it "--dump-world writes the size, and --world reads it back" $ withTempDir $ \dir -> do
+      let wide = [OTSize 30 10, OTSimbotA 1 (Point2 (-12) 0) 0]
+      (dumped, _, _) <- captured (runSimWith defaultSimOptions { optDumpWorld = True } (Just wide) drive drive)
+      lines dumped `shouldSatisfy` elem "size 30.0 10.0"
+      writeFile (dir </> "w.world") dumped
+      _ <- captured (runSimWith (quick (dir </> "a")) (Just wide) drive drive)
+      _ <- captured (runSimWith (quick (dir </> "b")) { optWorldFile = Just (dir </> "w.world") } Nothing drive drive)
+      a <- framesIn (dir </> "a")
+      b <- framesIn (dir </> "b")
+      (length a, a == b) `shouldBe` (51, True)
   describe "memory" $
     it "a simulated hour with the SVG and trails runs in 40 MB of heap (+RTS -M40m)" $ withTempDir $ \dir -> do
       self <- getExecutablePath
@@ -185,7 +245,7 @@ spec = do
       parseSimArgs defaultSimOptions ["--seconds", "5", "--dt", "0.02", "--fps", "10", "--out", "x", "--scale", "30"
                                      , "--keys", "1.5:a,3:b", "--seed", "7", "--quiet", "--rays", "--trails"]
         `shouldBe` Right (RunWith defaultSimOptions
-          { optSeconds = 5, optDt = 0.02, optFps = 10, optOut = "x", optScale = 30
+          { optSeconds = 5, optDt = 0.02, optFps = 10, optOut = "x", optScale = Just 30
           , optSvg = Just ("x" </> "run.svg"), optReplay = Just ("x" </> "replay.html")
           , optKeys = [(1.5, 'a'), (3, 'b')], optSeed = 7, optQuiet = True, optRays = True, optTrails = True })
     it "reports an invalid world, naming the object, with exit code 2" $ do
@@ -238,7 +298,7 @@ spec = do
       parseSimArgs defaultSimOptions ["--seconds", "1e20"] `shouldSatisfy` either ("steps" `isInfixOf`) (const False)
       parseSimArgs defaultSimOptions ["--dt", "NaN"] `shouldSatisfy` either ("--dt" `isInfixOf`) (const False)
     it "a --scale beyond a sane frame" $
-      refused (\dir -> (quick dir) { optScale = 5000 }) ("--scale" `isInfixOf`)
+      refused (\dir -> (quick dir) { optScale = Just 5000 }) ("--scale" `isInfixOf`)
     it "a --dt that does not divide the frame period, saying which --fps would work" $ do
       refused (\dir -> (quick dir) { optDt = 0.03 }) ("--fps 33.333 or 16.667 would work" `isInfixOf`)
       validateOptions defaultSimOptions { optDt = 0.03, optFps = 33.333 } `shouldBe` []

@@ -94,8 +94,14 @@ boxesOverlap a b =
       eps          = 1e-9
   in abs (ax - bx) < ahw + bhw - eps && abs (ay - by) < ahh + bhh - eps
 
+-- | Anything but the world's size (which has no position).
+placedObject :: ObjectTemplate -> Bool
+placedObject o = case o of
+  OTSize {} -> False
+  _         -> True
+
 exampleFiles :: [FilePath]
-exampleFiles = ["worlds/arena.world", "worlds/soccer.world", "worlds/corridor.world"]
+exampleFiles = ["worlds/arena.world", "worlds/soccer.world", "worlds/corridor.world", "worlds/big.world"]
 
 ------------------------------------------------------------------------------
 -- Hostile files
@@ -170,6 +176,45 @@ genHostile = do
 
 spec :: Spec
 spec = do
+  describe "the world's size (size W H)" $ do
+    it "parses a size line anywhere, in any case, into an OTSize" $ do
+      parse "size 100 100\nball at 40 40\n" `shouldBe` Right [OTSize 100 100, OTBall (Point2 40 40)]
+      parse "ball at 0 0\nSIZE 30.5 1e1   # wide\n" `shouldBe` Right [OTBall (Point2 0 0), OTSize 30.5 10]
+    it "rejects sides out of range, non-finite or missing, with FILE:LINE:COLUMN" $ do
+      "size 0 10" `failsWith`
+        "w.world:1:6: expected a world side from 1 to 1000 metres after \"size\", found \"0\" (out of range)"
+      "\nsize 10 1001" `failsWith`
+        "w.world:2:9: expected a world side from 1 to 1000 metres after \"10\", found \"1001\" (out of range)"
+      "size -5 5" `failsWith`
+        "w.world:1:6: expected a world side from 1 to 1000 metres after \"size\", found \"-5\" (out of range)"
+      "size 0.99 5" `failsWith`
+        "w.world:1:6: expected a world side from 1 to 1000 metres after \"size\", found \"0.99\" (out of range)"
+      "size inf 5" `failsWith`
+        "w.world:1:6: expected a finite number after \"size\", found \"inf\" (NaN and infinities are not allowed)"
+      "size 10" `failsWith`
+        "w.world:1:8: expected a world side from 1 to 1000 metres after \"10\", found end of line"
+      "size 10 10 10" `failsWith` "w.world:1:12: expected end of line or a comment after \"10\", found \"10\""
+      "size ten 10" `failsWith`
+        "w.world:1:6: expected a number after \"size\", found \"ten\""
+    it "accepts the limits 1 and 1000" $
+      parse "size 1 1000" `shouldBe` Right [OTSize 1 1000]
+    it "rejects a second size line, naming the first" $
+      "size 20 20\nball at 0 0\n size 30 30\n" `failsWith` "w.world:3: the world's size is given twice (first on line 1)"
+    it "defaults to the notes' 10 by 10: an object beyond 5 m is outside without a size, inside with one" $ do
+      readWorldBytes "w.world" (BC.pack "ball at 7 0\n")
+        `shouldBe` Left "w.world:1: ball at (7.0, 0.0) (line 1): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"
+      readWorldBytes "w.world" (BC.pack "ball at 7 0\nsize 20 20\n") `shouldBe` Right [OTBall (Point2 7 0), OTSize 20 20]
+      readWorldBytes "w.world" (BC.pack "size 20 12\nball at 7 0\nsimbotA 1 at 0 5.9\n")
+        `shouldBe` Left "w.world:3: SimbotA 1 at (0.0, 5.9) (line 3): lies (partly) outside the world [-10.0, 10.0] x [-6.0, 6.0]"
+    it "does not count the size line among the objects" $
+      fmap length (parse (unlines ("size 200 200" : replicate maxObjects "ball at 0 0"))) `shouldBe` Right (maxObjects + 1)
+    it "renders a size as a size line" $
+      lines (renderWorld [OTSize 100 50, OTBall (Point2 1 2)])
+        `shouldBe` ["# afrp world file: 1 object (positions in metres, headings in radians)", "size 100.0 50.0", "ball at 1.0 2.0"]
+    it "round-trips worlds with a size exactly" $
+      withMaxSuccess 200 $ \(AWorld w) -> forAll ((,,) <$> choose (1, 1000) <*> choose (1, 1000) <*> choose (0, length w)) $
+        \(sw, sh, k) -> let w' = take k w ++ [OTSize sw sh] ++ drop k w
+                       in parseWorld "r.world" (renderWorld w') === Right w'
   describe "hostile world files" $ do
     it "rejects a number of a million digits within a second, with its position" $ do
       r <- forcedWithin 1 (parseB (BC.pack ("ball at 0 0\nball at " ++ replicate 1000000 '9' ++ " 0\n")))
@@ -356,10 +401,10 @@ spec = do
   describe "parseWorld: errors" $ do
     it "reports an unknown keyword" $
       "\nrobot 1 at 0 0" `failsWith`
-        "w.world:2:1: expected an object keyword (simbotA, simbotB, wall, block or ball), found \"robot\""
+        "w.world:2:1: expected an object keyword (simbotA, simbotB, wall, block or ball) or size, found \"robot\""
     it "reports an unknown keyword after leading whitespace" $
       "   Blocks at 0 0" `failsWith`
-        "w.world:1:4: expected an object keyword (simbotA, simbotB, wall, block or ball), found \"Blocks\""
+        "w.world:1:4: expected an object keyword (simbotA, simbotB, wall, block or ball) or size, found \"Blocks\""
     it "reports a bad wall orientation" $
       "wall d at 0 0" `failsWith`
         "w.world:1:6: expected a wall orientation (v, vertical, h or horizontal) after \"wall\", found \"d\""
@@ -455,6 +500,14 @@ spec = do
 
   describe "the example worlds" $ do
     mapM_ exampleWorld exampleFiles
+    it "worlds/big.world is 100 m by 100 m with 100 robots of each type" $ do
+      r <- readWorldFile "worlds/big.world"
+      case r of
+        Left e  -> expectationFailure e
+        Right w -> do
+          worldSize w `shouldBe` Just (100, 100)
+          length [ () | OTSimbotA {} <- w ] `shouldBe` 100
+          length [ () | OTSimbotB {} <- w ] `shouldBe` 100
     it "worlds/arena.world has three robots of each type" $ do
       r <- readWorldFile "worlds/arena.world"
       case r of
@@ -476,5 +529,6 @@ spec = do
         case r of
           Left e  -> expectationFailure e
           Right w ->
-            [ (objectName a, objectName b) | (a : rest) <- tails w, b <- rest, boxesOverlap a b ]
+            [ (objectName a, objectName b) | (a : rest) <- tails (filter placedObject w), b <- rest
+                                           , boxesOverlap a b ]
               `shouldBe` []

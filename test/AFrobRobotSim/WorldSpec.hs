@@ -24,6 +24,37 @@ straight v _ = constant (mrFinalize (ddVelDiff v v))
 
 spec :: Spec
 spec = do
+  describe "world size (OTSize)" $ do
+    it "worldBounds: the notes' 10 by 10 without a size, W by H centred on the origin with one" $ do
+      worldBounds [] `shouldBe` notesBounds
+      worldBounds [OTBall (Point2 0 0), OTSize 30 10] `shouldBe` Bounds (-15) (-5) 15 5
+      worldBoundsOr (Bounds 0 0 4 2) [] `shouldBe` Bounds 0 0 4 2
+      worldBoundsOr (Bounds 0 0 4 2) [OTSize 100 100] `shouldBe` Bounds (-50) (-50) 50 50
+      worldSize [OTSize 100 20, OTBall (Point2 0 0)] `shouldBe` Just (100, 20)
+    it "objects are checked against the size: inside a 100 m world, outside a 20 m one" $ do
+      problems [OTSize 100 100, OTSimbotA 1 (Point2 40 (-40)) 0] `shouldBe` []
+      problems [OTSimbotA 1 (Point2 40 (-40)) 0] `shouldSatisfy` any ("outside the world [-5.0, 5.0]" `isInfixOf`)
+      problems [OTSize 20 20, OTBall (Point2 11 0)]
+        `shouldBe` ["ball at (11.0, 0.0): lies (partly) outside the world [-10.0, 10.0] x [-10.0, 10.0]"]
+      problems [OTSize 30 10, OTBall (Point2 14 0), OTBall (Point2 0 4.9)]
+        `shouldSatisfy` (\ps -> length ps == 1 && "(0.0, 4.9)" `isInfixOf` head ps)
+    it "a size wins over the bounds validateWorldIn is given" $
+      validateWorldIn (Bounds 0 0 1 1) [OTSize 10 10, OTBall (Point2 (-3) 3)] `shouldBe` Right ()
+    it "rejects a second size, naming both" $
+      problems [OTSize 20 20, OTBall (Point2 0 0), OTSize 30 30]
+        `shouldBe` ["world size 30.0 by 30.0: a world has one size, and it was given by world size 20.0 by 20.0"]
+    it "rejects sides that are not finite or not from 1 to 1000 m, and accepts 1 and 1000" $ do
+      let badSize w h = problems [OTSize w h] `shouldSatisfy` (\ps -> length ps == 1)
+      mapM_ (uncurry badSize) [ (0, 10), (10, -5), (0.5, 10), (10, 1000.5), (1 / 0, 10), (10, 0 / 0), (-(1 / 0), 10) ]
+      problems [OTSize 1 1000] `shouldBe` []
+      problems [OTSize 0 10] `shouldBe` ["world size 0.0 by 10.0: each side must be between 1.0 and 1000.0 metres"]
+    it "a robot in a 100 m world drives far beyond the notes' walls and stops at its own" $ do
+      let far = simulate 0.01 [OTSize 100 100, OTSimbotA 1 (Point2 0 0) 0] (straight 1) (straight 1) !! 3000
+          Point2 x _ = robotPos (head (wsRobots far))
+      x `shouldSatisfy` (> 20)
+      let end = simulate 0.01 [OTSize 100 100, OTSimbotA 1 (Point2 45 0) 0] (straight 1) (straight 1) !! 2000
+          Point2 x' _ = robotPos (head (wsRobots end))
+      x' `shouldSatisfy` (\v -> v > 49 && v <= 50 - simbotDiameter / 2 + 1e-6)
   describe "validateWorld: overlaps at time 0" $ do
     let robot = OTSimbotA 1 (Point2 0 0) 0
         pairs =

@@ -30,7 +30,9 @@ svgMaxPoints = 2000
 -- and robots, each robot's whole trajectory as one @\<polyline\>@ in its
 -- 'typeColour' (at most 'svgMaxPoints' points) and a start marker at its
 -- first position; a legend (colour, type and id of each robot) is to the
--- right of the world. The picture's coordinates are the frame's pixels
+-- right of the world. The legend lists as many robots as fit beside the
+-- world (at least 10), then how many more there are, so that a picture of
+-- many robots is no taller than its frame. The picture's coordinates are the frame's pixels
 -- (see 'worldToPixel'); it is 170 pixels wider than a frame. The text
 -- starts with @\"\<svg\"@ and ends with @\"\<\/svg\>\\n\"@. With no snapshots,
 -- only the walls and blocks are drawn.
@@ -62,7 +64,11 @@ renderSVG style scene states = concat $
     legendW  = 170 :: Int
     rowH     = 18 :: Int
     totalW   = w + legendW
-    totalH   = max h (40 + rowH * (length robots0 + 1))
+    nRobots  = length robots0
+    listed   = if nRobots <= fits then nRobots else fits - 1
+    fits     = max 10 ((h - 40) `div` rowH - 1)
+    rows     = if listed < nRobots then listed + 1 else listed
+    totalH   = max h (40 + rowH * (rows + 1))
     lx       = w + 12
     legend   =
       printf "<text x=\"%d\" y=\"%d\" font-family=\"sans-serif\" font-size=\"14\" font-weight=\"bold\" fill=\"%s\">Robots</text>\n"
@@ -74,8 +80,11 @@ renderSVG style scene states = concat $
               (lx + 12) y (hex col) (hex (darken 0.5 col))
           , printf "<text x=\"%d\" y=\"%d\" font-family=\"sans-serif\" font-size=\"12\" fill=\"%s\">%s %d</text>\n"
               (lx + 32) (y + 4) (hex labelColour) (escape (robotType r)) (robotId r) ]
-        | (n, r, col) <- zip3 [1 ..] robots0 colours0, let y = 24 + rowH * n ]
-      ++ (let y = 24 + rowH * (length robots0 + 1) in
+        | (n, r, col) <- take listed (zip3 [1 ..] robots0 colours0), let y = 24 + rowH * n ]
+      ++ [ printf "<text x=\"%d\" y=\"%d\" font-family=\"sans-serif\" font-size=\"12\" fill=\"%s\">... and %d more</text>\n"
+             (lx + 32) (24 + rowH * rows + 4) (hex labelColour) (nRobots - listed)
+         | listed < nRobots ]
+      ++ (let y = 24 + rowH * (rows + 1) in
           [ printf "<circle cx=\"%d\" cy=\"%d\" r=\"4\" fill=\"%s\" stroke=\"%s\" stroke-width=\"2\"/>\n"
               (lx + 12) y (hex headingColour) (hex labelColour)
           , printf "<text x=\"%d\" y=\"%d\" font-family=\"sans-serif\" font-size=\"12\" fill=\"%s\">start</text>\n"

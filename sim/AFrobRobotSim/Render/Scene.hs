@@ -12,6 +12,7 @@ module AFrobRobotSim.Render.Scene
     Scene (..)
   , RenderStyle (..)
   , defaultRenderStyle
+  , sceneExtent
   , frameSize
   , frameMargin
   , worldToPixel
@@ -63,7 +64,7 @@ import           AFrobRobotSim.World
 -- blocks are taken from the template; the robots and balls (and anything
 -- else that moves) from each 'WorldState'.
 data Scene = Scene
-  { sceneBounds :: Bounds          -- ^ the world's extent (as in 'AFrobRobotSim.SimConfig')
+  { sceneBounds :: Bounds          -- ^ the world's extent (as in 'AFrobRobotSim.SimConfig'), unless the template has an 'OTSize', which wins ('sceneExtent')
   , sceneWorld  :: WorldTemplate   -- ^ the world that was simulated
   } deriving (Eq, Show)
 
@@ -99,8 +100,13 @@ frameSize :: RenderStyle -> Scene -> (Int, Int)
 frameSize style scene =
   (2 * frameMargin + worldPixels s (x1 - x0), 2 * frameMargin + worldPixels s (y1 - y0))
   where
-    Bounds x0 y0 x1 y1 = sceneBounds scene
+    Bounds x0 y0 x1 y1 = sceneExtent scene
     s = styleScale style
+
+-- | The extent of the world pictured: the template's 'OTSize' if it has
+-- one, else 'sceneBounds' ('worldBoundsOr').
+sceneExtent :: Scene -> Bounds
+sceneExtent scene = worldBoundsOr (sceneBounds scene) (sceneWorld scene)
 
 -- | The image point of a world point (see the module documentation): the
 -- point lies in the pixel @(floor px, floor py)@.
@@ -110,7 +116,7 @@ worldToPixel style scene = applyMap (imageMapOf style scene)
 imageMapOf :: RenderStyle -> Scene -> ImageMap
 imageMapOf style scene = ImageMap s (m - x0 * s) (m + y1 * s)
   where
-    Bounds x0 _ _ y1 = sceneBounds scene
+    Bounds x0 _ _ y1 = sceneExtent scene
     s = styleScale style
     m = fromIntegral frameMargin
 

@@ -21,6 +21,9 @@
   var scale = Math.min(620 / b.width, 620 / b.height);
   canvas.width = Math.round(b.width * scale + 2 * margin);
   canvas.height = Math.round(b.height * scale + 2 * margin);
+  // In a big world a robot is a few pixels across: its rim, heading mark and
+  // id shrink with it (full size from 30 px/m up, the notes' world included).
+  var fine = Math.min(1, scale / 30);
 
   var state = { frame: 0, playing: false, selected: -1, speed: 1, simTime: 0, last: null };
 
@@ -79,7 +82,7 @@
         ctx.lineWidth = 1; ctx.strokeStyle = rgb(blend(0.5, typeColour(r.type), background)); ctx.stroke();
       });
     }
-    f.balls.forEach(function (p) { disc(p[0], p[1], header.ballRadius, 'rgb(255,140,0)', 'rgb(170,90,0)', 1.5); });
+    f.balls.forEach(function (p) { disc(p[0], p[1], header.ballRadius, 'rgb(255,140,0)', 'rgb(170,90,0)', 1.5 * fine); });
     f.robots.forEach(function (r, i) {
       var here = toCanvas(r.x, r.y);
       if ($('rays').checked) {
@@ -100,11 +103,11 @@
     f.robots.forEach(function (r, i) {
       var info = header.robots[i], col = colours[i];
       disc(r.x, r.y, info.radius, rgb(r.bumper ? darken(0.6, col) : col),
-           r.bumper ? 'rgb(0,0,0)' : rgb(darken(0.5, col)), i === state.selected ? 4 : 2);
+           r.bumper ? 'rgb(0,0,0)' : rgb(darken(0.5, col)), i === state.selected ? Math.max(2, 4 * fine) : 2 * fine);
       line(toCanvas(r.x, r.y), toCanvas(r.x + info.radius * Math.cos(r.heading), r.y + info.radius * Math.sin(r.heading)),
-           'rgb(255,255,255)', 3);
+           'rgb(255,255,255)', 3 * fine);
       var p = toCanvas(r.x, r.y);
-      ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = '12px sans-serif';
+      ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = Math.round(Math.max(8, 12 * fine)) + 'px sans-serif';
       ctx.fillText(String(info.id), p[0] + info.radius * scale + 2, p[1] - info.radius * scale);
     });
     $('time').textContent = 't = ' + f.t.toFixed(2) + ' s  (frame ' + state.frame + ' of ' + (frames.length - 1) + ')';
