@@ -15,6 +15,9 @@
 -- * @afrp-bench --sim-table@ does that for 1, 10, 100 and 1000 robots;
 -- * @afrp-bench --balls N STEPS@ runs N balls in a crowd ('ballCrowd')
 --   for that many steps and prints the speed relative to real time;
+-- * @afrp-bench --swarm N COVERAGE SECONDS@ runs N Braitenberg avoiders
+--   covering that fraction of the floor for that many simulated seconds
+--   ("Swarm", the afrp side of bench/enki.sh);
 -- * @afrp-bench --render FRAMES@ renders that many 600x600 PPM frames of
 --   the 10-robot world and prints the frames per second;
 -- * @afrp-bench --pairs R@ times every network and its baseline R times,
@@ -41,6 +44,7 @@ import           Networks
 import           Residency          (loopNetwork, loopNetworks)
 import           RenderBench        (prepareFrames, renderFrames)
 import           SimBench
+import           Swarm              (swarmReport)
 
 samples :: Int
 samples = 100000
@@ -65,6 +69,7 @@ main = do
     ["--sim-table"] -> mapM_ (\(n, steps) -> simReport n (steps * 5)) simSizes
     ["--render", frames] -> renderReport (read frames)
     ["--balls", n, steps] -> ballReport (read n) (read steps)
+    ["--swarm", n, cov, secs] -> swarmReport (read n) (read cov) (read secs)
     ["--pairs", r] -> mapM_ (pairsReport (read r)) networks
     ["--loop", name, n] -> withLoopNetwork name $ \nw -> print (sumNetwork nw (read n))
     _ -> withArgs args (defaultMainWith config

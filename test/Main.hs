@@ -58,6 +58,7 @@ import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified AFrobRobotSim.WorldSpec
 import qualified NetworksSpec
+import qualified SwarmSpec
 import qualified Ported.BouncingBallSpec
 import qualified Ported.CarTrackerSpec
 import           System.Environment (lookupEnv)
@@ -95,6 +96,7 @@ specs = hspec $ do
   describe "arrow laws"       AFRP.LawsSpec.spec
   describe "the notes, section 2" AFRP.NotesSpec.spec
   describe "benchmark networks" NetworksSpec.spec
+  describe "Swarm (the Enki comparison)" SwarmSpec.spec
   describe "AFrob.Angle"             AFrob.AngleSpec.spec
   describe "AFrob.MergeableRecord"   AFrob.MergeableRecordSpec.spec
   describe "AFrob.RobotIO"           AFrob.RobotIOSpec.spec
