@@ -18,6 +18,9 @@
 -- * @afrp-bench --swarm N COVERAGE SECONDS@ runs N Braitenberg avoiders
 --   covering that fraction of the floor for that many simulated seconds
 --   ("Swarm", the afrp side of bench/enki.sh);
+-- * @afrp-bench --packed N STEPS@ runs N wanderers packed in the 10 m
+--   world ('packedWorld') and prints robot-steps per second and the speed
+--   relative to real time, by the wall clock (all cores with @+RTS -N@);
 -- * @afrp-bench --render FRAMES@ renders that many 600x600 PPM frames of
 --   the 10-robot world and prints the frames per second;
 -- * @afrp-bench --pairs R@ times every network and its baseline R times,
@@ -70,6 +73,7 @@ main = do
     ["--render", frames] -> renderReport (read frames)
     ["--balls", n, steps] -> ballReport (read n) (read steps)
     ["--swarm", n, cov, secs] -> swarmReport (read n) (read cov) (read secs)
+    ["--packed", n, steps] -> packedReport (read n) (read steps)
     ["--pairs", r] -> mapM_ (pairsReport (read r)) networks
     ["--loop", name, n] -> withLoopNetwork name $ \nw -> print (sumNetwork nw (read n))
     _ -> withArgs args (defaultMainWith config
@@ -112,6 +116,21 @@ simReport n steps = do
       simT = fromIntegral steps * simDtBench
   printf "%5d robots x %6d steps: %10.0f robot-steps/s, %8.1fx real time (CPU %.3f s, wall %.3f s, checksum %.6g)\n"
     n steps (fromIntegral (n * steps) / cpu) (simT / cpu) cpu wall s
+
+-- | Time @n@ wanderers of 'packedWorld' for @steps@ steps.
+packedReport :: Int -> Int -> IO ()
+packedReport n steps = do
+  robots <- evaluate (packedRobots n)
+  w0 <- getMonotonicTime
+  c0 <- getCPUTime
+  s  <- evaluate (runPacked n steps)
+  c1 <- getCPUTime
+  w1 <- getMonotonicTime
+  let cpu  = fromIntegral (c1 - c0) / 1e12 :: Double
+      wall = w1 - w0
+      simT = fromIntegral steps * simDtBench
+  printf "%5d packed wanderers x %6d steps: %10.0f robot-steps/s, %8.1fx real time (CPU %.3f s, wall %.3f s, checksum %.6g)\n"
+    robots steps (fromIntegral (robots * steps) / wall) (simT / wall) cpu wall s
 
 -- | Time @n@ balls of 'ballCrowd' for @steps@ steps.
 ballReport :: Int -> Int -> IO ()

@@ -17,6 +17,10 @@ module SimBench
   , simDtBench
   , ballCrowd
   , runBallBench
+  , packedWorld
+  , packedRobots
+  , wanderer
+  , runPacked
   ) where
 
 import           Data.List     (foldl', sortOn)
@@ -46,9 +50,14 @@ benchConfig n = defaultSimConfig { simDt = simDtBench, simBounds = benchBounds n
 -- one), and the robots on a jittered lattice, clear of the obstacles and
 -- of each other. Deterministic.
 benchWorld :: Int -> WorldTemplate
-benchWorld n = obstacles ++ take n robots
+benchWorld n = latticeWorld (worldSide n) n
+
+-- | @latticeWorld side n@: the obstacles of 'benchWorld' over a world of
+-- the given side and as many of @n@ robots as fit on its jittered lattice
+-- (at least 0.53 m apart), clear of the obstacles.
+latticeWorld :: Double -> Int -> WorldTemplate
+latticeWorld side n = obstacles ++ take n robots
   where
-    side  = worldSide n
     h     = side / 2
     tiles = max 2 (floor (side / 5)) :: Int
     tile  = side / fromIntegral tiles
@@ -151,3 +160,48 @@ runBallBench n steps =
          (take steps (simulate simDtBench (ballCrowd n) drive drive))
   where
     drive _ = constant (mrFinalize (ddVelTR 1 0.2))
+
+-- | @n@ robots (at most about 130) packed in the notes' 10 m world with
+-- the 8 obstacles of 'benchWorld': 100 robots cover a fifth of the floor,
+-- about 0.7 m apart, so that every tracker sees most of the others.
+packedWorld :: Int -> WorldTemplate
+packedWorld = latticeWorld 10
+
+-- | How many robots 'packedWorld' holds (forcing the world).
+packedRobots :: Int -> Int
+packedRobots n = length [ () | o <- packedWorld n, isRobot o ]
+  where isRobot o = case o of
+          OTSimbotA {} -> True
+          OTSimbotB {} -> True
+          _            -> False
+
+-- | A wanderer that senses what is around it: drives on, slowing down for
+-- what its front range finder sees and for the nearest robot the tracker
+-- reports, turns away from every robot within 1.2 m (the tracker's list,
+-- read as far as that), towards the freer side (left and right range
+-- finders) when blocked ahead, and backs away turning when stuck. Every
+-- reading reaches the wheels.
+wanderer :: SimbotController
+wanderer props = proc sbi -> do
+  let f = rfFront sbi
+      l = rfLeft sbi
+      r = rfRight sbi
+      others = aotOtherRobots sbi
+      near  = case others of
+        (_, _, _, d) : _ -> d
+        []               -> 4
+      close = takeWhile (\(_, _, _, d) -> d < 1.2) others
+      curve = 0.1 * fromIntegral (rpId props `mod` 3 - 1)
+      dodge = max (-1) (min 1 (sum [ negate (signum a) * (1.2 - d) | (_, _, a, d) <- close ]))
+      free  | f < 0.6    = if l > r then 1 else -1
+            | otherwise  = 0
+      speed = 0.4 * min 1 f * min 1 (near / 1.2)
+  returnA -< mrFinalize (if rsIsStuck sbi then ddVelTR (-0.1) 0.8
+                                          else ddVelTR speed (curve + dodge + free))
+
+-- | Run @n@ wanderers of 'packedWorld' for @steps@ steps and return a
+-- checksum of every robot's position at every step.
+runPacked :: Int -> Int -> Double
+runPacked n steps =
+  foldl' (\acc ws -> foldl' (\a r -> let Point2 x y = robotPos r in a + x + y) acc (wsRobots ws)) 0
+         (take steps (simulateWith defaultSimConfig { simDt = simDtBench } (packedWorld n) wanderer wanderer))

@@ -1,6 +1,14 @@
 {-# LANGUAGE BangPatterns        #-}
 {-# LANGUAGE UnboxedTuples       #-}
 {-# LANGUAGE ScopedTypeVariables #-}
+-- The chunks of a parallel step are blackholed as soon as a thread enters
+-- them, so that a thread that needs a chunk another is computing waits for
+-- it instead of computing it again.
+{-# OPTIONS_GHC -feager-blackholing #-}
+-- No full laziness: it would float the reading of the number of
+-- capabilities ('capabilitiesNow') out of its function as a constant,
+-- read once for the whole program.
+{-# OPTIONS_GHC -fno-full-laziness #-}
 -- |
 -- Module      : AFrobRobotSim.Simulator
 -- Description : The pure, deterministic simulation engine.
@@ -11,6 +19,23 @@
 -- before anything moves), then the robots move (in template order), then
 -- the balls. The engine is pure Haskell: the same inputs give the same
 -- snapshots, bit for bit.
+--
+-- = Every core
+--
+-- When the program runs on several capabilities (@+RTS -N@, in a program
+-- built @-threaded@), each step's sensing and controller steps, the bulk
+-- of the work, are computed in parallel: the robots are cut into
+-- consecutive chunks (about four per capability, at least 8 robots
+-- each), every chunk but the first is sparked ('GHC.Conc.par'), the last
+-- first (another capability takes the oldest spark), and the stepping
+-- thread then forces the chunks in template order, computing those no
+-- other capability has taken, so that the two meet in the middle. Each chunk is a pure
+-- value, and the step's lists are the chunks' lists concatenated in
+-- order, so the snapshots are the same, bit for bit, on any number of
+-- cores; a failing controller fails the step with the error of the first
+-- failing robot in template order, as on one core. The robots then move,
+-- and the balls, on the stepping thread (a robot's move depends on the
+-- moves of those before it). On one capability no spark is made.
 module AFrobRobotSim.Simulator
   ( -- * Running
     simulate
@@ -30,6 +55,8 @@ import           GHC.IO                  (IO (..), unsafeDupablePerformIO)
 import           Data.Bits               (shiftR, xor)
 import           Data.List               (sortOn)
 import           Data.Word               (Word64)
+import           GHC.Conc                (getNumCapabilities, pseq)
+import qualified GHC.Conc                as Conc
 import           Text.Printf             (printf)
 
 import           AFRP
@@ -147,15 +174,10 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
           ks                                    -> (Nothing, ks)
         -- Every controller's step, in template order, all of them at once
         -- when any is needed (a failing controller fails the step: its
-        -- messages and the next state, never the robots' positions now).
-        -- Strict loops here and below: the step needs every element, and
-        -- lazy zips would build a thunk per robot and list.
-        -- The loop gives the steps and each robot with its drive command.
-        (stepped, drives) = case stepAll 0 (enAgents en) (enRobots en) of (# ss, ds #) -> (ss, ds)
-        stepAll !i (a : as) (r : rs) = case stepAgent t a (senseRobot ctx i (agOdo a) key) of
-          st@(!o, !_) -> case stepAll (i + 1) as rs of
-            (# ss, ds #) -> (# st : ss, (r, soDrive o) : ds #)
-        stepAll _  _        _        = (# [], [] #)
+        -- messages and the next state, never the robots' positions now),
+        -- with each robot and its drive command.
+        (stepped, drives) = stepEvery (enAgents en) (enRobots en)
+          (\i a -> stepAgent t a (senseRobot ctx i (agOdo a) key))
         snapshot = WorldState
           { wsTime     = t
           , wsRobots   = robotStates (enRobots en) (enAgents en)
@@ -220,6 +242,52 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         exact (a : as') (r : rs) ((_, fut) : st) =
           let !rest = exact as' rs st in Agent (agProps a) (Right fut) (rPos r, rHeading r) : rest
         exact _ _ _ = []
+
+-- Every robot's controller step and its drive command, in template order,
+-- given a robot's step by its number and agent: all of them at once, when
+-- either list is first needed. On several capabilities the robots are cut
+-- into chunks computed in parallel (see the module's documentation); each
+-- chunk, in weak head normal form, has computed every step in it.
+stepEvery :: [Agent] -> [Robot] -> (Int -> Agent -> (SimbotOutput, FutureSF SimbotInput SimbotOutput))
+          -> ([(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, DriveCommand)])
+stepEvery agents robots stepOne
+  | caps <= 1 || n < 2 * minChunk = case stepRun 0 agents robots of Chunk ss ds -> (ss, ds)
+  | otherwise = sparkAll (reverse (drop 1 chunks)) `pseq` forceAll chunks `pseq`
+                (concatMap chunkSteps chunks, concatMap chunkDrives chunks)
+  where
+    n    = length robots
+    caps = capabilitiesNow n
+    size = max minChunk ((n + 4 * caps - 1) `div` (4 * caps))
+    chunks = cut 0 agents robots
+    cut !i as rs
+      | null as || null rs = []
+      | otherwise = let (as1, as2) = splitAt size as
+                        (rs1, rs2) = splitAt size rs
+                    in stepRun i as1 rs1 : cut (i + size) as2 rs2
+    sparkAll = foldr (\c r -> c `Conc.par` r) ()
+    forceAll = foldr (\c r -> c `seq` r) ()
+    -- Strict loops: a step needs every element, and lazy zips would build
+    -- a thunk per robot and list.
+    stepRun !i as rs = case go i as rs of (# ss, ds #) -> Chunk ss ds
+    go !i (a : as) (r : rs) = case stepOne i a of
+      st@(!o, !_) -> case go (i + 1) as rs of
+        (# ss, ds #) -> (# st : ss, (r, soDrive o) : ds #)
+    go _  _        _        = (# [], [] #)
+
+-- The number of capabilities now, read at every step (a program may change
+-- it while it runs); the argument is only there to make it a function.
+capabilitiesNow :: Int -> Int
+capabilitiesNow k = unsafeDupablePerformIO (k `seq` getNumCapabilities)
+{-# NOINLINE capabilitiesNow #-}
+
+-- The controller steps and drive commands of consecutive robots.
+data Chunk = Chunk { chunkSteps  :: [(SimbotOutput, FutureSF SimbotInput SimbotOutput)]
+                   , chunkDrives :: [(Robot, DriveCommand)] }
+
+-- | The fewest robots whose steps are sparked together: 8 (a spark costs
+-- about as much as a robot's step).
+minChunk :: Int
+minChunk = 8
 
 -- | @blaming f v@ is @v@, with an exception that its evaluation raises
 -- turned into @f e@: 'Control.Exception.mapException', but leaving

@@ -1,8 +1,12 @@
 {-# LANGUAGE Arrows #-}
+-- Every run of "every core" must be computed where it stands, not shared
+-- with an equal expression computed on another number of capabilities.
+{-# OPTIONS_GHC -fno-full-laziness -fno-cse #-}
 -- | The simulation engine, checked against hand-computed physics.
 module AFrobRobotSim.SimulatorSpec (spec) where
 
-import           Control.Exception (AsyncException (..), ErrorCall (..), evaluate, throw)
+import           Control.Exception (AsyncException (..), ErrorCall (..), bracket, evaluate, throw, try)
+import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
 import           Data.List         (isInfixOf)
 import           Test.Hspec        hiding (after)
 
@@ -199,6 +203,46 @@ spec = do
           two = take 6001 (simulateWith defaultSimConfig world wander wander)
       one == two `shouldBe` True
       map robotPos (wsRobots (last one)) `shouldNotBe` map robotPos (wsRobots (head one))
+
+  describe "every core" $ do
+    -- 60 robots (eight chunks on two capabilities) packed in the 10 m
+    -- world with balls, noisy odometry and keys, every controller reading
+    -- its range finders, tracker and bumper and printing messages
+    let crowd = [ (if even k then OTSimbotA else OTSimbotB) (k `div` 2 + 1)
+                    (Point2 (-4.3 + 0.75 * fromIntegral (k `mod` 12)) (-4.3 + 1.4 * fromIntegral (k `div` 12)))
+                    (fromIntegral k)
+                | k <- [0 .. 59 :: Int] ]
+             ++ [ OTBall (Point2 (-3.9 + 0.75 * fromIntegral i) 3.2) | i <- [0 .. 9 :: Int] ]
+             ++ [OTBlock (Point2 3 4.4), OTHWall (Point2 (-3) 4.5)]
+        sensing rps = proc sbi -> do
+          t <- localTime -< ()
+          let near = take 3 (aotOtherRobots sbi)
+              turn = sum [ if a > 0 then -0.3 else 0.3 | (_, _, a, d) <- near, d < 1 ]
+              v    = rpWSMax rps / 3 * min 1 (rfFront sbi)
+          ping <- repeatedly 0.5 () -< ()
+          returnA -< mrFinalize (ddVelTR (if rsIsStuck sbi then -0.05 else v) (turn + 0.2 * sin (t + rfLeft sbi))
+                                 `mrMerge` tcoPrintMessage (tag ping (show (rfRight sbi, near, take 1 (aotBalls sbi), tciKey sbi))))
+        cfg = defaultSimConfig { simOdometryNoise = 0.02, simSeed = 7, simKeys = [(0.5, 'a'), (1.5, 'b')] }
+        withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
+    it "gives the same snapshots, bit for bit, on one capability and on two" $ do
+      let run _ = show (take 400 (simulateWith cfg crowd sensing sensing))
+      one <- withCaps 1 (let r = run (1 :: Int) in evaluate (length r) >> pure r)
+      two <- withCaps 2 (let r = run (2 :: Int) in evaluate (length r) >> pure r)
+      length two `shouldBe` length one
+      two `shouldBe` one
+      length (concatMap wsMessages (take 400 (simulateWith cfg crowd sensing sensing))) `shouldSatisfy` (> 400)
+    it "reports the failing controller that comes first in template order, as on one core" $ do
+      let failing rps = proc sbi -> do
+            t <- localTime -< ()
+            o <- sensing rps -< sbi
+            returnA -< if t >= 1 && rpId rps `elem` [9, 27] then error "boom" else o
+          failure k = withCaps k (try (evaluate (length (show (take 200 (simulateWith cfg crowd failing failing))))))
+      one <- failure 1
+      two <- failure 2
+      let described = either (\e -> Just (ceRobotType e, ceRobotId e, ceTime e)) (const Nothing)
+      described one `shouldBe` Just ("SimbotA", 9, 1)
+      withCaps 2 ((> 1) <$> getNumCapabilities) `shouldReturn` True
+      described two `shouldBe` described one
 
   describe "bad input" $ do
     it "rejects a robot outside the walls, naming it" $
