@@ -5,17 +5,21 @@
 #   bench/enki.sh                 (each case run REPEAT times, best kept)
 # Environment: REPEAT (default 3); SECONDS_SMALL, SECONDS_PACKED,
 # SECONDS_LARGE: simulated seconds of the three cases (60, 5, 2).
-# Installs Debian's libenki-dev if it is missing (apt-get, as root or via
-# sudo) and builds bench/enki/swarm.cpp with g++ into a temporary
+# Installs Debian's libenki-dev and g++ if they are missing (apt-get, as
+# root or via sudo) and builds bench/enki/swarm.cpp with g++ into a temporary
 # directory: Enki is never a dependency of the library or of cabal.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repeat=${REPEAT:-3}
 
-if [ ! -f /usr/include/enki/PhysicalEngine.h ]; then
-  if [ "$(id -u)" -eq 0 ]; then apt-get install -y libenki-dev
-  else sudo apt-get install -y libenki-dev
-  fi
+missing=()
+[ -f /usr/include/enki/PhysicalEngine.h ] || missing+=(libenki-dev)
+command -v g++ >/dev/null || missing+=(g++)
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=(); [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  echo "== installing ${missing[*]}" >&2
+  "${sudo[@]}" apt-get install -y "${missing[@]}" >&2 \
+    || { "${sudo[@]}" apt-get update >&2 && "${sudo[@]}" apt-get install -y "${missing[@]}" >&2; }
 fi
 build=$(mktemp -d /tmp/afrp-enki.XXXXXX)
 trap 'rm -rf "$build"' EXIT
