@@ -59,6 +59,14 @@ spec = do
       let img = renderPPM wideStyle wide [] (snapshot [robotAt "SimbotA" 1 (Point2 12 0) 0 False] [])
       pixelAtWorld wideStyle wide img (Point2 11.9 0.1) `shouldBe` Just (robotColour "SimbotA" 0)
       pixelAtWorld wideStyle wide img (Point2 14.9 4.9) `shouldBe` Just backgroundColour
+    it "start markers shrink to a robot's size in a big world (at least 2 pixels), 5 pixels otherwise" $ do
+      let marker w st = renderSVG st (Scene notesBounds w) (take 2 (simulate 0.01 w (driveAt 0 0) (driveAt 0 0)))
+          big   = [OTSize 100 100, OTSimbotA 1 (Point2 0 0) 0]
+          small = [OTSimbotA 1 (Point2 0 0) 0]
+          at r  = "r=\"" ++ r ++ "\" fill=\"" ++ hexOf (typeColour "SimbotA") ++ "\""
+      occurrences (at "2.0") (marker big style { styleScale = 6 }) `shouldBe` 1
+      occurrences (at "3.0") (marker big style { styleScale = 12 }) `shouldBe` 1
+      occurrences (at "5.0") (marker small style) `shouldBe` 1
     it "a 30 by 10 world's SVG has the frame's height and a viewBox 170 pixels wider" $
       renderSVG wideStyle wide [] `shouldSatisfy` ("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"790\" height=\"220\" viewBox=\"0 0 790 220\">" `isPrefixOf`)
   describe "frameSize" $ do

@@ -16,6 +16,7 @@ import           Text.Printf                (printf)
 import           AFrobRobotSim.Render.Raster
 import           AFrobRobotSim.Render.Scene
 import           AFrobRobotSim.Simulator    (RobotState (..), WorldState (..))
+import           AFrobRobotSim.World        (simbotDiameter)
 
 -- | The most points of a trajectory in 'renderSVG': 2000. Longer ones are
 -- thinned to evenly spaced snapshots, always keeping the first and last.
@@ -29,7 +30,8 @@ svgMaxPoints = 2000
 -- with, below the balls
 -- and robots, each robot's whole trajectory as one @\<polyline\>@ in its
 -- 'typeColour' (at most 'svgMaxPoints' points) and a start marker at its
--- first position; a legend (colour, type and id of each robot) is to the
+-- first position (a disc of radius 5 pixels, or a robot's radius where
+-- that is smaller, but at least 2); a legend (colour, type and id of each robot) is to the
 -- right of the world. The legend lists as many robots as fit beside the
 -- world (at least 10), then how many more there are, so that a picture of
 -- many robots is no taller than its frame. The picture's coordinates are the frame's pixels
@@ -47,12 +49,15 @@ renderSVG style scene states = concat $
   ++ [ svgShape v sh
      | ok, (col, p : _) <- zip colours0 tracks
      , let (x, y) = toImg v p
-     , sh <- [SDisc col x y 5, SDisc headingColour x y 3] ]
+     , sh <- [SDisc col x y startR, SDisc headingColour x y (0.6 * startR)] ]
   ++ map (svgShape v) (maybe [] (snapshotShapes v) final)
   ++ legend
   ++ ["</svg>\n"]
   where
     v        = viewOf style scene
+    -- a start marker's radius: 5 pixels, or a robot's radius where that is
+    -- smaller (big worlds), at least 2
+    startR   = min 5 (max 2 (vScale v * simbotDiameter / 2))
     ok       = validScale v
     (w, h)   = vSize v
     final    = if null states then Nothing else Just (last states)
