@@ -39,6 +39,7 @@ import qualified AFrobRobotSim.LogSpec
 import qualified AFrobRobotSim.ReplayBrowserSpec
 import qualified AFrobRobotSim.ReplaySpec
 import qualified AFrobRobotSim.NotesSection3Spec
+import qualified AFrobRobotSim.OptionsSpec
 import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.BallsSpec
 import qualified AFrobRobotSim.RayCastSpec
@@ -109,6 +110,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Replay in Chromium" AFrobRobotSim.ReplayBrowserSpec.spec
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
+  describe "AFrobRobotSim.Options" AFrobRobotSim.OptionsSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
   describe "AFrobRobotSim.Balls" AFrobRobotSim.BallsSpec.spec
   describe "AFrobRobotSim.RayGrid" AFrobRobotSim.RayGridSpec.spec

@@ -117,31 +117,39 @@ data Command
 -- | Parse a command line on top of the given settings. Unknown flags,
 -- missing or malformed values and out-of-range numbers are errors whose
 -- message names the flag.
+--
+-- The SVG picture and the replay page that the command line does not name
+-- (with @--svg@, @--no-svg@, @--replay@ or @--no-replay@) and that are
+-- the given settings' default files in their output folder follow
+-- @--out@ into the new folder; the ones it names stay where it says,
+-- whatever the order of the flags (@--svg a.svg --out x@ and
+-- @--out x --svg a.svg@ both write @a.svg@).
 parseSimArgs :: SimOptions -> [String] -> Either String Command
-parseSimArgs o args = case args of
-  []                       -> check o
-  "--help" : _             -> Right ShowHelp
-  "-h" : _                 -> Right ShowHelp
-  "--no-frames" : rest     -> parseSimArgs o { optFrames = False } rest
-  "--frames" : rest        -> parseSimArgs o { optFrames = True } rest
-  "--no-svg" : rest        -> parseSimArgs o { optSvg = Nothing } rest
-  "--no-replay" : rest     -> parseSimArgs o { optReplay = Nothing } rest
-  "--quiet" : rest         -> parseSimArgs o { optQuiet = True } rest
-  "--dump-world" : rest    -> parseSimArgs o { optDumpWorld = True } rest
-  "--rays" : rest          -> parseSimArgs o { optRays = True } rest
-  "--trails" : rest        -> parseSimArgs o { optTrails = True } rest
-  flag : rest | Just set <- lookup flag valued -> case rest of
-    v : rest' -> set v >>= \o' -> parseSimArgs o' rest'
-    []        -> Left (flag ++ " needs a value (see --help)")
-  flag : _                 -> Left ("unknown argument " ++ show flag ++ " (see --help)")
+parseSimArgs o0 = go o0 False False
   where
-    valued =
+  -- the settings so far, and whether the SVG and the page were named
+  go o svgNamed pageNamed args = case args of
+    []                       -> check (relocated o svgNamed pageNamed)
+    "--help" : _             -> Right ShowHelp
+    "-h" : _                 -> Right ShowHelp
+    "--no-frames" : rest     -> go o { optFrames = False } svgNamed pageNamed rest
+    "--frames" : rest        -> go o { optFrames = True } svgNamed pageNamed rest
+    "--no-svg" : rest        -> go o { optSvg = Nothing } True pageNamed rest
+    "--no-replay" : rest     -> go o { optReplay = Nothing } svgNamed True rest
+    "--quiet" : rest         -> go o { optQuiet = True } svgNamed pageNamed rest
+    "--dump-world" : rest    -> go o { optDumpWorld = True } svgNamed pageNamed rest
+    "--rays" : rest          -> go o { optRays = True } svgNamed pageNamed rest
+    "--trails" : rest        -> go o { optTrails = True } svgNamed pageNamed rest
+    flag : rest | Just set <- lookup flag (valued o) -> case rest of
+      v : rest' -> set v >>= \o' -> go o' (svgNamed || flag == "--svg") (pageNamed || flag == "--replay") rest'
+      []        -> Left (flag ++ " needs a value (see --help)")
+    flag : _                 -> Left ("unknown argument " ++ show flag ++ " (see --help)")
+  valued o =
       [ ("--seconds", \v -> (\x -> o { optSeconds = x }) <$> number "--seconds" (>= 0) v)
       , ("--dt",      \v -> (\x -> o { optDt = x }) <$> number "--dt" (> 0) v)
       , ("--fps",     \v -> (\x -> o { optFps = x }) <$> number "--fps" (> 0) v)
       , ("--out",     \v -> if null v then Left "--out expects a folder name, got \"\""
-                             else Right o { optOut = v, optSvg = moved v <$> optSvg o
-                                          , optReplay = moved v <$> optReplay o })
+                             else Right o { optOut = v })
       , ("--scale",   \v -> (\x -> o { optScale = Just x }) <$> number "--scale" (> 0) v)
       , ("--keys",    \v -> (\ks -> o { optKeys = ks }) <$> parseKeys v)
       , ("--seed",    \v -> maybe (Left ("--seed expects a whole number, got " ++ show v))
@@ -155,17 +163,21 @@ parseSimArgs o args = case args of
       , ("--result",  \v -> Right o { optResult = Just v })
       , ("--param",   \v -> (\p -> o { optParams = setParam p (optParams o) }) <$> parseParam v)
       ]
-    -- a default output file follows the output folder
-    moved dir f | f `elem` [optOut o </> "run.svg", optOut o </> "replay.html"] = dir </> drop (length (optOut o) + 1) f
-                | otherwise = f
-    number flag ok v = case readMaybe (trim v) :: Maybe Double of
-      Just x | not (isNaN x || isInfinite x) && ok x -> Right x
-      _ -> Left (flag ++ " expects a " ++ what flag ++ " number, got " ++ show v)
-    what flag | flag `elem` ["--seconds", "--odometry-noise"] = "non-negative"
-              | otherwise                                      = "positive"
-    check opts = case validateOptions opts of
-      []   -> Right (RunWith opts)
-      errs -> Left (intercalate "; " errs)
+  -- the default files that were not named follow the output folder
+  relocated o svgNamed pageNamed = o
+    { optSvg    = if svgNamed  then optSvg o    else moved o <$> optSvg o
+    , optReplay = if pageNamed then optReplay o else moved o <$> optReplay o }
+  moved o f
+    | f `elem` [optOut o0 </> "run.svg", optOut o0 </> "replay.html"] = optOut o </> drop (length (optOut o0) + 1) f
+    | otherwise = f
+  number flag ok v = case readMaybe (trim v) :: Maybe Double of
+    Just x | not (isNaN x || isInfinite x) && ok x -> Right x
+    _ -> Left (flag ++ " expects a " ++ what flag ++ " number, got " ++ show v)
+  what flag | flag `elem` ["--seconds", "--odometry-noise"] = "non-negative"
+            | otherwise                                      = "positive"
+  check opts = case validateOptions opts of
+    []   -> Right (RunWith opts)
+    errs -> Left (intercalate "; " errs)
 
 -- | Parse a @--param@ value, @NAME=VALUE@: the name is what comes before
 -- the first @=@ and must not be empty; the value may be empty or hold @=@.

@@ -1,0 +1,35 @@
+-- | The command line of every 'runSim' program ("AFrobRobotSim.Options"):
+-- output files and the output folder, in any order.
+module AFrobRobotSim.OptionsSpec (spec) where
+
+import           Data.List        (permutations)
+import           Test.Hspec
+
+import           AFrobRobotSim.Options
+
+-- The SVG, the page and the output folder a command line gives.
+outputs :: [String] -> Either String (Maybe FilePath, Maybe FilePath, FilePath)
+outputs args = case parseSimArgs defaultSimOptions args of
+  Right (RunWith o) -> Right (optSvg o, optReplay o, optOut o)
+  Right ShowHelp    -> Left "help"
+  Left err          -> Left err
+
+spec :: Spec
+spec = describe "parseSimArgs" $ do
+  it "moves the default SVG and page into the folder --out names" $
+    outputs ["--out", "x"] `shouldBe` Right (Just "x/run.svg", Just "x/replay.html", "x")
+  it "keeps a file the command line names where it says, before or after --out" $ do
+    outputs ["--svg", "a.svg", "--out", "x"] `shouldBe` Right (Just "a.svg", Just "x/replay.html", "x")
+    outputs ["--out", "x", "--svg", "a.svg"] `shouldBe` Right (Just "a.svg", Just "x/replay.html", "x")
+  it "keeps a named file even when it is the default folder's default name" $
+    outputs ["--svg", "simbot-out/run.svg", "--replay", "simbot-out/replay.html", "--out", "x"]
+      `shouldBe` Right (Just "simbot-out/run.svg", Just "simbot-out/replay.html", "x")
+  it "--no-svg and --no-replay hold in any order with --out" $
+    outputs ["--no-svg", "--out", "x", "--no-replay"] `shouldBe` Right (Nothing, Nothing, "x")
+  it "gives the same outputs for every order of the flags" $ do
+    let groups = [["--out", "x"], ["--svg", "p/a.svg"], ["--no-replay"], ["--seconds", "2"], ["--out", "y"]]
+        -- the later --out wins, so keep the two in their order
+        ordered g = let outs = [ v | ["--out", v] <- g ] in outs == ["x", "y"]
+        results = [ outputs (concat g) | g <- permutations groups, ordered g ]
+    length results `shouldBe` 60
+    results `shouldSatisfy` all (== Right (Just "p/a.svg", Nothing, "y"))
