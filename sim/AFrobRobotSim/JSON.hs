@@ -20,15 +20,20 @@
 --   and cannot be encoded in UTF-8) are written as U+FFFD, the
 --   replacement character.
 -- * Numbers: an integral value of magnitude below 10^15 is written
---   without a fraction (@3@, not @3.0@); any other finite number with
---   enough digits to read back the same 'Double'. JSON has no NaN or
---   infinity: __a non-finite number is written as @null@__.
+--   without a fraction (@3@, not @3.0@); a number of magnitude below 10^9
+--   that is a whole number of millionths (as the run log rounds its
+--   values) in plain decimals, at most six, no trailing zero (@0.05@,
+--   @-1.570796@); any other finite number in Haskell's shortest form that
+--   reads back the same 'Double' (@1.0e-7@). Each reads back as the very
+--   'Double' written. JSON has no NaN or infinity: __a non-finite number
+--   is written as @null@__.
 -- * No whitespace between tokens; object members in the order given.
 module AFrobRobotSim.JSON
   ( -- * Values
     JSON (..)
     -- * Encoding
   , encodeJSON
+  , encodeJSONBuilder
   , encodeString
   , encodeNumber
     -- * Parsing
@@ -44,8 +49,10 @@ module AFrobRobotSim.JSON
   , asArray
   ) where
 
-import           Data.Char   (chr, isDigit, isHexDigit, ord, digitToInt)
-import           Numeric     (showHex)
+import qualified Data.ByteString.Builder    as B
+import qualified Data.ByteString.Lazy.Char8 as BLC
+import           Data.Char                  (chr, isDigit, isHexDigit, ord, digitToInt)
+import           Numeric                    (showHex)
 
 -- | A JSON value. An object keeps its members in order; a duplicate name
 -- is kept as it is (the lookups below take the first).
@@ -59,28 +66,66 @@ data JSON
   deriving (Eq, Show)
 
 -- | The JSON text of a value, on one line (see the module documentation
--- for escapes and numbers).
+-- for escapes and numbers): the characters of 'encodeJSONBuilder'.
 encodeJSON :: JSON -> String
-encodeJSON v = go v ""
+encodeJSON = BLC.unpack . B.toLazyByteString . encodeJSONBuilder
+
+-- | The JSON text of a value, on one line, as the bytes of a
+-- 'B.Builder' (ASCII: see the module documentation). Writing a log line
+-- this way costs a fraction of building it as a 'String' and writing
+-- that: a run log of 200 robots wrote 39 MB through 'String's in 3 s.
+encodeJSONBuilder :: JSON -> B.Builder
+encodeJSONBuilder = go
   where
-    go JNull         = showString "null"
-    go (JBool b)     = showString (if b then "true" else "false")
-    go (JNumber x)   = showString (encodeNumber x)
-    go (JString s)   = showString (encodeString s)
-    go (JArray xs)   = showChar '[' . commaSep (map go xs) . showChar ']'
-    go (JObject kvs) = showChar '{' . commaSep [ showString (encodeString k) . showChar ':' . go x
-                                               | (k, x) <- kvs ] . showChar '}'
-    commaSep []       = id
-    commaSep (f : fs) = f . foldr (\g acc -> showChar ',' . g . acc) id fs
+    go JNull         = B.string7 "null"
+    go (JBool b)     = B.string7 (if b then "true" else "false")
+    go (JNumber x)   = numberBuilder x
+    go (JString str) = stringBuilder str
+    go (JArray xs)   = B.char7 '[' <> commaSep (map go xs) <> B.char7 ']'
+    go (JObject kvs) = B.char7 '{' <> commaSep [ stringBuilder k <> B.char7 ':' <> go x | (k, x) <- kvs ]
+                       <> B.char7 '}'
+    commaSep []       = mempty
+    commaSep (b : bs) = b <> foldr (\c acc -> B.char7 ',' <> c <> acc) mempty bs
+
+-- A string's JSON text: as 'encodeString', with a string that needs no
+-- escape (the usual case: names, keys) copied as it is.
+stringBuilder :: String -> B.Builder
+stringBuilder str
+  | all plain str = B.char7 '"' <> B.string7 str <> B.char7 '"'
+  | otherwise     = B.string7 (encodeString str)
+  where plain c = c >= ' ' && c < '\DEL' && c /= '"' && c /= '\\' && c /= '<' && c /= '>' && c /= '&'
 
 -- | A number's JSON text: @null@ for NaN and the infinities; integral
--- values of magnitude below 10^15 without a fraction; otherwise Haskell's
--- shortest exact form (@0.1@, @1.0e-2@), which is valid JSON.
+-- values of magnitude below 10^15 without a fraction; whole numbers of
+-- millionths below 10^9 in plain decimals (@0.05@); otherwise Haskell's
+-- shortest exact form (@1.0e-7@), which is valid JSON.
 encodeNumber :: Double -> String
-encodeNumber x
-  | isNaN x || isInfinite x                           = "null"
-  | abs x < 1e15 && x == fromIntegral (round x :: Integer) = show (round x :: Integer)
-  | otherwise                                         = show x
+encodeNumber = BLC.unpack . B.toLazyByteString . numberBuilder
+
+-- A number's JSON text (see 'encodeNumber').
+numberBuilder :: Double -> B.Builder
+numberBuilder x
+  | isNaN x || isInfinite x = B.string7 "null"
+  | abs x < 1e15 && x == fromIntegral r = B.intDec r
+  | abs x < 1e9 && x == fromIntegral m / 1e6 = millionths m
+  | otherwise = B.string7 (show x)
+  where
+    -- (evaluated only below the bounds above, where they are exact)
+    r = round x :: Int
+    m = round (x * 1e6) :: Int
+
+-- A whole number of millionths, not a whole number, in decimals: the
+-- digits of @m / 10^6@ exactly, without trailing zeros. (The decimal is
+-- exactly @m / 10^6@, and @x@ is the 'Double' nearest to it, since IEEE
+-- division of the exact @m@ by @10^6@ rounds to nearest: so it reads back
+-- as @x@.)
+millionths :: Int -> B.Builder
+millionths m = sign <> B.intDec whole <> B.char7 '.' <> B.string7 (trimZeros (pad6 (show frac)))
+  where
+    sign          = if m < 0 then B.char7 '-' else mempty
+    (whole, frac) = abs m `quotRem` 1000000
+    pad6 ds       = replicate (6 - length ds) '0' ++ ds
+    trimZeros     = reverse . dropWhile (== '0') . reverse
 
 -- | A string's JSON text, quotes included (see the module documentation).
 encodeString :: String -> String

@@ -53,6 +53,7 @@ module AFrobRobotSim.Log
   ) where
 
 import           Control.Exception         (IOException, evaluate, try, uninterruptibleMask_)
+import qualified Data.ByteString.Char8     as BC
 import           Data.IORef
 import           Data.List                 (stripPrefix)
 import           System.IO
@@ -258,16 +259,12 @@ writeLogState (LogWriter cfg h ref) s = do
   let (st', mf) = logStep cfg st s
   case mf of
     Just f  -> do
-      line <- evaluate (forceString (encodeLogLine (LineFrame f)))
+      line <- evaluate (encodeLogLineBytes (LineFrame f))
       -- a whole line or none: Ctrl-C (an asynchronous exception) waits
       -- for the line to be written, so an interrupted run's log reads back
       let k' = k + 1
-      uninterruptibleMask_ (hPutStrLn h line >> hFlush h >> (k' `seq` writeIORef ref (st', k')))
+      uninterruptibleMask_ (BC.hPutStrLn h line >> hFlush h >> (k' `seq` writeIORef ref (st', k')))
     Nothing -> st' `seq` writeIORef ref (st', k)
-
--- A string evaluated to its last character.
-forceString :: String -> String
-forceString str = length str `seq` str
 
 -- | How many frame lines the writer has written.
 logWriterFrames :: LogWriter -> IO Int

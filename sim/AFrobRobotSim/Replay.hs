@@ -98,6 +98,10 @@ replayPageParts nonce = (concat
 fnv :: Word64 -> String -> Word64
 fnv = foldl' (\h c -> (h `xor` fromIntegral (ord c)) * 1099511628211)
 
+-- 'fnv' of a line's bytes (ASCII: the same as of its characters).
+fnvBytes :: Word64 -> BC.ByteString -> Word64
+fnvBytes = BC.foldl' (\h c -> (h `xor` fromIntegral (ord c)) * 1099511628211)
+
 fnvBasis :: Word64
 fnvBasis = 14695981039346656037
 
@@ -140,9 +144,8 @@ recordReplayState (ReplayRecorder cfg _ h ref) s = do
   Recording st n hash <- readIORef ref
   case logStep cfg st s of
     (st', Just f)  -> do
-      let line = encodeLogLine (LineFrame f)
-      !bytes <- evaluate (BC.pack line)
-      let !hash' = fnv hash line
+      !bytes <- evaluate (encodeLogLineBytes (LineFrame f))
+      let !hash' = fnvBytes hash bytes
       -- a whole line or none, whatever the moment of a Ctrl-C
       uninterruptibleMask_ (BC.hPutStrLn h bytes >> writeIORef ref (Recording st' (n + 1) hash'))
     (st', Nothing) -> writeIORef ref (Recording st' n hash)

@@ -64,9 +64,15 @@ spec = do
     it "writes non-finite numbers as null (fixed)" $
       map encodeNumber [0 / 0, 1 / 0, -1 / 0] `shouldBe` ["null", "null", "null"]
     it "writes integral values without a fraction, others exactly (fixed)" $
-      map encodeNumber [3, -2, 0.1, 1e15, 2.5e-3] `shouldBe` ["3", "-2", "0.1", "1.0e15", "2.5e-3"]
+      map encodeNumber [3, -2, 0.1, 1e15, 2.5e-3, -1.570796, 1e-7, 123456.000001, 1e9 + 0.5]
+        `shouldBe` ["3", "-2", "0.1", "1.0e15", "0.0025", "-1.570796", "1.0e-7", "123456.000001", "1.0000000005e9"]
     it "reads back every finite Double exactly (property)" $ property $ \x ->
       parseJSON (encodeNumber x) === Right (JNumber x)
+    it "writes whole numbers of millionths in plain decimals that read back exactly (property)" $
+      forAll (oneof [choose (-1000000, 1000000), choose (-1000000000000000, 1000000000000000)]) $ \n ->
+                       let x = fromIntegral (n :: Int) / 1e6 :: Double
+                           txt = encodeNumber x
+                       in (all (`notElem` "eE") txt, parseJSON txt) === (True, Right (JNumber x))
 
   describe "parseJSON" $ do
     it "accepts whitespace and the escapes of RFC 8259 (fixed)" $

@@ -28,9 +28,14 @@ module AFrobRobotSim.Log.Records
     -- * JSON
   , logLineJSON
   , encodeLogLine
+  , encodeLogLineBytes
   , logLineFromJSON
   , decodeLogLine
   ) where
+
+import qualified Data.ByteString          as BS
+import qualified Data.ByteString.Builder  as B
+import qualified Data.ByteString.Lazy     as BL
 
 import           AFrobRobotSim.JSON
 
@@ -198,6 +203,11 @@ scores ss = JObject [ (k, int n) | (k, n) <- ss ]
 -- | A line's JSON text, one line without its newline.
 encodeLogLine :: LogLine -> String
 encodeLogLine = encodeJSON . logLineJSON
+
+-- | One line's JSON text as bytes (ASCII), evaluated to the last one: the
+-- characters of 'encodeLogLine', made without a 'String'.
+encodeLogLineBytes :: LogLine -> BS.ByteString
+encodeLogLineBytes = BL.toStrict . B.toLazyByteString . encodeJSONBuilder . logLineJSON
 
 -- | Parse one line's text ('parseJSON', then 'logLineFromJSON').
 decodeLogLine :: String -> Either String LogLine
