@@ -46,10 +46,10 @@ module AFrobRobotSim.Run
 
 import           Control.Exception         (AsyncException (UserInterrupt), Exception (..), IOException, catch,
                                             evaluate, throwIO, try)
-import           Control.Monad             (forM, forM_, unless, when)
+import           Control.Monad             (forM, unless, when)
 import qualified Data.ByteString           as BS
 import           Data.IORef
-import           Data.List                 (foldl', isInfixOf, nub)
+import           Data.List                 (foldl', nub)
 import           Data.Maybe                (catMaybes, listToMaybe)
 import           GHC.Clock                 (getMonotonicTime)
 import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
@@ -104,15 +104,16 @@ runSimWith opts mworld rcA rcB = do
   if optDumpWorld opts
     then putStr (renderWorld world)
     else do
-      errs <- preflight (worldBounds world) opts
+      (errs, ffmpeg) <- preflight (worldBounds world) opts
       unless (null errs) $
         failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
-      simulateRun prog opts world rcA rcB
+      simulateRun prog opts ffmpeg world rcA rcB
 
 -- Every check of the options and the file system that can be made before
 -- simulating, in a world of the given extent; creates the output folder
--- when something goes there.
-preflight :: Bounds -> SimOptions -> IO [String]
+-- when something goes there. With the faults, ffmpeg's path when
+-- @--video@ asks for it.
+preflight :: Bounds -> SimOptions -> IO ([String], Maybe FilePath)
 preflight bounds opts = do
   let out   = optOut opts
       files = catMaybes [ (,) "--svg" <$> optSvg opts, (,) "--log" <$> optLog opts
@@ -129,7 +130,8 @@ preflight bounds opts = do
             ++ [ "two outputs go to the same file" | let fs = map snd files, length (nub fs) /= length fs ]
             ++ concat fileErrs
   -- the output folder is created only when nothing else is wrong
-  if inOut && null pre then checkFolder out else pure pre
+  errs <- if inOut && null pre then checkFolder out else pure pre
+  pure (errs, ffmpeg)
   where
     -- a file to write: not a folder, and its folder exists and is writable
     checkTarget flag f mdir = do
@@ -168,15 +170,25 @@ data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOEx
 
 -- | One output of a run: a consumer of the stream of world states (every
 -- step's, from time 0) with its own small strict state, and what it does
--- when the run ends (the messages of the writes that failed).
+-- when the run ends.
 data Sink = Sink
   { sinkStep   :: Int -> WorldState -> IO ()
-  , sinkFinish :: LogSummary -> IO [String]
+  , sinkFinish :: LogSummary -> IO Outcome
   }
+
+-- What a sink's end did: the messages of the writes that failed, and the
+-- lines to tell the user (\"wrote FILE\") of those that succeeded.
+data Outcome = Outcome [String] [String]
+
+instance Semigroup Outcome where
+  Outcome a b <> Outcome c d = Outcome (a ++ c) (b ++ d)
+
+instance Monoid Outcome where
+  mempty = Outcome [] []
 
 -- A sink with nothing to finish.
 stepOnly :: (Int -> WorldState -> IO ()) -> Sink
-stepOnly f = Sink f (const (pure []))
+stepOnly f = Sink f (const (pure mempty))
 
 -- The robots' console messages, printed as they happen.
 messagesSink :: Sink
@@ -228,7 +240,7 @@ framesSink opts scale frameAt render countRef = do
       -- A stopped run leaves at most the next frame's temporary file.
       finish _ = do
         k <- readIORef countRef
-        [] <$ (try (removeFile (frameTemp (optOut opts) k)) :: IO (Either IOException ()))
+        mempty <$ (try (removeFile (frameTemp (optOut opts) k)) :: IO (Either IOException ()))
   pure (Sink step finish)
 
 -- The most frames a replay page holds (6 minutes at 25 frames a second,
@@ -258,18 +270,21 @@ svgSink every (style, scene) file = do
         (kept, final) <- readIORef ref
         let states = reverse (maybe kept (\f -> if maybe False ((== wsTime f) . wsTime) (listToMaybe kept)
                                                    then kept else f : kept) final)
-        attempt (show file) (writeFile file (renderSVG style scene states))
+        attempt (show file) (Just ("wrote " ++ file)) (writeFile file (renderSVG style scene states))
   pure (Sink step finish)
 
 -- The run log, written as the run goes.
 logSink :: LogWriter -> Sink
-logSink w = Sink (const (writeLogState w)) (\summary -> attempt "the log" (closeLogWriter w summary))
+logSink w = Sink (const (writeLogState w)) (\summary -> attempt "the log" Nothing (closeLogWriter w summary))
 
 -- The replay page, written at the end from the recorder's temporary file
 -- (constant memory; the page grows with the run's length, about 70 kB per
--- simulated second of the default world).
-replaySink :: ReplayRecorder -> FilePath -> Sink
-replaySink r file = Sink (const (recordReplayState r)) (\summary -> attempt (show file) (writeReplay r summary file))
+-- simulated second of the default world); @note@ follows its \"wrote\"
+-- line.
+replaySink :: String -> ReplayRecorder -> FilePath -> Sink
+replaySink note r file =
+  Sink (const (recordReplayState r))
+       (\summary -> attempt (show file) (Just ("wrote " ++ file ++ " (open it in a browser)" ++ note)) (writeReplay r summary file))
 
 -- The result line (settings and outcome), written at the end however the
 -- run ended; the robots' tallies are its only state.
@@ -281,22 +296,24 @@ resultSink prog opts file = do
         writeIORef ref $! if n == 0 then startTallies s else stepTallies (optDt opts) s old
       finish summary = do
         tallies <- readIORef ref
-        attempt (show file) (writeFile file (encodeJSON (resultJSON prog opts summary tallies) ++ "\n"))
+        attempt (show file) Nothing (writeFile file (encodeJSON (resultJSON prog opts summary tallies) ++ "\n"))
   pure (Sink step finish)
 
--- Run a write; its failure as a message.
-attempt :: String -> IO () -> IO [String]
-attempt what act = do
+-- Run a write: its failure as a message, or its success as the line given
+-- (if any).
+attempt :: String -> Maybe String -> IO () -> IO Outcome
+attempt what done act = do
   r <- try act
   pure $ case r of
-    Left (e :: IOException) -> [ "cannot write " ++ what ++ ": " ++ show e ]
-    Right ()                -> []
+    Left (e :: IOException) -> Outcome [ "cannot write " ++ what ++ ": " ++ show e ] []
+    Right ()                -> Outcome [] (maybe [] pure done)
 
 -- One pass over the states: every sink takes every state; nothing else
 -- keeps a state, so the run's memory is the sinks' (constant but for the
 -- replay page's frames).
-simulateRun :: String -> SimOptions -> WorldTemplate -> SimbotController -> SimbotController -> IO ()
-simulateRun prog opts world rcA rcB = do
+simulateRun :: String -> SimOptions -> Maybe FilePath -> WorldTemplate -> SimbotController -> SimbotController
+            -> IO ()
+simulateRun prog opts ffmpeg world rcA rcB = do
   start <- getMonotonicTime
   tty   <- hIsTerminalDevice stderr
   args  <- getArgs
@@ -319,6 +336,8 @@ simulateRun prog opts world rcA rcB = do
       -- long run stays a few tens of MB)
       replayThin = max 1 (ceiling (optSeconds opts * optFps opts / fromIntegral replayMaxFrames)) :: Int
       replayCfg  = logCfg { lcFps = optFps opts / fromIntegral replayThin }
+      thinNote | replayThin > 1 = "; this long run's page keeps one frame period in " ++ show replayThin
+               | otherwise      = ""
       svgEvery = max 1 (nSteps `div` svgMaxPoints)
       states   = take (nSteps + 1) (simulateWith cfg world rcA rcB)
   mlog <- forM (optLog opts) $ \file -> do
@@ -335,7 +354,7 @@ simulateRun prog opts world rcA rcB = do
   result <- forM (optResult opts) (resultSink prog opts)
   let sinks = [ messagesSink | not (optQuiet opts) ]
               ++ [ progressSink nSteps framesRef | tty, not (optQuiet opts) ]
-              ++ catMaybes [ logSink <$> mlog, replaySink <$> mrec <*> optReplay opts, frames, svg, result ]
+              ++ catMaybes [ logSink <$> mlog, replaySink thinNote <$> mrec <*> optReplay opts, frames, svg, result ]
       loop !_ [] = pure Finished
       loop !n (s : rest) = do
         _ <- evaluate (forceState s)
@@ -360,7 +379,7 @@ simulateRun prog opts world rcA rcB = do
         Interrupted -> True
         _           -> False
       summary   = LogSummary simulated steps (-1) wall interrupted (displayException <$> failure) []
-  errs <- concat <$> mapM (`sinkFinish` summary) sinks
+  Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
   let runErrs = case ending of
         WriteFailed e -> [ "the run stopped: a write failed: " ++ show e ]
         _             -> []
@@ -371,15 +390,10 @@ simulateRun prog opts world rcA rcB = do
        WriteFailed _ -> "stopped: "
        Finished      -> "" :: String)
     simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
-  unless (optQuiet opts) $ do
-    forM_ (optSvg opts) $ \file -> unless (any (show file `isInfixOf`) errs) (putStrLn ("wrote " ++ file))
-    forM_ (optReplay opts) $ \file -> unless (any (show file `isInfixOf`) errs)
-      (putStrLn ("wrote " ++ file ++ " (open it in a browser)"
-                 ++ (if replayThin > 1 then "; this long run's page keeps one frame period in " ++ show replayThin
-                                       else "")))
+  unless (optQuiet opts) (mapM_ putStrLn wrote)
   hFlush stdout
   videoErrs <- case (ending, optVideo opts) of
-    (Finished, Just file) | null errs -> makeVideo opts file
+    (Finished, Just file) | null errs -> makeVideo opts ffmpeg file
     _                                 -> pure []
   let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs ++ videoErrs)
   unless (null allErrs) (putErr (unlines allErrs))
@@ -407,9 +421,8 @@ frameTemp dir k = dir </> printf "frame-%06d.ppm.tmp" k
 
 -- Assemble the frames with ffmpeg (found on the PATH before the run); the
 -- errors, if any.
-makeVideo :: SimOptions -> FilePath -> IO [String]
-makeVideo opts file = do
-  ffmpeg <- findExecutable "ffmpeg"
+makeVideo :: SimOptions -> Maybe FilePath -> FilePath -> IO [String]
+makeVideo opts ffmpeg file =
   case ffmpeg of
     Nothing -> pure ["--video needs ffmpeg on the PATH; the frames are in " ++ optOut opts]
     Just exe -> do

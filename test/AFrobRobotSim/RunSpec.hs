@@ -318,6 +318,12 @@ spec = do
       r `shouldBe` Left (ExitFailure 1)
       out `shouldSatisfy` ("2.00 s simulated" `isInfixOf`)
       err `shouldSatisfy` ("/dev/full" `isInfixOf`)
+    it "says \"wrote\" of the outputs written and of no other" $ withTempDir $ \dir -> do
+      let page = dir </> "page.html"
+      (out, _, r) <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just "/dev/full"
+                                                     , optReplay = Just page, optQuiet = False } (Just world) drive drive)
+      r `shouldBe` Left (ExitFailure 1)
+      filter ("wrote" `isPrefixOf`) (lines out) `shouldBe` ["wrote " ++ page ++ " (open it in a browser)"]
     it "a full disk for the log (/dev/full)" $ withTempDir $ \dir -> do
       (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just "/dev/full" } (Just world) drive drive)
       r `shouldSatisfy` either (/= ExitSuccess) (const False)
