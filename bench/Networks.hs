@@ -1,4 +1,5 @@
 {-# LANGUAGE BangPatterns #-}
+{-# LANGUAGE Arrows       #-}
 -- |
 -- The benchmark networks, each an @SF Double Double@ run with 'embed' at
 -- dt = 0.01 on the input samples 0, 1, 2, ..., and each with a hand-written
@@ -12,7 +13,7 @@ module Networks
   , sumNetwork
   ) where
 
-import           Data.List (foldl')
+import           Data.List (foldl', intersperse)
 
 import           AFRP
 
@@ -49,6 +50,15 @@ networks =
   , Network "f: edge and accumHold count"  upCrossings   baseUpCrossings
   , Network "g: loop with an iPre counter" loopCounter   (\n -> map fromIntegral [0 .. n - 1])
   , Network "h: the notes' odometry"       odometry      baseOdometry
+  -- issue 19: variants a user would write of (b) and (h), and the shapes
+  -- of ../shared/bench/Throughput.hs that differ from the ones above
+  , Network "bs: (b) written out in the source" integrals10Source baseIntegrals10
+  , Network "bi: (b) with arr (* 2) between, built at run time" integralsTimes2 (baseStages stagesTimes2)
+  , Network "bis: (bi) written out in the source" integralsTimes2Source (baseStages stagesTimes2)
+  , Network "bm: integral, iPre and arr in series, built at run time" mixedChain (baseStages stagesMixed)
+  , Network "bms: (bm) written out in the source" mixedChainSource (baseStages stagesMixed)
+  , Network "hp: (h) in proc notation"     odometryProc  baseOdometry
+  , Network "ht: Throughput.hs's odometry" odometryTP    baseOdometryTP
   ]
 
 ------------------------------------------------------------------------------
@@ -221,3 +231,109 @@ baseOdometry n = go 0 0 0 0 0 0 0
               th = ith' / l
           in ix' / 2 + iy' / 2
                : go (i + 1) ith' ix' iy' (vr - vl) ((vr + vl) * cos th) ((vr + vl) * sin th)
+
+------------------------------------------------------------------------------
+-- Issue 19's variants of (b) and (h)
+
+-- (b) as a user writes it in the source (no function next to the
+-- integrals, so no rewrite rule applies: the same nodes as (b)).
+integrals10Source :: SF Double Double
+integrals10Source =
+  integral >>> integral >>> integral >>> integral >>> integral
+  >>> integral >>> integral >>> integral >>> integral >>> integral
+
+-- The stages of a chain, for the baselines: an integral, a delay with its
+-- initial output, a function.
+data BStage = BInt !Double !Double | BPre !Double | BArr (Double -> Double)
+
+-- Ten integrals with @arr (* 2)@ between them.
+stagesTimes2 :: [BStage]
+stagesTimes2 = intersperse (BArr (* 2)) (replicate 10 (BInt 0 0))
+
+integralsTimes2 :: SF Double Double
+integralsTimes2 = foldr1 (>>>) (intersperse (arr (* 2)) (replicate 10 integral))
+
+integralsTimes2Source :: SF Double Double
+integralsTimes2Source =
+  integral >>> arr (* 2) >>> integral >>> arr (* 2) >>> integral >>> arr (* 2)
+  >>> integral >>> arr (* 2) >>> integral >>> arr (* 2) >>> integral >>> arr (* 2)
+  >>> integral >>> arr (* 2) >>> integral >>> arr (* 2) >>> integral >>> arr (* 2)
+  >>> integral
+
+-- Integrals, delays and functions in series.
+stagesMixed :: [BStage]
+stagesMixed =
+  [ BInt 0 0, BPre 0, BArr (* 0.5), BInt 0 0, BArr (+ 1), BInt 0 0, BPre 1
+  , BInt 0 0, BInt 0 0, BArr (* 2), BInt 0 0, BPre 0, BInt 0 0 ]
+
+mixedChain :: SF Double Double
+mixedChain = foldr1 (>>>)
+  [ integral, iPre 0, arr (* 0.5), integral, arr (+ 1), integral, iPre 1
+  , integral, integral, arr (* 2), integral, iPre 0, integral ]
+
+mixedChainSource :: SF Double Double
+mixedChainSource =
+  integral >>> iPre 0 >>> arr (* 0.5) >>> integral >>> arr (+ 1) >>> integral >>> iPre 1
+  >>> integral >>> integral >>> arr (* 2) >>> integral >>> iPre 0 >>> integral
+
+-- A chain of stages sample by sample (a strict loop over the stages'
+-- states: the numbers the network must give, not a tuned hand loop).
+baseStages :: [BStage] -> Int -> [Double]
+baseStages stages0 n = go 0 stages0
+  where
+    go !i stages
+      | i >= n    = []
+      | otherwise = case run (i == 0) (fromIntegral i) stages of
+          (stages', y) -> y : go (i + 1) stages'
+    run :: Bool -> Double -> [BStage] -> ([BStage], Double)
+    run _ !x [] = ([], x)
+    run start !x (st : rest) = case st of
+      BInt acc prev ->
+        let !acc' = if start then 0 else acc + dt * prev
+            (rest', y) = run start acc' rest
+        in rest' `seq` (BInt acc' x : rest', y)
+      BPre v -> let (rest', y) = run start v rest in rest' `seq` (BPre x : rest', y)
+      BArr f -> let !fx = f x
+                    (rest', y) = run start fx rest
+                in rest' `seq` (BArr f : rest', y)
+
+-- (h) in arrow notation, as the notes write their robots.
+odometryProc :: SF Double Double
+odometryProc = proc _ -> do
+  t <- localTime -< ()
+  let vr = 1 + 0.5 * sin t
+      vl = 1 + 0.5 * cos t
+  thI <- integral -< vr - vl
+  let th = thI / l
+  x <- integral -< (vr + vl) * cos th
+  y <- integral -< (vr + vl) * sin th
+  returnA -< x / 2 + y / 2
+  where
+    l = 0.5
+
+-- The odometry of ../shared/bench/Throughput.hs (its network h): the
+-- integral of the turning rate fanned out beside the wheel speeds, then
+-- the two position integrals side by side.
+odometryTP :: SF Double Double
+odometryTP =
+  localTime
+  >>> arr wheelsTP
+  >>> (identity &&& (arr (\(vr, vl) -> (vr - vl) / 0.5) >>> integral))
+  >>> arr (\((vr, vl), th) -> let v = vr + vl in (v * cos th, v * sin th))
+  >>> (integral *** integral)
+  >>> arr (\(x, y) -> 0.5 * x + 0.5 * y)
+
+wheelsTP :: Double -> (Double, Double)
+wheelsTP t = (1 + 0.5 * sin t, 1 + 0.5 * cos t)
+
+baseOdometryTP :: Int -> [Double]
+baseOdometryTP n = go 0 0 0 0
+  where
+    go :: Int -> Double -> Double -> Double -> [Double]
+    go !i !th !x !y
+      | i >= n    = []
+      | otherwise =
+          let (vr, vl) = wheelsTP (fromIntegral i * dt)
+              v        = vr + vl
+          in (0.5 * x + 0.5 * y)
+               : go (i + 1) (th + dt * ((vr - vl) / 0.5)) (x + dt * (v * cos th)) (y + dt * (v * sin th))

@@ -4,6 +4,7 @@ module Main (main) where
 import           Test.Hspec
 
 import qualified AFRP.BasicSpec
+import qualified AFRP.ChainSpec
 import qualified AFRP.ConditionalSpec
 import qualified AFRP.DelaySpec
 import qualified AFRP.EventSourceSpec
@@ -72,6 +73,7 @@ main = lookupEnv AFrobRobotSim.SweepSpec.childVariable >>= maybe runChild AFrobR
 specs :: IO ()
 specs = hspec $ do
   describe "AFRP.Basic"       AFRP.BasicSpec.spec
+  describe "AFRP.Internal.Chain" AFRP.ChainSpec.spec
   describe "AFRP.Conditional" AFRP.ConditionalSpec.spec
   describe "AFRP.Event"       AFRP.EventSpec.spec
   describe "AFRP.EventSource" AFRP.EventSourceSpec.spec

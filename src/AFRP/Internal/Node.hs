@@ -119,6 +119,8 @@ module AFRP.Internal.Node
   , lazyN
   ) where
 
+import           AFRP.Internal.Chain
+
 ------------------------------------------------------------------------------
 -- Time
 
@@ -203,7 +205,10 @@ stepN n dt a = case n of
           !g' -> case compNI f g' of !n' -> (# n', q c #)
       _ -> case stepN g dt (p a) of
         (# g', b #) -> case compNI f g' of !n' -> (# n', b #)
-    _             -> case stepN f dt a of
+    -- A run of integrals and delays at 'Double' (with functions before
+    -- the integrals): one chain node from now on (see 'chainComp').
+    _ | Just n' <- chainComp f g -> stepN n' dt a
+      | otherwise -> case stepN f dt a of
       (# f', c #) -> case g of
         -- ... and one behind it.
         NPure (FDG q) -> case compNI f' g of !n' -> (# n', q c #)
@@ -277,6 +282,71 @@ stepInline n dt a = case n of
 stepIntD :: Double -> Double -> DTime -> Double -> (# Node Double Double, Double #)
 stepIntD acc prev dt a = let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
 {-# INLINE stepIntD #-}
+
+-- | @chainComp f g@ is @Just@ the composition @f >>> g@ with the run of
+-- 'Double'-valued stages at its head (integrals, delays, @arr h@ before
+-- an integral) made one chain node ("AFRP.Internal.Chain", which states
+-- the identity it relies on), if that run has two stages or more, and
+-- 'Nothing' otherwise. Tried where 'stepN' meets a composition whose
+-- first node is an integral after its first step or a delay, so the
+-- whole run is taken at once: a composition spine is stepped from its
+-- head, and every node in it has been stepped at every step with it (no
+-- integral node exists before its first step). The rest of the spine
+-- follows the chain unchanged.
+chainComp :: Node a c -> Node c b -> Maybe (Node a b)
+chainComp f g = case f of
+  NIntD acc prev -> case collectI g of
+    ColI IEnd _ -> Nothing
+    ColI c rest -> Just (compN (chainN (LInt acc prev c)) rest)
+  -- (a delay leads a chain only if an integral follows it: that fixes
+  -- its type)
+  NPre v         -> case g of
+    NIntD acc prev              -> Just (chainN (LPre v (LInt acc prev IEnd)))
+    NComp (NIntD acc prev) rest -> case collectI rest of
+      ColI c r -> Just (compN (chainN (LPre v (LInt acc prev c))) r)
+    _                           -> Nothing
+  _              -> Nothing
+{-# INLINE chainComp #-}
+
+-- The stages of a chain, and the rest of the spine, which the chain's
+-- output feeds.
+data ColI b = ColI !AfterI !(Node Double b)
+data ColL b = ColL !AfterL !(Node Double b)
+
+-- The longest run of chain stages at the head of a node fed by an
+-- integral. An integral there stores, as its previous input, its
+-- predecessor's running sum, which the chain need not keep (see
+-- "AFRP.Internal.Chain"); an @arr h@ in front of it, @h@ of that sum.
+collectI :: Node Double b -> ColI b
+collectI g = case g of
+  NIntD acc _  -> ColI (IInt acc IEnd) idN
+  NPre v       -> ColI (IPre v LEnd) idN
+  NComp x rest -> case x of
+    NIntD acc _   -> case collectI rest of ColI c r -> ColI (IInt acc c) r
+    NPre v        -> case collectL rest of ColL c r -> ColI (IPre v c) r
+    NPure (FDG h) -> case rest of
+      NIntD acc _                -> ColI (IIntF h acc IEnd) idN
+      NComp (NIntD acc _) rest'  -> case collectI rest' of ColI c r -> ColI (IIntF h acc c) r
+      _                          -> ColI IEnd g
+    _             -> ColI IEnd g
+  _            -> ColI IEnd g
+
+-- The same, for a node fed by a delay or by the chain's input: an
+-- integral there keeps its own previous input.
+collectL :: Node Double b -> ColL b
+collectL g = case g of
+  NIntD acc prev -> ColL (LInt acc prev IEnd) idN
+  NPre v         -> ColL (LPre v LEnd) idN
+  NComp x rest   -> case x of
+    NIntD acc prev -> case collectI rest of ColI c r -> ColL (LInt acc prev c) r
+    NPre v         -> case collectL rest of ColL c r -> ColL (LPre v c) r
+    _              -> ColL LEnd g
+  _              -> ColL LEnd g
+
+-- A chain as a node.
+chainN :: AfterL -> Node Double Double
+chainN c = NStep (\dt a -> case stepAfterL dt a c of
+  (# c', y #) -> case chainN c' of !n -> (# n, y #))
 
 -- Rebuilding a node whose two children were both stateful before the step:
 -- as the smart constructor would, but with the common case (both still

@@ -1,0 +1,122 @@
+{-# LANGUAGE UnboxedTuples #-}
+-- | The chain node ("AFRP.Internal.Chain", issue 19): a run of integrals,
+-- delays and functions before integrals at 'Double' is stepped as one
+-- node, and must give the very numbers (bit for bit) the nodes give one by
+-- one, with the same laziness.
+module AFRP.ChainSpec (spec) where
+
+import           Control.Exception     (NonTermination (..), evaluate, try)
+import           GHC.Float             (castDoubleToWord64)
+import           System.Timeout        (timeout)
+import           Test.Hspec
+import           Test.QuickCheck       hiding (within)
+
+import           AFRP                  hiding (forAll)
+import           AFRP.Internal.SF      (Node (..), SF (..), isStepSF, stepN, stepSF)
+import           TestUtil              (genSamples, runDt, runSamples)
+
+-- | A stage of a random chain.
+data Stage = SIntegral | SPre Double | SArr Int
+  deriving Show
+
+instance Arbitrary Stage where
+  arbitrary = frequency
+    [ (4, pure SIntegral)
+    , (2, SPre <$> elements [0, -1, 2.5])
+    , (3, SArr <$> choose (0, length funs - 1)) ]
+  shrink (SArr _) = [SIntegral]
+  shrink (SPre _) = [SIntegral]
+  shrink SIntegral = []
+
+-- The functions a chain may hold, total and cheap.
+funs :: [Double -> Double]
+funs = [(* 2), (+ 1), negate, sin, \x -> x * x - 0.5]
+
+stageSF :: Stage -> SF Double Double
+stageSF SIntegral = integral
+stageSF (SPre c)  = iPre c
+stageSF (SArr i)  = arr (funs !! i)
+
+-- | A signal function that behaves as its argument but is one opaque node
+-- at every step, so that nothing can be fused with it: the stages stepped
+-- one by one, as before chains existed.
+opaque :: SF a b -> SF a b
+opaque (SF n0) = SF (go n0)
+  where
+    go n = NStep (\dt a -> case stepN n dt a of
+      (# n', b #) -> case go n' of m -> m `seq` (# m, b #))
+
+-- | Bit-for-bit equality of two runs.
+sameBits :: [Double] -> [Double] -> Bool
+sameBits xs ys = length xs == length ys
+  && and (zipWith (\x y -> castDoubleToWord64 x == castDoubleToWord64 y) xs ys)
+
+-- | A chain built at run time ('foldr1'), as a user's code builds one.
+chainOf :: [Stage] -> SF Double Double
+chainOf = foldr1 (>>>) . map stageSF
+
+opaqueChainOf :: [Stage] -> SF Double Double
+opaqueChainOf = foldr1 (>>>) . map (opaque . stageSF)
+
+-- The outputs, evaluated within two seconds; a <<loop>> or a hang fails.
+within :: [Double] -> [Double] -> Expectation
+within actual expected = do
+  r <- timeout 2000000 (try (evaluate (foldr seq () actual)))
+  case r of
+    Nothing                    -> expectationFailure "no result within 2 s"
+    Just (Left NonTermination) -> expectationFailure "<<loop>>"
+    Just (Right ())            -> actual `shouldBe` expected
+
+inputs :: [Double]
+inputs = [1, -1, 2, 0, 3, -2, 5, 1, -4, 2, 6, 0]
+
+spec :: Spec
+spec = do
+  describe "a chain of integrals built at run time" $ do
+    it "is one node after its first step (fixed)" $ do
+      let sf0 = foldr1 (>>>) (replicate 10 integral) :: SF Double Double
+          (sf1, _) = stepSF sf0 0 1
+          (sf2, _) = stepSF sf1 0.1 2
+      isStepSF sf0 `shouldBe` False
+      isStepSF sf2 `shouldBe` True
+    it "gives the numbers of the integrals stepped one by one, bit for bit (fixed)" $
+      runDt 0.01 (chainOf (replicate 10 SIntegral)) [0 .. 300]
+        `shouldSatisfy` sameBits (runDt 0.01 (opaqueChainOf (replicate 10 SIntegral)) [0 .. 300])
+  describe "a random chain of integrals, delays and functions" $ do
+    it "gives the numbers of its stages stepped one by one, bit for bit (property)" $
+      property $ forAll (listOf1 arbitrary) $ \stages ->
+        forAll (genSamples (choose (-10, 10))) $ \samples ->
+          sameBits (runSamples (chainOf stages) samples)
+                   (runSamples (opaqueChainOf stages) samples)
+    it "does the same between functions and after a stateful node (property)" $
+      property $ forAll (listOf1 arbitrary) $ \stages ->
+        forAll (genSamples (choose (-10, 10))) $ \samples ->
+          let wrap c = localTime &&& identity >>> arr (\(t, x) -> t + x) >>> c >>> arr (* 3)
+          in sameBits (runSamples (wrap (chainOf stages)) samples)
+                      (runSamples (wrap (opaqueChainOf stages)) samples)
+  describe "a chain's laziness (fixed)" $ do
+    it "never evaluates its current input: the last input may be an error" $ do
+      let chain = foldr1 (>>>) [integral, arr (* 2), integral, iPre 0, integral, integral] :: SF Double Double
+          -- (embed evaluates each input sample: the error is made lazily)
+          late x = if x > 20 then error "evaluated too early" else x
+          ins   = map fromIntegral [1 .. 21 :: Int]
+      s <- evaluate (sum (runDt 0.1 (arr late >>> chain) ins))
+      s `shouldSatisfy` (not . isNaN)
+    it "applies a function before an integral no earlier than the integral needs it" $ do
+      -- the first integral outputs 0, 1, ..., 9; f of its last output is
+      -- never needed
+      let f :: Double -> Double
+          f x = if x >= 9 then error "f applied too early" else 2 * x
+          chain = foldr1 (>>>) [integral, arr f, integral, integral]
+      outs <- evaluate (runDt 1 chain (replicate 10 1))
+      s <- evaluate (sum outs)
+      (length outs, isNaN s) `shouldBe` (10, False)
+    it "closes a loop whose fed-back value it does not need at the instant" $
+      within (runDt 0.1 (loop (second (foldr1 (>>>) [integral, arr (* 2), integral, iPre 1])
+                               >>> arr (\(a, _) -> (a, a)))) inputs)
+             inputs
+    it "feeds back through its own delay as the nodes one by one do" $
+      within (runDt 0.1 (loop (arr (uncurry (+)) >>> foldr1 (>>>) [integral, integral, iPre 0]
+                               >>> arr (\y -> (y, y)))) inputs)
+             (runDt 0.1 (loop (arr (uncurry (+)) >>> foldr1 (>>>) (map opaque [integral, integral, iPre 0])
+                               >>> arr (\y -> (y, y)))) inputs)
