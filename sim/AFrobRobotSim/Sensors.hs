@@ -42,6 +42,7 @@ module AFrobRobotSim.Sensors
   , trackerRange
   , SenseContext (SenseContext, scArena, scRobots, scBalls)
   , scRobotIndex
+  , senseReady
   ) where
 
 import           GHC.Arr                (Array, listArray, unsafeAt)
@@ -91,6 +92,14 @@ pattern SenseContext { scArena, scRobots, scBalls } <- MkSenseContext scArena sc
 -- ('AFrobRobotSim.Physics.robotIndex'), built when first needed.
 scRobotIndex :: SenseContext -> PointIndex
 scRobotIndex (MkSenseContext _ _ _ ix) = ixRobotGrid ix
+
+-- | @()@, once every index of the context that 'senseRobot' shares between
+-- robots is built (the robots' and balls' arrays and grids): for a caller
+-- that senses for several robots in parallel, so that no two threads
+-- build one.
+senseReady :: SenseContext -> ()
+senseReady (MkSenseContext _ _ _ ix) =
+  ixRobots ix `seq` ixRobotGrid ix `seq` ixBalls ix `seq` ixBallGrid ix `seq` ()
 
 indexes :: Arena -> [Robot] -> [Ball] -> Indexes
 indexes arena rs bs = Indexes
