@@ -33,7 +33,10 @@
 -- the boxes near its 3.25 m segment. The other robots within the
 -- tracker's range of a robot are gathered once per sample and shared by
 -- its tracker and its rays (every robot a ray can hit is among them). The
--- readings are exactly those of testing everything.
+-- tracker's lists are sorted in unboxed arrays (by distance, then
+-- template order: a merge sort, no list or thunk per point), and the lists
+-- are made as the controller reads them. The readings are exactly those of
+-- testing everything.
 module AFrobRobotSim.Sensors
   ( senseRobot
   , rangeReading
@@ -45,6 +48,7 @@ module AFrobRobotSim.Sensors
   , senseReady
   ) where
 
+import           Control.Monad.ST       (ST, runST)
 import           GHC.Arr                (Array, listArray, unsafeAt)
 
 import           AFRP.Geometry
@@ -52,6 +56,7 @@ import           AFrob.Angle            (normalizeAngle)
 import           AFrob.Dimensions
 import           AFrobRobotSim.Balls    (Ball (..), ballIndex)
 import           AFrobRobotSim.Arena
+import           AFrobRobotSim.FlatArray
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.RayCast  (rayCastBoxes)
 import           AFrobRobotSim.Robot
@@ -122,10 +127,10 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
   , siRange    = range
   , siMaxRange = rangeFinderMax
   , siRobots   = [ (kindType (rKind o), rId o, angleTo ox oy, d)
-                 | Near d j ox oy <- sortNear (inRange others)
+                 | Near d j ox oy <- inRangeSorted (ixRobotGrid ix) others
                  , let o = robotAt j ]
   , siBalls    = [ (angleTo bx by, d)
-                 | Near d _ bx by <- sortNear (inRange (gather (ixBallGrid ix) (-1))) ]
+                 | Near d _ bx by <- inRangeSorted (ixBallGrid ix) (gather (ixBallGrid ix) (-1)) ]
   , siKey      = key
   }
   where
@@ -163,13 +168,6 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
                  in abs (y * c - x * s) <= robotRadius + querySlack
                     || abs (x * c + y * s) <= robotRadius + querySlack)
                  others
-    -- Those within the tracker's range (centre to centre, the distance as
-    -- 'vector2RhoTheta' has it: the square root of the same sum of
-    -- squares), nearest first, in index order among equally near ones (as
-    -- a stable sort of all of them by distance would have them).
-    inRange = foldPoints (\acc j qx qy d2 ->
-                let d = sqrt d2
-                in if d <= trackerRange then Near d j qx qy : acc else acc) []
     -- the bearing of a point relative to the heading
     angleTo qx qy = let (_, th) = vector2RhoTheta (Point2 qx qy .-. p)
                     in normalizeAngle (th - rHeading me)
@@ -254,14 +252,112 @@ filterPoints keep = go
 -- coordinates.
 data Near = Near !Double !Int !Double !Double
 
--- Sort by distance, then index (an insertion sort: the lists are short).
-sortNear :: [Near] -> [Near]
-sortNear = foldr insert []
+-- The points (of an index) within the tracker's range, centre to centre
+-- (the distance as 'vector2RhoTheta' has it: the square root of the same
+-- sum of squares), nearest first, in index order among equally near ones
+-- (as a stable sort of all of them by distance would have them). Sorted
+-- in unboxed arrays, with no list or thunk per point: a packed world puts
+-- 50 robots within range of each, and sorting them as a list (an
+-- insertion sort, then a lazy merge sort) was most of a sample's cost.
+-- The list is then made as it is read.
+inRangeSorted :: PointIndex -> Points -> [Near]
+inRangeSorted grid ps = case sorted of
+  Sorted k ds js ->
+    let build i
+          | i >= k    = []
+          | otherwise = let j = indexI js i
+                        in Near (indexD ds i) j (pointX grid j) (pointY grid j) : build (i + 1)
+    in build 0
   where
-    insert x [] = [x]
-    insert x@(Near d j _ _) (y@(Near e k _ _) : ys)
-      | d < e || (d == e && j < k) = x : y : ys
-      | otherwise                  = y : insert x ys
+    sorted = runST $ do
+      let cap = foldPoints (\c _ _ _ _ -> c + 1) 0 ps
+      ds <- newDblArr (max 1 cap)
+      js <- newIntArr (max 1 cap) 0
+      let fill !c NoPoint = pure c
+          fill !c (Point j _ _ d2 rest) =
+            let d = sqrt d2
+            in if d <= trackerRange then writeD ds c d >> writeI js c j >> fill (c + 1) rest
+                                    else fill c rest
+      k <- fill 0 ps
+      (ds', js') <- sortKeys k ds js
+      Sorted k <$> freezeD ds' <*> freezeI js'
+
+data Sorted = Sorted !Int !DblArr !IntArr
+
+-- Sort the first @k@ keys (distance, index) of two arrays, by distance
+-- then index: runs of 8 by insertion, then merged bottom-up through a
+-- second pair of arrays. Gives the arrays that hold the result.
+sortKeys :: Int -> MDblArr s -> MIntArr s -> ST s (MDblArr s, MIntArr s)
+sortKeys k ds js = do
+  let runs !lo | lo >= k   = pure ()
+               | otherwise = insertion ds js lo (min k (lo + 8)) >> runs (lo + 8)
+  runs 0
+  if k <= 8 then pure (ds, js) else do
+    ds2 <- newDblArr k
+    js2 <- newIntArr k 0
+    let pass !w sd sj td tj
+          | w >= k    = pure (sd, sj)
+          | otherwise = do
+              let merges !lo | lo >= k   = pure ()
+                             | otherwise = do
+                                 let mid = min k (lo + w)
+                                     hi  = min k (lo + 2 * w)
+                                 merge sd sj td tj lo mid hi
+                                 merges hi
+              merges 0
+              pass (2 * w) td tj sd sj
+    pass 8 ds js ds2 js2
+
+-- Is the key (d, j) before the key (e, k)?
+before :: Double -> Int -> Double -> Int -> Bool
+before d j e k = d < e || (d == e && j < k)
+{-# INLINE before #-}
+
+-- Insertion sort of the keys in [lo, hi).
+insertion :: MDblArr s -> MIntArr s -> Int -> Int -> ST s ()
+insertion ds js lo hi = outer (lo + 1)
+  where
+    outer !i
+      | i >= hi   = pure ()
+      | otherwise = do
+          d <- readD ds i
+          j <- readI js i
+          let shift !p
+                | p <= lo   = pure p
+                | otherwise = do
+                    e <- readD ds (p - 1)
+                    k <- readI js (p - 1)
+                    if before d j e k
+                      then writeD ds p e >> writeI js p k >> shift (p - 1)
+                      else pure p
+          p <- shift i
+          writeD ds p d
+          writeI js p j
+          outer (i + 1)
+
+-- Merge the sorted runs [lo, mid) and [mid, hi) of the first arrays into
+-- [lo, hi) of the second (stable: the left run first among equal keys).
+merge :: MDblArr s -> MIntArr s -> MDblArr s -> MIntArr s -> Int -> Int -> Int -> ST s ()
+merge sd sj td tj lo mid hi = go lo mid lo
+  where
+    go !a !b !o
+      | o >= hi   = pure ()
+      | a >= mid  = copy b o
+      | b >= hi   = copy a o
+      | otherwise = do
+          d <- readD sd a
+          j <- readI sj a
+          e <- readD sd b
+          k <- readI sj b
+          if before e k d j
+            then writeD td o e >> writeI tj o k >> go a (b + 1) (o + 1)
+            else writeD td o d >> writeI tj o j >> go (a + 1) b (o + 1)
+    copy !x !o
+      | o >= hi   = pure ()
+      | otherwise = do
+          readD sd x >>= writeD td o
+          readI sj x >>= writeI tj o
+          copy (x + 1) (o + 1)
 
 -- | The range finder's reading for a robot at a position and heading,
 -- among the given other robots' centres, in the direction @a@ relative to
