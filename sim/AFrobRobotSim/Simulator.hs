@@ -19,8 +19,11 @@
 -- = Every core
 --
 -- When the program runs on several capabilities (@+RTS -N@, in a program
--- built @-threaded@), each step's sensing and controller steps, the bulk
--- of the work, are computed in parallel: the robots are cut into
+-- built @-threaded@), each step's sensing and controller steps, and the
+-- part of each robot's move that depends on nothing but the robot, its
+-- command and the arena ('AFrobRobotSim.Physics.planMove': its motion and
+-- its first contact with a box), the bulk of the work, are computed in
+-- parallel: the robots are cut into
 -- consecutive chunks (about four per capability, at least 8 robots each)
 -- and "AFrobRobotSim.Workers" evaluates them, the stepping thread taking
 -- them in template order while a fixed pool of worker threads takes them
@@ -29,8 +32,9 @@
 -- for bit, on any number of cores; a failing controller fails the step
 -- with the error of the first failing robot in template order, as on one
 -- core. The sensors' indexes are built before the chunks are handed out.
--- The robots then move, and the balls, on the stepping thread (a robot's
--- move depends on the moves of those before it). On one capability the
+-- The robots then move against each other, and the balls, on the
+-- stepping thread (a robot's move depends on the moves of those before
+-- it). On one capability the
 -- steps are computed in order, by the stepping thread alone.
 module AFrobRobotSim.Simulator
   ( -- * Running
@@ -171,9 +175,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         -- Every controller's step, in template order, all of them at once
         -- when any is needed (a failing controller fails the step: its
         -- messages and the next state, never the robots' positions now),
-        -- with each robot and its drive command.
-        (stepped, drives) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
-          (\i a -> stepAgent t a (senseRobot ctx i (agOdo a) key))
+        -- with each robot and the plan of its move.
+        (stepped, plans) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
+          (\i a -> stepAgent t a (senseRobot ctx i (agOdo a) key)) (planMove dt arena)
         snapshot = WorldState
           { wsTime     = t
           , wsRobots   = robotStates (enRobots en) (enAgents en)
@@ -181,7 +185,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
           , wsMessages = [ printf "[%.2f] %s.%d: %s" t (rpType (agProps a)) (rpId (agProps a)) m
                          | (a, (o, _)) <- zip (enAgents en) stepped, m <- soMessages o ]
           }
-        robots' = stepRobotsNear (scRobotIndex ctx) dt arena drives
+        robots' = stepRobotsPlanned (scRobotIndex ctx) plans
         moved   = stepBalls dt arena robots' (enBalls en)
         balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
           Nothing -> moved
@@ -239,18 +243,20 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
           let !rest = exact as' rs st in Agent (agProps a) (Right fut) (rPos r, rHeading r) : rest
         exact _ _ _ = []
 
--- Every robot's controller step and its drive command, in template order,
--- given a robot's step by its number and agent: all of them at once, when
+-- Every robot's controller step and the plan of its move, in template
+-- order, given a robot's step by its number and agent and the plan of a
+-- robot's move under a command: all of them at once, when
 -- either list is first needed. On several capabilities the robots are cut
 -- into chunks computed in parallel (see the module's documentation), after
 -- @ready@ (what every robot's step shares); each chunk, in weak head
 -- normal form, has computed every step in it.
 stepEvery :: () -> [Agent] -> [Robot] -> (Int -> Agent -> (SimbotOutput, FutureSF SimbotInput SimbotOutput))
-          -> ([(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, DriveCommand)])
-stepEvery ready agents robots stepOne
-  | caps <= 1 || n < 2 * minChunk = case stepRun 0 agents robots of Chunk ss ds -> (ss, ds)
+          -> (Robot -> DriveCommand -> Plan)
+          -> ([(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, Plan)])
+stepEvery ready agents robots stepOne planOne
+  | caps <= 1 || n < 2 * minChunk = case stepRun 0 agents robots of Chunk ss ps -> (ss, ps)
   | otherwise = ready `pseq` forceAll caps chunks `pseq`
-                (concatMap chunkSteps chunks, concatMap chunkDrives chunks)
+                (concatMap chunkSteps chunks, concatMap chunkPlans chunks)
   where
     n    = length robots
     caps = capabilitiesNow n
@@ -266,12 +272,13 @@ stepEvery ready agents robots stepOne
     stepRun !i as rs = case go i as rs of (# ss, ds #) -> Chunk ss ds
     go !i (a : as) (r : rs) = case stepOne i a of
       st@(!o, !_) -> case go (i + 1) as rs of
-        (# ss, ds #) -> (# st : ss, (r, soDrive o) : ds #)
+        (# ss, ps #) -> case planOne r (soDrive o) of
+          !pl -> (# st : ss, (r, pl) : ps #)
     go _  _        _        = (# [], [] #)
 
--- The controller steps and drive commands of consecutive robots.
-data Chunk = Chunk { chunkSteps  :: [(SimbotOutput, FutureSF SimbotInput SimbotOutput)]
-                   , chunkDrives :: [(Robot, DriveCommand)] }
+-- The controller steps and move plans of consecutive robots.
+data Chunk = Chunk { chunkSteps :: [(SimbotOutput, FutureSF SimbotInput SimbotOutput)]
+                   , chunkPlans :: [(Robot, Plan)] }
 
 -- The fewest robots whose steps are handed to a worker together: 8
 -- (handing one over costs about as much as a robot's step).
