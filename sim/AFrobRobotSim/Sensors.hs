@@ -31,8 +31,9 @@
 -- arena's boxes are indexed once, with the lists of boxes a ray from each
 -- place can reach ("AFrobRobotSim.RayGrid"): a ray is tested only against
 -- the boxes near its 3.25 m segment. The other robots within the
--- tracker's range of a robot are gathered once per sample and shared by
--- its tracker and its rays (every robot a ray can hit is among them). The
+-- tracker's range of a robot are gathered once per sample, into unboxed
+-- arrays (index, coordinates, squared distance), and shared by its
+-- tracker and its rays (every robot a ray can hit is among them). The
 -- tracker's lists are sorted in unboxed arrays (by distance, then
 -- template order: a merge sort, no list or thunk per point), and the lists
 -- are made as the controller reads them. The readings are exactly those of
@@ -127,10 +128,10 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
   , siRange    = range
   , siMaxRange = rangeFinderMax
   , siRobots   = [ (kindType (rKind o), rId o, angleTo ox oy, d)
-                 | Near d j ox oy <- inRangeSorted (ixRobotGrid ix) others
+                 | Near d j ox oy <- inRangeSorted others
                  , let o = robotAt j ]
   , siBalls    = [ (angleTo bx by, d)
-                 | Near d _ bx by <- inRangeSorted (ixBallGrid ix) (gather (ixBallGrid ix) (-1)) ]
+                 | Near d _ bx by <- inRangeSorted (gatherNear (ixBallGrid ix) (-1) px py) ]
   , siKey      = key
   }
   where
@@ -138,36 +139,23 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
        | otherwise                  = error ("AFrobRobotSim.Sensors.senseRobot: no robot number " ++ show i)
     robotAt j = unsafeAt (ixRobots ix) j
     p@(Point2 px py) = rPos me
-    -- The points of an index (all but number @skip@) within a little more
-    -- than the tracker's range of the robot's centre, with their squared
-    -- distances from it. An index of a few points is scanned, which costs
-    -- less than walking the cells of the square around the range (in the
-    -- 10-robot benchmark, that square covers most of the world).
-    gather grid skip
-      | n <= 32   = scan 0 NoPoint
-      | otherwise = gatherIn grid skip px py
-      where
-        n = pointIndexCount grid
-        scan !j acc
-          | j >= n    = acc
-          | otherwise = scan (j + 1) (nearPoint grid skip px py acc j)
     -- The other robots near this one, gathered once per sample and shared
     -- by the tracker and every ray: all within 'gatherRange', which covers
     -- the tracker's range and every robot a ray can hit.
-    others = gather (ixRobotGrid ix) i
+    others = gatherNear (ixRobotGrid ix) i px py
     -- Those a quarter-turn ray can hit: a ray meets a disc only if the
     -- disc's centre is within a radius of the ray's line (the
     -- discriminant is negative otherwise, by far more than rounding), and
     -- the four quarter-turn rays lie on the heading's axis and its
     -- perpendicular. Usually none of the others is that near either line,
     -- and those four rays then test no robot at all.
-    crossing = filterPoints (\_ qx qy _ ->
-                 let Vector2 c s = headingDir
-                     x = qx - px
-                     y = qy - py
-                 in abs (y * c - x * s) <= robotRadius + querySlack
-                    || abs (x * c + y * s) <= robotRadius + querySlack)
-                 others
+    crossing = let Vector2 c s = headingDir
+               in selectNear (\qx qy ->
+                    let x = qx - px
+                        y = qy - py
+                    in abs (y * c - x * s) <= robotRadius + querySlack
+                       || abs (x * c + y * s) <= robotRadius + querySlack)
+                  others
     -- the bearing of a point relative to the heading
     angleTo qx qy = let (_, th) = vector2RhoTheta (Point2 qx qy .-. p)
                     in normalizeAngle (th - rHeading me)
@@ -189,64 +177,88 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     rangeAt a
       | not (finite a) = rangeFinderMax
       | otherwise      = let Vector2 ux uy = vector2Polar 1 (rHeading me + a)
-                         in cast others ux uy
+                         in cast (allNear others) ux uy
     -- a ray: the nearest box, then any nearer robot among the given ones
     cast near ux uy =
-      reading (foldPoints (\m _ qx qy d2 -> if d2 > rayReach * rayReach then m
-                                           else rayToRobot px py ux uy m qx qy)
-                          (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) near)
+      reading (foldNear (\m qx qy d2 -> if d2 > rayReach * rayReach then m
+                                        else rayToRobot px py ux uy m qx qy)
+                        (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) others near)
     -- the heading's unit vector, for all of this robot's rays: the cos and
     -- sin the robot keeps with its heading, the numbers of 'headingVector'
     headingDir = Vector2 (rCos me) (rSin me)
 
--- The points of a larger index (all but number @skip@) within
--- 'gatherRange' of @(px, py)@: those of the cells around
--- the range. Not inlined: the grid's bounds, read before the test of the
--- index's size, made every scan of a small one read and save them.
-gatherIn :: PointIndex -> Int -> Double -> Double -> Points
-gatherIn grid skip px py =
-  foldPointsIn grid (px - tr) (py - tr) (px + tr) (py + tr) (nearPoint grid skip px py) NoPoint
-  where tr = gatherRange
-{-# NOINLINE gatherIn #-}
+-- The points of an index (all but number @skip@) within 'gatherRange' of
+-- @(px, py)@, in unboxed arrays (no list or box per point: a packed world
+-- puts 50 robots within range of each). An index of a few points is
+-- scanned, which costs less than walking the cells of the square around
+-- the range (in the 10-robot benchmark, that square covers most of the
+-- world); a larger one is walked cell by cell, into arrays as large as
+-- the points listed in those cells. The order of the points is the
+-- walk's: nothing read from them depends on it (a ray takes the nearest
+-- hit, the tracker sorts).
+gatherNear :: PointIndex -> Int -> Double -> Double -> Gathered
+gatherNear grid skip px py = runST $ do
+  let n   = pointIndexCount grid
+      tr  = gatherRange
+      cap | n <= 32   = n
+          | otherwise = pointsInCellsOf grid (px - tr) (py - tr) (px + tr) (py + tr)
+  js  <- newIntArr (max 1 cap) 0
+  xs  <- newDblArr (max 1 cap)
+  ys  <- newDblArr (max 1 cap)
+  d2s <- newDblArr (max 1 cap)
+  let add !c j
+        | j == skip = pure c
+        | otherwise =
+            let qx = pointX grid j
+                qy = pointY grid j
+                x  = qx - px
+                y  = qy - py
+                d2 = x * x + y * y
+            in if d2 <= tr * tr
+                 then writeI js c j >> writeD xs c qx >> writeD ys c qy >> writeD d2s c d2 >> pure (c + 1)
+                 else pure c
+      scan !j !c
+        | j >= n    = pure c
+        | otherwise = add c j >>= scan (j + 1)
+  k <- if n <= 32 then scan 0 0
+       else foldPointsInM grid (px - tr) (py - tr) (px + tr) (py + tr) add 0
+  Gathered grid k <$> freezeI js <*> freezeD xs <*> freezeD ys <*> freezeD d2s
 
--- Point number @j@ of an index, added to a list if it is not number @skip@
--- and lies within 'gatherRange' of @(px, py)@.
-nearPoint :: PointIndex -> Int -> Double -> Double -> Points -> Int -> Points
-nearPoint grid skip px py acc j
-  | j == skip = acc
-  | otherwise =
-      let qx = pointX grid j
-          qy = pointY grid j
-          x  = qx - px
-          y  = qy - py
-          d2 = x * x + y * y
-          tr = gatherRange
-      in if d2 <= tr * tr then Point j qx qy d2 acc else acc
-{-# INLINE nearPoint #-}
+-- Points of an index near a robot: how many, and for the k-th its index,
+-- its coordinates as indexed and its squared distance from the robot.
+data Gathered = Gathered !PointIndex {-# UNPACK #-} !Int !IntArr !DblArr !DblArr !DblArr
 
--- Points of an index near a robot (index, coordinates as indexed and
--- squared distance from the robot's centre), in a strict list.
-data Points = NoPoint
-            | Point {-# UNPACK #-} !Int {-# UNPACK #-} !Double {-# UNPACK #-} !Double
-                    {-# UNPACK #-} !Double !Points
+-- Some of the gathered points, by their positions in the arrays.
+data Some = None | Some {-# UNPACK #-} !Int !Some
+          | All  -- every one
 
--- A strict left fold over points.
-foldPoints :: (a -> Int -> Double -> Double -> Double -> a) -> a -> Points -> a
-foldPoints f = go
+allNear :: Gathered -> Some
+allNear _ = All
+
+-- The gathered points (coordinates) that pass a test.
+selectNear :: (Double -> Double -> Bool) -> Gathered -> Some
+selectNear keep (Gathered _ k _ xs ys _) = go (k - 1) None
   where
-    go !z NoPoint             = z
-    go !z (Point j x y d2 ps) = go (f z j x y d2) ps
-{-# INLINE foldPoints #-}
+    go !p acc
+      | p < 0     = acc
+      | keep (indexD xs p) (indexD ys p) = go (p - 1) (Some p acc)
+      | otherwise = go (p - 1) acc
+{-# INLINE selectNear #-}
 
--- The points that pass a test.
-filterPoints :: (Int -> Double -> Double -> Double -> Bool) -> Points -> Points
-filterPoints keep = go
+-- A strict left fold over some gathered points (coordinates, squared
+-- distance).
+foldNear :: (a -> Double -> Double -> Double -> a) -> a -> Gathered -> Some -> a
+foldNear f z0 (Gathered _ k _ xs ys d2s) sel = case sel of
+  All -> every 0 z0
+  _   -> some sel z0
   where
-    go NoPoint = NoPoint
-    go (Point j x y d2 ps)
-      | keep j x y d2 = Point j x y d2 (go ps)
-      | otherwise     = go ps
-{-# INLINE filterPoints #-}
+    at z p = f z (indexD xs p) (indexD ys p) (indexD d2s p)
+    every !p !z | p >= k    = z
+                | otherwise = every (p + 1) (at z p)
+    some None !z       = z
+    some All !z        = every 0 z
+    some (Some p r) !z = some r (at z p)
+{-# INLINE foldNear #-}
 
 -- A point of an index near a robot: its distance, its index and its
 -- coordinates.
@@ -260,8 +272,8 @@ data Near = Near !Double !Int !Double !Double
 -- 50 robots within range of each, and sorting them as a list (an
 -- insertion sort, then a lazy merge sort) was most of a sample's cost.
 -- The list is then made as it is read.
-inRangeSorted :: PointIndex -> Points -> [Near]
-inRangeSorted grid ps = case sorted of
+inRangeSorted :: Gathered -> [Near]
+inRangeSorted (Gathered grid n gjs _ _ gd2s) = case sorted of
   Sorted k ds js ->
     let build i
           | i >= k    = []
@@ -270,15 +282,15 @@ inRangeSorted grid ps = case sorted of
     in build 0
   where
     sorted = runST $ do
-      let cap = foldPoints (\c _ _ _ _ -> c + 1) 0 ps
-      ds <- newDblArr (max 1 cap)
-      js <- newIntArr (max 1 cap) 0
-      let fill !c NoPoint = pure c
-          fill !c (Point j _ _ d2 rest) =
-            let d = sqrt d2
-            in if d <= trackerRange then writeD ds c d >> writeI js c j >> fill (c + 1) rest
-                                    else fill c rest
-      k <- fill 0 ps
+      ds <- newDblArr (max 1 n)
+      js <- newIntArr (max 1 n) 0
+      let fill !p !c
+            | p >= n    = pure c
+            | otherwise =
+                let d = sqrt (indexD gd2s p)
+                in if d <= trackerRange then writeD ds c d >> writeI js c (indexI gjs p) >> fill (p + 1) (c + 1)
+                                        else fill (p + 1) c
+      k <- fill 0 0
       (ds', js') <- sortKeys k ds js
       Sorted k <$> freezeD ds' <*> freezeI js'
 
