@@ -18,7 +18,7 @@
 -- is woken as soon as a value is handed to it.
 --
 -- The pool is made the first time it is needed: one worker per capability
--- but the first, pinned to it ('forkOn'), more when the program enables
+-- but the caller's, pinned to it ('forkOn'), more when the program enables
 -- more capabilities. Each worker takes values from one queue and
 -- evaluates them, ignoring what they raise: the value stays a thunk that
 -- raises the same exception when 'forceAll' (or anyone) forces it. A
@@ -34,7 +34,7 @@ module AFrobRobotSim.Workers
   , capabilitiesNow
   ) where
 
-import           Control.Concurrent      (forkOn)
+import           Control.Concurrent      (forkOn, myThreadId, threadCapability)
 import           Control.Concurrent.Chan (Chan, newChan, readChan, writeChan)
 import           Control.Concurrent.MVar (MVar, modifyMVar_, newMVar)
 import           Control.Exception       (SomeException, evaluate, try)
@@ -70,7 +70,10 @@ handOut :: Int -> [a] -> ()
 handOut caps xs = unsafePerformIO $ do
   let Pool q started = thePool
   modifyMVar_ started $ \k -> do
-    forM_ [k + 1 .. caps - 1] $ \i -> forkOn i (worker q)
+    -- pinned to the capabilities other than the caller's (the caller, the
+    -- main thread usually, stays where it is)
+    (mine, _) <- threadCapability =<< myThreadId
+    forM_ [k + 1 .. caps - 1] $ \i -> forkOn (if i == mine then 0 else i) (worker q)
     pure (max k (caps - 1))
   mapM_ (writeChan q . Job) xs
 {-# NOINLINE handOut #-}
