@@ -21,6 +21,11 @@
 -- * @afrp-bench --packed N STEPS@ runs N wanderers packed in the 10 m
 --   world ('packedWorld') and prints robot-steps per second and the speed
 --   relative to real time, by the wall clock (all cores with @+RTS -N@);
+-- * @afrp-bench --steady ROBOTS STEPS@ and @--steady-packed N STEPS@
+--   time the steps of those runs after their first two (the world's
+--   validation, the arena's grids and the first indexes are built then),
+--   by the wall clock and the CPU time (of every core), and print
+--   robot-steps per second by both;
 -- * @afrp-bench --render FRAMES@ renders that many 600x600 PPM frames of
 --   the 10-robot world and prints the frames per second;
 -- * @afrp-bench --pairs R@ times every network and its baseline R times,
@@ -43,6 +48,7 @@ import           System.IO          (hPutStrLn, stderr)
 import           Text.Printf        (printf)
 
 import           AFRP               (SF, arr)
+import           AFrobRobotSim      (WorldState)
 import           Networks
 import           Residency          (loopNetwork, loopNetworks)
 import           RenderBench        (prepareFrames, renderFrames)
@@ -74,6 +80,8 @@ main = do
     ["--balls", n, steps] -> ballReport (read n) (read steps)
     ["--swarm", n, cov, secs] -> swarmReport (read n) (read cov) (read secs)
     ["--packed", n, steps] -> packedReport (read n) (read steps)
+    ["--steady", n, steps] -> steadyReport "robots" (read n) (benchRun (read n)) (read steps)
+    ["--steady-packed", n, steps] -> steadyReport "packed wanderers" (packedRobots (read n)) (packedRun (read n)) (read steps)
     ["--pairs", r] -> mapM_ (pairsReport (read r)) networks
     ["--loop", name, n] -> withLoopNetwork name $ \nw -> print (sumNetwork nw (read n))
     _ -> withArgs args (defaultMainWith config
@@ -116,6 +124,23 @@ simReport n steps = do
       simT = fromIntegral steps * simDtBench
   printf "%5d robots x %6d steps: %10.0f robot-steps/s, %8.1fx real time (CPU %.3f s, wall %.3f s, checksum %.6g)\n"
     n steps (fromIntegral (n * steps) / cpu) (simT / cpu) cpu wall s
+
+-- | Time the steps of a run after its first two (see the module header).
+steadyReport :: String -> Int -> [WorldState] -> Int -> IO ()
+steadyReport what n run steps = do
+  let (warm, rest) = splitAt 2 run
+  _  <- evaluate (snapshotsChecksum warm)
+  w0 <- getMonotonicTime
+  c0 <- getCPUTime
+  s  <- evaluate (snapshotsChecksum (take steps rest))
+  c1 <- getCPUTime
+  w1 <- getMonotonicTime
+  let cpu  = fromIntegral (c1 - c0) / 1e12 :: Double
+      wall = w1 - w0
+      simT = fromIntegral steps * simDtBench
+      rs   = fromIntegral (n * steps) :: Double
+  printf "%5d %s x %6d steps: %10.0f robot-steps/s (wall), %8.2fx real time (wall %.3f s; CPU %.3f s: %.0f robot-steps per CPU second, %.2f us each; checksum %.6g)\n"
+    n what steps (rs / wall) (simT / wall) wall cpu (rs / cpu) (cpu / rs * 1e6) s
 
 -- | Time @n@ wanderers of 'packedWorld' for @steps@ steps.
 packedReport :: Int -> Int -> IO ()

@@ -21,6 +21,9 @@ module SimBench
   , packedRobots
   , wanderer
   , runPacked
+  , benchRun
+  , packedRun
+  , snapshotsChecksum
   ) where
 
 import           Data.List     (foldl', sortOn)
@@ -205,3 +208,17 @@ runPacked :: Int -> Int -> Double
 runPacked n steps =
   foldl' (\acc ws -> foldl' (\a r -> let Point2 x y = robotPos r in a + x + y) acc (wsRobots ws)) 0
          (take steps (simulateWith defaultSimConfig { simDt = simDtBench } (packedWorld n) wanderer wanderer))
+
+-- | The snapshots of 'runBench' with @n@ robots (for timing the steps
+-- apart from the start of the run).
+benchRun :: Int -> [WorldState]
+benchRun n = simulateWith (benchConfig n) (sharedWorld n) benchController benchController
+
+-- | The snapshots of 'runPacked' with @n@ wanderers.
+packedRun :: Int -> [WorldState]
+packedRun n = simulateWith defaultSimConfig { simDt = simDtBench } (packedWorld n) wanderer wanderer
+
+-- | A number that depends on every robot's position in every snapshot.
+snapshotsChecksum :: [WorldState] -> Double
+snapshotsChecksum =
+  foldl' (\acc ws -> foldl' (\a r -> let Point2 x y = robotPos r in a + x + y) acc (wsRobots ws)) 0

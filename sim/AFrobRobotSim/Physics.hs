@@ -39,6 +39,12 @@
 -- every rule that depends on order, such as which of two equally early
 -- contacts counts, is applied in the original order).
 --
+-- A step is split in two ('stepRobotsNear' is the two in a row): each
+-- robot's 'Plan' (its motion and its earliest contact with a box, which
+-- depend on nothing but the robot, its command and the arena: pure, and
+-- computed in parallel by "AFrobRobotSim.Simulator" on several cores),
+-- then the moves in order against the other robots ('stepRobotsPlanned').
+--
 -- = Balls
 --
 -- Balls are moved after the robots, by "AFrobRobotSim.Balls".
@@ -61,6 +67,9 @@ module AFrobRobotSim.Physics
     -- * Stepping
   , stepRobots
   , stepRobotsNear
+  , Plan
+  , planMove
+  , stepRobotsPlanned
     -- * Parameters
   , robotRadius
   , querySlack
@@ -150,17 +159,33 @@ stepRobots dt arena cmds = stepRobotsNear (robotIndex arena (map fst cmds)) dt a
 -- 'pointsOver' indexes them (for a caller that has indexed them already,
 -- such as the sensors of the same step): the same result.
 stepRobotsNear :: PointIndex -> DTime -> Arena -> [(Robot, DriveCommand)] -> [Robot]
-stepRobotsNear near dt arena cmds = runST $ do
+stepRobotsNear near dt arena cmds = stepRobotsPlanned near [ (r, planMove dt arena r c) | (r, c) <- cmds ]
+
+-- | What a robot's move in one step is before the other robots are
+-- considered: its motion, and the fraction of it at which it first touches
+-- a box (infinity for none).
+data Plan = Plan !Motion {-# UNPACK #-} !Double
+
+-- | The plan of a robot's move under a command, in an arena (evaluated to
+-- weak head normal form, it is computed).
+planMove :: DTime -> Arena -> Robot -> DriveCommand -> Plan
+planMove dt arena r c =
+  let mv = robotMotion dt r c
+  in Plan mv (boxesFirstContact arena (rPos r) (mvDisp mv))
+
+-- | Move every robot by one step, in order, as planned, each against the
+-- other robots' current positions ('stepRobotsNear' with the plans made).
+stepRobotsPlanned :: PointIndex -> [(Robot, Plan)] -> [Robot]
+stepRobotsPlanned near plans = runST $ do
   -- the current centres: the old ones, replaced as the robots move
   xs <- newDblArr (max 1 n)
   ys <- newDblArr (max 1 n)
   let start !_ []                                 = pure ()
       start !i ((Robot { rPos = Point2 x y }, _) : rest) = writeD xs i x >> writeD ys i y >> start (i + 1) rest
-  start 0 cmds
+  start 0 plans
   let go !_ !_ [] = pure []
-      go !i !drift ((r, c) : rest) = do
-        let mv = robotMotion dt r c
-        contact <- firstContactST arena near xs ys i drift (rPos r) (mvDisp mv)
+      go !i !drift ((r, Plan mv boxHit) : rest) = do
+        contact <- firstContactST near xs ys i drift (rPos r) (mvDisp mv) boxHit
         let !r' = finishMove mv r contact
             Point2 x1 y1 = rPos r'
             !moved = norm (rPos r' .-. rPos r)
@@ -168,9 +193,9 @@ stepRobotsNear near dt arena cmds = runST $ do
         writeD ys i y1
         rs <- go (i + 1) (max drift moved) rest
         pure (r' : rs)
-  go (0 :: Int) 0 cmds
+  go (0 :: Int) 0 plans
   where
-    n = length cmds
+    n = length plans
 
 -- | The robots' centres on a grid over the arena ('pointsOver'): point
 -- @i@ of the index is the centre of the @i@-th robot of the list.
@@ -261,35 +286,40 @@ identical a b = a == b && (a /= 0 || recip a == recip b)
 querySlack :: Double
 querySlack = 1e-3
 
+-- The fraction of a move from @p@ by @d@ at which the robot first touches
+-- a box (infinity for none), as 'sweepCircleBox' has it: only the boxes
+-- that meet the path's bounding box widened by the radius are tested, and
+-- none when the clearance at the start exceeds the move and the radius.
+boxesFirstContact :: Arena -> Position2 -> Vector2 Double -> Double
+boxesFirstContact arena (Point2 px py) d@(Vector2 dx dy)
+  | d == zeroVector = 1 / 0
+  | clear > 0 && clear * clear > dx * dx + dy * dy = 1 / 0
+  | otherwise =
+      foldBoxesIn (arenaIndex arena) (min px qx - rb) (min py qy - rb)
+                                     (max px qx + rb) (max py qy + rb)
+        (\acc _ b -> boxContact px py dx dy b acc) (1 / 0)
+  where
+    qx = px + dx
+    qy = py + dy
+    rb = robotRadius + querySlack
+    -- (with room for rounding)
+    clear = clearanceAt (arenaClearance arena) px py - rb - querySlack
+
 -- The fraction of the move at which the robot @i@ first touches something:
--- the earliest contact over every box and every other robot (at its
--- current centre), as 'sweepCircleBox' and 'sweepCircleCircle' have it.
--- Only the boxes and robots the grids find near the path are tested: a
--- box can only be touched if it meets the path's bounding box widened by
--- the radius, a robot if its centre is within twice the radius of the
--- path, and a robot's current centre is at most @drift@ from the centre it
--- was indexed with (the furthest any robot has moved this step).
-firstContactST :: Arena -> PointIndex -> MDblArr s -> MDblArr s -> Int -> Double
-               -> Position2 -> Vector2 Double -> ST s (Maybe Double)
-firstContactST arena near xs ys i drift p d@(Vector2 dx dy)
+-- the earliest of its first contact with a box (given) and with every
+-- other robot (at its current centre), as 'sweepCircleCircle' has it.
+-- Only the robots the grid finds near the path are tested: a robot if its
+-- centre is within twice the radius of the path, and a robot's current
+-- centre is at most @drift@ from the centre it was indexed with (the
+-- furthest any robot has moved this step).
+firstContactST :: PointIndex -> MDblArr s -> MDblArr s -> Int -> Double
+               -> Position2 -> Vector2 Double -> Double -> ST s (Maybe Double)
+firstContactST near xs ys i drift p d@(Vector2 dx dy) boxHit
   | d == zeroVector = pure Nothing
   | otherwise = do
       let Point2 px py = p
           qx = px + dx
           qy = py + dy
-          rb = robotRadius + querySlack
-          -- No box is within reach when the clearance at the start exceeds
-          -- the move and the radius (with room for rounding): testing the
-          -- boxes would find no contact.
-          clear = clearanceAt (arenaClearance arena) px py - rb - querySlack
-          -- the earliest contact so far (contacts are fractions in [0, 1];
-          -- infinity for none)
-          boxHit
-            | clear > 0 && clear * clear > dx * dx + dy * dy = 1 / 0
-            | otherwise =
-                foldBoxesIn (arenaIndex arena) (min px qx - rb) (min py qy - rb)
-                                               (max px qx + rb) (max py qy + rb)
-                  (\acc _ b -> boxContact px py dx dy b acc) (1 / 0)
           rr = 2 * robotRadius + drift + querySlack
       hit <- foldPointsInM near (min px qx - rr) (min py qy - rr) (max px qx + rr) (max py qy + rr)
                (\acc j -> if j == i then pure acc else do

@@ -31,9 +31,13 @@
 -- arena's boxes are indexed once, with the lists of boxes a ray from each
 -- place can reach ("AFrobRobotSim.RayGrid"): a ray is tested only against
 -- the boxes near its 3.25 m segment. The other robots within the
--- tracker's range of a robot are gathered once per sample and shared by
--- its tracker and its rays (every robot a ray can hit is among them). The
--- readings are exactly those of testing everything.
+-- tracker's range of a robot are gathered once per sample, into unboxed
+-- arrays (index, coordinates, squared distance), and shared by its
+-- tracker and its rays (every robot a ray can hit is among them). The
+-- tracker's lists are sorted in unboxed arrays (by distance, then
+-- template order: a merge sort, no list or thunk per point), and the lists
+-- are made as the controller reads them. The readings are exactly those of
+-- testing everything.
 module AFrobRobotSim.Sensors
   ( senseRobot
   , rangeReading
@@ -42,8 +46,10 @@ module AFrobRobotSim.Sensors
   , trackerRange
   , SenseContext (SenseContext, scArena, scRobots, scBalls)
   , scRobotIndex
+  , senseReady
   ) where
 
+import           Control.Monad.ST       (ST, runST)
 import           GHC.Arr                (Array, listArray, unsafeAt)
 
 import           AFRP.Geometry
@@ -51,6 +57,7 @@ import           AFrob.Angle            (normalizeAngle)
 import           AFrob.Dimensions
 import           AFrobRobotSim.Balls    (Ball (..), ballIndex)
 import           AFrobRobotSim.Arena
+import           AFrobRobotSim.FlatArray
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.RayCast  (rayCastBoxes)
 import           AFrobRobotSim.Robot
@@ -92,6 +99,14 @@ pattern SenseContext { scArena, scRobots, scBalls } <- MkSenseContext scArena sc
 scRobotIndex :: SenseContext -> PointIndex
 scRobotIndex (MkSenseContext _ _ _ ix) = ixRobotGrid ix
 
+-- | @()@, once every index of the context that 'senseRobot' shares between
+-- robots is built (the robots' and balls' arrays and grids): for a caller
+-- that senses for several robots in parallel, so that no two threads
+-- build one.
+senseReady :: SenseContext -> ()
+senseReady (MkSenseContext _ _ _ ix) =
+  ixRobots ix `seq` ixRobotGrid ix `seq` ixBalls ix `seq` ixBallGrid ix `seq` ()
+
 indexes :: Arena -> [Robot] -> [Ball] -> Indexes
 indexes arena rs bs = Indexes
   { ixRobots    = listArray (0, nr - 1) rs
@@ -113,10 +128,10 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
   , siRange    = range
   , siMaxRange = rangeFinderMax
   , siRobots   = [ (kindType (rKind o), rId o, angleTo ox oy, d)
-                 | Near d j ox oy <- sortNear (inRange others)
+                 | Near d j ox oy <- inRangeSorted others
                  , let o = robotAt j ]
   , siBalls    = [ (angleTo bx by, d)
-                 | Near d _ bx by <- sortNear (inRange (gather (ixBallGrid ix) (-1))) ]
+                 | Near d _ bx by <- inRangeSorted (gatherNear (ixBallGrid ix) (-1) px py) ]
   , siKey      = key
   }
   where
@@ -124,43 +139,23 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
        | otherwise                  = error ("AFrobRobotSim.Sensors.senseRobot: no robot number " ++ show i)
     robotAt j = unsafeAt (ixRobots ix) j
     p@(Point2 px py) = rPos me
-    -- The points of an index (all but number @skip@) within a little more
-    -- than the tracker's range of the robot's centre, with their squared
-    -- distances from it. An index of a few points is scanned, which costs
-    -- less than walking the cells of the square around the range (in the
-    -- 10-robot benchmark, that square covers most of the world).
-    gather grid skip
-      | n <= 32   = scan 0 NoPoint
-      | otherwise = gatherIn grid skip px py
-      where
-        n = pointIndexCount grid
-        scan !j acc
-          | j >= n    = acc
-          | otherwise = scan (j + 1) (nearPoint grid skip px py acc j)
     -- The other robots near this one, gathered once per sample and shared
     -- by the tracker and every ray: all within 'gatherRange', which covers
     -- the tracker's range and every robot a ray can hit.
-    others = gather (ixRobotGrid ix) i
+    others = gatherNear (ixRobotGrid ix) i px py
     -- Those a quarter-turn ray can hit: a ray meets a disc only if the
     -- disc's centre is within a radius of the ray's line (the
     -- discriminant is negative otherwise, by far more than rounding), and
     -- the four quarter-turn rays lie on the heading's axis and its
     -- perpendicular. Usually none of the others is that near either line,
     -- and those four rays then test no robot at all.
-    crossing = filterPoints (\_ qx qy _ ->
-                 let Vector2 c s = headingDir
-                     x = qx - px
-                     y = qy - py
-                 in abs (y * c - x * s) <= robotRadius + querySlack
-                    || abs (x * c + y * s) <= robotRadius + querySlack)
-                 others
-    -- Those within the tracker's range (centre to centre, the distance as
-    -- 'vector2RhoTheta' has it: the square root of the same sum of
-    -- squares), nearest first, in index order among equally near ones (as
-    -- a stable sort of all of them by distance would have them).
-    inRange = foldPoints (\acc j qx qy d2 ->
-                let d = sqrt d2
-                in if d <= trackerRange then Near d j qx qy : acc else acc) []
+    crossing = let Vector2 c s = headingDir
+               in selectNear (\qx qy ->
+                    let x = qx - px
+                        y = qy - py
+                    in abs (y * c - x * s) <= robotRadius + querySlack
+                       || abs (x * c + y * s) <= robotRadius + querySlack)
+                  others
     -- the bearing of a point relative to the heading
     angleTo qx qy = let (_, th) = vector2RhoTheta (Point2 qx qy .-. p)
                     in normalizeAngle (th - rHeading me)
@@ -182,77 +177,199 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     rangeAt a
       | not (finite a) = rangeFinderMax
       | otherwise      = let Vector2 ux uy = vector2Polar 1 (rHeading me + a)
-                         in cast others ux uy
+                         in cast (allNear others) ux uy
     -- a ray: the nearest box, then any nearer robot among the given ones
     cast near ux uy =
-      reading (foldPoints (\m _ qx qy d2 -> if d2 > rayReach * rayReach then m
-                                           else rayToRobot px py ux uy m qx qy)
-                          (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) near)
+      reading (foldNear (\m qx qy d2 -> if d2 > rayReach * rayReach then m
+                                        else rayToRobot px py ux uy m qx qy)
+                        (rayCastBoxes (arenaIndex arena) px py ux uy rayLength) others near)
     -- the heading's unit vector, for all of this robot's rays: the cos and
     -- sin the robot keeps with its heading, the numbers of 'headingVector'
     headingDir = Vector2 (rCos me) (rSin me)
 
--- The points of a larger index (all but number @skip@) within
--- 'gatherRange' of @(px, py)@: those of the cells around
--- the range. Not inlined: the grid's bounds, read before the test of the
--- index's size, made every scan of a small one read and save them.
-gatherIn :: PointIndex -> Int -> Double -> Double -> Points
-gatherIn grid skip px py =
-  foldPointsIn grid (px - tr) (py - tr) (px + tr) (py + tr) (nearPoint grid skip px py) NoPoint
-  where tr = gatherRange
-{-# NOINLINE gatherIn #-}
+-- The points of an index (all but number @skip@) within 'gatherRange' of
+-- @(px, py)@, in unboxed arrays (no list or box per point: a packed world
+-- puts 50 robots within range of each). An index of a few points is
+-- scanned, which costs less than walking the cells of the square around
+-- the range (in the 10-robot benchmark, that square covers most of the
+-- world); a larger one is walked cell by cell, into arrays as large as
+-- the points listed in those cells. The order of the points is the
+-- walk's: nothing read from them depends on it (a ray takes the nearest
+-- hit, the tracker sorts).
+gatherNear :: PointIndex -> Int -> Double -> Double -> Gathered
+gatherNear grid skip px py = runST $ do
+  let n   = pointIndexCount grid
+      tr  = gatherRange
+      cap | n <= 32   = n
+          | otherwise = pointsInCellsOf grid (px - tr) (py - tr) (px + tr) (py + tr)
+  js  <- newIntArr (max 1 cap) 0
+  xs  <- newDblArr (max 1 cap)
+  ys  <- newDblArr (max 1 cap)
+  d2s <- newDblArr (max 1 cap)
+  let add !c j
+        | j == skip = pure c
+        | otherwise =
+            let qx = pointX grid j
+                qy = pointY grid j
+                x  = qx - px
+                y  = qy - py
+                d2 = x * x + y * y
+            in if d2 <= tr * tr
+                 then writeI js c j >> writeD xs c qx >> writeD ys c qy >> writeD d2s c d2 >> pure (c + 1)
+                 else pure c
+      scan !j !c
+        | j >= n    = pure c
+        | otherwise = add c j >>= scan (j + 1)
+  k <- if n <= 32 then scan 0 0
+       else foldPointsInM grid (px - tr) (py - tr) (px + tr) (py + tr) add 0
+  Gathered grid k <$> freezeI js <*> freezeD xs <*> freezeD ys <*> freezeD d2s
 
--- Point number @j@ of an index, added to a list if it is not number @skip@
--- and lies within 'gatherRange' of @(px, py)@.
-nearPoint :: PointIndex -> Int -> Double -> Double -> Points -> Int -> Points
-nearPoint grid skip px py acc j
-  | j == skip = acc
-  | otherwise =
-      let qx = pointX grid j
-          qy = pointY grid j
-          x  = qx - px
-          y  = qy - py
-          d2 = x * x + y * y
-          tr = gatherRange
-      in if d2 <= tr * tr then Point j qx qy d2 acc else acc
-{-# INLINE nearPoint #-}
+-- Points of an index near a robot: how many, and for the k-th its index,
+-- its coordinates as indexed and its squared distance from the robot.
+data Gathered = Gathered !PointIndex {-# UNPACK #-} !Int !IntArr !DblArr !DblArr !DblArr
 
--- Points of an index near a robot (index, coordinates as indexed and
--- squared distance from the robot's centre), in a strict list.
-data Points = NoPoint
-            | Point {-# UNPACK #-} !Int {-# UNPACK #-} !Double {-# UNPACK #-} !Double
-                    {-# UNPACK #-} !Double !Points
+-- Some of the gathered points, by their positions in the arrays.
+data Some = None | Some {-# UNPACK #-} !Int !Some
+          | All  -- every one
 
--- A strict left fold over points.
-foldPoints :: (a -> Int -> Double -> Double -> Double -> a) -> a -> Points -> a
-foldPoints f = go
+allNear :: Gathered -> Some
+allNear _ = All
+
+-- The gathered points (coordinates) that pass a test.
+selectNear :: (Double -> Double -> Bool) -> Gathered -> Some
+selectNear keep (Gathered _ k _ xs ys _) = go (k - 1) None
   where
-    go !z NoPoint             = z
-    go !z (Point j x y d2 ps) = go (f z j x y d2) ps
-{-# INLINE foldPoints #-}
+    go !p acc
+      | p < 0     = acc
+      | keep (indexD xs p) (indexD ys p) = go (p - 1) (Some p acc)
+      | otherwise = go (p - 1) acc
+{-# INLINE selectNear #-}
 
--- The points that pass a test.
-filterPoints :: (Int -> Double -> Double -> Double -> Bool) -> Points -> Points
-filterPoints keep = go
+-- A strict left fold over some gathered points (coordinates, squared
+-- distance).
+foldNear :: (a -> Double -> Double -> Double -> a) -> a -> Gathered -> Some -> a
+foldNear f z0 (Gathered _ k _ xs ys d2s) sel = case sel of
+  All -> every 0 z0
+  _   -> some sel z0
   where
-    go NoPoint = NoPoint
-    go (Point j x y d2 ps)
-      | keep j x y d2 = Point j x y d2 (go ps)
-      | otherwise     = go ps
-{-# INLINE filterPoints #-}
+    at z p = f z (indexD xs p) (indexD ys p) (indexD d2s p)
+    every !p !z | p >= k    = z
+                | otherwise = every (p + 1) (at z p)
+    some None !z       = z
+    some All !z        = every 0 z
+    some (Some p r) !z = some r (at z p)
+{-# INLINE foldNear #-}
 
 -- A point of an index near a robot: its distance, its index and its
 -- coordinates.
 data Near = Near !Double !Int !Double !Double
 
--- Sort by distance, then index (an insertion sort: the lists are short).
-sortNear :: [Near] -> [Near]
-sortNear = foldr insert []
+-- The points (of an index) within the tracker's range, centre to centre
+-- (the distance as 'vector2RhoTheta' has it: the square root of the same
+-- sum of squares), nearest first, in index order among equally near ones
+-- (as a stable sort of all of them by distance would have them). Sorted
+-- in unboxed arrays, with no list or thunk per point: a packed world puts
+-- 50 robots within range of each, and sorting them as a list (an
+-- insertion sort, then a lazy merge sort) was most of a sample's cost.
+-- The list is then made as it is read.
+inRangeSorted :: Gathered -> [Near]
+inRangeSorted (Gathered grid n gjs _ _ gd2s) = case sorted of
+  Sorted k ds js ->
+    let build i
+          | i >= k    = []
+          | otherwise = let j = indexI js i
+                        in Near (indexD ds i) j (pointX grid j) (pointY grid j) : build (i + 1)
+    in build 0
   where
-    insert x [] = [x]
-    insert x@(Near d j _ _) (y@(Near e k _ _) : ys)
-      | d < e || (d == e && j < k) = x : y : ys
-      | otherwise                  = y : insert x ys
+    sorted = runST $ do
+      ds <- newDblArr (max 1 n)
+      js <- newIntArr (max 1 n) 0
+      let fill !p !c
+            | p >= n    = pure c
+            | otherwise =
+                let d = sqrt (indexD gd2s p)
+                in if d <= trackerRange then writeD ds c d >> writeI js c (indexI gjs p) >> fill (p + 1) (c + 1)
+                                        else fill (p + 1) c
+      k <- fill 0 0
+      (ds', js') <- sortKeys k ds js
+      Sorted k <$> freezeD ds' <*> freezeI js'
+
+data Sorted = Sorted !Int !DblArr !IntArr
+
+-- Sort the first @k@ keys (distance, index) of two arrays, by distance
+-- then index: runs of 8 by insertion, then merged bottom-up through a
+-- second pair of arrays. Gives the arrays that hold the result.
+sortKeys :: Int -> MDblArr s -> MIntArr s -> ST s (MDblArr s, MIntArr s)
+sortKeys k ds js = do
+  let runs !lo | lo >= k   = pure ()
+               | otherwise = insertion ds js lo (min k (lo + 8)) >> runs (lo + 8)
+  runs 0
+  if k <= 8 then pure (ds, js) else do
+    ds2 <- newDblArr k
+    js2 <- newIntArr k 0
+    let pass !w sd sj td tj
+          | w >= k    = pure (sd, sj)
+          | otherwise = do
+              let merges !lo | lo >= k   = pure ()
+                             | otherwise = do
+                                 let mid = min k (lo + w)
+                                     hi  = min k (lo + 2 * w)
+                                 merge sd sj td tj lo mid hi
+                                 merges hi
+              merges 0
+              pass (2 * w) td tj sd sj
+    pass 8 ds js ds2 js2
+
+-- Is the key (d, j) before the key (e, k)?
+before :: Double -> Int -> Double -> Int -> Bool
+before d j e k = d < e || (d == e && j < k)
+{-# INLINE before #-}
+
+-- Insertion sort of the keys in [lo, hi).
+insertion :: MDblArr s -> MIntArr s -> Int -> Int -> ST s ()
+insertion ds js lo hi = outer (lo + 1)
+  where
+    outer !i
+      | i >= hi   = pure ()
+      | otherwise = do
+          d <- readD ds i
+          j <- readI js i
+          let shift !p
+                | p <= lo   = pure p
+                | otherwise = do
+                    e <- readD ds (p - 1)
+                    k <- readI js (p - 1)
+                    if before d j e k
+                      then writeD ds p e >> writeI js p k >> shift (p - 1)
+                      else pure p
+          p <- shift i
+          writeD ds p d
+          writeI js p j
+          outer (i + 1)
+
+-- Merge the sorted runs [lo, mid) and [mid, hi) of the first arrays into
+-- [lo, hi) of the second (stable: the left run first among equal keys).
+merge :: MDblArr s -> MIntArr s -> MDblArr s -> MIntArr s -> Int -> Int -> Int -> ST s ()
+merge sd sj td tj lo mid hi = go lo mid lo
+  where
+    go !a !b !o
+      | o >= hi   = pure ()
+      | a >= mid  = copy b o
+      | b >= hi   = copy a o
+      | otherwise = do
+          d <- readD sd a
+          j <- readI sj a
+          e <- readD sd b
+          k <- readI sj b
+          if before e k d j
+            then writeD td o e >> writeI tj o k >> go a (b + 1) (o + 1)
+            else writeD td o d >> writeI tj o j >> go (a + 1) b (o + 1)
+    copy !x !o
+      | o >= hi   = pure ()
+      | otherwise = do
+          readD sd x >>= writeD td o
+          readI sj x >>= writeI tj o
+          copy (x + 1) (o + 1)
 
 -- | The range finder's reading for a robot at a position and heading,
 -- among the given other robots' centres, in the direction @a@ relative to

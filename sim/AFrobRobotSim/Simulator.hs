@@ -5,10 +5,6 @@
 -- them, so that a thread that needs a chunk another is computing waits for
 -- it instead of computing it again.
 {-# OPTIONS_GHC -feager-blackholing #-}
--- No full laziness: it would float the reading of the number of
--- capabilities ('capabilitiesNow') out of its function as a constant,
--- read once for the whole program.
-{-# OPTIONS_GHC -fno-full-laziness #-}
 -- |
 -- Module      : AFrobRobotSim.Simulator
 -- Description : The pure, deterministic simulation engine.
@@ -23,19 +19,23 @@
 -- = Every core
 --
 -- When the program runs on several capabilities (@+RTS -N@, in a program
--- built @-threaded@), each step's sensing and controller steps, the bulk
--- of the work, are computed in parallel: the robots are cut into
--- consecutive chunks (about four per capability, at least 8 robots
--- each), every chunk but the first is sparked ('GHC.Conc.par'), the last
--- first (another capability takes the oldest spark), and the stepping
--- thread then forces the chunks in template order, computing those no
--- other capability has taken, so that the two meet in the middle. Each chunk is a pure
--- value, and the step's lists are the chunks' lists concatenated in
--- order, so the snapshots are the same, bit for bit, on any number of
--- cores; a failing controller fails the step with the error of the first
--- failing robot in template order, as on one core. The robots then move,
--- and the balls, on the stepping thread (a robot's move depends on the
--- moves of those before it). On one capability no spark is made.
+-- built @-threaded@), each step's sensing and controller steps, and the
+-- part of each robot's move that depends on nothing but the robot, its
+-- command and the arena ('AFrobRobotSim.Physics.planMove': its motion and
+-- its first contact with a box), the bulk of the work, are computed in
+-- parallel: the robots are cut into
+-- consecutive chunks (about four per capability, at least 8 robots each)
+-- and "AFrobRobotSim.Workers" evaluates them, the stepping thread taking
+-- them in template order while a fixed pool of worker threads takes them
+-- from the last. Each chunk is a pure value, and the step's lists are the
+-- chunks' lists concatenated in order, so the snapshots are the same, bit
+-- for bit, on any number of cores; a failing controller fails the step
+-- with the error of the first failing robot in template order, as on one
+-- core. The sensors' indexes are built before the chunks are handed out.
+-- The robots then move against each other, and the balls, on the
+-- stepping thread (a robot's move depends on the moves of those before
+-- it). On one capability the
+-- steps are computed in order, by the stepping thread alone.
 module AFrobRobotSim.Simulator
   ( -- * Running
     simulate
@@ -55,8 +55,7 @@ import           GHC.IO                  (IO (..), unsafeDupablePerformIO)
 import           Data.Bits               (shiftR, xor)
 import           Data.List               (sortOn)
 import           Data.Word               (Word64)
-import           GHC.Conc                (getNumCapabilities, pseq)
-import qualified GHC.Conc                as Conc
+import           GHC.Conc                (pseq)
 import           Text.Printf             (printf)
 
 import           AFRP
@@ -68,6 +67,7 @@ import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
+import           AFrobRobotSim.Workers
 import           AFrobRobotSim.World
 
 -- | Settings of a simulation run.
@@ -175,9 +175,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         -- Every controller's step, in template order, all of them at once
         -- when any is needed (a failing controller fails the step: its
         -- messages and the next state, never the robots' positions now),
-        -- with each robot and its drive command.
-        (stepped, drives) = stepEvery (enAgents en) (enRobots en)
-          (\i a -> stepAgent t a (senseRobot ctx i (agOdo a) key))
+        -- with each robot and the plan of its move.
+        (stepped, plans) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
+          (\i a -> stepAgent t a (senseRobot ctx i (agOdo a) key)) (planMove dt arena)
         snapshot = WorldState
           { wsTime     = t
           , wsRobots   = robotStates (enRobots en) (enAgents en)
@@ -185,7 +185,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
           , wsMessages = [ printf "[%.2f] %s.%d: %s" t (rpType (agProps a)) (rpId (agProps a)) m
                          | (a, (o, _)) <- zip (enAgents en) stepped, m <- soMessages o ]
           }
-        robots' = stepRobotsNear (scRobotIndex ctx) dt arena drives
+        robots' = stepRobotsPlanned (scRobotIndex ctx) plans
         moved   = stepBalls dt arena robots' (enBalls en)
         balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
           Nothing -> moved
@@ -243,17 +243,20 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
           let !rest = exact as' rs st in Agent (agProps a) (Right fut) (rPos r, rHeading r) : rest
         exact _ _ _ = []
 
--- Every robot's controller step and its drive command, in template order,
--- given a robot's step by its number and agent: all of them at once, when
+-- Every robot's controller step and the plan of its move, in template
+-- order, given a robot's step by its number and agent and the plan of a
+-- robot's move under a command: all of them at once, when
 -- either list is first needed. On several capabilities the robots are cut
--- into chunks computed in parallel (see the module's documentation); each
--- chunk, in weak head normal form, has computed every step in it.
-stepEvery :: [Agent] -> [Robot] -> (Int -> Agent -> (SimbotOutput, FutureSF SimbotInput SimbotOutput))
-          -> ([(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, DriveCommand)])
-stepEvery agents robots stepOne
-  | caps <= 1 || n < 2 * minChunk = case stepRun 0 agents robots of Chunk ss ds -> (ss, ds)
-  | otherwise = sparkAll (reverse (drop 1 chunks)) `pseq` forceAll chunks `pseq`
-                (concatMap chunkSteps chunks, concatMap chunkDrives chunks)
+-- into chunks computed in parallel (see the module's documentation), after
+-- @ready@ (what every robot's step shares); each chunk, in weak head
+-- normal form, has computed every step in it.
+stepEvery :: () -> [Agent] -> [Robot] -> (Int -> Agent -> (SimbotOutput, FutureSF SimbotInput SimbotOutput))
+          -> (Robot -> DriveCommand -> Plan)
+          -> ([(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, Plan)])
+stepEvery ready agents robots stepOne planOne
+  | caps <= 1 || n < 2 * minChunk = case stepRun 0 agents robots of Chunk ss ps -> (ss, ps)
+  | otherwise = ready `pseq` forceAll caps chunks `pseq`
+                (concatMap chunkSteps chunks, concatMap chunkPlans chunks)
   where
     n    = length robots
     caps = capabilitiesNow n
@@ -264,28 +267,21 @@ stepEvery agents robots stepOne
       | otherwise = let (as1, as2) = splitAt size as
                         (rs1, rs2) = splitAt size rs
                     in stepRun i as1 rs1 : cut (i + size) as2 rs2
-    sparkAll = foldr (\c r -> c `Conc.par` r) ()
-    forceAll = foldr (\c r -> c `seq` r) ()
     -- Strict loops: a step needs every element, and lazy zips would build
     -- a thunk per robot and list.
     stepRun !i as rs = case go i as rs of (# ss, ds #) -> Chunk ss ds
     go !i (a : as) (r : rs) = case stepOne i a of
       st@(!o, !_) -> case go (i + 1) as rs of
-        (# ss, ds #) -> (# st : ss, (r, soDrive o) : ds #)
+        (# ss, ps #) -> case planOne r (soDrive o) of
+          !pl -> (# st : ss, (r, pl) : ps #)
     go _  _        _        = (# [], [] #)
 
--- The number of capabilities now, read at every step (a program may change
--- it while it runs); the argument is only there to make it a function.
-capabilitiesNow :: Int -> Int
-capabilitiesNow k = unsafeDupablePerformIO (k `seq` getNumCapabilities)
-{-# NOINLINE capabilitiesNow #-}
+-- The controller steps and move plans of consecutive robots.
+data Chunk = Chunk { chunkSteps :: [(SimbotOutput, FutureSF SimbotInput SimbotOutput)]
+                   , chunkPlans :: [(Robot, Plan)] }
 
--- The controller steps and drive commands of consecutive robots.
-data Chunk = Chunk { chunkSteps  :: [(SimbotOutput, FutureSF SimbotInput SimbotOutput)]
-                   , chunkDrives :: [(Robot, DriveCommand)] }
-
--- | The fewest robots whose steps are sparked together: 8 (a spark costs
--- about as much as a robot's step).
+-- The fewest robots whose steps are handed to a worker together: 8
+-- (handing one over costs about as much as a robot's step).
 minChunk :: Int
 minChunk = 8
 

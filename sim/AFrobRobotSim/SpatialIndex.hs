@@ -47,6 +47,7 @@ module AFrobRobotSim.SpatialIndex
   , pointY
   , foldPointsIn
   , foldPointsInM
+  , pointsInCellsOf
   ) where
 
 import           Control.Monad.ST (runST)
@@ -342,3 +343,22 @@ foldPointsInM p x0 y0 x1 y1 f z0
       | i >= piCount p = pure z
       | otherwise      = f z i >>= goAll (i + 1)
 {-# INLINE foldPointsInM #-}
+
+-- | How many points 'foldPointsIn' looks at for the rectangle: those
+-- listed in the cells it overlaps and those with non-finite coordinates
+-- (every point for a rectangle that is not finite). At least as many as
+-- it visits: for sizing a buffer before the fold.
+pointsInCellsOf :: PointIndex -> Double -> Double -> Double -> Double -> Int
+pointsInCellsOf p x0 y0 x1 y1
+  | not (finite x0 && finite y0 && finite x1 && finite y1) = piCount p
+  | otherwise = rows cy0 (length (piWild p))
+  where
+    !(Grid gx gy cs nx ny) = piGrid p
+    !cx0 = cellOf gx cs nx x0
+    !cx1 = cellOf gx cs nx x1
+    !cy0 = cellOf gy cs ny y0
+    !cy1 = cellOf gy cs ny y1
+    starts = piStarts p
+    rows !cy !acc
+      | cy > cy1  = acc
+      | otherwise = rows (cy + 1) (acc + indexI starts (cy * nx + cx1 + 1) - indexI starts (cy * nx + cx0))

@@ -48,6 +48,10 @@ refRange arena robots i a
            ++ [ t | o <- others, Just t <- [rayCircle p dir (rPos o) robotRadius'] ]
     nearest = minimum (rangeFinderMax + robotRadius' : hits)
 
+-- Places 0.5 m apart over a 4.5 m square.
+lattice :: [Point2 Double]
+lattice = [ Point2 (0.5 * fromIntegral x) (0.5 * fromIntegral y) | x <- [-4 .. 4 :: Int], y <- [-4 .. 4 :: Int] ]
+
 refTracker :: [Robot] -> [Ball] -> Int -> ([(RobotType, RobotId, Double, Double)], [(Double, Double)])
 refTracker robots balls i =
   ( [ (kindType (rKind o), rId o, a, d)
@@ -350,6 +354,15 @@ spec = do
         forAll (chooseInt (0, length rs - 1)) $ \i ->
           let arena = arenaFor w
               si = senseRobot (SenseContext arena rs bs) i (origin, 0) Nothing
+          in (siRobots si, siBalls si) === refTracker rs bs i
+    it "tracks exactly, in template order among equally near ones, robots and balls packed on a lattice" $
+      -- up to 80 robots and 80 balls on a 0.5 m lattice, in a random
+      -- order: dozens in range, many of them equally far
+      property $ forAll (sublistOf lattice >>= shuffle) $ \ps -> forAll (sublistOf lattice >>= shuffle) $ \qs ->
+        not (null ps) ==> forAll (chooseInt (0, length ps - 1)) $ \i -> forAll (choose (-4, 4)) $ \h ->
+          let rs = [ mkRobot SimbotA k p h 0 False 1 | (k, p) <- zip [1 ..] ps ]
+              bs = [ Ball q zeroVector | q <- qs ]
+              si = senseRobot (SenseContext emptyArena rs bs) i (origin, 0) Nothing
           in (siRobots si, siBalls si) === refTracker rs bs i
     it "reads the same as rangeReading given the other robots' centres" $
       property $ forAll genWorld $ \w -> forAll (genRobots (halfSide w)) $ \rs ->

@@ -1,13 +1,21 @@
-{-# LANGUAGE Arrows #-}
+{-# LANGUAGE Arrows               #-}
+{-# LANGUAGE ScopedTypeVariables #-}
 -- Every run of "every core" must be computed where it stands, not shared
 -- with an equal expression computed on another number of capabilities.
 {-# OPTIONS_GHC -fno-full-laziness -fno-cse #-}
 -- | The simulation engine, checked against hand-computed physics.
 module AFrobRobotSim.SimulatorSpec (spec) where
 
-import           Control.Exception (AsyncException (..), ErrorCall (..), bracket, evaluate, throw, try)
+import           Control.Exception (AsyncException (..), ErrorCall (..), bracket, evaluate, finally, throw, try)
+import qualified Data.ByteString   as BS
+import qualified Data.ByteString.Char8 as BC
 import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
-import           Data.List         (isInfixOf)
+import           GHC.IO.Handle     (hDuplicate, hDuplicateTo)
+import           Data.List         (isInfixOf, isPrefixOf, sort)
+import           System.Directory  (createDirectory, getTemporaryDirectory, listDirectory,
+                                    removeDirectoryRecursive)
+import           System.FilePath   ((</>))
+import           System.IO         (IOMode (..), hClose, hFlush, stdout, withFile)
 import           Test.Hspec        hiding (after)
 
 import           AFrob             hiding (forAll)
@@ -244,6 +252,28 @@ spec = do
       withCaps 2 ((> 1) <$> getNumCapabilities) `shouldReturn` True
       described two `shouldBe` described one
 
+    it "runSimWith writes the same frames, SVG, log, page, result and summary on one capability and on two" $ do
+      let run dir = do
+            createDirectory dir
+            let opts = defaultSimOptions
+                  { optSeconds = 1, optOut = dir, optQuiet = True, optFrames = True, optFps = 10
+                  , optScale = 20, optOdometryNoise = 0.02, optSeed = 3, optKeys = [(0.5, 'a')]
+                  , optSvg = Just (dir </> "run.svg"), optLog = Just (dir </> "run.jsonl")
+                  , optReplay = Just (dir </> "run.html"), optResult = Just (dir </> "result.json") }
+            summary <- stdoutOf (dir </> "stdout") (runSimWith opts (Just crowd) sensing sensing)
+            names <- sort <$> listDirectory dir
+            files <- mapM (\f -> (,) f . withoutRunVariables <$> BS.readFile (dir </> f))
+                          (filter (/= "stdout") names)
+            pure (files, withoutRunVariables (BC.pack (takeWhile (/= ',') summary)))
+      tempDir $ \dir -> do
+        one <- withCaps 1 (run (dir </> "one"))
+        two <- withCaps 2 (run (dir </> "two"))
+        map fst (fst one) `shouldSatisfy` (\fs -> length (filter ("frame-" `isPrefixOf`) fs) == 11
+                                                 && all (`elem` fs) ["run.svg", "run.jsonl", "run.html", "result.json"])
+        map fst (fst two) `shouldBe` map fst (fst one)
+        [ f | ((f, a), (_, b)) <- zip (fst one) (fst two), a /= b ] `shouldBe` []
+        snd two `shouldBe` snd one
+
   describe "bad input" $ do
     it "rejects a robot outside the walls, naming it" $
       validateWorld [OTSimbotA 3 (Point2 4.9 0) 0] `shouldSatisfy` mentions "SimbotA 3"
@@ -275,6 +305,42 @@ spec = do
       evaluate (length (concatMap wsMessages (take 100 run))) `shouldThrow` (== UserInterrupt)
   where
     mentions s = either (any (s `isInfixOf`)) (const False)
+
+-- A file's bytes without what differs between any two runs: the values
+-- of \"wallTime\" (the run log's summary records the wall-clock time)
+-- and of the replay page's script nonce (random for every page).
+withoutRunVariables :: BS.ByteString -> BS.ByteString
+withoutRunVariables = blank "\"wallTime\":" (`notElem` (",}" :: String))
+                    . blank "nonce-" isHex . blank "nonce=\"" isHex
+  where
+    isHex c = c `elem` ("0123456789abcdef" :: String)
+    blank key value b = case BS.breakSubstring (BC.pack key) b of
+      (front, rest)
+        | BS.null rest -> front
+        | otherwise    -> front <> BC.pack key
+                          <> blank key value (BC.dropWhile value (BS.drop (length key) rest))
+
+-- What an action prints on stdout (through a file), as a string.
+stdoutOf :: FilePath -> IO () -> IO String
+stdoutOf file act = do
+  withFile file WriteMode $ \h -> do
+    hFlush stdout
+    saved <- hDuplicate stdout
+    (hDuplicateTo h stdout >> act) `finally` (hFlush stdout >> hDuplicateTo saved stdout >> hClose saved)
+  s <- readFile file
+  length s `seq` pure s
+
+-- An action in a new temporary folder, removed afterwards.
+tempDir :: (FilePath -> IO a) -> IO a
+tempDir act = do
+  tmp <- getTemporaryDirectory
+  let go k = do
+        let d = tmp </> ("afrp-simspec-" ++ show (k :: Int))
+        r <- try (createDirectory d)
+        case r of
+          Right ()                 -> pure d
+          Left (_ :: IOError)      -> go (k + 1)
+  bracket (go 0) removeDirectoryRecursive act
 
 -- The centre and radius of the circle through three points.
 circleThrough :: Point2 Double -> Point2 Double -> Point2 Double -> (Point2 Double, Double)

@@ -121,6 +121,19 @@ spec = do
                          , not (finitePt p) || (x >= x0 && x <= x1 && y >= y0 && y <= y1) ]
           in got === want
 
+  describe "pointsInCellsOf" $
+    it "counts at least the points foldPointsIn visits (a buffer's size), and at most all of them" $
+      property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
+        forAll (genRobots (halfSide w)) $ \rs ->
+        forAll (vectorOf (length rs) (elements [Nothing, Nothing, Nothing, Just (0 / 0), Just (1 / 0)])) $ \bad ->
+          let h = halfSide w
+              pts = [ maybe (x, y) (\v -> if even k then (v, y) else (x, v)) b
+                    | (k, Robot { rPos = Point2 x y }, b) <- zip3 [0 :: Int ..] rs bad ]
+              pix = pointIndex (-h) (-h) h h pts
+              visited = foldPointsIn pix x0 y0 x1 y1 (\c _ -> c + 1) (0 :: Int)
+              counted = pointsInCellsOf pix x0 y0 x1 y1
+          in counterexample (show (visited, counted)) (visited <= counted && counted <= length pts)
+
   describe "stepRobots" $
     it "moves the robots exactly as testing every box and every other robot does" $
       property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
