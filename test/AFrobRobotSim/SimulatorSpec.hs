@@ -257,7 +257,7 @@ spec = do
             createDirectory dir
             let opts = defaultSimOptions
                   { optSeconds = 1, optOut = dir, optQuiet = True, optFrames = True, optFps = 10
-                  , optScale = 20, optOdometryNoise = 0.02, optSeed = 3, optKeys = [(0.5, 'a')]
+                  , optScale = Just 20, optOdometryNoise = 0.02, optSeed = 3, optKeys = [(0.5, 'a')]
                   , optSvg = Just (dir </> "run.svg"), optLog = Just (dir </> "run.jsonl")
                   , optReplay = Just (dir </> "run.html"), optResult = Just (dir </> "result.json") }
             summary <- stdoutOf (dir </> "stdout") (runSimWith opts (Just crowd) sensing sensing)
