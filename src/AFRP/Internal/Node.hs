@@ -340,6 +340,11 @@ collectL g = case g of
   NComp x rest   -> case x of
     NIntD acc prev -> case collectI rest of ColI c r -> ColL (LInt acc prev c) r
     NPre v         -> case collectL rest of ColL c r -> ColL (LPre v c) r
+    -- arr h >>> integral: the integral holds h of its input unevaluated
+    NPure (FDG h)  -> case rest of
+      NIntD acc prev               -> ColL (LIntF h acc prev IEnd) idN
+      NComp (NIntD acc prev) rest' -> case collectI rest' of ColI c r -> ColL (LIntF h acc prev c) r
+      _                            -> ColL LEnd g
     _              -> ColL LEnd g
   _              -> ColL LEnd g
 
