@@ -206,9 +206,11 @@ stepN n dt a = case n of
       _ -> case stepN g dt (p a) of
         (# g', b #) -> case compNI f g' of !n' -> (# n', b #)
     -- A run of integrals and delays at 'Double' (with functions before
-    -- the integrals): one chain node from now on (see 'chainComp').
-    _ | Just n' <- chainComp f g -> stepN n' dt a
-      | otherwise -> case stepN f dt a of
+    -- the integrals): one chain node from now on (see 'chainFromInt').
+    -- (A failed guard falls through to the general case.)
+    NIntD acc prev | Just n' <- chainFromInt acc prev g -> stepN n' dt a
+    NPre v         | Just n' <- chainFromPre v g        -> stepN n' dt a
+    _ -> case stepN f dt a of
       (# f', c #) -> case g of
         -- ... and one behind it.
         NPure (FDG q) -> case compNI f' g of !n' -> (# n', q c #)
@@ -283,30 +285,30 @@ stepIntD :: Double -> Double -> DTime -> Double -> (# Node Double Double, Double
 stepIntD acc prev dt a = let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
 {-# INLINE stepIntD #-}
 
--- | @chainComp f g@ is @Just@ the composition @f >>> g@ with the run of
--- 'Double'-valued stages at its head (integrals, delays, @arr h@ before
--- an integral) made one chain node ("AFRP.Internal.Chain", which states
--- the identity it relies on), if that run has two stages or more, and
--- 'Nothing' otherwise. Tried where 'stepN' meets a composition whose
--- first node is an integral after its first step or a delay, so the
--- whole run is taken at once: a composition spine is stepped from its
--- head, and every node in it has been stepped at every step with it (no
--- integral node exists before its first step). The rest of the spine
--- follows the chain unchanged.
-chainComp :: Node a c -> Node c b -> Maybe (Node a b)
-chainComp f g = case f of
-  NIntD acc prev -> case collectI g of
-    ColI IEnd _ -> Nothing
-    ColI c rest -> Just (compN (chainN (LInt acc prev c)) rest)
-  -- (a delay leads a chain only if an integral follows it: that fixes
-  -- its type)
-  NPre v         -> case g of
-    NIntD acc prev              -> Just (chainN (LPre v (LInt acc prev IEnd)))
-    NComp (NIntD acc prev) rest -> case collectI rest of
-      ColI c r -> Just (compN (chainN (LPre v (LInt acc prev c))) r)
-    _                           -> Nothing
-  _              -> Nothing
-{-# INLINE chainComp #-}
+-- | @chainFromInt acc prev g@ is @Just@ the composition @NIntD acc prev
+-- >>> g@ with the run of 'Double'-valued stages at its head (integrals,
+-- delays, @arr h@ before an integral) made one chain node
+-- ("AFRP.Internal.Chain", which states the identity it relies on), if that
+-- run has two stages or more, and 'Nothing' otherwise; @chainFromPre@ the
+-- same for a delay followed by an integral. Tried where 'stepN' meets a
+-- composition whose first node is an integral after its first step or a
+-- delay, so the whole run is taken at once: a composition spine is
+-- stepped from its head, and every node in it has been stepped at every
+-- step with it (no integral node exists before its first step). The rest
+-- of the spine follows the chain unchanged.
+chainFromInt :: Double -> Double -> Node Double b -> Maybe (Node Double b)
+chainFromInt acc prev g = case collectI g of
+  ColI IEnd _ -> Nothing
+  ColI c rest -> Just (compN (chainN (LInt acc prev c)) rest)
+
+-- (a delay leads a chain only if an integral follows it: that fixes its
+-- type)
+chainFromPre :: a -> Node a b -> Maybe (Node a b)
+chainFromPre v g = case g of
+  NIntD acc prev              -> Just (chainN (LPre v (LInt acc prev IEnd)))
+  NComp (NIntD acc prev) rest -> case collectI rest of
+    ColI c r -> Just (compN (chainN (LPre v (LInt acc prev c))) r)
+  _                           -> Nothing
 
 -- The stages of a chain, and the rest of the spine, which the chain's
 -- output feeds.
