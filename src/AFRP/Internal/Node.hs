@@ -239,6 +239,16 @@ stepN n dt a = case n of
       -- second g
       NPure FDI -> let (c, x) = a in case stepN g dt x of
         (# g', y #) -> case secondN g' of !n' -> (# n', (c, y) #)
+      -- integral *** integral at Double (a vector integrated by
+      -- components, as the notes' odometry does): both steps in place,
+      -- the sums y_n = y_(n-1) + dt_n * a_(n-1) of 'stepIntD', each
+      -- component stored unevaluated; the successor is the one the two
+      -- steps would build (two integral nodes stay a pair).
+      NIntD acc1 prev1 | NIntD acc2 prev2 <- g ->
+        let (x, z) = a
+            !acc1' = acc1 + dt * prev1
+            !acc2' = acc2 + dt * prev2
+        in (# NPar (NIntD acc1' x) (NIntD acc2' z), (acc1', acc2') #)
       _         -> let (x, z) = a in case stepN f dt x of
         (# f', y #) -> case stepN g dt z of
           (# g', w #) -> case rebuildPar f' g' of !n' -> (# n', (y, w) #)
