@@ -77,6 +77,12 @@
 --   pair to be taken apart;
 -- * 'AFRP.Integration.integral' at 'Double' (by a rewrite rule) is a
 --   specialised node with an unboxed running sum ('NIntD');
+-- * a run of such integrals in series, with delays and functions before
+--   integrals among them, becomes one chain node the first time it is
+--   stepped as integral nodes ("AFRP.Internal.Chain", 'chainFromInt'),
+--   with the sums passed unboxed from one integral to the next;
+-- * @integral *** integral@ at 'Double' is stepped in place, both sums
+--   at once;
 -- * lifted functions composed where GHC can see them (@arr f >>> arr g@
 --   written in the source, or exposed by inlining) are fused by rewrite
 --   rules before GHC optimises the code ('AFRP.Internal.SF.compSF',
