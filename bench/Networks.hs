@@ -59,6 +59,8 @@ networks =
   , Network "bms: (bm) written out in the source" mixedChainSource (baseStages stagesMixed)
   , Network "hp: (h) in proc notation"     odometryProc  baseOdometry
   , Network "ht: Throughput.hs's odometry" odometryTP    baseOdometryTP
+  , Network "td': Throughput.hs's recursive dSwitch" dswitchTP baseDSwitchTP
+  , Network "tg: Throughput.hs's loop counter" loopCounterTP (\n -> [fromIntegral i + fromIntegral (i + 1) | i <- [0 .. n - 1 :: Int]])
   ]
 
 ------------------------------------------------------------------------------
@@ -337,3 +339,33 @@ baseOdometryTP n = go 0 0 0 0
               v        = vr + vl
           in (0.5 * x + 0.5 * y)
                : go (i + 1) (th + dt * ((vr - vl) / 0.5)) (x + dt * (v * cos th)) (y + dt * (v * sin th))
+
+-- Throughput.hs's (d'): an integral restarted, through 'dSwitch', by the
+-- rising edge of "the input is a multiple of 10".
+dswitchTP :: SF Double Double
+dswitchTP = restart
+  where
+    restart = dSwitch (integral &&& (arr tickTP >>> edge)) (\_ -> restart)
+
+tickTP :: Double -> Bool
+tickTP x = (truncate x :: Int) `mod` 10 == 0
+
+-- The edge does not fire at a (re)start's first sample, so the first
+-- instance runs until input 10 and every later one for 10 samples; at the
+-- edge the new integral starts (its output there discarded).
+baseDSwitchTP :: Int -> [Double]
+baseDSwitchTP n = go 0 0 0
+  where
+    go :: Int -> Double -> Double -> [Double]
+    go !i !y !prev
+      | i >= n                    = []
+      | i == 0                    = 0 : go 1 0 0
+      | i `mod` 10 == 0           = let y' = y + dt * prev in y' : go (i + 1) 0 (fromIntegral i)
+      | otherwise                 = let y' = y + dt * prev in y' : go (i + 1) y' (fromIntegral i)
+
+-- Throughput.hs's (g): a counter through 'loop' and 'iPre', added to the
+-- input.
+loopCounterTP :: SF Double Double
+loopCounterTP = loop (second (iPre 0) >>> arr step)
+  where
+    step (x, c) = let c' = c + 1 in (x + c', c')

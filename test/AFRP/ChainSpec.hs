@@ -120,3 +120,16 @@ spec = do
                                >>> arr (\y -> (y, y)))) inputs)
              (runDt 0.1 (loop (arr (uncurry (+)) >>> foldr1 (>>>) (map opaque [integral, integral, iPre 0])
                                >>> arr (\y -> (y, y)))) inputs)
+  describe "integral *** integral at Double, stepped in place" $ do
+    it "gives the numbers of the two integrals stepped one by one, bit for bit (property)" $
+      property $ forAll (genSamples (choose (-10, 10))) $ \samples ->
+        let pairUp = arr (\x -> (x, sin x)) >>> (integral *** integral) >>> arr (\(u, v) -> u - 2 * v)
+            opaquePair = arr (\x -> (x, sin x)) >>> (opaque integral *** opaque integral)
+                         >>> arr (\(u, v) -> u - 2 * v)
+        in sameBits (runSamples pairUp samples) (runSamples opaquePair samples)
+    -- (the pair is made by a function that looks at the value fed back:
+    -- taking it apart at once would demand that value)
+    it "does not evaluate its input pair: it closes a loop (fixed)" $
+      within (runDt 0.1 (loop (arr (\(a, c) -> (a, c)) >>> second (arr (\c -> if c > 0 then (c, c) else (c, negate c)) >>> (integral *** integral))
+                               >>> arr (\(a, _) -> (a, a)))) inputs)
+             inputs

@@ -66,6 +66,10 @@ data AfterL
   -- | An integral that stores its input: its running sum and the previous
   -- input sample (unevaluated, as 'AFRP.Internal.Node.NIntD' holds it).
   | LInt {-# UNPACK #-} !Double Double !AfterI
+  -- | @arr f >>> integral@ that stores its input: @f@, the running sum
+  -- and @f@ of the previous input sample, unevaluated, as the integral of
+  -- the composition holds it.
+  | LIntF !(Double -> Double) {-# UNPACK #-} !Double Double !AfterI
   -- | A delay: the value it outputs at the next step (unevaluated).
   | LPre Double !AfterL
 
@@ -79,6 +83,10 @@ stepAfterL !dt a c = case c of
     let !acc' = acc + dt * prev
     in case stepAfterI dt acc acc' rest of
          (# rest', y #) -> case LInt acc' a rest' of !c' -> (# c', y #)
+  LIntF f acc prev rest ->
+    let !acc' = acc + dt * prev
+    in case stepAfterI dt acc acc' rest of
+         (# rest', y #) -> case LIntF f acc' (f a) rest' of !c' -> (# c', y #)
   LPre v rest -> case stepAfterL dt v rest of
     (# rest', y #) -> case LPre a rest' of !c' -> (# c', y #)
 

@@ -77,6 +77,12 @@
 --   pair to be taken apart;
 -- * 'AFRP.Integration.integral' at 'Double' (by a rewrite rule) is a
 --   specialised node with an unboxed running sum ('NIntD');
+-- * a run of such integrals in series, with delays and functions before
+--   integrals among them, becomes one chain node the first time it is
+--   stepped as integral nodes ("AFRP.Internal.Chain", 'chainFromInt'),
+--   with the sums passed unboxed from one integral to the next;
+-- * @integral *** integral@ at 'Double' is stepped in place, both sums
+--   at once;
 -- * lifted functions composed where GHC can see them (@arr f >>> arr g@
 --   written in the source, or exposed by inlining) are fused by rewrite
 --   rules before GHC optimises the code ('AFRP.Internal.SF.compSF',
@@ -206,9 +212,11 @@ stepN n dt a = case n of
       _ -> case stepN g dt (p a) of
         (# g', b #) -> case compNI f g' of !n' -> (# n', b #)
     -- A run of integrals and delays at 'Double' (with functions before
-    -- the integrals): one chain node from now on (see 'chainComp').
-    _ | Just n' <- chainComp f g -> stepN n' dt a
-      | otherwise -> case stepN f dt a of
+    -- the integrals): one chain node from now on (see 'chainFromInt').
+    -- (A failed guard falls through to the general case.)
+    NIntD acc prev | Just n' <- chainFromInt acc prev g -> stepN n' dt a
+    NPre v         | Just n' <- chainFromPre v g        -> stepN n' dt a
+    _ -> case stepN f dt a of
       (# f', c #) -> case g of
         -- ... and one behind it.
         NPure (FDG q) -> case compNI f' g of !n' -> (# n', q c #)
@@ -237,6 +245,16 @@ stepN n dt a = case n of
       -- second g
       NPure FDI -> let (c, x) = a in case stepN g dt x of
         (# g', y #) -> case secondN g' of !n' -> (# n', (c, y) #)
+      -- integral *** integral at Double (a vector integrated by
+      -- components, as the notes' odometry does): both steps in place,
+      -- the sums y_n = y_(n-1) + dt_n * a_(n-1) of 'stepIntD', each
+      -- component stored unevaluated; the successor is the one the two
+      -- steps would build (two integral nodes stay a pair).
+      NIntD acc1 prev1 | NIntD acc2 prev2 <- g ->
+        let (x, z) = a
+            !acc1' = acc1 + dt * prev1
+            !acc2' = acc2 + dt * prev2
+        in (# NPar (NIntD acc1' x) (NIntD acc2' z), (acc1', acc2') #)
       _         -> let (x, z) = a in case stepN f dt x of
         (# f', y #) -> case stepN g dt z of
           (# g', w #) -> case rebuildPar f' g' of !n' -> (# n', (y, w) #)
@@ -283,30 +301,30 @@ stepIntD :: Double -> Double -> DTime -> Double -> (# Node Double Double, Double
 stepIntD acc prev dt a = let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
 {-# INLINE stepIntD #-}
 
--- | @chainComp f g@ is @Just@ the composition @f >>> g@ with the run of
--- 'Double'-valued stages at its head (integrals, delays, @arr h@ before
--- an integral) made one chain node ("AFRP.Internal.Chain", which states
--- the identity it relies on), if that run has two stages or more, and
--- 'Nothing' otherwise. Tried where 'stepN' meets a composition whose
--- first node is an integral after its first step or a delay, so the
--- whole run is taken at once: a composition spine is stepped from its
--- head, and every node in it has been stepped at every step with it (no
--- integral node exists before its first step). The rest of the spine
--- follows the chain unchanged.
-chainComp :: Node a c -> Node c b -> Maybe (Node a b)
-chainComp f g = case f of
-  NIntD acc prev -> case collectI g of
-    ColI IEnd _ -> Nothing
-    ColI c rest -> Just (compN (chainN (LInt acc prev c)) rest)
-  -- (a delay leads a chain only if an integral follows it: that fixes
-  -- its type)
-  NPre v         -> case g of
-    NIntD acc prev              -> Just (chainN (LPre v (LInt acc prev IEnd)))
-    NComp (NIntD acc prev) rest -> case collectI rest of
-      ColI c r -> Just (compN (chainN (LPre v (LInt acc prev c))) r)
-    _                           -> Nothing
-  _              -> Nothing
-{-# INLINE chainComp #-}
+-- | @chainFromInt acc prev g@ is @Just@ the composition @NIntD acc prev
+-- >>> g@ with the run of 'Double'-valued stages at its head (integrals,
+-- delays, @arr h@ before an integral) made one chain node
+-- ("AFRP.Internal.Chain", which states the identity it relies on), if that
+-- run has two stages or more, and 'Nothing' otherwise; @chainFromPre@ the
+-- same for a delay followed by an integral. Tried where 'stepN' meets a
+-- composition whose first node is an integral after its first step or a
+-- delay, so the whole run is taken at once: a composition spine is
+-- stepped from its head, and every node in it has been stepped at every
+-- step with it (no integral node exists before its first step). The rest
+-- of the spine follows the chain unchanged.
+chainFromInt :: Double -> Double -> Node Double b -> Maybe (Node Double b)
+chainFromInt acc prev g = case collectI g of
+  ColI IEnd _ -> Nothing
+  ColI c rest -> Just (compN (chainN (LInt acc prev c)) rest)
+
+-- (a delay leads a chain only if an integral follows it: that fixes its
+-- type)
+chainFromPre :: a -> Node a b -> Maybe (Node a b)
+chainFromPre v g = case g of
+  NIntD acc prev              -> Just (chainN (LPre v (LInt acc prev IEnd)))
+  NComp (NIntD acc prev) rest -> case collectI rest of
+    ColI c r -> Just (compN (chainN (LPre v (LInt acc prev c))) r)
+  _                           -> Nothing
 
 -- The stages of a chain, and the rest of the spine, which the chain's
 -- output feeds.
@@ -340,6 +358,11 @@ collectL g = case g of
   NComp x rest   -> case x of
     NIntD acc prev -> case collectI rest of ColI c r -> ColL (LInt acc prev c) r
     NPre v         -> case collectL rest of ColL c r -> ColL (LPre v c) r
+    -- arr h >>> integral: the integral holds h of its input unevaluated
+    NPure (FDG h)  -> case rest of
+      NIntD acc prev               -> ColL (LIntF h acc prev IEnd) idN
+      NComp (NIntD acc prev) rest' -> case collectI rest' of ColI c r -> ColL (LIntF h acc prev c) r
+      _                            -> ColL LEnd g
     _              -> ColL LEnd g
   _              -> ColL LEnd g
 
