@@ -12,7 +12,7 @@
 #                                machine is shared; default 3, about three
 #                                minutes on the 2-core machine)
 # One core runs with the runtime's defaults; two cores with +RTS -N2
-# -A4m -qg (a larger allocation area per core and a sequential
+# -A8m -qg (a larger allocation area per core and a sequential
 # collector: with the defaults every collection stops both cores every
 # megabyte of allocation, and two cores are slower than one).
 set -euo pipefail
@@ -25,7 +25,7 @@ printf 'what\trobots\tside_m\tcores\tsteps\trobot_steps_per_s\tx_real_time\tcpu_
 row() {  # what robots side cores steps -- afrp-bench arguments
   local what=$1 robots=$2 side=$3 cores=$4 steps=$5; shift 6
   local rts=(-N1)
-  if [ "$cores" = 2 ]; then rts=(-N2 -A4m -qg); fi
+  if [ "$cores" = 2 ]; then rts=(-N2 -A8m -qg); fi
   local line load best=0 try r
   load=$(cut -d' ' -f1 /proc/loadavg)
   for ((r = 0; r < repeats; r++)); do

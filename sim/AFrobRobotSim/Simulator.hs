@@ -37,10 +37,12 @@
 -- it). On one capability the steps are computed in order, by the
 -- stepping thread alone.
 --
--- The runtime's defaults suit one core; on two, @+RTS -N2 -A4m -qg@ (a
--- larger allocation area, a sequential collector) is what the benchmarks
--- of @bench/README.md@ use: with a 1 MB area every collection stops both
--- cores every megabyte, and two cores ran slower than one.
+-- The runtime's defaults suit one core. On two, a larger allocation area
+-- matters: with the default 1 MB every collection stops both cores every
+-- megabyte, and two cores ran slower than one. @+RTS -N2 -A4m@ was the
+-- fastest on an otherwise idle machine (1.65-1.7x one core's speed on
+-- 1000 robots, @bench/README.md@); @+RTS -N2 -A8m -qg@ (a sequential
+-- collector) loses less when other work holds the second core.
 module AFrobRobotSim.Simulator
   ( -- * Running
     simulate
