@@ -10,7 +10,7 @@ robot-step (1e6 / robot-steps per second), the benchmark world only; the
 grey band is "within 2x" of the 10-robot figure on one core (the flatness
 the issue asks for). A two-core point drawn hollow used no more than 1.2
 cores' worth of CPU time (CPU time over wall-clock time): other work held
-the second core while it ran."""
+the second core while it ran (or, below 16 robots, the step is not split)."""
 import csv
 import math
 import sys
