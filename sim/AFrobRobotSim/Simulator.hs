@@ -19,23 +19,30 @@
 -- = Every core
 --
 -- When the program runs on several capabilities (@+RTS -N@, in a program
--- built @-threaded@), each step's sensing and controller steps, and the
--- part of each robot's move that depends on nothing but the robot, its
--- command and the arena ('AFrobRobotSim.Physics.planMove': its motion and
--- its first contact with a box), the bulk of the work, are computed in
--- parallel: the robots are cut into
--- consecutive chunks (about four per capability, at least 8 robots each)
--- and "AFrobRobotSim.Workers" evaluates them, the stepping thread taking
--- them in template order while a fixed pool of worker threads takes them
--- from the last. Each chunk is a pure value, and the step's lists are the
+-- built @-threaded@), the bulk of each step's work is computed in
+-- parallel: every robot's sensing and controller step, and the part of
+-- its move that depends on nothing but the robot, its command and the
+-- arena ('AFrobRobotSim.Physics.planMove': its motion and its first
+-- contact with a box). The robots are cut into consecutive chunks (about
+-- four per capability, at least 8 robots each) and
+-- "AFrobRobotSim.Workers" evaluates them: the stepping thread takes them
+-- in template order while a fixed pool of worker threads takes them from
+-- the last. Each chunk is a pure value, and the step's lists are the
 -- chunks' lists concatenated in order, so the snapshots are the same, bit
 -- for bit, on any number of cores; a failing controller fails the step
 -- with the error of the first failing robot in template order, as on one
 -- core. The sensors' indexes are built before the chunks are handed out.
 -- The robots then move against each other, and the balls, on the
 -- stepping thread (a robot's move depends on the moves of those before
--- it). On one capability the
--- steps are computed in order, by the stepping thread alone.
+-- it). On one capability the steps are computed in order, by the
+-- stepping thread alone.
+--
+-- The runtime's defaults suit one core. On two, a larger allocation area
+-- matters: with the default 1 MB every collection stops both cores every
+-- megabyte, and two cores ran slower than one. @+RTS -N2 -A4m@ was the
+-- fastest on an otherwise idle machine (1.65-1.7x one core's speed on
+-- 1000 robots, @bench/README.md@); @+RTS -N2 -A8m -qg@ (a sequential
+-- collector) loses less when other work holds the second core.
 module AFrobRobotSim.Simulator
   ( -- * Running
     simulate
@@ -245,11 +252,11 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 
 -- Every robot's controller step and the plan of its move, in template
 -- order, given a robot's step by its number and agent and the plan of a
--- robot's move under a command: all of them at once, when
--- either list is first needed. On several capabilities the robots are cut
--- into chunks computed in parallel (see the module's documentation), after
--- @ready@ (what every robot's step shares); each chunk, in weak head
--- normal form, has computed every step in it.
+-- robot's move under a command: all of them at once, when either list is
+-- first needed. On several capabilities the robots are cut into chunks
+-- computed in parallel (see the module's documentation), after @ready@
+-- (what every robot's step shares); each chunk, in weak head normal form,
+-- has computed every step in it.
 stepEvery :: () -> [Agent] -> [Robot] -> (Int -> Agent -> (SimbotOutput, FutureSF SimbotInput SimbotOutput))
           -> (Robot -> DriveCommand -> Plan)
           -> ([(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, Plan)])
