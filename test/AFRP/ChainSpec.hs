@@ -16,17 +16,21 @@ import           AFRP.Internal.SF      (Node (..), SF (..), isStepSF, stepN, ste
 import           TestUtil              (genSamples, runDt, runSamples)
 
 -- | A stage of a random chain.
-data Stage = SIntegral | SPre Double | SArr Int
+data Stage = SIntegral | SPre Double | SArr Int | SInitIntegral Double
   deriving Show
 
 instance Arbitrary Stage where
   arbitrary = frequency
     [ (4, pure SIntegral)
     , (2, SPre <$> elements [0, -1, 2.5])
-    , (3, SArr <$> choose (0, length funs - 1)) ]
+    , (3, SArr <$> choose (0, length funs - 1))
+    -- an integral whose first output is replaced ('-->'): after its first
+    -- step it is an integral node whose sum is not what it output
+    , (1, SInitIntegral <$> elements [5, -3]) ]
   shrink (SArr _) = [SIntegral]
   shrink (SPre _) = [SIntegral]
   shrink SIntegral = []
+  shrink (SInitIntegral _) = [SIntegral]
 
 -- The functions a chain may hold, total and cheap.
 funs :: [Double -> Double]
@@ -36,6 +40,7 @@ stageSF :: Stage -> SF Double Double
 stageSF SIntegral = integral
 stageSF (SPre c)  = iPre c
 stageSF (SArr i)  = arr (funs !! i)
+stageSF (SInitIntegral c) = c --> integral
 
 -- | A signal function that behaves as its argument but is one opaque node
 -- at every step, so that nothing can be fused with it: the stages stepped
@@ -79,6 +84,11 @@ spec = do
           (sf2, _) = stepSF sf1 0.1 2
       isStepSF sf0 `shouldBe` False
       isStepSF sf2 `shouldBe` True
+    it "takes the previous input of an integral behind a replaced first output from the integral (fixed)" $
+      -- the first integral outputs 5, 1, 3, 6; the second 0, 5, 6, 9; the
+      -- third sums twice those: 0, 0, 10, 22
+      runDt 1 ((5 --> integral) >>> integral >>> arr (* 2) >>> integral :: SF Double Double) [1, 2, 3, 4]
+        `shouldBe` [0, 0, 10, 22]
     it "gives the numbers of the integrals stepped one by one, bit for bit (fixed)" $
       runDt 0.01 (chainOf (replicate 10 SIntegral)) [0 .. 300]
         `shouldSatisfy` sameBits (runDt 0.01 (opaqueChainOf (replicate 10 SIntegral)) [0 .. 300])

@@ -22,18 +22,22 @@
 -- = The identity it relies on
 --
 -- An integral at 'Double' ('AFRP.Internal.Node.NIntD') stores its input
--- sample unevaluated and adds @dt * prev@ at the next step. Inside a
--- composition every node is stepped at every step on its predecessor's
--- output of that step, so an integral whose predecessor is an integral
--- holds, as its previous input, exactly the box of that predecessor's
--- previous output, which is the predecessor's running sum; and one behind
--- @integral >>> arr f@ holds the unevaluated @f@ of that box, which it
--- evaluates at its next step. So these stages need not store their input
--- at all: at each step the chain computes @acc + dt * old@ (or @acc + dt *
--- f old@), where @old@ is the predecessor's running sum /before/ this
--- step: the same operations on the same numbers, in the same order, so the
--- same bits; @f@ is applied once per step, at the step where the integral
--- needed its value, as before. The other stages (an integral after a
+-- sample unevaluated and adds @dt * prev@ at the next step. Inside the
+-- chain every stage is stepped at every step on its predecessor's output
+-- of that step, so, from the chain's second step on, an integral whose
+-- predecessor is an integral holds, as its previous input, exactly that
+-- predecessor's previous output, which is the predecessor's running sum;
+-- and one behind @integral >>> arr f@ holds the unevaluated @f@ of it,
+-- which it evaluates at its next step. So these stages need not store
+-- their input at all: at each step the chain computes @acc + dt * old@ (or
+-- @acc + dt * f old@), where @old@ is the predecessor's running sum
+-- /before/ this step: the same operations on the same numbers, in the
+-- same order, so the same bits; @f@ is applied once per step, at the step
+-- where the integral needed its value, as before. At the chain's first
+-- step they use the previous input their integral nodes held ('IIntS',
+-- 'IIntFS'): before the chain, the predecessor's last output need not
+-- have been its sum (@(5 --> integral) >>> integral@ output 5, not the
+-- sum 0, at time 0). The other stages (an integral after a
 -- delay or at the head of the chain, a delay) store their input exactly
 -- as their own nodes do, unevaluated. Nothing is evaluated earlier than it
 -- was: the chain's input is stored and evaluated at the next step, the
@@ -57,6 +61,13 @@ data AfterI
   -- | A delay fed by an integral: the value it outputs at the next step
   -- (unevaluated, as 'AFRP.Delay.iPre' holds it).
   | IPre Double !AfterL
+  -- | 'IInt' at the chain's first step: the running sum and the previous
+  -- input its integral node held, used once; 'IInt' afterwards.
+  | IIntS {-# UNPACK #-} !Double Double !AfterI
+  -- | 'IIntF' at the chain's first step: @f@, the running sum and the
+  -- previous input its integral node held (@f@ already applied,
+  -- unevaluated), used once; 'IIntF' afterwards.
+  | IIntFS !(Double -> Double) {-# UNPACK #-} !Double Double !AfterI
 
 -- | The stages that follow the chain's input or a delay (whose output is
 -- known only as an unevaluated value).
@@ -105,3 +116,11 @@ stepAfterI !dt !old !new c = case c of
          (# rest', y #) -> case IIntF f acc' rest' of !c' -> (# c', y #)
   IPre v rest -> case stepAfterL dt v rest of
     (# rest', y #) -> case IPre new rest' of !c' -> (# c', y #)
+  IIntS acc prev rest ->
+    let !acc' = acc + dt * prev
+    in case stepAfterI dt acc acc' rest of
+         (# rest', y #) -> case IInt acc' rest' of !c' -> (# c', y #)
+  IIntFS f acc prev rest ->
+    let !acc' = acc + dt * prev
+    in case stepAfterI dt acc acc' rest of
+         (# rest', y #) -> case IIntF f acc' rest' of !c' -> (# c', y #)

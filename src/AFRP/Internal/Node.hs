@@ -308,10 +308,9 @@ stepIntD acc prev dt a = let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
 -- run has two stages or more, and 'Nothing' otherwise; @chainFromPre@ the
 -- same for a delay followed by an integral. Tried where 'stepN' meets a
 -- composition whose first node is an integral after its first step or a
--- delay, so the whole run is taken at once: a composition spine is
--- stepped from its head, and every node in it has been stepped at every
--- step with it (no integral node exists before its first step). The rest
--- of the spine follows the chain unchanged.
+-- delay, so the whole run is taken at once (a composition spine is
+-- stepped from its head). The rest of the spine follows the chain
+-- unchanged.
 chainFromInt :: Double -> Double -> Node Double b -> Maybe (Node Double b)
 chainFromInt acc prev g = case collectI g of
   ColI IEnd _ -> Nothing
@@ -332,20 +331,20 @@ data ColI b = ColI !AfterI !(Node Double b)
 data ColL b = ColL !AfterL !(Node Double b)
 
 -- The longest run of chain stages at the head of a node fed by an
--- integral. An integral there stores, as its previous input, its
--- predecessor's running sum, which the chain need not keep (see
--- "AFRP.Internal.Chain"); an @arr h@ in front of it, @h@ of that sum.
+-- integral. An integral there keeps the previous input its node holds for
+-- the chain's first step only (see "AFRP.Internal.Chain"); an @arr h@ in
+-- front of it is kept with it.
 collectI :: Node Double b -> ColI b
 collectI g = case g of
-  NIntD acc _  -> ColI (IInt acc IEnd) idN
-  NPre v       -> ColI (IPre v LEnd) idN
-  NComp x rest -> case x of
-    NIntD acc _   -> case collectI rest of ColI c r -> ColI (IInt acc c) r
-    NPre v        -> case collectL rest of ColL c r -> ColI (IPre v c) r
-    NPure (FDG h) -> case rest of
-      NIntD acc _                -> ColI (IIntF h acc IEnd) idN
-      NComp (NIntD acc _) rest'  -> case collectI rest' of ColI c r -> ColI (IIntF h acc c) r
-      _                          -> ColI IEnd g
+  NIntD acc prev -> ColI (IIntS acc prev IEnd) idN
+  NPre v         -> ColI (IPre v LEnd) idN
+  NComp x rest   -> case x of
+    NIntD acc prev -> case collectI rest of ColI c r -> ColI (IIntS acc prev c) r
+    NPre v         -> case collectL rest of ColL c r -> ColI (IPre v c) r
+    NPure (FDG h)  -> case rest of
+      NIntD acc prev               -> ColI (IIntFS h acc prev IEnd) idN
+      NComp (NIntD acc prev) rest' -> case collectI rest' of ColI c r -> ColI (IIntFS h acc prev c) r
+      _                            -> ColI IEnd g
     _             -> ColI IEnd g
   _            -> ColI IEnd g
 
