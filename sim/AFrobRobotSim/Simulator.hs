@@ -37,12 +37,14 @@
 -- it). On one capability the steps are computed in order, by the
 -- stepping thread alone.
 --
--- The runtime's defaults suit one core. On two, a larger allocation area
--- matters: with the default 1 MB every collection stops both cores every
--- megabyte, and two cores ran slower than one. @+RTS -N2 -A4m@ was the
--- fastest on an otherwise idle machine (1.65-1.7x one core's speed on
--- 1000 robots, @bench/README.md@); @+RTS -N2 -A8m -qg@ (a sequential
--- collector) loses less when other work holds the second core.
+-- A larger allocation area than the runtime's 1 MB matters, and most on
+-- several cores, where every collection stops them all: the project's
+-- programs (@simbot@, @afrp-examples@, @my-robot-show@) are linked with
+-- @-with-rtsopts=-A4m@, with which @+RTS -N2@ ran 1000 robots 1.65-1.7x
+-- as fast as one core on an otherwise idle machine (@bench/README.md@);
+-- with the 1 MB area, two cores ran slower than one. When other work
+-- holds the second core, @+RTS -N2 -qg@ (a sequential collector) loses
+-- less.
 module AFrobRobotSim.Simulator
   ( -- * Running
     simulate
