@@ -23,6 +23,7 @@ module AFrobRobotSim.FlatArray
   , MIntArr
   , MDblArr
   , newIntArr
+  , newLineIntArr
   , newDblArr
   , readI
   , writeI
@@ -51,6 +52,17 @@ data MDblArr s = MDblArr (MutableByteArray# s)
 -- | A new array of @n@ 'Int's, all @v@.
 newIntArr :: Int -> Int -> ST s (MIntArr s)
 newIntArr (I# n) (I# v) = ST $ \s -> case newByteArray# (n *# 8#) s of
+  (# s1, a #) -> case setIntArray a 0# n v s1 of s2 -> (# s2, MIntArr a #)
+  where
+    setIntArray a i m x s
+      | isTrue# (i >=# m) = s
+      | otherwise         = setIntArray a (i +# 1#) m x (writeIntArray# a i x s)
+
+-- | 'newIntArr', its first element at the start of a 64-byte cache line
+-- (pinned: it never moves), so that each run of 8 elements from a multiple
+-- of 8 is one cache line.
+newLineIntArr :: Int -> Int -> ST s (MIntArr s)
+newLineIntArr (I# n) (I# v) = ST $ \s -> case newAlignedPinnedByteArray# (n *# 8#) 64# s of
   (# s1, a #) -> case setIntArray a 0# n v s1 of s2 -> (# s2, MIntArr a #)
   where
     setIntArray a i m x s

@@ -21,7 +21,8 @@ module AFrobRobotSim.RayCast
 
 import           AFRP.Geometry              (Point2 (..), Vector2 (..))
 import           AFrobRobotSim.FlatArray    (indexI)
-import           AFrobRobotSim.RayGrid      (rayGridList, rayGridTolerance)
+import           AFrobRobotSim.RayGrid      (rayGridLineItem, rayGridList, rayGridLookup,
+                                             rayGridTolerance)
 import           AFrobRobotSim.Shapes       (Box (..), rayBox)
 import           AFrobRobotSim.SpatialIndex
 
@@ -82,7 +83,8 @@ foldBoxesAlong bi px py qx qy f z0 =
 -- boxed bounds cost more than the one or two boxes a ray tests.
 rayCastBoxes :: BoxIndex -> Double -> Double -> Double -> Double -> Double -> Double
 rayCastBoxes bi !px !py !ux !uy !len =
-  rayGridList (boxIndexRays bi) px py qx qy
+  rayGridLookup (boxIndexRays bi) px py qx qy
+    (\ls w s e -> wild (boxIndexWild bi) (goLine ls w s e len))
     (\items s e -> wild (boxIndexWild bi) (go items s e len))
     (rayCastBoxesIn bi x0 y0 x1 y1 px py ux uy len)
   where
@@ -99,6 +101,14 @@ rayCastBoxes bi !px !py !ux !uy !len =
           in if a <= x1 && c >= x0 && b <= y1 && d >= y0
                then go items (k + 1) e (hitBox px py ux uy m box)
                else go items (k + 1) e m
+    -- the same over a list held in its cell's line
+    goLine ls !w !k !e !m
+      | k >= e    = m
+      | otherwise =
+          let box@(Box a b c d) = boxAt bi (rayGridLineItem ls w k)
+          in if a <= x1 && c >= x0 && b <= y1 && d >= y0
+               then goLine ls w (k + 1) e (hitBox px py ux uy m box)
+               else goLine ls w (k + 1) e m
     wild [] !m       = m
     wild (i : is) !m = wild is (hitBox px py ux uy m (boxAt bi i))
 {-# INLINE rayCastBoxes #-}

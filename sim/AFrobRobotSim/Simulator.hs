@@ -139,7 +139,7 @@ simulate dt = simulateWith defaultSimConfig { simDt = dt }
 
 -- Per-robot bookkeeping that is not physics: its controller and odometry.
 data Agent = Agent
-  { agProps :: SimbotProperties
+  { agProps :: !SimbotProperties
   , agCtrl  :: Either (SF SimbotInput SimbotOutput) (FutureSF SimbotInput SimbotOutput)
   , agOdo   :: !(Position2, Heading)
   }
@@ -248,8 +248,13 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
               d'       = vector2Rotate (h - rHeading r0) ((1 + noise * u1) *^ dTrue)
           in go g2 rs0 rs1 as' st (Agent (agProps a) (Right fut) (p .+^ d', h') : acc)
         go g _ _ _ _ acc = (reverse acc, g)
-        exact (a : as') (r : rs) ((_, fut) : st) =
-          let !rest = exact as' rs st in Agent (agProps a) (Right fut) (rPos r, rHeading r) : rest
+        -- (the pose taken out of the robot now: left as selections, it
+        -- was a thunk or two per robot and step for the collector)
+        exact (a : as') (!r : rs) ((_, fut) : st) =
+          let !rest = exact as' rs st
+              !p    = rPos r
+              !h    = rHeading r
+          in Agent (agProps a) (Right fut) (p, h) : rest
         exact _ _ _ = []
 
 -- Every robot's controller step and the plan of its move, in template

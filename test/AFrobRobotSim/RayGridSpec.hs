@@ -56,6 +56,13 @@ listFor :: RayGrid -> (Double, Double, Double, Double) -> Maybe (Int, Int, [Int]
 listFor rg (px, py, qx, qy) =
   rayGridList rg px py qx qy (\items s e -> Just (s, e, map (indexI items) [s .. e - 1])) Nothing
 
+-- | The list 'rayGridLookup' gives for a segment, if any, and whether
+-- it came from the cell's line.
+lookupFor :: RayGrid -> (Double, Double, Double, Double) -> Maybe (Bool, [Int])
+lookupFor rg (px, py, qx, qy) =
+  rayGridLookup rg px py qx qy (\ls w s e -> Just (True, map (rayGridLineItem ls w) [s .. e - 1]))
+                (\items s e -> Just (False, map (indexI items) [s .. e - 1])) Nothing
+
 -- | A short segment from every point of a lattice over the domain finer
 -- than any grid's cells (and through its far edges), into each quadrant:
 -- together they read every list.
@@ -117,6 +124,26 @@ spec = do
              .&&. counterexample (show spans)
                     (map fst spans === 0 : map snd (take (length spans - 1) spans)
                        .&&. maybe 0 snd (lastMay spans) === rayGridEntries rg)
+
+  describe "rayGridLookup" $ do
+    it "gives rayGridList's boxes, in its order, for every list and segments of every kind" $
+      property $ forAll (oneof [elements [(3, 3), (10, 10)] >>= genBoxesIn, arenaBoxes . arenaFor <$> genWorld]) $ \bs ->
+        forAll (vectorOf 100 (oneof [genAtLimits bs, genWild])) $ \segs ->
+          let rg = gridOf bs
+          in conjoin [ counterexample (show seg) (fmap snd (lookupFor rg seg) === fmap (\(_, _, is) -> is) (listFor rg seg))
+                     | seg <- probes bs ++ segs ]
+    it "reads a cell's short lists from its line, and long ones from the lists" $ do
+      -- 20 small boxes around the origin (every cell near them has more
+      -- than 14 entries) and one box 20 m away
+      let bs = [ Box (x - 0.01) (y - 0.01) (x + 0.01) (y + 0.01)
+               | k <- [0 .. 19 :: Int], let x = 0.02 * fromIntegral k, let y = 0.01 * fromIntegral k ]
+               ++ [Box 20 20 20.2 20.2]
+          rg = gridOf bs
+          seg x y = (x, y, x + 1, y + 1)
+      fmap fst (lookupFor rg (seg 0.1 0.05)) `shouldBe` Just False
+      fmap fst (lookupFor rg (seg 19 19)) `shouldBe` Just True
+      lookupFor rg (seg 0.1 0.05) `shouldBe` Just (False, [0 .. 19])
+      lookupFor rg (seg 19 19) `shouldBe` Just (True, [20])
 
   describe "rayGrid" $ do
     it "has no lists, and answers for no segment, without boxes or when their extent overflows" $ do
