@@ -154,6 +154,14 @@ spec = do
           (sf2, _) = stepSF sf1 0.1 2
           (sf3, _) = stepSF sf2 0.1 3
       map isStepSF [sf0, sf1, sf2, sf3] `shouldBe` [False, False, True, True]
+    it "takes the function behind it into the node (fixed)" $ do
+      let (sf1, _) = stepSF fused 0 1
+          (sf2, _) = stepSF sf1 0.1 2
+      map isStepSF [fused, sf1, sf2] `shouldBe` [False, False, True]
+    it "gives the numbers of its stages with a function and a stateful node behind it (property)" $
+      property $ forAll (genSamples (choose (-10, 10))) $ \samples ->
+        let behind sf = sf >>> iPre 1 >>> arr (* 2)
+        in sameBits (runSamples (behind fused) samples) (runSamples (behind opaqueFused) samples)
     it "gives the numbers of its stages stepped one by one, bit for bit (property)" $
       property $ forAll (genSamples (choose (-10, 10))) $ \samples ->
         sameBits (runSamples fused samples) (runSamples opaqueFused samples)

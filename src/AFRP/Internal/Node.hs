@@ -88,7 +88,8 @@
 --   (@arr p >>> (integral *** integral)@, the shape of the notes'
 --   odometry) the node holds the input as it came and applies @p@ at the
 --   next step, where the sums need its value, instead of storing the
---   thunk of @p a@;
+--   thunk of @p a@, and a function behind the pair is applied by the
+--   node, lazily ('int2OnQ');
 -- * lifted functions composed where GHC can see them (@arr f >>> arr g@
 --   written in the source, or exposed by inlining) are fused by rewrite
 --   rules before GHC optimises the code ('AFRP.Internal.SF.compSF',
@@ -321,9 +322,33 @@ int2On p !s1 !s2 prev = NStep (\dt a -> case p prev of
 fuseInt2 :: (a -> c) -> Node c b -> Maybe (Node a b)
 fuseInt2 p g = case g of
   NPar (NIntD acc1 prev1) (NIntD acc2 prev2) -> Just (int2S p acc1 prev1 acc2 prev2)
+  -- with a function behind the pair, taken into the node ('int2OnQ')
+  NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) (NPure (FDG q)) ->
+    Just (int2SQ p q acc1 prev1 acc2 prev2)
+  NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) (NComp (NPure (FDG q)) rest) ->
+    Just (NComp (int2SQ p q acc1 prev1 acc2 prev2) rest)
   NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) rest ->
     Just (NComp (int2S p acc1 prev1 acc2 prev2) rest)
   _ -> Nothing
+
+-- | @int2OnQ p q s1 s2 prev@ is @int2On p s1 s2 prev >>> arr q@ as one
+-- node: its output is @q@ of the pair of sums, applied lazily, as the
+-- composition applies the function behind a stateful node (the same
+-- value, without the pair's boxes, the composition node and its step).
+int2OnQ :: (c -> (Double, Double)) -> ((Double, Double) -> b) -> Double -> Double -> c
+        -> Node c b
+int2OnQ p q !s1 !s2 prev = NStep (\dt a -> case p prev of
+  (x, z) -> let !s1' = s1 + dt * x
+                !s2' = s2 + dt * z
+            in (# int2OnQ p q s1' s2' a, q (s1', s2') #))
+
+-- The first step of a fused pair with a function behind it.
+int2SQ :: (a -> (Double, Double)) -> ((Double, Double) -> b) -> Double -> Double -> Double
+       -> Double -> Node a b
+int2SQ p q !acc1 prev1 !acc2 prev2 = NStep (\dt a ->
+  let !s1 = acc1 + dt * prev1
+      !s2 = acc2 + dt * prev2
+  in (# int2OnQ p q s1 s2 a, q (s1, s2) #))
 
 -- The first step of a fused pair: the previous inputs held by the nodes.
 int2S :: (a -> (Double, Double)) -> Double -> Double -> Double -> Double
