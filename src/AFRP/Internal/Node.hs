@@ -318,18 +318,30 @@ int2On p !s1 !s2 prev = NStep (\dt a -> case p prev of
 -- 'Double' after its first step, alone or at the head of a composition,
 -- and 'Nothing' otherwise. The fused node's first step uses the previous
 -- inputs the two integral nodes hold (selectors of @p@ of the previous
--- input, unevaluated): the same sums as the pair's step.
+-- input, unevaluated): the same sums as the pair's step. The tests are
+-- inlined into 'stepN', the building ('fuseInt2Out') is not, so that the
+-- stepper's code does not grow (inlined, it slowed network c by 5%).
 fuseInt2 :: (a -> c) -> Node c b -> Maybe (Node a b)
 fuseInt2 p g = case g of
-  NPar (NIntD acc1 prev1) (NIntD acc2 prev2) -> Just (int2S p acc1 prev1 acc2 prev2)
+  NPar (NIntD _ _) (NIntD _ _)            -> Just (fuseInt2Out p g)
+  NComp (NPar (NIntD _ _) (NIntD _ _)) _ -> Just (fuseInt2Out p g)
+  _                                       -> Nothing
+{-# INLINE fuseInt2 #-}
+
+-- @arr p >>> g@ with the pair of integrals at the head of @g@ made one
+-- node; any other @g@ (never passed) is left as the composition.
+fuseInt2Out :: (a -> c) -> Node c b -> Node a b
+fuseInt2Out p g = case g of
+  NPar (NIntD acc1 prev1) (NIntD acc2 prev2) -> int2S p acc1 prev1 acc2 prev2
   -- with a function behind the pair, taken into the node ('int2OnQ')
   NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) (NPure (FDG q)) ->
-    Just (int2SQ p q acc1 prev1 acc2 prev2)
+    int2SQ p q acc1 prev1 acc2 prev2
   NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) (NComp (NPure (FDG q)) rest) ->
-    Just (NComp (int2SQ p q acc1 prev1 acc2 prev2) rest)
+    NComp (int2SQ p q acc1 prev1 acc2 prev2) rest
   NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) rest ->
-    Just (NComp (int2S p acc1 prev1 acc2 prev2) rest)
-  _ -> Nothing
+    NComp (int2S p acc1 prev1 acc2 prev2) rest
+  _ -> NComp (NPure (FDG p)) g
+{-# NOINLINE fuseInt2Out #-}
 
 -- | @int2OnQ p q s1 s2 prev@ is @int2On p s1 s2 prev >>> arr q@ as one
 -- node: its output is @q@ of the pair of sums, applied lazily, as the
