@@ -82,7 +82,14 @@
 --   stepped as integral nodes ("AFRP.Internal.Chain", 'chainFromInt'),
 --   with the sums passed unboxed from one integral to the next;
 -- * @integral *** integral@ at 'Double' is stepped in place, both sums
---   at once;
+--   at once, and after its first step it is one node ('int2On') that
+--   holds its input pair unevaluated instead of two integral nodes
+--   holding a selector of it each; with a function in front of it
+--   (@arr p >>> (integral *** integral)@, the shape of the notes'
+--   odometry) the node holds the input as it came and applies @p@ at the
+--   next step, where the sums need its value, instead of storing the
+--   thunk of @p a@, and a function behind the pair is applied by the
+--   node, lazily ('int2OnQ');
 -- * lifted functions composed where GHC can see them (@arr f >>> arr g@
 --   written in the source, or exposed by inlining) are fused by rewrite
 --   rules before GHC optimises the code ('AFRP.Internal.SF.compSF',
@@ -195,6 +202,9 @@ stepN n dt a = case n of
   NPure (FDC b) -> (# n, b #)
   NPure (FDG f) -> (# n, f a #)
   NComp f g     -> case f of
+    -- arr p >>> (integral *** integral) at Double: one node from now on
+    -- (see 'int2On').
+    NPure (FDG p) | Just n' <- fuseInt2 p g -> stepN n' dt a
     -- A pure function in front of a stateful node (the usual shape): apply
     -- it (lazily, as its own node would) without a step of its own.
     NPure (FDG p) -> case g of
@@ -224,6 +234,10 @@ stepN n dt a = case n of
         -- nodes with functions between them: h is stepped on p c (lazily,
         -- as the inner composition would) without a step of its own; the
         -- successor is the one the two steps would build.
+        -- (f >>> (arr p >>> (integral *** integral)) at Double: the pair
+        -- is made one node with p, see 'int2On')
+        NComp (NPure (FDG p)) h | Just h' <- fuseInt2 p h -> case stepN h' dt c of
+          (# h'', b #) -> case rebuildComp f' h'' of !n' -> (# n', b #)
         NComp gp@(NPure (FDG p)) h -> case stepN h dt (p c) of
           (# h', b #) -> case compNI gp h' of
             !g' -> case rebuildComp f' g' of !n' -> (# n', b #)
@@ -247,14 +261,15 @@ stepN n dt a = case n of
         (# g', y #) -> case secondN g' of !n' -> (# n', (c, y) #)
       -- integral *** integral at Double (a vector integrated by
       -- components, as the notes' odometry does): both steps in place,
-      -- the sums y_n = y_(n-1) + dt_n * a_(n-1) of 'stepIntD', each
-      -- component stored unevaluated; the successor is the one the two
-      -- steps would build (two integral nodes stay a pair).
+      -- the sums y_n = y_(n-1) + dt_n * a_(n-1) of 'stepIntD'; the
+      -- successor is one node that holds the input pair unevaluated and
+      -- takes it apart at the next step, where both sums need its
+      -- components ('int2On' with the identity), where the two nodes
+      -- would each hold a selector of it, evaluated at that step.
       NIntD acc1 prev1 | NIntD acc2 prev2 <- g ->
-        let (x, z) = a
-            !acc1' = acc1 + dt * prev1
+        let !acc1' = acc1 + dt * prev1
             !acc2' = acc2 + dt * prev2
-        in (# NPar (NIntD acc1' x) (NIntD acc2' z), (acc1', acc2') #)
+        in (# int2On (\p -> p) acc1' acc2' a, (acc1', acc2') #)
       _         -> let (x, z) = a in case stepN f dt x of
         (# f', y #) -> case stepN g dt z of
           (# g', w #) -> case rebuildPar f' g' of !n' -> (# n', (y, w) #)
@@ -281,6 +296,79 @@ stepN n dt a = case n of
   NPre prev     -> (# NPre a, prev #)
   -- integral: see 'stepIntD'
   NIntD acc prev -> stepIntD acc prev dt a
+
+-- | @int2On p s1 s2 prev@ is @arr p >>> (integral *** integral)@ at
+-- 'Double' after a step, as one node: the two running sums and the
+-- previous input sample as it came, unevaluated. The nodes would hold two
+-- selectors of the unevaluated @p prev@, evaluated at this step, where
+-- the sums need them; this node applies @p@ at this step instead, and
+-- takes the pair apart: the same values, evaluated at the same step, with
+-- the same sums @y_n = y_(n-1) + dt_n * a_(n-1)@, without the three
+-- thunks (and without the pair's two nodes, rebuilt at every step). A
+-- step that is replayed ('freezeN') applies @p@ again: the same value,
+-- computed twice, on that one step.
+int2On :: (c -> (Double, Double)) -> Double -> Double -> c -> Node c (Double, Double)
+int2On p !s1 !s2 prev = NStep (\dt a -> case p prev of
+  (x, z) -> let !s1' = s1 + dt * x
+                !s2' = s2 + dt * z
+            in (# int2On p s1' s2' a, (s1', s2') #))
+
+-- @fuseInt2 p g@ is @Just@ @arr p >>> g@ as one 'int2On' node (followed
+-- by the rest of the spine) when @g@ is @integral *** integral@ at
+-- 'Double' after its first step, alone or at the head of a composition,
+-- and 'Nothing' otherwise. The fused node's first step uses the previous
+-- inputs the two integral nodes hold (selectors of @p@ of the previous
+-- input, unevaluated): the same sums as the pair's step. The tests are
+-- inlined into 'stepN', the building ('fuseInt2Out') is not, so that the
+-- stepper's code does not grow (inlined, it slowed network c by 5%).
+fuseInt2 :: (a -> c) -> Node c b -> Maybe (Node a b)
+fuseInt2 p g = case g of
+  NPar (NIntD _ _) (NIntD _ _)            -> Just (fuseInt2Out p g)
+  NComp (NPar (NIntD _ _) (NIntD _ _)) _ -> Just (fuseInt2Out p g)
+  _                                       -> Nothing
+{-# INLINE fuseInt2 #-}
+
+-- @arr p >>> g@ with the pair of integrals at the head of @g@ made one
+-- node; any other @g@ (never passed) is left as the composition.
+fuseInt2Out :: (a -> c) -> Node c b -> Node a b
+fuseInt2Out p g = case g of
+  NPar (NIntD acc1 prev1) (NIntD acc2 prev2) -> int2S p acc1 prev1 acc2 prev2
+  -- with a function behind the pair, taken into the node ('int2OnQ')
+  NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) (NPure (FDG q)) ->
+    int2SQ p q acc1 prev1 acc2 prev2
+  NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) (NComp (NPure (FDG q)) rest) ->
+    NComp (int2SQ p q acc1 prev1 acc2 prev2) rest
+  NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) rest ->
+    NComp (int2S p acc1 prev1 acc2 prev2) rest
+  _ -> NComp (NPure (FDG p)) g
+{-# NOINLINE fuseInt2Out #-}
+
+-- | @int2OnQ p q s1 s2 prev@ is @int2On p s1 s2 prev >>> arr q@ as one
+-- node: its output is @q@ of the pair of sums, applied lazily, as the
+-- composition applies the function behind a stateful node (the same
+-- value, without the pair's boxes, the composition node and its step).
+int2OnQ :: (c -> (Double, Double)) -> ((Double, Double) -> b) -> Double -> Double -> c
+        -> Node c b
+int2OnQ p q !s1 !s2 prev = NStep (\dt a -> case p prev of
+  (x, z) -> let !s1' = s1 + dt * x
+                !s2' = s2 + dt * z
+            in (# int2OnQ p q s1' s2' a, q (s1', s2') #))
+
+-- The first step of a fused pair with a function behind it.
+int2SQ :: (a -> (Double, Double)) -> ((Double, Double) -> b) -> Double -> Double -> Double
+       -> Double -> Node a b
+int2SQ p q !acc1 prev1 !acc2 prev2 = NStep (\dt a ->
+  let !s1 = acc1 + dt * prev1
+      !s2 = acc2 + dt * prev2
+  in (# int2OnQ p q s1 s2 a, q (s1, s2) #))
+
+-- The first step of a fused pair: the previous inputs held by the nodes.
+int2S :: (a -> (Double, Double)) -> Double -> Double -> Double -> Double
+      -> Node a (Double, Double)
+int2S p !acc1 prev1 !acc2 prev2 = NStep (\dt a ->
+  let !s1 = acc1 + dt * prev1
+      !s2 = acc2 + dt * prev2
+  in (# int2On p s1 s2 a, (s1, s2) #))
 
 -- | 'stepN', with the node of an 'AFRP.Integration.integral' at 'Double'
 -- (the commonest leaf of the networks that combinators step themselves:
