@@ -9,8 +9,11 @@ module TestUtil
   , shouldApproxList
   , PositiveDt (..)
   , genSamples
+  , withinTwoSeconds
   ) where
 
+import           Control.Exception (NonTermination (..), evaluate, try)
+import           System.Timeout    (timeout)
 import           Test.Hspec
 import           Test.QuickCheck
 
@@ -63,3 +66,14 @@ genSamples :: Gen a -> Gen [(DTime, a)]
 genSamples g = do
   n  <- choose (1, 40)
   vectorOf n ((,) <$> choose (0.001, 1) <*> g)
+
+-- | The actual outputs, each evaluated within two seconds in all, must be
+-- the expected ones; a @\<\<loop\>\>@ or a hang fails (for the laziness
+-- specs, where a wrong implementation diverges).
+withinTwoSeconds :: (Eq a, Show a) => [a] -> [a] -> Expectation
+withinTwoSeconds actual expected = do
+  r <- timeout 2000000 (try (evaluate (foldr seq () actual)))
+  case r of
+    Nothing                    -> expectationFailure "no result within 2 s"
+    Just (Left NonTermination) -> expectationFailure "<<loop>>"
+    Just (Right ())            -> actual `shouldBe` expected

@@ -18,12 +18,11 @@
 -- hanging the suite.
 module AFRP.LoopLazinessSpec (spec) where
 
-import           Control.Exception (NonTermination (..), evaluate, try)
-import           System.Timeout    (timeout)
 import           Test.Hspec        hiding (after)
 
 import           AFRP
 import           AFRP.Internal.SF  (stepSF)
+import           TestUtil          (runDt, withinTwoSeconds)
 
 spec :: Spec
 spec = do
@@ -33,9 +32,9 @@ spec = do
     mapM_ (\(name, sf) -> it name (throughPre sf)) cases
   describe "recursive arrow notation" $ do
     it "a mode flag fed back into an edge detector" $
-      within (take 8 (runDt 0.1 modeFlag inputs)) (take 8 inputs)
+      withinTwoSeconds (take 8 (runDt 0.1 modeFlag inputs)) (take 8 inputs)
     it "a state machine whose switch event comes from its own fed-back output" $
-      within (take 7 (runDt 0.1 selfSwitching inputs)) [0, 1, 2, 3, -10, -10, -10]
+      withinTwoSeconds (take 7 (runDt 0.1 selfSwitching inputs)) [0, 1, 2, 3, -10, -10, -10]
 
 -- The input samples (dt = 0.1): signs change, so edges, holds and switches
 -- all see events.
@@ -48,33 +47,19 @@ dt = 0.1
 -- The loop outputs its input: the combinator's output is discarded.
 discarded :: SF (Double, Double) Double -> Expectation
 discarded sf =
-  within (runDt dt (loop (second (arr (\c -> (c, c)) >>> sf) >>> arr (\(a, _) -> (a, a)))) inputs)
+  withinTwoSeconds (runDt dt (loop (second (arr (\c -> (c, c)) >>> sf) >>> arr (\(a, _) -> (a, a)))) inputs)
          inputs
 
 -- The combinator's output fed back through iPre 0, against the same
 -- feedback done by hand.
 throughPre :: SF (Double, Double) Double -> Expectation
 throughPre sf =
-  within (runDt dt (loop (sf >>> arr (\y -> (y, y)) >>> second (iPre 0))) inputs)
+  withinTwoSeconds (runDt dt (loop (sf >>> arr (\y -> (y, y)) >>> second (iPre 0))) inputs)
          (byHand sf 0 inputs)
 
 byHand :: SF (Double, Double) Double -> Double -> [Double] -> [Double]
 byHand _  _    []       = []
 byHand sf prev (a : as) = case stepSF sf dt (a, prev) of (sf', y) -> y : byHand sf' y as
-
--- The actual outputs, evaluated within two seconds, must be the expected
--- ones; a <<loop>> or a hang fails.
-within :: [Double] -> [Double] -> Expectation
-within actual expected = do
-  r <- timeout 2000000 (try (evaluate (foldr seq () actual)))
-  case r of
-    Nothing                    -> expectationFailure "no result within 2 s"
-    Just (Left NonTermination) -> expectationFailure "<<loop>>"
-    Just (Right ())            -> actual `shouldBe` expected
-
-runDt :: DTime -> SF a b -> [a] -> [b]
-runDt _  _  []       = []
-runDt d sf (a : as) = embed sf (a, [(d, Just x) | x <- as])
 
 ------------------------------------------------------------------------------
 -- The combinators, fed from (a, c)
