@@ -1,5 +1,6 @@
+{-# LANGUAGE ScopedTypeVariables #-}
 -- | Helpers shared by the specs: running signal functions on sample lists
--- and comparing floating-point outputs.
+-- and comparing floating-point outputs; laziness checks; temporary folders.
 module TestUtil
   ( runDt
   , runSamples
@@ -10,9 +11,12 @@ module TestUtil
   , PositiveDt (..)
   , genSamples
   , withinTwoSeconds
+  , withTempDir
   ) where
 
-import           Control.Exception (NonTermination (..), evaluate, try)
+import           Control.Exception (NonTermination (..), bracket, evaluate, try)
+import           System.Directory  (createDirectory, getTemporaryDirectory, removeDirectoryRecursive)
+import           System.FilePath   ((</>))
 import           System.Timeout    (timeout)
 import           Test.Hspec
 import           Test.QuickCheck
@@ -77,3 +81,14 @@ withinTwoSeconds actual expected = do
     Nothing                    -> expectationFailure "no result within 2 s"
     Just (Left NonTermination) -> expectationFailure "<<loop>>"
     Just (Right ())            -> actual `shouldBe` expected
+
+-- | An action in a new, empty temporary folder, removed (with what the
+-- action left in it) afterwards.
+withTempDir :: (FilePath -> IO a) -> IO a
+withTempDir act = do
+  tmp <- getTemporaryDirectory
+  let go k = do
+        let d = tmp </> ("afrp-spec-" ++ show (k :: Int))
+        r <- try (createDirectory d)
+        either (\(_ :: IOError) -> go (k + 1)) (const (pure d)) r
+  bracket (go 0) removeDirectoryRecursive act

@@ -3,7 +3,7 @@
 -- file round trip, every reported fault, determinism.
 module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 
-import           Control.Exception   (bracket, finally, try)
+import           Control.Exception   (finally, try)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
 import           Control.Concurrent  (threadDelay)
@@ -13,8 +13,7 @@ import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, sort, tails)
 import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
-import           System.Directory    (createDirectory, getTemporaryDirectory, listDirectory,
-                                      removeDirectoryRecursive)
+import           System.Directory    (createDirectory, listDirectory)
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     ((</>))
 import           System.IO
@@ -25,6 +24,7 @@ import           AFrobRobotSim
 import           AFrobRobotSim.Log   (LogFrame (..), LogHeader (..), LogRect (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
 import           AFrobRobotSim.Replay (writeReplayFromLog)
+import           TestUtil (withTempDir)
 
 world :: WorldTemplate
 world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2)]
@@ -55,17 +55,6 @@ captured act = withTempDir $ \dir -> do
     readAll f = do
       s <- readFile f
       length s `seq` pure s
-
-withTempDir :: (FilePath -> IO a) -> IO a
-withTempDir act = do
-  tmp <- getTemporaryDirectory
-  let go k = do
-        let d = tmp </> ("afrp-runspec-" ++ show (k :: Int))
-        r <- try (createDirectory d)
-        case r of
-          Right ()                -> pure d
-          Left (_ :: IOError)     -> go (k + 1)
-  bracket (go 0) removeDirectoryRecursive act
 
 framesIn :: FilePath -> IO [BS.ByteString]
 framesIn dir = do

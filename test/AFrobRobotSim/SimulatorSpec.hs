@@ -12,14 +12,14 @@ import qualified Data.ByteString.Char8 as BC
 import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
 import           GHC.IO.Handle     (hDuplicate, hDuplicateTo)
 import           Data.List         (isInfixOf, isPrefixOf, sort)
-import           System.Directory  (createDirectory, getTemporaryDirectory, listDirectory,
-                                    removeDirectoryRecursive)
+import           System.Directory  (createDirectory, listDirectory)
 import           System.FilePath   ((</>))
 import           System.IO         (IOMode (..), hClose, hFlush, stdout, withFile)
 import           Test.Hspec        hiding (after)
 
 import           AFrob             hiding (forAll)
 import           AFrobRobotSim
+import           TestUtil (withTempDir)
 
 -- | The snapshot at (about) time t of a run with step dt.
 at :: DTime -> Double -> [WorldState] -> WorldState
@@ -265,7 +265,7 @@ spec = do
             files <- mapM (\f -> (,) f . withoutRunVariables <$> BS.readFile (dir </> f))
                           (filter (/= "stdout") names)
             pure (files, withoutRunVariables (BC.pack (takeWhile (/= ',') summary)))
-      tempDir $ \dir -> do
+      withTempDir $ \dir -> do
         one <- withCaps 1 (run (dir </> "one"))
         two <- withCaps 2 (run (dir </> "two"))
         map fst (fst one) `shouldSatisfy` (\fs -> length (filter ("frame-" `isPrefixOf`) fs) == 11
@@ -329,18 +329,6 @@ stdoutOf file act = do
     (hDuplicateTo h stdout >> act) `finally` (hFlush stdout >> hDuplicateTo saved stdout >> hClose saved)
   s <- readFile file
   length s `seq` pure s
-
--- An action in a new temporary folder, removed afterwards.
-tempDir :: (FilePath -> IO a) -> IO a
-tempDir act = do
-  tmp <- getTemporaryDirectory
-  let go k = do
-        let d = tmp </> ("afrp-simspec-" ++ show (k :: Int))
-        r <- try (createDirectory d)
-        case r of
-          Right ()                 -> pure d
-          Left (_ :: IOError)      -> go (k + 1)
-  bracket (go 0) removeDirectoryRecursive act
 
 -- The centre and radius of the circle through three points.
 circleThrough :: Point2 Double -> Point2 Double -> Point2 Double -> (Point2 Double, Double)

@@ -5,11 +5,9 @@
 -- 'childVariable' set.
 module AFrobRobotSim.SweepSpec (spec, childVariable, child) where
 
-import           Control.Exception   (bracket, try)
 import           Control.Monad       (forM, forM_, unless)
 import           Data.List           (isInfixOf, isPrefixOf, sort)
-import           System.Directory    (createDirectory, doesFileExist, findExecutable, getPermissions,
-                                      getTemporaryDirectory, makeAbsolute, removeDirectoryRecursive,
+import           System.Directory    (doesFileExist, findExecutable, getPermissions, makeAbsolute,
                                       setOwnerExecutable, setPermissions)
 import           System.Environment  (getArgs, getEnvironment, getExecutablePath)
 import           System.Exit         (ExitCode (..))
@@ -23,6 +21,7 @@ import           AFrob               hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.JSON
 import           AFrobRobotSim.Sweep (mergeResults, sweepMergeMain)
+import           TestUtil (withTempDir)
 
 -- | The environment variable that makes the test binary run 'child'.
 childVariable :: String
@@ -47,15 +46,6 @@ child "program" = do
                                        else mrFinalize (ddVelDiff speed speed))
   runSim (Just world) ctl ctl
 child other = ioError (userError ("unknown child " ++ show other))
-
-withTempDir :: (FilePath -> IO a) -> IO a
-withTempDir act = do
-  tmp <- getTemporaryDirectory
-  let go k = do
-        let d = tmp </> ("afrp-sweepspec-" ++ show (k :: Int))
-        r <- try (createDirectory d)
-        either (\(_ :: IOError) -> go (k + 1)) (const (pure d)) r
-  bracket (go 0) removeDirectoryRecursive act
 
 -- A script in @dir@ that starts this test binary as the given child.
 childScript :: FilePath -> String -> IO FilePath
