@@ -269,13 +269,14 @@ spec = do
       prog <- childScript dir "program"
       sweep <- script "sweep"
       writeFile (dir </> "jobs") (unlines
-        [ "# seed 2 throws, seed 3 has a flag the program rejects"
+        [ "# seed 2 throws, seed 3 has a flag the program rejects, seed 4 cannot write its SVG"
         , "--seed 1 --param speed=1", "--seed 2 --param speed=1 --param failAt=0.5", ""
-        , "--seed 3 --param speed=1 --no-such-flag" ])
+        , "--seed 3 --param speed=1 --no-such-flag", "--seed 4 --param speed=2 --svg /dev/full" ])
       (code, _, err) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "2"]
-      (code, "3 runs, 2 failed" `isInfixOf` err) `shouldBe` (ExitFailure 1, True)
+      (code, "4 runs, 3 failed" `isInfixOf` err) `shouldBe` (ExitFailure 1, True)
       table <- merged dir [dir </> "r.jsonl"]
       table `shouldSatisfy` ("speed=1  (2 runs, 1 failed)" `isInfixOf`)
       table `shouldSatisfy` ("failAt=0.5 speed=1  (1 runs, 1 failed)" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 2: the controller of SimbotA 1 failed at t = 0.500" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 3: exit code 2, no result" `isInfixOf`)
+      table `shouldSatisfy` ("FAILED seed 4: exit code 1: " `isInfixOf`)
