@@ -35,7 +35,7 @@ replayFrom args = do
   where
     go failWith f o = do
       r <- writeReplayFromLog f o
-      either (failWith . ((f ++ ": ") ++)) (const (putStrLn ("wrote " ++ o))) r
+      either failWith (const (putStrLn ("wrote " ++ o))) r   -- the message names the file
 
 -- | The SimbotA demos, by id.
 demoA :: SimbotController

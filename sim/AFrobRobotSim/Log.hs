@@ -53,6 +53,7 @@ module AFrobRobotSim.Log
   ) where
 
 import           Control.Exception         (IOException, evaluate, try, uninterruptibleMask_)
+import qualified Data.ByteString           as B
 import qualified Data.ByteString.Char8     as BC
 import           Data.IORef
 import           Data.List                 (stripPrefix)
@@ -70,6 +71,7 @@ import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
+import           AFrobRobotSim.WorldFile.Lexical (decodeUtf8, utf8Error)
 
 -- | What a log needs besides the states: the world and how it was run.
 data LogConfig = LogConfig
@@ -316,19 +318,15 @@ readLog txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all 
         (j, _) : _   -> Left ("line " ++ show j ++ ": a line after the summary")
       LineHeader _  -> Left ("line " ++ show i ++ ": a second header")
 
--- | 'readLog' of a file (read as UTF-8), the error prefixed with its name;
--- a file that cannot be opened is a 'Left' too.
+-- | 'readLog' of a file (UTF-8), the error prefixed with its name; a
+-- file that cannot be read, or is not UTF-8 (with the line and column of
+-- the first bad byte), is a 'Left' too.
 readLogFile :: FilePath -> IO (Either String RunLog)
 readLogFile path = do
-  opened <- try (openFile path ReadMode)
-  case opened of
-    Left e  -> pure (Left (path ++ ": " ++ show (e :: IOException)))
-    Right h -> readLogHandle path h
-
-readLogHandle :: FilePath -> Handle -> IO (Either String RunLog)
-readLogHandle path h = do
-  hSetEncoding h utf8
-  txt <- hGetContents h
-  let r = either (\e -> Left (path ++ ": " ++ e)) Right (readLog txt)
-  either (const ()) (const ()) r `seq` hClose h
-  pure r
+  r <- try (B.readFile path)
+  pure $ case r of
+    Left e      -> Left (show (e :: IOException))   -- it names the file
+    Right bytes -> case utf8Error bytes of
+      Just (l, c, b) -> Left (path ++ ": line " ++ show l ++ ", column " ++ show c
+                              ++ ": not UTF-8 text (byte " ++ show b ++ ")")
+      Nothing        -> either (\e -> Left (path ++ ": " ++ e)) Right (readLog (decodeUtf8 bytes))

@@ -114,7 +114,7 @@ writeReplayFromLog logPath out = do
   r <- readLogFile logPath
   case r of
     Left e  -> pure (Left e)
-    Right l -> either (\e -> Left (out ++ ": " ++ show (e :: IOException))) Right
+    Right l -> either (\e -> Left (show (e :: IOException))) Right   -- it names the page
                  <$> try (writeAscii out (replayPage l))
 
 -- | A page being recorded as a run goes. Each frame's line is encoded at

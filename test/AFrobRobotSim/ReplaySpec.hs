@@ -1,9 +1,10 @@
 -- | The replay page, as text: the log is embedded intact and safely.
 module AFrobRobotSim.ReplaySpec (spec) where
 
+import qualified Data.ByteString          as BS
 import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf, tails)
 import           System.Directory         (getTemporaryDirectory, listDirectory, removeFile)
-import           System.IO                (hClose, openTempFile)
+import           System.IO                (hClose, openBinaryTempFile, openTempFile)
 import           Test.Hspec
 
 import           AFrob                    (constant, ddVelDiff, mrFinalize)
@@ -109,11 +110,19 @@ spec = do
       tmp <- getTemporaryDirectory
       let missing = tmp ++ "/afrp-no-such-log.jsonl"
       r1 <- writeReplayFromLog missing (missing ++ ".html")
-      r1 `shouldSatisfy` either (missing `isInfixOf`) (const False)
+      r1 `shouldSatisfy` either (\e -> missing `isInfixOf` e && not ((missing ++ ": " ++ missing) `isInfixOf` e)) (const False)
       (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
       hClose h
       writeFile logPath fixtureLogText
       let out = tmp ++ "/afrp-no-such-folder/page.html"
       r2 <- writeReplayFromLog logPath out
       removeFile logPath
-      r2 `shouldSatisfy` either (out `isInfixOf`) (const False)
+      r2 `shouldSatisfy` either (\e -> out `isInfixOf` e && not ((out ++ ": " ++ out) `isInfixOf` e)) (const False)
+    it "reports a log that is not UTF-8 with the line and column of the first bad byte (fixed)" $ do
+      tmp <- getTemporaryDirectory
+      (logPath, h) <- openBinaryTempFile tmp "afrp-log.jsonl"
+      BS.hPut h (BS.pack [0x7b, 0x0a, 0x20, 0xff, 0x0a])
+      hClose h
+      r <- writeReplayFromLog logPath (logPath ++ ".html")
+      removeFile logPath
+      r `shouldBe` Left (logPath ++ ": line 2, column 2: not UTF-8 text (byte 255)")
