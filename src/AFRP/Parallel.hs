@@ -141,7 +141,8 @@ parZ = parWith stepColL (zipRoute "parZ")
 --
 -- > embed (parC localTime) ("ab", [(1, Just "cd")])  ==  [[0, 0], [1, 1]]
 parC :: SF a b -> SF [a] [b]
-parC sf = SF (lazyN (initN (\as0 -> stepN (sfNode (parZ (map (const sf) as0))) 0 as0)))
+parC sf = SF (lazyN (initN (\as0 ->
+  stepN (parN' stepColL (zipRoute "parC") (map (const (sfNode sf)) as0)) 0 as0)))
 
 parN' :: Stepper col -> (forall sf. a -> col sf -> col (b, sf)) -> col (Node b c) -> Node a (col c)
 parN' stepper rf = go
@@ -411,10 +412,8 @@ stepColF dt routed =
 -- programs use as collections; it computes the same collections as
 -- 'stepColF', more evaluated.
 stepColT :: Traversable col => DTime -> col (b, Node b c) -> (# col (Node b c), col c #)
-stepColT dt routed =
-  let stepped = fmap (\(b, n) -> boxStep n dt b) routed
-      nodes   = fmap (\(Boxed n _) -> n) stepped
-  in foldl' (\_ x -> x `seq` ()) () nodes `seq` (# nodes, fmap (\(Boxed _ c) -> c) stepped #)
+stepColT dt routed = case stepColF dt routed of
+  (# nodes, cs #) -> foldl' (\_ x -> x `seq` ()) () nodes `seq` (# nodes, cs #)
 
 stepMap :: Stepper (Map.Map k)
 stepMap = stepColT

@@ -92,7 +92,7 @@ switch (SF n0) k = SF (go n0)
       let r = case e of
             NoEvent -> Boxed (watch n' go) b
             Event c -> boxStep (sfNode (k c)) dt a
-      in (# NStep (\dt' a' -> case r of Boxed m _ -> stepN m dt' a'), case r of Boxed _ o -> o #)
+      in (# deferN (case r of Boxed m _ -> m), case r of Boxed _ o -> o #)
 
 -- | @dSwitch sf k@ is 'switch' except at the switching instant, where the
 -- output is still @sf@'s; @k c@ is started at that instant (its first
