@@ -393,8 +393,9 @@ simulateRun prog opts ffmpeg world rcA rcB = do
   unless (optQuiet opts) (mapM_ putStrLn wrote)
   hFlush stdout
   videoErrs <- case (ending, optVideo opts) of
-    (Finished, Just file) | null errs -> makeVideo opts ffmpeg file
-    _                                 -> pure []
+    -- (the checks before the run made sure ffmpeg is there when --video is given)
+    (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe file
+    _                                                      -> pure []
   let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs ++ videoErrs)
   unless (null allErrs) (putErr (unlines allErrs))
   case ending of
@@ -419,18 +420,15 @@ writeFrame dir k bytes = do
 frameTemp :: FilePath -> Int -> FilePath
 frameTemp dir k = dir </> printf "frame-%06d.ppm.tmp" k
 
--- Assemble the frames with ffmpeg (found on the PATH before the run); the
--- errors, if any.
-makeVideo :: SimOptions -> Maybe FilePath -> FilePath -> IO [String]
-makeVideo opts ffmpeg file =
-  case ffmpeg of
-    Nothing -> pure ["--video needs ffmpeg on the PATH; the frames are in " ++ optOut opts]
-    Just exe -> do
-      code <- rawSystem exe [ "-y", "-loglevel", "error", "-framerate", show (optFps opts)
-                            , "-i", optOut opts </> "frame-%06d.ppm", "-pix_fmt", "yuv420p", file ]
-      case code of
-        ExitSuccess   -> [] <$ putStrLn ("wrote " ++ file)
-        ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ optOut opts]
+-- Assemble the frames with ffmpeg (the executable found on the PATH before
+-- the run); the errors, if any.
+makeVideo :: SimOptions -> FilePath -> FilePath -> IO [String]
+makeVideo opts exe file = do
+  code <- rawSystem exe [ "-y", "-loglevel", "error", "-framerate", show (optFps opts)
+                        , "-i", optOut opts </> "frame-%06d.ppm", "-pix_fmt", "yuv420p", file ]
+  case code of
+    ExitSuccess   -> [] <$ putStrLn ("wrote " ++ file)
+    ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ optOut opts]
 
 -- Write a message to standard error in one piece (stderr is unbuffered,
 -- which would write it a character at a time).
