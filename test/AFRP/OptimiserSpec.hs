@@ -1,3 +1,4 @@
+{-# LANGUAGE Arrows #-}
 {-# OPTIONS_GHC -O #-}
 -- | The network simplifies itself: these tests look at the internal form
 -- of signal functions (through "AFRP.Internal.SF") as they are built and
@@ -8,7 +9,7 @@ module AFRP.OptimiserSpec (spec) where
 import           Test.Hspec hiding (after)
 
 import           AFRP
-import           AFRP.Internal.SF (isConstantSF, isPureSF, isStepSF, stepSF)
+import           AFRP.Internal.SF (isConstantSF, isPureSF, isStepSF, sfShape, stepSF)
 import           TestUtil         (runDt)
 
 -- | @arr (> x) >>> edge@ inside a function of @x@: the shape in which the
@@ -68,6 +69,41 @@ spec = do
       isPureSF (loop (arr (\(a, c) -> (a + 1, c))) :: SF Int Int) `shouldBe` True
     it "keeps stateful parts stateful" $
       isPureSF (arr (+ 1) >>> integral :: SF Double Double) `shouldBe` False
+
+  -- Built at run time (the parts hidden from the rewrite rules): the
+  -- spine nested to the right, the functions of a command moved out of its
+  -- @first@ and fused with their neighbours.
+  describe "at construction, the shape of the spine" $ do
+    let pre0 = unfused (iPre 0) :: SF Int Int
+        inc  = unfused (arr (+ 1)) :: SF Int Int
+        dbl  = unfused (arr (* 2)) :: SF Int Int
+    it "nests compositions to the right, however they were written" $ do
+      sfShape (((pre0 >>> pre0) >>> pre0) >>> pre0) `shouldBe` "(pre >>> (pre >>> (pre >>> pre)))"
+      sfShape ((inc >>> pre0) >>> dbl) `shouldBe` "(arr >>> (pre >>> arr))"
+    it "fuses functions that meet once the spine is nested to the right" $
+      sfShape ((inc >>> pre0 >>> inc) >>> (dbl >>> pre0)) `shouldBe` "(arr >>> (pre >>> (arr >>> pre)))"
+    it "moves the functions at either end of first's and second's network out" $ do
+      sfShape (first (inc >>> pre0 >>> dbl) :: SF (Int, Char) (Int, Char))
+        `shouldBe` "(arr >>> ((pre *** id) >>> arr))"
+      sfShape (second (inc >>> pre0 >>> dbl) :: SF (Char, Int) (Char, Int))
+        `shouldBe` "(arr >>> ((id *** pre) >>> arr))"
+      sfShape (unfused (arr (\x -> (x, x))) >>> first (inc >>> pre0 >>> dbl) >>> unfused (arr (uncurry (+))))
+        `shouldBe` "(arr >>> ((pre *** id) >>> arr))"
+    it "makes a command of arrow notation one stateful node between two functions" $ do
+      let sf = proc x -> do
+                 y <- pre0 -< x + 1
+                 z <- pre0 -< y * 2
+                 returnA -< z + x
+      sfShape sf `shouldBe` "(arr >>> ((pre *** id) >>> (arr >>> ((pre *** id) >>> arr))))"
+      embed sf (1, [(1, Just 2), (1, Just 3), (1, Just 4)]) `shouldBe` [1, 2, 7, 10]
+    it "outputs what the network as written outputs, as lazily" $ do
+      let sf = first (inc >>> pre0 >>> dbl) :: SF (Int, Char) (Int, Char)
+      embed sf ((1, 'a'), [(1, Just (2, 'b')), (1, Just (3, 'c'))]) `shouldBe` [(0, 'a'), (4, 'b'), (6, 'c')]
+      -- the component that first does not touch is never evaluated
+      map fst (embed sf ((1, undefined), [(1, Just (2, undefined))])) `shouldBe` [0, 4]
+      -- nor is second's
+      map fst (embed (second (inc >>> pre0 >>> dbl) :: SF (Char, Int) (Char, Int))
+                     (('a', undefined), [(1, Just ('b', 2))])) `shouldBe` "ab"
 
   -- These compositions are written in the source, so the library's
   -- rewrite rules fuse them at compile time (this module is compiled with

@@ -80,7 +80,14 @@
 -- * a run of such integrals in series, with delays and functions before
 --   integrals among them, becomes one chain node the first time it is
 --   stepped as integral nodes ("AFRP.Internal.Chain", 'chainFromInt'),
---   with the sums passed unboxed from one integral to the next;
+--   with the sums passed unboxed from one integral to the next, and three
+--   or more integrals in series (with or without functions between them)
+--   kept as one unboxed array of their sums, stepped by one loop;
+-- * a network is built as a spine of compositions nested to the right,
+--   with the lifted functions at either end of a @first@'s or
+--   @second@'s network moved outside it ('AFRP.Internal.SF.compSF',
+--   @firstB@ in "AFRP.Internal.SF"), so that the shapes above are found
+--   in networks written in arrow notation, which nests to the left;
 -- * @integral *** integral@ at 'Double' is stepped in place, both sums
 --   at once, and after its first step it is one node ('int2On') that
 --   holds its input pair unevaluated instead of two integral nodes

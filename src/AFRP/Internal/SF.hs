@@ -29,6 +29,7 @@ module AFRP.Internal.SF
   , isPureSF
   , isConstantSF
   , isStepSF
+  , sfShape
   ) where
 
 import           Control.Arrow
@@ -163,6 +164,25 @@ isStepSF :: SF a b -> Bool
 isStepSF (SF (NStep _)) = True
 isStepSF _              = False
 
+-- | The shape of the network as it is now, for tests that check how it
+-- was built: @arr@ (a lifted function), @id@, @const@, @step@ (an opaque
+-- stateful node), @pre@ (a delay), @int@ (an integral at 'Double'), and
+-- @(f >>> g)@, @(f *** g)@, @(f &&& g)@ around them.
+sfShape :: SF a b -> String
+sfShape (SF n0) = go n0
+  where
+    go :: Node x y -> String
+    go n = case n of
+      NPure FDI     -> "id"
+      NPure (FDC _) -> "const"
+      NPure (FDG _) -> "arr"
+      NComp f g     -> "(" ++ go f ++ " >>> " ++ go g ++ ")"
+      NPar f g      -> "(" ++ go f ++ " *** " ++ go g ++ ")"
+      NFan f g      -> "(" ++ go f ++ " &&& " ++ go g ++ ")"
+      NStep _       -> "step"
+      NPre _        -> "pre"
+      NIntD _ _     -> "int"
+
 ------------------------------------------------------------------------------
 -- Composition and lifting, fused at compile time
 
@@ -172,8 +192,56 @@ isStepSF _              = False
 -- "AFRP.EventSource"'s for @arr p >>> edge@) see compositions written in
 -- the source.
 compSF :: SF b c -> SF a b -> SF a c
-compSF (SF g) (SF f) = SF (compN f g)
+compSF (SF g) (SF f) = SF (compB f g)
 {-# INLINE [1] compSF #-}
+
+-- Composition as a signal function is built ('compSF'): 'compN', with
+-- the composition on the left taken apart first, so that a network is a
+-- spine nested to the right, whatever way the program nested it. Relies
+-- on associativity, @(f >>> g) >>> h = f >>> (g >>> h)@ (the same samples
+-- through the same nodes, as lazily). Arrow notation nests to the left
+-- (@(arr p >>> cmd) >>> arr q@); on a spine nested to the right the
+-- lifted functions meet and fuse ('compN''s @arr f >>> (arr g >>> n)@),
+-- and the stepper's shapes (a function on either side of a stateful
+-- node, chains of integrals) are found. A network changed while it runs
+-- (a switch) is rebuilt by 'compN' alone, as before.
+compB :: Node a c -> Node c b -> Node a b
+compB f g = case f of
+  NComp f1 f2 -> compN f1 (compB f2 g)
+  _           -> compN f g
+
+-- @first@ as a signal function is built: 'firstN', with the lifted
+-- functions at either end of the composition it wraps moved outside, where
+-- they fuse with their neighbours (arrow notation gives a command as
+-- @first (arr p >>> cmd)@, and a command ends in a function as often as
+-- not). Relies on @first (f >>> g) = first f >>> first g@ and @first (arr
+-- p) = arr (\ ~(a, c) -> (p a, c))@: the same values, as lazily (the
+-- component not given to @p@ is passed on as it came).
+firstB :: Node a b -> Node (a, c) (b, c)
+firstB n = case n of
+  NComp f@(NPure _) g                -> compB (firstN f) (firstB g)
+  NComp _ _ | Just (Peel h q) <- peel n -> compB (firstN h) (firstN (NPure q))
+  _                                  -> firstN n
+
+-- The same for @second@ ('secondSF'), by the mirror identities.
+secondB :: Node a b -> Node (c, a) (c, b)
+secondB n = case n of
+  NComp f@(NPure _) g                -> compB (secondN f) (secondB g)
+  NComp _ _ | Just (Peel h q) <- peel n -> compB (secondN h) (secondN (NPure q))
+  _                                  -> secondN n
+
+-- A composition taken apart as the network before its last node and that
+-- last node, when the last is a lifted function.
+data Peel a b where
+  Peel :: Node a c -> FunD c b -> Peel a b
+
+peel :: Node a b -> Maybe (Peel a b)
+peel n = case n of
+  NComp f (NPure q) -> Just (Peel f q)
+  NComp f g         -> case peel g of
+    Just (Peel h q) -> Just (Peel (compN f h) q)
+    Nothing         -> Nothing
+  _                 -> Nothing
 
 -- | The instances' 'arr': eta-expanded, so that an 'arr' of a partial
 -- application (@arr (foldl' (+) 0)@, @arr (uncurry f)@) is compiled, once
@@ -213,7 +281,7 @@ arrSF f = SF (arrN (\a -> f a))
 -- rewrite rules ("AFRP.Delay"'s, for @loop (second (iPre c) >>> arr g)@)
 -- see it.
 secondSF :: SF a b -> SF (c, a) (c, b)
-secondSF (SF f) = SF (secondN f)
+secondSF (SF f) = SF (secondB f)
 {-# INLINE [1] secondSF #-}
 
 -- | The instances' 'loop' ('loopN' at run time), inlined only late (phase
@@ -236,7 +304,8 @@ instance Arrow SF where
   -- 'arrSF': eta-expanded, and fused with its neighbours at compile time.
   arr = arrSF
   {-# INLINE arr #-}
-  first (SF f) = SF (firstN f)
+  -- 'firstB': a lifted function at either end moved outside.
+  first (SF f) = SF (firstB f)
   -- 'secondSF': seen by rewrite rules.
   second = secondSF
   {-# INLINE second #-}
