@@ -89,12 +89,14 @@ spec = do
         `shouldBe` "(arr >>> ((id *** pre) >>> arr))"
       sfShape (unfused (arr (\x -> (x, x))) >>> first (inc >>> pre0 >>> dbl) >>> unfused (arr (uncurry (+))))
         `shouldBe` "(arr >>> ((pre *** id) >>> arr))"
-    it "makes a command of arrow notation one stateful node between two functions" $ do
+    it "makes a command of arrow notation one node between two functions" $ do
+      -- (@arr p >>> first sf@, the shape of every command, is one node by
+      -- a rewrite rule: see below)
       let sf = proc x -> do
                  y <- pre0 -< x + 1
                  z <- pre0 -< y * 2
                  returnA -< z + x
-      sfShape sf `shouldBe` "(arr >>> ((pre *** id) >>> (arr >>> ((pre *** id) >>> arr))))"
+      sfShape sf `shouldBe` "(arr >>> (step >>> (arr >>> (step >>> arr))))"
       embed sf (1, [(1, Just 2), (1, Just 3), (1, Just 4)]) `shouldBe` [1, 2, 7, 10]
     it "outputs what the network as written outputs, as lazily" $ do
       let sf = first (inc >>> pre0 >>> dbl) :: SF (Int, Char) (Int, Char)
@@ -104,6 +106,35 @@ spec = do
       -- nor is second's
       map fst (embed (second (inc >>> pre0 >>> dbl) :: SF (Char, Int) (Char, Int))
                      (('a', undefined), [(1, Just ('b', 2))])) `shouldBe` "ab"
+
+  -- arr p >>> first sf, written in the source (as arrow notation writes
+  -- every command), is one node (arrFirstSF) by a rewrite rule.
+  describe "arr p >>> first sf, one node" $ do
+    let p x = (x + 1, x * 10) :: (Int, Int)
+        sw :: SF Int Int
+        sw = switch (iPre 0 &&& after 2 ()) (\_ -> arr (* 3))
+        runs :: SF Int (Int, Int) -> [(Int, Int)]
+        runs sf = embed sf (1, [(1, Just x) | x <- [2 .. 6]])
+    it "gives the outputs of the composition, before and after a switch inside it" $
+      runs (arr p >>> first sw) `shouldBe` runs (unfused (arr p) >>> first sw)
+    it "is the composition's outputs with functions on both sides" $
+      runs (arr (* 2) >>> arr p >>> first sw >>> arr (\(a, b) -> (b, a)))
+        `shouldBe` runs (unfused (arr (* 2)) >>> unfused (arr p) >>> first sw >>> unfused (arr (\(a, b) -> (b, a))))
+    it "is one stateful node, and a pure function while sf is one" $ do
+      sfShape (arr p >>> first (iPre 0)) `shouldBe` "step"
+      isPureSF (arr p >>> first (arr (* 2))) `shouldBe` True
+    it "does not evaluate the input, p's result or the part sf is not given before they are needed" $ do
+      let q :: Int -> (Int, Int)
+          q = const undefined
+      -- a delay's first output does not look at its input
+      map fst (take 1 (embed (arr q >>> first (iPre 7)) (1, []))) `shouldBe` [7]
+      map fst (embed (arr (\x -> (x, undefined :: Int)) >>> first (iPre 0)) (1, [(1, Just 2)])) `shouldBe` [0, 1]
+    it "closes a loop through the part it passes on (fixed)" $
+      -- y_0 = 0, y_k = 1 + y_(k-1): the value fed back is needed only a
+      -- sample later, through the delay
+      embed (loop (arr (\(x, c) -> (x + c, c)) >>> first (iPre 0) >>> arr (\(y, _) -> (y, y))))
+            (1 :: Int, [(1, Just 1), (1, Just 1), (1, Just 1)])
+        `shouldBe` [0, 1, 2, 3]
 
   -- These compositions are written in the source, so the library's
   -- rewrite rules fuse them at compile time (this module is compiled with

@@ -20,6 +20,8 @@ module AFRP.Internal.SF
     -- * The instances' composition and lifting (for rewrite rules)
   , compSF
   , arrSF
+  , firstSF
+  , arrFirstSF
   , secondSF
   , loopSF
     -- * Loops (for rewrite rules)
@@ -276,6 +278,59 @@ arrSF f = SF (arrN (\a -> f a))
   compSF (arrSF g) (compSF (arrSF f) h) = compSF (arrSF (\a -> g (f a))) h
   #-}
 
+-- | The instances' 'first': @firstSF sf@ is @first sf@ ('firstB' at run
+-- time, which moves the lifted functions at either end of @sf@ outside).
+-- A function of its own, inlined only late (phase 1), so that the rewrite
+-- rules below see it.
+firstSF :: SF a b -> SF (a, c) (b, c)
+firstSF (SF f) = SF (firstB f)
+{-# INLINE [1] firstSF #-}
+
+-- | @arrFirstSF p sf@ is @arr p >>> first sf@, as one node, made by the
+-- rewrite rules below where GHC sees the composition: the shape arrow
+-- notation gives every command (@y <- sf -< e@ is @arr (\env -> (e, env))
+-- >>> first sf@). Each step applies @p@ to the input, lazily, steps @sf@ on
+-- the first component of the result and outputs its output paired with
+-- the second component; the same values as the composition, as lazily
+-- (nothing is evaluated that the composition does not evaluate), without
+-- its nodes. Compiled with @p@'s body in place, the pair @p@ builds is
+-- taken apart where it is built (@fst (e, env)@ is @e@) instead of through
+-- a thunk of @p a@ and two selector thunks of it, as the composition does
+-- with an unknown @p@. Relies on @arr p >>> first sf = arr (\a -> (fst (p
+-- a), snd (p a))) >>> first sf@ (the same pair, taken apart lazily). While
+-- @sf@ is a lifted function (and after a switch makes it one) the node is
+-- the composition, which fuses with its neighbours. A lifted function in
+-- front of the node is taken into @p@ by the rules too (@arr q >>>
+-- arrFirstSF p sf = arrFirstSF (p . q) sf@), as arrow notation puts one
+-- between two commands.
+arrFirstSF :: (a -> (b, c)) -> SF b d -> SF a (d, c)
+arrFirstSF p (SF s) = SF (arrFirstN (\a -> p a) s)
+{-# INLINE [1] arrFirstSF #-}
+
+arrFirstN :: (a -> (b, c)) -> Node b d -> Node a (d, c)
+arrFirstN p = go
+  where
+    go s = case s of
+      NPure _ -> compN (NPure (FDG p)) (firstN s)
+      _       -> NStep (\dt a -> let pa = p a in case stepN s dt (fst pa) of
+        (# s', y #) -> case go s' of !n -> (# n, (y, snd pa) #))
+{-# INLINE arrFirstN #-}
+
+{-# RULES
+"AFRP arr>>>first" forall p s.
+  compSF (firstSF s) (arrSF p) = arrFirstSF p s
+"AFRP arr>>>first>>>sf" forall p s h.
+  compSF (compSF h (firstSF s)) (arrSF p) = compSF h (arrFirstSF p s)
+"AFRP arr>>>arrFirst" forall p q s.
+  compSF (arrFirstSF p s) (arrSF q) = arrFirstSF (\a -> p (q a)) s
+"AFRP arr>>>arrFirst>>>sf" forall p q s h.
+  compSF (compSF h (arrFirstSF p s)) (arrSF q) = compSF h (arrFirstSF (\a -> p (q a)) s)
+"AFRP sf>>>arr>>>first" forall p s x.
+  compSF (firstSF s) (compSF (arrSF p) x) = compSF (arrFirstSF p s) x
+"AFRP sf>>>arr>>>arrFirst" forall p q s x.
+  compSF (arrFirstSF p s) (compSF (arrSF q) x) = compSF (arrFirstSF (\a -> p (q a)) s) x
+  #-}
+
 -- | The instances' 'second': @secondSF sf@ is @second sf@ ('secondN' at
 -- run time). A function of its own, inlined only late (phase 1), so that
 -- rewrite rules ("AFRP.Delay"'s, for @loop (second (iPre c) >>> arr g)@)
@@ -304,8 +359,9 @@ instance Arrow SF where
   -- 'arrSF': eta-expanded, and fused with its neighbours at compile time.
   arr = arrSF
   {-# INLINE arr #-}
-  -- 'firstB': a lifted function at either end moved outside.
-  first (SF f) = SF (firstB f)
+  -- 'firstSF': seen by rewrite rules.
+  first = firstSF
+  {-# INLINE first #-}
   -- 'secondSF': seen by rewrite rules.
   second = secondSF
   {-# INLINE second #-}
