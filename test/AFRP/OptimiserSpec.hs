@@ -128,7 +128,7 @@ spec = do
           q = const undefined
       -- a delay's first output does not look at its input
       map fst (take 1 (embed (arr q >>> first (iPre 7)) (1, []))) `shouldBe` [7]
-      map fst (embed (arr (\x -> (x, undefined :: Int)) >>> first (iPre 0)) (1, [(1, Just 2)])) `shouldBe` [0, 1]
+      map fst (embed (arr (\x -> (x, undefined :: Int)) >>> first (iPre 0)) (1 :: Int, [(1, Just 2)])) `shouldBe` [0, 1]
     it "closes a loop through the part it passes on (fixed)" $
       -- y_0 = 0, y_k = 1 + y_(k-1): the value fed back is needed only a
       -- sample later, through the delay
