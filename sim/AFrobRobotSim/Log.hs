@@ -38,6 +38,7 @@ module AFrobRobotSim.Log
   , logStep
   , logFrames
   , isFrameStep
+  , linesByRobot
     -- * Writing a file as the run goes
   , LogWriter
   , openLogWriter
@@ -56,13 +57,14 @@ import           Control.Exception         (IOException, evaluate, try, uninterr
 import qualified Data.ByteString           as B
 import qualified Data.ByteString.Char8     as BC
 import           Data.IORef
-import           Data.List                 (stripPrefix)
+import           Data.List                 (nub, stripPrefix)
+import qualified Data.Map.Strict           as Map
 import           System.IO
 
 import           AFrob.Angle               (normalizeAngle)
 import           AFrob.RobotIO             (BatteryStatus (..))
 import           AFRP.Geometry
-import           AFrob.Dimensions          (Position2)
+import           AFrob.Dimensions          (Position2, RobotId, RobotType)
 import           AFrobRobotSim.Arena       (Arena, arenaOf)
 import           AFrobRobotSim.Balls       (Ball (..))
 import           AFrobRobotSim.Log.Records
@@ -187,8 +189,9 @@ frameOf cfg st s events lines' = LogFrame
   , lfBalls = [ (r6 x, r6 y) | (x, y) <- map xy (wsBalls s) ]
   , lfScores = lcScores cfg s
   , lfEvents = events
-  , lfConsole = [ l | l <- lines', not (any (\r -> ownLine r l /= Nothing) (wsRobots s)) ] }
+  , lfConsole = console }
   where
+    (messagesOf, console) = linesByRobot [ (robotType r, robotId r) | r <- wsRobots s ] lines'
     prevRobots = maybe (map Just (wsRobots s)) (map Just . wsRobots) (stPrev st) ++ repeat Nothing
     physical = [ mkRobot (kindOfType (robotType r)) (robotId r) (robotPos r) (robotHeading r)
                          (robotSpeed r) (robotStuck r) (robotCharge r) | r <- wsRobots s ]
@@ -212,7 +215,7 @@ frameOf cfg st s events lines' = LogFrame
            , lrBattery = case robotBattery r of
                BSHigh -> "high"; BSLow -> "low"; BSCritical -> "critical"
            , lrCharge = r6 (robotCharge r), lrOdoX = r6 ox, lrOdoY = r6 oy
-           , lrMessages = [ m | l <- lines', Just m <- [ownLine r l] ] }
+           , lrMessages = messagesOf (robotType r, robotId r) }
     kindOfType ty = if ty == kindType SimbotB then SimbotB else SimbotA
 
 -- Frame values are rounded to a millionth (of a metre, radian, m/s):
@@ -228,15 +231,38 @@ roundTo k x
   | isNaN x || isInfinite x || abs x * k > 1e15 = x
   | otherwise = fromIntegral (round (x * k) :: Integer) / k
 
--- A console line the robot printed, as (time, text): the simulator writes
--- them as @[t] Type.id: text@.
-ownLine :: RobotState -> String -> Maybe (Double, String)
-ownLine r l = case l of
-  '[' : rest | (ts, ']' : ' ' : body) <- break (== ']') rest
-             , [(t, "")] <- reads ts
-             , Just txt <- stripPrefix (robotType r ++ "." ++ show (robotId r) ++ ": ") body
-             -> Just (t, txt)
-  _ -> Nothing
+-- | The console lines of a period taken apart, given the robots (type and
+-- id) of the world: each robot's own lines as (time, text), in the order
+-- printed (a function of the robot), and the lines no robot of the world
+-- printed, in order. The simulator writes a robot's line as @[t]
+-- Type.id: text@ ('wsMessages'); a line is a robot's when it is exactly
+-- that, with the robot's type, its id as 'show' writes it and a time
+-- 'reads' reads whole. Each line is parsed once (not once per robot: in a
+-- crowd where every robot prints, that was quadratic in the robots).
+--
+-- >>> let (own, rest) = linesByRobot [("SimbotA", 1)] ["[0.50] SimbotA.1: hello", "[0.50] SimbotB.7: hi", "plain"]
+-- >>> (own ("SimbotA", 1), rest)
+-- ([(0.5,"hello")],["[0.50] SimbotB.7: hi","plain"])
+linesByRobot :: [(RobotType, RobotId)] -> [String] -> ((RobotType, RobotId) -> [(Double, String)], [String])
+linesByRobot robots ls = (\k -> Map.findWithDefault [] k owned, console)
+  where
+    known  = Map.fromList [ (k, ()) | k <- robots ]
+    types  = nub (map fst robots)
+    parsed = [ (l, [ (k, m) | (k, m) <- candidates l, Map.member k known ]) | l <- ls ]
+    owned  = Map.map reverse (Map.fromListWith (++) [ (k, [m]) | (_, ms) <- parsed, (k, m) <- ms ])
+    console = [ l | (l, []) <- parsed ]
+    -- every (robot, message) the line can be read as, one per type it
+    -- can start with (types are names without a dot, so at most one)
+    candidates l = case l of
+      '[' : rest | (ts, ']' : ' ' : body) <- break (== ']') rest
+                 , [(t, "")] <- reads ts
+                 -> [ ((ty, k), (t, txt))
+                    | ty <- types
+                    , Just idAndText <- [stripPrefix (ty ++ ".") body]
+                    , (idStr, ':' : ' ' : txt) <- [break (== ':') idAndText]
+                    , [(k, "")] <- [reads idStr]
+                    , show k == idStr ]
+      _ -> []
 
 -- | A log file being written: the header at once, a frame line for every
 -- frame step, the summary at the end, each line flushed as it is written

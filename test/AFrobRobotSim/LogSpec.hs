@@ -2,7 +2,9 @@
 -- run goes.
 module AFrobRobotSim.LogSpec (spec) where
 
-import           Data.List                (isInfixOf, isPrefixOf)
+import           Data.List                (isInfixOf, isPrefixOf, stripPrefix)
+import           Test.QuickCheck          (Gen, choose, elements, forAll, listOf, oneof, property)
+import           Text.Printf              (printf)
 import           System.Directory         (getTemporaryDirectory, removeFile)
 import           System.IO                (hClose, openTempFile)
 import           System.Process           (readProcessWithExitCode)
@@ -80,6 +82,22 @@ spec = do
       lhBlocks h `shouldBe` [LogRect (-3) 3 0.5 0.5]
       lhBounds h `shouldBe` LogRect 0 0 10 10
 
+  describe "linesByRobot" $ do
+    it "gives each robot its own lines and leaves the rest to the console (fixed)" $ do
+      let (own, rest) = linesByRobot [("SimbotA", 1), ("SimbotB", 10)]
+            [ "[0.50] SimbotA.1: hello", "[0.50] SimbotB.7: hi", "plain", "[0.60] SimbotB.10: a: b"
+            , "[0.70] SimbotA.1: again", "[0.70] SimbotA.01: zero", "[x] SimbotA.1: t", "[0.80] SimbotA.1:t" ]
+      own ("SimbotA", 1) `shouldBe` [(0.5, "hello"), (0.7, "again")]
+      own ("SimbotB", 10) `shouldBe` [(0.6, "a: b")]
+      own ("SimbotB", 7) `shouldBe` []
+      rest `shouldBe` ["[0.50] SimbotB.7: hi", "plain", "[0.70] SimbotA.01: zero", "[x] SimbotA.1: t", "[0.80] SimbotA.1:t"]
+    it "reads each line as testing it against every robot in turn does (property)" $
+      property $ forAll genRobots $ \robots -> forAll (listOf (genLine robots)) $ \ls ->
+        let (own, rest) = linesByRobot robots ls
+            naive k = [ m | l <- ls, Just m <- [naiveOwn k l] ]
+            naiveRest = [ l | l <- ls, all (\k -> naiveOwn k l == Nothing) robots ]
+        in map own robots == map naive robots && rest == naiveRest
+
   describe "bump events" $
     it "say when a robot gets stuck (fixed)" $ do
       let world = [OTSimbotB 1 (Point2 0 0) 0, OTVWall (Point2 1 0)]
@@ -135,3 +153,32 @@ spec = do
       closeLogWriter w (LogSummary 0.4 41 (-1) 0 True Nothing [])
       removeFile path
       fmap (\l -> (length (rlFrames l), rlSummary l)) (readLog txt) `shouldBe` Right (11, Nothing)
+
+-- A robot's own line read as the log first read it: tested against that
+-- robot's prefix.
+naiveOwn :: (String, Int) -> String -> Maybe (Double, String)
+naiveOwn (ty, k) l = case l of
+  '[' : rest | (ts, ']' : ' ' : body) <- break (== ']') rest
+             , [(t, "")] <- reads ts
+             , Just txt <- stripPrefix (ty ++ "." ++ show k ++ ": ") body
+             -> Just (t, txt)
+  _ -> Nothing
+
+genRobots :: Gen [(String, Int)]
+genRobots = listOf ((,) <$> elements ["SimbotA", "SimbotB"] <*> choose (-2, 12))
+
+-- Lines as robots (of the world or not) print them, and near misses.
+genLine :: [(String, Int)] -> Gen String
+genLine robots = do
+  ty  <- elements ("Other" : "SimbotA" : map fst robots)
+  k   <- oneof [choose (-2, 12), elements (map snd robots ++ [0])]
+  t   <- choose (0, 100 :: Double)
+  txt <- elements ["hello", "a: b", "] x", "", "SimbotA.1: nested"]
+  elements
+    [ printf "[%.2f] %s.%d: %s" t ty k txt
+    , printf "[%.2f] %s.%d: %s" t ty k txt
+    , printf "[%.2f] %s.0%d: %s" t ty k txt
+    , printf "[%.2f] %s.%d:%s" t ty k txt
+    , printf "[%.2f]%s.%d: %s" t ty k txt
+    , printf "[t%.2f] %s.%d: %s" t ty k txt
+    , txt ]
