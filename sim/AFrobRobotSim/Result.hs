@@ -49,7 +49,9 @@ module AFrobRobotSim.Result
   ) where
 
 import           Data.List            (foldl')
-import           System.Environment   (getArgs)
+import           System.Environment   (getArgs, getProgName)
+import           System.Exit          (ExitCode (..), exitWith)
+import           System.IO            (hPutStrLn, stderr)
 import           Text.Read            (readMaybe)
 
 import           AFRP.Geometry        (norm, point2X, point2Y, (.-.))
@@ -77,15 +79,25 @@ lookupSimParam name = lookup name <$> getSimParams
 
 -- | @paramOr name def@: the @--param name=VALUE@ of this program's
 -- command line read with 'Read' (a 'String' parameter must then be
--- quoted), or @def@ when it is not given. A value that does not read is an
--- 'IOError' naming the parameter, thrown before anything is simulated.
+-- quoted), or @def@ when it is not given. A value that does not read
+-- stops the program before anything is simulated, as a malformed command
+-- line does ('AFrobRobotSim.runSim'): a message naming the parameter on
+-- standard error, and exit code 2 (by 'exitWith', so a caller may catch
+-- the 'ExitCode').
+--
+-- > prog: --param speed=fast: cannot read the value "fast" (write it as Haskell's read reads it: 0.5, 3, True, "quoted text")
 paramOr :: Read a => String -> a -> IO a
 paramOr name def = do
   mv <- lookupSimParam name
   case mv of
     Nothing -> pure def
-    Just v  -> maybe (ioError (userError ("--param " ++ name ++ "=" ++ v ++ ": cannot read the value " ++ show v)))
-                     pure (readMaybe v)
+    Just v  -> case readMaybe v of
+      Just x  -> pure x
+      Nothing -> do
+        prog <- getProgName
+        hPutStrLn stderr (prog ++ ": --param " ++ name ++ "=" ++ v ++ ": cannot read the value " ++ show v
+                          ++ " (write it as Haskell's read reads it: 0.5, 3, True, \"quoted text\")")
+        exitWith (ExitFailure 2)
 
 -- | What the result line keeps of one robot while the run goes: strict,
 -- so its memory is constant however long the run.

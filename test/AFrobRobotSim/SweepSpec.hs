@@ -177,8 +177,12 @@ spec = do
       parseSimArgs defaultSimOptions ["--param", "=1"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
     it "paramOr: a value that does not read stops the program before it runs, naming it" $ withTempDir $ \dir -> do
       (code, err, line) <- runOnce dir ["--seconds", "1", "--param", "speed=fast"]
-      code `shouldNotBe` ExitSuccess
-      err `shouldSatisfy` ("speed=fast" `isInfixOf`)
+      -- a usage error, as a malformed command line: exit 2, one line
+      -- naming the parameter and its value, no GHC "user error" wrapping
+      code `shouldBe` ExitFailure 2
+      err `shouldSatisfy` ("--param speed=fast: cannot read the value \"fast\"" `isInfixOf`)
+      err `shouldNotSatisfy` ("user error" `isInfixOf`)
+      length (lines err) `shouldBe` 1
       line `shouldBe` ""
 
   describe "--result" $ do
