@@ -89,14 +89,16 @@ spec = do
         `shouldBe` "(arr >>> ((id *** pre) >>> arr))"
       sfShape (unfused (arr (\x -> (x, x))) >>> first (inc >>> pre0 >>> dbl) >>> unfused (arr (uncurry (+))))
         `shouldBe` "(arr >>> ((pre *** id) >>> arr))"
-    it "makes a command of arrow notation one node between two functions" $ do
+    it "makes each command of arrow notation one node, the functions between commands taken into them" $ do
       -- (@arr p >>> first sf@, the shape of every command, is one node by
-      -- a rewrite rule: see below)
+      -- a rewrite rule, see below; the compositions are nested to the
+      -- right by another, so the environment a command rebuilds and the
+      -- next takes apart meet in one function)
       let sf = proc x -> do
                  y <- pre0 -< x + 1
                  z <- pre0 -< y * 2
                  returnA -< z + x
-      sfShape sf `shouldBe` "(arr >>> (step >>> (arr >>> (step >>> arr))))"
+      sfShape sf `shouldBe` "(step >>> (step >>> arr))"
       embed sf (1, [(1, Just 2), (1, Just 3), (1, Just 4)]) `shouldBe` [1, 2, 7, 10]
     it "outputs what the network as written outputs, as lazily" $ do
       let sf = first (inc >>> pre0 >>> dbl) :: SF (Int, Char) (Int, Char)

@@ -325,10 +325,21 @@ arrFirstN p = go
   compSF (arrFirstSF p s) (arrSF q) = arrFirstSF (\a -> p (q a)) s
 "AFRP arr>>>arrFirst>>>sf" forall p q s h.
   compSF (compSF h (arrFirstSF p s)) (arrSF q) = compSF h (arrFirstSF (\a -> p (q a)) s)
-"AFRP sf>>>arr>>>first" forall p s x.
-  compSF (firstSF s) (compSF (arrSF p) x) = compSF (arrFirstSF p s) x
-"AFRP sf>>>arr>>>arrFirst" forall p q s x.
-  compSF (arrFirstSF p s) (compSF (arrSF q) x) = compSF (arrFirstSF (\a -> p (q a)) s) x
+  #-}
+
+-- Compositions GHC can see are nested to the right before the rules above
+-- look at them, as 'compB' nests them at run time: @(f >>> g) >>> h = f
+-- >>> (g >>> h)@ (associativity: the same samples through the same nodes,
+-- as lazily). Every rule of the library matches a spine nested to the
+-- right (@arr f >>> (sf >>> rest)@); arrow notation nests its commands to
+-- the left (@(cmd1 >>> arr q) >>> (arr p >>> cmd2)@), so without this the
+-- functions between two commands (@arr q >>> arr p@, the environment
+-- rebuilt and taken apart again) never meet at compile time. The rule
+-- only nests to the right, and no rule nests to the left, so rewriting
+-- ends.
+{-# RULES
+"AFRP assoc" forall f g h.
+  compSF h (compSF g f) = compSF (compSF h g) f
   #-}
 
 -- | The instances' 'second': @secondSF sf@ is @second sf@ ('secondN' at
