@@ -10,7 +10,7 @@ import           Test.Hspec hiding (after)
 
 import           AFRP
 import           AFRP.Internal.SF (isConstantSF, isPureSF, isStepSF, sfShape, stepSF)
-import           TestUtil         (runDt)
+import           TestUtil         (runDt, withinTwoSeconds)
 
 -- | @arr (> x) >>> edge@ inside a function of @x@: the shape in which the
 -- parts of a composition could be floated apart before a rule saw them.
@@ -100,6 +100,12 @@ spec = do
                  returnA -< z + x
       sfShape sf `shouldBe` "(step >>> (step >>> arr))"
       embed sf (1, [(1, Just 2), (1, Just 3), (1, Just 4)]) `shouldBe` [1, 2, 7, 10]
+    it "builds a network grown on the right one stage at a time in time linear in its length (fixed)" $
+      -- 100,000 stages by foldl: a walk of the whole spine at every >>>
+      -- (quadratic) takes minutes; re-association looks a few nodes deep
+      let stage = pre0 >>> inc
+          sf = foldl (>>>) identity (replicate 100000 stage)
+      in withinTwoSeconds (embed sf (5, replicate 3 (1, Just 5))) [1, 2, 3, 4]
     it "outputs what the network as written outputs, as lazily" $ do
       let sf = first (inc >>> pre0 >>> dbl) :: SF (Int, Char) (Int, Char)
       embed sf ((1, 'a'), [(1, Just (2, 'b')), (1, Just (3, 'c'))]) `shouldBe` [(0, 'a'), (4, 'b'), (6, 'c')]

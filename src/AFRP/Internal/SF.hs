@@ -207,10 +207,25 @@ compSF (SF g) (SF f) = SF (compB f g)
 -- and the stepper's shapes (a function on either side of a stateful
 -- node, chains of integrals) are found. A network changed while it runs
 -- (a switch) is rebuilt by 'compN' alone, as before.
+--
+-- Only the first 'spineReach' nodes of the left operand's spine are taken
+-- apart: its spine is already nested to the right (it was built by this),
+-- so walking all of it would make every @>>>@ cost the length of its left
+-- operand, and a network grown on the right one stage at a time
+-- (@foldl (>>>)@, a recursive builder) quadratic to build (40,000 stages:
+-- 36 s). A network written in arrow notation and built at run time nests
+-- a few nodes deep at each command, well within the reach.
 compB :: Node a c -> Node c b -> Node a b
-compB f g = case f of
-  NComp f1 f2 -> compN f1 (compB f2 g)
-  _           -> compN f g
+compB = go spineReach
+  where
+    go :: Int -> Node a c -> Node c b -> Node a b
+    go k f g = case f of
+      NComp f1 f2 | k > 0 -> compN f1 (go (k - 1) f2 g)
+      _                   -> compN f g
+
+-- How deep 'compB' and 'peel' look into a spine.
+spineReach :: Int
+spineReach = 8
 
 -- @first@ as a signal function is built: 'firstN', with the lifted
 -- functions at either end of the composition it wraps moved outside, where
@@ -237,13 +252,17 @@ secondB n = case n of
 data Peel a b where
   Peel :: Node a c -> FunD c b -> Peel a b
 
+-- (Looked for within 'spineReach' nodes of the spine, as 'compB' looks.)
 peel :: Node a b -> Maybe (Peel a b)
-peel n = case n of
-  NComp f (NPure q) -> Just (Peel f q)
-  NComp f g         -> case peel g of
-    Just (Peel h q) -> Just (Peel (compN f h) q)
-    Nothing         -> Nothing
-  _                 -> Nothing
+peel = go spineReach
+  where
+    go :: Int -> Node a b -> Maybe (Peel a b)
+    go k n = case n of
+      NComp f (NPure q)   -> Just (Peel f q)
+      NComp f g | k > 0   -> case go (k - 1) g of
+        Just (Peel h q) -> Just (Peel (compN f h) q)
+        Nothing         -> Nothing
+      _                   -> Nothing
 
 -- | The instances' 'arr': eta-expanded, so that an 'arr' of a partial
 -- application (@arr (foldl' (+) 0)@, @arr (uncurry f)@) is compiled, once
