@@ -16,8 +16,9 @@
 -- code 2: an unknown flag, a world file that cannot be read or parsed
 -- (with its line and column), an invalid world, options that do not fit
 -- together ('validateOptions'), an output file or folder whose folder
--- does not exist or cannot be written, @--video@ without @ffmpeg@ on the
--- PATH. A controller that throws stops the run with a message naming the
+-- does not exist or cannot be written, two outputs that are the same file
+-- (under any names), an output that is the world file, @--video@ without
+-- @ffmpeg@ on the PATH. A controller that throws stops the run with a message naming the
 -- robot and the simulated time (exit code 1). A write that fails during
 -- the run (a full disk) stops it with a message (exit code 1). Ctrl-C
 -- stops the run (exit code 130). In each case the outputs are finished
@@ -49,15 +50,15 @@ import           Control.Exception         (AsyncException (UserInterrupt), Exce
 import           Control.Monad             (forM, unless, when)
 import qualified Data.ByteString           as BS
 import           Data.IORef
-import           Data.List                 (foldl', nub)
+import           Data.List                 (foldl')
 import           Data.Maybe                (catMaybes, listToMaybe)
 import           GHC.Clock                 (getMonotonicTime)
-import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
+import           System.Directory          (canonicalizePath, createDirectory, doesDirectoryExist, doesFileExist,
                                             findExecutable, getPermissions, removeFile, renameFile,
                                             writable)
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
-import           System.FilePath           (takeDirectory, (</>))
+import           System.FilePath           (normalise, takeDirectory, (</>))
 import           System.IO                 (BufferMode (..), hFlush, hIsTerminalDevice, hPutStr,
                                             hSetBuffering, stderr, stdout)
 import           System.Process            (rawSystem)
@@ -121,18 +122,27 @@ preflight bounds opts = do
                         , (,) "--result" <$> optResult opts ]
       inOut = optFrames opts || any ((== out) . takeDirectory . snd) files
   ffmpeg <- maybe (pure Nothing) (const (findExecutable "ffmpeg")) (optVideo opts)
+  -- the same file under two names (a.svg and ./a.svg, or a link) is caught
+  -- by comparing the files' canonical paths
+  canon <- forM files $ \(flag, f) -> (,,) flag f <$> canonical f
+  world <- forM (optWorldFile opts) $ \w -> (,) w <$> canonical w
   fileErrs <- forM files $ \(flag, f) ->
     if takeDirectory f == out && inOut then checkTarget flag f Nothing else checkTarget flag f (Just (takeDirectory f))
   let pre = validateOptionsIn bounds opts
             ++ [ "--video needs the frames (add --frames)" | optVideo opts /= Nothing, not (optFrames opts) ]
             ++ [ "--video needs ffmpeg on the PATH (on Debian: apt-get install ffmpeg)"
                | optVideo opts /= Nothing, ffmpeg == Nothing ]
-            ++ [ "two outputs go to the same file" | let fs = map snd files, length (nub fs) /= length fs ]
+            ++ [ "two outputs go to the same file: " ++ flag1 ++ " " ++ show f1 ++ " and " ++ flag2 ++ " " ++ show f2
+               | ((flag1, f1, c1), i) <- zip canon [0 :: Int ..], ((flag2, f2, c2), j) <- zip canon [0 ..]
+               , i < j, c1 == c2 ]
+            ++ [ flag ++ " " ++ show f ++ " would overwrite the world file " ++ show w
+               | Just (w, cw) <- [world], (flag, f, c) <- canon, c == cw ]
             ++ concat fileErrs
   -- the output folder is created only when nothing else is wrong
   errs <- if inOut && null pre then checkFolder out else pure pre
   pure (errs, ffmpeg)
   where
+    canonical f = either (\(_ :: IOException) -> normalise f) id <$> try (canonicalizePath f)
     -- a file to write: not a folder, and its folder exists and is writable
     checkTarget flag f mdir = do
       isDir <- doesDirectoryExist f

@@ -275,6 +275,20 @@ spec = do
                                             , optReplay = Just (dir </> "nopage" </> "r.html") })
               (\e -> all (`isInfixOf` e) ["--svg", "--log", "--replay", "does not exist"]
                      && length (filter ("cannot run" `isInfixOf`) (lines e)) == 1)
+    it "two outputs that are the same file under two names" $
+      refused (\dir -> (quick (dir </> "f")) { optSvg = Just (dir </> "a.svg"), optLog = Just (dir </> "." </> "a.svg") })
+              (\e -> all (`isInfixOf` e) ["same file", "--svg", "--log"])
+    it "an output that would overwrite the world file, which is left as it was" $ withTempDir $ \dir -> do
+      let wf = dir </> "w.world"
+      writeFile wf "ball at 0 0\n"
+      (out, err, r) <- captured (runSimWith (quick (dir </> "f")) { optWorldFile = Just wf, optFrames = False
+                                                                   , optLog = Just (dir </> "." </> "w.world") }
+                                            Nothing drive drive)
+      r `shouldBe` Left (ExitFailure 2)
+      out `shouldBe` ""
+      err `shouldSatisfy` ("--log" `isInfixOf`)
+      err `shouldSatisfy` ("would overwrite the world file" `isInfixOf`)
+      readFile wf `shouldReturn` "ball at 0 0\n"
     it "an --out whose parent folder does not exist" $
       refused (\dir -> quick (dir </> "a" </> "b")) ("does not exist" `isInfixOf`)
     it "an empty --out" $ do
