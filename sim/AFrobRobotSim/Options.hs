@@ -141,9 +141,14 @@ parseSimArgs o0 = go o0 False False
     "--rays" : rest          -> go o { optRays = True } svgNamed pageNamed rest
     "--trails" : rest        -> go o { optTrails = True } svgNamed pageNamed rest
     flag : rest | Just set <- lookup flag (valued o) -> case rest of
+      v : _ | isFlag v -> Left (flag ++ " needs a value (see --help), found the flag " ++ v)
       v : rest' -> set v >>= \o' -> go o' (svgNamed || flag == "--svg") (pageNamed || flag == "--replay") rest'
       []        -> Left (flag ++ " needs a value (see --help)")
     flag : _                 -> Left ("unknown argument " ++ show flag ++ " (see --help)")
+  -- a value that is one of the flags is a value left out (@--out --no-svg@
+  -- would write into a folder named @--no-svg@); @./--no-svg@ names such a file
+  isFlag v = v `elem` (["--help", "-h", "--no-frames", "--frames", "--no-svg", "--no-replay", "--quiet"
+                       , "--dump-world", "--rays", "--trails"] ++ map fst (valued o0))
   valued o =
       [ ("--seconds", \v -> (\x -> o { optSeconds = x }) <$> number "--seconds" (>= 0) v)
       , ("--dt",      \v -> (\x -> o { optDt = x }) <$> number "--dt" (> 0) v)

@@ -2,7 +2,7 @@
 -- output files and the output folder, in any order.
 module AFrobRobotSim.OptionsSpec (spec) where
 
-import           Data.List        (permutations)
+import           Data.List        (isInfixOf, permutations)
 import           Test.Hspec
 
 import           AFrobRobotSim.Options
@@ -33,3 +33,9 @@ spec = describe "parseSimArgs" $ do
         results = [ outputs (concat g) | g <- permutations groups, ordered g ]
     length results `shouldBe` 60
     results `shouldSatisfy` all (== Right (Just "p/a.svg", Nothing, "y"))
+  it "takes no flag as the value of a flag that needs one" $ do
+    outputs ["--out", "--no-svg"] `shouldSatisfy` either ("--out needs a value" `isInfixOf`) (const False)
+    outputs ["--svg", "--quiet"] `shouldSatisfy` either ("--svg needs a value" `isInfixOf`) (const False)
+    outputs ["--seconds", "--dt", "0.02"] `shouldSatisfy` either ("--seconds needs a value" `isInfixOf`) (const False)
+    outputs ["--out", "./--no-svg"] `shouldBe` Right (Just "./--no-svg/run.svg", Just "./--no-svg/replay.html", "./--no-svg")
+    fmap (const ()) (parseSimArgs defaultSimOptions ["--seconds", "-1"]) `shouldSatisfy` either ("non-negative" `isInfixOf`) (const False)
