@@ -14,7 +14,7 @@
 -- --no-frames        write no frames (the default)
 -- --scale PX         pixels per metre  (default: the world's long side 600 px, 'fitScale')
 -- --keys "1.5:a,3:b" scripted key presses (time:key, ...)
--- --seed N           seed of the random parts              (default 0)
+-- --seed N           seed of the random parts, |N| <= 2^53 (default 0)
 -- --odometry-noise X relative odometry error per step      (default 0 = exact)
 -- --quiet            print only the summary line
 -- --world FILE       load the world from FILE instead of the program's
@@ -157,8 +157,11 @@ parseSimArgs o0 = go o0 False False
                              else Right o { optOut = v })
       , ("--scale",   \v -> (\x -> o { optScale = Just x }) <$> number "--scale" (> 0) v)
       , ("--keys",    \v -> (\ks -> o { optKeys = ks }) <$> parseKeys v)
-      , ("--seed",    \v -> maybe (Left ("--seed expects a whole number, got " ++ show v))
-                                  (\x -> Right o { optSeed = x }) (readMaybe v))
+      , ("--seed",    \v -> case readMaybe v :: Maybe Integer of
+                             -- (read as an Int, 2^64 + 1 wrapped round to 1; beyond 2^53 the
+                             -- result line and the log, JSON numbers, could not record it exactly)
+                             Just x | abs x <= maxSeed -> Right o { optSeed = fromInteger x }
+                             _ -> Left ("--seed expects a whole number from -2^53 to 2^53, got " ++ show v))
       , ("--odometry-noise", \v -> (\x -> o { optOdometryNoise = x }) <$> number "--odometry-noise" (>= 0) v)
       , ("--world",   \v -> Right o { optWorldFile = Just v })
       , ("--svg",     \v -> Right o { optSvg = Just v })
@@ -197,6 +200,12 @@ setParam :: (String, String) -> [(String, String)] -> [(String, String)]
 setParam (k, v) ps
   | any ((== k) . fst) ps = [ (k', if k' == k then v else v') | (k', v') <- ps ]
   | otherwise             = ps ++ [(k, v)]
+
+-- | The largest magnitude of a @--seed@: 2^53, the largest up to which
+-- every whole number is a 'Double' (the result line and the log record the
+-- seed as a JSON number).
+maxSeed :: Integer
+maxSeed = 2 ^ (53 :: Int)
 
 -- | The most steps a run may take: 10^8 (about 280 simulated hours at the
 -- default step).

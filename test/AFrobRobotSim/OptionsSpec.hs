@@ -39,3 +39,12 @@ spec = describe "parseSimArgs" $ do
     outputs ["--seconds", "--dt", "0.02"] `shouldSatisfy` either ("--seconds needs a value" `isInfixOf`) (const False)
     outputs ["--out", "./--no-svg"] `shouldBe` Right (Just "./--no-svg/run.svg", Just "./--no-svg/replay.html", "./--no-svg")
     fmap (const ()) (parseSimArgs defaultSimOptions ["--seconds", "-1"]) `shouldSatisfy` either ("non-negative" `isInfixOf`) (const False)
+  it "takes a --seed up to 2^53 either way and refuses a larger one rather than wrap it round" $ do
+    let seed args = case parseSimArgs defaultSimOptions args of
+          Right (RunWith o) -> Right (optSeed o)
+          Right ShowHelp    -> Left "help"
+          Left err          -> Left err
+    seed ["--seed", "9007199254740992"] `shouldBe` Right 9007199254740992
+    seed ["--seed", "-9007199254740992"] `shouldBe` Right (-9007199254740992)
+    seed ["--seed", "9007199254740993"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
+    seed ["--seed", "18446744073709551617"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
