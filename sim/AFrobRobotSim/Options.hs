@@ -288,14 +288,14 @@ num x
                 in reverse (dropWhile (== '.') (dropWhile (== '0') (reverse s)))
 
 -- | Parse scripted key presses: @"1.5:a,3:b"@ is @a@ at 1.5 s and @b@ at
--- 3 s. Times must be non-negative; a key is one character.
+-- 3 s. Times must be finite and non-negative; a key is one character.
 parseKeys :: String -> Either String [(Double, Char)]
 parseKeys s
   | all isSpace s = Right []
   | otherwise     = mapM one (splitOn ',' s)
   where
     one item = case break (== ':') (trim item) of
-      (t, ':' : [k]) | Just x <- readMaybe (trim t), x >= 0, not (isNaN x) -> Right (x, k)
+      (t, ':' : [k]) | Just x <- readMaybe (trim t), x >= 0, not (isNaN x || isInfinite x) -> Right (x, k)
       _ -> Left ("--keys expects TIME:KEY pairs separated by commas (e.g. \"1.5:a,3:b\"), got "
                  ++ show item)
 

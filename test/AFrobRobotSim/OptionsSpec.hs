@@ -48,3 +48,7 @@ spec = describe "parseSimArgs" $ do
     seed ["--seed", "-9007199254740992"] `shouldBe` Right (-9007199254740992)
     seed ["--seed", "9007199254740993"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
     seed ["--seed", "18446744073709551617"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
+  it "refuses a --keys time that is not a finite number (Infinity, 1e400, NaN)" $ do
+    parseKeys "1.5:a,3:b" `shouldBe` Right [(1.5, 'a'), (3, 'b')]
+    mapM_ (\k -> parseKeys k `shouldSatisfy` either ("--keys" `isInfixOf`) (const False))
+          ["Infinity:a", "1e400:a", "1:a,NaN:b"]
