@@ -490,6 +490,16 @@ spec = do
     it "reports a directory as a Left, not an exception" $ do
       r <- readWorldFile "worlds"
       r `shouldSatisfy` either (const True) (const False)
+    it "reads at most maxFileBytes: a longer file, or an endless one, is a Left naming it" $ do
+      tmp <- getTemporaryDirectory
+      let file = tmp </> "afrp-long.world"
+          line = BC.pack "# a comment line of a world file that is far too long\n"
+      B.writeFile file (B.concat (replicate (maxFileBytes `div` B.length line + 1) line))
+      r <- readWorldFile file
+      removeFile file
+      r `shouldSatisfy` either ((file ++ ": more than") `isPrefixOf`) (const False)
+      z <- timeout 10000000 (readWorldFile "/dev/zero")
+      z `shouldSatisfy` maybe False (either ("/dev/zero: more than" `isPrefixOf`) (const False))
     it "reports syntax errors with the file's path" $ do
       tmp <- getTemporaryDirectory
       let file = tmp </> "afrp-bad-syntax.world"
