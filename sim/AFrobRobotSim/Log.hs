@@ -315,7 +315,9 @@ data RunLog = RunLog
   } deriving (Eq, Show)
 
 -- | Parse a log's text: a header of this format and version, frames, and
--- at most one summary, last. Errors say @line N: ...@ (or @line N,
+-- at most one summary, last; the header's dt and fps positive, and each
+-- frame with as many robots as the header lists (the replay page pairs
+-- them by position). Errors say @line N: ...@ (or @line N,
 -- column C: ...@ for a line that is not JSON). Blank lines are
 -- ignored.
 readLog :: String -> Either String RunLog
@@ -335,10 +337,18 @@ readLog txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all 
       | lhVersion h /= logFormatVersion =
           Left ("a log of version " ++ show (lhVersion h) ++ "; this reader reads version "
                 ++ show logFormatVersion)
+      | not (all positive [lhDt h, lhFps h]) =
+          Left ("the header's dt and fps must be positive numbers, found " ++ show (lhDt h) ++ " and "
+                ++ show (lhFps h))
       | otherwise = Right ()
+    positive x = x > 0 && not (isInfinite x)   -- (NaN, read from null, is not > 0)
     go h acc [] = Right (RunLog h (reverse acc) Nothing)
     go h acc ((i, l) : rest) = at i (decodeLogLine l) >>= \ln -> case ln of
-      LineFrame f   -> go h (f : acc) rest
+      LineFrame f
+        | length (lfRobots f) /= length (lhRobots h) ->
+            Left ("line " ++ show i ++ ": a frame of " ++ show (length (lfRobots f)) ++ " robots; the header lists "
+                  ++ show (length (lhRobots h)))
+        | otherwise -> go h (f : acc) rest
       LineSummary s -> case rest of
         []           -> Right (RunLog h (reverse acc) (Just s))
         (j, _) : _   -> Left ("line " ++ show j ++ ": a line after the summary")

@@ -128,6 +128,20 @@ spec = do
       readLog "" `shouldSatisfy` either ("line 1" `isInfixOf`) (const False)
       readLog (unlines (take 3 (lines fixtureLogText) ++ ["{\"kind\": \"frame\""]))
         `shouldSatisfy` either ("line 4, column 17:" `isPrefixOf`) (const False)
+    it "refuses a frame whose robots are not the header's, and a header whose dt or fps is not positive" $ do
+      let ls = lines fixtureLogText
+          h = rlHeader fixtureLog
+          f = head (rlFrames fixtureLog)
+          withFrame f' = unlines (take 2 ls ++ [encodeLogLine (LineFrame f')] ++ drop 2 ls)
+          withHeader h' = unlines (encodeLogLine (LineHeader h') : drop 1 ls)
+      length (lfRobots f) `shouldBe` length (lhRobots h)
+      readLog (withFrame f { lfRobots = drop 1 (lfRobots f) })
+        `shouldSatisfy` either ("line 3: a frame of" `isPrefixOf`) (const False)
+      readLog (withFrame f { lfRobots = lfRobots f ++ lfRobots f })
+        `shouldSatisfy` either ("line 3: a frame of" `isPrefixOf`) (const False)
+      readLog (withHeader h { lhFps = 0 }) `shouldSatisfy` either ("fps" `isInfixOf`) (const False)
+      readLog (withHeader h { lhDt = -1 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
+      readLog (withHeader h { lhDt = 0 / 0 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
     it "reads a log cut short (no summary) (fixed)" $
       fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
 
