@@ -56,6 +56,7 @@ module AFrobRobotSim.Log
 import           Control.Exception         (IOException, evaluate, try, uninterruptibleMask_)
 import qualified Data.ByteString           as B
 import qualified Data.ByteString.Char8     as BC
+import           Data.Char                 (isDigit)
 import           Data.IORef
 import           Data.List                 (nub, stripPrefix)
 import qualified Data.Map.Strict           as Map
@@ -354,15 +355,24 @@ readLog txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all 
         (j, _) : _   -> Left ("line " ++ show j ++ ": a line after the summary")
       LineHeader _  -> Left ("line " ++ show i ++ ": a second header")
 
--- | 'readLog' of a file (UTF-8), the error prefixed with its name; a
--- file that cannot be read, or is not UTF-8 (with the line and column of
--- the first bad byte), is a 'Left' too.
+-- | 'readLog' of a file (UTF-8), the error located as @FILE:LINE:COLUMN:@
+-- (or @FILE:LINE:@), like a world file's; a file that cannot be read, or
+-- is not UTF-8 (with the line and column of the first bad byte), is a
+-- 'Left' too.
 readLogFile :: FilePath -> IO (Either String RunLog)
 readLogFile path = do
   r <- try (B.readFile path)
   pure $ case r of
     Left e      -> Left (show (e :: IOException))   -- it names the file
     Right bytes -> case utf8Error bytes of
-      Just (l, c, b) -> Left (path ++ ": line " ++ show l ++ ", column " ++ show c
+      Just (l, c, b) -> Left (path ++ ":" ++ show l ++ ":" ++ show c
                               ++ ": not UTF-8 text (byte " ++ show b ++ ")")
-      Nothing        -> either (\e -> Left (path ++ ": " ++ e)) Right (readLog (decodeUtf8 bytes))
+      Nothing        -> either (Left . located) Right (readLog (decodeUtf8 bytes))
+  where
+    -- "line N, column C: ..." and "line N: ..." of 'readLog' as FILE:N:C: and FILE:N:
+    located e = case span isDigit <$> stripPrefix "line " e of
+      Just (n@(_ : _), ':' : rest) -> path ++ ":" ++ n ++ ":" ++ rest
+      Just (n@(_ : _), ',' : ' ' : more)
+        | Just (c@(_ : _), ':' : rest) <- span isDigit <$> stripPrefix "column " more ->
+            path ++ ":" ++ n ++ ":" ++ c ++ ":" ++ rest
+      _ -> path ++ ": " ++ e

@@ -142,6 +142,18 @@ spec = do
       readLog (withHeader h { lhFps = 0 }) `shouldSatisfy` either ("fps" `isInfixOf`) (const False)
       readLog (withHeader h { lhDt = -1 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
       readLog (withHeader h { lhDt = 0 / 0 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
+    it "readLogFile locates an error as FILE:LINE:COLUMN: or FILE:LINE:, like a world file" $ do
+      tmp <- getTemporaryDirectory
+      (path, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      let ls = lines fixtureLogText
+      writeFile path (unlines (take 3 ls ++ ["{\"kind\": \"frame\""]))
+      r1 <- readLogFile path
+      writeFile path (unlines (take 3 ls ++ [head ls]))
+      r2 <- readLogFile path
+      removeFile path
+      fmap (const ()) r1 `shouldBe` Left (path ++ ":4:17: expected ',' or '}', found end of input")
+      fmap (const ()) r2 `shouldBe` Left (path ++ ":4: a second header")
     it "reads a log cut short (no summary) (fixed)" $
       fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
 

@@ -106,7 +106,7 @@ spec = do
       writeFile logPath "{\"kind\": \"header\", \"format\": \"other\"}\n"
       r <- writeReplayFromLog logPath (logPath ++ ".html")
       removeFile logPath
-      r `shouldSatisfy` either ("line 1" `isInfixOf`) (const False)
+      r `shouldSatisfy` either ((logPath ++ ":1: ") `isPrefixOf`) (const False)
     it "reports a log that does not exist and a page that cannot be written as Left, naming the file (fixed)" $ do
       tmp <- getTemporaryDirectory
       let missing = tmp ++ "/afrp-no-such-log.jsonl"
@@ -137,4 +137,4 @@ spec = do
       hClose h
       r <- writeReplayFromLog logPath (logPath ++ ".html")
       removeFile logPath
-      r `shouldBe` Left (logPath ++ ": line 2, column 2: not UTF-8 text (byte 255)")
+      r `shouldBe` Left (logPath ++ ":2:2: not UTF-8 text (byte 255)")
