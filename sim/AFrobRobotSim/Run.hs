@@ -17,7 +17,8 @@
 -- (with its line and column), an invalid world, options that do not fit
 -- together ('validateOptions'), an output file or folder whose folder
 -- does not exist or cannot be written, two outputs that are the same file
--- (under any names), an output that is the world file, @--video@ without
+-- (under any names; devices such as @\/dev\/stdout@ excepted), an output
+-- that is the world file, @--video@ without
 -- @ffmpeg@ on the PATH. A controller that throws stops the run with a message naming the
 -- robot and the simulated time (exit code 1). A write that fails during
 -- the run (a full disk) stops it with a message (exit code 1). Ctrl-C
@@ -50,7 +51,7 @@ import           Control.Exception         (AsyncException (UserInterrupt), Exce
 import           Control.Monad             (forM, unless, when)
 import qualified Data.ByteString           as BS
 import           Data.IORef
-import           Data.List                 (foldl')
+import           Data.List                 (foldl', isPrefixOf)
 import           Data.Maybe                (catMaybes, listToMaybe)
 import           GHC.Clock                 (getMonotonicTime)
 import           System.Directory          (canonicalizePath, createDirectory, doesDirectoryExist, doesFileExist,
@@ -123,9 +124,10 @@ preflight bounds opts = do
       inOut = optFrames opts || any ((== out) . takeDirectory . snd) files
   ffmpeg <- maybe (pure Nothing) (const (findExecutable "ffmpeg")) (optVideo opts)
   -- the same file under two names (a.svg and ./a.svg, or a link) is caught
-  -- by comparing the files' canonical paths
-  canon <- forM files $ \(flag, f) -> (,,) flag f <$> canonical f
-  world <- forM (optWorldFile opts) $ \w -> (,) w <$> canonical w
+  -- by comparing the files' canonical paths; devices are not files to
+  -- keep (--log /dev/stdout --result /dev/stderr may be one terminal)
+  canon <- forM [ fl | fl@(_, f) <- files, not (device f) ] $ \(flag, f) -> (,,) flag f <$> canonical f
+  world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> canonical w
   fileErrs <- forM files $ \(flag, f) ->
     if takeDirectory f == out && inOut then checkTarget flag f Nothing else checkTarget flag f (Just (takeDirectory f))
   let pre = validateOptionsIn bounds opts
@@ -136,13 +138,14 @@ preflight bounds opts = do
                | ((flag1, f1, c1), i) <- zip canon [0 :: Int ..], ((flag2, f2, c2), j) <- zip canon [0 ..]
                , i < j, c1 == c2 ]
             ++ [ flag ++ " " ++ show f ++ " would overwrite the world file " ++ show w
-               | Just (w, cw) <- [world], (flag, f, c) <- canon, c == cw ]
+               | (w, cw) <- world, (flag, f, c) <- canon, c == cw ]
             ++ concat fileErrs
   -- the output folder is created only when nothing else is wrong
   errs <- if inOut && null pre then checkFolder out else pure pre
   pure (errs, ffmpeg)
   where
     canonical f = either (\(_ :: IOException) -> normalise f) id <$> try (canonicalizePath f)
+    device f = any (`isPrefixOf` normalise f) ["/dev/", "/proc/"]
     -- a file to write: not a folder, and its folder exists and is writable
     checkTarget flag f mdir = do
       isDir <- doesDirectoryExist f

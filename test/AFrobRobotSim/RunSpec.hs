@@ -278,6 +278,12 @@ spec = do
     it "two outputs that are the same file under two names" $
       refused (\dir -> (quick (dir </> "f")) { optSvg = Just (dir </> "a.svg"), optLog = Just (dir </> "." </> "a.svg") })
               (\e -> all (`isInfixOf` e) ["same file", "--svg", "--log"])
+    it "but not two outputs to devices (/dev/stdout and /dev/stderr may be one terminal or pipe)" $ do
+      (_, err, r) <- captured (runSimWith (quick "f") { optFrames = False, optSeconds = 0.1
+                                                      , optLog = Just "/dev/null", optResult = Just "/dev/null" }
+                                          (Just world) drive drive)
+      r `shouldBe` Right ()
+      err `shouldBe` ""
     it "an output that would overwrite the world file, which is left as it was" $ withTempDir $ \dir -> do
       let wf = dir </> "w.world"
       writeFile wf "ball at 0 0\n"
