@@ -59,7 +59,7 @@ import           System.Directory          (canonicalizePath, createDirectory, d
                                             writable)
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
-import           System.FilePath           (normalise, takeDirectory, (</>))
+import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, (</>))
 import           System.IO                 (BufferMode (..), hFlush, hIsTerminalDevice, hPutStr,
                                             hSetBuffering, stderr, stdout)
 import           System.Process            (rawSystem)
@@ -117,11 +117,11 @@ runSimWith opts mworld rcA rcB = do
 -- @--video@ asks for it.
 preflight :: Bounds -> SimOptions -> IO ([String], Maybe FilePath)
 preflight bounds opts = do
-  let out   = optOut opts
+  let out   = folder (optOut opts)
       files = catMaybes [ (,) "--svg" <$> optSvg opts, (,) "--log" <$> optLog opts
                         , (,) "--replay" <$> optReplay opts, (,) "--video" <$> optVideo opts
                         , (,) "--result" <$> optResult opts ]
-      inOut = optFrames opts || any ((== out) . takeDirectory . snd) files
+      inOut = optFrames opts || any ((== out) . folder . takeDirectory . snd) files
   ffmpeg <- maybe (pure Nothing) (const (findExecutable "ffmpeg")) (optVideo opts)
   -- the same file under two names (a.svg and ./a.svg, or a link) is caught
   -- by comparing the files' canonical paths; devices are not files to
@@ -129,7 +129,7 @@ preflight bounds opts = do
   canon <- forM [ fl | fl@(_, f) <- files, not (device f) ] $ \(flag, f) -> (,,) flag f <$> canonical f
   world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> canonical w
   fileErrs <- forM files $ \(flag, f) ->
-    if takeDirectory f == out && inOut then checkTarget flag f Nothing else checkTarget flag f (Just (takeDirectory f))
+    if folder (takeDirectory f) == out && inOut then checkTarget flag f Nothing else checkTarget flag f (Just (takeDirectory f))
   let pre = validateOptionsIn bounds opts
             ++ [ "--video needs the frames (add --frames)" | optVideo opts /= Nothing, not (optFrames opts) ]
             ++ [ "--video needs ffmpeg on the PATH (on Debian: apt-get install ffmpeg)"
@@ -146,6 +146,9 @@ preflight bounds opts = do
   where
     canonical f = either (\(_ :: IOException) -> normalise f) id <$> try (canonicalizePath f)
     device f = any (`isPrefixOf` normalise f) ["/dev/", "/proc/"]
+    -- a folder as one name (--out x/ and --out ./x are the folder x, which
+    -- the run creates; with the slash its parent was taken to be x itself)
+    folder = dropTrailingPathSeparator . normalise
     -- a file to write: not a folder, and its folder exists and is writable
     checkTarget flag f mdir = do
       isDir <- doesDirectoryExist f

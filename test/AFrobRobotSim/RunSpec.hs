@@ -295,6 +295,13 @@ spec = do
       err `shouldSatisfy` ("--log" `isInfixOf`)
       err `shouldSatisfy` ("would overwrite the world file" `isInfixOf`)
       readFile wf `shouldReturn` "ball at 0 0\n"
+    it "not an --out with a trailing slash: the folder is created, with the SVG and the page in it" $ withTempDir $ \dir -> do
+      let o = (quick (dir </> "new/")) { optFrames = False, optSeconds = 0.1
+                                       , optSvg = Just (dir </> "new/run.svg"), optReplay = Just (dir </> "new/replay.html") }
+      (_, err, r) <- captured (runSimWith o (Just world) drive drive)
+      err `shouldBe` ""
+      r `shouldBe` Right ()
+      sort <$> listDirectory (dir </> "new") `shouldReturn` ["replay.html", "run.svg"]
     it "an --out whose parent folder does not exist" $
       refused (\dir -> quick (dir </> "a" </> "b")) ("does not exist" `isInfixOf`)
     it "an empty --out" $ do
