@@ -166,11 +166,14 @@ preflight bounds opts = do
           fw <- if exists then writable <$> getPermissions f else pure True
           pure [ flag ++ " " ++ show f ++ ": cannot write there" | not (w || (exists && fw)) ]
     -- the output folder: created if its parent exists, then proven writable
+    -- (without --frames only the SVG, page, log or result go there)
+    writeTo | optFrames opts = "cannot write frames to "
+            | otherwise      = "cannot write to the output folder (--out) "
     checkFolder dir = do
       there <- doesDirectoryExist dir
       parentThere <- doesDirectoryExist (takeDirectory dir)
       if not there && not parentThere
-        then pure [ "cannot write frames to " ++ show dir ++ ": the folder " ++ show (takeDirectory dir)
+        then pure [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir)
                     ++ " does not exist" ]
         else do
           r <- try (do unless there (createDirectory dir)
@@ -178,7 +181,7 @@ preflight bounds opts = do
                        writeFile probe "ok"
                        removeFile probe)
           pure $ case r of
-            Left (e :: IOException) -> [ "cannot write frames to " ++ show dir ++ ": " ++ show e ]
+            Left (e :: IOException) -> [ writeTo ++ show dir ++ ": " ++ show e ]
             Right ()                -> []
 
 -- How a run's loop ended.

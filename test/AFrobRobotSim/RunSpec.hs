@@ -302,6 +302,9 @@ spec = do
       err `shouldBe` ""
       r `shouldBe` Right ()
       sort <$> listDirectory (dir </> "new") `shouldReturn` ["replay.html", "run.svg"]
+    it "an --out whose parent folder does not exist, not said to be for frames when there are none" $
+      refused (\dir -> (quick (dir </> "a" </> "b")) { optFrames = False, optSvg = Just (dir </> "a" </> "b" </> "run.svg") })
+              (\e -> "output folder (--out)" `isInfixOf` e && not ("frames" `isInfixOf` e))
     it "an --out whose parent folder does not exist" $
       refused (\dir -> quick (dir </> "a" </> "b")) ("does not exist" `isInfixOf`)
     it "an empty --out" $ do
