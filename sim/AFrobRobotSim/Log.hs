@@ -53,7 +53,7 @@ module AFrobRobotSim.Log
   , module AFrobRobotSim.Log.Records
   ) where
 
-import           Control.Exception         (IOException, evaluate, try, uninterruptibleMask_)
+import           Control.Exception         (evaluate, try, uninterruptibleMask_)
 import qualified Data.ByteString           as B
 import qualified Data.ByteString.Char8     as BC
 import           Data.Char                 (isDigit)
@@ -74,7 +74,7 @@ import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
-import           AFrobRobotSim.WorldFile.Lexical (decodeUtf8, utf8Error)
+import           AFrobRobotSim.WorldFile.Lexical (cannotRead, decodeUtf8, utf8Error)
 
 -- | What a log needs besides the states: the world and how it was run.
 data LogConfig = LogConfig
@@ -363,7 +363,7 @@ readLogFile :: FilePath -> IO (Either String RunLog)
 readLogFile path = do
   r <- try (B.readFile path)
   pure $ case r of
-    Left e      -> Left (show (e :: IOException))   -- it names the file
+    Left e      -> Left (cannotRead path e)
     Right bytes -> case utf8Error bytes of
       Just (l, c, b) -> Left (path ++ ":" ++ show l ++ ":" ++ show c
                               ++ ": not UTF-8 text (byte " ++ show b ++ ")")

@@ -167,7 +167,7 @@ module AFrobRobotSim.WorldFile
   , renderWorld
   ) where
 
-import           Control.Exception (IOException, try)
+import           Control.Exception (try)
 import qualified Data.ByteString   as B
 import qualified Data.ByteString.Lazy as BL
 import           Data.List         (intercalate)
@@ -302,7 +302,7 @@ readWorldFile path = do
               s <- BL.toStrict . BL.take (fromIntegral maxFileBytes + 1) <$> BL.hGetContents h
               B.length s `seq` pure s)
   pure $ case r of
-    Left e  -> Left (show (e :: IOException))
+    Left e  -> Left (cannotRead path e)
     Right s
       | B.length s > maxFileBytes ->
           Left (path ++ ": more than " ++ show maxFileBytes ++ " bytes (is this a world file?)")

@@ -154,6 +154,9 @@ spec = do
       removeFile path
       fmap (const ()) r1 `shouldBe` Left (path ++ ":4:17: expected ',' or '}', found end of input")
       fmap (const ()) r2 `shouldBe` Left (path ++ ":4: a second header")
+    it "readLogFile says which file it cannot read and why, not which Haskell function failed" $ do
+      r <- readLogFile "no-such-dir/run.jsonl"
+      fmap (const ()) r `shouldBe` Left "no-such-dir/run.jsonl: cannot read it: does not exist (No such file or directory)"
     it "reads a log cut short (no summary) (fixed)" $
       fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
 
