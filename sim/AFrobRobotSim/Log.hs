@@ -53,9 +53,10 @@ module AFrobRobotSim.Log
   , module AFrobRobotSim.Log.Records
   ) where
 
-import           Control.Exception         (IOException, evaluate, try, uninterruptibleMask_)
+import           Control.Exception         (evaluate, try, uninterruptibleMask_)
 import qualified Data.ByteString           as B
 import qualified Data.ByteString.Char8     as BC
+import           Data.Char                 (isDigit)
 import           Data.IORef
 import           Data.List                 (nub, stripPrefix)
 import qualified Data.Map.Strict           as Map
@@ -73,7 +74,7 @@ import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
-import           AFrobRobotSim.WorldFile.Lexical (decodeUtf8, utf8Error)
+import           AFrobRobotSim.WorldFile.Lexical (cannotRead, decodeUtf8, utf8Error)
 
 -- | What a log needs besides the states: the world and how it was run.
 data LogConfig = LogConfig
@@ -315,7 +316,9 @@ data RunLog = RunLog
   } deriving (Eq, Show)
 
 -- | Parse a log's text: a header of this format and version, frames, and
--- at most one summary, last. Errors say @line N: ...@ (or @line N,
+-- at most one summary, last; the header's dt and fps positive, and each
+-- frame with as many robots as the header lists (the replay page pairs
+-- them by position). Errors say @line N: ...@ (or @line N,
 -- column C: ...@ for a line that is not JSON). Blank lines are
 -- ignored.
 readLog :: String -> Either String RunLog
@@ -335,24 +338,41 @@ readLog txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all 
       | lhVersion h /= logFormatVersion =
           Left ("a log of version " ++ show (lhVersion h) ++ "; this reader reads version "
                 ++ show logFormatVersion)
+      | not (all positive [lhDt h, lhFps h]) =
+          Left ("the header's dt and fps must be positive numbers, found " ++ show (lhDt h) ++ " and "
+                ++ show (lhFps h))
       | otherwise = Right ()
+    positive x = x > 0 && not (isInfinite x)   -- (NaN, read from null, is not > 0)
     go h acc [] = Right (RunLog h (reverse acc) Nothing)
     go h acc ((i, l) : rest) = at i (decodeLogLine l) >>= \ln -> case ln of
-      LineFrame f   -> go h (f : acc) rest
+      LineFrame f
+        | length (lfRobots f) /= length (lhRobots h) ->
+            Left ("line " ++ show i ++ ": a frame of " ++ show (length (lfRobots f)) ++ " robots; the header lists "
+                  ++ show (length (lhRobots h)))
+        | otherwise -> go h (f : acc) rest
       LineSummary s -> case rest of
         []           -> Right (RunLog h (reverse acc) (Just s))
         (j, _) : _   -> Left ("line " ++ show j ++ ": a line after the summary")
       LineHeader _  -> Left ("line " ++ show i ++ ": a second header")
 
--- | 'readLog' of a file (UTF-8), the error prefixed with its name; a
--- file that cannot be read, or is not UTF-8 (with the line and column of
--- the first bad byte), is a 'Left' too.
+-- | 'readLog' of a file (UTF-8), the error located as @FILE:LINE:COLUMN:@
+-- (or @FILE:LINE:@), like a world file's; a file that cannot be read, or
+-- is not UTF-8 (with the line and column of the first bad byte), is a
+-- 'Left' too.
 readLogFile :: FilePath -> IO (Either String RunLog)
 readLogFile path = do
   r <- try (B.readFile path)
   pure $ case r of
-    Left e      -> Left (show (e :: IOException))   -- it names the file
+    Left e      -> Left (cannotRead path e)
     Right bytes -> case utf8Error bytes of
-      Just (l, c, b) -> Left (path ++ ": line " ++ show l ++ ", column " ++ show c
+      Just (l, c, b) -> Left (path ++ ":" ++ show l ++ ":" ++ show c
                               ++ ": not UTF-8 text (byte " ++ show b ++ ")")
-      Nothing        -> either (\e -> Left (path ++ ": " ++ e)) Right (readLog (decodeUtf8 bytes))
+      Nothing        -> either (Left . located) Right (readLog (decodeUtf8 bytes))
+  where
+    -- "line N, column C: ..." and "line N: ..." of 'readLog' as FILE:N:C: and FILE:N:
+    located e = case span isDigit <$> stripPrefix "line " e of
+      Just (n@(_ : _), ':' : rest) -> path ++ ":" ++ n ++ ":" ++ rest
+      Just (n@(_ : _), ',' : ' ' : more)
+        | Just (c@(_ : _), ':' : rest) <- span isDigit <$> stripPrefix "column " more ->
+            path ++ ":" ++ n ++ ":" ++ c ++ ":" ++ rest
+      _ -> path ++ ": " ++ e

@@ -14,7 +14,7 @@
 -- --no-frames        write no frames (the default)
 -- --scale PX         pixels per metre  (default: the world's long side 600 px, 'fitScale')
 -- --keys "1.5:a,3:b" scripted key presses (time:key, ...)
--- --seed N           seed of the random parts              (default 0)
+-- --seed N           seed of the random parts, |N| <= 2^53 (default 0)
 -- --odometry-noise X relative odometry error per step      (default 0 = exact)
 -- --quiet            print only the summary line
 -- --world FILE       load the world from FILE instead of the program's
@@ -141,9 +141,14 @@ parseSimArgs o0 = go o0 False False
     "--rays" : rest          -> go o { optRays = True } svgNamed pageNamed rest
     "--trails" : rest        -> go o { optTrails = True } svgNamed pageNamed rest
     flag : rest | Just set <- lookup flag (valued o) -> case rest of
+      v : _ | isFlag v -> Left (flag ++ " needs a value (see --help), found the flag " ++ v)
       v : rest' -> set v >>= \o' -> go o' (svgNamed || flag == "--svg") (pageNamed || flag == "--replay") rest'
       []        -> Left (flag ++ " needs a value (see --help)")
     flag : _                 -> Left ("unknown argument " ++ show flag ++ " (see --help)")
+  -- a value that is one of the flags is a value left out (@--out --no-svg@
+  -- would write into a folder named @--no-svg@); @./--no-svg@ names such a file
+  isFlag v = v `elem` (["--help", "-h", "--no-frames", "--frames", "--no-svg", "--no-replay", "--quiet"
+                       , "--dump-world", "--rays", "--trails"] ++ map fst (valued o0))
   valued o =
       [ ("--seconds", \v -> (\x -> o { optSeconds = x }) <$> number "--seconds" (>= 0) v)
       , ("--dt",      \v -> (\x -> o { optDt = x }) <$> number "--dt" (> 0) v)
@@ -152,8 +157,11 @@ parseSimArgs o0 = go o0 False False
                              else Right o { optOut = v })
       , ("--scale",   \v -> (\x -> o { optScale = Just x }) <$> number "--scale" (> 0) v)
       , ("--keys",    \v -> (\ks -> o { optKeys = ks }) <$> parseKeys v)
-      , ("--seed",    \v -> maybe (Left ("--seed expects a whole number, got " ++ show v))
-                                  (\x -> Right o { optSeed = x }) (readMaybe v))
+      , ("--seed",    \v -> case readMaybe v :: Maybe Integer of
+                             -- (read as an Int, 2^64 + 1 wrapped round to 1; beyond 2^53 the
+                             -- result line and the log, JSON numbers, could not record it exactly)
+                             Just x | abs x <= maxSeed -> Right o { optSeed = fromInteger x }
+                             _ -> Left ("--seed expects a whole number from -2^53 to 2^53, got " ++ show v))
       , ("--odometry-noise", \v -> (\x -> o { optOdometryNoise = x }) <$> number "--odometry-noise" (>= 0) v)
       , ("--world",   \v -> Right o { optWorldFile = Just v })
       , ("--svg",     \v -> Right o { optSvg = Just v })
@@ -192,6 +200,12 @@ setParam :: (String, String) -> [(String, String)] -> [(String, String)]
 setParam (k, v) ps
   | any ((== k) . fst) ps = [ (k', if k' == k then v else v') | (k', v') <- ps ]
   | otherwise             = ps ++ [(k, v)]
+
+-- | The largest magnitude of a @--seed@: 2^53, the largest up to which
+-- every whole number is a 'Double' (the result line and the log record the
+-- seed as a JSON number).
+maxSeed :: Integer
+maxSeed = 2 ^ (53 :: Int)
 
 -- | The most steps a run may take: 10^8 (about 280 simulated hours at the
 -- default step).
@@ -274,14 +288,14 @@ num x
                 in reverse (dropWhile (== '.') (dropWhile (== '0') (reverse s)))
 
 -- | Parse scripted key presses: @"1.5:a,3:b"@ is @a@ at 1.5 s and @b@ at
--- 3 s. Times must be non-negative; a key is one character.
+-- 3 s. Times must be finite and non-negative; a key is one character.
 parseKeys :: String -> Either String [(Double, Char)]
 parseKeys s
   | all isSpace s = Right []
   | otherwise     = mapM one (splitOn ',' s)
   where
     one item = case break (== ':') (trim item) of
-      (t, ':' : [k]) | Just x <- readMaybe (trim t), x >= 0, not (isNaN x) -> Right (x, k)
+      (t, ':' : [k]) | Just x <- readMaybe (trim t), x >= 0, not (isNaN x || isInfinite x) -> Right (x, k)
       _ -> Left ("--keys expects TIME:KEY pairs separated by commas (e.g. \"1.5:a,3:b\"), got "
                  ++ show item)
 

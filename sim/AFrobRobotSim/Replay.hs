@@ -46,7 +46,7 @@ import           Data.Word                 (Word64)
 import           Numeric                   (showHex)
 import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
 import           Control.Monad             (unless)
-import           System.Directory          (getTemporaryDirectory, removeFile)
+import           System.Directory          (canonicalizePath, getTemporaryDirectory, removeFile)
 import           System.IO
 
 import           AFrobRobotSim.Log
@@ -108,14 +108,19 @@ fnvBasis = 14695981039346656037
 -- | Read a log file and write its page: what @simbot --replay-from
 -- FILE.jsonl --replay OUT.html@ does. A log that does not read is a
 -- 'Left' with the reader's message (nothing is written then); a page that
--- cannot be written is a 'Left' naming it.
+-- cannot be written is a 'Left' naming it, and so is a page that is the
+-- log itself (under any name: the log is kept).
 writeReplayFromLog :: FilePath -> FilePath -> IO (Either String ())
 writeReplayFromLog logPath out = do
-  r <- readLogFile logPath
+  same <- (==) <$> canonical logPath <*> canonical out
+  r <- if same then pure (Left (out ++ ": is the log being read; the page would overwrite it"))
+               else readLogFile logPath
   case r of
     Left e  -> pure (Left e)
     Right l -> either (\e -> Left (show (e :: IOException))) Right   -- it names the page
                  <$> try (writeAscii out (replayPage l))
+  where
+    canonical f = either (\e -> const f (e :: IOException)) id <$> try (canonicalizePath f)
 
 -- | A page being recorded as a run goes. Each frame's line is encoded at
 -- once and appended to a temporary file (in the system's temporary

@@ -16,8 +16,10 @@
 -- code 2: an unknown flag, a world file that cannot be read or parsed
 -- (with its line and column), an invalid world, options that do not fit
 -- together ('validateOptions'), an output file or folder whose folder
--- does not exist or cannot be written, @--video@ without @ffmpeg@ on the
--- PATH. A controller that throws stops the run with a message naming the
+-- does not exist or cannot be written, two outputs that are the same file
+-- (under any names; devices such as @\/dev\/stdout@ excepted), an output
+-- that is the world file, @--video@ without
+-- @ffmpeg@ on the PATH. A controller that throws stops the run with a message naming the
 -- robot and the simulated time (exit code 1). A write that fails during
 -- the run (a full disk) stops it with a message (exit code 1). Ctrl-C
 -- stops the run (exit code 130). In each case the outputs are finished
@@ -49,15 +51,15 @@ import           Control.Exception         (AsyncException (UserInterrupt), Exce
 import           Control.Monad             (forM, unless, when)
 import qualified Data.ByteString           as BS
 import           Data.IORef
-import           Data.List                 (foldl', nub)
+import           Data.List                 (foldl', isPrefixOf)
 import           Data.Maybe                (catMaybes, listToMaybe)
 import           GHC.Clock                 (getMonotonicTime)
-import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
+import           System.Directory          (canonicalizePath, createDirectory, doesDirectoryExist, doesFileExist,
                                             findExecutable, getPermissions, removeFile, renameFile,
                                             writable)
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
-import           System.FilePath           (takeDirectory, (</>))
+import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, (</>))
 import           System.IO                 (BufferMode (..), hFlush, hIsTerminalDevice, hPutStr,
                                             hSetBuffering, stderr, stdout)
 import           System.Process            (rawSystem)
@@ -115,24 +117,38 @@ runSimWith opts mworld rcA rcB = do
 -- @--video@ asks for it.
 preflight :: Bounds -> SimOptions -> IO ([String], Maybe FilePath)
 preflight bounds opts = do
-  let out   = optOut opts
+  let out   = folder (optOut opts)
       files = catMaybes [ (,) "--svg" <$> optSvg opts, (,) "--log" <$> optLog opts
                         , (,) "--replay" <$> optReplay opts, (,) "--video" <$> optVideo opts
                         , (,) "--result" <$> optResult opts ]
-      inOut = optFrames opts || any ((== out) . takeDirectory . snd) files
+      inOut = optFrames opts || any ((== out) . folder . takeDirectory . snd) files
   ffmpeg <- maybe (pure Nothing) (const (findExecutable "ffmpeg")) (optVideo opts)
+  -- the same file under two names (a.svg and ./a.svg, or a link) is caught
+  -- by comparing the files' canonical paths; devices are not files to
+  -- keep (--log /dev/stdout --result /dev/stderr may be one terminal)
+  canon <- forM [ fl | fl@(_, f) <- files, not (device f) ] $ \(flag, f) -> (,,) flag f <$> canonical f
+  world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> canonical w
   fileErrs <- forM files $ \(flag, f) ->
-    if takeDirectory f == out && inOut then checkTarget flag f Nothing else checkTarget flag f (Just (takeDirectory f))
+    if folder (takeDirectory f) == out && inOut then checkTarget flag f Nothing else checkTarget flag f (Just (takeDirectory f))
   let pre = validateOptionsIn bounds opts
             ++ [ "--video needs the frames (add --frames)" | optVideo opts /= Nothing, not (optFrames opts) ]
             ++ [ "--video needs ffmpeg on the PATH (on Debian: apt-get install ffmpeg)"
                | optVideo opts /= Nothing, ffmpeg == Nothing ]
-            ++ [ "two outputs go to the same file" | let fs = map snd files, length (nub fs) /= length fs ]
+            ++ [ "two outputs go to the same file: " ++ flag1 ++ " " ++ show f1 ++ " and " ++ flag2 ++ " " ++ show f2
+               | ((flag1, f1, c1), i) <- zip canon [0 :: Int ..], ((flag2, f2, c2), j) <- zip canon [0 ..]
+               , i < j, c1 == c2 ]
+            ++ [ flag ++ " " ++ show f ++ " would overwrite the world file " ++ show w
+               | (w, cw) <- world, (flag, f, c) <- canon, c == cw ]
             ++ concat fileErrs
   -- the output folder is created only when nothing else is wrong
   errs <- if inOut && null pre then checkFolder out else pure pre
   pure (errs, ffmpeg)
   where
+    canonical f = either (\(_ :: IOException) -> normalise f) id <$> try (canonicalizePath f)
+    device f = any (`isPrefixOf` normalise f) ["/dev/", "/proc/"]
+    -- a folder as one name (--out x/ and --out ./x are the folder x, which
+    -- the run creates; with the slash its parent was taken to be x itself)
+    folder = dropTrailingPathSeparator . normalise
     -- a file to write: not a folder, and its folder exists and is writable
     checkTarget flag f mdir = do
       isDir <- doesDirectoryExist f
@@ -150,11 +166,14 @@ preflight bounds opts = do
           fw <- if exists then writable <$> getPermissions f else pure True
           pure [ flag ++ " " ++ show f ++ ": cannot write there" | not (w || (exists && fw)) ]
     -- the output folder: created if its parent exists, then proven writable
+    -- (without --frames only the SVG, page, log or result go there)
+    writeTo | optFrames opts = "cannot write frames to "
+            | otherwise      = "cannot write to the output folder (--out) "
     checkFolder dir = do
       there <- doesDirectoryExist dir
       parentThere <- doesDirectoryExist (takeDirectory dir)
       if not there && not parentThere
-        then pure [ "cannot write frames to " ++ show dir ++ ": the folder " ++ show (takeDirectory dir)
+        then pure [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir)
                     ++ " does not exist" ]
         else do
           r <- try (do unless there (createDirectory dir)
@@ -162,7 +181,7 @@ preflight bounds opts = do
                        writeFile probe "ok"
                        removeFile probe)
           pure $ case r of
-            Left (e :: IOException) -> [ "cannot write frames to " ++ show dir ++ ": " ++ show e ]
+            Left (e :: IOException) -> [ writeTo ++ show dir ++ ": " ++ show e ]
             Right ()                -> []
 
 -- How a run's loop ended.

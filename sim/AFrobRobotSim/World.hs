@@ -309,15 +309,26 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     firstWithId = M.fromListWith min [ ((k, otRId o), i) | (i, o) <- placed, Just k <- [robotKindOf o] ]
     -- The placed objects on a grid of 1 m cells (no object is larger), each
     -- in every cell its bounding box meets: a pair can only overlap if they
-    -- share a cell.
-    grid = M.map reverse (M.fromListWith (++) [ (c, [(i, o)]) | (i, o) <- placed, c <- cellsOf o ])
+    -- share a cell. Each cell is split by class (robots, balls, walls and
+    -- blocks), and an object is looked for only among the classes it can
+    -- overlap ('overlapAtStart': two balls bounce apart, walls and blocks
+    -- may overlap), so that a pile of 10000 balls on one spot is not
+    -- checked pair by pair (it took minutes).
+    grid = M.map reverse (M.fromListWith (++) [ ((classOf o, c), [(i, o)]) | (i, o) <- placed, c <- cellsOf o ])
+    classOf o | robotKindOf o /= Nothing = 0
+              | OTBall {} <- o           = 1
+              | otherwise                = 2 :: Int
+    against k = case k of
+      0 -> [0, 1, 2]
+      1 -> [0, 2]
+      _ -> [0, 1]
     cellsOf o =
       let Point2 x y = otPos o
           (hw, hh)   = objectHalfSize o
       in [ (cx, cy) | cx <- [cell (x - hw) .. cell (x + hw)], cy <- [cell (y - hh) .. cell (y + hh)] ]
     cell v = floor (max (-1e9) (min 1e9 v)) :: Int
     overlapsBefore i o =
-      S.toAscList (S.fromList [ j | c <- cellsOf o, (j, p) <- M.findWithDefault [] c grid
+      S.toAscList (S.fromList [ j | c <- cellsOf o, k <- against (classOf o), (j, p) <- M.findWithDefault [] (k, c) grid
                                   , j < i, overlapAtStart o p ])
 
 -- | Do two objects overlap (more than touch) where the physics could not

@@ -27,7 +27,7 @@
 -- * Limits, so that any file is read in time linear in its size: a line
 --   has at most 'maxLineLength' (4096) characters, a token at most
 --   'maxTokenLength' (100); a file describes at most 'maxObjects' (10000)
---   objects. A NUL character anywhere is an error (the file
+--   objects, and 'readWorldFile' reads at most 'maxFileBytes' (16 MiB). A NUL character anywhere is an error (the file
 --   is probably not text). A file read with 'readWorldFile' or
 --   'readWorldBytes' must be valid UTF-8; the first invalid byte is
 --   reported with its line and column.
@@ -162,15 +162,18 @@ module AFrobRobotSim.WorldFile
   , maxTokenLength
   , maxHeading
   , maxObjects
+  , maxFileBytes
     -- * Printing
   , renderWorld
   ) where
 
-import           Control.Exception (IOException, try)
+import           Control.Exception (try)
 import qualified Data.ByteString   as B
+import qualified Data.ByteString.Lazy as BL
 import           Data.List         (intercalate)
 import qualified Data.Map.Strict   as M
 import           Numeric           (showHex)
+import           System.IO         (IOMode (ReadMode), withBinaryFile)
 
 import           AFRP.Geometry     (Point2 (..))
 import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems,
@@ -290,13 +293,25 @@ readWorldBytes file bytes = case utf8Error bytes of
 -- | Read, parse and check a world file ('readWorldBytes'). A file that cannot be
 -- read (missing, no permission, a directory, ...) gives 'Left' with the
 -- operating system's message rather than throwing an exception; a
--- malformed file gives 'Left' with the message of 'readWorldBytes'.
+-- malformed file gives 'Left' with the message of 'readWorldBytes'. At
+-- most 'maxFileBytes' are read: a longer file (or an endless one, such as
+-- @\/dev\/zero@) gives @FILE: more than N bytes (is this a world file?)@.
 readWorldFile :: FilePath -> IO (Either String WorldTemplate)
 readWorldFile path = do
-  r <- try (B.readFile path)
+  r <- try (withBinaryFile path ReadMode $ \h -> do
+              s <- BL.toStrict . BL.take (fromIntegral maxFileBytes + 1) <$> BL.hGetContents h
+              B.length s `seq` pure s)
   pure $ case r of
-    Left e  -> Left (show (e :: IOException))
-    Right s -> readWorldBytes path s
+    Left e  -> Left (cannotRead path e)
+    Right s
+      | B.length s > maxFileBytes ->
+          Left (path ++ ": more than " ++ show maxFileBytes ++ " bytes (is this a world file?)")
+      | otherwise -> readWorldBytes path s
+
+-- | The longest file 'readWorldFile' reads, in bytes: 16 MiB ('renderWorld'
+-- writes 'maxObjects' objects in less than 1.2 MB).
+maxFileBytes :: Int
+maxFileBytes = 16 * 1024 * 1024
 
 -- | Print a world in the world-file format: a header comment, then one
 -- line per object, in order. Coordinates are printed with 'show', headings

@@ -128,6 +128,35 @@ spec = do
       readLog "" `shouldSatisfy` either ("line 1" `isInfixOf`) (const False)
       readLog (unlines (take 3 (lines fixtureLogText) ++ ["{\"kind\": \"frame\""]))
         `shouldSatisfy` either ("line 4, column 17:" `isPrefixOf`) (const False)
+    it "refuses a frame whose robots are not the header's, and a header whose dt or fps is not positive" $ do
+      let ls = lines fixtureLogText
+          h = rlHeader fixtureLog
+          f = head (rlFrames fixtureLog)
+          withFrame f' = unlines (take 2 ls ++ [encodeLogLine (LineFrame f')] ++ drop 2 ls)
+          withHeader h' = unlines (encodeLogLine (LineHeader h') : drop 1 ls)
+      length (lfRobots f) `shouldBe` length (lhRobots h)
+      readLog (withFrame f { lfRobots = drop 1 (lfRobots f) })
+        `shouldSatisfy` either ("line 3: a frame of" `isPrefixOf`) (const False)
+      readLog (withFrame f { lfRobots = lfRobots f ++ lfRobots f })
+        `shouldSatisfy` either ("line 3: a frame of" `isPrefixOf`) (const False)
+      readLog (withHeader h { lhFps = 0 }) `shouldSatisfy` either ("fps" `isInfixOf`) (const False)
+      readLog (withHeader h { lhDt = -1 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
+      readLog (withHeader h { lhDt = 0 / 0 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
+    it "readLogFile locates an error as FILE:LINE:COLUMN: or FILE:LINE:, like a world file" $ do
+      tmp <- getTemporaryDirectory
+      (path, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      let ls = lines fixtureLogText
+      writeFile path (unlines (take 3 ls ++ ["{\"kind\": \"frame\""]))
+      r1 <- readLogFile path
+      writeFile path (unlines (take 3 ls ++ [head ls]))
+      r2 <- readLogFile path
+      removeFile path
+      fmap (const ()) r1 `shouldBe` Left (path ++ ":4:17: expected ',' or '}', found end of input")
+      fmap (const ()) r2 `shouldBe` Left (path ++ ":4: a second header")
+    it "readLogFile says which file it cannot read and why, not which Haskell function failed" $ do
+      r <- readLogFile "no-such-dir/run.jsonl"
+      fmap (const ()) r `shouldBe` Left "no-such-dir/run.jsonl: cannot read it: does not exist (No such file or directory)"
     it "reads a log cut short (no summary) (fixed)" $
       fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
 

@@ -2,7 +2,7 @@
 -- output files and the output folder, in any order.
 module AFrobRobotSim.OptionsSpec (spec) where
 
-import           Data.List        (permutations)
+import           Data.List        (isInfixOf, permutations)
 import           Test.Hspec
 
 import           AFrobRobotSim.Options
@@ -33,3 +33,22 @@ spec = describe "parseSimArgs" $ do
         results = [ outputs (concat g) | g <- permutations groups, ordered g ]
     length results `shouldBe` 60
     results `shouldSatisfy` all (== Right (Just "p/a.svg", Nothing, "y"))
+  it "takes no flag as the value of a flag that needs one" $ do
+    outputs ["--out", "--no-svg"] `shouldSatisfy` either ("--out needs a value" `isInfixOf`) (const False)
+    outputs ["--svg", "--quiet"] `shouldSatisfy` either ("--svg needs a value" `isInfixOf`) (const False)
+    outputs ["--seconds", "--dt", "0.02"] `shouldSatisfy` either ("--seconds needs a value" `isInfixOf`) (const False)
+    outputs ["--out", "./--no-svg"] `shouldBe` Right (Just "./--no-svg/run.svg", Just "./--no-svg/replay.html", "./--no-svg")
+    fmap (const ()) (parseSimArgs defaultSimOptions ["--seconds", "-1"]) `shouldSatisfy` either ("non-negative" `isInfixOf`) (const False)
+  it "takes a --seed up to 2^53 either way and refuses a larger one rather than wrap it round" $ do
+    let seed args = case parseSimArgs defaultSimOptions args of
+          Right (RunWith o) -> Right (optSeed o)
+          Right ShowHelp    -> Left "help"
+          Left err          -> Left err
+    seed ["--seed", "9007199254740992"] `shouldBe` Right 9007199254740992
+    seed ["--seed", "-9007199254740992"] `shouldBe` Right (-9007199254740992)
+    seed ["--seed", "9007199254740993"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
+    seed ["--seed", "18446744073709551617"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
+  it "refuses a --keys time that is not a finite number (Infinity, 1e400, NaN)" $ do
+    parseKeys "1.5:a,3:b" `shouldBe` Right [(1.5, 'a'), (3, 'b')]
+    mapM_ (\k -> parseKeys k `shouldSatisfy` either ("--keys" `isInfixOf`) (const False))
+          ["Infinity:a", "1e400:a", "1:a,NaN:b"]

@@ -4,6 +4,7 @@ module AFrobRobotSim.ReplaySpec (spec) where
 import qualified Data.ByteString          as BS
 import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf, tails)
 import           System.Directory         (getTemporaryDirectory, listDirectory, removeFile)
+import           System.FilePath          (splitFileName, (</>))
 import           System.IO                (hClose, openBinaryTempFile, openTempFile)
 import           Test.Hspec
 
@@ -105,7 +106,7 @@ spec = do
       writeFile logPath "{\"kind\": \"header\", \"format\": \"other\"}\n"
       r <- writeReplayFromLog logPath (logPath ++ ".html")
       removeFile logPath
-      r `shouldSatisfy` either ("line 1" `isInfixOf`) (const False)
+      r `shouldSatisfy` either ((logPath ++ ":1: ") `isPrefixOf`) (const False)
     it "reports a log that does not exist and a page that cannot be written as Left, naming the file (fixed)" $ do
       tmp <- getTemporaryDirectory
       let missing = tmp ++ "/afrp-no-such-log.jsonl"
@@ -118,6 +119,17 @@ spec = do
       r2 <- writeReplayFromLog logPath out
       removeFile logPath
       r2 `shouldSatisfy` either (\e -> out `isInfixOf` e && not ((out ++ ": " ++ out) `isInfixOf` e)) (const False)
+    it "refuses a page that is the log itself under another name, keeping the log" $ do
+      tmp <- getTemporaryDirectory
+      (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      writeFile logPath fixtureLogText
+      let (dir, name) = splitFileName logPath
+      r <- writeReplayFromLog logPath (dir </> "." </> name)
+      kept <- readFile logPath
+      length kept `seq` removeFile logPath
+      r `shouldSatisfy` either ("the page would overwrite it" `isInfixOf`) (const False)
+      kept `shouldBe` fixtureLogText
     it "reports a log that is not UTF-8 with the line and column of the first bad byte (fixed)" $ do
       tmp <- getTemporaryDirectory
       (logPath, h) <- openBinaryTempFile tmp "afrp-log.jsonl"
@@ -125,4 +137,4 @@ spec = do
       hClose h
       r <- writeReplayFromLog logPath (logPath ++ ".html")
       removeFile logPath
-      r `shouldBe` Left (logPath ++ ": line 2, column 2: not UTF-8 text (byte 255)")
+      r `shouldBe` Left (logPath ++ ":2:2: not UTF-8 text (byte 255)")

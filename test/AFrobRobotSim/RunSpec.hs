@@ -275,6 +275,36 @@ spec = do
                                             , optReplay = Just (dir </> "nopage" </> "r.html") })
               (\e -> all (`isInfixOf` e) ["--svg", "--log", "--replay", "does not exist"]
                      && length (filter ("cannot run" `isInfixOf`) (lines e)) == 1)
+    it "two outputs that are the same file under two names" $
+      refused (\dir -> (quick (dir </> "f")) { optSvg = Just (dir </> "a.svg"), optLog = Just (dir </> "." </> "a.svg") })
+              (\e -> all (`isInfixOf` e) ["same file", "--svg", "--log"])
+    it "but not two outputs to devices (/dev/stdout and /dev/stderr may be one terminal or pipe)" $ do
+      (_, err, r) <- captured (runSimWith (quick "f") { optFrames = False, optSeconds = 0.1
+                                                      , optLog = Just "/dev/null", optResult = Just "/dev/null" }
+                                          (Just world) drive drive)
+      r `shouldBe` Right ()
+      err `shouldBe` ""
+    it "an output that would overwrite the world file, which is left as it was" $ withTempDir $ \dir -> do
+      let wf = dir </> "w.world"
+      writeFile wf "ball at 0 0\n"
+      (out, err, r) <- captured (runSimWith (quick (dir </> "f")) { optWorldFile = Just wf, optFrames = False
+                                                                   , optLog = Just (dir </> "." </> "w.world") }
+                                            Nothing drive drive)
+      r `shouldBe` Left (ExitFailure 2)
+      out `shouldBe` ""
+      err `shouldSatisfy` ("--log" `isInfixOf`)
+      err `shouldSatisfy` ("would overwrite the world file" `isInfixOf`)
+      readFile wf `shouldReturn` "ball at 0 0\n"
+    it "not an --out with a trailing slash: the folder is created, with the SVG and the page in it" $ withTempDir $ \dir -> do
+      let o = (quick (dir </> "new/")) { optFrames = False, optSeconds = 0.1
+                                       , optSvg = Just (dir </> "new/run.svg"), optReplay = Just (dir </> "new/replay.html") }
+      (_, err, r) <- captured (runSimWith o (Just world) drive drive)
+      err `shouldBe` ""
+      r `shouldBe` Right ()
+      sort <$> listDirectory (dir </> "new") `shouldReturn` ["replay.html", "run.svg"]
+    it "an --out whose parent folder does not exist, not said to be for frames when there are none" $
+      refused (\dir -> (quick (dir </> "a" </> "b")) { optFrames = False, optSvg = Just (dir </> "a" </> "b" </> "run.svg") })
+              (\e -> "output folder (--out)" `isInfixOf` e && not ("frames" `isInfixOf` e))
     it "an --out whose parent folder does not exist" $
       refused (\dir -> quick (dir </> "a" </> "b")) ("does not exist" `isInfixOf`)
     it "an empty --out" $ do

@@ -7,7 +7,7 @@ import           Control.Exception      (evaluate)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Char8  as BC
 import           Data.Char              (isDigit)
-import           Data.List              (intercalate, isInfixOf, isPrefixOf, tails)
+import           Data.List              (intercalate, isPrefixOf, tails)
 import           System.Timeout         (timeout)
 import           System.Directory       (getTemporaryDirectory, removeFile)
 import           System.FilePath        ((</>))
@@ -486,10 +486,20 @@ spec = do
   describe "readWorldFile" $ do
     it "reports a missing file as a Left naming it" $ do
       r <- readWorldFile "worlds/no-such-file.world"
-      r `shouldSatisfy` either ("no-such-file.world" `isInfixOf`) (const False)
+      r `shouldBe` Left "worlds/no-such-file.world: cannot read it: does not exist (No such file or directory)"
     it "reports a directory as a Left, not an exception" $ do
       r <- readWorldFile "worlds"
-      r `shouldSatisfy` either (const True) (const False)
+      r `shouldBe` Left "worlds: cannot read it: inappropriate type (is a directory)"
+    it "reads at most maxFileBytes: a longer file, or an endless one, is a Left naming it" $ do
+      tmp <- getTemporaryDirectory
+      let file = tmp </> "afrp-long.world"
+          line = BC.pack "# a comment line of a world file that is far too long\n"
+      B.writeFile file (B.concat (replicate (maxFileBytes `div` B.length line + 1) line))
+      r <- readWorldFile file
+      removeFile file
+      r `shouldSatisfy` either ((file ++ ": more than") `isPrefixOf`) (const False)
+      z <- timeout 10000000 (readWorldFile "/dev/zero")
+      z `shouldSatisfy` maybe False (either ("/dev/zero: more than" `isPrefixOf`) (const False))
     it "reports syntax errors with the file's path" $ do
       tmp <- getTemporaryDirectory
       let file = tmp </> "afrp-bad-syntax.world"

@@ -6,6 +6,7 @@ module AFrobRobotSim.WorldSpec (spec) where
 
 import           Control.Exception (ErrorCall (..), evaluate)
 import           Data.List         (isInfixOf)
+import           System.Timeout    (timeout)
 import           Test.Hspec
 import           Test.QuickCheck
 
@@ -94,6 +95,10 @@ spec = do
       length ps `shouldBe` maxProblems + 1
       last ps `shouldBe` ("... and " ++ show (300 * 299 `div` 2 - maxProblems) ++ " more problems")
       sum (map length ps) `shouldSatisfy` (< 3000)
+    it "checks a pile of 5000 balls and one of 5000 blocks within a second (they may overlap their own kind)" $ do
+      let piles = OTSize 10 10 : replicate 5000 (OTBall (Point2 (-2) (-2))) ++ replicate 5000 (OTBlock (Point2 2 2))
+      r <- timeout 1000000 (evaluate (length (problems piles)))
+      r `shouldBe` Just 0
     it "names both robots that share an id" $
       problems [OTSimbotB 2 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 0) 0]
         `shouldBe` ["SimbotB 2 at (2.0, 0.0) has the same id as SimbotB 2 at (0.0, 0.0)"]

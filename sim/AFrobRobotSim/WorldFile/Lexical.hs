@@ -26,14 +26,18 @@ module AFrobRobotSim.WorldFile.Lexical
   , readNumber
     -- * Messages
   , quote
+  , cannotRead
   , lower
   ) where
 
+import           Control.Exception      (IOException)
 import           Data.Bits              ((.&.), (.|.), shiftL)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Unsafe as BU
 import           Data.Char              (chr, isDigit, isPrint, isSpace, showLitChar, toLower)
 import           Data.Word              (Word8)
+import           GHC.IO.Exception       (IOException (ioe_description))
+import           System.IO.Error        (ioeGetErrorType)
 
 ------------------------------------------------------------------------------
 -- UTF-8
@@ -120,6 +124,17 @@ quote s = "\"" ++ foldr esc "" s ++ "\""
     esc ch rest
       | isPrint ch && ch /= '"' && ch /= '\\' = ch : rest
       | otherwise                             = showLitChar ch rest
+
+-- | A file that could not be read, as a message naming it and why, but
+-- not the Haskell function that failed:
+-- @FILE: cannot read it: does not exist (No such file or directory)@
+-- rather than @FILE: openBinaryFile: does not exist (No such file or directory)@.
+cannotRead :: FilePath -> IOException -> String
+cannotRead path e = path ++ ": cannot read it: " ++ show (ioeGetErrorType e) ++ reason
+  where
+    reason = case ioe_description e of
+      "" -> ""
+      d  -> " (" ++ d ++ ")"
 
 -- | A keyword's text in lower case, for comparing case-insensitively.
 lower :: String -> String
