@@ -63,7 +63,7 @@ module AFrobRobotSim.Options
   , usage
   ) where
 
-import           Data.Char       (isSpace)
+import           Data.Char       (isDigit, isSpace)
 import           Data.List       (intercalate, isSuffixOf)
 import           System.FilePath ((</>))
 import           Text.Printf     (printf)
@@ -157,7 +157,7 @@ parseSimArgs o0 = go o0 False False
                              else Right o { optOut = v })
       , ("--scale",   \v -> (\x -> o { optScale = Just x }) <$> number "--scale" (> 0) v)
       , ("--keys",    \v -> (\ks -> o { optKeys = ks }) <$> parseKeys v)
-      , ("--seed",    \v -> case readMaybe v :: Maybe Integer of
+      , ("--seed",    \v -> case readWhole (trim v) of
                              -- (read as an Int, 2^64 + 1 wrapped round to 1; beyond 2^53 the
                              -- result line and the log, JSON numbers, could not record it exactly)
                              Just x | abs x <= maxSeed -> Right o { optSeed = fromInteger x }
@@ -178,7 +178,7 @@ parseSimArgs o0 = go o0 False False
   moved o f
     | f `elem` [optOut o0 </> "run.svg", optOut o0 </> "replay.html"] = optOut o </> drop (length (optOut o0) + 1) f
     | otherwise = f
-  number flag ok v = case readMaybe (trim v) :: Maybe Double of
+  number flag ok v = case readDecimal (trim v) of
     Just x | not (isNaN x || isInfinite x) && ok x -> Right x
     _ -> Left (flag ++ " expects a " ++ what flag ++ " number, got " ++ show v)
   what flag | flag `elem` ["--seconds", "--odometry-noise"] = "non-negative"
@@ -186,6 +186,50 @@ parseSimArgs o0 = go o0 False False
   check opts = case validateOptions opts of
     []   -> Right (RunWith opts)
     errs -> Left (intercalate "; " errs)
+
+-- | A decimal number as people write one on a command line: an optional
+-- sign, digits with an optional decimal point (either side of it may be
+-- empty, not both: @.5@, @5.@, @+5@), an optional exponent. Not
+-- Haskell's 'read', which refuses @.5@, @5.@ and @+5@ but takes @0x10@ as
+-- 16 and @NaN@.
+readDecimal :: String -> Maybe Double
+readDecimal str = case str of
+  '+' : rest -> unsigned rest
+  '-' : rest -> negate <$> unsigned rest
+  _          -> unsigned str
+  where
+    unsigned t =
+      let (int, t1)  = span isDigit t
+          (frac, t2) = case t1 of
+            '.' : r -> span isDigit r
+            _       -> ("", t1)
+          hasPoint   = take 1 t1 == "."
+          okExp      = case t2 of
+            ""          -> Just ""
+            e : r | e `elem` "eE" -> case r of
+              '+' : ds | isDigits ds -> Just ('e' : ds)
+              '-' : ds | isDigits ds -> Just ("e-" ++ ds)
+              ds       | isDigits ds -> Just ('e' : ds)
+              _                      -> Nothing
+            _           -> Nothing
+      in if null int && null frac then Nothing
+         else case okExp of
+           Nothing -> Nothing
+           Just ex -> readMaybe ((if null int then "0" else int)
+                                 ++ (if hasPoint then "." ++ (if null frac then "0" else frac) else "")
+                                 ++ ex)
+    isDigits ds = not (null ds) && all isDigit ds
+
+-- | A whole number: an optional sign and digits (not Haskell's 'read',
+-- which takes @0x10@).
+readWhole :: String -> Maybe Integer
+readWhole str = case str of
+  '+' : ds -> digits ds
+  '-' : ds -> negate <$> digits ds
+  ds       -> digits ds
+  where
+    digits ds | not (null ds) && all isDigit ds = readMaybe ds
+              | otherwise                      = Nothing
 
 -- | Parse a @--param@ value, @NAME=VALUE@: the name is what comes before
 -- the first @=@ and must not be empty; the value may be empty or hold @=@.
@@ -295,7 +339,7 @@ parseKeys s
   | otherwise     = mapM one (splitOn ',' s)
   where
     one item = case break (== ':') (trim item) of
-      (t, ':' : [k]) | Just x <- readMaybe (trim t), x >= 0, not (isNaN x || isInfinite x) -> Right (x, k)
+      (t, ':' : [k]) | Just x <- readDecimal (trim t), x >= 0, not (isNaN x || isInfinite x) -> Right (x, k)
       _ -> Left ("--keys expects TIME:KEY pairs separated by commas (e.g. \"1.5:a,3:b\"), got "
                  ++ show item)
 
