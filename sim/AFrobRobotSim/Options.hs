@@ -193,10 +193,7 @@ parseSimArgs o0 = go o0 False False
 -- Haskell's 'read', which refuses @.5@, @5.@ and @+5@ but takes @0x10@ as
 -- 16 and @NaN@.
 readDecimal :: String -> Maybe Double
-readDecimal str = case str of
-  '+' : rest -> unsigned rest
-  '-' : rest -> negate <$> unsigned rest
-  _          -> unsigned str
+readDecimal = withSign unsigned
   where
     unsigned t =
       let (int, t1)  = span isDigit t
@@ -223,13 +220,17 @@ readDecimal str = case str of
 -- | A whole number: an optional sign and digits (not Haskell's 'read',
 -- which takes @0x10@).
 readWhole :: String -> Maybe Integer
-readWhole str = case str of
-  '+' : ds -> digits ds
-  '-' : ds -> negate <$> digits ds
-  ds       -> digits ds
+readWhole = withSign digits
   where
     digits ds | not (null ds) && all isDigit ds = readMaybe ds
               | otherwise                      = Nothing
+
+-- A number read by the given reader after an optional sign.
+withSign :: Num n => (String -> Maybe n) -> String -> Maybe n
+withSign unsigned str = case str of
+  '+' : rest -> unsigned rest
+  '-' : rest -> negate <$> unsigned rest
+  _          -> unsigned str
 
 -- | Parse a @--param@ value, @NAME=VALUE@: the name is what comes before
 -- the first @=@ and must not be empty; the value may be empty or hold @=@.
