@@ -63,13 +63,13 @@ module AFrobRobotSim.Options
   , usage
   ) where
 
-import           Data.Char       (isDigit, isSpace)
+import           Data.Char       (isSpace)
 import           Data.List       (intercalate, isSuffixOf)
 import           System.FilePath ((</>))
 import           Text.Printf     (printf)
-import           Text.Read       (readMaybe)
 
 import           AFrobRobotSim.World (Bounds (..))
+import           AFrobRobotSim.WorldFile.Lexical (decimalLit, integerLit)
 
 -- | The settings of a run.
 data SimOptions = SimOptions
@@ -132,14 +132,8 @@ parseSimArgs o0 = go o0 False False
     []                       -> check (relocated o svgNamed pageNamed)
     "--help" : _             -> Right ShowHelp
     "-h" : _                 -> Right ShowHelp
-    "--no-frames" : rest     -> go o { optFrames = False } svgNamed pageNamed rest
-    "--frames" : rest        -> go o { optFrames = True } svgNamed pageNamed rest
-    "--no-svg" : rest        -> go o { optSvg = Nothing } True pageNamed rest
-    "--no-replay" : rest     -> go o { optReplay = Nothing } svgNamed True rest
-    "--quiet" : rest         -> go o { optQuiet = True } svgNamed pageNamed rest
-    "--dump-world" : rest    -> go o { optDumpWorld = True } svgNamed pageNamed rest
-    "--rays" : rest          -> go o { optRays = True } svgNamed pageNamed rest
-    "--trails" : rest        -> go o { optTrails = True } svgNamed pageNamed rest
+    flag : rest | Just switch <- lookup flag switches ->
+      case switch (o, svgNamed, pageNamed) of (o', s', p') -> go o' s' p' rest
     flag : rest | Just set <- lookup flag (valued o) -> case rest of
       v : _ | isFlag v -> Left (flag ++ " needs a value (see --help), found the flag " ++ v)
       v : rest' -> set v >>= \o' -> go o' (svgNamed || flag == "--svg") (pageNamed || flag == "--replay") rest'
@@ -147,8 +141,19 @@ parseSimArgs o0 = go o0 False False
     flag : _                 -> Left ("unknown argument " ++ show flag ++ " (see --help)")
   -- a value that is one of the flags is a value left out (@--out --no-svg@
   -- would write into a folder named @--no-svg@); @./--no-svg@ names such a file
-  isFlag v = v `elem` (["--help", "-h", "--no-frames", "--frames", "--no-svg", "--no-replay", "--quiet"
-                       , "--dump-world", "--rays", "--trails"] ++ map fst (valued o0))
+  isFlag v = v `elem` (["--help", "-h"] ++ map fst switches ++ map fst (valued o0))
+  -- the flags without a value: the settings, and whether the SVG and the
+  -- page were named
+  switches =
+    [ ("--no-frames",  \(o, s, p) -> (o { optFrames = False }, s, p))
+    , ("--frames",     \(o, s, p) -> (o { optFrames = True }, s, p))
+    , ("--no-svg",     \(o, _, p) -> (o { optSvg = Nothing }, True, p))
+    , ("--no-replay",  \(o, s, _) -> (o { optReplay = Nothing }, s, True))
+    , ("--quiet",      \(o, s, p) -> (o { optQuiet = True }, s, p))
+    , ("--dump-world", \(o, s, p) -> (o { optDumpWorld = True }, s, p))
+    , ("--rays",       \(o, s, p) -> (o { optRays = True }, s, p))
+    , ("--trails",     \(o, s, p) -> (o { optTrails = True }, s, p))
+    ]
   valued o =
       [ ("--seconds", \v -> (\x -> o { optSeconds = x }) <$> number "--seconds" (>= 0) v)
       , ("--dt",      \v -> (\x -> o { optDt = x }) <$> number "--dt" (> 0) v)
@@ -157,7 +162,7 @@ parseSimArgs o0 = go o0 False False
                              else Right o { optOut = v })
       , ("--scale",   \v -> (\x -> o { optScale = Just x }) <$> number "--scale" (> 0) v)
       , ("--keys",    \v -> (\ks -> o { optKeys = ks }) <$> parseKeys v)
-      , ("--seed",    \v -> case readWhole (trim v) of
+      , ("--seed",    \v -> case integerLit (trim v) of
                              -- (read as an Int, 2^64 + 1 wrapped round to 1; beyond 2^53 the
                              -- result line and the log, JSON numbers, could not record it exactly)
                              Just x | abs x <= maxSeed -> Right o { optSeed = fromInteger x }
@@ -178,59 +183,15 @@ parseSimArgs o0 = go o0 False False
   moved o f
     | f `elem` [optOut o0 </> "run.svg", optOut o0 </> "replay.html"] = optOut o </> drop (length (optOut o0) + 1) f
     | otherwise = f
-  number flag ok v = case readDecimal (trim v) of
+  number flag ok v = case decimalLit (trim v) of
     Just x | not (isNaN x || isInfinite x) && ok x -> Right x
-    _ -> Left (flag ++ " expects a " ++ what flag ++ " number, got " ++ show v)
+    _ -> Left (flag ++ " expects a " ++ what flag ++ " number (as a world file writes one: 2, 0.5, 1e-3), got "
+               ++ show v)
   what flag | flag `elem` ["--seconds", "--odometry-noise"] = "non-negative"
             | otherwise                                      = "positive"
   check opts = case validateOptions opts of
     []   -> Right (RunWith opts)
     errs -> Left (intercalate "; " errs)
-
--- | A decimal number as people write one on a command line: an optional
--- sign, digits with an optional decimal point (either side of it may be
--- empty, not both: @.5@, @5.@, @+5@), an optional exponent. Not
--- Haskell's 'read', which refuses @.5@, @5.@ and @+5@ but takes @0x10@ as
--- 16 and @NaN@.
-readDecimal :: String -> Maybe Double
-readDecimal = withSign unsigned
-  where
-    unsigned t =
-      let (int, t1)  = span isDigit t
-          (frac, t2) = case t1 of
-            '.' : r -> span isDigit r
-            _       -> ("", t1)
-          hasPoint   = take 1 t1 == "."
-          okExp      = case t2 of
-            ""          -> Just ""
-            e : r | e `elem` "eE" -> case r of
-              '+' : ds | isDigits ds -> Just ('e' : ds)
-              '-' : ds | isDigits ds -> Just ("e-" ++ ds)
-              ds       | isDigits ds -> Just ('e' : ds)
-              _                      -> Nothing
-            _           -> Nothing
-      in if null int && null frac then Nothing
-         else case okExp of
-           Nothing -> Nothing
-           Just ex -> readMaybe ((if null int then "0" else int)
-                                 ++ (if hasPoint then "." ++ (if null frac then "0" else frac) else "")
-                                 ++ ex)
-    isDigits ds = not (null ds) && all isDigit ds
-
--- | A whole number: an optional sign and digits (not Haskell's 'read',
--- which takes @0x10@).
-readWhole :: String -> Maybe Integer
-readWhole = withSign digits
-  where
-    digits ds | not (null ds) && all isDigit ds = readMaybe ds
-              | otherwise                      = Nothing
-
--- A number read by the given reader after an optional sign.
-withSign :: Num n => (String -> Maybe n) -> String -> Maybe n
-withSign unsigned str = case str of
-  '+' : rest -> unsigned rest
-  '-' : rest -> negate <$> unsigned rest
-  _          -> unsigned str
 
 -- | Parse a @--param@ value, @NAME=VALUE@: the name is what comes before
 -- the first @=@ and must not be empty; the value may be empty or hold @=@.
@@ -340,7 +301,7 @@ parseKeys s
   | otherwise     = mapM one (splitOn ',' s)
   where
     one item = case break (== ':') (trim item) of
-      (t, ':' : [k]) | Just x <- readDecimal (trim t), x >= 0, not (isNaN x || isInfinite x) -> Right (x, k)
+      (t, ':' : [k]) | Just x <- decimalLit (trim t), x >= 0, not (isNaN x || isInfinite x) -> Right (x, k)
       _ -> Left ("--keys expects TIME:KEY pairs separated by commas (e.g. \"1.5:a,3:b\"), got "
                  ++ show item)
 

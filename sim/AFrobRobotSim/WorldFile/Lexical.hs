@@ -24,6 +24,8 @@ module AFrobRobotSim.WorldFile.Lexical
   , Rejection (..)
   , robotId
   , readNumber
+  , decimalLit
+  , integerLit
     -- * Messages
   , quote
   , cannotRead
