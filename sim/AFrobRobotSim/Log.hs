@@ -322,17 +322,26 @@ data RunLog = RunLog
 -- column C: ...@ for a line that is not JSON). Blank lines are
 -- ignored.
 readLog :: String -> Either String RunLog
-readLog txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all (`elem` " \t\r") l) ] of
-  [] -> Left "line 1: an empty log (expected a header line)"
+readLog = readLogAt (\i mc -> "line " ++ show i ++ maybe "" (\c -> ", column " ++ show c) mc ++ ": ")
+
+-- 'readLog' with its errors located by the given function of the line and
+-- (for a line that is not JSON) the column: 'readLogFile' says where as a
+-- world file's errors do.
+readLogAt :: (Int -> Maybe Int -> String) -> String -> Either String RunLog
+readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all (`elem` " \t\r") l) ] of
+  [] -> Left (loc 1 Nothing ++ "an empty log (expected a header line)")
   (i0, l0) : rest -> do
     h <- at i0 (decodeLogLine l0) >>= \ln -> case ln of
       LineHeader h -> Right h
-      _            -> Left ("line " ++ show i0 ++ ": expected the header line first")
+      _            -> Left (loc i0 Nothing ++ "expected the header line first")
     at i0 (checkVersion h)
     go h [] rest
   where
-    -- a line's JSON error is at "line 1, column C" of that line
-    at i = either (\e -> Left ("line " ++ show i ++ maybe (": " ++ e) (", " ++) (stripPrefix "line 1, " e))) Right
+    -- a line's JSON error is at "line 1, column C: ..." of that line
+    at i = either (\e -> Left (located i e)) Right
+    located i e = case span isDigit <$> (stripPrefix "line 1, column " e) of
+      Just (c@(_ : _), ':' : ' ' : msg) -> loc i (Just (read c)) ++ msg
+      _                                 -> loc i Nothing ++ e
     checkVersion h
       | lhFormat h /= logFormatName = Left ("not an afrp log (format " ++ show (lhFormat h) ++ ")")
       | lhVersion h /= logFormatVersion =
@@ -347,13 +356,13 @@ readLog txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all 
     go h acc ((i, l) : rest) = at i (decodeLogLine l) >>= \ln -> case ln of
       LineFrame f
         | length (lfRobots f) /= length (lhRobots h) ->
-            Left ("line " ++ show i ++ ": a frame of " ++ show (length (lfRobots f)) ++ " robots; the header lists "
+            Left (loc i Nothing ++ "a frame of " ++ show (length (lfRobots f)) ++ " robots; the header lists "
                   ++ show (length (lhRobots h)))
         | otherwise -> go h (f : acc) rest
       LineSummary s -> case rest of
         []           -> Right (RunLog h (reverse acc) (Just s))
-        (j, _) : _   -> Left ("line " ++ show j ++ ": a line after the summary")
-      LineHeader _  -> Left ("line " ++ show i ++ ": a second header")
+        (j, _) : _   -> Left (loc j Nothing ++ "a line after the summary")
+      LineHeader _  -> Left (loc i Nothing ++ "a second header")
 
 -- | 'readLog' of a file (UTF-8), the error located as @FILE:LINE:COLUMN:@
 -- (or @FILE:LINE:@), like a world file's; a file that cannot be read, or
@@ -367,12 +376,5 @@ readLogFile path = do
     Right bytes -> case utf8Error bytes of
       Just (l, c, b) -> Left (path ++ ":" ++ show l ++ ":" ++ show c
                               ++ ": not UTF-8 text (byte " ++ show b ++ ")")
-      Nothing        -> either (Left . located) Right (readLog (decodeUtf8 bytes))
-  where
-    -- "line N, column C: ..." and "line N: ..." of 'readLog' as FILE:N:C: and FILE:N:
-    located e = case span isDigit <$> stripPrefix "line " e of
-      Just (n@(_ : _), ':' : rest) -> path ++ ":" ++ n ++ ":" ++ rest
-      Just (n@(_ : _), ',' : ' ' : more)
-        | Just (c@(_ : _), ':' : rest) <- span isDigit <$> stripPrefix "column " more ->
-            path ++ ":" ++ n ++ ":" ++ c ++ ":" ++ rest
-      _ -> path ++ ": " ++ e
+      Nothing        -> readLogAt (\i mc -> path ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": ")
+                                  (decodeUtf8 bytes)
