@@ -47,7 +47,7 @@
 --
 -- = Runs of integrals
 --
--- Two or more integrals in series, each fed by the one before, are kept
+-- Three or more integrals in series, each fed by the one before, are kept
 -- after the chain's first step as one array of their running sums
 -- ('IRun'; 'IRunF' when functions stand between them, as in @integral >>>
 -- arr f >>> integral@), stepped by one loop that writes a new array: one
@@ -92,7 +92,7 @@ data AfterI
   -- previous input its integral node held (@f@ already applied,
   -- unevaluated), used once; 'IIntF' afterwards.
   | IIntFS !(Double -> Double) {-# UNPACK #-} !Double Double !AfterI
-  -- | Two or more integrals in series, the first fed by the integral
+  -- | Three or more integrals in series, the first fed by the integral
   -- before: their running sums, in order (see "Runs of integrals"). Made
   -- at the chain's first step from its 'IIntS' and 'IIntFS' stages.
   | IRun !Sums !AfterI
@@ -229,6 +229,10 @@ sumsFromList xs = runST (ST (\s0 -> case newByteArray# (len *# 8#) s0 of
 lastSum :: Sums -> Double
 lastSum (Sums a) = D# (indexDoubleArray# a ((sizeofByteArray# a `quotInt#` 8#) -# 1#))
 
+-- ('stepSumsF' with no function anywhere, written out: walking the list
+-- of absent functions made network b take 41% more instructions:
+-- valgrind, `throughput 0.02 b`, 78.0 M against 109.9 M.)
+--
 -- One step of a run fed by an integral whose sum was @old@ before this
 -- step: @s'_0 = s_0 + dt * old@, @s'_i = s_i + dt * s_(i-1)@, in a new
 -- array.
