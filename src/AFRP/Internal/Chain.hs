@@ -59,18 +59,47 @@
 -- step as 'IIntF' applies it; so the same bits. The old
 -- array is never written: a chain may be stepped twice from the same
 -- state (a signal function is a value), and each step gets its own.
+--
+-- = Delays among the integrals
+--
+-- A delay fed by an integral stores the integral's sum as its input
+-- ('IPre'), evaluated, and outputs it at the next step: its output at
+-- step @n@ is the integral's sum at step @n-1@, which is the @old@ the
+-- chain's stepper is given at step @n@. So, like an integral fed by an
+-- integral, it need not store its input; what the stages behind it need
+-- is its output at the last step, the value they stored as their input.
+-- From the chain's second step on, such a delay is a stage that keeps its
+-- output at the last step ('IPreI'; 'FPre' in a run): at each step its
+-- output is its predecessor's output at the last step, and the stages
+-- behind it see it as they see an integral, @old@ being its last output
+-- and @new@ its output now. In a run, where each entry holds its stage's
+-- output at the last step, a delay's new entry is its predecessor's old
+-- one. The change is made once, at the chain's second step ('settleL'),
+-- because only then is every delay's output one the chain itself stored,
+-- evaluated: at the first step a delay outputs the value its node held,
+-- which may be unevaluated (an initial value, or an output of a
+-- stage before the chain formed), and making it an entry would evaluate
+-- it one step earlier than the integral behind it would. A delay
+-- behind a delay stays as it is for the same reason. The same values in
+-- the same order: the same bits, nothing evaluated earlier.
 module AFRP.Internal.Chain
   ( AfterI (..)
   , AfterL (..)
   , Funs (..)
+  , Kinds
+  , kindsList
   , Sums
   , sumsList
   , stepAfterL
+  , hasDelayI
+  , settleL
   ) where
 
-import           GHC.Exts (ByteArray#, Double (..), Int (..), indexDoubleArray#, newByteArray#,
-                           sizeofByteArray#, unsafeFreezeByteArray#, writeDoubleArray#, (*#),
-                           (*##), (+#), (+##), (-#), (<#), isTrue#, quotInt#)
+import           GHC.Exts (ByteArray#, Double (..), Int (..), SmallArray#, indexDoubleArray#,
+                           indexIntArray#, indexSmallArray#, newByteArray#, newSmallArray#,
+                           sizeofByteArray#, unsafeFreezeByteArray#, unsafeFreezeSmallArray#,
+                           writeDoubleArray#, writeIntArray#, writeSmallArray#, (*#), (*##), (+#),
+                           (+##), (-#), (<#), isTrue#, quotInt#)
 import           GHC.ST   (ST (..), runST)
 
 -- | The stages that follow an integral (whose running sum before and
@@ -97,18 +126,25 @@ data AfterI
   -- at the chain's first step from its 'IIntS' and 'IIntFS' stages.
   | IRun !Sums !AfterI
   -- | A run of integrals with functions before some of them ('IInt' and
-  -- 'IIntF' stages): their running sums, and for each, in order, the
-  -- function it applies to its predecessor's sum, if any.
-  | IRunF !Sums !Funs !AfterI
+  -- 'IIntF' stages), and, from the chain's second step, delays among
+  -- them ('IPreI'): each stage's output at the last step, and for each,
+  -- in order, what it is ('Funs', packed as 'Kinds').
+  | IRunF !Sums !Kinds !AfterI
+  -- | A delay fed by an integral (or by a stage of this form), from the
+  -- chain's second step on: its output at the last step, evaluated (see
+  -- "Delays among the integrals"). Its output at this step is its
+  -- predecessor's output at the last step, which the stepper is given.
+  | IPreI {-# UNPACK #-} !Double !AfterI
 
--- | The functions before the integrals of an 'IRunF', one entry per
--- integral, in order.
+-- | The stages of an 'IRunF', one entry per stage, in order.
 data Funs
   = FNil
-  -- | The integral sums its predecessor's sum as it is.
+  -- | An integral that sums its predecessor's output as it is.
   | FNone !Funs
-  -- | The integral sums @f@ of its predecessor's sum.
+  -- | An integral that sums @f@ of its predecessor's output.
   | FSome !(Double -> Double) !Funs
+  -- | A delay: it outputs its predecessor's output of the last step.
+  | FPre !Funs
 
 -- | The stages that follow the chain's input or a delay (whose output is
 -- known only as an unevaluated value).
@@ -171,6 +207,9 @@ stepAfterI !dt !old !new c = case c of
     let !acc' = acc + dt * prev
     in case stepAfterI dt acc acc' rest of
          (# rest', y #) -> case consInt (Just f) acc' rest' of !c' -> (# c', y #)
+  -- a delay fed by an integral outputs the integral's sum before this step
+  IPreI lastOut rest -> case stepAfterI dt lastOut old rest of
+    (# rest', y #) -> case IPreI old rest' of !c' -> (# c', y #)
 
 -- An integral (its running sum, and the function before it, if any) in
 -- front of the stages that follow it, after the chain's first step:
@@ -181,7 +220,7 @@ stepAfterI !dt !old !new c = case c of
 consInt :: Maybe (Double -> Double) -> Double -> AfterI -> AfterI
 consInt mf acc c = case c of
   IRun sums rest      -> run (acc : sumsList sums) (nones (sumsList sums)) rest
-  IRunF sums fs rest  -> run (acc : sumsList sums) fs rest
+  IRunF sums ks rest  -> run (acc : sumsList sums) (kindsList ks) rest
   _ | Just (acc2, f2, acc3, f3, rest) <- twoInts c -> run [acc, acc2, acc3] (f2 (f3 FNil)) rest
   _                   -> maybe (IInt acc c) (\f -> IIntF f acc c) mf
   where
@@ -196,11 +235,120 @@ consInt mf acc c = case c of
     nones = foldr (const FNone) FNil
     run sums fs rest = case (mf, fs) of
       (Nothing, _) | allNone fs -> IRun (sumsFromList sums) rest
-      _                         -> IRunF (sumsFromList sums) (maybe FNone FSome mf fs) rest
+      _                         -> IRunF (sumsFromList sums) (packKinds (maybe FNone FSome mf fs)) rest
     allNone fs = case fs of
       FNil      -> True
       FNone r   -> allNone r
       FSome _ _ -> False
+      FPre _    -> False
+
+-- | Whether a chain has a delay fed by an integral ('IPre'), which
+-- 'settleL' makes a stage of its own kind at the chain's second step.
+hasDelayI :: AfterL -> Bool
+hasDelayI c = case c of
+  LEnd          -> False
+  LInt _ _ r    -> afterI r
+  LIntF _ _ _ r -> afterI r
+  LPre _ r      -> hasDelayI r
+  where
+    afterI x = case x of
+      IEnd           -> False
+      IPre _ _       -> True
+      IInt _ r       -> afterI r
+      IIntF _ _ r    -> afterI r
+      IIntS _ _ r    -> afterI r
+      IIntFS _ _ _ r -> afterI r
+      IRun _ r       -> afterI r
+      IRunF _ _ r    -> afterI r
+      IPreI _ r      -> afterI r
+
+-- | @settleL pre post@, where @post@ is the successor of @pre@ at the
+-- chain's second step: @post@ with each delay fed by an integral made an
+-- 'IPreI' (its output at this step is what @pre@ held), the stages it
+-- feeds (which stored that output as their input) made stages fed by it
+-- ('IInt', 'IIntF', 'IPre'), and the integrals and delays in series
+-- regrouped, three or more as one run ('IRun', 'IRunF'). The same
+-- stages, so the same steps (see "Delays among the integrals").
+settleL :: AfterL -> AfterL -> AfterL
+settleL pre post = case (pre, post) of
+  (LInt _ _ p, LInt acc prev q)       -> LInt acc prev (settleI p q)
+  (LIntF _ _ _ p, LIntF f acc prev q) -> LIntF f acc prev (settleI p q)
+  (LPre _ p, LPre v q)                -> LPre v (settleL p q)
+  _                                   -> post
+
+-- The stages after an integral, settled.
+settleI :: AfterI -> AfterI -> AfterI
+settleI pre post = case entriesI pre post of
+  (es, rest) -> groupEntries es rest
+
+-- A stage of a run, as 'settleL' collects them: its output at the last
+-- step and what it is.
+data Entry = EInt !Double | EIntF !(Double -> Double) !Double | EPre !Double
+
+-- The longest series of integrals and delays at the head of the stages
+-- after an integral (before and after this step), and what follows it.
+entriesI :: AfterI -> AfterI -> ([Entry], AfterI)
+entriesI pre post = case (pre, post) of
+  (IInt _ p, IInt acc q)       -> withEntries [EInt acc] (entriesI p q)
+  (IIntF _ _ p, IIntF f acc q) -> withEntries [EIntF f acc] (entriesI p q)
+  (IRun _ p, IRun s q)         -> withEntries (map EInt (sumsList s)) (entriesI p q)
+  (IRunF _ _ p, IRunF s ks q)  -> withEntries (funEntries (sumsList s) (kindsList ks)) (entriesI p q)
+  (IPreI _ p, IPreI out q)     -> withEntries [EPre out] (entriesI p q)
+  -- the delay's output at this step is what it held before it; the
+  -- chain's first step stored it there, evaluated
+  (IPre out p, IPre _ q)       -> withEntries [EPre out] (entriesL p q)
+  _                            -> ([], post)
+  where
+    funEntries ss fs = case (ss, fs) of
+      (x : xs, FNone r)   -> EInt x : funEntries xs r
+      (x : xs, FSome f r) -> EIntF f x : funEntries xs r
+      (x : xs, FPre r)    -> EPre x : funEntries xs r
+      _                   -> []
+
+-- The same for the stages after a delay that 'settleL' makes an 'IPreI':
+-- each held that delay's output at this step as its input, which the
+-- 'IPreI' gives them as its last output.
+entriesL :: AfterL -> AfterL -> ([Entry], AfterI)
+entriesL pre post = case (pre, post) of
+  (LInt _ _ p, LInt acc _ q)       -> withEntries [EInt acc] (entriesI p q)
+  (LIntF _ _ _ p, LIntF f acc _ q) -> withEntries [EIntF f acc] (entriesI p q)
+  _                                -> ([], fedByDelay post)
+  where
+    -- (a delay behind a delay keeps its value: what it output at this
+    -- step, which it would report as its last output, may still be
+    -- unevaluated)
+    fedByDelay c = case c of
+      LEnd             -> IEnd
+      LInt acc _ q     -> IInt acc q
+      LIntF f acc _ q  -> IIntF f acc q
+      LPre v q         -> IPre v q
+
+withEntries :: [Entry] -> ([Entry], AfterI) -> ([Entry], AfterI)
+withEntries es (es', rest) = (es ++ es', rest)
+
+-- Stages in series: three or more as one run, fewer as cells.
+groupEntries :: [Entry] -> AfterI -> AfterI
+groupEntries es rest = case es of
+  (_ : _ : _ : _)
+    | all plain es -> IRun (sumsFromList (map out es)) rest
+    | otherwise    -> IRunF (sumsFromList (map out es)) (packKinds (foldr kind FNil es)) rest
+  _                -> foldr cell rest es
+  where
+    plain e = case e of
+      EInt _ -> True
+      _      -> False
+    out e = case e of
+      EInt x    -> x
+      EIntF _ x -> x
+      EPre x    -> x
+    kind e r = case e of
+      EInt _    -> FNone r
+      EIntF f _ -> FSome f r
+      EPre _    -> FPre r
+    cell e r = case e of
+      EInt x    -> IInt x r
+      EIntF f x -> IIntF f x r
+      EPre x    -> IPreI x r
 
 -- | The running sums of a run of integrals, as an unboxed array of
 -- 'Double's (never written once made).
@@ -250,20 +398,69 @@ stepSums (D# dt) (D# old0) (Sums a) = runST (ST (\s0 -> case newByteArray# bytes
           in go m (i +# 1#) acc (writeDoubleArray# m i (acc +## (dt *## old)) s)
       | otherwise = s
 
--- The same for a run with functions before some of its integrals: @f@ of
--- the predecessor's old sum where the entry has one.
-stepSumsF :: Double -> Double -> Sums -> Funs -> Sums
-stepSumsF (D# dt) (D# old0) (Sums a) fs0 = runST (ST (\s0 -> case newByteArray# bytes s0 of
-  (# s1, m #) -> case go m 0# old0 fs0 s1 of
+-- | The stages of an 'IRunF', packed for its loop: one machine word per
+-- stage saying what it is (0: an integral that sums its predecessor's
+-- output as it is, 1: one that sums @f@ of it, 2: a delay), and the
+-- functions, each at the index of its stage. The loop reads them without
+-- evaluating anything: walking a list of 'Funs' instead, GHC checks at
+-- each stage that the next cell is evaluated, saving and restoring the
+-- loop's variables around the check (valgrind, @afrp-bench --run bi@: 5%
+-- more instructions once the list had a fourth constructor).
+data Kinds = Kinds ByteArray# (SmallArray# (Double -> Double))
+
+-- | The stages of a packed run, as a list.
+kindsList :: Kinds -> Funs
+kindsList (Kinds ks fns) = go 0#
+  where
+    n = sizeofByteArray# ks `quotInt#` 8#
+    go i
+      | isTrue# (i <# n) = case indexIntArray# ks i of
+          0# -> FNone (go (i +# 1#))
+          1# -> case indexSmallArray# fns i of (# f #) -> FSome f (go (i +# 1#))
+          _  -> FPre (go (i +# 1#))
+      | otherwise = FNil
+
+packKinds :: Funs -> Kinds
+packKinds fs0 = runST (ST (\s0 -> case newByteArray# (len *# 8#) s0 of
+  (# s1, mk #) -> case newSmallArray# len noFunction s1 of
+    (# s2, mf #) -> case fill mk mf 0# fs0 s2 of
+      s3 -> case unsafeFreezeByteArray# mk s3 of
+        (# s4, ks #) -> case unsafeFreezeSmallArray# mf s4 of
+          (# s5, fns #) -> (# s5, Kinds ks fns #)))
+  where
+    !(I# len) = count fs0
+    count fs = case fs of
+      FNil      -> 0 :: Int
+      FNone r   -> 1 + count r
+      FSome _ r -> 1 + count r
+      FPre r    -> 1 + count r
+    fill mk mf i fs s = case fs of
+      FNil      -> s
+      FNone r   -> fill mk mf (i +# 1#) r (writeIntArray# mk i 0# s)
+      FSome f r -> case writeSmallArray# mf i f (writeIntArray# mk i 1# s) of
+        s' -> fill mk mf (i +# 1#) r s'
+      FPre r    -> fill mk mf (i +# 1#) r (writeIntArray# mk i 2# s)
+    -- (the entry of a stage without a function, never called)
+    noFunction x = x
+
+-- The same for a run with functions before some of its integrals, and
+-- delays among them: @f@ of the predecessor's old output where the stage
+-- has one; a delay's new output is its predecessor's old one.
+stepSumsF :: Double -> Double -> Sums -> Kinds -> Sums
+stepSumsF (D# dt) (D# old0) (Sums a) (Kinds ks fns) = runST (ST (\s0 -> case newByteArray# bytes s0 of
+  (# s1, m #) -> case go m 0# old0 s1 of
     s2 -> case unsafeFreezeByteArray# m s2 of
       (# s3, a' #) -> (# s3, Sums a' #)))
   where
     bytes = sizeofByteArray# a
-    go m i old fs s = case fs of
-      FNil      -> s
-      FNone r   ->
-        let acc = indexDoubleArray# a i
-        in go m (i +# 1#) acc r (writeDoubleArray# m i (acc +## (dt *## old)) s)
-      FSome f r -> case f (D# old) of
-        D# v -> let acc = indexDoubleArray# a i
-                in go m (i +# 1#) acc r (writeDoubleArray# m i (acc +## (dt *## v)) s)
+    n = bytes `quotInt#` 8#
+    go m i old s
+      | isTrue# (i <# n) =
+          let acc = indexDoubleArray# a i
+          in case indexIntArray# ks i of
+               0# -> go m (i +# 1#) acc (writeDoubleArray# m i (acc +## (dt *## old)) s)
+               1# -> case indexSmallArray# fns i of
+                 (# f #) -> case f (D# old) of
+                   D# v -> go m (i +# 1#) acc (writeDoubleArray# m i (acc +## (dt *## v)) s)
+               _  -> go m (i +# 1#) acc (writeDoubleArray# m i old s)
+      | otherwise = s

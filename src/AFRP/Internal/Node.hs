@@ -81,8 +81,9 @@
 --   integrals among them, becomes one chain node the first time it is
 --   stepped as integral nodes ("AFRP.Internal.Chain", 'chainFromInt'),
 --   with the sums passed unboxed from one integral to the next, and three
---   or more integrals in series (with or without functions between them)
---   kept as one unboxed array of their sums, stepped by one loop;
+--   or more integrals in series (with or without functions between them,
+--   and, from the chain's second step, with the delays they feed among
+--   them) kept as one unboxed array, stepped by one loop;
 -- * a network is built as a spine of compositions nested to the right,
 --   with the lifted functions at either end of a @first@'s or
 --   @second@'s network moved outside it ('AFRP.Internal.SF.compSF',
@@ -460,10 +461,22 @@ collectL g = case g of
     _              -> ColL LEnd g
   _              -> ColL LEnd g
 
--- A chain as a node.
+-- A chain as a node: its first step; then, if it has delays fed by
+-- integrals, its second step, after which they are stages of the runs
+-- ('settleL'); then every later step.
 chainN :: AfterL -> Node Double Double
 chainN c = NStep (\dt a -> case stepAfterL dt a c of
-  (# c', y #) -> case chainN c' of !n -> (# n, y #))
+  (# c', y #) -> case (if hasDelayI c' then chainSettleN c' else chainRunN c') of
+    !n -> (# n, y #))
+
+chainSettleN :: AfterL -> Node Double Double
+chainSettleN c = NStep (\dt a -> case stepAfterL dt a c of
+  (# c', y #) -> case settleL c c' of
+    !c'' -> case chainRunN c'' of !n -> (# n, y #))
+
+chainRunN :: AfterL -> Node Double Double
+chainRunN c = NStep (\dt a -> case stepAfterL dt a c of
+  (# c', y #) -> case chainRunN c' of !n -> (# n, y #))
 
 -- Rebuilding a node whose two children were both stateful before the step:
 -- as the smart constructor would, but with the common case (both still
