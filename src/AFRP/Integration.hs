@@ -1,3 +1,4 @@
+{-# LANGUAGE GADTs          #-}
 {-# LANGUAGE UnboxedTuples #-}
 {-# LANGUAGE BangPatterns  #-}
 -- |
@@ -50,8 +51,10 @@ integral = SF (initN (\a0 -> case go zeroVector a0 of !n -> (# n, zeroVector #))
 {-# INLINABLE [1] integral #-}
 
 -- At 'Double', 'integral' is the specialised node 'NIntD', which computes
--- the same sums (@acc + dt * prev@) without a closure per step.
-{-# RULES "integral/Double" integral = integralDouble #-}
+-- the same sums (@acc + dt * prev@) without a closure per step; the
+-- rewrite rules below first make it an 'integralsD', so that the functions
+-- and integrals next to it, where GHC sees them, join it.
+{-# RULES "integral/Double" integral = integralsD FDI MNil FDI #-}
 
 -- | 'integral' at 'Double'.
 integralDouble :: SF Double Double
@@ -63,9 +66,9 @@ integralDouble = SF (initN (\a0 -> (# NIntD 0 a0, 0 #)))
 -- at the next step, where the sum needs it (the composition would store
 -- the unevaluated @p a@ and evaluate it there: the same value, evaluated
 -- at the same step, without the thunk); its output is @q@ of the running
--- sum, lazily, @q 0@ at time 0. Inlined only late (phase 1), so that the
--- rules below see it; once inlined, GHC compiles the step with @p@ and
--- @q@ in place.
+-- sum, lazily, @q 0@ at time 0. Inlined only late (phase 1), after the
+-- rules below have made it; once inlined, GHC compiles the step with @p@
+-- and @q@ in place.
 --
 -- Two details keep it what the composition is:
 --
@@ -87,33 +90,99 @@ integralDOn p q = SF (initN (\a0 -> case go 0 a0 of !n -> (# n, q (noinline cons
       in case go acc' a of !n -> (# n, q acc' #))
 {-# INLINE [1] integralDOn #-}
 
--- The functions next to an 'integral' at 'Double', where GHC can see them
--- (written in the source, as in @arr p >>> integral >>> arr q@, the
--- notes' odometry and any PID controller, or exposed by inlining), are
--- made part of one 'integralDOn' node: @integral@ is @integralDOn id id@,
--- and @arr f >>> integralDOn p q = integralDOn (p . f) q@, @integralDOn p
--- q >>> arr g = integralDOn p (g . q)@, alone or at the head of a chain
--- (@... >>> sf@), with the laziness of the compositions (see
--- 'integralDOn'). An 'integral' with no function next to it stays the
--- specialised node 'NIntD', which the switches and 'AFRP.Parallel.parB'
--- step in place.
+-- | The functions between the integrals of an 'integralsD', in order:
+-- the identity where two integrals meet directly.
+data Mids = MNil | MCons !(FunD Double Double) Mids
+
+-- | @integralsD p fs q@ is integrals at 'Double' in series, with @p@
+-- before the first, @q@ behind the last, and the functions @fs@ between
+-- them: @integralsD p [f1, f2] q = arr p >>> integral >>> arr f1 >>>
+-- integral >>> arr f2 >>> integral >>> arr q@. The rewrite rules build it
+-- from the integrals and functions that GHC sees composed, in either
+-- order; inlined late (phase 1), it is one 'integralDOn' node when it
+-- holds one integral with functions next to it, 'integralDouble' when it
+-- holds a lone integral, and otherwise the composition itself, built as
+-- nodes: the run-time chains ("AFRP.Internal.Chain") see every integral
+-- of it, where 'integralDOn' nodes, each opaque, would cut it into
+-- single integrals. A function between two integrals is one function,
+-- composed where GHC sees both halves.
+integralsD :: FunD a Double -> Mids -> FunD Double b -> SF a b
+integralsD p fs q = case fs of
+  MNil -> case p of
+    FDI -> case q of
+      FDI -> integralDouble
+      _   -> integralDOn (\a -> a) (fdFun q)
+    _   -> integralDOn (fdFun p) (fdFun q)
+  _    -> SF (compN (NPure p) (integralsNodes fs q))
+{-# INLINE [1] integralsD #-}
+
+-- The integrals of an 'integralsD' with more than one, as nodes.
+integralsNodes :: Mids -> FunD Double b -> Node Double b
+integralsNodes fs q = case fs of
+  MNil       -> compN (sfNode integralDouble) (NPure q)
+  MCons f fs' -> compN (sfNode integralDouble) (compN (NPure f) (integralsNodes fs' q))
+
+-- @f@ in front of a function: @arr f >>> arr p@.
+preFD :: (a -> c) -> FunD c Double -> FunD a Double
+preFD f p = case p of
+  FDI -> FDG (\a -> f a)
+  _   -> FDG (\a -> fdFun p (f a))
+{-# INLINE preFD #-}
+
+-- @g@ behind a function: @arr q >>> arr g@.
+postFD :: FunD Double b -> (b -> c) -> FunD Double c
+postFD q g = case q of
+  FDI -> FDG (\c -> g c)
+  _   -> FDG (\c -> g (fdFun q c))
+{-# INLINE postFD #-}
+
+-- What stands between two integrals: @arr q >>> arr p@, the identity if
+-- both are.
+midFD :: FunD Double b -> FunD b Double -> FunD Double Double
+midFD q p = case q of
+  FDI -> p
+  _   -> case p of
+    FDI -> q
+    _   -> FDG (\c -> fdFun p (fdFun q c))
+{-# INLINE midFD #-}
+
+-- @fs ++ (m : gs)@, made at compile time where @fs@ is known.
+joinMids :: Mids -> FunD Double Double -> Mids -> Mids
+joinMids fs m gs = case fs of
+  MNil       -> MCons m gs
+  MCons f r  -> MCons f (joinMidsRec r m gs)
+{-# INLINE joinMids #-}
+
+joinMidsRec :: Mids -> FunD Double Double -> Mids -> Mids
+joinMidsRec fs m gs = case fs of
+  MNil       -> MCons m gs
+  MCons f r  -> MCons f (joinMidsRec r m gs)
+
+-- The functions and integrals next to an 'integral' at 'Double', where GHC
+-- can see them (written in the source, as in @arr p >>> integral >>> arr
+-- q@, the notes' odometry, any PID controller, @integral >>> arr f >>>
+-- integral@, or exposed by inlining), are made part of one 'integralsD':
+-- @arr f >>> integralsD p fs q = integralsD (p . f) fs q@, @integralsD p
+-- fs q >>> arr g = integralsD p fs (g . q)@, and two 'integralsD' in
+-- series are one, with the functions where they meet composed; each alone
+-- or at the head of a chain (@... >>> sf@), with the laziness of the
+-- compositions (see 'integralDOn' and 'integralsD'). An 'integral' with
+-- nothing next to it stays the specialised node 'NIntD', which the
+-- switches and 'AFRP.Parallel.parB' step in place.
 {-# RULES
-"AFRP arr>>>integral" forall f.
-  compSF integralDouble (arrSF f) = integralDOn (\a -> f a) (\c -> c)
-"AFRP arr>>>integral>>>sf" forall f h.
-  compSF (compSF h integralDouble) (arrSF f) = compSF h (integralDOn (\a -> f a) (\c -> c))
-"AFRP integral>>>arr" forall g.
-  compSF (arrSF g) integralDouble = integralDOn (\a -> a) (\c -> g c)
-"AFRP integral>>>arr>>>sf" forall g h.
-  compSF (compSF h (arrSF g)) integralDouble = compSF h (integralDOn (\a -> a) (\c -> g c))
-"AFRP arr>>>integralDOn" forall f p q.
-  compSF (integralDOn p q) (arrSF f) = integralDOn (\a -> p (f a)) q
-"AFRP arr>>>integralDOn>>>sf" forall f p q h.
-  compSF (compSF h (integralDOn p q)) (arrSF f) = compSF h (integralDOn (\a -> p (f a)) q)
-"AFRP integralDOn>>>arr" forall g p q.
-  compSF (arrSF g) (integralDOn p q) = integralDOn p (\c -> g (q c))
-"AFRP integralDOn>>>arr>>>sf" forall g p q h.
-  compSF (compSF h (arrSF g)) (integralDOn p q) = compSF h (integralDOn p (\c -> g (q c)))
+"AFRP arr>>>integrals" forall f p fs q.
+  compSF (integralsD p fs q) (arrSF f) = integralsD (preFD f p) fs q
+"AFRP arr>>>integrals>>>sf" forall f p fs q h.
+  compSF (compSF h (integralsD p fs q)) (arrSF f) = compSF h (integralsD (preFD f p) fs q)
+"AFRP integrals>>>arr" forall g p fs q.
+  compSF (arrSF g) (integralsD p fs q) = integralsD p fs (postFD q g)
+"AFRP integrals>>>arr>>>sf" forall g p fs q h.
+  compSF (compSF h (arrSF g)) (integralsD p fs q) = compSF h (integralsD p fs (postFD q g))
+"AFRP integrals>>>integrals" forall p1 fs1 q1 p2 fs2 q2.
+  compSF (integralsD p2 fs2 q2) (integralsD p1 fs1 q1) = integralsD p1 (joinMids fs1 (midFD q1 p2) fs2) q2
+"AFRP integrals>>>integrals>>>sf" forall p1 fs1 q1 p2 fs2 q2 h.
+  compSF (compSF h (integralsD p2 fs2 q2)) (integralsD p1 fs1 q1)
+    = compSF h (integralsD p1 (joinMids fs1 (midFD q1 p2) fs2) q2)
   #-}
 
 -- | The "immediate" integral from a given initial value, by the right

@@ -233,6 +233,50 @@ spec = do
           `shouldBe` True
         isStepSF (unfused integral >>> arr (+ 1) :: SF Double Double) `shouldBe` False
 
+    describe "integrals at Double in series, written out, with functions between them" $ do
+      let ins = map fromIntegral [1 .. 30 :: Int] :: [Double]
+          opaque1 :: SF Double Double -> SF Double Double
+          opaque1 = unfused
+      it "are the composition built as nodes, where the run-time chains see every integral" $ do
+        -- one integral with a function next to it is one node; two are
+        -- the composition (each an integral node after a step), not two
+        -- opaque nodes
+        sfShape (fst (stepSF (integral >>> arr (* 2) >>> integral :: SF Double Double) 0 1))
+          `shouldBe` "(int >>> (arr >>> int))"
+        sfShape (fst (stepSF (arr (+ 1) >>> integral >>> arr (* 2) >>> integral >>> arr (subtract 1)
+                                :: SF Double Double) 0 1))
+          `shouldBe` "(arr >>> (int >>> (arr >>> (int >>> arr))))"
+        sfShape (fst (stepSF (integral >>> integral >>> integral :: SF Double Double) 0 1))
+          `shouldBe` "(int >>> (int >>> int))"
+        -- and a chain of them, after its second step, is one node
+        let twice sf = fst (stepSF (fst (stepSF sf 0 1)) 1 2)
+        isStepSF (twice (integral >>> arr (* 2) >>> integral >>> arr (* 2) >>> integral :: SF Double Double))
+          `shouldBe` True
+      it "give the numbers of their stages stepped one by one" $ do
+        runDt 0.1 (integral >>> arr (* 2) >>> integral >>> arr (* 2) >>> integral >>> arr (* 2) >>> integral) ins
+          `shouldBe` runDt 0.1 (opaque1 integral >>> arr (* 2) >>> opaque1 integral >>> arr (* 2)
+                                >>> opaque1 integral >>> arr (* 2) >>> opaque1 integral) ins
+        runDt 0.1 (arr (+ 1) >>> integral >>> iPre 0 >>> arr (* 0.5) >>> integral >>> arr (+ 1) >>> integral
+                     >>> iPre 1 >>> integral >>> integral >>> arr sin) ins
+          `shouldBe` runDt 0.1 (arr (+ 1) >>> opaque1 integral >>> iPre 0 >>> arr (* 0.5) >>> opaque1 integral
+                                >>> arr (+ 1) >>> opaque1 integral >>> iPre 1 >>> opaque1 integral
+                                >>> opaque1 integral >>> arr sin) ins
+        -- grouped either way in the source
+        runDt 0.1 ((integral >>> arr (* 3)) >>> (integral >>> (arr negate >>> integral))) ins
+          `shouldBe` runDt 0.1 (opaque1 integral >>> arr (* 3) >>> opaque1 integral >>> arr negate
+                                >>> opaque1 integral) ins
+      it "apply a function between two integrals no earlier than the second one needs it" $
+        -- the first integral outputs 0, 1, ..., 9; f of its last output is
+        -- never needed
+        runDt 1 (integral >>> arr (\x -> if x >= (9 :: Double) then error "evaluated too early" else 2 * x)
+                 >>> integral >>> integral) (replicate 10 1)
+          `shouldBe` [0, 0, 0, 2, 8, 20, 40, 70, 112, 168]
+      it "apply the last function to the time-0 zero lazily, without folding 0 + k" $ do
+        length (runDt 1 (integral >>> arr (* 2) >>> integral >>> arr (\_ -> undefined :: Int)) ins)
+          `shouldBe` 30
+        head (runDt 1 (integral >>> arr (* 2) >>> integral >>> arr (\c -> 1 / (c + negZero))) ins)
+          `shouldBe` (1 / 0)
+
   describe "while running" $ do
     it "an after that has fired becomes a constant" $ do
       let sf = runTo (after 1 'x') [(0, ()), (0.5, ()), (0.5, ())]

@@ -108,7 +108,9 @@
 --   ("AFRP.EventSource"), the functions next to an 'AFRP.Integration.integral'
 --   at 'Double' ("AFRP.Integration") and @loop (second (iPre c) >>> arr g)@
 --   ("AFRP.Delay") become one node each, compiled with the functions in
---   place.
+--   place; integrals in series written in the source stay nodes the
+--   chains see, with the functions between them composed at compile time
+--   (@integralsD@ in "AFRP.Integration").
 --
 -- Every such case states, next to it, the identity it relies on.
 module AFRP.Internal.Node
