@@ -35,7 +35,8 @@
 --
 -- 'validateOptions' checks the numbers together before anything is
 -- simulated: the step count @seconds / dt@ is finite and at most
--- 'maxSteps', the frame period @1 / fps@ is a whole number of steps;
+-- 'maxSteps' (a run takes the whole number of steps nearest to it, so
+-- @--seconds@ greater than 0 must be at least half of @--dt@), the frame period @1 / fps@ is a whole number of steps;
 -- 'validateOptionsIn', once the world is known, also that the frame is at
 -- most 'maxFrameSide' pixels wide and tall.
 --
@@ -250,6 +251,10 @@ validateOptions o =
   ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is " ++ num steps
        ++ " steps, more than the " ++ num maxSteps ++ " allowed"
      | all finite [secs, dt], dt > 0, tooMany ]
+  ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is less than half a step, so nothing would be"
+       ++ " simulated after time 0 (a run takes the whole number of steps nearest seconds / dt); give"
+       ++ " --seconds " ++ num dt ++ " or more, or 0 for the time-0 sample alone"
+     | all finite [secs, dt], dt > 0, secs > 0, (round steps :: Integer) == 0 ]
   ++ [ "--fps times --dt must not exceed 1 (at most one frame per time step)"
      | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
   ++ [ "--dt " ++ num dt ++ " does not divide the frame period 1/" ++ num fps ++ " s; --fps "

@@ -55,8 +55,8 @@ import           Data.List                 (foldl', isPrefixOf)
 import           Data.Maybe                (catMaybes, listToMaybe)
 import           GHC.Clock                 (getMonotonicTime)
 import           System.Directory          (canonicalizePath, createDirectory, doesDirectoryExist, doesFileExist,
-                                            findExecutable, getPermissions, removeFile, renameFile,
-                                            writable)
+                                            findExecutable, getPermissions, getSymbolicLinkTarget,
+                                            pathIsSymbolicLink, removeFile, renameFile, writable)
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
 import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, (</>))
@@ -155,7 +155,24 @@ preflight bounds opts = do
       dirErr <- case mdir of
         Nothing  -> pure []
         Just dir -> folderWritable flag f dir
-      pure ([ flag ++ " " ++ show f ++ " is a folder" | isDir ] ++ dirErr)
+      linkErr <- if isDir then pure [] else linkTarget (40 :: Int) f >>= \t -> case t of
+        Just target | target /= f -> folderWritable flag f (takeDirectory target)
+        _                         -> pure []
+      pure ([ flag ++ " " ++ show f ++ " is a folder" | isDir ] ++ dirErr ++ linkErr)
+    -- where a file that is a symbolic link (perhaps to a file not there
+    -- yet) is written: the run writes through it, into the folder of the
+    -- link's target, which must exist too (Nothing: a loop of links)
+    linkTarget k f
+      | k <= 0    = pure Nothing
+      | otherwise = do
+          isLink <- either (\(_ :: IOException) -> False) id <$> try (pathIsSymbolicLink f)
+          if not isLink
+            then pure (Just f)
+            else do
+              t <- try (getSymbolicLinkTarget f)
+              case t of
+                Left (_ :: IOException) -> pure (Just f)
+                Right target -> linkTarget (k - 1) (takeDirectory f </> target)
     folderWritable flag f dir = do
       there <- doesDirectoryExist dir
       if not there

@@ -66,6 +66,12 @@ spec = describe "parseSimArgs" $ do
     seed ["--seed", "-9007199254740992"] `shouldBe` Right (-9007199254740992)
     seed ["--seed", "9007199254740993"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
     seed ["--seed", "18446744073709551617"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
+  it "refuses --seconds greater than 0 that is less than half a step: a run of no step after time 0" $ do
+    let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
+    run ["--seconds", "0.004", "--dt", "0.01"] `shouldSatisfy` either ("less than half a step" `isInfixOf`) (const False)
+    run ["--seconds", "0.005", "--dt", "0.01"] `shouldSatisfy` either ("less than half a step" `isInfixOf`) (const False)
+    run ["--seconds", "0.006", "--dt", "0.01"] `shouldBe` Right ()
+    run ["--seconds", "0", "--dt", "0.01"] `shouldBe` Right ()
   it "refuses a --keys time that is not a finite number (Infinity, 1e400, NaN)" $ do
     parseKeys "1.5:a,3:b" `shouldBe` Right [(1.5, 'a'), (3, 'b')]
     mapM_ (\k -> parseKeys k `shouldSatisfy` either ("--keys" `isInfixOf`) (const False))

@@ -13,7 +13,7 @@ import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, sort, tails)
 import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
-import           System.Directory    (createDirectory, listDirectory)
+import           System.Directory    (createDirectory, createFileLink, listDirectory)
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     ((</>))
 import           System.IO
@@ -275,6 +275,14 @@ spec = do
                                             , optReplay = Just (dir </> "nopage" </> "r.html") })
               (\e -> all (`isInfixOf` e) ["--svg", "--log", "--replay", "does not exist"]
                      && length (filter ("cannot run" `isInfixOf`) (lines e)) == 1)
+    it "an output that is a link to a file in a folder that does not exist" $ withTempDir $ \dir -> do
+      createFileLink (dir </> "gone" </> "run.svg") (dir </> "link.svg")
+      (out, err, r) <- captured (runSimWith (quick (dir </> "f")) { optFrames = False, optSvg = Just (dir </> "link.svg") }
+                                            (Just world) drive drive)
+      r `shouldBe` Left (ExitFailure 2)
+      out `shouldBe` ""
+      err `shouldSatisfy` (\e -> all (`isInfixOf` e) ["--svg", "does not exist"])
+      listDirectory dir `shouldReturn` ["link.svg"]
     it "two outputs that are the same file under two names" $
       refused (\dir -> (quick (dir </> "f")) { optSvg = Just (dir </> "a.svg"), optLog = Just (dir </> "." </> "a.svg") })
               (\e -> all (`isInfixOf` e) ["same file", "--svg", "--log"])
