@@ -11,10 +11,10 @@
 #   bench/scaling.sh [R]        (R runs of each, the fastest kept: the
 #                                machine is shared; default 3, about three
 #                                minutes on the 2-core machine)
-# One core runs with the runtime's defaults; two cores with +RTS -N2
-# -A8m -qg (a larger allocation area per core and a sequential
-# collector: with the defaults every collection stops both cores every
-# megabyte of allocation, and two cores are slower than one).
+# One core runs with the setting afrp-bench is linked with, as the
+# project's executables are (-A8m: an 8 MB allocation area); two cores
+# with +RTS -N2 -A8m -qg (a sequential collector: with the parallel one
+# every collection stops both cores, and two cores can be slower than one).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cabal build -v0 --enable-benchmarks afrp-bench

@@ -37,12 +37,14 @@
 -- it). On one capability the steps are computed in order, by the
 -- stepping thread alone.
 --
--- A larger allocation area than the runtime's 1 MB matters, and most on
--- several cores, where every collection stops them all: the project's
--- programs (@simbot@, @afrp-examples@, @my-robot-show@) are linked with
--- @-with-rtsopts=-A4m@, with which @+RTS -N2@ ran 1000 robots 1.65-1.7x
--- as fast as one core on an otherwise idle machine (@bench/README.md@);
--- with the 1 MB area, two cores ran slower than one. When other work
+-- A larger allocation area than the runtime's 1 MB matters: each minor
+-- collection copies the robots' live state, and on several cores every
+-- collection stops them all. The project's programs (@simbot@,
+-- @afrp-examples@, @my-robot-show@) are linked with
+-- @-with-rtsopts=-A8m@: on one core 1000 robots ran about 9% faster than
+-- with @-A4m@ (the collector's time halved), and with @-A4m@ @+RTS -N2@
+-- ran them 1.65-1.7x as fast as one core on an otherwise idle machine
+-- (@bench/README.md@); with the 1 MB area, two cores ran slower than one. When other work
 -- holds the second core, @+RTS -N2 -qg@ (a sequential collector) loses
 -- less.
 module AFrobRobotSim.Simulator
