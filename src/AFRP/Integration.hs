@@ -114,7 +114,11 @@ integralsD p fs q = case fs of
       _   -> integralDOn (\a -> a) (fdFun q)
     _   -> integralDOn (fdFun p) (fdFun q)
   _    -> SF (compN (NPure p) (integralsNodes fs q))
-{-# INLINE [1] integralsD #-}
+-- (CONLIKE: a binding @myInt = integral@ used more than once is not
+-- copied into its uses before phase 1, where the rules are over; CONLIKE
+-- lets the rules look through it, as they looked through the plain name
+-- 'integralDouble' the rule "integral/Double" used to give.)
+{-# INLINE CONLIKE [1] integralsD #-}
 
 -- The integrals of an 'integralsD' with more than one, as nodes.
 integralsNodes :: Mids -> FunD Double b -> Node Double b

@@ -30,6 +30,11 @@ unfused :: SF a b -> SF a b
 unfused sf = sf
 {-# NOINLINE unfused #-}
 
+-- | An integral at Double bound to a name used more than once (below): the
+-- functions next to each use still join it.
+namedIntegral :: SF Double Double
+namedIntegral = integral
+
 -- | Negative zero, out of GHC's sight (so that no test's arithmetic on it
 -- is folded at compile time).
 negZero :: Double
@@ -232,6 +237,10 @@ spec = do
         isStepSF (arr (+ 1) >>> (arr (* 2) >>> integral >>> arr (+ 1)) >>> arr (* 3) :: SF Double Double)
           `shouldBe` True
         isStepSF (unfused integral >>> arr (+ 1) :: SF Double Double) `shouldBe` False
+      it "does the same for an integral bound to a name used more than once" $ do
+        isStepSF (arr (* 3) >>> namedIntegral) `shouldBe` True
+        isStepSF (namedIntegral >>> arr (+ 1)) `shouldBe` True
+        runDt 1 (arr (* 3) >>> namedIntegral >>> arr (+ 1)) ins `shouldBe` [1, 4, 10, 19]
 
     describe "integrals at Double in series, written out, with functions between them" $ do
       let ins = map fromIntegral [1 .. 30 :: Int] :: [Double]

@@ -34,7 +34,10 @@
 -- @acc + dt * f old@), where @old@ is the predecessor's running sum
 -- /before/ this step: the same operations on the same numbers, in the
 -- same order, so the same bits; @f@ is applied once per step, at the step
--- where the integral needed its value, as before. At the chain's first
+-- where the integral needed its value, as before (a step that is replayed,
+-- the step a 'AFRP.Switch.kSwitch' interrupted, applies it again: the
+-- same value computed twice on that step, where the node's stored thunk
+-- was evaluated once, as for 'AFRP.Integration' @integralDOn@). At the chain's first
 -- step they use the previous input their integral nodes held ('IIntS',
 -- 'IIntFS'): before the chain, the predecessor's last output need not
 -- have been its sum (@(5 --> integral) >>> integral@ output 5, not the
