@@ -49,12 +49,15 @@ module AFrobRobotSim.Log
   , RunLog (..)
   , readLog
   , readLogFile
+  , readLogFileUpTo
+  , maxLogBytes
     -- * The records
   , module AFrobRobotSim.Log.Records
   ) where
 
 import           Control.Exception         (evaluate, try, uninterruptibleMask_)
 import qualified Data.ByteString           as B
+import qualified Data.ByteString.Lazy      as BL
 import qualified Data.ByteString.Char8     as BC
 import           Data.Char                 (isDigit)
 import           Data.IORef
@@ -368,13 +371,35 @@ readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not
 -- (or @FILE:LINE:@), like a world file's; a file that cannot be read, or
 -- is not UTF-8 (with the line and column of the first bad byte), is a
 -- 'Left' too.
+--
+-- At most 'maxLogBytes' are read: a longer file (or an endless one, such
+-- as @\/dev\/zero@) gives @FILE: more than N bytes@ and how to make a
+-- shorter log.
 readLogFile :: FilePath -> IO (Either String RunLog)
-readLogFile path = do
-  r <- try (B.readFile path)
+readLogFile = readLogFileUpTo maxLogBytes
+
+-- | The longest log 'readLogFile' reads, in bytes: 256 MiB. A one-hour
+-- run of the default world, logged at the default frame rate, is about
+-- 230 MB; reading it and making its replay page took 92 s and 11 GB of
+-- memory (the frames are held as Haskell values: about 50 bytes of memory
+-- per byte of log).
+maxLogBytes :: Int
+maxLogBytes = 256 * 1024 * 1024
+
+-- | 'readLogFile' reading at most the given number of bytes.
+readLogFileUpTo :: Int -> FilePath -> IO (Either String RunLog)
+readLogFileUpTo cap path = do
+  r <- try (withBinaryFile path ReadMode $ \h -> do
+              s <- BL.toStrict . BL.take (fromIntegral cap + 1) <$> BL.hGetContents h
+              B.length s `seq` pure s)
   pure $ case r of
     Left e      -> Left (cannotRead path e)
-    Right bytes -> case utf8Error bytes of
-      Just (l, c, b) -> Left (path ++ ":" ++ show l ++ ":" ++ show c
-                              ++ ": not UTF-8 text (byte " ++ show b ++ ")")
-      Nothing        -> readLogAt (\i mc -> path ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": ")
-                                  (decodeUtf8 bytes)
+    Right bytes
+      | B.length bytes > cap ->
+          Left (path ++ ": more than " ++ show cap ++ " bytes, more than a log is read (write a"
+                ++ " shorter run, or fewer frames with --fps)")
+      | otherwise -> case utf8Error bytes of
+          Just (l, c, b) -> Left (path ++ ":" ++ show l ++ ":" ++ show c
+                                  ++ ": not UTF-8 text (byte " ++ show b ++ ")")
+          Nothing        -> readLogAt (\i mc -> path ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": ")
+                                      (decodeUtf8 bytes)

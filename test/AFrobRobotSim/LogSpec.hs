@@ -7,6 +7,7 @@ import           Test.QuickCheck          (Gen, choose, elements, forAll, listOf
 import           Text.Printf              (printf)
 import           System.Directory         (getTemporaryDirectory, removeFile)
 import           System.IO                (hClose, openTempFile)
+import           System.FilePath          ((</>))
 import           System.Process           (readProcessWithExitCode)
 import           Test.Hspec
 
@@ -14,6 +15,7 @@ import           AFrob                    hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.LogFixture
+import           TestUtil                 (withTempDir)
 
 -- The two robots of a frame (the fixture has two).
 pair :: [a] -> (a, a)
@@ -154,6 +156,16 @@ spec = do
       removeFile path
       fmap (const ()) r1 `shouldBe` Left (path ++ ":4:17: expected ',' or '}', found end of input")
       fmap (const ()) r2 `shouldBe` Left (path ++ ":4: a second header")
+    it "readLogFile reads at most so many bytes, and says so of a longer or endless file" $ withTempDir $ \dir -> do
+      let path = dir </> "run.jsonl"
+      writeFile path (replicate 300 'x')
+      r <- readLogFileUpTo 200 path
+      r `shouldSatisfy` either ((path ++ ": more than 200 bytes") `isPrefixOf`) (const False)
+      z <- readLogFileUpTo 1000 "/dev/zero"
+      z `shouldSatisfy` either ("/dev/zero: more than 1000 bytes" `isPrefixOf`) (const False)
+      -- within the limit, the file is read as a log (here: not one)
+      s <- readLogFileUpTo 400 path
+      s `shouldSatisfy` either (not . ("more than" `isInfixOf`)) (const False)
     it "readLogFile says which file it cannot read and why, not which Haskell function failed" $ do
       r <- readLogFile "no-such-dir/run.jsonl"
       fmap (const ()) r `shouldBe` Left "no-such-dir/run.jsonl: cannot read it: does not exist (No such file or directory)"
