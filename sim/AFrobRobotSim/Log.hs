@@ -380,9 +380,10 @@ readLogFile = readLogFileUpTo maxLogBytes
 
 -- | The longest log 'readLogFile' reads, in bytes: 256 MiB. A one-hour
 -- run of the default world, logged at the default frame rate, is about
--- 230 MB; reading it and making its replay page took 92 s and 11 GB of
--- memory (the frames are held as Haskell values: about 50 bytes of memory
--- per byte of log).
+-- 230 MB; reading it and making its replay page
+-- ('AFrobRobotSim.Replay.writeReplayFromLog') took 71 s and 1.6 GB of
+-- memory (the log's text and its frames, as Haskell values, are held
+-- until the page is written).
 maxLogBytes :: Int
 maxLogBytes = 256 * 1024 * 1024
 
