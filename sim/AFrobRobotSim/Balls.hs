@@ -40,7 +40,8 @@ module AFrobRobotSim.Balls
   , ballRadius
   ) where
 
-import           Control.Monad.ST        (ST, runST)
+import           Control.Monad.ST        (runST)
+import           Data.List               (sort)
 import           Data.Maybe              (isJust)
 import           Data.STRef              (newSTRef, readSTRef, writeSTRef)
 import           GHC.Arr                 (Array, listArray, newSTArray, unsafeAt,
@@ -74,12 +75,6 @@ ballRestitution = 0.8
 -- | The radius of a ball.
 ballRadius :: Length
 ballRadius = ballDiameter / 2
-
-foldST :: (b -> a -> ST s b) -> b -> [a] -> ST s b
-foldST _ z []       = pure z
-foldST f z (x : xs) = do
-  !z' <- f z x
-  foldST f z' xs
 
 -- | Move every ball by one step: friction, bounces off obstacles and
 -- robots (at their new positions, with their velocities), then elastic
@@ -196,19 +191,22 @@ resolvePairs arena bs0 = runST $ do
   drift <- newSTRef 0
   let forBall !i
         | i >= n = pure ()
-        | otherwise = pairs i i >> forBall (i + 1)
-      pairs !i !lastJ = do
+        | otherwise = pairs i i noCands >> forBall (i + 1)
+      pairs !i !lastJ cached = do
         bi <- unsafeReadSTArray arr i
         d0 <- readSTRef drift
         let Point2 px py = bPos bi
             rr = 2 * ballRadius + d0 + querySlack
-            cands = foldPointsIn grid (px - rr) (py - rr) (px + rr) (py + rr)
-                      (\acc j -> if j > lastJ then j : acc else acc) []
-        next <- foldST (\acc j -> if j >= acc then pure acc else do
-                          bj <- unsafeReadSTArray arr j
-                          pure (case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
-                                  Just _  -> j
-                                  Nothing -> acc)) maxBound cands
+            -- the candidates in hand serve while their rectangle holds
+            -- this query's (the ball moves, and the drift grows, as it is
+            -- pushed); else a new query, with a margin twice as wide
+            cur | holds cached px py rr = cached { cdJs = dropWhile (<= lastJ) (cdJs cached) }
+                | otherwise =
+                    let m  = max (2 * cdMargin cached) (2 * ballRadius)
+                        r' = rr + m
+                    in Cands px py r' m (sort (foldPointsIn grid (px - r') (py - r') (px + r') (py + r')
+                                                 (\acc j -> if j > lastJ then j : acc else acc) []))
+        (next, rest) <- firstOverlap bi (cdJs cur)
         if next == maxBound then pure () else do
           bj <- unsafeReadSTArray arr next
           case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
@@ -228,9 +226,38 @@ resolvePairs arena bs0 = runST $ do
               writeD pushed i (pi' + step)
               writeD pushed next (pj' + step)
               writeSTRef drift (max d0 (max (pi' + step) (pj' + step)))
-          pairs i next
+          pairs i next cur { cdJs = rest }
+      -- the first (smallest) candidate that overlaps ball i where both now
+      -- are, and the candidates after it
+      firstOverlap bi js = case js of
+        []       -> pure (maxBound, [])
+        j : rest -> do
+          bj <- unsafeReadSTArray arr j
+          case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
+            Just _  -> pure (j, rest)
+            Nothing -> firstOverlap bi rest
   forBall 0
   mapM (unsafeReadSTArray arr) [0 .. n - 1]
   where
     n    = length bs0
     grid = ballIndex arena bs0
+
+-- The candidates of 'resolvePairs' for one ball: the rectangle they were
+-- gathered from (centre, half-side), the margin it was widened by, and
+-- the balls listed in the cells it meets, in ascending order.
+data Cands = Cands
+  { cdX      :: !Double
+  , cdY      :: !Double
+  , cdR      :: !Double
+  , cdMargin :: !Double
+  , cdJs     :: [Int]
+  }
+
+-- No candidates yet (a rectangle that holds no query).
+noCands :: Cands
+noCands = Cands 0 0 (-1) 0 []
+
+-- Does the candidates' rectangle hold the query of half-side @rr@ around
+-- @(px, py)@?
+holds :: Cands -> Double -> Double -> Double -> Bool
+holds c px py rr = max (abs (px - cdX c)) (abs (py - cdY c)) + rr <= cdR c

@@ -134,6 +134,13 @@ spec = do
         let arena = arenaFor (World notesBounds [])
             steps f = take 4 (iterate (f 0.01 arena []) bs)
         in steps stepBalls === steps refStepBalls
+    it "resolves balls stacked on one spot, and piles of them, exactly as testing every pair does" $
+      withMaxSuccess 20 $ forAll (chooseInt (2, 60)) $ \n -> forAll (chooseInt (1, 4)) $ \spots ->
+        forAll (vectorOf spots (genBall 0.3)) $ \centres ->
+          let bs = take n (cycle centres)
+              arena = arenaFor (World notesBounds [])
+              steps f = take 4 (iterate (f 0.01 arena []) bs)
+          in steps stepBalls === steps refStepBalls
     it "simulates 1000 balls in a crowd faster than real time" $ do
       -- 0.5 s of simulated time; it takes about 0.05 s
       r <- timeout 500000 (evaluate (runBallBench 1000 50))
