@@ -121,15 +121,36 @@ preflight bounds opts = do
       files = catMaybes [ (,) "--svg" <$> optSvg opts, (,) "--log" <$> optLog opts
                         , (,) "--replay" <$> optReplay opts, (,) "--video" <$> optVideo opts
                         , (,) "--result" <$> optResult opts ]
-      inOut = optFrames opts || any ((== out) . folder . takeDirectory . snd) files
+  -- where each file is written: through a symbolic link, its target
+  -- (Nothing: a loop of links, or too long a chain)
+  targets <- forM files $ \(flag, f) ->
+    (,,) flag f <$> if device f then pure (Just f) else linkTarget (40 :: Int) f
+  let inOut = optFrames opts
+              || any ((== out) . folder . takeDirectory)
+                     (concat [ f : maybe [] pure t | (_, f, t) <- targets ])
   ffmpeg <- maybe (pure Nothing) (const (findExecutable "ffmpeg")) (optVideo opts)
   -- the same file under two names (a.svg and ./a.svg, or a link) is caught
-  -- by comparing the files' canonical paths; devices are not files to
-  -- keep (--log /dev/stdout --result /dev/stderr may be one terminal)
-  canon <- forM [ fl | fl@(_, f) <- files, not (device f) ] $ \(flag, f) -> (,,) flag f <$> canonical f
+  -- by comparing the canonical paths of where the files are written;
+  -- devices are not files to keep (--log /dev/stdout --result /dev/stderr
+  -- may be one terminal)
+  canon <- forM [ tf | tf@(_, f, _) <- targets, not (device f) ] $ \(flag, f, t) ->
+             (,,) flag f <$> canonical (maybe f id t)
   world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> canonical w
-  fileErrs <- forM files $ \(flag, f) ->
-    if folder (takeDirectory f) == out && inOut then checkTarget flag f Nothing else checkTarget flag f (Just (takeDirectory f))
+  -- a file is written in its folder, or through a link in its target's:
+  -- the output folder is created by the run, any other must exist
+  let checkIn flag f dir
+        | folder dir == out && inOut = pure []
+        | otherwise                  = folderWritable flag f dir
+  fileErrs <- forM targets $ \(flag, f, t) -> do
+    isDir <- doesDirectoryExist f
+    dirErr <- checkIn flag f (takeDirectory f)
+    linkErr <- case t of
+      _ | isDir              -> pure []
+      Nothing                -> pure [ flag ++ " " ++ show f ++ ": a loop of symbolic links (or a chain of more than 40)" ]
+      Just target
+        | target /= f        -> checkIn flag f (takeDirectory target)
+        | otherwise          -> pure []
+    pure ([ flag ++ " " ++ show f ++ " is a folder" | isDir ] ++ dirErr ++ linkErr)
   let pre = validateOptionsIn bounds opts
             ++ [ "--video needs the frames (add --frames)" | optVideo opts /= Nothing, not (optFrames opts) ]
             ++ [ "--video needs ffmpeg on the PATH (on Debian: apt-get install ffmpeg)"
@@ -149,16 +170,6 @@ preflight bounds opts = do
     -- a folder as one name (--out x/ and --out ./x are the folder x, which
     -- the run creates; with the slash its parent was taken to be x itself)
     folder = dropTrailingPathSeparator . normalise
-    -- a file to write: not a folder, and its folder exists and is writable
-    checkTarget flag f mdir = do
-      isDir <- doesDirectoryExist f
-      dirErr <- case mdir of
-        Nothing  -> pure []
-        Just dir -> folderWritable flag f dir
-      linkErr <- if isDir then pure [] else linkTarget (40 :: Int) f >>= \t -> case t of
-        Just target | target /= f -> folderWritable flag f (takeDirectory target)
-        _                         -> pure []
-      pure ([ flag ++ " " ++ show f ++ " is a folder" | isDir ] ++ dirErr ++ linkErr)
     -- where a file that is a symbolic link (perhaps to a file not there
     -- yet) is written: the run writes through it, into the folder of the
     -- link's target, which must exist too (Nothing: a loop of links)

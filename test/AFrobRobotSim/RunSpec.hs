@@ -283,6 +283,24 @@ spec = do
       out `shouldBe` ""
       err `shouldSatisfy` (\e -> all (`isInfixOf` e) ["--svg", "does not exist"])
       listDirectory dir `shouldReturn` ["link.svg"]
+    it "not an output that is a link into the output folder, which the run creates" $ withTempDir $ \dir -> do
+      createFileLink (dir </> "out" </> "via.jsonl") (dir </> "tolog.jsonl")
+      (_, err, r) <- captured (runSimWith (quick (dir </> "out")) { optFrames = False, optSeconds = 0.1
+                                                                   , optSvg = Just (dir </> "out" </> "run.svg")
+                                                                   , optReplay = Nothing
+                                                                   , optLog = Just (dir </> "tolog.jsonl") }
+                                          (Just world) drive drive)
+      r `shouldBe` Right ()
+      err `shouldBe` ""
+      sort <$> listDirectory (dir </> "out") `shouldReturn` ["run.svg", "via.jsonl"]
+    it "an output that is a loop of symbolic links" $ withTempDir $ \dir -> do
+      createFileLink (dir </> "la.svg") (dir </> "lb.svg")
+      createFileLink (dir </> "lb.svg") (dir </> "la.svg")
+      (out, err, r) <- captured (runSimWith (quick (dir </> "f")) { optFrames = False, optSvg = Just (dir </> "la.svg") }
+                                            (Just world) drive drive)
+      r `shouldBe` Left (ExitFailure 2)
+      out `shouldBe` ""
+      err `shouldSatisfy` (\e -> all (`isInfixOf` e) ["--svg", "loop of symbolic links"])
     it "two outputs that are the same file under two names" $
       refused (\dir -> (quick (dir </> "f")) { optSvg = Just (dir </> "a.svg"), optLog = Just (dir </> "." </> "a.svg") })
               (\e -> all (`isInfixOf` e) ["same file", "--svg", "--log"])
