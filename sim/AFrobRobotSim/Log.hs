@@ -391,15 +391,22 @@ maxLogBytes = 256 * 1024 * 1024
 readLogFileUpTo :: Int -> FilePath -> IO (Either String RunLog)
 readLogFileUpTo cap path = do
   r <- try (withBinaryFile path ReadMode $ \h -> do
-              s <- BL.toStrict . BL.take (fromIntegral cap + 1) <$> BL.hGetContents h
-              B.length s `seq` pure s)
+              -- a regular file says its size: refused unread when too
+              -- long, else read in one piece; anything else (a pipe, a
+              -- device: size 0) in chunks, up to one byte past the limit
+              size <- either (\e -> const 0 (e :: IOError)) id <$> try (hFileSize h)
+              if size > fromIntegral cap
+                then pure Nothing
+                else do
+                  s <- if size > 0 then B.hGet h (fromIntegral size) else pure B.empty
+                  more <- BL.toStrict . BL.take (fromIntegral (cap + 1 - B.length s)) <$> BL.hGetContents h
+                  let t = if B.null more then s else B.append s more
+                  B.length t `seq` pure (if B.length t > cap then Nothing else Just t))
   pure $ case r of
-    Left e      -> Left (cannotRead path e)
-    Right bytes
-      | B.length bytes > cap ->
-          Left (path ++ ": more than " ++ show cap ++ " bytes, more than a log is read (write a"
-                ++ " shorter run, or fewer frames with --fps)")
-      | otherwise -> case utf8Error bytes of
+    Left e             -> Left (cannotRead path e)
+    Right Nothing      -> Left (path ++ ": more than " ++ show cap ++ " bytes, more than a log is read (write a"
+                                ++ " shorter run, or fewer frames with --fps)")
+    Right (Just bytes) -> case utf8Error bytes of
           Just (l, c, b) -> Left (path ++ ":" ++ show l ++ ":" ++ show c
                                   ++ ": not UTF-8 text (byte " ++ show b ++ ")")
           Nothing        -> readLogAt (\i mc -> path ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": ")
