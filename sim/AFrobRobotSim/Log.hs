@@ -381,7 +381,7 @@ readLogFile = readLogFileUpTo maxLogBytes
 -- | The longest log 'readLogFile' reads, in bytes: 256 MiB. A one-hour
 -- run of the default world, logged at the default frame rate, is about
 -- 230 MB; reading it and making its replay page
--- ('AFrobRobotSim.Replay.writeReplayFromLog') took 71 s and 1.6 GB of
+-- ('AFrobRobotSim.Replay.writeReplayFromLog') took 75 s and 2.5 GB of
 -- memory (the log's text and its frames, as Haskell values, are held
 -- until the page is written).
 maxLogBytes :: Int

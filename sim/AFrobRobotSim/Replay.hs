@@ -41,7 +41,7 @@ import qualified Data.ByteString.Char8     as BC
 import           Data.Bits                 (xor)
 import           Data.Char                 (ord)
 import           Data.IORef
-import           Data.List                 (foldl', intercalate, intersperse)
+import           Data.List                 (foldl', intercalate)
 import           Data.Word                 (Word64)
 import           Numeric                   (showHex)
 import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
@@ -55,8 +55,14 @@ import           AFrobRobotSim.Simulator   (WorldState)
 
 -- | The page of a log.
 replayPage :: RunLog -> String
-replayPage l = replayPageFromLines (map encodeLogLine (LineHeader (rlHeader l) : map LineFrame (rlFrames l)
-                                                      ++ maybe [] ((: []) . LineSummary) (rlSummary l)))
+replayPage l = pre ++ intercalate ",\n" (map encodeLogLine lns) ++ post
+  where
+    lns = LineHeader (rlHeader l) : map LineFrame (rlFrames l) ++ maybe [] ((: []) . LineSummary) (rlSummary l)
+    -- The nonce, which comes first, hashes every line: in a pass of its
+    -- own, which lets each encoded line go, so that the page is made as
+    -- it is written, the lines encoded again, rather than held whole (a
+    -- one-hour log's page is over 200 MB; held, it took 11 GB of memory).
+    (pre, post) = replayPageParts (showHex (foldl' (\h x -> fnvBytes h (encodeLogLineBytes x)) fnvBasis lns) "")
 
 -- | The page of a log given as its lines' JSON texts (as 'encodeLogLine'
 -- writes them: a header first). The lines are embedded as they are, so
@@ -118,26 +124,10 @@ writeReplayFromLog logPath out = do
   case r of
     Left e  -> pure (Left e)
     Right l -> either (\e -> Left (show (e :: IOException))) Right   -- it names the page
-                 <$> try (writeLogPage out l)
+                 <$> try (writeAscii out (replayPage l))
   where
     canonical f = either (\e -> const f (e :: IOException)) id <$> try (canonicalizePath f)
 
--- 'replayPage' of a log, written to a file line by line: the same bytes,
--- without the page's text ever held whole (a one-hour log's page is over
--- 200 MB; 'replayPage' computes the nonce, which comes first, from every
--- line, and so holds them all until they are written: 11 GB of memory for
--- such a log). The nonce is hashed in a first pass that encodes each line
--- and lets it go; the second pass encodes each line again as it writes it.
-writeLogPage :: FilePath -> RunLog -> IO ()
-writeLogPage out l = withBinaryFile out WriteMode $ \oh -> do
-  hSetBuffering oh (BlockBuffering Nothing)
-  let lns         = LineHeader (rlHeader l) : map LineFrame (rlFrames l)
-                    ++ maybe [] ((: []) . LineSummary) (rlSummary l)
-      hash        = foldl' (\h x -> fnvBytes h (encodeLogLineBytes x)) fnvBasis lns
-      (pre, post) = replayPageParts (showHex hash "")
-  BC.hPutStr oh (BC.pack pre)
-  sequence_ (intersperse (BC.hPutStr oh (BC.pack ",\n")) [ BC.hPutStr oh (encodeLogLineBytes x) | x <- lns ])
-  BC.hPutStr oh (BC.pack post)
 
 -- | A page being recorded as a run goes. Each frame's line is encoded at
 -- once and appended to a temporary file (in the system's temporary
@@ -202,3 +192,7 @@ writeReplay (ReplayRecorder cfg path h ref) s out =
   where
     removeIfExists p = removeFile p `catch` \e -> const (pure ()) (e :: IOException)
 
+-- The page is ASCII (the encoder escapes everything else, the assets are
+-- ASCII), written as UTF-8 whatever the locale.
+writeAscii :: FilePath -> String -> IO ()
+writeAscii path txt = withFile path WriteMode (\h -> hSetEncoding h utf8 >> hPutStr h txt)
