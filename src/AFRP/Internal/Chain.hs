@@ -382,7 +382,11 @@ lastSum (Sums a) = D# (indexDoubleArray# a ((sizeofByteArray# a `quotInt#` 8#) -
 
 -- ('stepSumsF' with no function anywhere, written out: walking the list
 -- of absent functions made network b take 41% more instructions:
--- valgrind, `throughput 0.02 b`, 78.0 M against 109.9 M.)
+-- valgrind, `throughput 0.02 b`, 78.0 M against 109.9 M. The three
+-- lines that make and freeze the new array, the same in 'sumsFromList',
+-- 'stepSums' and 'stepSumsF', stay written out too: passing the loop to
+-- one inlined helper cost b 4% more instructions, `afrp-bench --run b
+-- 300000`, 149.3 M against 143.2 M.)
 --
 -- One step of a run fed by an integral whose sum was @old@ before this
 -- step: @s'_0 = s_0 + dt * old@, @s'_i = s_i + dt * s_(i-1)@, in a new
