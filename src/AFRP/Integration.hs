@@ -108,11 +108,9 @@ data Mids = MNil | MCons !(FunD Double Double) Mids
 -- composed where GHC sees both halves.
 integralsD :: FunD a Double -> Mids -> FunD Double b -> SF a b
 integralsD p fs q = case fs of
-  MNil -> case p of
-    FDI -> case q of
-      FDI -> integralDouble
-      _   -> integralDOn (\a -> a) (fdFun q)
-    _   -> integralDOn (fdFun p) (fdFun q)
+  MNil -> case (p, q) of
+    (FDI, FDI) -> integralDouble
+    _          -> integralDOn (fdFun p) (fdFun q)
   _    -> SF (compN (NPure p) (integralsNodes fs q))
 -- (CONLIKE: a binding @myInt = integral@ used more than once is not
 -- copied into its uses before phase 1, where the rules are over; CONLIKE
@@ -128,16 +126,12 @@ integralsNodes fs q = case fs of
 
 -- @f@ in front of a function: @arr f >>> arr p@.
 preFD :: (a -> c) -> FunD c Double -> FunD a Double
-preFD f p = case p of
-  FDI -> FDG (\a -> f a)
-  _   -> FDG (\a -> fdFun p (f a))
+preFD f p = FDG (\a -> fdFun p (f a))
 {-# INLINE preFD #-}
 
 -- @g@ behind a function: @arr q >>> arr g@.
 postFD :: FunD Double b -> (b -> c) -> FunD Double c
-postFD q g = case q of
-  FDI -> FDG (\c -> g c)
-  _   -> FDG (\c -> g (fdFun q c))
+postFD q g = FDG (\c -> g (fdFun q c))
 {-# INLINE postFD #-}
 
 -- What stands between two integrals: @arr q >>> arr p@, the identity if
