@@ -55,9 +55,7 @@ module AFrobRobotSim.Log
   , module AFrobRobotSim.Log.Records
   ) where
 
-import           Control.Exception         (evaluate, try, uninterruptibleMask_)
-import qualified Data.ByteString           as B
-import qualified Data.ByteString.Lazy      as BL
+import           Control.Exception         (evaluate, uninterruptibleMask_)
 import qualified Data.ByteString.Char8     as BC
 import           Data.Char                 (isDigit)
 import           Data.IORef
@@ -77,7 +75,7 @@ import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
-import           AFrobRobotSim.WorldFile.Lexical (cannotRead, decodeUtf8, utf8Error)
+import           AFrobRobotSim.WorldFile.Lexical (cannotRead, decodeUtf8, readFileUpTo, utf8Error)
 
 -- | What a log needs besides the states: the world and how it was run.
 data LogConfig = LogConfig
@@ -387,21 +385,11 @@ readLogFile = readLogFileUpTo maxLogBytes
 maxLogBytes :: Int
 maxLogBytes = 256 * 1024 * 1024
 
--- | 'readLogFile' reading at most the given number of bytes.
+-- | 'readLogFile' reading at most the given number of bytes (by
+-- 'AFrobRobotSim.WorldFile.Lexical.readFileUpTo', as world files are read).
 readLogFileUpTo :: Int -> FilePath -> IO (Either String RunLog)
 readLogFileUpTo cap path = do
-  r <- try (withBinaryFile path ReadMode $ \h -> do
-              -- a regular file says its size: refused unread when too
-              -- long, else read in one piece; anything else (a pipe, a
-              -- device: size 0) in chunks, up to one byte past the limit
-              size <- either (\e -> const 0 (e :: IOError)) id <$> try (hFileSize h)
-              if size > fromIntegral cap
-                then pure Nothing
-                else do
-                  s <- if size > 0 then B.hGet h (fromIntegral size) else pure B.empty
-                  more <- BL.toStrict . BL.take (fromIntegral (cap + 1 - B.length s)) <$> BL.hGetContents h
-                  let t = if B.null more then s else B.append s more
-                  B.length t `seq` pure (if B.length t > cap then Nothing else Just t))
+  r <- readFileUpTo cap path
   pure $ case r of
     Left e             -> Left (cannotRead path e)
     Right Nothing      -> Left (path ++ ": more than " ++ show cap ++ " bytes, more than a log is read (write a"

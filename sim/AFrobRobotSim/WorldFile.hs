@@ -167,13 +167,10 @@ module AFrobRobotSim.WorldFile
   , renderWorld
   ) where
 
-import           Control.Exception (try)
 import qualified Data.ByteString   as B
-import qualified Data.ByteString.Lazy as BL
 import           Data.List         (intercalate)
 import qualified Data.Map.Strict   as M
 import           Numeric           (showHex)
-import           System.IO         (IOMode (ReadMode), withBinaryFile)
 
 import           AFRP.Geometry     (Point2 (..))
 import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems,
@@ -298,15 +295,11 @@ readWorldBytes file bytes = case utf8Error bytes of
 -- @\/dev\/zero@) gives @FILE: more than N bytes (is this a world file?)@.
 readWorldFile :: FilePath -> IO (Either String WorldTemplate)
 readWorldFile path = do
-  r <- try (withBinaryFile path ReadMode $ \h -> do
-              s <- BL.toStrict . BL.take (fromIntegral maxFileBytes + 1) <$> BL.hGetContents h
-              B.length s `seq` pure s)
+  r <- readFileUpTo maxFileBytes path
   pure $ case r of
-    Left e  -> Left (cannotRead path e)
-    Right s
-      | B.length s > maxFileBytes ->
-          Left (path ++ ": more than " ++ show maxFileBytes ++ " bytes (is this a world file?)")
-      | otherwise -> readWorldBytes path s
+    Left e         -> Left (cannotRead path e)
+    Right Nothing  -> Left (path ++ ": more than " ++ show maxFileBytes ++ " bytes (is this a world file?)")
+    Right (Just s) -> readWorldBytes path s
 
 -- | The longest file 'readWorldFile' reads, in bytes: 16 MiB ('renderWorld'
 -- writes 'maxObjects' objects in less than 1.2 MB).

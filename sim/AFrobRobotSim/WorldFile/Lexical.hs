@@ -29,16 +29,20 @@ module AFrobRobotSim.WorldFile.Lexical
     -- * Messages
   , quote
   , cannotRead
+    -- * Files
+  , readFileUpTo
   , lower
   ) where
 
-import           Control.Exception      (IOException)
+import           Control.Exception      (IOException, try)
 import           Data.Bits              ((.&.), (.|.), shiftL)
 import qualified Data.ByteString        as B
+import qualified Data.ByteString.Lazy   as BL
 import qualified Data.ByteString.Unsafe as BU
 import           Data.Char              (chr, isDigit, isPrint, isSpace, showLitChar, toLower)
 import           Data.Word              (Word8)
 import           GHC.IO.Exception       (IOException (ioe_description))
+import           System.IO              (IOMode (ReadMode), hFileSize, withBinaryFile)
 import           System.IO.Error        (ioeGetErrorType)
 
 ------------------------------------------------------------------------------
@@ -137,6 +141,23 @@ cannotRead path e = path ++ ": cannot read it: " ++ show (ioeGetErrorType e) ++ 
     reason = case ioe_description e of
       "" -> ""
       d  -> " (" ++ d ++ ")"
+
+-- | @readFileUpTo cap path@: the file's bytes, 'Nothing' when it is longer
+-- than @cap@ bytes (or endless, such as @\/dev\/zero@), 'Left' when it
+-- cannot be read ('cannotRead' words the exception). A regular file says
+-- its size: one too long is refused unread, one within the limit read in
+-- one piece; anything else (a pipe, a device) is read in chunks, up to one
+-- byte past the limit.
+readFileUpTo :: Int -> FilePath -> IO (Either IOException (Maybe B.ByteString))
+readFileUpTo cap path = try (withBinaryFile path ReadMode $ \h -> do
+  size <- either (\e -> const 0 (e :: IOException)) id <$> try (hFileSize h)
+  if size > fromIntegral cap
+    then pure Nothing
+    else do
+      s <- if size > 0 then B.hGet h (fromIntegral size) else pure B.empty
+      more <- BL.toStrict . BL.take (fromIntegral (cap + 1 - B.length s)) <$> BL.hGetContents h
+      let t = if B.null more then s else B.append s more
+      B.length t `seq` pure (if B.length t > cap then Nothing else Just t))
 
 -- | A keyword's text in lower case, for comparing case-insensitively.
 lower :: String -> String
