@@ -216,34 +216,14 @@ stepAfterI !dt !old !new c = case c of
 
 -- An integral (its running sum, and the function before it, if any) in
 -- front of the stages that follow it, after the chain's first step:
--- joined to the run that follows, or made a run with the integral that
--- follows, or a stage of its own.
--- (A run starts at three integrals: for two, the array and the run's
--- cell allocate more than the two cells they replace.)
+-- grouped with the integrals in series behind it ('groupEntries', as
+-- 'settleL' groups them; the delays wait for the second step), three or
+-- more as one run, fewer as cells of their own. (A run starts at three
+-- integrals: for two, the array and the run's cell allocate more than the
+-- two cells they replace.)
 consInt :: Maybe (Double -> Double) -> Double -> AfterI -> AfterI
-consInt mf acc c = case c of
-  IRun sums rest      -> run (acc : sumsList sums) (nones (sumsList sums)) rest
-  IRunF sums ks rest  -> run (acc : sumsList sums) (kindsList ks) rest
-  _ | Just (acc2, f2, acc3, f3, rest) <- twoInts c -> run [acc, acc2, acc3] (f2 (f3 FNil)) rest
-  _                   -> maybe (IInt acc c) (\f -> IIntF f acc c) mf
-  where
-    twoInts x = case x of
-      IInt a2 r     | Just (a3, f3, r') <- oneInt r -> Just (a2, FNone, a3, f3, r')
-      IIntF g a2 r  | Just (a3, f3, r') <- oneInt r -> Just (a2, FSome g, a3, f3, r')
-      _             -> Nothing
-    oneInt x = case x of
-      IInt a r    -> Just (a, FNone, r)
-      IIntF g a r -> Just (a, FSome g, r)
-      _           -> Nothing
-    nones = foldr (const FNone) FNil
-    run sums fs rest = case (mf, fs) of
-      (Nothing, _) | allNone fs -> IRun (sumsFromList sums) rest
-      _                         -> IRunF (sumsFromList sums) (packKinds (maybe FNone FSome mf fs)) rest
-    allNone fs = case fs of
-      FNil      -> True
-      FNone r   -> allNone r
-      FSome _ _ -> False
-      FPre _    -> False
+consInt mf acc c = case entriesI Nothing c of
+  (es, rest) -> groupEntries (maybe (EInt acc) (\f -> EIntF f acc) mf : es) rest
 
 -- | Whether a chain has a delay fed by an integral ('IPre'), which
 -- 'settleL' makes a stage of its own kind at the chain's second step.
@@ -281,7 +261,7 @@ settleL pre post = case (pre, post) of
 
 -- The stages after an integral, settled.
 settleI :: AfterI -> AfterI -> AfterI
-settleI pre post = case entriesI pre post of
+settleI pre post = case entriesI (Just pre) post of
   (es, rest) -> groupEntries es rest
 
 -- A stage of a run, as 'settleL' collects them: its output at the last
@@ -290,18 +270,27 @@ data Entry = EInt !Double | EIntF !(Double -> Double) !Double | EPre !Double
 
 -- The longest series of integrals and delays at the head of the stages
 -- after an integral (before and after this step), and what follows it.
-entriesI :: AfterI -> AfterI -> ([Entry], AfterI)
-entriesI pre post = case (pre, post) of
-  (IInt _ p, IInt acc q)       -> withEntries [EInt acc] (entriesI p q)
-  (IIntF _ _ p, IIntF f acc q) -> withEntries [EIntF f acc] (entriesI p q)
-  (IRun _ p, IRun s q)         -> withEntries (map EInt (sumsList s)) (entriesI p q)
-  (IRunF _ _ p, IRunF s ks q)  -> withEntries (funEntries (sumsList s) (kindsList ks)) (entriesI p q)
-  (IPreI _ p, IPreI out q)     -> withEntries [EPre out] (entriesI p q)
-  -- the delay's output at this step is what it held before it; the
-  -- chain's first step stored it there, evaluated
-  (IPre out p, IPre _ q)       -> withEntries [EPre out] (entriesL p q)
-  _                            -> ([], post)
+entriesI :: Maybe AfterI -> AfterI -> ([Entry], AfterI)
+entriesI mpre post = case post of
+  IInt acc q    -> more [EInt acc] q
+  IIntF f acc q -> more [EIntF f acc] q
+  IRun s q      -> more (map EInt (sumsList s)) q
+  IRunF s ks q  -> more (funEntries (sumsList s) (kindsList ks)) q
+  IPreI out q   -> more [EPre out] q
+  -- given the state before the chain's second step: the delay's output
+  -- at this step is what it held before it, which the chain's first step
+  -- stored there, evaluated
+  IPre _ q | Just (IPre out p) <- mpre -> withEntries [EPre out] (entriesL p q)
+  _             -> ([], post)
   where
+    more es q = withEntries es (entriesI (mpre >>= restOf) q)
+    restOf pre = case pre of
+      IInt _ p    -> Just p
+      IIntF _ _ p -> Just p
+      IRun _ p    -> Just p
+      IRunF _ _ p -> Just p
+      IPreI _ p   -> Just p
+      _           -> Nothing
     funEntries ss fs = case (ss, fs) of
       (x : xs, FNone r)   -> EInt x : funEntries xs r
       (x : xs, FSome f r) -> EIntF f x : funEntries xs r
@@ -313,8 +302,8 @@ entriesI pre post = case (pre, post) of
 -- 'IPreI' gives them as its last output.
 entriesL :: AfterL -> AfterL -> ([Entry], AfterI)
 entriesL pre post = case (pre, post) of
-  (LInt _ _ p, LInt acc _ q)       -> withEntries [EInt acc] (entriesI p q)
-  (LIntF _ _ _ p, LIntF f acc _ q) -> withEntries [EIntF f acc] (entriesI p q)
+  (LInt _ _ p, LInt acc _ q)       -> withEntries [EInt acc] (entriesI (Just p) q)
+  (LIntF _ _ _ p, LIntF f acc _ q) -> withEntries [EIntF f acc] (entriesI (Just p) q)
   _                                -> ([], fedByDelay post)
   where
     -- (a delay behind a delay keeps its value: what it output at this
