@@ -46,11 +46,12 @@ import           Data.Word                 (Word64)
 import           Numeric                   (showHex)
 import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
 import           Control.Monad             (unless)
-import           System.Directory          (canonicalizePath, getTemporaryDirectory, removeFile)
+import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.IO
 
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Replay.Assets
+import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 import           AFrobRobotSim.Simulator   (WorldState)
 
 -- | The page of a log.
@@ -118,15 +119,13 @@ fnvBasis = 14695981039346656037
 -- log itself (under any name: the log is kept).
 writeReplayFromLog :: FilePath -> FilePath -> IO (Either String ())
 writeReplayFromLog logPath out = do
-  same <- (==) <$> canonical logPath <*> canonical out
+  same <- (==) <$> canonicalPath logPath <*> canonicalPath out
   r <- if same then pure (Left (out ++ ": is the log being read; the page would overwrite it"))
                else readLogFile logPath
   case r of
     Left e  -> pure (Left e)
     Right l -> either (\e -> Left (show (e :: IOException))) Right   -- it names the page
                  <$> try (writeAscii out (replayPage l))
-  where
-    canonical f = either (\e -> const f (e :: IOException)) id <$> try (canonicalizePath f)
 
 
 -- | A page being recorded as a run goes. Each frame's line is encoded at

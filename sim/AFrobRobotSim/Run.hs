@@ -54,7 +54,7 @@ import           Data.IORef
 import           Data.List                 (foldl', isPrefixOf)
 import           Data.Maybe                (catMaybes, listToMaybe)
 import           GHC.Clock                 (getMonotonicTime)
-import           System.Directory          (canonicalizePath, createDirectory, doesDirectoryExist, doesFileExist,
+import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
                                             findExecutable, getPermissions, getSymbolicLinkTarget,
                                             pathIsSymbolicLink, removeFile, renameFile, writable)
 import           System.Environment        (getArgs, getProgName)
@@ -78,6 +78,7 @@ import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
+import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 
 -- | Run a simbot program with the settings of the command line. 'Nothing'
 -- runs the built-in default world ("AFrobRobotSim.DefaultWorld").
@@ -134,8 +135,8 @@ preflight bounds opts = do
   -- devices are not files to keep (--log /dev/stdout --result /dev/stderr
   -- may be one terminal)
   canon <- forM [ tf | tf@(_, f, _) <- targets, not (device f) ] $ \(flag, f, t) ->
-             (,,) flag f <$> canonical (maybe f id t)
-  world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> canonical w
+             (,,) flag f <$> canonicalPath (maybe f id t)
+  world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> canonicalPath w
   -- a file is written in its folder, or through a link in its target's:
   -- the output folder is created by the run, any other must exist
   let checkIn flag f dir
@@ -165,7 +166,6 @@ preflight bounds opts = do
   errs <- if inOut && null pre then checkFolder out else pure pre
   pure (errs, ffmpeg)
   where
-    canonical f = either (\(_ :: IOException) -> normalise f) id <$> try (canonicalizePath f)
     device f = any (`isPrefixOf` normalise f) ["/dev/", "/proc/"]
     -- a folder as one name (--out x/ and --out ./x are the folder x, which
     -- the run creates; with the slash its parent was taken to be x itself)

@@ -31,6 +31,7 @@ module AFrobRobotSim.WorldFile.Lexical
   , cannotRead
     -- * Files
   , readFileUpTo
+  , canonicalPath
   , lower
   ) where
 
@@ -42,6 +43,8 @@ import qualified Data.ByteString.Unsafe as BU
 import           Data.Char              (chr, isDigit, isPrint, isSpace, showLitChar, toLower)
 import           Data.Word              (Word8)
 import           GHC.IO.Exception       (IOException (ioe_description))
+import           System.Directory       (canonicalizePath)
+import           System.FilePath        (normalise)
 import           System.IO              (IOMode (ReadMode), hFileSize, withBinaryFile)
 import           System.IO.Error        (ioeGetErrorType)
 
@@ -158,6 +161,12 @@ readFileUpTo cap path = try (withBinaryFile path ReadMode $ \h -> do
       more <- BL.toStrict . BL.take (fromIntegral (cap + 1 - B.length s)) <$> BL.hGetContents h
       let t = if B.null more then s else B.append s more
       B.length t `seq` pure (if B.length t > cap then Nothing else Just t))
+
+-- | A path as the file system resolves it ('canonicalizePath': links
+-- followed, @.@ and @..@ gone), or, when it cannot be, the path normalised:
+-- for telling whether two names are one file.
+canonicalPath :: FilePath -> IO FilePath
+canonicalPath f = either (\e -> const (normalise f) (e :: IOException)) id <$> try (canonicalizePath f)
 
 -- | A keyword's text in lower case, for comparing case-insensitively.
 lower :: String -> String
