@@ -16,6 +16,7 @@ import           System.IO          (hPutStr, stderr)
 import           AFrob
 import           AFrobRobotSim
 import           AFrobRobotSim.Replay (writeReplayFromLog)
+import           AFrobRobotSim.WorldFile.Lexical (displayPath)
 import           Paper.Section3     (rcAlign, rcFollowLeftWall, rcMoveTo, rcReverse)
 
 main :: IO ()
@@ -35,7 +36,7 @@ replayFrom args = do
   where
     go failWith f o = do
       r <- writeReplayFromLog f o
-      either failWith (const (putStrLn ("wrote " ++ o))) r   -- the message names the file
+      either failWith (const (putStrLn ("wrote " ++ displayPath o))) r   -- the message names the file
 
 -- | The SimbotA demos, by id.
 demoA :: SimbotController

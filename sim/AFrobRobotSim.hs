@@ -44,6 +44,7 @@ module AFrobRobotSim
   , simParamsOf
   , lookupSimParam
   , paramOr
+  , readSimParam
   , defaultWorld
     -- * Controllers and their input and output
   , SimbotController
@@ -109,7 +110,8 @@ module AFrobRobotSim
 
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Options
-import           AFrobRobotSim.Result      (getSimParams, lookupSimParam, paramOr, simParamsOf)
+import           AFrobRobotSim.Result      (getSimParams, lookupSimParam, paramOr, readSimParam,
+                                            simParamsOf)
 import           AFrobRobotSim.Balls     (ballFriction, ballRestitution)
 import           AFrobRobotSim.Render    (RenderStyle (..), Scene (..), defaultRenderStyle, frameSize,
                                           renderPPM, renderSVG)

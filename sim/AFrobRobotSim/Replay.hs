@@ -51,7 +51,7 @@ import           System.IO
 
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Replay.Assets
-import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
+import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, displayPath, ioErrorText)
 import           AFrobRobotSim.Simulator   (WorldState)
 
 -- | The page of a log.
@@ -120,11 +120,11 @@ fnvBasis = 14695981039346656037
 writeReplayFromLog :: FilePath -> FilePath -> IO (Either String ())
 writeReplayFromLog logPath out = do
   same <- (==) <$> canonicalPath logPath <*> canonicalPath out
-  r <- if same then pure (Left (out ++ ": is the log being read; the page would overwrite it"))
+  r <- if same then pure (Left (displayPath out ++ ": is the log being read; the page would overwrite it"))
                else readLogFile logPath
   case r of
     Left e  -> pure (Left e)
-    Right l -> either (\e -> Left (show (e :: IOException))) Right   -- it names the page
+    Right l -> either (Left . ioErrorText) Right   -- it names the page
                  <$> try (writeAscii out (replayPage l))
 
 

@@ -41,6 +41,7 @@ module AFrobRobotSim.Result
   , simParamsOf
   , lookupSimParam
   , paramOr
+  , readSimParam
     -- * The result line
   , RobotTally (..)
   , startTallies
@@ -48,7 +49,7 @@ module AFrobRobotSim.Result
   , resultJSON
   ) where
 
-import           Data.List            (foldl')
+import           Data.List            (foldl', isInfixOf)
 import           System.Environment   (getArgs, getProgName)
 import           System.Exit          (ExitCode (..), exitWith)
 import           System.IO            (hPutStrLn, stderr)
@@ -79,25 +80,57 @@ lookupSimParam name = lookup name <$> getSimParams
 
 -- | @paramOr name def@: the @--param name=VALUE@ of this program's
 -- command line read with 'Read' (a 'String' parameter must then be
--- quoted), or @def@ when it is not given. A value that does not read
--- stops the program before anything is simulated, as a malformed command
--- line does ('AFrobRobotSim.runSim'): a message naming the parameter on
--- standard error, and exit code 2 (by 'exitWith', so a caller may catch
--- the 'ExitCode').
+-- quoted), or @def@ when it is not given. A value that does not read, or
+-- that the type cannot hold (see 'readSimParam'), stops the program
+-- before anything is simulated, as a malformed command line does
+-- ('AFrobRobotSim.runSim'): a message naming the parameter on standard
+-- error, and exit code 2 (by 'exitWith', so a caller may catch the
+-- 'ExitCode').
 --
 -- > prog: --param speed=fast: cannot read the value "fast" (write it as Haskell's read reads it: 0.5, 3, True, "quoted text")
-paramOr :: Read a => String -> a -> IO a
+-- > prog: --param n=99999999999999999999: the value "99999999999999999999" is out of range for this parameter (it would read as 7766279631452241919)
+paramOr :: (Read a, Show a) => String -> a -> IO a
 paramOr name def = do
   mv <- lookupSimParam name
   case mv of
     Nothing -> pure def
-    Just v  -> case readMaybe v of
-      Just x  -> pure x
-      Nothing -> do
+    Just v  -> case readSimParam name v of
+      Right x  -> pure x
+      Left msg -> do
         prog <- getProgName
-        hPutStrLn stderr (prog ++ ": --param " ++ name ++ "=" ++ v ++ ": cannot read the value " ++ show v
-                          ++ " (write it as Haskell's read reads it: 0.5, 3, True, \"quoted text\")")
+        hPutStrLn stderr (prog ++ ": " ++ msg)
         exitWith (ExitFailure 2)
+
+-- | @readSimParam name text@: a @--param name=text@'s value, as
+-- 'paramOr' reads it, or the message it stops the program with. The
+-- value is read with 'Read', and refused when it does not read, or when
+-- it reads but the type cannot hold it: an integer that a bounded type
+-- (such as 'Int' or 'Data.Word.Word8') would wrap around (its 'Show'
+-- then names another integer), or a number too large for a 'Double'
+-- (which would read as @Infinity@ although the text does not say so).
+-- Reading never wraps silently:
+--
+-- >>> readSimParam "n" "300" :: Either String Int
+-- Right 300
+-- >>> either (const "refused") show (readSimParam "n" "300" :: Either String Word8)
+-- "refused"
+readSimParam :: (Read a, Show a) => String -> String -> Either String a
+readSimParam name v = case readMaybe v of
+  Nothing -> Left (flag ++ ": cannot read the value " ++ show v
+                   ++ " (write it as Haskell's read reads it: 0.5, 3, True, \"quoted text\")")
+  Just x
+    | wrapped x || overflowed x ->
+        Left (flag ++ ": the value " ++ show v ++ " is out of range for this parameter (it would read as "
+              ++ show x ++ ")")
+    | otherwise -> Right x
+  where
+    flag = "--param " ++ name ++ "=" ++ v
+    -- an integer written, another integer read back
+    wrapped x = case (readMaybe v :: Maybe Integer, readMaybe (show x) :: Maybe Integer) of
+      (Just written, Just got) -> written /= got
+      _                        -> False
+    -- infinity read from a text that does not ask for it
+    overflowed x = show x `elem` ["Infinity", "-Infinity"] && not ("Infinity" `isInfixOf` v)
 
 -- | What the result line keeps of one robot while the run goes: strict,
 -- so its memory is constant however long the run.

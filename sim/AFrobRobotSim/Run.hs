@@ -78,7 +78,7 @@ import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
-import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
+import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, displayPath, ioErrorText)
 
 -- | Run a simbot program with the settings of the command line. 'Nothing'
 -- runs the built-in default world ("AFrobRobotSim.DefaultWorld").
@@ -209,7 +209,7 @@ preflight bounds opts = do
                        writeFile probe "ok"
                        removeFile probe)
           pure $ case r of
-            Left (e :: IOException) -> [ writeTo ++ show dir ++ ": " ++ show e ]
+            Left (e :: IOException) -> [ writeTo ++ show dir ++ ": " ++ ioErrorText e ]
             Right ()                -> []
 
 -- How a run's loop ended.
@@ -317,7 +317,7 @@ svgSink every (style, scene) file = do
         (kept, final) <- readIORef ref
         let states = reverse (maybe kept (\f -> if maybe False ((== wsTime f) . wsTime) (listToMaybe kept)
                                                    then kept else f : kept) final)
-        attempt (show file) (Just ("wrote " ++ file)) (writeFile file (renderSVG style scene states))
+        attempt (show file) (Just ("wrote " ++ displayPath file)) (writeFile file (renderSVG style scene states))
   pure (Sink step finish)
 
 -- The run log, written as the run goes.
@@ -331,7 +331,7 @@ logSink w = Sink (const (writeLogState w)) (\summary -> attempt "the log" Nothin
 replaySink :: String -> ReplayRecorder -> FilePath -> Sink
 replaySink note r file =
   Sink (const (recordReplayState r))
-       (\summary -> attempt (show file) (Just ("wrote " ++ file ++ " (open it in a browser)" ++ note)) (writeReplay r summary file))
+       (\summary -> attempt (show file) (Just ("wrote " ++ displayPath file ++ " (open it in a browser)" ++ note)) (writeReplay r summary file))
 
 -- The result line (settings and outcome), written at the end however the
 -- run ended; the robots' tallies are its only state.
@@ -352,7 +352,7 @@ attempt :: String -> Maybe String -> IO () -> IO Outcome
 attempt what done act = do
   r <- try act
   pure $ case r of
-    Left (e :: IOException) -> Outcome [ "cannot write " ++ what ++ ": " ++ show e ] []
+    Left (e :: IOException) -> Outcome [ "cannot write " ++ what ++ ": " ++ ioErrorText e ] []
     Right ()                -> Outcome [] (maybe [] pure done)
 
 -- One pass over the states: every sink takes every state; nothing else
@@ -389,10 +389,10 @@ simulateRun prog opts ffmpeg world rcA rcB = do
       states   = take (nSteps + 1) (simulateWith cfg world rcA rcB)
   mlog <- forM (optLog opts) $ \file -> do
     r <- try (openLogWriter logCfg file)
-    either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ show e)) pure r
+    either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ ioErrorText e)) pure r
   mrec <- forM (optReplay opts) $ \file -> do
     r <- try (newReplayRecorder replayCfg)
-    either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ show e)) pure r
+    either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r
   stepsRef  <- newIORef (0 :: Int)
   framesRef <- newIORef (0 :: Int)
   frames <- if optFrames opts then Just <$> framesSink opts scale frameAt (renderPPM style scene) framesRef
@@ -428,7 +428,7 @@ simulateRun prog opts ffmpeg world rcA rcB = do
       summary   = LogSummary simulated steps (-1) wall interrupted (displayException <$> failure) []
   Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
   let runErrs = case ending of
-        WriteFailed e -> [ "the run stopped: a write failed: " ++ show e ]
+        WriteFailed e -> [ "the run stopped: a write failed: " ++ ioErrorText e ]
         _             -> []
   printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
     (case ending of
@@ -474,8 +474,8 @@ makeVideo opts exe file = do
   code <- rawSystem exe [ "-y", "-loglevel", "error", "-framerate", show (optFps opts)
                         , "-i", optOut opts </> "frame-%06d.ppm", "-pix_fmt", "yuv420p", file ]
   case code of
-    ExitSuccess   -> [] <$ putStrLn ("wrote " ++ file)
-    ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ optOut opts]
+    ExitSuccess   -> [] <$ putStrLn ("wrote " ++ displayPath file)
+    ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
 
 -- Write a message to standard error in one piece (stderr is unbuffered,
 -- which would write it a character at a time).

@@ -19,7 +19,7 @@ module AFrobRobotSim.Sweep
   , sweepMergeMain
   ) where
 
-import           Control.Exception   (IOException, try)
+import           Control.Exception   (try)
 import           Data.Either         (partitionEithers)
 import           Data.List           (nub, sort, sortOn)
 import           Data.Maybe          (fromMaybe)
@@ -29,6 +29,7 @@ import           System.IO           (hPutStrLn, stderr)
 import           Text.Printf         (printf)
 
 import           AFrobRobotSim.JSON
+import           AFrobRobotSim.WorldFile.Lexical (displayPath, ioErrorText)
 
 -- One run as the table needs it.
 data Run = Run
@@ -129,5 +130,5 @@ sweepMergeMain = do
     ensureNewline t = if null t || last t == '\n' then t else t ++ "\n"
     readOrExit f = try (readFile f) >>= either (cannotRead f) pure
     cannotRead f e = do
-      hPutStrLn stderr ("afrp-sweep-merge: " ++ f ++ ": " ++ show (e :: IOException))
+      hPutStrLn stderr ("afrp-sweep-merge: " ++ displayPath f ++ ": " ++ ioErrorText e)
       exitWith (ExitFailure 2)

@@ -13,7 +13,8 @@ import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, sort, tails)
 import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
-import           System.Directory    (createDirectory, createFileLink, listDirectory)
+import           Data.Char           (isPrint)
+import           System.Directory    (createDirectory, createFileLink, doesFileExist, listDirectory)
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     ((</>))
 import           System.IO
@@ -369,6 +370,19 @@ spec = do
                                                      , optReplay = Just page, optQuiet = False } (Just world) drive drive)
       r `shouldBe` Left (ExitFailure 1)
       filter ("wrote" `isPrefixOf`) (lines out) `shouldBe` ["wrote " ++ page ++ " (open it in a browser)"]
+    it "names a written file whose name has a control character in quotes, escaped, on one line" $ withTempDir $ \dir -> do
+      let svg = dir </> "run\nwrote forged.svg"
+      (out, _, r) <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just svg, optQuiet = False }
+                                          (Just world) drive drive)
+      r `shouldBe` Right ()
+      doesFileExist svg `shouldReturn` True
+      filter ("wrote" `isPrefixOf`) (lines out) `shouldBe` ["wrote " ++ show svg]
+    it "a failed write naming a file with a control character: the message is printable" $ withTempDir $ \dir -> do
+      let svg = dir </> "no\ESC[2Jdir" </> "run.svg"
+      (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just svg } (Just world) drive drive)
+      r `shouldSatisfy` either (/= ExitSuccess) (const False)
+      err `shouldSatisfy` ("\\ESC[2J" `isInfixOf`)
+      err `shouldSatisfy` all (\c -> isPrint c || c == '\n' || c == '\r')
     it "a full disk for the log (/dev/full)" $ withTempDir $ \dir -> do
       (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just "/dev/full" } (Just world) drive drive)
       r `shouldSatisfy` either (/= ExitSuccess) (const False)

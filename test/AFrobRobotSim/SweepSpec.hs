@@ -6,7 +6,9 @@
 module AFrobRobotSim.SweepSpec (spec, childVariable, child) where
 
 import           Control.Monad       (forM, forM_, unless)
+import           Data.Int            (Int8)
 import           Data.List           (isInfixOf, isPrefixOf, sort)
+import           Data.Word           (Word8)
 import           System.Directory    (doesFileExist, findExecutable, getPermissions, makeAbsolute,
                                       setOwnerExecutable, setPermissions)
 import           System.Environment  (getArgs, getEnvironment, getExecutablePath)
@@ -182,6 +184,34 @@ spec = do
       code `shouldBe` ExitFailure 2
       err `shouldSatisfy` ("--param speed=fast: cannot read the value \"fast\"" `isInfixOf`)
       err `shouldNotSatisfy` ("user error" `isInfixOf`)
+      length (lines err) `shouldBe` 1
+      line `shouldBe` ""
+
+    it "readSimParam: a value the type cannot hold is refused, never wrapped" $ do
+      -- integers that a bounded type would wrap around
+      (readSimParam "n" "99999999999999999999" :: Either String Int)
+        `shouldSatisfy` either ("--param n=99999999999999999999: the value \"99999999999999999999\" is out of range" `isInfixOf`) (const False)
+      (readSimParam "n" "300" :: Either String Word8) `shouldSatisfy` either ("out of range" `isInfixOf`) (const False)
+      (readSimParam "n" "-1" :: Either String Word) `shouldSatisfy` either ("out of range" `isInfixOf`) (const False)
+      (readSimParam "n" "128" :: Either String Int8) `shouldSatisfy` either ("would read as -128" `isInfixOf`) (const False)
+      -- a number too large for a Double, unless infinity is what is written
+      (readSimParam "x" "1e400" :: Either String Double) `shouldSatisfy` either ("out of range" `isInfixOf`) (const False)
+      (readSimParam "x" "Infinity" :: Either String Double) `shouldBe` Right (1 / 0)
+      -- values that fit are read as they are, at their bounds too
+      (readSimParam "n" "9223372036854775807" :: Either String Int) `shouldBe` Right maxBound
+      (readSimParam "n" "-9223372036854775808" :: Either String Int) `shouldBe` Right minBound
+      (readSimParam "n" " 255 " :: Either String Word8) `shouldBe` Right 255
+      (readSimParam "n" "0x10" :: Either String Int) `shouldBe` Right 16
+      (readSimParam "x" "3" :: Either String Double) `shouldBe` Right 3
+      (readSimParam "x" "99999999999999999999" :: Either String Double) `shouldBe` Right 1e20
+      (readSimParam "n" "99999999999999999999" :: Either String Integer) `shouldBe` Right 99999999999999999999
+      (readSimParam "s" "\"text\"" :: Either String String) `shouldBe` Right "text"
+      (readSimParam "b" "True" :: Either String Bool) `shouldBe` Right True
+      (readSimParam "n" "fast" :: Either String Int) `shouldSatisfy` either ("cannot read the value \"fast\"" `isInfixOf`) (const False)
+    it "paramOr: a value out of range stops the program before it runs, naming it" $ withTempDir $ \dir -> do
+      (code, err, line) <- runOnce dir ["--seconds", "1", "--param", "speed=1e999"]
+      code `shouldBe` ExitFailure 2
+      err `shouldSatisfy` ("--param speed=1e999: the value \"1e999\" is out of range" `isInfixOf`)
       length (lines err) `shouldBe` 1
       line `shouldBe` ""
 

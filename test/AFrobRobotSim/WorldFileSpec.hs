@@ -3,11 +3,11 @@
 -- example worlds in @worlds/@.
 module AFrobRobotSim.WorldFileSpec (spec) where
 
-import           Control.Exception      (evaluate)
+import           Control.Exception      (evaluate, try)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Char8  as BC
-import           Data.Char              (isDigit)
-import           Data.List              (intercalate, isPrefixOf, tails)
+import           Data.Char              (isDigit, isPrint)
+import           Data.List              (intercalate, isInfixOf, isPrefixOf, tails)
 import           System.Timeout         (timeout)
 import           System.Directory       (getTemporaryDirectory, removeFile)
 import           System.FilePath        ((</>))
@@ -17,6 +17,7 @@ import           Test.QuickCheck
 import           AFRP.Geometry          (Point2 (..))
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
+import           AFrobRobotSim.WorldFile.Lexical (displayPath, ioErrorText)
 
 ------------------------------------------------------------------------------
 -- Helpers
@@ -507,6 +508,23 @@ spec = do
       r <- readWorldFile file
       removeFile file
       r `shouldSatisfy` either ((file ++ ":3:1: expected an object keyword") `isPrefixOf`) (const False)
+
+  describe "file names in messages (WorldFile.Lexical)" $ do
+    it "displayPath: a printable name as it is, any other quoted with its controls escaped" $ do
+      displayPath "simbot-out/run.svg" `shouldBe` "simbot-out/run.svg"
+      displayPath "out/ä b.svg" `shouldBe` "out/ä b.svg"
+      displayPath "a\nwrote b" `shouldBe` "\"a\\nwrote b\""
+      displayPath "x\ESC[2Jy" `shouldBe` "\"x\\ESC[2Jy\""
+    it "displayPath never lets a character that does not print through" $ property $ \f ->
+      all isPrint (displayPath f)
+    it "ioErrorText: an I/O failure naming a file with a newline is one printable line" $ do
+      r <- try (readFile "/no/such/dir/a\nb")
+      case r of
+        Left e  -> do
+          let t = ioErrorText e
+          t `shouldSatisfy` all isPrint
+          t `shouldSatisfy` ("a\\nb" `isInfixOf`)
+        Right _ -> expectationFailure "read a file that cannot exist"
 
   describe "the example worlds" $ do
     mapM_ exampleWorld exampleFiles

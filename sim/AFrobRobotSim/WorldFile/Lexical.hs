@@ -28,6 +28,8 @@ module AFrobRobotSim.WorldFile.Lexical
   , integerLit
     -- * Messages
   , quote
+  , displayPath
+  , ioErrorText
   , cannotRead
     -- * Files
   , readFileUpTo
@@ -133,6 +135,31 @@ quote s = "\"" ++ foldr esc "" s ++ "\""
     esc ch rest
       | isPrint ch && ch /= '"' && ch /= '\\' = ch : rest
       | otherwise                             = showLitChar ch rest
+
+-- | A file name as a message shows it: as it is when every character of
+-- it prints, otherwise in quotes with the others escaped ('quote'), so
+-- that a name holding a newline or a terminal's escape sequence cannot
+-- forge or hide a line of output.
+--
+-- >>> displayPath "out/run.svg"
+-- "out/run.svg"
+-- >>> displayPath "out/a\nb.svg"
+-- "\"out/a\\nb.svg\""
+displayPath :: FilePath -> String
+displayPath f
+  | all isPrint f = f
+  | otherwise     = quote f
+
+-- | An I/O failure as a message shows it: 'show' of the exception (which
+-- names the file or handle as given), with every character that does
+-- not print escaped as a Haskell literal would have it, for the reason
+-- 'displayPath' gives.
+ioErrorText :: IOException -> String
+ioErrorText e = foldr esc "" (show e)
+  where
+    esc ch rest
+      | isPrint ch = ch : rest
+      | otherwise  = showLitChar ch rest
 
 -- | A file that could not be read, as a message naming it and why, but
 -- not the Haskell function that failed:
