@@ -32,7 +32,7 @@
 -- place can reach ("AFrobRobotSim.RayGrid"): a ray is tested only against
 -- the boxes near its 3.25 m segment. The other robots within the
 -- tracker's range of a robot are gathered once per sample, into unboxed
--- arrays (index, coordinates, squared distance), and shared by its
+-- arrays (index and squared distance), and shared by its
 -- tracker and its rays (every robot a ray can hit is among them). The
 -- tracker's lists are sorted in unboxed arrays (by distance, then
 -- template order: a merge sort, no list or thunk per point), and the lists
@@ -127,11 +127,9 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
   , siHeading  = odoHead
   , siRange    = range
   , siMaxRange = rangeFinderMax
-  , siRobots   = [ (kindType (rKind o), rId o, angleTo ox oy, d)
-                 | Near d j ox oy <- inRangeSorted others
-                 , let o = robotAt j ]
-  , siBalls    = [ (angleTo bx by, d)
-                 | Near d _ bx by <- inRangeSorted (gatherNear (ixBallGrid ix) (-1) px py) ]
+  , siRobots   = inRangeSorted tracked others
+  , siBalls    = inRangeSorted (\d _ bx by -> (angleTo bx by, d))
+                               (gatherNear (ixBallGrid ix) (-1) px py)
   , siKey      = key
   }
   where
@@ -156,6 +154,12 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
                     in abs (y * c - x * s) <= robotRadius + querySlack
                        || abs (x * c + y * s) <= robotRadius + querySlack)
                   others
+    -- a robot the tracker sees: its type and number taken out as the
+    -- element is made, the bearing computed when it is read
+    tracked d j ox oy = let o    = robotAt j
+                            !ty  = kindType (rKind o)
+                            !rid = rId o
+                        in (ty, rid, angleTo ox oy, d)
     -- the bearing of a point relative to the heading
     angleTo qx qy = let (_, th) = vector2RhoTheta (Point2 qx qy .-. p)
                     in normalizeAngle (th - rHeading me)
@@ -189,13 +193,14 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
 
 -- The points of an index (all but number @skip@) within 'gatherRange' of
 -- @(px, py)@, in unboxed arrays (no list or box per point: a packed world
--- puts 50 robots within range of each). An index of a few points is
--- scanned, which costs less than walking the cells of the square around
--- the range (in the 10-robot benchmark, that square covers most of the
--- world); a larger one is walked cell by cell, into arrays as large as
--- the points listed in those cells. The order of the points is the
--- walk's: nothing read from them depends on it (a ray takes the nearest
--- hit, the tracker sorts).
+-- puts 50 robots within range of each): their indexes and squared
+-- distances; their coordinates are read from the index itself. An index
+-- of a few points is scanned, which costs less than walking the cells of
+-- the square around the range (in the 10-robot benchmark, that square
+-- covers most of the world); a larger one is walked cell by cell, into
+-- arrays as large as the points listed in those cells. The order of the
+-- points is the walk's: nothing read from them depends on it (a ray takes
+-- the nearest hit, the tracker sorts).
 gatherNear :: PointIndex -> Int -> Double -> Double -> Gathered
 gatherNear grid skip px py = runST $ do
   let n   = pointIndexCount grid
@@ -203,30 +208,26 @@ gatherNear grid skip px py = runST $ do
       cap | n <= 32   = n
           | otherwise = pointsInCellsOf grid (px - tr) (py - tr) (px + tr) (py + tr)
   js  <- newIntArr (max 1 cap) 0
-  xs  <- newDblArr (max 1 cap)
-  ys  <- newDblArr (max 1 cap)
   d2s <- newDblArr (max 1 cap)
   let add !c j
         | j == skip = pure c
         | otherwise =
-            let qx = pointX grid j
-                qy = pointY grid j
-                x  = qx - px
-                y  = qy - py
+            let x  = pointX grid j - px
+                y  = pointY grid j - py
                 d2 = x * x + y * y
             in if d2 <= tr * tr
-                 then writeI js c j >> writeD xs c qx >> writeD ys c qy >> writeD d2s c d2 >> pure (c + 1)
+                 then writeI js c j >> writeD d2s c d2 >> pure (c + 1)
                  else pure c
       scan !j !c
         | j >= n    = pure c
         | otherwise = add c j >>= scan (j + 1)
   k <- if n <= 32 then scan 0 0
        else foldPointsInM grid (px - tr) (py - tr) (px + tr) (py + tr) add 0
-  Gathered grid k <$> freezeI js <*> freezeD xs <*> freezeD ys <*> freezeD d2s
+  Gathered grid k <$> freezeI js <*> freezeD d2s
 
--- Points of an index near a robot: how many, and for the k-th its index,
--- its coordinates as indexed and its squared distance from the robot.
-data Gathered = Gathered !PointIndex {-# UNPACK #-} !Int !IntArr !DblArr !DblArr !DblArr
+-- Points of an index near a robot: the index, how many, and for the k-th
+-- its number in the index and its squared distance from the robot.
+data Gathered = Gathered !PointIndex {-# UNPACK #-} !Int !IntArr !DblArr
 
 -- Some of the gathered points, by their positions in the arrays.
 data Some = None | Some {-# UNPACK #-} !Int !Some
@@ -237,22 +238,29 @@ allNear _ = All
 
 -- The gathered points (coordinates) that pass a test.
 selectNear :: (Double -> Double -> Bool) -> Gathered -> Some
-selectNear keep (Gathered _ k _ xs ys _) = go (k - 1) None
+selectNear keep (Gathered grid k js _) = go (k - 1) None
   where
     go !p acc
       | p < 0     = acc
-      | keep (indexD xs p) (indexD ys p) = go (p - 1) (Some p acc)
+      | let j = indexI js p, keep (pointX grid j) (pointY grid j) = go (p - 1) (Some p acc)
       | otherwise = go (p - 1) acc
 {-# INLINE selectNear #-}
 
 -- A strict left fold over some gathered points (coordinates, squared
 -- distance).
 foldNear :: (a -> Double -> Double -> Double -> a) -> a -> Gathered -> Some -> a
-foldNear f z0 (Gathered _ k _ xs ys d2s) sel = case sel of
+foldNear f z0 (Gathered grid k js d2s) sel = case sel of
   All -> every 0 z0
   _   -> some sel z0
   where
-    at z p = f z (indexD xs p) (indexD ys p) (indexD d2s p)
+    -- (the coordinates read before the call: passed unread, each would be
+    -- a box allocated for a function that may not look at it)
+    at z p = let j   = indexI js p
+                 !qx = pointX grid j
+                 !qy = pointY grid j
+                 !d2 = indexD d2s p
+             in f z qx qy d2
+    {-# INLINE at #-}
     every !p !z | p >= k    = z
                 | otherwise = every (p + 1) (at z p)
     some None !z       = z
@@ -260,39 +268,43 @@ foldNear f z0 (Gathered _ k _ xs ys d2s) sel = case sel of
     some (Some p r) !z = some r (at z p)
 {-# INLINE foldNear #-}
 
--- A point of an index near a robot: its distance, its index and its
--- coordinates.
-data Near = Near !Double !Int !Double !Double
-
 -- The points (of an index) within the tracker's range, centre to centre
 -- (the distance as 'vector2RhoTheta' has it: the square root of the same
 -- sum of squares), nearest first, in index order among equally near ones
--- (as a stable sort of all of them by distance would have them). Sorted
--- in unboxed arrays, with no list or thunk per point: a packed world puts
+-- (as a stable sort of all of them by distance would have them), each
+-- made by @mk d j x y@ from its distance, its number in the index and its
+-- coordinates there, evaluated as its list cell is made. Sorted in
+-- unboxed arrays, with no list or thunk per point: a packed world puts
 -- 50 robots within range of each, and sorting them as a list (an
 -- insertion sort, then a lazy merge sort) was most of a sample's cost.
--- The list is then made as it is read.
-inRangeSorted :: Gathered -> [Near]
-inRangeSorted (Gathered grid n gjs _ _ gd2s) = case sorted of
+-- The list is then made as it is read, with no list in between.
+inRangeSorted :: (Double -> Int -> Double -> Double -> r) -> Gathered -> [r]
+inRangeSorted mk (Gathered grid n gjs gd2s) = case sorted of
   Sorted k ds js ->
     let build i
           | i >= k    = []
           | otherwise = let j = indexI js i
-                        in Near (indexD ds i) j (pointX grid j) (pointY grid j) : build (i + 1)
+                        in case mk (indexD ds i) j (pointX grid j) (pointY grid j) of
+                             !e -> e : build (i + 1)
     in build 0
   where
-    sorted = runST $ do
-      ds <- newDblArr (max 1 n)
-      js <- newIntArr (max 1 n) 0
-      let fill !p !c
-            | p >= n    = pure c
-            | otherwise =
-                let d = sqrt (indexD gd2s p)
-                in if d <= trackerRange then writeD ds c d >> writeI js c (indexI gjs p) >> fill (p + 1) (c + 1)
-                                        else fill (p + 1) c
-      k <- fill 0 0
-      (ds', js') <- sortKeys k ds js
-      Sorted k <$> freezeD ds' <*> freezeI js'
+    sorted = sortedInRange n gjs gd2s
+{-# INLINE inRangeSorted #-}
+
+-- The numbers and distances of 'inRangeSorted', in arrays.
+sortedInRange :: Int -> IntArr -> DblArr -> Sorted
+sortedInRange n gjs gd2s = runST $ do
+  ds <- newDblArr (max 1 n)
+  js <- newIntArr (max 1 n) 0
+  let fill !p !c
+        | p >= n    = pure c
+        | otherwise =
+            let d = sqrt (indexD gd2s p)
+            in if d <= trackerRange then writeD ds c d >> writeI js c (indexI gjs p) >> fill (p + 1) (c + 1)
+                                    else fill (p + 1) c
+  k <- fill 0 0
+  (ds', js') <- sortKeys k ds js
+  Sorted k <$> freezeD ds' <*> freezeI js'
 
 data Sorted = Sorted !Int !DblArr !IntArr
 
