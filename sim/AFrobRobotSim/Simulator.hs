@@ -139,12 +139,24 @@ instance Exception ControllerError where
 simulate :: DTime -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
 simulate dt = simulateWith defaultSimConfig { simDt = dt }
 
--- Per-robot bookkeeping that is not physics: its controller and odometry.
-data Agent = Agent
-  { agProps :: !SimbotProperties
-  , agCtrl  :: Either (SF SimbotInput SimbotOutput) (FutureSF SimbotInput SimbotOutput)
-  , agOdo   :: !(Position2, Heading)
-  }
+-- Per-robot bookkeeping that is not physics: its controller (before its
+-- first sample, or as it continues) and odometry. One record per robot
+-- and step, with no box around the controller or the reading: it is part
+-- of what the collector copies for every robot at every step.
+data Agent
+  = AgentNew { agProps :: !SimbotProperties
+             , agStart :: SF SimbotInput SimbotOutput
+             , agOdoPos :: !Position2
+             , agOdoHdg :: {-# UNPACK #-} !Heading }
+  | Agent    { agProps :: !SimbotProperties
+             , agFut   :: FutureSF SimbotInput SimbotOutput
+             , agOdoPos :: !Position2
+             , agOdoHdg :: {-# UNPACK #-} !Heading }
+
+-- What its odometry reads.
+agOdo :: Agent -> (Position2, Heading)
+agOdo a = (agOdoPos a, agOdoHdg a)
+{-# INLINE agOdo #-}
 
 data Engine = Engine
   { enStep   :: !Int
@@ -168,7 +180,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
     arena = arenaOf (simBounds cfg) world
     robots0 = [ mkRobot k (otRId o) (otPos o) (normalizeHeading (otHdng o)) 0 False 1
               | o <- world, Just k <- [robotKindOf o] ]
-    agents0 = [ Agent props (Left (ctrl props)) (rPos r, rHeading r)
+    agents0 = [ AgentNew props (ctrl props) (rPos r) (rHeading r)
               | r <- robots0
               , let props = SimbotProperties (rKind r) (rId r)
                     ctrl  = if rKind r == SimbotA then rcA else rcB ]
@@ -188,7 +200,8 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         -- messages and the next state, never the robots' positions now),
         -- with each robot and the plan of its move.
         (stepped, plans) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
-          (\i a -> stepAgent t a (senseRobot ctx i (agOdo a) key)) (planMove dt arena)
+          (\i a -> let !input = senseRobot ctx i (agOdo a) key in stepAgent t a input)
+          (planMove dt arena)
         snapshot = WorldState
           { wsTime     = t
           , wsRobots   = robotStates (enRobots en) (enAgents en)
@@ -208,13 +221,14 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
               en { enStep = n + 1, enRobots = robots', enBalls = balls', enAgents = agents'
                  , enKeys = keys', enRng = rng' }
 
-    stepAgent t a input =
-      let props = agProps a
-          res = case agCtrl a of
-            Left sf   -> evalAtZero sf input
-            Right fut -> evalAt fut dt input
-          forced (o, fut) = fut `seq` soDrive o `seq` forceList (soMessages o) `seq` (o, fut)
-      in blaming (blame props t) (forced res)
+    -- (the input made before: its record is cheap and cannot fail, and
+    -- passed unmade it was one more thunk per robot and step)
+    stepAgent t a input = blaming (blame (agProps a) t) (stepController a input)
+    stepController a input =
+      case (case a of
+              AgentNew { agStart = sf } -> evalAtZero sf input
+              Agent { agFut = fut }     -> evalAt fut dt input) of
+        res@(o, fut) -> fut `seq` soDrive o `seq` forceList (soMessages o) `seq` res
 
     blame props t (e :: SomeException) = case fromException e of
       Just (ce :: ControllerError) -> ce
@@ -229,7 +243,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
       { robotType = kindType (rKind r), robotId = rId r, robotPos = rPos r
       , robotHeading = rHeading r, robotSpeed = rSpeed r, robotStuck = rStuck r
       , robotBattery = batteryStatusOf (rCharge r), robotCharge = rCharge r
-      , robotOdometry = fst (agOdo a) }
+      , robotOdometry = agOdoPos a }
 
     noise = simOdometryNoise cfg
     -- Every agent's next state: its stepped controller and its odometry
@@ -248,7 +262,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
               turn     = normalizeAngle (rHeading r1 - rHeading r0)
               h'       = normalizeHeading (h + turn * (1 + noise * u2))
               d'       = vector2Rotate (h - rHeading r0) ((1 + noise * u1) *^ dTrue)
-          in go g2 rs0 rs1 as' st (Agent (agProps a) (Right fut) (p .+^ d', h') : acc)
+          in go g2 rs0 rs1 as' st (Agent (agProps a) fut (p .+^ d') h' : acc)
         go g _ _ _ _ acc = (reverse acc, g)
         -- (the pose taken out of the robot now: left as selections, it
         -- was a thunk or two per robot and step for the collector)
@@ -256,7 +270,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
           let !rest = exact as' rs st
               !p    = rPos r
               !h    = rHeading r
-          in Agent (agProps a) (Right fut) (p, h) : rest
+          in Agent (agProps a) fut p h : rest
         exact _ _ _ = []
 
 -- Every robot's controller step and the plan of its move, in template
