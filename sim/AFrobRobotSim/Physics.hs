@@ -164,7 +164,7 @@ stepRobotsNear near dt arena cmds = stepRobotsPlanned near [ (r, planMove dt are
 -- | What a robot's move in one step is before the other robots are
 -- considered: its motion, and the fraction of it at which it first touches
 -- a box (infinity for none).
-data Plan = Plan !Motion {-# UNPACK #-} !Double
+data Plan = Plan {-# UNPACK #-} !Motion {-# UNPACK #-} !Double
 
 -- | The plan of a robot's move under a command, in an arena (evaluated to
 -- weak head normal form, it is computed).
@@ -208,9 +208,18 @@ data Motion = Motion
   , mvTh1    :: !Double      -- heading at the end of the step
   , mvCos1   :: !Double      -- cos mvTh1
   , mvSin1   :: !Double      -- sin mvTh1
-  , mvDisp   :: !(Vector2 Double)
+  , mvDx     :: !Double      -- the displacement, unobstructed (see 'mvDisp')
+  , mvDy     :: !Double
   , mvCharge :: !Double      -- battery charge at the end of the step
   }
+
+-- The displacement a motion attempts. (Kept as two numbers in the record,
+-- not a vector: a plan is then one flat record, which lives from a
+-- robot's controller step to its move, across collections in a large
+-- world.)
+mvDisp :: Motion -> Vector2 Double
+mvDisp mv = Vector2 (mvDx mv) (mvDy mv)
+{-# INLINE mvDisp #-}
 
 robotMotion :: DTime -> Robot -> DriveCommand -> Motion
 robotMotion dt r cmd =
@@ -242,7 +251,8 @@ robotMotion dt r cmd =
               | otherwise = vector2 (vMean / w * (s1 - s0)) (vMean / w * (c0 - c1))
       effort  = (abs (v1 - w * l / 2) + abs (v1 + w * l / 2)) / (2 * kindWSMax k)
       charge1 = max 0 (rCharge r - dt * (0.0005 + 0.003 * effort))
-  in Motion v1 th1 c1 s1 disp charge1
+      Vector2 dx dy = disp
+  in Motion v1 th1 c1 s1 dx dy charge1
 
 -- The robot after its move, given the fraction of the move at which it
 -- first touches something (if it does).
