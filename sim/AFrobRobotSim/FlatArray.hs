@@ -23,6 +23,7 @@ module AFrobRobotSim.FlatArray
   , MIntArr
   , MDblArr
   , newIntArr
+  , newIntArrUnset
   , newLineIntArr
   , newDblArr
   , readI
@@ -57,6 +58,12 @@ newIntArr (I# n) (I# v) = ST $ \s -> case newByteArray# (n *# 8#) s of
     setIntArray a i m x s
       | isTrue# (i >=# m) = s
       | otherwise         = setIntArray a (i +# 1#) m x (writeIntArray# a i x s)
+
+-- | A new array of @n@ 'Int's whose contents are unspecified, for a
+-- caller that writes every entry before it reads it (no pass to set them).
+newIntArrUnset :: Int -> ST s (MIntArr s)
+newIntArrUnset (I# n) = ST $ \s -> case newByteArray# (n *# 8#) s of
+  (# s1, a #) -> (# s1, MIntArr a #)
 
 -- | 'newIntArr', its first element at the start of a 64-byte cache line
 -- (pinned: it never moves), so that each run of 8 elements from a multiple

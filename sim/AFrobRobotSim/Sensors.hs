@@ -207,7 +207,7 @@ gatherNear grid skip px py = runST $ do
       tr  = gatherRange
       cap | n <= 32   = n
           | otherwise = pointsInCellsOf grid (px - tr) (py - tr) (px + tr) (py + tr)
-  js  <- newIntArr (max 1 cap) 0
+  js  <- newIntArrUnset (max 1 cap)
   d2s <- newDblArr (max 1 cap)
   let add !c j
         | j == skip = pure c
@@ -295,7 +295,7 @@ inRangeSorted mk (Gathered grid n gjs gd2s) = case sorted of
 sortedInRange :: Int -> IntArr -> DblArr -> Sorted
 sortedInRange n gjs gd2s = runST $ do
   ds <- newDblArr (max 1 n)
-  js <- newIntArr (max 1 n) 0
+  js <- newIntArrUnset (max 1 n)
   let fill !p !c
         | p >= n    = pure c
         | otherwise =
@@ -318,7 +318,7 @@ sortKeys k ds js = do
   runs 0
   if k <= 8 then pure (ds, js) else do
     ds2 <- newDblArr k
-    js2 <- newIntArr k 0
+    js2 <- newIntArrUnset k
     let pass !w sd sj td tj
           | w >= k    = pure (sd, sj)
           | otherwise = do

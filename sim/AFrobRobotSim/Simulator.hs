@@ -289,7 +289,7 @@ stepEvery ready agents robots stepOne planOne
                 (concatMap chunkSteps chunks, concatMap chunkPlans chunks)
   where
     n    = length robots
-    caps = capabilitiesNow n
+    caps = capabilitiesNow agents   -- (not n: one capability needs no count)
     size = max minChunk ((n + 4 * caps - 1) `div` (4 * caps))
     chunks = cut 0 agents robots
     cut !i as rs

@@ -232,7 +232,7 @@ pointIndex dx0 dy0 dx1 dy1 pts = runST $ do
       cellAt x y = cellOf gy cs ny y * nx + cellOf gx cs nx x
   xs <- newDblArr (max 1 n)
   ys <- newDblArr (max 1 n)
-  cellOfPt <- newIntArr (max 1 n) 0
+  cellOfPt <- newIntArrUnset (max 1 n)
   -- One pass over the list: the coordinates and each point's cell (-1 for
   -- a point that is not finite); the points that are not finite, in order.
   let scan !_ [] wild = pure (reverse wild)
