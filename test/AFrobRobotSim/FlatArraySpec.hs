@@ -127,6 +127,20 @@ spec = do
                      , model [ (i, v) | i <- [0 .. n - 1] ] (rights ws) )
           in fresh === (replicate n u, replicate n v) .&&. written === want .&&. frozen === want
 
+  describe "newIntArrUnset" $
+    it "holds, once every element is written, the last value written to each, frozen or not" $
+      property $ forAll (chooseInt (0, 40)) $ \n -> forAll (vectorOf n genInt) $ \us ->
+        forAll (genWrites genInt n) $ \ws ->
+          let (written, frozen) = runST $ do
+                a <- newIntArrUnset n
+                mapM_ (uncurry (writeI a)) (zip [0 ..] us)
+                mapM_ (uncurry (writeI a)) [ w | Left w <- ws ]
+                r <- mapM (readI a) [0 .. n - 1]
+                f <- freezeI a
+                pure (r, map (indexI f) [0 .. n - 1])
+              want = model (zip [0 ..] us) (lefts ws)
+          in written === want .&&. frozen === want
+
   describe "newDblArr, readD, writeD, freezeD, indexD" $
     it "hold the last value written to each element, bit for bit (NaN, -0 and infinities too), frozen or not" $
       property $ forAll (chooseInt (0, 40)) $ \n ->
