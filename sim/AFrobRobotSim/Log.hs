@@ -75,7 +75,7 @@ import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
-import           AFrobRobotSim.WorldFile.Lexical (cannotRead, decodeUtf8, readFileUpTo, utf8Error)
+import           AFrobRobotSim.WorldFile.Lexical (cannotRead, decodeUtf8, displayPath, readFileUpTo, utf8Error)
 
 -- | What a log needs besides the states: the world and how it was run.
 data LogConfig = LogConfig
@@ -392,10 +392,12 @@ readLogFileUpTo cap path = do
   r <- readFileUpTo cap path
   pure $ case r of
     Left e             -> Left (cannotRead path e)
-    Right Nothing      -> Left (path ++ ": more than " ++ show cap ++ " bytes, more than a log is read (write a"
+    Right Nothing      -> Left (name ++ ": more than " ++ show cap ++ " bytes, more than a log is read (write a"
                                 ++ " shorter run, or fewer frames with --fps)")
     Right (Just bytes) -> case utf8Error bytes of
-          Just (l, c, b) -> Left (path ++ ":" ++ show l ++ ":" ++ show c
+          Just (l, c, b) -> Left (name ++ ":" ++ show l ++ ":" ++ show c
                                   ++ ": not UTF-8 text (byte " ++ show b ++ ")")
-          Nothing        -> readLogAt (\i mc -> path ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": ")
+          Nothing        -> readLogAt (\i mc -> name ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": ")
                                       (decodeUtf8 bytes)
+  where
+    name = displayPath path   -- (a name with control characters escaped)

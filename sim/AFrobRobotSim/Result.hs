@@ -1,4 +1,5 @@
-{-# LANGUAGE BangPatterns #-}
+{-# LANGUAGE BangPatterns        #-}
+{-# LANGUAGE ScopedTypeVariables #-}
 -- |
 -- Module      : AFrobRobotSim.Result
 -- Description : A run's result line (@--result FILE@) and the parameters
@@ -49,7 +50,8 @@ module AFrobRobotSim.Result
   , resultJSON
   ) where
 
-import           Data.List            (foldl', isInfixOf)
+import           Control.Exception    (SomeException, displayException, evaluate, try)
+import           Data.List            (foldl')
 import           System.Environment   (getArgs, getProgName)
 import           System.Exit          (ExitCode (..), exitWith)
 import           System.IO            (hPutStrLn, stderr)
@@ -94,43 +96,100 @@ paramOr name def = do
   mv <- lookupSimParam name
   case mv of
     Nothing -> pure def
-    Just v  -> case readSimParam name v of
-      Right x  -> pure x
-      Left msg -> do
-        prog <- getProgName
-        hPutStrLn stderr (prog ++ ": " ++ msg)
-        exitWith (ExitFailure 2)
+    Just v  -> do
+      r <- try (evaluate (readSimParam name v))
+      case r of
+        Right (Right x)  -> pure x
+        Right (Left msg) -> refuse msg
+        Left (e :: SomeException) ->
+          refuse ("--param " ++ name ++ "=" ++ v ++ ": the value " ++ show v ++ " cannot be made: "
+                  ++ displayException e)
+  where
+    refuse msg = do
+      prog <- getProgName
+      hPutStrLn stderr (prog ++ ": " ++ msg)
+      exitWith (ExitFailure 2)
 
 -- | @readSimParam name text@: a @--param name=text@'s value, as
 -- 'paramOr' reads it, or the message it stops the program with. The
 -- value is read with 'Read', and refused when it does not read, or when
--- it reads but the type cannot hold it: an integer that a bounded type
--- (such as 'Int' or 'Data.Word.Word8') would wrap around (its 'Show'
--- then names another integer), or a number too large for a 'Double'
--- (which would read as @Infinity@ although the text does not say so).
--- Reading never wraps silently:
+-- it reads but the type cannot hold a number written in it: an integer
+-- that a bounded type (such as 'Int' or 'Data.Word.Word8') wraps around,
+-- or a number too large for a 'Double' or 'Float', which reads as
+-- @Infinity@ although the text does not say so. The numbers are checked
+-- wherever they are in the value (@[1,2,300]@ for a @[Word8]@,
+-- @Just 300@, a record's field): the numbers the value's 'Show' writes
+-- are paired, in order, with those of the text, and an integer (or a
+-- ratio @a % b@) must be written back as the same number, infinity only
+-- where the text has it. (A value that 'Show' writes with another count
+-- of numbers than the text has is not checked.) A fraction that a
+-- 'Double' rounds is not refused. Reading never wraps silently:
 --
 -- >>> readSimParam "n" "300" :: Either String Int
 -- Right 300
--- >>> either (const "refused") show (readSimParam "n" "300" :: Either String Word8)
+-- >>> either (const "refused") show (readSimParam "n" "[1,2,300]" :: Either String [Word8])
 -- "refused"
+--
+-- The result is evaluated as far as that check needs: a value whose
+-- 'Show' raises an exception (@1 % 0@ for a 'Rational') raises it here
+-- ('paramOr' reports it).
 readSimParam :: (Read a, Show a) => String -> String -> Either String a
 readSimParam name v = case readMaybe v of
   Nothing -> Left (flag ++ ": cannot read the value " ++ show v
                    ++ " (write it as Haskell's read reads it: 0.5, 3, True, \"quoted text\")")
   Just x
-    | wrapped x || overflowed x ->
+    | not (numeralsHeld (numerals v) (numerals (show x))) ->
         Left (flag ++ ": the value " ++ show v ++ " is out of range for this parameter (it would read as "
               ++ show x ++ ")")
     | otherwise -> Right x
   where
     flag = "--param " ++ name ++ "=" ++ v
-    -- an integer written, another integer read back
-    wrapped x = case (readMaybe v :: Maybe Integer, readMaybe (show x) :: Maybe Integer) of
-      (Just written, Just got) -> written /= got
-      _                        -> False
-    -- infinity read from a text that does not ask for it
-    overflowed x = show x `elem` ["Infinity", "-Infinity"] && not ("Infinity" `isInfixOf` v)
+
+-- A number in a text, as Haskell's lexer reads it: an integer (decimal,
+-- hexadecimal or octal, with a minus sign before it), a ratio @a % b@,
+-- infinity, or any other floating-point number.
+data Numeral = Whole Integer | Ratio Rational | Infinite | Floating
+            | PercentSign   -- (while lexing: the @%@ of a ratio)
+  deriving (Eq)
+
+-- The numbers of a text, in order (nothing inside a quoted string or
+-- character counts: those are single tokens that are not numbers).
+numerals :: String -> [Numeral]
+numerals = ratios . numbersIn . tokens
+  where
+    tokens t = case lex t of
+      [("", _)]    -> []
+      [(tok, rest)] -> tok : tokens rest
+      _            -> []
+    numbersIn ("-" : tok : toks)
+      | Just n <- readMaybe tok :: Maybe Integer = Whole (negate n) : numbersIn toks
+    numbersIn (tok : toks)
+      | Just n <- readMaybe tok :: Maybe Integer = Whole n : numbersIn toks
+      | tok == "Infinity"                        = Infinite : numbersIn toks
+      | Just _ <- readMaybe tok :: Maybe Double  = Floating : numbersIn toks
+      | tok == "%"                               = PercentSign : numbersIn toks
+      | otherwise                                = numbersIn toks
+    numbersIn [] = []
+    ratios (Whole a : PercentSign : Whole b : ns)
+      | b /= 0 = Ratio (fromInteger a / fromInteger b) : ratios ns
+    ratios (PercentSign : ns) = ratios ns
+    ratios (n : ns)           = n : ratios ns
+    ratios []                 = []
+
+-- Whether the numbers written back ('show') hold those written: paired in
+-- order when there are as many, an integer or ratio must come back as
+-- the same number, and infinity only from infinity.
+numeralsHeld :: [Numeral] -> [Numeral] -> Bool
+numeralsHeld written shown
+  | length written /= length shown = True
+  | otherwise                      = and (zipWith held written shown)
+  where
+    held (Whole a) (Whole b) = a == b
+    held (Whole a) (Ratio b) = fromInteger a == b
+    held (Ratio a) (Ratio b) = a == b
+    held (Ratio a) (Whole b) = a == fromInteger b
+    held w         Infinite  = w == Infinite
+    held _         _         = True
 
 -- | What the result line keeps of one robot while the run goes: strict,
 -- so its memory is constant however long the run.

@@ -198,8 +198,9 @@ parseWorld file = fmap (map snd) . parseNumbered file
 
 -- | 'parseWorld', each object with its line number.
 parseNumbered :: FilePath -> String -> Either String [(Int, ObjectTemplate)]
-parseNumbered file = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . lines . dropBom
+parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . lines . dropBom
   where
+    file = displayPath name   -- (control characters escaped in messages)
     dropBom ('\xFEFF' : r) = r
     dropBom r              = r
     -- k objects so far; the line of the size, if one was given
@@ -273,11 +274,12 @@ checkLine l = case [ c | (c, ch) <- zip [1 ..] (take (maxLineLength + 1) l), ch 
 -- w.world:2: SimbotA 1 at (0.1, 0.0) (line 2) overlaps block at (0.0, 0.0) (line 1)
 -- @
 readWorldBytes :: FilePath -> B.ByteString -> Either String WorldTemplate
-readWorldBytes file bytes = case utf8Error bytes of
+readWorldBytes name bytes = case utf8Error bytes of
   Just (l, c, b) -> Left (file ++ ":" ++ show l ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
                           ++ (if b < 16 then "0" else "") ++ showHex b ")")
   Nothing        -> parseNumbered file (decodeUtf8 bytes) >>= check
   where
+    file = displayPath name   -- (control characters escaped in messages)
     check numbered =
       let lineOf = M.fromList (zip [0 :: Int ..] (map fst numbered))
           labelled = [ (" (line " ++ show n ++ ")", o) | (n, o) <- numbered ]
@@ -298,7 +300,7 @@ readWorldFile path = do
   r <- readFileUpTo maxFileBytes path
   pure $ case r of
     Left e         -> Left (cannotRead path e)
-    Right Nothing  -> Left (path ++ ": more than " ++ show maxFileBytes ++ " bytes (is this a world file?)")
+    Right Nothing  -> Left (displayPath path ++ ": more than " ++ show maxFileBytes ++ " bytes (is this a world file?)")
     Right (Just s) -> readWorldBytes path s
 
 -- | The longest file 'readWorldFile' reads, in bytes: 16 MiB ('renderWorld'

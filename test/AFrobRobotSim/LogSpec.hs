@@ -2,6 +2,7 @@
 -- run goes.
 module AFrobRobotSim.LogSpec (spec) where
 
+import           Data.Char                (isPrint)
 import           Data.List                (isInfixOf, isPrefixOf, stripPrefix)
 import           Test.QuickCheck          (Gen, choose, elements, forAll, listOf, oneof, property)
 import           Text.Printf              (printf)
@@ -156,6 +157,17 @@ spec = do
       removeFile path
       fmap (const ()) r1 `shouldBe` Left (path ++ ":4:17: expected ',' or '}', found end of input")
       fmap (const ()) r2 `shouldBe` Left (path ++ ":4: a second header")
+    it "readLogFile names a log with control characters in its name escaped, whatever the fault" $ withTempDir $ \dir -> do
+      let bad = dir </> "bad\ESC[1mlog\n.jsonl"
+      writeFile bad "{\"bad\"\n"
+      r1 <- readLogFile bad
+      r2 <- readLogFile (dir </> "no\ESC[31msuch.jsonl")
+      writeFile bad (replicate 300 'x')
+      r3 <- readLogFileUpTo 200 bad
+      let printable = either (\m -> all isPrint m && "\\ESC[" `isInfixOf` m) (const False)
+      r1 `shouldSatisfy` printable
+      r2 `shouldSatisfy` printable
+      r3 `shouldSatisfy` printable
     it "readLogFile reads at most so many bytes, and says so of a longer or endless file" $ withTempDir $ \dir -> do
       let path = dir </> "run.jsonl"
       writeFile path (replicate 300 'x')

@@ -7,6 +7,7 @@ module AFrobRobotSim.SweepSpec (spec, childVariable, child) where
 
 import           Control.Monad       (forM, forM_, unless)
 import           Data.Int            (Int8)
+import           Data.Ratio          (Ratio, (%))
 import           Data.List           (isInfixOf, isPrefixOf, sort)
 import           Data.Word           (Word8)
 import           System.Directory    (doesFileExist, findExecutable, getPermissions, makeAbsolute,
@@ -39,6 +40,7 @@ child "program" = do
   args <- getArgs
   speed  <- paramOr "speed" (0.1 :: Double)
   failAt <- paramOr "failAt" (1 / 0 :: Double)
+  _      <- paramOr "ratio" (0 :: Rational)   -- read, for the test of a value that cannot be made
   let seed = case parseSimArgs defaultSimOptions args of
         Right (RunWith o) -> optSeed o
         _                 -> 0
@@ -208,6 +210,32 @@ spec = do
       (readSimParam "s" "\"text\"" :: Either String String) `shouldBe` Right "text"
       (readSimParam "b" "True" :: Either String Bool) `shouldBe` Right True
       (readSimParam "n" "fast" :: Either String Int) `shouldSatisfy` either ("cannot read the value \"fast\"" `isInfixOf`) (const False)
+    it "readSimParam: a number the type cannot hold is refused wherever it is in the value" $ do
+      let refused :: Either String b -> Bool
+          refused = either ("out of range" `isInfixOf`) (const False)
+      (readSimParam "p" "[1,2,300]" :: Either String [Word8]) `shouldSatisfy` refused
+      (readSimParam "p" "(300,1)" :: Either String (Word8, Int)) `shouldSatisfy` refused
+      (readSimParam "p" "Just 99999999999999999999" :: Either String (Maybe Int)) `shouldSatisfy` refused
+      (readSimParam "p" "300 % 1" :: Either String (Ratio Word8)) `shouldSatisfy` refused
+      (readSimParam "p" "[1e400]" :: Either String [Double]) `shouldSatisfy` refused
+      (readSimParam "p" "Just (-1e400)" :: Either String (Maybe Double)) `shouldSatisfy` refused
+      (readSimParam "p" "1e39" :: Either String Float) `shouldSatisfy` refused
+      -- and what fits is read as it is
+      (readSimParam "p" "[-128,127]" :: Either String [Int8]) `shouldBe` Right [-128, 127]
+      (readSimParam "p" "Just (-5)" :: Either String (Maybe Int)) `shouldBe` Right (Just (-5))
+      (readSimParam "p" "(-5)" :: Either String Int) `shouldBe` Right (-5)
+      (readSimParam "p" "6 % 8" :: Either String Rational) `shouldBe` Right (3 % 4)
+      (readSimParam "p" "[3, 12345678901234567891]" :: Either String [Double]) `shouldBe` Right [3, 12345678901234567891]
+      (readSimParam "p" "[\"1\",\"300\"]" :: Either String [String]) `shouldBe` Right ["1", "300"]
+      (readSimParam "p" "[Infinity,-Infinity,2]" :: Either String [Double]) `shouldBe` Right [1 / 0, -1 / 0, 2]
+      (readSimParam "p" "0xFF" :: Either String Word8) `shouldBe` Right 255
+      (readSimParam "p" "[1.5, 2]" :: Either String [Double]) `shouldBe` Right [1.5, 2]
+    it "paramOr: a value that cannot be made (1 % 0) stops the program, naming it" $ withTempDir $ \dir -> do
+      (code, err, line) <- runOnce dir ["--seconds", "1", "--param", "ratio=1 % 0"]
+      code `shouldBe` ExitFailure 2
+      err `shouldSatisfy` ("--param ratio=1 % 0: the value \"1 % 0\" cannot be made" `isInfixOf`)
+      length (lines err) `shouldBe` 1
+      line `shouldBe` ""
     it "paramOr: a value out of range stops the program before it runs, naming it" $ withTempDir $ \dir -> do
       (code, err, line) <- runOnce dir ["--seconds", "1", "--param", "speed=1e999"]
       code `shouldBe` ExitFailure 2

@@ -18,6 +18,7 @@ import           AFRP.Geometry          (Point2 (..))
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
 import           AFrobRobotSim.WorldFile.Lexical (displayPath, ioErrorText)
+import           TestUtil (withTempDir)
 
 ------------------------------------------------------------------------------
 -- Helpers
@@ -517,6 +518,14 @@ spec = do
       displayPath "x\ESC[2Jy" `shouldBe` "\"x\\ESC[2Jy\""
     it "displayPath never lets a character that does not print through" $ property $ \f ->
       all isPrint (displayPath f)
+    it "readWorldFile: a file that cannot be read, or does not parse, is named with its controls escaped" $
+      withTempDir $ \dir -> do
+        r <- readWorldFile "no\ESC[31msuch\nfile"
+        r `shouldSatisfy` either (\m -> all isPrint m && "\\ESC[31msuch\\nfile" `isInfixOf` m) (const False)
+        let bad = dir </> "bad\ESC[1mworld"
+        writeFile bad "block 1\n"
+        r2 <- readWorldFile bad
+        r2 `shouldSatisfy` either (\m -> all (\c -> isPrint c || c == '\n') m && "\\ESC[1mworld" `isInfixOf` m) (const False)
     it "ioErrorText: an I/O failure naming a file with a newline is one printable line" $ do
       r <- try (readFile "/no/such/dir/a\nb")
       case r of

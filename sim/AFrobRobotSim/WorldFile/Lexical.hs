@@ -166,7 +166,7 @@ ioErrorText e = foldr esc "" (show e)
 -- @FILE: cannot read it: does not exist (No such file or directory)@
 -- rather than @FILE: openBinaryFile: does not exist (No such file or directory)@.
 cannotRead :: FilePath -> IOException -> String
-cannotRead path e = path ++ ": cannot read it: " ++ show (ioeGetErrorType e) ++ reason
+cannotRead path e = displayPath path ++ ": cannot read it: " ++ show (ioeGetErrorType e) ++ reason
   where
     reason = case ioe_description e of
       "" -> ""
