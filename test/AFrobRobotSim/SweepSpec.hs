@@ -51,6 +51,19 @@ child "program" = do
   runSim (Just world) ctl ctl
 child other = ioError (userError ("unknown child " ++ show other))
 
+-- The program run with a @--param@ that 'paramOr' refuses: a usage error,
+-- as a malformed command line is (exit 2, one line naming the parameter
+-- and its value, no GHC "user error" wrapping), before anything is run
+-- (no result line).
+stopsForParam :: String -> String -> Expectation
+stopsForParam param message = withTempDir $ \dir -> do
+  (code, err, line) <- runOnce dir ["--seconds", "1", "--param", param]
+  code `shouldBe` ExitFailure 2
+  err `shouldSatisfy` (message `isInfixOf`)
+  err `shouldNotSatisfy` ("user error" `isInfixOf`)
+  length (lines err) `shouldBe` 1
+  line `shouldBe` ""
+
 -- A script in @dir@ that starts this test binary as the given child.
 childScript :: FilePath -> String -> IO FilePath
 childScript dir what = do
@@ -179,15 +192,8 @@ spec = do
     it "rejects a value without a name or an =" $ do
       parseSimArgs defaultSimOptions ["--param", "speed"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
       parseSimArgs defaultSimOptions ["--param", "=1"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
-    it "paramOr: a value that does not read stops the program before it runs, naming it" $ withTempDir $ \dir -> do
-      (code, err, line) <- runOnce dir ["--seconds", "1", "--param", "speed=fast"]
-      -- a usage error, as a malformed command line: exit 2, one line
-      -- naming the parameter and its value, no GHC "user error" wrapping
-      code `shouldBe` ExitFailure 2
-      err `shouldSatisfy` ("--param speed=fast: cannot read the value \"fast\"" `isInfixOf`)
-      err `shouldNotSatisfy` ("user error" `isInfixOf`)
-      length (lines err) `shouldBe` 1
-      line `shouldBe` ""
+    it "paramOr: a value that does not read stops the program before it runs, naming it" $
+      stopsForParam "speed=fast" "--param speed=fast: cannot read the value \"fast\""
 
     it "readSimParam: a value the type cannot hold is refused, never wrapped" $ do
       -- integers that a bounded type would wrap around
@@ -230,18 +236,10 @@ spec = do
       (readSimParam "p" "[Infinity,-Infinity,2]" :: Either String [Double]) `shouldBe` Right [1 / 0, -1 / 0, 2]
       (readSimParam "p" "0xFF" :: Either String Word8) `shouldBe` Right 255
       (readSimParam "p" "[1.5, 2]" :: Either String [Double]) `shouldBe` Right [1.5, 2]
-    it "paramOr: a value that cannot be made (1 % 0) stops the program, naming it" $ withTempDir $ \dir -> do
-      (code, err, line) <- runOnce dir ["--seconds", "1", "--param", "ratio=1 % 0"]
-      code `shouldBe` ExitFailure 2
-      err `shouldSatisfy` ("--param ratio=1 % 0: the value \"1 % 0\" cannot be made" `isInfixOf`)
-      length (lines err) `shouldBe` 1
-      line `shouldBe` ""
-    it "paramOr: a value out of range stops the program before it runs, naming it" $ withTempDir $ \dir -> do
-      (code, err, line) <- runOnce dir ["--seconds", "1", "--param", "speed=1e999"]
-      code `shouldBe` ExitFailure 2
-      err `shouldSatisfy` ("--param speed=1e999: the value \"1e999\" is out of range" `isInfixOf`)
-      length (lines err) `shouldBe` 1
-      line `shouldBe` ""
+    it "paramOr: a value that cannot be made (1 % 0) stops the program, naming it" $
+      stopsForParam "ratio=1 % 0" "--param ratio=1 % 0: the value \"1 % 0\" cannot be made"
+    it "paramOr: a value out of range stops the program before it runs, naming it" $
+      stopsForParam "speed=1e999" "--param speed=1e999: the value \"1e999\" is out of range"
 
   describe "--result" $ do
     it "writes one JSON line with the settings and the outcome; the parameter reaches the controller" $ withTempDir $ \dir -> do
