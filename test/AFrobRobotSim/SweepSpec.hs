@@ -340,3 +340,49 @@ spec = do
       table `shouldSatisfy` ("FAILED seed 2: the controller of SimbotA 1 failed at t = 0.500" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 3: exit code 2, no result" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 4: exit code 1: " `isInfixOf`)
+
+    it "reads --shard and --seeds in decimal (010 is ten), and refuses what would run the wrong jobs" $ withTempDir $ \dir -> do
+      sweep <- script "sweep"
+      sbatch <- script "sweep.sbatch"
+      let listed args = do
+            (code, out, _) <- runScriptCode [] sweep ("--list" : args)
+            pure (code, lines out)
+      listed ["--seeds", "0..11", "--shard", "1/08"] `shouldReturn` (ExitSuccess, ["--seed 1", "--seed 9"])
+      listed ["--seeds", "0..11", "--shard", "0/010"] `shouldReturn` (ExitSuccess, ["--seed 0", "--seed 10"])
+      listed ["--seeds", "008..010"] `shouldReturn` (ExitSuccess, ["--seed 8", "--seed 9", "--seed 10"])
+      -- refused with exit code 2 and a message: a range too long to list,
+      -- an empty job list, -j that is not a number, a flag after -- with a
+      -- space (runs' flags are split on spaces), a results file in no folder
+      let refused args what = do
+            (code, _, err) <- runScriptCode [] sweep args
+            (code, what `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
+      refused ["--list", "--seeds", "0..9999999999"] "more than a million seeds"
+      refused ["--seeds", "5..1", "prog", dir </> "r.jsonl"] "the job list is empty"
+      refused ["-j", "abc", "prog", dir </> "r.jsonl"] "-j expects a number"
+      refused ["prog", dir </> "r.jsonl", "--", "--world", "a b.world"] "cannot hold a space"
+      prog <- childScript dir "program"
+      refused [prog, dir </> "no" </> "r.jsonl"] "no folder"
+      -- a job array with a step would skip shards
+      (code, _, err) <- runScriptCode [ ("SLURM_ARRAY_TASK_ID", "2"), ("SLURM_ARRAY_TASK_COUNT", "4")
+                                      , ("SLURM_ARRAY_TASK_MIN", "0"), ("SLURM_ARRAY_TASK_MAX", "6") ]
+                                      sbatch [dir </> "out", prog, "--seeds", "0..7"]
+      (code, "not contiguous" `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
+
+    it "counts as failed only the runs that failed, keeps job lines unexpanded, writes valid lines for odd seeds" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      -- files a job line's * would match, were it expanded as a pattern
+      writeFile (dir </> "k=yyy") ""
+      writeFile (dir </> "k=zzz") ""
+      writeFile (dir </> "jobs") (unlines
+        [ "--seed 1 --param failure=nan", "--seed 2 --param k=*", "--seed 007 --no-such-flag" ])
+      (code, _, err) <- readCreateProcessWithExitCode
+        (proc "bash" [sweep, "--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "1"]) { cwd = Just dir } ""
+      (code, "3 runs, 1 failed" `isInfixOf` err) `shouldBe` (ExitFailure 1, True)
+      ls <- lines <$> readFile (dir </> "r.jsonl")
+      map (field ["params"] . parsed) (take 2 ls)
+        `shouldBe` [JObject [("failure", JString "nan")], JObject [("k", JString "*")]]
+      field ["seed"] (parsed (ls !! 2)) `shouldBe` JString "007"
+      table <- merged dir [dir </> "r.jsonl"]
+      table `shouldSatisfy` ("FAILED seed \"007\": exit code 2, no result" `isInfixOf`)
