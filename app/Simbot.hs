@@ -16,7 +16,7 @@ import           System.IO          (hPutStr, stderr)
 import           AFrob
 import           AFrobRobotSim
 import           AFrobRobotSim.Replay (writeReplayFromLog)
-import           AFrobRobotSim.WorldFile.Lexical (displayPath)
+import           AFrobRobotSim.WorldFile.Lexical (displayPath, endOutput)
 import           Paper.Section3     (rcAlign, rcFollowLeftWall, rcMoveTo, rcReverse)
 
 main :: IO ()
@@ -37,6 +37,7 @@ replayFrom args = do
     go failWith f o = do
       r <- writeReplayFromLog f o
       either failWith (const (putStrLn ("wrote " ++ displayPath o))) r   -- the message names the file
+      getProgName >>= endOutput
 
 -- | The SimbotA demos, by id.
 demoA :: SimbotController

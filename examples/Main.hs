@@ -12,6 +12,7 @@ import           System.Exit        (ExitCode (..), exitWith)
 import           System.IO          (hPutStrLn, stderr)
 
 import           AFrobRobotSim
+import           AFrobRobotSim.WorldFile.Lexical (endOutput)
 import           Examples.Registry  (allExamples, exampleListing)
 import           Examples.Types
 
@@ -19,6 +20,11 @@ main :: IO ()
 main = do
   args <- getArgs
   prog <- getProgName
+  run prog args
+  endOutput prog   -- (what was printed reached standard output, or exit code 1)
+
+run :: String -> [String] -> IO ()
+run prog args =
   case args of
     []             -> usageError prog "give an example name, or --list"
     ["--list"]     -> putStr (exampleListing allExamples)

@@ -78,7 +78,8 @@ import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
-import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, displayPath, ioErrorText)
+import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, displayPath, endOutput, flushStdout, ioErrorText,
+                                                  printableLine, tolerantOutput)
 
 -- | Run a simbot program with the settings of the command line. 'Nothing'
 -- runs the built-in default world ("AFrobRobotSim.DefaultWorld").
@@ -86,17 +87,19 @@ import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, displayPath, io
 -- standard error with exit code 2.
 runSim :: Maybe WorldTemplate -> SimbotController -> SimbotController -> IO ()
 runSim mworld rcA rcB = do
+  tolerantOutput
   args <- getArgs
   prog <- getProgName
   case parseSimArgs defaultSimOptions args of
     Left err       -> failWith 2 (prog ++ ": " ++ err)
-    Right ShowHelp -> putStrLn (usage prog)
+    Right ShowHelp -> putStrLn (usage prog) >> endOutput prog
     Right (RunWith opts) -> runSimWith opts mworld rcA rcB
 
 -- | Run a simbot program with settings given in code (the command line is
 -- not read; the log's header records the program's real arguments).
 runSimWith :: SimOptions -> Maybe WorldTemplate -> SimbotController -> SimbotController -> IO ()
 runSimWith opts mworld rcA rcB = do
+  tolerantOutput   -- (a message the terminal's encoding cannot write must not stop the run)
   prog  <- getProgName
   world <- case optWorldFile opts of
     Just file -> readWorldFile file >>= either (\e -> failWith 2 (prog ++ ": " ++ e)) pure
@@ -105,7 +108,7 @@ runSimWith opts mworld rcA rcB = do
     Left errs -> failWith 2 (unlines ((prog ++ ": the world is invalid:") : map ("  " ++) errs))
     Right ()  -> pure ()
   if optDumpWorld opts
-    then putStr (renderWorld world)
+    then putStr (renderWorld world) >> endOutput prog
     else do
       (errs, ffmpeg) <- preflight (worldBounds world) opts
       unless (null errs) $
@@ -237,9 +240,12 @@ instance Monoid Outcome where
 stepOnly :: (Int -> WorldState -> IO ()) -> Sink
 stepOnly f = Sink f (const (pure mempty))
 
--- The robots' console messages, printed as they happen.
+-- The robots' console messages, printed as they happen, each on its own
+-- line with what does not print (an escape sequence, a newline) escaped
+-- ('printableLine'; the log and the replay page keep them as they are).
 messagesSink :: Sink
-messagesSink = stepOnly $ \_ s -> unless (null (wsMessages s)) (mapM_ putStrLn (wsMessages s) >> hFlush stdout)
+messagesSink = stepOnly $ \_ s -> unless (null (wsMessages s))
+  (mapM_ (putStrLn . printableLine) (wsMessages s) >> hFlush stdout)
 
 -- The progress line on a terminal.
 progressSink :: Int -> IORef Int -> Sink
@@ -438,12 +444,14 @@ simulateRun prog opts ffmpeg world rcA rcB = do
        Finished      -> "" :: String)
     simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
   unless (optQuiet opts) (mapM_ putStrLn wrote)
-  hFlush stdout
+  -- (the summary written, or said to be lost: a full disk is not success)
+  outErrs <- maybe [] pure <$> flushStdout
   videoErrs <- case (ending, optVideo opts) of
     -- (the checks before the run made sure ffmpeg is there when --video is given)
     (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe file
     _                                                      -> pure []
-  let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs ++ videoErrs)
+  let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs
+                                         ++ outErrs ++ videoErrs)
   unless (null allErrs) (putErr (unlines allErrs))
   case ending of
     Interrupted -> exitWith (ExitFailure 130)

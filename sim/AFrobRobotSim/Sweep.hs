@@ -20,7 +20,7 @@ module AFrobRobotSim.Sweep
   ) where
 
 import           Control.Exception   (try)
-import           Data.Either         (partitionEithers)
+import qualified Data.ByteString     as B
 import           Data.List           (nub, sort, sortOn)
 import           Data.Maybe          (fromMaybe)
 import           System.Environment  (getArgs)
@@ -29,7 +29,8 @@ import           System.IO           (hPutStrLn, stderr)
 import           Text.Printf         (printf)
 
 import           AFrobRobotSim.JSON
-import           AFrobRobotSim.WorldFile.Lexical (displayPath, ioErrorText)
+import           AFrobRobotSim.WorldFile.Lexical (decodeUtf8, displayPath, endOutput, ioErrorText, tolerantOutput,
+                                                  utf8Error)
 
 -- One run as the table needs it.
 data Run = Run
@@ -120,15 +121,29 @@ table heading mine =
 -- given); exit code 1 with the message when a line is not a result.
 sweepMergeMain :: IO ()
 sweepMergeMain = do
+  tolerantOutput
   args <- getArgs
-  texts <- if null args then (: []) <$> getContents else mapM readOrExit args
-  let (errs, tables) = partitionEithers [ mergeResults (concatMap ensureNewline texts) ]
-  mapM_ putStr tables
-  mapM_ (hPutStrLn stderr . ("afrp-sweep-merge: " ++)) errs
-  if null errs then pure () else exitWith (ExitFailure 1)
+  -- (each input read as UTF-8 whatever the locale, and checked to be so)
+  inputs <- if null args then (:[]) . (,) "standard input" <$> B.getContents
+            else mapM (\f -> (,) (displayPath f) <$> readOrExit f) args
+  texts <- mapM decoded inputs
+  let merged = mergeResults (concatMap (ensureNewline . snd) texts)
+      -- a fault located in its own file: the first file that fails alone
+      located e = case [ name ++ ": " ++ e' | (name, t) <- texts, Left e' <- [mergeResults t] ] of
+        first : _ -> first
+        []        -> e
+  case merged of
+    Right out -> putStr out >> endOutput prog
+    Left e    -> endOutput prog >> hPutStrLn stderr (prog ++ ": " ++ located e) >> exitWith (ExitFailure 1)
   where
+    prog = "afrp-sweep-merge"
     ensureNewline t = if null t || last t == '\n' then t else t ++ "\n"
-    readOrExit f = try (readFile f) >>= either (cannotRead f) pure
+    readOrExit f = try (B.readFile f) >>= either (cannotRead f) pure
     cannotRead f e = do
-      hPutStrLn stderr ("afrp-sweep-merge: " ++ displayPath f ++ ": " ++ ioErrorText e)
+      hPutStrLn stderr (prog ++ ": " ++ displayPath f ++ ": " ++ ioErrorText e)
       exitWith (ExitFailure 2)
+    decoded (name, bytes) = case utf8Error bytes of
+      Nothing        -> pure (name, decodeUtf8 bytes)
+      Just (l, c, _) -> do
+        hPutStrLn stderr (prog ++ ": " ++ name ++ ":" ++ show l ++ ":" ++ show c ++ ": not UTF-8 text")
+        exitWith (ExitFailure 1)

@@ -377,6 +377,17 @@ spec = do
       r `shouldBe` Right ()
       doesFileExist svg `shouldReturn` True
       filter ("wrote" `isPrefixOf`) (lines out) `shouldBe` ["wrote " ++ show svg]
+    it "a robot's message the terminal cannot show does not stop the run: controls escaped, the rest substituted" $
+      withTempDir $ \dir -> do
+        let talk _ = constant (mrFinalize (ddVelDiff 1 1 `mrMerge` tcoPrintMessage (Event "caf\233 \ESC[2J\nforged \xD800")))
+        (out, _, r) <- captured $ do
+          -- standard output as a batch job's C locale has it: ASCII only
+          hSetEncoding stdout =<< mkTextEncoding "ASCII"
+          runSimWith (quick dir) { optFrames = False, optSeconds = 0.02, optQuiet = False } (Just world) talk talk
+        r `shouldBe` Right ()
+        let said = filter ("SimbotA.1: caf" `isInfixOf`) (lines out)
+        length said `shouldBe` 3   -- t = 0, 0.01, 0.02: one line each
+        said `shouldSatisfy` all (\l -> "\\ESC[2J\\nforged \\55296" `isInfixOf` l && all (\c -> c >= ' ' && c < '\DEL') l)
     it "a failed write naming a file with a control character: the message is printable" $ withTempDir $ \dir -> do
       let svg = dir </> "no\ESC[2Jdir" </> "run.svg"
       (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just svg } (Just world) drive drive)

@@ -1,4 +1,5 @@
-{-# LANGUAGE BangPatterns #-}
+{-# LANGUAGE BangPatterns        #-}
+{-# LANGUAGE ScopedTypeVariables #-}
 -- |
 -- Module      : AFrobRobotSim.WorldFile.Lexical
 -- Description : The lexical layer of world files: UTF-8 with error
@@ -34,20 +35,27 @@ module AFrobRobotSim.WorldFile.Lexical
     -- * Files
   , readFileUpTo
   , canonicalPath
+  , flushStdout
+  , tolerantOutput
+  , printableLine
+  , endOutput
   , lower
   ) where
 
-import           Control.Exception      (IOException, try)
+import           Control.Exception      (IOException, catch, try)
 import           Data.Bits              ((.&.), (.|.), shiftL)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Lazy   as BL
 import qualified Data.ByteString.Unsafe as BU
 import           Data.Char              (chr, isDigit, isPrint, isSpace, showLitChar, toLower)
+import           Data.List              (isInfixOf)
 import           Data.Word              (Word8)
 import           GHC.IO.Exception       (IOException (ioe_description))
 import           System.Directory       (canonicalizePath)
 import           System.FilePath        (normalise)
-import           System.IO              (IOMode (ReadMode), hFileSize, withBinaryFile)
+import           System.Exit            (ExitCode (ExitFailure), exitWith)
+import           System.IO              (IOMode (ReadMode), hFileSize, hFlush, hGetEncoding, hPutStrLn,
+                                         hSetEncoding, mkTextEncoding, stderr, stdout, withBinaryFile)
 import           System.IO.Error        (ioeGetErrorType)
 
 ------------------------------------------------------------------------------
@@ -155,11 +163,7 @@ displayPath f
 -- not print escaped as a Haskell literal would have it, for the reason
 -- 'displayPath' gives.
 ioErrorText :: IOException -> String
-ioErrorText e = foldr esc "" (show e)
-  where
-    esc ch rest
-      | isPrint ch = ch : rest
-      | otherwise  = showLitChar ch rest
+ioErrorText = printableLine . show
 
 -- | A file that could not be read, as a message naming it and why, but
 -- not the Haskell function that failed:
@@ -188,6 +192,48 @@ readFileUpTo cap path = try (withBinaryFile path ReadMode $ \h -> do
       more <- BL.toStrict . BL.take (fromIntegral (cap + 1 - B.length s)) <$> BL.hGetContents h
       let t = if B.null more then s else B.append s more
       B.length t `seq` pure (if B.length t > cap then Nothing else Just t))
+
+-- | Flush standard output; its failure (a full disk, a pipe whose reader
+-- has gone) as a message, for the program to report: left to the
+-- runtime's exit, the failure is silent and the exit code 0.
+flushStdout :: IO (Maybe String)
+flushStdout = either (\e -> Just ("cannot write to standard output: " ++ ioErrorText e)) (const Nothing)
+                <$> try (hFlush stdout)
+
+-- | Make standard output and standard error write what their encoding
+-- cannot (a robot's message with an accent, in the C locale of a batch
+-- job; a lone surrogate) as a substitute character instead of failing:
+-- left as they are, one such character stops the run with a write
+-- error. Handles already set so, or in binary mode, are left alone.
+tolerantOutput :: IO ()
+tolerantOutput = mapM_ tolerant [stdout, stderr]
+  where
+    tolerant h = do
+      enc <- hGetEncoding h
+      case enc of
+        Just e | not ("//" `isInfixOf` show e) ->
+          (mkTextEncoding (show e ++ "//TRANSLIT") >>= hSetEncoding h)
+            `catch` \(_ :: IOException) -> pure ()
+        _ -> pure ()
+
+-- | A line of text as it is safe to print on a terminal: every character
+-- that does not print (controls such as escape sequences or a newline,
+-- lone surrogates) escaped as a Haskell literal writes it, the rest as
+-- it is.
+--
+-- >>> printableLine "bump\ESC[2J!"
+-- "bump\\ESC[2J!"
+printableLine :: String -> String
+printableLine = foldr esc ""
+  where
+    esc ch rest
+      | isPrint ch = ch : rest   -- (not a lone surrogate: those do not print)
+      | otherwise  = showLitChar ch rest
+
+-- | @endOutput prog@: 'flushStdout', and on failure the message on
+-- standard error, after the program's name, and exit code 1.
+endOutput :: String -> IO ()
+endOutput prog = flushStdout >>= maybe (pure ()) (\m -> hPutStrLn stderr (prog ++ ": " ++ m) >> exitWith (ExitFailure 1))
 
 -- | A path as the file system resolves it ('canonicalizePath': links
 -- followed, @.@ and @..@ gone), or, when it cannot be, the path normalised:
