@@ -157,19 +157,28 @@ boxesOverlap (a0, b0, a1, b1) (c0, d0, c1, d1) = a0 < c1 && c0 < a1 && b0 < d1 &
 -- @duration@ (the first sample at time step 0).
 runStream :: SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController
           -> SignalSampleStream WorldState
-runStream config duration world rcA rcB =
+runStream config duration world rcA rcB
+  | isNaN duration || isInfinite duration || duration < 0 =
+      error ("AFrobRobotSim.Test.runStream: the duration must be a finite number >= 0, got " ++ show duration)
+  | otherwise =
   let dt    = simDt config
       steps = floor (duration / dt + 1e-9) :: Int
   in zip (0 : repeat dt) (take (steps + 1) (simulateWith config world rcA rcB))
 
 -- | One robot's view of a run: its state at every sample, found by its
--- type (@\"SimbotA\"@ or @\"SimbotB\"@) and id. A robot that is not in the
--- world gives the empty stream.
+-- type (@\"SimbotA\"@ or @\"SimbotB\"@) and id. A robot that is not in
+-- the run (a misspelt type, a wrong id) is an error naming it and the
+-- robots there are: an empty view would make every property of it hold.
 robotView :: RobotType -> RobotId -> SignalSampleStream WorldState -> SignalSampleStream RobotState
 robotView ty i s = case traverse pick s of
   Just rs -> rs
-  Nothing -> []
+  Nothing -> error ("AFrobRobotSim.Test.robotView: no " ++ ty ++ " " ++ show i ++ " in the run (its robots: "
+                    ++ robotsOf s ++ ")")
   where
+    robotsOf ((_, ws) : _) = unwords' [ robotType r ++ " " ++ show (robotId r) | r <- wsRobots ws ]
+    robotsOf []            = "none: the run has no sample"
+    unwords' [] = "none"
+    unwords' ns = foldr1 (\a b -> a ++ ", " ++ b) ns
     pick (dt, ws) = case [ r | r <- wsRobots ws, robotType r == ty, robotId r == i ] of
       (r : _) -> Just (dt, r)
       []      -> Nothing
@@ -207,6 +216,8 @@ forAllWorlds file gen prop =
 runT :: SimConfig -> Time -> SimbotController -> SimbotController -> TPred WorldState
      -> WorldTemplate -> Property
 runT config duration rcA rcB p world =
+  -- (a run has a sample at time 0 at least: never the empty stream that
+  -- 'propT' refuses)
   case explainT p (runStream config duration world rcA rcB) of
     Nothing -> property True
     Just e  -> counterexample (explanation e) False

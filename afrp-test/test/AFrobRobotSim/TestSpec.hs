@@ -2,6 +2,7 @@
 -- | Properties of whole simbot runs, written with "AFrobRobotSim.Test".
 module AFrobRobotSim.TestSpec (spec) where
 
+import           Control.Exception     (evaluate)
 import           Data.List             (isInfixOf, isPrefixOf, tails)
 import           System.Directory      (getTemporaryDirectory, removeFile)
 import           System.FilePath       ((</>))
@@ -122,7 +123,19 @@ spec = do
     map fst viewB `shouldBe` map fst run
     evalT (Always (SP (arr ((== Point2 2 2) . robotPos)))) viewB `shouldBe` True
     evalT (Eventually (SP (arr ((/= Point2 0 0) . robotPos)))) (robotView "SimbotA" 1 run) `shouldBe` True
-    robotView "SimbotA" 2 run `shouldBe` []
+    -- a robot that is not in the run is an error naming it, never an
+    -- empty view every property would hold of
+    evaluate (length (robotView "SimbotA" 2 run))
+      `shouldThrow` errorCall "AFrobRobotSim.Test.robotView: no SimbotA 2 in the run (its robots: SimbotA 1, SimbotB 1)"
+    evaluate (length (robotView "SimbotC" 1 run)) `shouldThrow` anyErrorCall
+
+  it "runStream refuses a duration that is negative or not finite; 0 is the sample at time 0" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0]
+        run d = runStream defaultSimConfig { simDt = 0.1 } d world wander wander
+    length (run 0) `shouldBe` 1
+    evaluate (length (run (-1))) `shouldThrow` anyErrorCall
+    evaluate (length (run (0 / 0))) `shouldThrow` anyErrorCall
+    evaluate (length (run (1 / 0))) `shouldThrow` anyErrorCall
 
   it "robots never overlap each other (property)" $
     forAllWorlds (tmp </> "afrp-test-robots.world") (genWorld defaultWorldMix { mixRobots = (2, 8) } notesBounds) $

@@ -70,7 +70,14 @@ type Length = Maybe (Either Int DTime)
 
 -- | @generateStream dist range len@: a stream with time steps as @dist@
 -- and @range@ say, @len@ long, and arbitrary values. The first sample is at
--- time 0.
+-- time 0. Parameters that cannot give a stream are an error (a call of
+-- 'error' with a message naming the parameter), rather than a generator
+-- that never ends or a stream that is not what was asked for: a bound of
+-- the range that is negative or not finite, a lower bound above the upper
+-- one, a length in time that is negative or not finite, a normal
+-- distribution whose mean or deviation is not finite or whose deviation
+-- is negative, or one that almost never (not once in 1000 draws) gives a
+-- time step inside the range.
 generateStream :: Arbitrary a => Distribution -> Range -> Length -> Gen (SignalSampleStream a)
 generateStream = generateStreamWith (\_ _ -> arbitrary)
 
@@ -78,7 +85,7 @@ generateStream = generateStreamWith (\_ _ -> arbitrary)
 -- the sample number @k@ (0 at time 0) having the value @value k dt@, where
 -- @dt@ is its time step (0 for the first sample).
 generateStreamWith :: (Int -> DTime -> Gen a) -> Distribution -> Range -> Length -> Gen (SignalSampleStream a)
-generateStreamWith value dist range len = do
+generateStreamWith value dist range len = checked `seq` do
   dts <- case dist of
     DistConstant -> do
       dt <- deltaIn range
@@ -90,6 +97,17 @@ generateStreamWith value dist range len = do
   xs <- sequence (zipWith value [0 ..] (0 : dts))
   pure (zip (0 : dts) xs)
   where
+    checked = case problems of
+      []    -> ()
+      p : _ -> error ("AFRP.Test.QuickCheck.generateStream: " ++ p)
+    problems =
+      [ "the range's bound " ++ show b ++ " is not a finite number >= 0"
+      | Just b <- [fst range, snd range], not (finiteD b && b >= 0) ]
+      ++ [ "the range " ++ show range ++ " is empty" | (Just lo, Just hi) <- [range], lo > hi ]
+      ++ [ "the length in time " ++ show t ++ " is not a finite number >= 0"
+         | Just (Right t) <- [len], not (finiteD t && t >= 0) ]
+      ++ [ "the normal distribution " ++ show md ++ " needs a finite mean and a finite deviation >= 0"
+         | DistNormal md@(mean, dev) <- [dist], not (finiteD mean && finiteD dev && dev >= 0) ]
     stepCount = case len of
       Just (Left n) -> pure (max 0 n)
       _             -> sized (\n -> choose (0, n))
@@ -106,6 +124,10 @@ untilTime gen t
       dt <- gen
       (dt :) <$> untilTime gen (t - dt)
 
+-- Neither NaN nor infinite.
+finiteD :: Double -> Bool
+finiteD x = not (isNaN x || isInfinite x)
+
 -- A positive time step inside the range, uniformly.
 deltaIn :: Range -> Gen DTime
 deltaIn range = case range of
@@ -118,8 +140,11 @@ deltaIn range = case range of
 -- A normally distributed time step, redrawn until positive and inside the
 -- range (Box-Muller).
 normalDelta :: DTime -> DTime -> Range -> Gen DTime
-normalDelta mean dev (lo, hi) = draw `suchThat` inside
+normalDelta mean dev (lo, hi) = tries (1000 :: Int)
   where
+    tries 0 = error ("AFRP.Test.QuickCheck.generateStream: the normal distribution " ++ show (mean, dev)
+                     ++ " gave no time step inside the range " ++ show (lo, hi) ++ " in 1000 draws")
+    tries k = draw >>= \x -> if inside x then pure x else tries (k - 1)
     draw = do
       u1 <- choose (1e-12, 1)
       u2 <- choose (0, 1)
@@ -225,7 +250,11 @@ forAllStreamsWith range shrinkValue gen =
 
 -- | @propT p s@: 'evalT' as a property; when it fails, 'explainT' says at
 -- which sample it was decided false and shows the samples around it.
+--
+-- An empty stream fails: no sample was tested, and 'evalT' would hold of
+-- it vacuously (a property that cannot fail).
 propT :: Show a => TPred a -> SignalSampleStream a -> Property
+propT _ [] = counterexample "the stream is empty: there is no sample to test" False
 propT p s = case explainT p s of
   Nothing -> property True
   Just e  -> counterexample (showExplanation e) False

@@ -111,11 +111,20 @@ sRefineWith interpolate maxDT (s0 : ss) = s0 : go (snd s0) ss
     go _ [] = []
     go prev ((dt, a) : rest)
       | maxDT > 0 && dt > maxDT =
-          let pieces = ceiling (dt / maxDT) :: Int
+          let ratio  = dt / maxDT
+              pieces | ratio <= fromIntegral maxPieces = ceiling ratio :: Int
+                     | otherwise = error ("AFRP.Test.Stream.sRefine: a time step of " ++ show dt
+                                          ++ " cut into steps of at most " ++ show maxDT ++ " would be more than "
+                                          ++ show maxPieces ++ " samples")
               step   = dt / fromIntegral pieces
               filler = replicate (pieces - 1) (step, interpolate prev a)
           in filler ++ (dt - step * fromIntegral (pieces - 1), a) : go a rest
       | otherwise = (dt, a) : go a rest
+
+-- The most samples 'sRefineWith' makes of one time step: 10^8 (more than
+-- memory holds as a list).
+maxPieces :: Int
+maxPieces = 100000000
 
 -- | @sClipAfterFrame n s@ keeps the first @n@ samples (at least the first).
 sClipAfterFrame :: Int -> SignalSampleStream a -> SignalSampleStream a

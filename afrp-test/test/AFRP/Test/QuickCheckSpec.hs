@@ -1,8 +1,12 @@
 module AFRP.Test.QuickCheckSpec (spec) where
 
+import           Control.Exception (ErrorCall (..), evaluate)
+import           Data.List        (isPrefixOf)
 import           Test.Hspec
 import           Test.QuickCheck
 
+import           AFRP             (arr)
+import           AFRP.Test.LTL
 import           AFRP.Test.QuickCheck
 import           AFRP.Test.Stream
 
@@ -32,6 +36,33 @@ spec = do
     it "uniDistStreamMaxDT streams are well formed" $
       forAll (uniDistStreamMaxDT 0.5) $ \s ->
         wellFormed (s :: SignalSampleStream ()) && all ((<= 0.5) . fst) s
+  describe "generators refuse parameters that cannot give a stream" $ do
+    let refused dist range len = do
+          let gen = generateStream dist range len :: Gen (SignalSampleStream ())
+          generate gen >>= evaluate . sum . map fst   -- (every time step made)
+        fails = (`shouldThrow` errorCall' "AFRP.Test.QuickCheck.generateStream: ")
+    it "an empty, negative or infinite range; a length in time that is not finite" $ do
+      fails (refused DistRandom (Just 1, Just (1 / 0)) (Just (Left 3)))
+      fails (refused DistRandom (Just 2, Just 1) (Just (Left 3)))
+      fails (refused DistRandom (Just (-1), Nothing) (Just (Left 3)))
+      fails (refused DistRandom (Nothing, Nothing) (Just (Right (1 / 0))))
+      fails (refused DistConstant (Nothing, Nothing) (Just (Right (0 / 0))))
+      fails (refused DistRandom (Nothing, Nothing) (Just (Right (-1))))
+    it "a normal distribution that is not one, or that misses the range (instead of drawing forever)" $ do
+      fails (refused (DistNormal (1, 0)) (Just 2, Nothing) (Just (Left 3)))
+      fails (refused (DistNormal (0.1, -1)) (Nothing, Nothing) (Just (Left 3)))
+      fails (refused (DistNormal (0 / 0, 1)) (Nothing, Nothing) (Just (Left 3)))
+    it "what is possible still generates" $ do
+      generate (generateStream (DistNormal (1, 0)) (Just 0.5, Just 2) (Just (Left 3)) :: Gen (SignalSampleStream ()))
+        >>= (`shouldBe` [(0, ()), (1, ()), (1, ()), (1, ())])
+      (length <$> generate (generateStream DistRandom (Just 0, Just 0.5) (Just (Right 0)) :: Gen (SignalSampleStream ())))
+        `shouldReturn` 1
+  describe "propT" $
+    it "fails on an empty stream (no sample tested), holds on a stream where the predicate does" $ do
+      r0 <- quickCheckWithResult stdArgs { chatty = False } (propT (Always (SP (arr not))) ([] :: SignalSampleStream Bool))
+      isSuccess r0 `shouldBe` False
+      r1 <- quickCheckWithResult stdArgs { chatty = False } (propT (Always (SP (arr not))) [(0, False), (1, False)])
+      isSuccess r1 `shouldBe` True
   describe "shrinkStream (property)" $ do
     it "offers only well-formed streams, each smaller than the original" $
       forAll (generateStream DistRandom (Nothing, Just 2) (Just (Left 6))) $ \s ->
@@ -43,6 +74,7 @@ spec = do
       shrinkStreamWith (Just 0.1, Nothing) (const []) [(0, ()), (0.137, ())]
         `shouldBe` [[(0, ())], [(0, ()), (0.1, ())], [(0, ()), (0.14, ())]]
   where
+    errorCall' prefix (ErrorCall m) = prefix `isPrefixOf` m
     nubDts s = foldr (\dt acc -> if dt `elem` acc then acc else dt : acc) [] (map fst (drop 1 s))
     -- Fewer samples, or as many with rounder steps or simpler values: the
     -- total of samples, decimals and value sizes goes down.

@@ -1,6 +1,7 @@
 {-# LANGUAGE ScopedTypeVariables #-}
 module AFRP.Test.StreamSpec (spec) where
 
+import           Control.Exception (evaluate)
 import           Data.List        (group)
 
 import           Test.Hspec
@@ -37,6 +38,9 @@ spec = do
              , counterexample "total time changed"
                  (abs (sum (map fst s') - sum (map fst s)) <= 1e-9 * (1 + sum (map fst s)))
              , map head (group (samples s')) === map head (group (samples s)) ]
+    it "sRefine refuses to cut one step into more samples than memory holds (fixed)" $ do
+      evaluate (length (sRefine 1e-300 [(0, 'a'), (1e300, 'b')])) `shouldThrow` anyErrorCall
+      length (sRefine 0.25 [(0, 'a'), (1, 'b')]) `shouldBe` 5
     it "sMerge samples at every time of either stream (fixed)" $
       sMerge (+) [(0, 1), (1, 2)] [(0, 10), (0.5, 20), (0.5, 30 :: Int)]
         `shouldBe` [(0, 11), (0.5, 20), (0.5, 32)]
