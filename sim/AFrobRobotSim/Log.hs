@@ -353,13 +353,21 @@ readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not
                 ++ show (lhFps h))
       | otherwise = Right ()
     positive x = x > 0 && not (isInfinite x)   -- (NaN, read from null, is not > 0)
+    finite x = not (isNaN x || isInfinite x)
     go h acc [] = Right (RunLog h (reverse acc) Nothing)
     go h acc ((i, l) : rest) = at i (decodeLogLine l) >>= \ln -> case ln of
       LineFrame f
+        | not (finite (lfTime f)) ->
+            Left (loc i Nothing ++ "a frame's time must be a number, found " ++ show (lfTime f)
+                  ++ " (null is not a time)")
         | length (lfRobots f) /= length (lhRobots h) ->
             Left (loc i Nothing ++ "a frame of " ++ show (length (lfRobots f)) ++ " robots; the header lists "
                   ++ show (length (lhRobots h)))
         | otherwise -> go h (f : acc) rest
+      LineSummary s
+        | not (all finite [lsSimulated s, lsWallTime s]) ->
+            Left (loc i Nothing ++ "the summary's simulated and wall times must be numbers, found "
+                  ++ show (lsSimulated s) ++ " and " ++ show (lsWallTime s))
       LineSummary s -> case rest of
         []           -> Right (RunLog h (reverse acc) (Just s))
         (j, _) : _   -> Left (loc j Nothing ++ "a line after the summary")

@@ -145,6 +145,17 @@ spec = do
       readLog (withHeader h { lhFps = 0 }) `shouldSatisfy` either ("fps" `isInfixOf`) (const False)
       readLog (withHeader h { lhDt = -1 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
       readLog (withHeader h { lhDt = 0 / 0 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
+    it "refuses a frame time or a summary time written as null (the page could not draw it)" $ do
+      let ls = lines fixtureLogText
+          f = head (rlFrames fixtureLog)
+          withFrame f' = unlines (take 2 ls ++ [encodeLogLine (LineFrame f')] ++ drop 2 ls)
+          withSummary s' = unlines (init ls ++ [encodeLogLine (LineSummary s')])
+      readLog (withFrame f { lfTime = 0 / 0 }) `shouldSatisfy` either ("a frame's time must be a number" `isInfixOf`) (const False)
+      case rlSummary fixtureLog of
+        Nothing -> expectationFailure "the fixture log has no summary"
+        Just sm -> do
+          readLog (withSummary sm { lsSimulated = 0 / 0 }) `shouldSatisfy` either ("summary's simulated" `isInfixOf`) (const False)
+          readLog (withSummary sm) `shouldSatisfy` either (const False) (const True)
     it "readLogFile locates an error as FILE:LINE:COLUMN: or FILE:LINE:, like a world file" $ do
       tmp <- getTemporaryDirectory
       (path, h) <- openTempFile tmp "afrp-log.jsonl"
