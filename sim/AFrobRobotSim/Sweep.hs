@@ -21,7 +21,9 @@ module AFrobRobotSim.Sweep
 
 import           Control.Exception   (try)
 import qualified Data.ByteString     as B
-import           Data.List           (nub, sort, sortOn)
+import           Data.List           (sort, sortOn)
+import qualified Data.Map.Strict     as M
+import qualified Data.Set            as S
 import           Data.Maybe          (fromMaybe)
 import           System.Environment  (getArgs)
 import           System.Exit         (exitWith, ExitCode (..))
@@ -29,8 +31,8 @@ import           System.IO           (hPutStrLn, stderr)
 import           Text.Printf         (printf)
 
 import           AFrobRobotSim.JSON
-import           AFrobRobotSim.WorldFile.Lexical (decodeUtf8, displayPath, endOutput, ioErrorText, tolerantOutput,
-                                                  utf8Error)
+import           AFrobRobotSim.WorldFile.Lexical (decodeUtf8, displayPath, endOutput, ioErrorText, printableLine,
+                                                  tolerantOutput, utf8Error)
 
 -- One run as the table needs it.
 data Run = Run
@@ -46,16 +48,27 @@ data Run = Run
 mergeResults :: String -> Either String String
 mergeResults text = do
   runs <- mapM readLine [ (k, l) | (k, l) <- zip [1 :: Int ..] (lines text), any (/= ' ') l ]
-  let groups   = nub (sort (map runGroup runs))
-      settings = nub (sort (concatMap runGroup runs))
-      varying  = [ k | k <- nub (map fst settings), length (filter ((== k) . fst) settings) > 1 ]
+  let byGroup  = inOrder [ (runGroup r, r) | r <- runs ]
+      settings = S.toList (S.fromList (concatMap runGroup runs))
+      values   = M.fromListWith (+) [ (k, 1 :: Int) | (k, _) <- settings ]
+      varying  = [ k | (k, n) <- M.toList values, n > 1 ]
       -- with two or more settings varying, also each value of each over all the others
-      marginal = [ kv | length varying > 1, kv@(k, _) <- settings, k `elem` varying ]
-  pure (unlines (  concatMap (\g -> table (showSetting g) [ r | r <- runs, runGroup r == g ]) groups
-                ++ concatMap (\kv -> table (showSetting [kv] ++ " over all other settings")
-                                           [ r | r <- runs, kv `elem` runGroup r ]) marginal))
+      marginal
+        | length varying > 1 =
+            M.toList (inOrder [ (kv, r) | r <- runs, kv@(k, _) <- runGroup r, k `elem` varying ])
+        | otherwise = []
+      repeats = length runs - S.size (S.fromList [ (runGroup r, runSeed r) | r <- runs ])
+      note = [ "== note: " ++ show repeats ++ " result line" ++ (if repeats == 1 then " repeats a run" else "s repeat runs")
+               ++ " (the same world, parameters and seed: a result file merged twice?); each is counted"
+             | repeats > 0 ]
+  pure (unlines (map printableLine
+    (  concatMap (\(g, rs) -> table (showSetting g) rs) (M.toList byGroup)
+    ++ concatMap (\(kv, rs) -> table (showSetting [kv] ++ " over all other settings") rs) marginal
+    ++ note)))
   where
     readLine (k, l) = either (\e -> Left ("line " ++ show k ++ ": " ++ e)) Right (parseJSON l >>= readRun)
+    -- the runs of each key, in input order
+    inOrder kvs = M.map reverse (M.fromListWith (++) [ (k, [v]) | (k, v) <- kvs ])
 
 readRun :: JSON -> Either String Run
 readRun v = do
@@ -104,12 +117,20 @@ table heading mine =
      | not (null names) ]
   ++ [ printf "  %-28s %14s %14s %14s" n (number (mean xs)) (number (minimum xs)) (number (maximum xs))
        ++ (if length xs < length mine then printf "  (%d runs)" (length xs) else "")
-     | n <- names, let xs = sort [ x | r <- mine, Just x <- [lookup n (runValues r)] ] ]
+     | n <- names, let xs = sort (M.findWithDefault [] n valuesOf) ]
   ++ [ "  FAILED seed " ++ runSeed r ++ ": " ++ f
      | r <- sortOn runSeed failed, Just f <- [runFailure r] ]
   where
     failed = [ r | r <- mine, runFailure r /= Nothing ]
-    names  = nub (concatMap (map fst . runValues) (sortOn runSeed mine))
+    bySeed = sortOn runSeed mine
+    -- the outcomes in the order the runs (by seed) first name them, and
+    -- each one's values: one pass, however many robots and runs
+    names  = firstSeen S.empty (concatMap (map fst . runValues) bySeed)
+    valuesOf = M.fromListWith (++) [ (n, [x]) | r <- mine, (n, x) <- runValues r ]
+    firstSeen _ [] = []
+    firstSeen seen (n : ns)
+      | n `S.member` seen = firstSeen seen ns
+      | otherwise         = n : firstSeen (S.insert n seen) ns
     mean xs = sum xs / fromIntegral (length xs)
     number :: Double -> String
     number x

@@ -184,6 +184,16 @@ spec = do
       forAll (shuffle sampleLines) $ \ls -> mergeResults (unlines ls) == mergeResults (unlines sampleLines)
     it "reports a line that is not JSON with its number" $
       mergeResults (unlines [head sampleLines, "not json"]) `shouldSatisfy` either ("line 2" `isInfixOf`) (const False)
+    it "says when result lines repeat a run (a file merged twice), and counts each" $ do
+      let single = mergeResults (unlines sampleLines)
+          twice = mergeResults (unlines (sampleLines ++ take 2 sampleLines))
+      single `shouldSatisfy` either (const False) (not . ("repeat" `isInfixOf`))
+      twice `shouldSatisfy` either (const False) ("== note: 2 result lines repeat runs" `isInfixOf`)
+    it "prints a setting or a failure with control characters escaped" $ do
+      let evil = resultLine 1 [("speed", "0.1\ESC[2J")] 1 (Just "bad\nFAILED seed 9: forged")
+      mergeResults evil `shouldSatisfy` either (const False)
+        (\t -> "speed=0.1\\ESC[2J" `isInfixOf` t && "bad\\nFAILED seed 9: forged" `isInfixOf` t
+               && all (\c -> c == '\n' || c >= ' ') t)
 
   describe "--param" $ do
     it "collects NAME=VALUE pairs in order, a repeated name keeping its last value" $
