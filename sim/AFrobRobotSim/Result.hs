@@ -51,7 +51,7 @@ module AFrobRobotSim.Result
   ) where
 
 import           Control.Exception    (SomeException, displayException, evaluate, try)
-import           Data.List            (foldl')
+import           Data.List            (foldl', (\\))
 import           System.Environment   (getArgs, getProgName)
 import           System.Exit          (ExitCode (..), exitWith)
 import           System.IO            (hPutStrLn, stderr)
@@ -119,11 +119,12 @@ paramOr name def = do
 -- @Infinity@ although the text does not say so. The numbers are checked
 -- wherever they are in the value (@[1,2,300]@ for a @[Word8]@,
 -- @Just 300@, a record's field): the numbers the value's 'Show' writes
--- are paired, in order, with those of the text, and an integer (or a
--- ratio @a % b@) must be written back as the same number, infinity only
--- where the text has it. (A value that 'Show' writes with another count
--- of numbers than the text has is not checked.) A fraction that a
--- 'Double' rounds is not refused. Reading never wraps silently:
+-- are compared with those of the text: every integer (or ratio @a % b@)
+-- written back must be one of the text (in any order: a set writes its
+-- elements back sorted), infinity only where the text has it. (A value
+-- that 'Show' writes with another count of numbers than the text has is
+-- not checked.) A fraction that a 'Double' rounds is not refused.
+-- Reading never wraps silently:
 --
 -- >>> readSimParam "n" "300" :: Either String Int
 -- Right 300
@@ -176,20 +177,22 @@ numerals = ratios . numbersIn . tokens
     ratios (n : ns)           = n : ratios ns
     ratios []                 = []
 
--- Whether the numbers written back ('show') hold those written: paired in
--- order when there are as many, an integer or ratio must come back as
--- the same number, and infinity only from infinity.
+-- Whether the numbers written back ('show') hold those written: when
+-- there are as many, every integer or ratio written back must be one
+-- written (as a multiset: a 'Data.Set.Set' or a 'Data.Map.Map' writes
+-- its elements back in order, not as given), and infinity only from
+-- infinity. A number written back as a floating-point one (a 'Double'
+-- written as @3@) is not compared.
 numeralsHeld :: [Numeral] -> [Numeral] -> Bool
 numeralsHeld written shown
   | length written /= length shown = True
-  | otherwise                      = and (zipWith held written shown)
+  | otherwise = null (exact shown \\ exact written) && count Infinite shown <= count Infinite written
   where
-    held (Whole a) (Whole b) = a == b
-    held (Whole a) (Ratio b) = fromInteger a == b
-    held (Ratio a) (Ratio b) = a == b
-    held (Ratio a) (Whole b) = a == fromInteger b
-    held w         Infinite  = w == Infinite
-    held _         _         = True
+    exact ns = [ r | n <- ns, Just r <- [asRational n] ]
+    asRational (Whole a) = Just (fromInteger a)
+    asRational (Ratio a) = Just a
+    asRational _         = Nothing
+    count n = length . filter (== n)
 
 -- | What the result line keeps of one robot while the run goes: strict,
 -- so its memory is constant however long the run.

@@ -445,7 +445,9 @@ simulateRun prog opts ffmpeg world rcA rcB = do
     simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
   unless (optQuiet opts) (mapM_ putStrLn wrote)
   -- (the summary written, or said to be lost: a full disk is not success)
-  outErrs <- maybe [] pure <$> flushStdout
+  outErrs <- case ending of
+    WriteFailed _ -> [] <$ flushStdout   -- (said once: the write that stopped the run)
+    _             -> maybe [] pure <$> flushStdout
   videoErrs <- case (ending, optVideo opts) of
     -- (the checks before the run made sure ffmpeg is there when --video is given)
     (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe file

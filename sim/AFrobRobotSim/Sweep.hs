@@ -59,7 +59,8 @@ mergeResults text = do
         | otherwise = []
       repeats = length runs - S.size (S.fromList [ (runGroup r, runSeed r) | r <- runs ])
       note = [ "== note: " ++ show repeats ++ " result line" ++ (if repeats == 1 then " repeats a run" else "s repeat runs")
-               ++ " (the same world, parameters and seed: a result file merged twice?); each is counted"
+               ++ " (the same world, parameters and seed: a result file merged twice, or runs told"
+               ++ " apart only by other flags?); each is counted"
              | repeats > 0 ]
   pure (unlines (map printableLine
     (  concatMap (\(g, rs) -> table (showSetting g) rs) (M.toList byGroup)

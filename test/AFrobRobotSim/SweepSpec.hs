@@ -7,7 +7,9 @@ module AFrobRobotSim.SweepSpec (spec, childVariable, child) where
 
 import           Control.Monad       (forM, forM_, unless)
 import           Data.Int            (Int8)
+import qualified Data.Map            as M
 import           Data.Ratio          (Ratio, (%))
+import qualified Data.Set            as S
 import           Data.List           (isInfixOf, isPrefixOf, sort)
 import           Data.Word           (Word8)
 import           System.Directory    (doesFileExist, findExecutable, getPermissions, makeAbsolute,
@@ -246,6 +248,10 @@ spec = do
       (readSimParam "p" "[Infinity,-Infinity,2]" :: Either String [Double]) `shouldBe` Right [1 / 0, -1 / 0, 2]
       (readSimParam "p" "0xFF" :: Either String Word8) `shouldBe` Right 255
       (readSimParam "p" "[1.5, 2]" :: Either String [Double]) `shouldBe` Right [1.5, 2]
+      -- a set or a map writes its elements back sorted: not a change of value
+      (readSimParam "p" "fromList [3,1]" :: Either String (S.Set Int)) `shouldBe` Right (S.fromList [1, 3])
+      (readSimParam "p" "fromList [(2,1),(1,5)]" :: Either String (M.Map Int Int)) `shouldBe` Right (M.fromList [(1, 5), (2, 1)])
+      (readSimParam "p" "fromList [300,1]" :: Either String (S.Set Word8)) `shouldSatisfy` refused
     it "paramOr: a value that cannot be made (1 % 0) stops the program, naming it" $
       stopsForParam "ratio=1 % 0" "--param ratio=1 % 0: the value \"1 % 0\" cannot be made"
     it "paramOr: a value out of range stops the program before it runs, naming it" $
@@ -360,6 +366,8 @@ spec = do
       listed ["--seeds", "0..11", "--shard", "1/08"] `shouldReturn` (ExitSuccess, ["--seed 1", "--seed 9"])
       listed ["--seeds", "0..11", "--shard", "0/010"] `shouldReturn` (ExitSuccess, ["--seed 0", "--seed 10"])
       listed ["--seeds", "008..010"] `shouldReturn` (ExitSuccess, ["--seed 8", "--seed 9", "--seed 10"])
+      -- a shard with no job (an array of more tasks than jobs) is no error
+      listed ["--seeds", "1..4", "--shard", "5/8"] `shouldReturn` (ExitSuccess, [])
       -- refused with exit code 2 and a message: a range too long to list,
       -- an empty job list, -j that is not a number, a flag after -- with a
       -- space (runs' flags are split on spaces), a results file in no folder
@@ -386,13 +394,13 @@ spec = do
       writeFile (dir </> "k=yyy") ""
       writeFile (dir </> "k=zzz") ""
       writeFile (dir </> "jobs") (unlines
-        [ "--seed 1 --param failure=nan", "--seed 2 --param k=*", "--seed 007 --no-such-flag" ])
+        [ "--seed 1 --param flags=a --param failure=nan", "--seed 2 --param k=*", "--seed 007 --no-such-flag" ])
       (code, _, err) <- readCreateProcessWithExitCode
         (proc "bash" [sweep, "--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "1"]) { cwd = Just dir } ""
       (code, "3 runs, 1 failed" `isInfixOf` err) `shouldBe` (ExitFailure 1, True)
       ls <- lines <$> readFile (dir </> "r.jsonl")
       map (field ["params"] . parsed) (take 2 ls)
-        `shouldBe` [JObject [("failure", JString "nan")], JObject [("k", JString "*")]]
+        `shouldBe` [JObject [("flags", JString "a"), ("failure", JString "nan")], JObject [("k", JString "*")]]
       field ["seed"] (parsed (ls !! 2)) `shouldBe` JString "007"
       table <- merged dir [dir </> "r.jsonl"]
       table `shouldSatisfy` ("FAILED seed \"007\": exit code 2, no result" `isInfixOf`)

@@ -17,7 +17,7 @@ import           Test.QuickCheck
 import           AFRP.Geometry          (Point2 (..))
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
-import           AFrobRobotSim.WorldFile.Lexical (displayPath, ioErrorText)
+import           AFrobRobotSim.WorldFile.Lexical (displayPath, ioErrorText, printableLine)
 import           TestUtil (withTempDir)
 
 ------------------------------------------------------------------------------
@@ -516,6 +516,10 @@ spec = do
       displayPath "out/ä b.svg" `shouldBe` "out/ä b.svg"
       displayPath "a\nwrote b" `shouldBe` "\"a\\nwrote b\""
       displayPath "x\ESC[2Jy" `shouldBe` "\"x\\ESC[2Jy\""
+    it "printableLine escapes what could forge or hide output, and keeps accents, emoji and joiners" $ do
+      printableLine "caf\233 \128104\8205\128187" `shouldBe` "caf\233 \128104\8205\128187"
+      printableLine "a\ESC[2Jb\nc" `shouldBe` "a\\ESC[2Jb\\nc"
+      printableLine "x\8238y\8232z\55296" `shouldBe` "x\\8238y\\8232z\\55296"
     it "displayPath never lets a character that does not print through" $ property $ \f ->
       all isPrint (displayPath f)
     it "readWorldFile: a file that cannot be read, or does not parse, is named with its controls escaped" $

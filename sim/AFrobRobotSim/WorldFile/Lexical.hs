@@ -47,7 +47,8 @@ import           Data.Bits              ((.&.), (.|.), shiftL)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Lazy   as BL
 import qualified Data.ByteString.Unsafe as BU
-import           Data.Char              (chr, isDigit, isPrint, isSpace, showLitChar, toLower)
+import           Data.Char              (GeneralCategory (..), chr, generalCategory, isDigit, isPrint, isSpace,
+                                         showLitChar, toLower)
 import           Data.List              (isInfixOf)
 import           Data.Word              (Word8)
 import           GHC.IO.Exception       (IOException (ioe_description))
@@ -216,10 +217,12 @@ tolerantOutput = mapM_ tolerant [stdout, stderr]
             `catch` \(_ :: IOException) -> pure ()
         _ -> pure ()
 
--- | A line of text as it is safe to print on a terminal: every character
--- that does not print (controls such as escape sequences or a newline,
--- lone surrogates) escaped as a Haskell literal writes it, the rest as
--- it is.
+-- | A line of text as it is safe to print on a terminal: the characters
+-- that could forge or hide output (controls such as escape sequences or
+-- a newline, line and paragraph separators, the controls that reorder
+-- text right to left, lone surrogates, unassigned code points) escaped
+-- as a Haskell literal writes them, the rest as it is (accents, emoji
+-- and the joiners within them, other scripts).
 --
 -- >>> printableLine "bump\ESC[2J!"
 -- "bump\\ESC[2J!"
@@ -227,8 +230,16 @@ printableLine :: String -> String
 printableLine = foldr esc ""
   where
     esc ch rest
-      | isPrint ch = ch : rest   -- (not a lone surrogate: those do not print)
-      | otherwise  = showLitChar ch rest
+      | unsafe ch = showLitChar ch rest
+      | otherwise = ch : rest
+    unsafe ch = case generalCategory ch of
+      Control            -> True
+      Surrogate          -> True
+      LineSeparator      -> True
+      ParagraphSeparator -> True
+      NotAssigned        -> True
+      Format             -> ch `elem` ['\x202A' .. '\x202E'] || ch `elem` ['\x2066' .. '\x2069']
+      _                  -> False
 
 -- | @endOutput prog@: 'flushStdout', and on failure the message on
 -- standard error, after the program's name, and exit code 1.
