@@ -22,7 +22,11 @@ import           Paper.Section3     (rcAlign, rcFollowLeftWall, rcMoveTo, rcReve
 main :: IO ()
 main = do
   args <- getArgs
-  if "--replay-from" `elem` args then replayFrom args else runSim Nothing demoA demoB
+  -- replay mode when --replay-from is a flag the simulation's command line
+  -- does not take (not, say, the name of the --out folder)
+  case parseSimArgs defaultSimOptions args of
+    Left _ | "--replay-from" `elem` args -> replayFrom args
+    _                                    -> runSim Nothing demoA demoB
 
 -- | @--replay-from F.jsonl --replay OUT.html@, in either order.
 replayFrom :: [String] -> IO ()
