@@ -17,7 +17,7 @@ module AFRP.Delay
   ) where
 
 import qualified Data.Sequence       as Seq
-import           Data.Sequence       (Seq, ViewL (..), (|>))
+import           Data.Sequence       (Seq, ViewL (..), ViewR (..), (|>))
 
 import           AFRP.Internal.Clock
 import           AFRP.Internal.SF
@@ -77,6 +77,7 @@ delay :: forall a. Time -> a -> SF a a
 delay q a0
   | q < 0 || isNaN q = error ("AFRP.Delay.delay: negative or NaN delay, got " ++ show q)
   | q == 0           = SF idN
+  | isInfinite q     = SF (constN a0)
   | otherwise        = SF (initN (\a -> step clockZero (Seq.singleton (q, a))))
   where
     -- The buffer holds each sample with the time it is due out (its local
@@ -92,7 +93,10 @@ delay q a0
       in (# go clock buf', out #)
     go !clock !buf = NStep (\dt a ->
       let !clock' = tick clock dt
-      in step clock' (buf |> (clockTime clock' + q, a)))
+          !due    = clockTime clock' + q
+      in step clock' (case Seq.viewr buf of
+           rest :> (d, _) | d == due -> rest |> (due, a)   -- superseded (dt 0)
+           _                         -> buf |> (due, a)))
     -- Drop every sample that a later sample, itself due, supersedes.
     dropOld now buf = case Seq.viewl buf of
       _ :< rest | (due, _) :< _ <- Seq.viewl rest, due <= now -> dropOld now rest

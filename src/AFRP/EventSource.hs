@@ -82,8 +82,9 @@ now x = SF (initN (\_ -> (# neverN, Event x #)))
 -- >   ==  [NoEvent, NoEvent, Event (), NoEvent]
 after :: Time -> b -> SF a (Event b)
 after t x
-  | t < 0     = errNeg "after" t
-  | otherwise = afterEach [(t, x)]
+  | t < 0 || isNaN t = errNeg "after" t
+  | isInfinite t     = never
+  | otherwise        = afterEach [(t, x)]
 
 -- | @repeatedly p x@ occurs with value @x@ at local times @p, 2p, 3p, ...@,
 -- each at the first sample at or after that time. No backlog: if a time
@@ -105,16 +106,18 @@ repeatedly p x
     -- The first period boundary strictly after t, starting the search at
     -- floor (t / p) so that even a huge step costs O(1).
     nextIndex :: Time -> Integer -> Integer
-    nextIndex t n0 = firstAbove (max n0 (floor (t / p)))
-      where firstAbove n | fromIntegral n * p <= t = firstAbove (n + 1)
-                         | otherwise              = n
+    nextIndex t n0 = firstAbove (4 :: Int) (max n0 (floor (t / p)))
+      where firstAbove k n | k > 0, fromIntegral n * p <= t = firstAbove (k - 1) (n + 1)
+                           | otherwise                      = n
 
 -- | @afterEach [(q1, x1), (q2, x2), ...]@ occurs with @x1@ at local time
 -- @q1@, with @x2@ at @q1 + q2@, and so on: each delay is measured from the
 -- previous scheduled occurrence. When one sample interval spans several
 -- scheduled occurrences only the first of them is produced (see
 -- 'afterEachCat' for all of them). Negative delays are an error, reported
--- when reached (the list may be infinite).
+-- when reached (the list may be infinite). A sample reaches every
+-- occurrence due by its time: an infinite run of delays summing to no
+-- more than that (@repeat (0, x)@) never finishes the sample, as in Yampa.
 afterEach :: [(Time, b)] -> SF a (Event b)
 afterEach qxs = SF (compN (sfNode (afterEachCat qxs)) (arrN (fmap head)))
 
@@ -155,6 +158,7 @@ delayEvent :: Time -> SF (Event a) (Event a)
 delayEvent q
   | q < 0 || isNaN q = errNeg "delayEvent" q
   | q == 0           = SF idN
+  | isInfinite q     = SF neverN
   | otherwise        = SF (compN (sfNode (delayEventCat q)) (arrN (fmap head)))
 
 -- | Like 'delayEvent', delivering every occurrence that falls due at a
@@ -165,6 +169,7 @@ delayEventCat :: forall a. Time -> SF (Event a) (Event [a])
 delayEventCat q
   | q < 0 || isNaN q = errNeg "delayEventCat" q
   | q == 0           = SF (arrN (fmap (: [])))
+  | isInfinite q     = SF neverN
   | otherwise        = SF (initN (\e -> (# go clockZero Seq.empty e, NoEvent #)))
   where
     -- The input of the previous sample (taken at the clock's previous

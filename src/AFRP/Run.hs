@@ -170,7 +170,7 @@ embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
       []             -> error "AFRP.Run.embedSynch: impossible: embed produced no output"
     go :: Double -> b -> [(Double, b)] -> Node Double b
     go !clock bLast rest = NStep (\dt ratio ->
-      if ratio < 0
+      if not (ratio >= 0)
         then error ("AFRP.Run.embedSynch: negative speed ratio " ++ show ratio)
         else
           let !clock'       = clock + ratio * dt

@@ -26,6 +26,15 @@
 --
 -- An event at time 0 switches at time 0.
 --
+-- A signal function switched in at an instant whose own event occurs at
+-- that same instant switches again, at once: so a switch into itself on
+-- an event that is always there at time 0 (@switch (sf &&& now ()) (\_ ->
+-- that same switch)@, or 'after' 0) never finishes its sample, and runs
+-- until memory runs out, as in Yampa. The event has to wait for time to
+-- pass ('after' with a positive time, a delayed switch such as 'dSwitch',
+-- or an event that is not there at the new signal function's first
+-- sample).
+--
 -- The delayed switches are /decoupled/: their output at an instant never
 -- depends on whether their event occurs at that instant. They decide
 -- whether to switch only when they are next stepped, so the event may

@@ -41,6 +41,23 @@ n = NoEvent
 
 spec :: Spec
 spec = do
+  describe "time that overflows, or periods beyond the clock's precision" $ do
+    it "local time that overflows is infinite from then on, not NaN" $
+      embed localTime ((), [(1, Nothing), (1 / 0, Nothing), (1, Nothing)]) `withinTwoSeconds` [0, 1, 1 / 0, 1 / 0]
+    it "after fires at a step that passes its time, even an infinite one; after infinity never fires" $ do
+      embed (after 5 ()) ((), [(1 / 0, Nothing), (1, Nothing)]) `withinTwoSeconds` [NoEvent, Event (), NoEvent]
+      embed (after 1.5e308 ()) ((), [(1e308, Nothing), (1e308, Nothing)]) `withinTwoSeconds` [NoEvent, NoEvent, Event ()]
+      embed (after (1 / 0) ()) ((), [(1e308, Nothing), (1e308, Nothing)]) `withinTwoSeconds` [NoEvent, NoEvent, NoEvent]
+    it "repeatedly over a step of more periods than a Double counts ends (it hung): one occurrence a sample" $ do
+      embed (repeatedly 1 ()) ((), [(1, Nothing), (1e30, Nothing), (1, Nothing)])
+        `withinTwoSeconds` [NoEvent, Event (), Event (), Event ()]
+      length (embed (repeatedly 1e-300 ()) ((), replicate 3 (1, Nothing))) `shouldBe` 4
+    it "after NaN is an error naming after" $
+      evaluate (after (0 / 0) ()) `shouldThrow` (\(ErrorCall m) -> "after" `isInfixOf` m && not ("afterEach" `isInfixOf` m))
+    it "delayEvent and delayEventCat by infinity never occur" $ do
+      embed (delayEvent (1 / 0)) (Event 'a', [(1, Just (Event 'b')), (1 / 0, Just (Event 'c'))])
+        `withinTwoSeconds` [NoEvent, NoEvent, NoEvent]
+      embed (delayEventCat (1 / 0)) (Event 'a', [(1, Just (Event 'b'))]) `withinTwoSeconds` [NoEvent, NoEvent]
   describe "never" $ do
     it "never occurs" $
       source 1 5 (never :: SF () (Event Int)) `shouldBe` replicate 5 NoEvent

@@ -50,6 +50,12 @@ delays =
   , ("delayEvent",    arr (\c -> if c > 0 then Event c else NoEvent) >>> delayEvent 0.05
                         >>> arr (event 0 id))
   , ("fby",           0 `fby` identity)
+    -- nothing ever falls due: nothing need be kept
+  , ("delay by infinity", delay (1 / 0) 0)
+  , ("delayEvent by infinity", arr (\c -> if c > 0 then Event c else NoEvent) >>> delayEvent (1 / 0)
+                                 >>> arr (event 0 id))
+  , ("delayEventCat by infinity", arr (\c -> if c > 0 then Event c else NoEvent) >>> delayEventCat (1 / 0)
+                                    >>> arr (event 0 sum))
   ]
 
 -- The collections: two integrals of the input, only the first one read

@@ -65,6 +65,9 @@ spec = do
     it "rejects a negative ratio" $
       evaluate (last (runDt 1 (embedSynch identity ('a', [])) [1, -1]))
         `shouldThrow` anyErrorCall
+    it "rejects a NaN ratio (it froze the replay silently)" $
+      evaluate (last (runDt 1 (embedSynch identity ('a', [])) [1, 0 / 0]))
+        `shouldThrow` anyErrorCall
 
   describe "deltaEncode" $ do
     it "writes Nothing for repeated samples" $
