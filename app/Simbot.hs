@@ -16,7 +16,7 @@ import           System.IO          (hPutStr, stderr)
 import           AFrob
 import           AFrobRobotSim
 import           AFrobRobotSim.Replay (writeReplayFromLog)
-import           AFrobRobotSim.WorldFile.Lexical (displayPath, endOutput)
+import           AFrobRobotSim.Console (displayPath, endOutput)
 import           Paper.Section3     (rcAlign, rcFollowLeftWall, rcMoveTo, rcReverse)
 
 main :: IO ()

@@ -12,7 +12,7 @@ import           System.Exit        (ExitCode (..), exitWith)
 import           System.IO          (hPutStrLn, stderr)
 
 import           AFrobRobotSim
-import           AFrobRobotSim.WorldFile.Lexical (endOutput)
+import           AFrobRobotSim.Console (endOutput)
 import           Examples.Registry  (allExamples, exampleListing)
 import           Examples.Types
 

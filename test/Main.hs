@@ -34,6 +34,7 @@ import qualified AFrob.MergeableRecordSpec
 import qualified AFrob.RobotIOSpec
 import qualified AFrobRobotSim.ArenaSpec
 import qualified AFrobRobotSim.ClearanceSpec
+import qualified AFrobRobotSim.ConsoleSpec
 import qualified AFrobRobotSim.FlatArraySpec
 import qualified AFrobRobotSim.JSONSpec
 import qualified AFrobRobotSim.LogSpec
@@ -112,6 +113,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Replay in Chromium" AFrobRobotSim.ReplayBrowserSpec.spec
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
+  describe "AFrobRobotSim.Console"   AFrobRobotSim.ConsoleSpec.spec
   describe "AFrobRobotSim.Options" AFrobRobotSim.OptionsSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
   describe "AFrobRobotSim.Balls" AFrobRobotSim.BallsSpec.spec

@@ -75,7 +75,8 @@ import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
-import           AFrobRobotSim.WorldFile.Lexical (cannotRead, decodeUtf8, displayPath, readFileUpTo, utf8Error)
+import           AFrobRobotSim.Console     (displayPath)
+import           AFrobRobotSim.WorldFile.Lexical (cannotRead, decodeUtf8, readFileUpTo, utf8Error)
 
 -- | What a log needs besides the states: the world and how it was run.
 data LogConfig = LogConfig

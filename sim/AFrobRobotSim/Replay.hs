@@ -51,7 +51,8 @@ import           System.IO
 
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Replay.Assets
-import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, displayPath, ioErrorText)
+import           AFrobRobotSim.Console     (displayPath, ioErrorText)
+import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 import           AFrobRobotSim.Simulator   (WorldState)
 
 -- | The page of a log.

@@ -78,8 +78,9 @@ import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
-import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, displayPath, endOutput, flushStdout, ioErrorText,
-                                                  printableLine, tolerantOutput)
+import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, ioErrorText, printableLine,
+                                            tolerantOutput)
+import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 
 -- | Run a simbot program with the settings of the command line. 'Nothing'
 -- runs the built-in default world ("AFrobRobotSim.DefaultWorld").

@@ -31,8 +31,8 @@ import           System.IO           (hPutStrLn, stderr)
 import           Text.Printf         (printf)
 
 import           AFrobRobotSim.JSON
-import           AFrobRobotSim.WorldFile.Lexical (decodeUtf8, displayPath, endOutput, ioErrorText, printableLine,
-                                                  tolerantOutput, utf8Error)
+import           AFrobRobotSim.Console (displayPath, endOutput, ioErrorText, printableLine, tolerantOutput)
+import           AFrobRobotSim.WorldFile.Lexical (decodeUtf8, utf8Error)
 
 -- One run as the table needs it.
 data Run = Run

@@ -175,6 +175,7 @@ import           Numeric           (showHex)
 import           AFRP.Geometry     (Point2 (..))
 import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems,
                                       maxWorldSide, minWorldSide, notesBounds, worldProblems)
+import           AFrobRobotSim.Console          (displayPath)
 import           AFrobRobotSim.WorldFile.Lexical
 
 ------------------------------------------------------------------------------
@@ -277,7 +278,7 @@ readWorldBytes :: FilePath -> B.ByteString -> Either String WorldTemplate
 readWorldBytes name bytes = case utf8Error bytes of
   Just (l, c, b) -> Left (file ++ ":" ++ show l ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
                           ++ (if b < 16 then "0" else "") ++ showHex b ")")
-  Nothing        -> parseNumbered file (decodeUtf8 bytes) >>= check
+  Nothing        -> parseNumbered name (decodeUtf8 bytes) >>= check   -- (which displays the name itself)
   where
     file = displayPath name   -- (control characters escaped in messages)
     check numbered =

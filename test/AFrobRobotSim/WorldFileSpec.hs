@@ -3,7 +3,7 @@
 -- example worlds in @worlds/@.
 module AFrobRobotSim.WorldFileSpec (spec) where
 
-import           Control.Exception      (evaluate, try)
+import           Control.Exception      (evaluate)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Char8  as BC
 import           Data.Char              (isDigit, isPrint)
@@ -17,7 +17,6 @@ import           Test.QuickCheck
 import           AFRP.Geometry          (Point2 (..))
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
-import           AFrobRobotSim.WorldFile.Lexical (displayPath, ioErrorText, printableLine)
 import           TestUtil (withTempDir)
 
 ------------------------------------------------------------------------------
@@ -510,18 +509,7 @@ spec = do
       removeFile file
       r `shouldSatisfy` either ((file ++ ":3:1: expected an object keyword") `isPrefixOf`) (const False)
 
-  describe "file names in messages (WorldFile.Lexical)" $ do
-    it "displayPath: a printable name as it is, any other quoted with its controls escaped" $ do
-      displayPath "simbot-out/run.svg" `shouldBe` "simbot-out/run.svg"
-      displayPath "out/ä b.svg" `shouldBe` "out/ä b.svg"
-      displayPath "a\nwrote b" `shouldBe` "\"a\\nwrote b\""
-      displayPath "x\ESC[2Jy" `shouldBe` "\"x\\ESC[2Jy\""
-    it "printableLine escapes what could forge or hide output, and keeps accents, emoji and joiners" $ do
-      printableLine "caf\233 \128104\8205\128187" `shouldBe` "caf\233 \128104\8205\128187"
-      printableLine "a\ESC[2Jb\nc" `shouldBe` "a\\ESC[2Jb\\nc"
-      printableLine "x\8238y\8232z\55296" `shouldBe` "x\\8238y\\8232z\\55296"
-    it "displayPath never lets a character that does not print through" $ property $ \f ->
-      all isPrint (displayPath f)
+  describe "file names in messages" $
     it "readWorldFile: a file that cannot be read, or does not parse, is named with its controls escaped" $
       withTempDir $ \dir -> do
         r <- readWorldFile "no\ESC[31msuch\nfile"
@@ -530,14 +518,6 @@ spec = do
         writeFile bad "block 1\n"
         r2 <- readWorldFile bad
         r2 `shouldSatisfy` either (\m -> all (\c -> isPrint c || c == '\n') m && "\\ESC[1mworld" `isInfixOf` m) (const False)
-    it "ioErrorText: an I/O failure naming a file with a newline is one printable line" $ do
-      r <- try (readFile "/no/such/dir/a\nb")
-      case r of
-        Left e  -> do
-          let t = ioErrorText e
-          t `shouldSatisfy` all isPrint
-          t `shouldSatisfy` ("a\\nb" `isInfixOf`)
-        Right _ -> expectationFailure "read a file that cannot exist"
 
   describe "the example worlds" $ do
     mapM_ exampleWorld exampleFiles

@@ -1,5 +1,4 @@
-{-# LANGUAGE BangPatterns        #-}
-{-# LANGUAGE ScopedTypeVariables #-}
+{-# LANGUAGE BangPatterns #-}
 -- |
 -- Module      : AFrobRobotSim.WorldFile.Lexical
 -- Description : The lexical layer of world files: UTF-8 with error
@@ -10,7 +9,8 @@
 -- decoding of valid UTF-8; the tokens of a line with their columns; the
 -- literals (decimal numbers, correctly rounded and checked to be finite,
 -- and robot ids), each rejecting a token with what was expected instead;
--- and quoting for messages, with control characters escaped. See
+-- and a file's bytes read up to a limit, and the message when it cannot
+-- be read ('quote', for messages, is "AFrobRobotSim.Console"'s). See
 -- "AFrobRobotSim.WorldFile" for the format.
 module AFrobRobotSim.WorldFile.Lexical
   ( -- * UTF-8
@@ -29,35 +29,27 @@ module AFrobRobotSim.WorldFile.Lexical
   , integerLit
     -- * Messages
   , quote
-  , displayPath
-  , ioErrorText
   , cannotRead
     -- * Files
   , readFileUpTo
   , canonicalPath
-  , flushStdout
-  , tolerantOutput
-  , printableLine
-  , endOutput
   , lower
   ) where
 
-import           Control.Exception      (IOException, catch, try)
+import           Control.Exception      (IOException, try)
 import           Data.Bits              ((.&.), (.|.), shiftL)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Lazy   as BL
 import qualified Data.ByteString.Unsafe as BU
-import           Data.Char              (GeneralCategory (..), chr, generalCategory, isDigit, isPrint, isSpace,
-                                         showLitChar, toLower)
-import           Data.List              (isInfixOf)
+import           Data.Char              (chr, isDigit, isSpace, toLower)
 import           Data.Word              (Word8)
 import           GHC.IO.Exception       (IOException (ioe_description))
 import           System.Directory       (canonicalizePath)
 import           System.FilePath        (normalise)
-import           System.Exit            (ExitCode (ExitFailure), exitWith)
-import           System.IO              (IOMode (ReadMode), hFileSize, hFlush, hGetEncoding, hPutStrLn,
-                                         hSetEncoding, mkTextEncoding, stderr, stdout, withBinaryFile)
+import           System.IO              (IOMode (ReadMode), hFileSize, withBinaryFile)
 import           System.IO.Error        (ioeGetErrorType)
+
+import           AFrobRobotSim.Console  (displayPath, quote)
 
 ------------------------------------------------------------------------------
 -- UTF-8
@@ -137,35 +129,6 @@ tokEnd (Tok c t) = c + length t
 data Rejection = Rejection String String
 
 
--- | A token in quotes, characters that cannot be printed escaped.
-quote :: String -> String
-quote s = "\"" ++ foldr esc "" s ++ "\""
-  where
-    esc ch rest
-      | isPrint ch && ch /= '"' && ch /= '\\' = ch : rest
-      | otherwise                             = showLitChar ch rest
-
--- | A file name as a message shows it: as it is when every character of
--- it prints, otherwise in quotes with the others escaped ('quote'), so
--- that a name holding a newline or a terminal's escape sequence cannot
--- forge or hide a line of output.
---
--- >>> displayPath "out/run.svg"
--- "out/run.svg"
--- >>> displayPath "out/a\nb.svg"
--- "\"out/a\\nb.svg\""
-displayPath :: FilePath -> String
-displayPath f
-  | all isPrint f = f
-  | otherwise     = quote f
-
--- | An I/O failure as a message shows it: 'show' of the exception (which
--- names the file or handle as given), with every character that does
--- not print escaped as a Haskell literal would have it, for the reason
--- 'displayPath' gives.
-ioErrorText :: IOException -> String
-ioErrorText = printableLine . show
-
 -- | A file that could not be read, as a message naming it and why, but
 -- not the Haskell function that failed:
 -- @FILE: cannot read it: does not exist (No such file or directory)@
@@ -193,58 +156,6 @@ readFileUpTo cap path = try (withBinaryFile path ReadMode $ \h -> do
       more <- BL.toStrict . BL.take (fromIntegral (cap + 1 - B.length s)) <$> BL.hGetContents h
       let t = if B.null more then s else B.append s more
       B.length t `seq` pure (if B.length t > cap then Nothing else Just t))
-
--- | Flush standard output; its failure (a full disk, a pipe whose reader
--- has gone) as a message, for the program to report: left to the
--- runtime's exit, the failure is silent and the exit code 0.
-flushStdout :: IO (Maybe String)
-flushStdout = either (\e -> Just ("cannot write to standard output: " ++ ioErrorText e)) (const Nothing)
-                <$> try (hFlush stdout)
-
--- | Make standard output and standard error write what their encoding
--- cannot (a robot's message with an accent, in the C locale of a batch
--- job; a lone surrogate) as a substitute character instead of failing:
--- left as they are, one such character stops the run with a write
--- error. Handles already set so, or in binary mode, are left alone.
-tolerantOutput :: IO ()
-tolerantOutput = mapM_ tolerant [stdout, stderr]
-  where
-    tolerant h = do
-      enc <- hGetEncoding h
-      case enc of
-        Just e | not ("//" `isInfixOf` show e) ->
-          (mkTextEncoding (show e ++ "//TRANSLIT") >>= hSetEncoding h)
-            `catch` \(_ :: IOException) -> pure ()
-        _ -> pure ()
-
--- | A line of text as it is safe to print on a terminal: the characters
--- that could forge or hide output (controls such as escape sequences or
--- a newline, line and paragraph separators, the controls that reorder
--- text right to left, lone surrogates, unassigned code points) escaped
--- as a Haskell literal writes them, the rest as it is (accents, emoji
--- and the joiners within them, other scripts).
---
--- >>> printableLine "bump\ESC[2J!"
--- "bump\\ESC[2J!"
-printableLine :: String -> String
-printableLine = foldr esc ""
-  where
-    esc ch rest
-      | unsafe ch = showLitChar ch rest
-      | otherwise = ch : rest
-    unsafe ch = case generalCategory ch of
-      Control            -> True
-      Surrogate          -> True
-      LineSeparator      -> True
-      ParagraphSeparator -> True
-      NotAssigned        -> True
-      Format             -> ch `elem` ['\x202A' .. '\x202E'] || ch `elem` ['\x2066' .. '\x2069']
-      _                  -> False
-
--- | @endOutput prog@: 'flushStdout', and on failure the message on
--- standard error, after the program's name, and exit code 1.
-endOutput :: String -> IO ()
-endOutput prog = flushStdout >>= maybe (pure ()) (\m -> hPutStrLn stderr (prog ++ ": " ++ m) >> exitWith (ExitFailure 1))
 
 -- | A path as the file system resolves it ('canonicalizePath': links
 -- followed, @.@ and @..@ gone), or, when it cannot be, the path normalised:

@@ -1,0 +1,114 @@
+{-# LANGUAGE ScopedTypeVariables #-}
+-- |
+-- Module      : AFrobRobotSim.Console
+-- Description : What the programs print: text made safe for a terminal,
+--               and standard output that cannot fail silently.
+--
+-- Every program of the simulator (@simbot@, @afrp-examples@,
+-- @afrp-sweep-merge@, a user's 'AFrobRobotSim.runSim') prints text it
+-- did not write: file names, robots' messages, the operating system's
+-- errors. Printed as they are, a newline or an escape sequence in one can
+-- forge or hide a line, and a character the terminal's encoding lacks
+-- stops the program. And output lost to a full disk is silent when left
+-- to the runtime's exit, with exit code 0. This module is the one place
+-- that deals with both.
+module AFrobRobotSim.Console
+  ( -- * Text for a terminal
+    quote
+  , displayPath
+  , printableLine
+  , ioErrorText
+    -- * Standard output and error
+  , tolerantOutput
+  , flushStdout
+  , endOutput
+  ) where
+
+import           Control.Exception (IOException, catch, try)
+import           Data.Char         (GeneralCategory (..), generalCategory, isPrint, showLitChar)
+import           Data.List         (isInfixOf)
+import           System.Exit       (ExitCode (ExitFailure), exitWith)
+import           System.IO         (hFlush, hGetEncoding, hPutStrLn, hSetEncoding, mkTextEncoding, stderr, stdout)
+
+-- | Text in quotes (a world file's token, a file name), the quote, the
+-- backslash and every character that does not print escaped as a
+-- Haskell literal writes them.
+quote :: String -> String
+quote s = "\"" ++ foldr esc "" s ++ "\""
+  where
+    esc ch rest
+      | isPrint ch && ch /= '"' && ch /= '\\' = ch : rest
+      | otherwise                             = showLitChar ch rest
+
+-- | A file name as a message shows it: as it is when every character of
+-- it prints, otherwise in quotes with the others escaped ('quote'), so
+-- that a name holding a newline or a terminal's escape sequence cannot
+-- forge or hide a line of output.
+--
+-- >>> displayPath "out/run.svg"
+-- "out/run.svg"
+-- >>> displayPath "out/a\nb.svg"
+-- "\"out/a\\nb.svg\""
+displayPath :: FilePath -> String
+displayPath f
+  | all isPrint f = f
+  | otherwise     = quote f
+
+-- | An I/O failure as a message shows it: 'show' of the exception (which
+-- names the file or handle as given), with every character that does
+-- not print escaped as a Haskell literal would have it, for the reason
+-- 'displayPath' gives.
+ioErrorText :: IOException -> String
+ioErrorText = printableLine . show
+
+-- | Flush standard output; its failure (a full disk, a pipe whose reader
+-- has gone) as a message, for the program to report: left to the
+-- runtime's exit, the failure is silent and the exit code 0.
+flushStdout :: IO (Maybe String)
+flushStdout = either (\e -> Just ("cannot write to standard output: " ++ ioErrorText e)) (const Nothing)
+                <$> try (hFlush stdout)
+
+-- | Make standard output and standard error write what their encoding
+-- cannot (a robot's message with an accent, in the C locale of a batch
+-- job; a lone surrogate) as a substitute character instead of failing:
+-- left as they are, one such character stops the run with a write
+-- error. Handles already set so, or in binary mode, are left alone.
+tolerantOutput :: IO ()
+tolerantOutput = mapM_ tolerant [stdout, stderr]
+  where
+    tolerant h = do
+      enc <- hGetEncoding h
+      case enc of
+        Just e | not ("//" `isInfixOf` show e) ->
+          (mkTextEncoding (show e ++ "//TRANSLIT") >>= hSetEncoding h)
+            `catch` \(_ :: IOException) -> pure ()
+        _ -> pure ()
+
+-- | A line of text as it is safe to print on a terminal: the characters
+-- that could forge or hide output (controls such as escape sequences or
+-- a newline, line and paragraph separators, the controls that reorder
+-- text right to left, lone surrogates, unassigned code points) escaped
+-- as a Haskell literal writes them, the rest as it is (accents, emoji
+-- and the joiners within them, other scripts).
+--
+-- >>> printableLine "bump\ESC[2J!"
+-- "bump\\ESC[2J!"
+printableLine :: String -> String
+printableLine = foldr esc ""
+  where
+    esc ch rest
+      | unsafe ch = showLitChar ch rest
+      | otherwise = ch : rest
+    unsafe ch = case generalCategory ch of
+      Control            -> True
+      Surrogate          -> True
+      LineSeparator      -> True
+      ParagraphSeparator -> True
+      NotAssigned        -> True
+      Format             -> ch `elem` ['\x202A' .. '\x202E'] || ch `elem` ['\x2066' .. '\x2069']
+      _                  -> False
+
+-- | @endOutput prog@: 'flushStdout', and on failure the message on
+-- standard error, after the program's name, and exit code 1.
+endOutput :: String -> IO ()
+endOutput prog = flushStdout >>= maybe (pure ()) (\m -> hPutStrLn stderr (prog ++ ": " ++ m) >> exitWith (ExitFailure 1))
