@@ -44,7 +44,7 @@ module AFrobRobotSim.Test
   , robotGap
   ) where
 
-import           Data.List            (tails)
+import           Data.List            (intercalate, tails)
 import           Test.QuickCheck
 
 import           AFRP                 (Time)
@@ -175,10 +175,11 @@ robotView ty i s = case traverse pick s of
   Nothing -> error ("AFrobRobotSim.Test.robotView: no " ++ ty ++ " " ++ show i ++ " in the run (its robots: "
                     ++ robotsOf s ++ ")")
   where
-    robotsOf ((_, ws) : _) = unwords' [ robotType r ++ " " ++ show (robotId r) | r <- wsRobots ws ]
-    robotsOf []            = "none: the run has no sample"
-    unwords' [] = "none"
-    unwords' ns = foldr1 (\a b -> a ++ ", " ++ b) ns
+    -- (the first sample's robots: a stream with none has no missing robot)
+    robotsOf ((_, ws) : _) = case [ robotType r ++ " " ++ show (robotId r) | r <- wsRobots ws ] of
+      [] -> "none"
+      ns -> intercalate ", " ns
+    robotsOf []            = "none"
     pick (dt, ws) = case [ r | r <- wsRobots ws, robotType r == ty, robotId r == i ] of
       (r : _) -> Just (dt, r)
       []      -> Nothing
