@@ -315,23 +315,62 @@ sample p = SF (compN (fanN (sfNode (repeatedly p ())) idN) (arrN (\(e, a) -> e `
 -- | @sampleWindow w p@ takes a sample of the input every @p@ seconds (as
 -- 'sample', but one sample per period even when a time step spans several
 -- periods) and, at each sampling instant, produces the last @w@ samples
--- taken, oldest first. A window size below 1 or a non-positive period is an
--- error (Yampa does not check: there a window of 0 gives empty lists and a
--- period of 0 hangs).
+-- taken, oldest first. No occurrence at time 0. A window size below 1 or a
+-- non-positive period is an error (Yampa does not check: there a window of
+-- 0 gives empty lists and a period of 0 hangs).
+--
+-- The sampling instants are those of @afterEachCat (repeat (p, ()))@: each
+-- is @p@ after the previous, in the compensated sum of "AFRP.Internal.Clock".
+-- Memory and time stay bounded whatever one step spans: the samples of one
+-- step are all the same input, so a step that spans more periods than the
+-- window holds fills the window with that input and no more. When a step
+-- spans more than @max w 4096@ periods, the rest of them are counted at
+-- once (a multiple of @p@ added to the clock in one sum), so that the
+-- following instants may differ from the period-by-period sum by its
+-- rounding. Where the periods cannot be counted (a step that lands more
+-- than @2^53@ periods beyond, an infinite time, or a period too small to
+-- move a clock showing that time), the current time is taken as the last
+-- instant, and the window is filled with the input.
 sampleWindow :: Int -> Time -> SF a (Event [a])
 sampleWindow w p
   | w < 1     = error ("AFRP.EventSource.sampleWindow: window size must be at least 1, got "
                        ++ show w)
   | p <= 0 || isNaN p = error ("AFRP.EventSource.sampleWindow: the period must be positive, got "
                                ++ show p)
-  | otherwise = SF (compN ticks (mealyN window Seq.empty))
+  | otherwise = SF (initN (\_ -> (# go clockZero clockZero Seq.empty, NoEvent #)))
   where
-    ticks = fanN idN (sfNode (afterEachCat (repeat (p, ()))))
-    window win (a, e) = case e of
-      NoEvent -> (win, NoEvent)
-      Event us ->
-        let win' = Seq.drop (Seq.length win + length us - w) (foldl (\s _ -> s |> a) win us)
-        in (win', Event (foldr (:) [] win'))
+    -- clock: local time now; due: the last sampling instant so far.
+    go !clock !due !win = NStep (\dt a ->
+      let !clock' = tick clock dt
+      in case crossings clock' due of
+        (# due', k #)
+          | k == 0    -> (# go clock' due' win, NoEvent #)
+          | otherwise ->
+              let n     = min k w
+                  !win' = Seq.drop (Seq.length win + n - w) (win Seq.>< Seq.replicate n a)
+              in (# go clock' due' win', Event (foldr (:) [] win') #))
+    -- The instants up to the clock's time: the last of them, and how many
+    -- there are (exact up to the window's size and beyond it by at least
+    -- that, which is all the window needs).
+    crossings :: Clock -> Clock -> (# Clock, Int #)
+    crossings clock = count 0
+      where
+        t = clockTime clock
+        count :: Int -> Clock -> (# Clock, Int #)
+        count !k !d
+          | not (clockTime d' <= t) = (# d, k #)
+          | k < jumpAt              = count (k + 1) d'
+          -- beyond the window: the periods but the last one or two at once
+          | r > 2 && r < 9007199254740992 =
+              count k (tick d (fromIntegral (floor r - 1 :: Int) * p))
+          -- the last one or two, while each is a visible step
+          | r <= 2 && clockTime d' > clockTime d = count k d'
+          -- further than a Double counts, or no visible step: caught up
+          | otherwise               = (# clock, k #)
+          where
+            d' = tick d p
+            r  = (t - clockTime d) / p
+    jumpAt = max w 4096
 
 errNeg :: forall (r :: RuntimeRep) (x :: TYPE r). String -> Double -> x
 errNeg f q = error ("AFRP.EventSource." ++ f ++ ": negative or NaN time, got " ++ show q)

@@ -271,6 +271,24 @@ spec = do
       -- times 0, .5, 2.0, 2.5: the step to 2.0 spans 1.0, 1.5 and 2.0
       runSamples (sampleWindow 3 0.5) [(0, 0), (0.5, 1), (1.5, 2), (0.5, 3 :: Int)]
         `shouldBe` [n, e [1], e [2, 2, 2], e [2, 2, 3]]
+    it "a step spanning more periods than the window fills it with that step's input" $
+      runSamples (sampleWindow 3 0.5) [(0, 0), (0.5, 1), (10, 2), (0.5, 3 :: Int)]
+        `shouldBe` [n, e [1], e [2, 2, 2], e [2, 2, 3]]
+    it "a step spanning billions of periods ends at once, in bounded memory (it built a list of every period)" $ do
+      runSamples (sampleWindow 3 1e-6) [(0, 'a'), (1e6, 'b'), (0.5, 'c'), (1e-6, 'd')]
+        `withinTwoSeconds` [n, e "bbb", e "ccc", e "ccd"]
+      -- more periods than a Double counts, a period below the clock's
+      -- resolution, and an infinite time: every sample fills the window
+      runSamples (sampleWindow 2 1e-300) [(0, 'a'), (1, 'b'), (1, 'c')]
+        `withinTwoSeconds` [n, e "bb", e "cc"]
+      runSamples (sampleWindow 2 1e-9) [(0, 'a'), (1e9, 'b'), (1e-9, 'c')]
+        `withinTwoSeconds` [n, e "bb", e "cc"]
+      runSamples (sampleWindow 2 1) [(0, 'a'), (1 / 0, 'b'), (1, 'c')]
+        `withinTwoSeconds` [n, e "bb", e "cc"]
+    it "after a step spanning many periods, the instants stay on the multiples of the period" $
+      -- 20,000 periods of 0.5 in one step (counted at once), then steps of 0.25
+      runSamples (sampleWindow 2 0.5) ((0, 0) : (10000.25, 1) : [ (0.25, k) | k <- [2 .. 6 :: Int] ])
+        `shouldBe` [n, e [1, 1], e [1, 2], n, e [2, 4], n, e [4, 6]]
     it "with a window of 1 is sample with singleton lists" $
       runDt 0.5 (sampleWindow 1 1) "abcde" `shouldBe` [n, n, e "c", n, e "e"]
     it "with a window below 1 is an error" $
