@@ -23,7 +23,10 @@
 -- 4. Balls that now overlap and approach each other collide elastically
 --    (equal masses: the normal components of their velocities are
 --    exchanged) and are pushed apart, pair by pair in the order (0, 1),
---    (0, 2), ..., (1, 2), ...
+--    (0, 2), ..., (1, 2), ... Each push is swept, as a robot's is, and
+--    stops at a wall or block: a ball pressed against a wall by another
+--    stays there, overlapping it, instead of being pushed into the wall
+--    (or, in a pile, out of the world).
 --
 -- As for the robots ("AFrobRobotSim.Physics"), nothing compares every ball
 -- with everything: the boxes, the robots and the balls are found on grids,
@@ -51,6 +54,7 @@ import           AFRP                    (DTime)
 import           AFRP.Geometry
 import           AFrob.Dimensions
 import           AFrobRobotSim.Arena
+import           AFrobRobotSim.Clearance (clearanceAt)
 import           AFrobRobotSim.FlatArray (newDblArr, readD, writeD)
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Shapes
@@ -142,23 +146,32 @@ stepBall dt arena robots near b0 =
         let vr  = robotVelocity r
             rel = bVel b ^-^ vr
             v'  = if rel `dot` n < 0 then vr ^+^ bounce n rel else bVel b
-        in b { bPos = pushedTo b ((depth + 1e-9) *^ n), bVel = v' }
-    -- The push out of a robot is swept like any move and stops at a wall
-    -- or block: a ball squeezed between a robot and a wall stays pinned
-    -- there, overlapping the robot, and never passes through the wall.
-    pushedTo b push =
-      let Point2 px py = bPos b
-          Vector2 ux uy = push
-          rb = ballRadius + querySlack
-          s = foldBoxesIn (arenaIndex arena) (min px (px + ux) - rb) (min py (py + uy) - rb)
-                          (max px (px + ux) + rb) (max py (py + uy) + rb)
-                (\acc _ bx -> case sweepCircleBox (bPos b) ballRadius push bx of
-                    Just (s', _) -> min acc s'
-                    Nothing      -> acc) 1
-      in if s >= 1 then bPos b .+^ push else bPos b .+^ (max 0 (s - 1e-9) *^ push)
+        in b { bPos = pushedTo arena (bPos b) ((depth + 1e-9) *^ n), bVel = v' }
     bounce :: Vector2 Double -> Vector2 Double -> Vector2 Double
     bounce n rel = let rn = (rel `dot` n) *^ n
                    in (rel ^-^ rn) ^-^ (ballRestitution *^ rn)
+
+-- Where a ball at @p@ pushed by @push@ ends: the push is swept like any
+-- move and stops at a wall or block, so that a ball squeezed between a
+-- robot or another ball and a wall stays pinned there, overlapping what
+-- pushed it, and never passes into or through the wall. Without a box in
+-- the way it is @p .+^ push@, and so it is taken to be, without a look at
+-- the boxes, where the clearance at @p@ exceeds the push and the radius
+-- (most pushes, in a crowd away from the walls).
+pushedTo :: Arena -> Position2 -> Vector2 Double -> Position2
+pushedTo arena p@(Point2 px py) push@(Vector2 ux uy)
+  | clear > 0 && clear * clear > ux * ux + uy * uy = p .+^ push
+  | otherwise =
+  let s = foldBoxesIn (arenaIndex arena) (min px (px + ux) - rb) (min py (py + uy) - rb)
+                      (max px (px + ux) + rb) (max py (py + uy) + rb)
+            (\acc _ bx -> case sweepCircleBox p ballRadius push bx of
+                Just (s', _) -> min acc s'
+                Nothing      -> acc) 1
+  in if s >= 1 then p .+^ push else p .+^ (max 0 (s - 1e-9) *^ push)
+  where
+    rb = ballRadius + querySlack
+    -- (with room for rounding)
+    clear = clearanceAt (arenaClearance arena) px py - rb - querySlack
 
 -- A candidate contact of a ball: fraction, order (boxes first, then
 -- robots), normal, velocity of what it hits.
@@ -216,8 +229,9 @@ resolvePairs arena bs0 = runST $ do
                   half = (depth / 2 + 1e-9) *^ nrm
                   (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
                            | otherwise = (bVel bi, bVel bj)
-                  !bi' = Ball (bPos bi .+^ half) vi
-                  !bj' = Ball (bPos bj .-^ half) vj
+                  -- (each push swept: it stops at a wall or block)
+                  !bi' = Ball (pushedTo arena (bPos bi) half) vi
+                  !bj' = Ball (pushedTo arena (bPos bj) (negateVector half)) vj
               unsafeWriteSTArray arr i bi'
               unsafeWriteSTArray arr next bj'
               let step = norm half

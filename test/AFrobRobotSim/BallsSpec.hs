@@ -23,7 +23,7 @@ import           TestUtil              (shouldApprox)
 -- The reference: the original all-pairs code
 
 refStepBalls :: Double -> Arena -> [Robot] -> [Ball] -> [Ball]
-refStepBalls dt arena robots balls = refResolvePairs (map (refStepBall dt arena robots) balls)
+refStepBalls dt arena robots balls = refResolvePairs arena (map (refStepBall dt arena robots) balls)
 
 refStepBall :: Double -> Arena -> [Robot] -> Ball -> Ball
 refStepBall dt arena robots b0 =
@@ -48,17 +48,14 @@ refStepBall dt arena robots b0 =
         let vr  = robotVelocity r
             rel = bVel b ^-^ vr
             v'  = if rel `dot` n < 0 then vr ^+^ bounce n rel else bVel b
-            push = (depth + 1e-9) *^ n
-            s = minimum (1 : [ s' | bx <- arenaBoxes arena, Just (s', _) <- [sweepCircleBox (bPos b) ballRadius' push bx] ])
-            p' = if s >= 1 then bPos b .+^ push else bPos b .+^ (max 0 (s - 1e-9) *^ push)
-        in b { bPos = p', bVel = v' }
+        in b { bPos = refPushedTo arena (bPos b) ((depth + 1e-9) *^ n), bVel = v' }
     bounce :: Vector2 Double -> Vector2 Double -> Vector2 Double
     bounce n rel = let rn = (rel `dot` n) *^ n
                    in (rel ^-^ rn) ^-^ (ballRestitution *^ rn)
     minimumOn f = foldr1 (\x y -> if f x <= f y then x else y)
 
-refResolvePairs :: [Ball] -> [Ball]
-refResolvePairs bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 1 .. n - 1] ]
+refResolvePairs :: Arena -> [Ball] -> [Ball]
+refResolvePairs arena bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 1 .. n - 1] ]
   where
     n = length bs0
     resolve bs (i, j) =
@@ -71,12 +68,47 @@ refResolvePairs bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 
                  half = (depth / 2 + 1e-9) *^ nrm
                  (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
                           | otherwise = (bVel bi, bVel bj)
-                 bi' = Ball (bPos bi .+^ half) vi
-                 bj' = Ball (bPos bj .-^ half) vj
+                 bi' = Ball (refPushedTo arena (bPos bi) half) vi
+                 bj' = Ball (refPushedTo arena (bPos bj) (negateVector half)) vj
              in [ if k == i then bi' else if k == j then bj' else b | (k, b) <- zip [0 ..] bs ]
+
+-- | A push, swept against every box: it stops at the first.
+refPushedTo :: Arena -> Point2 Double -> Vector2 Double -> Point2 Double
+refPushedTo arena p push =
+  let s = minimum (1 : [ s' | bx <- arenaBoxes arena, Just (s', _) <- [sweepCircleBox p ballRadius' push bx] ])
+  in if s >= 1 then p .+^ push else p .+^ (max 0 (s - 1e-9) *^ push)
 
 ------------------------------------------------------------------------------
 -- Single cases
+
+-- | How deep a ball lies in the arena's deepest box (0 if in none).
+maxPenetration :: Arena -> Ball -> Double
+maxPenetration arena b =
+  maximum (0 : [ d | bx <- arenaBoxes arena, Just (d, _) <- [circleBoxPenetration (bPos b) ballRadius' bx] ])
+
+-- | A pile of 2 to 12 balls around a point next to one of the world's
+-- boxes (a wall, a block or the boundary), clear of every box, at rest or
+-- moving.
+genPileByBox :: World -> Gen [Ball]
+genPileByBox w = do
+  let arena = arenaFor w
+  Box x0 y0 x1 y1 <- elements (arenaBoxes arena)
+  -- a point just outside one side of the box
+  side <- chooseInt (0, 3)
+  t <- choose (0, 1)
+  let gap = ballRadius' + 0.02
+      (cx, cy) = case side of
+        0 -> (x0 - gap, y0 + t * (y1 - y0))
+        1 -> (x1 + gap, y0 + t * (y1 - y0))
+        2 -> (x0 + t * (x1 - x0), y0 - gap)
+        _ -> (x0 + t * (x1 - x0), y1 + gap)
+  n <- chooseInt (2, 12)
+  bs <- vectorOf n $ do
+    dx <- choose (-0.05, 0.05)
+    dy <- choose (-0.05, 0.05)
+    v  <- elements [zeroVector, Vector2 0.5 0, Vector2 0 (-0.5)]
+    pure (Ball (Point2 (cx + dx) (cy + dy)) v)
+  pure (filter (\b -> maxPenetration arena b == 0) bs)
 
 -- | Velocity and position of a ball, as plain numbers.
 state :: Ball -> (Double, Double, Double, Double)
@@ -141,6 +173,21 @@ spec = do
               arena = arenaFor (World notesBounds [])
               steps f = take 4 (iterate (f 0.01 arena []) bs)
           in steps stepBalls === steps refStepBalls
+    it "never pushes a ball into a wall: two overlapping balls against the boundary stay inside" $ do
+      -- (a pushed ball went 0.07 m into the boundary, and three stacked
+      -- ones out of the world)
+      let pair = stepBalls 0.01 emptyArena [] [Ball (Point2 4.84 0) zeroVector, Ball (Point2 4.70 0) zeroVector]
+      map (maxPenetration emptyArena) pair `shouldSatisfy` all (<= 1e-9)
+      let stacked = iterate (stepBalls 0.01 emptyArena []) (replicate 3 (Ball (Point2 4.84 0) zeroVector)
+                                                             ++ [Ball (Point2 4.84 0.01) zeroVector])
+      concatMap (map (maxPenetration emptyArena)) (take 20 stacked) `shouldSatisfy` all (<= 1e-9)
+    it "leaves every ball of a pile against walls and blocks no deeper in a box than it was" $
+      withMaxSuccess 100 $ forAll genWorld $ \w -> forAll (genPileByBox w) $ \bs ->
+        let arena = arenaFor w
+            depthsBefore = map (maxPenetration arena) bs
+            depthsAfter  = map (maxPenetration arena) (stepBalls 0.01 arena [] bs)
+        in counterexample (show (depthsBefore, depthsAfter)) $
+             and (zipWith (\b a -> a <= max b 0 + 1e-9) depthsBefore depthsAfter)
     it "simulates 1000 balls in a crowd faster than real time" $ do
       -- 0.5 s of simulated time; it takes about 0.05 s
       r <- timeout 500000 (evaluate (runBallBench 1000 50))
