@@ -1,4 +1,5 @@
 {-# LANGUAGE ScopedTypeVariables #-}
+{-# LANGUAGE ForeignFunctionInterface #-}
 -- |
 -- Module      : AFrobRobotSim.Console
 -- Description : What the programs print: text made safe for a terminal,
@@ -20,13 +21,16 @@ module AFrobRobotSim.Console
   , ioErrorText
     -- * Standard output and error
   , tolerantOutput
+  , closedAtStart
   , flushStdout
   , endOutput
   ) where
 
 import           Control.Exception (IOException, catch, try)
 import           Data.Char         (GeneralCategory (..), generalCategory, isPrint, showLitChar)
+import           Data.Bits         (testBit)
 import           Data.List         (isInfixOf)
+import           Foreign.C.Types   (CInt (..))
 import           System.Exit       (ExitCode (ExitFailure), exitWith)
 import           System.IO         (hFlush, hGetEncoding, hPutStrLn, hSetEncoding, mkTextEncoding, stderr, stdout)
 
@@ -73,8 +77,13 @@ flushStdout = either (\e -> Just ("cannot write to standard output: " ++ ioError
 -- job; a lone surrogate) as a substitute character instead of failing:
 -- left as they are, one such character stops the run with a write
 -- error. Handles already set so, or in binary mode, are left alone.
+--
+-- A handle whose descriptor was closed when the program started
+-- ('closedAtStart') is left alone: writing to it fails, as it should.
 tolerantOutput :: IO ()
-tolerantOutput = mapM_ tolerant [stdout, stderr]
+tolerantOutput = do
+  closed <- closedAtStart
+  mapM_ tolerant [ h | (h, fd) <- [(stdout, 1), (stderr, 2)], fd `notElem` closed ]
   where
     tolerant h = do
       enc <- hGetEncoding h
@@ -83,6 +92,21 @@ tolerantOutput = mapM_ tolerant [stdout, stderr]
           (mkTextEncoding (show e ++ "//TRANSLIT") >>= hSetEncoding h)
             `catch` \(_ :: IOException) -> pure ()
         _ -> pure ()
+
+-- | The standard descriptors (0, 1, 2) that were closed when the program
+-- started (@prog >&-@). Each is held from the start, before the runtime
+-- starts, by @\/dev\/null@ opened for reading (@cbits/std_fds.c@): left
+-- free, the number was taken by the runtime's timer, and the first write
+-- to standard output waited forever. Writing to such a descriptor fails
+-- (@EBADF@), as writing to a closed one does, so the program reports it
+-- and exits non-zero; reading standard input gives end of file.
+closedAtStart :: IO [Int]
+closedAtStart = do
+  bits <- c_afrp_std_fds_reopened
+  pure [ fd | fd <- [0, 1, 2], testBit bits fd ]
+
+foreign import ccall unsafe "afrp_std_fds_reopened"
+  c_afrp_std_fds_reopened :: IO CInt
 
 -- | A line of text as it is safe to print on a terminal: the characters
 -- that could forge or hide output (controls such as escape sequences or

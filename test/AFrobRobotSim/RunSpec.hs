@@ -8,7 +8,8 @@ import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
 import           Control.Concurrent  (threadDelay)
 import           System.Process      (CreateProcess (..), StdStream (..), createProcess, interruptProcessGroupOf,
-                                      proc, readCreateProcessWithExitCode, waitForProcess)
+                                      proc, readCreateProcessWithExitCode, terminateProcess, waitForProcess)
+import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, sort, tails)
@@ -72,7 +73,7 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- with the SVG and trails, under the heap limit the parent gives it
 -- (@+RTS -M40m@); a leak ends it with heap overflow (exit code 251).
 -- @long@: ten simulated hours with small frames, the log and the page,
--- for the parent to interrupt.
+-- for the parent to interrupt. @quick@: two simulated seconds, an SVG.
 child :: String -> IO ()
 child arg = case break (== ':') arg of
   ("hour", _ : dir) -> runSimWith defaultSimOptions
@@ -82,6 +83,7 @@ child arg = case break (== ':') arg of
     { optSeconds = 36000, optQuiet = True, optFrames = True, optScale = Just 10, optOut = dir </> "f"
     , optSvg = Just (dir </> "run.svg"), optLog = Just (dir </> "run.jsonl")
     , optReplay = Just (dir </> "run.html") } Nothing drive drive
+  ("quick", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg") } (Just world) drive drive
   _ -> ioError (userError ("unknown child " ++ show arg))
 
 spec :: Spec
@@ -154,6 +156,23 @@ spec = do
       (code, err) `shouldBe` (ExitSuccess, "")
       out `shouldSatisfy` ("3600.00 s simulated in 360001 steps" `isPrefixOf`)
 
+  describe "standard output closed when the program starts" $
+    it "runs, writes its files, then fails with exit code 1 and a message (it waited forever)" $ withTempDir $ \dir -> do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (_, _, Just herr, ph) <- createProcess (proc self [])
+        { env = Just ((childVariable, "quick:" ++ dir) : environment)
+        , std_out = NoStream, std_err = CreatePipe }
+      err <- hGetContents herr
+      done <- timeout 60000000 (length err `seq` waitForProcess ph)
+      -- (a child that hangs is stopped, not left behind)
+      _ <- maybe (terminateProcess ph >> waitForProcess ph) pure done
+      done `shouldBe` Just (ExitFailure 1)
+      -- (without the descriptor held, the runtime's timer or event
+      -- descriptor took number 1: the run hung, or failed with EINVAL)
+      err `shouldSatisfy` ("cannot write to standard output" `isInfixOf`)
+      err `shouldSatisfy` ("Bad file descriptor" `isInfixOf`)
+      doesFileExist (dir </> "run.svg") `shouldReturn` True
   describe "Ctrl-C" $
     it "stops with exit code 130, the summary, whole frames, a log with its summary and the page" $ withTempDir $ \dir -> do
       self <- getExecutablePath
