@@ -349,9 +349,10 @@ sampleWindow w p
               let n     = min k w
                   !win' = Seq.drop (Seq.length win + n - w) (win Seq.>< Seq.replicate n a)
               in (# go clock' due' win', Event (foldr (:) [] win') #))
-    -- The instants up to the clock's time: the last of them, and how many
-    -- there are (exact up to the window's size and beyond it by at least
-    -- that, which is all the window needs).
+    -- The instants after @due@ up to the clock's time: the last of them,
+    -- and how many there are (exact up to 'jumpAt'; beyond, a count of at
+    -- least 'jumpAt', which is at least the window's size: all the window
+    -- needs).
     crossings :: Clock -> Clock -> (# Clock, Int #)
     crossings clock = count 0
       where
