@@ -24,9 +24,14 @@
 --    (equal masses: the normal components of their velocities are
 --    exchanged) and are pushed apart, pair by pair in the order (0, 1),
 --    (0, 2), ..., (1, 2), ... Each push is swept, as a robot's is, and
---    stops at a wall or block: a ball pressed against a wall by another
---    stays there, overlapping it, instead of being pushed into the wall
---    (or, in a pile, out of the world).
+--    stops at a wall, block or robot: a ball pressed against a wall or a
+--    robot by another stays there, overlapping it, instead of being
+--    pushed into the wall (or, in a pile, out of the world) or into the
+--    robot (robots are immovable: a ball overlaps a robot only where
+--    that robot drove into it and the ball could not get away). A
+--    robot's push in step 1 is swept likewise: a ball squeezed between
+--    two robots stays overlapping the one that pushed it, as one squeezed
+--    between a robot and a wall.
 --
 -- As for the robots ("AFrobRobotSim.Physics"), nothing compares every ball
 -- with everything: the boxes, the robots and the balls are found on grids,
@@ -55,7 +60,7 @@ import           AFRP.Geometry
 import           AFrob.Dimensions
 import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Clearance (clearanceAt)
-import           AFrobRobotSim.FlatArray (newDblArr, readD, writeD)
+import           AFrobRobotSim.FlatArray (freezeI, indexI, newDblArr, newIntArr, readD, writeD, writeI)
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Shapes
 import           AFrobRobotSim.SpatialIndex
@@ -86,7 +91,7 @@ ballRadius = ballDiameter / 2
 stepBalls :: DTime -> Arena -> [Robot] -> [Ball] -> [Ball]
 stepBalls _ _ _ [] = []
 stepBalls dt arena robots balls =
-  resolvePairs arena (map (stepBall dt arena robotArr near) balls)
+  resolvePairs arena robotArr near (map (stepBall dt arena robotArr near) balls)
   where
     robotArr = listArray (0, length robots - 1) robots
     near     = robotIndex arena robots
@@ -146,30 +151,46 @@ stepBall dt arena robots near b0 =
         let vr  = robotVelocity r
             rel = bVel b ^-^ vr
             v'  = if rel `dot` n < 0 then vr ^+^ bounce n rel else bVel b
-        in b { bPos = pushedTo arena (bPos b) ((depth + 1e-9) *^ n), bVel = v' }
+        in b { bPos = pushedTo arena robots near True (bPos b) ((depth + 1e-9) *^ n), bVel = v' }
     bounce :: Vector2 Double -> Vector2 Double -> Vector2 Double
     bounce n rel = let rn = (rel `dot` n) *^ n
                    in (rel ^-^ rn) ^-^ (ballRestitution *^ rn)
 
 -- Where a ball at @p@ pushed by @push@ ends: the push is swept like any
--- move and stops at a wall or block, so that a ball squeezed between a
--- robot or another ball and a wall stays pinned there, overlapping what
--- pushed it, and never passes into or through the wall. Without a box in
--- the way it is @p .+^ push@, and so it is taken to be, without a look at
--- the boxes, where the clearance at @p@ exceeds the push and the radius
--- (most pushes, in a crowd away from the walls).
-pushedTo :: Arena -> Position2 -> Vector2 Double -> Position2
-pushedTo arena p@(Point2 px py) push@(Vector2 ux uy)
-  | clear > 0 && clear * clear > ux * ux + uy * uy = p .+^ push
-  | otherwise =
-  let s = foldBoxesIn (arenaIndex arena) (min px (px + ux) - rb) (min py (py + uy) - rb)
-                      (max px (px + ux) + rb) (max py (py + uy) + rb)
+-- move and stops at a wall, block or robot (the robots where they now
+-- are, given as an array and on a grid), so that a ball squeezed between
+-- a robot or another ball and a wall or a robot stays pinned there,
+-- overlapping what pushed it, and never passes into or through the wall
+-- or the robot. (A robot the ball already overlaps stops the push only if
+-- the push goes further into it, as 'sweepCircleCircle' has it: the robot
+-- that pushes does not.) Without a box or robot in the way it is
+-- @p .+^ push@. The boxes are taken to be out of the way, without a look
+-- at them, where the clearance at @p@ exceeds the push and the radius
+-- (most pushes, in a crowd away from the walls), and so are the robots
+-- when the caller knows none to be near (the 'Bool' is 'False').
+pushedTo :: Arena -> Array Int Robot -> PointIndex -> Bool -> Position2 -> Vector2 Double -> Position2
+pushedTo arena robots near robotsNear p@(Point2 px py) push@(Vector2 ux uy) =
+  if s >= 1 then p .+^ push else p .+^ (max 0 (s - 1e-9) *^ push)
+  where
+    x0 = min px (px + ux)
+    y0 = min py (py + uy)
+    x1 = max px (px + ux)
+    y1 = max py (py + uy)
+    sBoxes
+      | clear > 0 && clear * clear > ux * ux + uy * uy = 1
+      | otherwise =
+          foldBoxesIn (arenaIndex arena) (x0 - rb) (y0 - rb) (x1 + rb) (y1 + rb)
             (\acc _ bx -> case sweepCircleBox p ballRadius push bx of
                 Just (s', _) -> min acc s'
                 Nothing      -> acc) 1
-  in if s >= 1 then p .+^ push else p .+^ (max 0 (s - 1e-9) *^ push)
-  where
+    s | not robotsNear || pointIndexCount near == 0 = sBoxes
+      | otherwise =
+          foldPointsIn near (x0 - rr) (y0 - rr) (x1 + rr) (y1 + rr)
+            (\acc j -> case sweepCircleCircle p ballRadius push (rPos (unsafeAt robots j)) robotRadius of
+                Just (s', _) -> min acc s'
+                Nothing      -> acc) sBoxes
     rb = ballRadius + querySlack
+    rr = ballRadius + robotRadius + querySlack
     -- (with room for rounding)
     clear = clearanceAt (arenaClearance arena) px py - rb - querySlack
 
@@ -193,8 +214,8 @@ better h1@(Hit s1 k1 _ _) h2@(Hit s2 k2 _ _)
 -- sum of its pushes bounds how far it is from where it was indexed).
 -- Widening by the sum of all pushes instead, as this once did, grew the
 -- query to the whole world in a crowd of balls: all pairs again.
-resolvePairs :: Arena -> [Ball] -> [Ball]
-resolvePairs arena bs0 = runST $ do
+resolvePairs :: Arena -> Array Int Robot -> PointIndex -> [Ball] -> [Ball]
+resolvePairs arena robots near bs0 = runST $ do
   arr <- newSTArray (0, n - 1) (Ball origin zeroVector)
   mapM_ (\(k, b) -> unsafeWriteSTArray arr k b) (zip [0 ..] bs0)
   -- how far each ball has been pushed in all (an upper bound of its
@@ -225,18 +246,23 @@ resolvePairs arena bs0 = runST $ do
           case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
             Nothing -> pure ()
             Just (depth, nrm) -> do
-              let relN = (bVel bi ^-^ bVel bj) `dot` nrm
-                  half = (depth / 2 + 1e-9) *^ nrm
-                  (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
-                           | otherwise = (bVel bi, bVel bj)
-                  -- (each push swept: it stops at a wall or block)
-                  !bi' = Ball (pushedTo arena (bPos bi) half) vi
-                  !bj' = Ball (pushedTo arena (bPos bj) (negateVector half)) vj
-              unsafeWriteSTArray arr i bi'
-              unsafeWriteSTArray arr next bj'
-              let step = norm half
               pi' <- readD pushed i
               pj' <- readD pushed next
+              let relN = (bVel bi ^-^ bVel bj) `dot` nrm
+                  half = (depth / 2 + 1e-9) *^ nrm
+                  step = norm half
+                  (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
+                           | otherwise = (bVel bi, bVel bj)
+                  -- Each push is swept: it stops at a wall, block or robot.
+                  -- A ball is within its pushes so far of where it was
+                  -- indexed, so the push cannot reach a robot when no robot
+                  -- was within 'robotMargin' of that and the pushes,
+                  -- this one included, come to less.
+                  robotsNear k pk = indexI robotClose k /= 0 || pk + step >= robotMargin
+                  !bi' = Ball (pushedTo arena robots near (robotsNear i pi') (bPos bi) half) vi
+                  !bj' = Ball (pushedTo arena robots near (robotsNear next pj') (bPos bj) (negateVector half)) vj
+              unsafeWriteSTArray arr i bi'
+              unsafeWriteSTArray arr next bj'
               writeD pushed i (pi' + step)
               writeD pushed next (pj' + step)
               writeSTRef drift (max d0 (max (pi' + step) (pj' + step)))
@@ -255,6 +281,38 @@ resolvePairs arena bs0 = runST $ do
   where
     n    = length bs0
     grid = ballIndex arena bs0
+    -- For each ball, 1 if a robot's centre is within 'robotMargin' (and
+    -- the two radii) of the ball's indexed centre along x and y, else 0:
+    -- one query of the robots' grid for each ball, instead of one for each
+    -- push (a crowd of balls pushes each several times a step).
+    robotClose = runST $ do
+      cl <- newIntArr (max 1 n) 0
+      let reach = ballRadius + robotRadius + querySlack + robotMargin
+          mark !k
+            | k >= n    = pure ()
+            | otherwise = do
+                let x = pointX grid k
+                    y = pointY grid k
+                    nr = pointIndexCount near
+                    -- (a few robots are looked at one by one: cheaper than
+                    -- the cells of the square)
+                    within j = let dx = pointX near j - x
+                                   dy = pointY near j - y
+                               in not (abs dx > reach || abs dy > reach)
+                    close | nr <= 16  = any within [0 .. nr - 1]
+                          | otherwise = foldPointsIn near (x - reach) (y - reach) (x + reach) (y + reach)
+                                          (\_ _ -> True) False
+                writeI cl k (if close then 1 else 0)
+                mark (k + 1)
+      mark 0
+      freezeI cl
+
+-- How far beyond touching a robot must be from where a ball was indexed
+-- for 'resolvePairs' to know, without a look at the robots, that the
+-- ball's pushes in this step cannot reach it: 0.5 m (far more than the
+-- pushes that part overlapping balls add up to in a step).
+robotMargin :: Double
+robotMargin = 0.5
 
 -- The candidates of 'resolvePairs' for one ball: the rectangle they were
 -- gathered from (centre, half-side), the margin it was widened by, and

@@ -136,19 +136,28 @@ robotVelocity r = Vector2 (rSpeed r * rCos r) (rSpeed r * rSin r)
   -- vector2Polar (rSpeed r) (rHeading r), with the cached cos and sin
 
 -- | The commanded (left, right) wheel speeds of a command, each clamped to
--- the given maximum; non-finite values count as 0.
+-- the given maximum; non-finite values count as 0. For 'DriveTR', that is
+-- a non-finite @v@ or @w@ (both wheels 0): the wheel speeds of finite ones
+-- are clamped even where @v -/+ w l/2@ overflows to an infinity (it
+-- counted as 0, so that @DriveTR 1.7e308 1.7e308@ drove one wheel at full
+-- speed and stopped the other).
 wheelCommand :: Length -> Speed -> DriveCommand -> (Velocity, Velocity)
 wheelCommand l wsMax cmd = case cmd of
   DriveBrake      -> (0, 0)
   DriveWheels a b -> let !vl = clampW a
                          !vr = clampW b
                      in (vl, vr)
-  DriveTR v w     -> let !vl = clampW (v - w * l / 2)
-                         !vr = clampW (v + w * l / 2)
+  DriveTR v w
+    | finite v && finite w ->
+                     let !vl = clampI (v - w * l / 2)
+                         !vr = clampI (v + w * l / 2)
                      in (vl, vr)
+    | otherwise   -> (0, 0)
   where
     clampW x | not (finite x) = 0
-             | otherwise      = max (-wsMax) (min wsMax x)
+             | otherwise      = clampI x
+    -- (an infinity, from finite numbers, is clamped like any number)
+    clampI x = max (-wsMax) (min wsMax x)
 
 -- | Move every robot by one step, in order, each against the obstacles and
 -- the other robots' current positions.

@@ -138,13 +138,22 @@ earlier h1@(Hit s1 _ _) h2@(Hit s2 _ _) = if s1 <= s2 then h1 else h2
 -- strictly outside the circle) enters the circle of centre @c@ and radius
 -- @r@, with the outward unit normal there. Tangential (grazing) paths do not
 -- enter and give 'noHit'.
+--
+-- A displacement so long that its squared length or the discriminant
+-- overflows (beyond about 1e150 in world units: a step of 1e150 s and
+-- more) is scaled down to its largest component first, and the fraction
+-- scaled back: without that, the infinite or NaN discriminant read as a
+-- miss, and a disc moved that far passed through the circle. Every other
+-- displacement takes the unscaled path, bit for bit as before.
 enterCircle :: Double -> Double -> Double -> Double
             -> Double -> Double -> Double -> Hit
 enterCircle px py dx dy cx cy r
-  | b >= 0 || disc <= 0 = noHit
-  | s < 0 || s > 1      = noHit
-  | l > 0               = Hit s (hx / l) (hy / l)
-  | otherwise           = noHit
+  | a - a == 0 && disc - disc == 0 = enter 1 noHit dx dy b disc
+  | not (k - k == 0) || k == 0     = noHit   -- (a non-finite move)
+  | otherwise =
+      case enter k (Hit (1 / 0) 0 0) ex ey b' disc' of
+        Hit s nx ny | s <= k    -> Hit (s / k) nx ny
+                    | otherwise -> noHit
   where
     !mx   = px - cx
     !my   = py - cy
@@ -152,11 +161,26 @@ enterCircle px py dx dy cx cy r
     !b    = mx * dx + my * dy
     !c    = mx * mx + my * my - r * r
     !disc = b * b - a * c
-    -- (-b - sqrt disc) / a, in the cancellation-free form (b < 0 here).
-    !s    = c / (sqrt disc - b)
-    !hx   = mx + s * dx
-    !hy   = my + s * dy
-    !l    = sqrt (hx * hx + hy * hy)
+    -- the scaled displacement, of largest component 1
+    k     = max (abs dx) (abs dy)
+    ex    = dx / k
+    ey    = dy / k
+    a'    = ex * ex + ey * ey
+    b'    = mx * ex + my * ey
+    disc' = b' * b' - a' * c
+    -- the contact along @(ux, uy)@, at most @smax@ of it, or @miss@
+    enter smax miss ux uy b0 disc0
+      | b0 >= 0 || disc0 <= 0 = miss
+      | s < 0 || s > smax     = miss
+      | l > 0                 = Hit s (hx / l) (hy / l)
+      | otherwise             = miss
+      where
+        -- (-b - sqrt disc) / a, in the cancellation-free form (b < 0 here).
+        !s  = c / (sqrt disc0 - b0)
+        !hx = mx + s * ux
+        !hy = my + s * uy
+        !l  = sqrt (hx * hx + hy * hy)
+    {-# INLINE enter #-}
 {-# INLINE enterCircle #-}
 
 -- | Distance from a point inside the (closed) box to the nearest side, and

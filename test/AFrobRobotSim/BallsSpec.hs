@@ -23,7 +23,7 @@ import           TestUtil              (shouldApprox)
 -- The reference: the original all-pairs code
 
 refStepBalls :: Double -> Arena -> [Robot] -> [Ball] -> [Ball]
-refStepBalls dt arena robots balls = refResolvePairs arena (map (refStepBall dt arena robots) balls)
+refStepBalls dt arena robots balls = refResolvePairs arena robots (map (refStepBall dt arena robots) balls)
 
 refStepBall :: Double -> Arena -> [Robot] -> Ball -> Ball
 refStepBall dt arena robots b0 =
@@ -48,14 +48,14 @@ refStepBall dt arena robots b0 =
         let vr  = robotVelocity r
             rel = bVel b ^-^ vr
             v'  = if rel `dot` n < 0 then vr ^+^ bounce n rel else bVel b
-        in b { bPos = refPushedTo arena (bPos b) ((depth + 1e-9) *^ n), bVel = v' }
+        in b { bPos = refPushedTo arena robots (bPos b) ((depth + 1e-9) *^ n), bVel = v' }
     bounce :: Vector2 Double -> Vector2 Double -> Vector2 Double
     bounce n rel = let rn = (rel `dot` n) *^ n
                    in (rel ^-^ rn) ^-^ (ballRestitution *^ rn)
     minimumOn f = foldr1 (\x y -> if f x <= f y then x else y)
 
-refResolvePairs :: Arena -> [Ball] -> [Ball]
-refResolvePairs arena bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 1 .. n - 1] ]
+refResolvePairs :: Arena -> [Robot] -> [Ball] -> [Ball]
+refResolvePairs arena robots bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <- [i + 1 .. n - 1] ]
   where
     n = length bs0
     resolve bs (i, j) =
@@ -68,14 +68,16 @@ refResolvePairs arena bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1], j <-
                  half = (depth / 2 + 1e-9) *^ nrm
                  (vi, vj) | relN < 0  = (bVel bi ^-^ (relN *^ nrm), bVel bj ^+^ (relN *^ nrm))
                           | otherwise = (bVel bi, bVel bj)
-                 bi' = Ball (refPushedTo arena (bPos bi) half) vi
-                 bj' = Ball (refPushedTo arena (bPos bj) (negateVector half)) vj
+                 bi' = Ball (refPushedTo arena robots (bPos bi) half) vi
+                 bj' = Ball (refPushedTo arena robots (bPos bj) (negateVector half)) vj
              in [ if k == i then bi' else if k == j then bj' else b | (k, b) <- zip [0 ..] bs ]
 
--- | A push, swept against every box: it stops at the first.
-refPushedTo :: Arena -> Point2 Double -> Vector2 Double -> Point2 Double
-refPushedTo arena p push =
-  let s = minimum (1 : [ s' | bx <- arenaBoxes arena, Just (s', _) <- [sweepCircleBox p ballRadius' push bx] ])
+-- | A push, swept against every box and every robot: it stops at the
+-- first.
+refPushedTo :: Arena -> [Robot] -> Point2 Double -> Vector2 Double -> Point2 Double
+refPushedTo arena robots p push =
+  let s = minimum (1 : [ s' | bx <- arenaBoxes arena, Just (s', _) <- [sweepCircleBox p ballRadius' push bx] ]
+                    ++ [ s' | r <- robots, Just (s', _) <- [sweepCircleCircle p ballRadius' push (rPos r) robotRadius'] ])
   in if s >= 1 then p .+^ push else p .+^ (max 0 (s - 1e-9) *^ push)
 
 ------------------------------------------------------------------------------
@@ -181,6 +183,14 @@ spec = do
       let stacked = iterate (stepBalls 0.01 emptyArena []) (replicate 3 (Ball (Point2 4.84 0) zeroVector)
                                                              ++ [Ball (Point2 4.84 0.01) zeroVector])
       concatMap (map (maxPenetration emptyArena)) (take 20 stacked) `shouldSatisfy` all (<= 1e-9)
+    it "never pushes a ball into a robot: a ball parted from another stops at a robot at rest" $ do
+      -- (the push that parts two balls went 0.1 m into the robot the
+      -- first one touched, and a robot that did not move overlapped it)
+      let robot = mkRobot SimbotA 1 (Point2 0 0) 0 0 False 1
+          overlapOf b = maybe 0 fst (circleCirclePenetration (bPos b) ballRadius' (rPos robot) robotRadius')
+          steps = take 20 (iterate (stepBalls 0.01 emptyArena [robot])
+                                   [Ball (Point2 0.4 0) zeroVector, Ball (Point2 0.5 0) zeroVector])
+      concatMap (map overlapOf) steps `shouldSatisfy` all (<= 1e-9)
     it "leaves every ball of a pile against walls and blocks no deeper in a box than it was" $
       withMaxSuccess 100 $ forAll genWorld $ \w -> forAll (genPileByBox w) $ \bs ->
         let arena = arenaFor w

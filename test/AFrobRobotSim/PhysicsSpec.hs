@@ -10,6 +10,7 @@ import           Test.QuickCheck
 
 import           AFRP.Geometry
 import           AFrobRobotSim.Physics
+import           AFrobRobotSim.Robot    (DriveCommand (..))
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldGen (emptyArena, genCommand)
 
@@ -48,6 +49,16 @@ spec = do
     it "turns the robot and its cached cos and sin together" $
       property $ forAll genLoneRobot $ \r -> forAll genHeading $ \h ->
         let r' = withHeading h r in rHeading r' === h .&&. cacheAgrees r'
+
+  describe "wheelCommand" $ do
+    it "counts a non-finite command as 0" $ do
+      wheelCommand 0.5 2 (DriveWheels (0 / 0) (1 / 0)) `shouldBe` (0, 0)
+      wheelCommand 0.5 2 (DriveTR (0 / 0) 1) `shouldBe` (0, 0)
+      wheelCommand 0.5 2 (DriveTR 1 (1 / 0)) `shouldBe` (0, 0)
+    it "clamps the wheels of a finite DriveTR whose v -/+ w l/2 overflows" $ do
+      -- (the overflowing wheel counted as 0: full speed on one wheel only)
+      wheelCommand 0.5 2 (DriveTR 1.7e308 1.7e308) `shouldBe` (2, 2)
+      wheelCommand 0.5 2 (DriveTR (-1.7e308) 1.7e308) `shouldBe` (-2, -2)
 
   describe "stepRobots" $
     it "keeps every robot's cached cos and sin those of its heading, step after step" $

@@ -319,6 +319,15 @@ spec = do
         `shouldBe` Just 999999
 
   describe "sweepCircleBox" $ do
+    it "finds a corner of the box on a move so long that its squared length overflows" $
+      -- (the discriminant was infinite or NaN, read as a miss: a robot
+      -- stepped 1e200 m passed the corner of a wall, ending 0.07 m in it)
+      property $ forAll (choose (1e160, 1e300)) $ \far ->
+        case sweepCircleBox (Point2 (-0.75) (-0.45)) 0.25 (Vector2 0 (negate far)) (Box (-0.65) (-1.5) 0.35 (-1.4)) of
+          Just (s, Vector2 nx ny) -> counterexample (show (s, nx, ny)) $
+            abs (s * far - (0.95 - sqrt (0.25 * 0.25 - 0.1 * 0.1))) < 1e-12
+            .&&. abs (nx + 0.4) < 1e-12 .&&. ny > 0
+          Nothing -> counterexample "missed the corner" False
     let wall = Box 0 (-5) 0.1 5          -- a thin 0.1 m wall
         unit = Box 0 0 1 1
     it "hits a side head-on" $ do
@@ -389,6 +398,12 @@ spec = do
         `shouldBe` Just False
 
   describe "sweepCircleCircle" $ do
+    it "finds the disc on a move so long that its squared length overflows" $
+      property $ forAll (choose (1e160, 1e300)) $ \far ->
+        case sweepCircleCircle (Point2 0 0) 0.25 (Vector2 far 0) (Point2 1 0.3) 0.25 of
+          Just (s, Vector2 nx ny) -> counterexample (show (s, nx, ny)) $
+            abs (s * far - 0.6) < 1e-12 .&&. abs (nx + 0.8) < 1e-12 .&&. abs (ny + 0.6) < 1e-12
+          Nothing -> counterexample "missed the disc" False
     let q = Point2 0 0
     it "hits head-on" $
       sweepCircleCircle (Point2 (-3) 0) 0.5 (Vector2 3 0) q 1
