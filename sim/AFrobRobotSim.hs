@@ -91,6 +91,8 @@ module AFrobRobotSim
   , simulateWith
   , SimConfig (..)
   , defaultSimConfig
+  , maxTimeStep
+  , maxOdometryNoise
   , WorldState (..)
   , RobotState (..)
   , ControllerError (..)

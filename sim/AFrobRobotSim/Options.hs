@@ -7,7 +7,7 @@
 --
 -- @
 -- --seconds T        simulated time to run                 (default 30)
--- --dt D             fixed time step, seconds              (default 0.01)
+-- --dt D             fixed time step, seconds, at most 1e6 (default 0.01)
 -- --fps F            frames per simulated second           (default 25)
 -- --out DIR          output folder (frames, default SVG and page) (default simbot-out)
 -- --frames           also write PPM frames into the output folder
@@ -15,7 +15,7 @@
 -- --scale PX         pixels per metre  (default: the world's long side 600 px, 'fitScale')
 -- --keys "1.5:a,3:b" scripted key presses (time:key, ...)
 -- --seed N           seed of the random parts, |N| <= 2^53 (default 0)
--- --odometry-noise X relative odometry error per step      (default 0 = exact)
+-- --odometry-noise X relative odometry error per step, 0-1 (default 0 = exact)
 -- --quiet            print only the summary line
 -- --world FILE       load the world from FILE instead of the program's
 -- --dump-world       print the world in the world-file format and exit
@@ -69,6 +69,7 @@ import           Data.List       (intercalate, isSuffixOf)
 import           System.FilePath ((</>))
 import           Text.Printf     (printf)
 
+import           AFrobRobotSim.Simulator (maxOdometryNoise, maxTimeStep)
 import           AFrobRobotSim.World (Bounds (..))
 import           AFrobRobotSim.WorldFile.Lexical (decimalLit, integerLit)
 
@@ -157,7 +158,7 @@ parseSimArgs o0 = go o0 False False
     ]
   valued o =
       [ ("--seconds", \v -> (\x -> o { optSeconds = x }) <$> number "--seconds" (>= 0) v)
-      , ("--dt",      \v -> (\x -> o { optDt = x }) <$> number "--dt" (> 0) v)
+      , ("--dt",      \v -> (\x -> o { optDt = x }) <$> number "--dt" (\x -> x > 0 && x <= maxTimeStep) v)
       , ("--fps",     \v -> (\x -> o { optFps = x }) <$> number "--fps" (> 0) v)
       , ("--out",     \v -> if null v then Left "--out expects a folder name, got \"\""
                              else Right o { optOut = v })
@@ -168,7 +169,7 @@ parseSimArgs o0 = go o0 False False
                              -- result line and the log, JSON numbers, could not record it exactly)
                              Just x | abs x <= maxSeed -> Right o { optSeed = fromInteger x }
                              _ -> Left ("--seed expects a whole number from -2^53 to 2^53, got " ++ show v))
-      , ("--odometry-noise", \v -> (\x -> o { optOdometryNoise = x }) <$> number "--odometry-noise" (>= 0) v)
+      , ("--odometry-noise", \v -> (\x -> o { optOdometryNoise = x }) <$> number "--odometry-noise" (\x -> x >= 0 && x <= maxOdometryNoise) v)
       , ("--world",   \v -> Right o { optWorldFile = Just v })
       , ("--svg",     \v -> Right o { optSvg = Just v })
       , ("--video",   \v -> Right o { optVideo = Just v })
@@ -186,10 +187,12 @@ parseSimArgs o0 = go o0 False False
     | otherwise = f
   number flag ok v = case decimalLit (trim v) of
     Just x | not (isNaN x || isInfinite x) && ok x -> Right x
-    _ -> Left (flag ++ " expects a " ++ what flag ++ " number (as a world file writes one: 2, 0.5, 1e-3), got "
+    _ -> Left (flag ++ " expects " ++ what flag ++ " (written as in a world file: 2, 0.5, 1e-3), got "
                ++ show v)
-  what flag | flag `elem` ["--seconds", "--odometry-noise"] = "non-negative"
-            | otherwise                                      = "positive"
+  what flag | flag == "--seconds"        = "a non-negative number"
+            | flag == "--odometry-noise" = "a number from 0 to " ++ num maxOdometryNoise
+            | flag == "--dt"             = "a positive number up to " ++ num maxTimeStep
+            | otherwise                  = "a positive number"
   check opts = case validateOptions opts of
     []   -> Right (RunWith opts)
     errs -> Left (intercalate "; " errs)
@@ -328,7 +331,7 @@ usage prog = intercalate "\n"
   , "and ends with a one-line summary."
   , ""
   , "  --seconds T        simulated time to run                 (default 30)"
-  , "  --dt D             fixed time step, seconds              (default 0.01)"
+  , "  --dt D             fixed time step, seconds, at most 1e6 (default 0.01)"
   , "  --fps F            frames per simulated second           (default 25)"
   , "  --out DIR          output folder                         (default simbot-out)"
   , "  --frames           also write PPM frames (1.15 MB each: 866 MB for 30 s at 25 fps)"
@@ -336,7 +339,7 @@ usage prog = intercalate "\n"
   , "  --scale PX         pixels per metre   (default: the world's long side is 600 px)"
   , "  --keys \"1.5:a,3:b\" scripted key presses (time:key, ...)"
   , "  --seed N           seed of the random parts              (default 0)"
-  , "  --odometry-noise X relative odometry error per step      (default 0 = exact)"
+  , "  --odometry-noise X relative odometry error per step, 0-1 (default 0 = exact)"
   , "  --quiet            print only the summary line"
   , "  --world FILE       load the world from FILE instead of the program's"
   , "  --dump-world       print the world in the world-file format and exit"

@@ -53,6 +53,8 @@ module AFrobRobotSim.Simulator
   , simulateWith
   , SimConfig (..)
   , defaultSimConfig
+  , maxTimeStep
+  , maxOdometryNoise
     -- * Snapshots
   , WorldState (..)
   , RobotState (..)
@@ -83,16 +85,29 @@ import           AFrobRobotSim.World
 
 -- | Settings of a simulation run.
 data SimConfig = SimConfig
-  { simDt             :: !DTime         -- ^ the fixed time step (s)
+  { simDt             :: !DTime         -- ^ the fixed time step (s), positive and at most 'maxTimeStep'
   , simKeys           :: [(Time, Char)] -- ^ scripted key presses: each is down for the first sample at or after its time
   , simSeed           :: !Int           -- ^ seed of the odometry noise
-  , simOdometryNoise  :: !Double        -- ^ relative odometry error per step (0 = exact odometry)
+  , simOdometryNoise  :: !Double        -- ^ relative odometry error per step (0 = exact odometry), at most 'maxOdometryNoise'
   , simBounds         :: !Bounds        -- ^ the world's extent, unless the template has an 'OTSize' (which wins)
   , simBallRule       :: Time -> [Position2] -> Maybe [Position2]
     -- ^ a referee: after each step, given the time and the balls' new
     -- positions, 'Just' new positions puts the balls there, at rest (for
     -- example the centre mark after a goal); 'Nothing' leaves them be
   }
+
+-- | The longest time step 'simulate' takes: 10^6 s (about 11 days). The
+-- motion's arithmetic stays finite far beyond (a robot's turn overflows
+-- near 10^307 s, and its position became NaN), but no run needs a step
+-- this long, and a mistyped one is better refused than simulated.
+maxTimeStep :: DTime
+maxTimeStep = 1e6
+
+-- | The largest relative odometry error per step 'simulate' takes: 1
+-- (100%). Beyond it a step's error can reverse the distance it reads, and
+-- near 10^308 the reading overflowed to NaN.
+maxOdometryNoise :: Double
+maxOdometryNoise = 1
 
 -- | A time step of 0.01 s, no keys, exact odometry, the notes' 10 m world,
 -- no referee.
@@ -172,8 +187,12 @@ simulateWith :: SimConfig -> WorldTemplate -> SimbotController -> SimbotControll
 simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
   Left errs -> error ("AFrobRobotSim.simulate: invalid world:\n  " ++ unlinesIndented errs)
   Right ()
-    | not (simDt cfg > 0) -> error ("AFrobRobotSim.simulate: the time step must be positive, got "
-                                    ++ show (simDt cfg))
+    | not (simDt cfg > 0 && simDt cfg <= maxTimeStep) ->
+        error ("AFrobRobotSim.simulate: the time step must be positive and at most "
+               ++ show maxTimeStep ++ " s, got " ++ show (simDt cfg))
+    | not (simOdometryNoise cfg >= 0 && simOdometryNoise cfg <= maxOdometryNoise) ->
+        error ("AFrobRobotSim.simulate: the odometry noise must be from 0 to "
+               ++ show maxOdometryNoise ++ ", got " ++ show (simOdometryNoise cfg))
     | otherwise -> run engine0
   where
     dt = simDt cfg

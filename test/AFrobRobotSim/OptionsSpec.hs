@@ -46,7 +46,7 @@ spec = describe "parseSimArgs" $ do
           Left err          -> Left err
     map (\v -> secs [v]) ["+5", "2.5", "1e2", "1.5E-1", " 3 ", "0"]
       `shouldBe` map Right [5, 2.5, 100, 0.15, 3, 0]
-    mapM_ (\v -> secs [v] `shouldSatisfy` either ("--seconds expects a non-negative number (as a world file writes one" `isInfixOf`) (const False))
+    mapM_ (\v -> secs [v] `shouldSatisfy` either ("--seconds expects a non-negative number (written as in a world file" `isInfixOf`) (const False))
           ["0x10", ".5", "5.", ".", "+", "1e", "1e+", "NaN", "Infinity", "1..2", "5 s", "-1", "--5"]
     let seedOf v = case parseSimArgs defaultSimOptions ["--seed", v] of
           Right (RunWith o) -> Just (optSeed o)
@@ -72,6 +72,13 @@ spec = describe "parseSimArgs" $ do
     run ["--seconds", "0.005", "--dt", "0.01"] `shouldSatisfy` either ("less than half a step" `isInfixOf`) (const False)
     run ["--seconds", "0.006", "--dt", "0.01"] `shouldBe` Right ()
     run ["--seconds", "0", "--dt", "0.01"] `shouldBe` Right ()
+  it "refuses a --dt beyond maxTimeStep and an --odometry-noise beyond maxOdometryNoise (a robot's pose became NaN)" $ do
+    let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
+    run ["--dt", "1e6", "--fps", "1e-6", "--seconds", "1e7"] `shouldBe` Right ()
+    run ["--dt", "1.5e6", "--fps", "1e-7", "--seconds", "1e7"] `shouldSatisfy` either ("--dt expects a positive number up to" `isInfixOf`) (const False)
+    run ["--odometry-noise", "1"] `shouldBe` Right ()
+    mapM_ (\v -> run ["--odometry-noise", v] `shouldSatisfy` either ("--odometry-noise expects a number from 0 to 1" `isInfixOf`) (const False))
+          ["1.01", "1e308", "-0.5"]
   it "refuses a --keys time that is not a finite number (Infinity, 1e400, NaN)" $ do
     parseKeys "1.5:a,3:b" `shouldBe` Right [(1.5, 'a'), (3, 'b')]
     mapM_ (\k -> parseKeys k `shouldSatisfy` either ("--keys" `isInfixOf`) (const False))

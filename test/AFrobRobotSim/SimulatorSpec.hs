@@ -288,6 +288,14 @@ spec = do
     it "simulate refuses an invalid world with every problem listed" $
       evaluate (head (simulate 0.01 [OTSimbotA 1 (Point2 9 0) 0, OTBlock (Point2 (0 / 0) 0)] idle idle))
         `shouldThrow` (\(ErrorCall msg) -> "SimbotA 1" `isInfixOf` msg && "block" `isInfixOf` msg)
+    it "simulate refuses a time step beyond maxTimeStep and odometry noise beyond maxOdometryNoise" $ do
+      let one = [OTSimbotA 1 (Point2 0 0) 0]
+          cfg = defaultSimConfig
+      evaluate (head (simulate (2 * maxTimeStep) one idle idle))
+        `shouldThrow` (\(ErrorCall msg) -> "time step" `isInfixOf` msg)
+      evaluate (head (simulateWith cfg { simOdometryNoise = 1e308 } one idle idle))
+        `shouldThrow` (\(ErrorCall msg) -> "odometry noise" `isInfixOf` msg)
+      length (take 3 (simulate maxTimeStep one idle idle)) `shouldBe` 3
     it "reports a controller that throws with its type, id and the time" $ do
       let bad _ = proc _ -> do
             t <- localTime -< ()
