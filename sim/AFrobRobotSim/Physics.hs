@@ -13,8 +13,10 @@
 -- 1. The commanded wheel speeds @(vl, vr)@ (from 'DriveWheels', or
 --    @(v - w l/2, v + w l/2)@ from 'DriveTR', or @(0, 0)@ for 'DriveBrake')
 --    are each clamped to the maximum wheel speed (halved on a critical
---    battery). A non-finite command counts as 0: a controller cannot
---    corrupt the physics.
+--    battery). A non-finite command counts as 0 here, so that the physics
+--    stays finite whoever calls it; the simulator never passes one on: a
+--    controller that gives one has failed
+--    ('AFrobRobotSim.Simulator.ControllerError').
 -- 2. Translational inertia: @v@ moves towards @(vl + vr) / 2@ by at most
 --    @accMax * dt@.
 -- 3. No rotational inertia: the rotational velocity is @(vr - vl) / l@,

@@ -135,7 +135,8 @@ data RobotState = RobotState
   , robotOdometry :: !Position2      -- ^ what its odometry reads
   } deriving (Eq, Show)
 
--- | A controller failed (threw an exception) while the simulation ran.
+-- | A controller failed while the simulation ran: it threw an exception,
+-- or gave a wheel command with a NaN or infinite speed.
 data ControllerError = ControllerError
   { ceRobotType :: RobotType
   , ceRobotId   :: RobotId
@@ -246,7 +247,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
       case (case a of
               AgentNew { agStart = sf } -> evalAtZero sf input
               Agent { agFut = fut }     -> evalAt fut dt input) of
-        res@(o, fut) -> fut `seq` soDrive o `seq` forceList (soMessages o) `seq` res
+        res@(o, fut) -> fut `seq` finiteDrive (soDrive o) `seq` forceList (soMessages o) `seq` res
 
     blame props t (e :: SomeException) = case fromException e of
       Just (ce :: ControllerError) -> ce
@@ -347,6 +348,22 @@ blaming f v = unsafeDupablePerformIO (IO (\s -> case v of !r -> (# s, r #)) `cat
       Just (_ :: SomeAsyncException) -> throwIO e
       Nothing                        -> throwIO (f e)
 {-# INLINE blaming #-}
+
+-- | The command evaluated, or an error if one of its speeds is NaN or
+-- infinite: a controller that computes such a command (a division by
+-- zero, say) has failed, and its run stops with a 'ControllerError' naming
+-- the robot and the time, as for a controller that throws, rather than
+-- drive on with the bad number taken for 0.
+finiteDrive :: DriveCommand -> ()
+finiteDrive c = case c of
+  DriveBrake      -> ()
+  DriveWheels l r -> both "DriveWheels" l r
+  DriveTR v w     -> both "DriveTR" v w
+  where
+    -- (x - x is 0 for a finite x, NaN for NaN and the infinities)
+    both name a b
+      | a - a == 0 && b - b == 0 = ()
+      | otherwise = errorWithoutStackTrace ("its wheel command is not finite: " ++ name ++ " " ++ show a ++ " " ++ show b)
 
 forceList :: [a] -> ()
 forceList = foldr seq ()

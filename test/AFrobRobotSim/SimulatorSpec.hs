@@ -71,11 +71,14 @@ spec = do
           (c, r) = circleThrough (after2 !! 0) (after2 !! 400) (after2 !! 800)
       r `shouldSatisfy` within 1e-6 1.0
       all (\p -> within 1e-6 1.0 (norm (p .-. c))) after2 `shouldBe` True
-    it "ignores non-finite wheel speeds" $ do
-      let nan = simulate 0.01 world (driveAt (0 / 0) (1 / 0)) idle
-          r   = robot1 (at 0.01 2 nan)
-      robotPos r `shouldBe` Point2 (-4) 0
-      robotSpeed r `shouldBe` 0
+    it "stops the run at a NaN or infinite wheel speed, naming the robot, the time and the command" $ do
+      -- (it was taken for 0: the robot stood still, silently)
+      let failsWith cmd = evaluate (length (show (take 300 (simulate 0.01 world (driveAt cmd 1) idle))))
+            `shouldThrow` (\e -> ceRobotType e == "SimbotA" && ceRobotId e == 1 && ceTime e == 0
+                                 && "not finite" `isInfixOf` show (ceCause e))
+      failsWith (0 / 0)
+      failsWith (1 / 0)
+      failsWith (-1 / 0)
 
   describe "collisions" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0, OTVWall (Point2 2 0)]
