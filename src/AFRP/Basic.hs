@@ -30,30 +30,31 @@ module AFRP.Basic
   , initially
   ) where
 
-import           Control.Arrow     (arr)
+import           Control.Arrow     (Arrow, arr)
 import           AFRP.Internal.Clock
 import           AFRP.Internal.SF
 
 infixr 0 -->, -:>, >--, -=>, >=-
 
 -- | Lift a binary function to a signal function on pairs:
--- @arr2 f = arr (uncurry f)@. For example @arr2 (+) :: Num a => SF (a, a) a@.
-arr2 :: (a -> b -> c) -> SF (a, b) c
+-- @arr2 f = arr (uncurry f)@, in any arrow as in Yampa. For example
+-- @arr2 (+) :: Num a => SF (a, a) a@.
+arr2 :: Arrow r => (a -> b -> c) -> r (a, b) c
 arr2 f = arr (uncurry f)
 {-# INLINE arr2 #-}
 
 -- | Lift a ternary function to a signal function on triples.
-arr3 :: (a -> b -> c -> d) -> SF (a, b, c) d
+arr3 :: Arrow r => (a -> b -> c -> d) -> r (a, b, c) d
 arr3 f = arr (\(a, b, c) -> f a b c)
 {-# INLINE arr3 #-}
 
 -- | Lift a function of four arguments to a signal function on 4-tuples.
-arr4 :: (a -> b -> c -> d -> e) -> SF (a, b, c, d) e
+arr4 :: Arrow r => (a -> b -> c -> d -> e) -> r (a, b, c, d) e
 arr4 f = arr (\(a, b, c, d) -> f a b c d)
 {-# INLINE arr4 #-}
 
 -- | Lift a function of five arguments to a signal function on 5-tuples.
-arr5 :: (a -> b -> c -> d -> e -> f) -> SF (a, b, c, d, e) f
+arr5 :: Arrow r => (a -> b -> c -> d -> e -> f) -> r (a, b, c, d, e) f
 arr5 f = arr (\(a, b, c, d, e) -> f a b c d e)
 {-# INLINE arr5 #-}
 

@@ -57,16 +57,23 @@ pause b0 (SF cond0) (SF sf0) = SF (lazyN (go cond0 sf0 b0))
         | paused    -> (# go cond' sf b, b #)
         | otherwise -> case stepN sf dt a of (# sf', b' #) -> (# go cond' sf' b', b' #))
 
--- | @recur sfe@ outputs the events of @sfe@ after local time 0, and restarts
--- @sfe@ (at its local time 0) at the instant of each event it outputs. At
--- local time 0, and at the first sample of every restarted @sfe@, the output
--- is 'NoEvent' whatever @sfe@ says: an event at the restart instant would
--- restart it for ever.
+-- | @recur sfe@ outputs the events of @sfe@, and restarts @sfe@ (at its
+-- local time 0) at the instant of each event it outputs. An event of @sfe@
+-- at local time 0 is output (as in Yampa). At the first sample of every
+-- restarted @sfe@ the output is the event that restarted it, whatever the
+-- restarted @sfe@ says there: an event at the restart instant would restart
+-- it for ever.
 --
 -- > embed (recur (after 1 'x')) ((), replicate 4 (0.5, Nothing))
 -- >   ==  [NoEvent, NoEvent, Event 'x', NoEvent, Event 'x']
+-- > embed (recur (now 'n')) ((), replicate 2 (1, Nothing))
+-- >   ==  [Event 'n', NoEvent, NoEvent]
 recur :: SF a (Event b) -> SF a (Event b)
-recur sfe = switch ((NoEvent --> sfe) >>> arr dup) (\b -> Event b --> recur sfe)
+recur sfe = go sfe
+  where
+    -- (each restart masks the first sample of sfe itself, not of the
+    -- previous restart's masked sfe: no layer added per restart)
+    go s = switch (s >>> arr dup) (\b -> Event b --> go (NoEvent --> sfe))
 
 -- | @sfe1 \`andThen\` sfe2@ outputs the events of @sfe1@ up to and including
 -- its first event (which may come at local time 0), then those of @sfe2@,

@@ -185,12 +185,17 @@ embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
 deltaEncode :: Eq a => DTime -> [a] -> (a, [(DTime, Maybe a)])
 deltaEncode = deltaEncodeBy (==)
 
--- | 'deltaEncode' with a custom equality.
+-- | 'deltaEncode' with a custom equality: a sample is written 'Nothing'
+-- when it is equal to the sample before it (not to the last one written),
+-- as in Yampa. With an equality that is not transitive the two differ:
+--
+-- > deltaEncodeBy (\a b -> abs (a - b) < 2) 0.5 [1, 2, 3, 4, 8, 9 :: Double]
+-- >   ==  (1, [(0.5, Nothing), (0.5, Nothing), (0.5, Nothing), (0.5, Just 8), (0.5, Nothing)])
 deltaEncodeBy :: (a -> a -> Bool) -> DTime -> [a] -> (a, [(DTime, Maybe a)])
 deltaEncodeBy _  _  []       = error "AFRP.Run.deltaEncodeBy: empty list of samples"
 deltaEncodeBy eq dt (x : xs) = (x, go x xs)
   where
     go _    []       = []
     go prev (y : ys)
-      | eq prev y = (dt, Nothing) : go prev ys
+      | eq prev y = (dt, Nothing) : go y ys
       | otherwise = (dt, Just y) : go y ys

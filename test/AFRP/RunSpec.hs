@@ -74,6 +74,9 @@ spec = do
       deltaEncode 0.1 "aabca" `shouldBe` ('a', [(0.1, Nothing), (0.1, Just 'b'), (0.1, Just 'c'), (0.1, Just 'a')])
     it "round-trips through embed" $
       embed identity (deltaEncode 0.1 "aabca") `shouldBe` "aabca"
+    it "deltaEncodeBy compares each sample with the one before it, as Yampa does (not with the last written)" $
+      deltaEncodeBy (\a b -> abs (a - b) < 2) 0.5 [1, 2, 3, 4, 8, 9 :: Double]
+        `shouldBe` (1, [(0.5, Nothing), (0.5, Nothing), (0.5, Nothing), (0.5, Just 8), (0.5, Nothing)])
     it "deltaEncodeBy uses the given equality" $
       snd (deltaEncodeBy (\x y -> abs (x - y) < 1) 1 [1, 1.5, 3 :: Double])
         `shouldBe` [(1, Nothing), (1, Just 3)]
