@@ -65,8 +65,8 @@ b0 `fby` SF n = SF (compN n (sfNode (iPre b0)))
 -- it outputs @a0@ while @t < q@, and afterwards the input sample taken at
 -- the latest sample time @s@ with @s + q <= t@ (the delayed signal is
 -- piecewise constant between samples): a sample is due out at @s + q@ and
--- released at the first sample whose 'AFRP.Basic.localTime' is >= that,
--- as every timed event of the library. This holds for any sequence of
+-- released at the first sample whose 'AFRP.Basic.localTime' has
+-- 'AFRP.Internal.Clock.reached' that, as every timed event of the library. This holds for any sequence of
 -- time steps, however irregular; at dt 0.05, @delay 1.1@ releases the
 -- sample of time 0 at exactly t = 1.1 (Yampa, summing floats, may be one
 -- sample late). @delay 0@ is the identity; a negative
@@ -88,7 +88,7 @@ delay q a0
       let !now = clockTime clock
           buf' = dropOld now buf
           out  = case Seq.viewl buf' of
-            (due, x) :< _ | due <= now -> x
+            (due, x) :< _ | reached due now -> x
             _                          -> a0
       in (# go clock buf', out #)
     go !clock !buf = NStep (\dt a ->
@@ -99,5 +99,5 @@ delay q a0
            _                         -> buf |> (due, a)))
     -- Drop every sample that a later sample, itself due, supersedes.
     dropOld now buf = case Seq.viewl buf of
-      _ :< rest | (due, _) :< _ <- Seq.viewl rest, due <= now -> dropOld now rest
+      _ :< rest | (due, _) :< _ <- Seq.viewl rest, reached due now -> dropOld now rest
       _                                                       -> buf

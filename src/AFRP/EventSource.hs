@@ -12,8 +12,12 @@
 -- * Times are /local/: measured from the instant the source started (0 at a
 --   run's first sample, or at the sample where it was switched in).
 -- * A source scheduled for time @t@ fires at the first sample whose local
---   time is @>= t@ ("at, or as soon after as possible"). With steps of 0.5,
---   @after 1.0@ fires at exactly 1.0; with steps of 0.3 it fires at 1.2.
+--   time is @>= t@ ("at, or as soon after as possible"), or short of @t@ by
+--   no more than the rounding of binary fractions
+--   ('AFRP.Internal.Clock.reached': a relative 2^-48). With steps of 0.5,
+--   @after 1.0@ fires at exactly 1.0; with steps of 0.3 it fires at 1.2;
+--   with steps of 0.15, @after 0.9@ fires at the sixth, whose local time
+--   reads 0.8999999999999999.
 -- * Local time is a compensated sum of the time steps (see
 --   "AFRP.Internal.Clock"), so ten steps of 0.1 reach exactly 1.0.
 -- * When a sample interval spans several scheduled occurrences, the plain
@@ -100,14 +104,14 @@ repeatedly p x
     go !clock !n = NStep (\dt _ ->
       let !clock' = tick clock dt
           !t      = clockTime clock'
-      in if t >= fromIntegral n * p
+      in if reached (fromIntegral n * p) t
            then (# go clock' (nextIndex t (n + 1)), Event x #)
            else (# go clock' n, NoEvent #))
     -- The first period boundary strictly after t, starting the search at
     -- floor (t / p) so that even a huge step costs O(1).
     nextIndex :: Time -> Integer -> Integer
     nextIndex t n0 = firstAbove (4 :: Int) (max n0 (floor (t / p)))
-      where firstAbove k n | k > 0, fromIntegral n * p <= t = firstAbove (k - 1) (n + 1)
+      where firstAbove k n | k > 0, reached (fromIntegral n * p) t = firstAbove (k - 1) (n + 1)
                            | otherwise                      = n
 
 -- | @afterEach [(q1, x1), (q2, x2), ...]@ occurs with @x1@ at local time
@@ -138,7 +142,7 @@ afterEachCat qxs0 = SF (initN (\_ -> emit clockZero clockZero qxs0))
         collect :: Clock -> [(Time, b)] -> [b] -> (# Node a (Event [b]), Event [b] #)
         collect !d ((q, x) : rest) acc
           | q < 0 || isNaN q                = errNeg "afterEach" q
-          | clockTime (tick d q) <= now'    = collect (tick d q) rest (x : acc)
+          | reached (clockTime (tick d q)) now' = collect (tick d q) rest (x : acc)
         collect !d rest acc =
           (# next clock d rest, if null acc then NoEvent else Event (reverse acc) #)
     next :: Clock -> Clock -> [(Time, b)] -> Node a (Event [b])
@@ -181,7 +185,7 @@ delayEventCat q
       let !clock'     = tick clock dt
           !now'       = clockTime clock'
           pending'    = event pending (\x -> pending |> (clockTime clock + q, x)) ePrev
-          (due, rest) = Seq.spanl (\(tDue, _) -> tDue <= now') pending'
+          (due, rest) = Seq.spanl (\(tDue, _) -> reached tDue now') pending'
           out         = if Seq.null due then NoEvent else Event (foldr ((:) . snd) [] due)
       in (# go clock' rest e, out #))
 
@@ -359,7 +363,7 @@ sampleWindow w p
         t = clockTime clock
         count :: Int -> Clock -> (# Clock, Int #)
         count !k !d
-          | not (clockTime d' <= t) = (# d, k #)
+          | not (reached (clockTime d') t) = (# d, k #)
           | k < jumpAt              = count (k + 1) d'
           -- beyond the window: the periods but the last one or two at once
           | r > 2 && r < 9007199254740992 =
