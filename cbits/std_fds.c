@@ -15,6 +15,9 @@
  * non-zero; reading descriptor 0 gives end of file. Descriptors that are
  * open are left alone.
  *
+ * POSIX only: the package builds it on every system but Windows, where
+ * "AFrobRobotSim.Console" does without it.
+ *
  * `afrp_std_fds_reopened` tells which were closed (bit k for descriptor k);
  * "AFrobRobotSim.Console" calls it, which also makes the linker keep this
  * file (and so its constructor) in every program that uses the console.
@@ -25,7 +28,9 @@
 
 static int reopened = 0;
 
-__attribute__((constructor))
+/* (priority 101, the first a program may use: before other constructors
+   that might open a file and take a free standard number) */
+__attribute__((constructor(101)))
 static void afrp_reopen_std_fds(void)
 {
     int fd;

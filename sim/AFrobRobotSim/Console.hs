@@ -1,5 +1,6 @@
 {-# LANGUAGE ScopedTypeVariables #-}
 {-# LANGUAGE ForeignFunctionInterface #-}
+{-# LANGUAGE CPP #-}
 -- |
 -- Module      : AFrobRobotSim.Console
 -- Description : What the programs print: text made safe for a terminal,
@@ -100,13 +101,19 @@ tolerantOutput = do
 -- to standard output waited forever. Writing to such a descriptor fails
 -- (@EBADF@), as writing to a closed one does, so the program reports it
 -- and exits non-zero; reading standard input gives end of file.
+-- (On Windows, where the descriptors are not held, it is always empty.)
 closedAtStart :: IO [Int]
 closedAtStart = do
   bits <- c_afrp_std_fds_reopened
   pure [ fd | fd <- [0, 1, 2], testBit bits fd ]
 
+#if defined(mingw32_HOST_OS)
+c_afrp_std_fds_reopened :: IO CInt
+c_afrp_std_fds_reopened = pure 0
+#else
 foreign import ccall unsafe "afrp_std_fds_reopened"
   c_afrp_std_fds_reopened :: IO CInt
+#endif
 
 -- | A line of text as it is safe to print on a terminal: the characters
 -- that could forge or hide output (controls such as escape sequences or

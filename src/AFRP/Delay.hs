@@ -17,7 +17,7 @@ module AFRP.Delay
   ) where
 
 import qualified Data.Sequence       as Seq
-import           Data.Sequence       (Seq, ViewL (..), ViewR (..), (|>))
+import           Data.Sequence       (Seq, ViewL (..), (|>))
 
 import           AFRP.Internal.Clock
 import           AFRP.Internal.SF
@@ -62,15 +62,19 @@ fby :: b -> SF a b -> SF a b
 b0 `fby` SF n = SF (compN n (sfNode (iPre b0)))
 
 -- | @delay q a0@ delays its input signal by @q@ seconds. At local time @t@
--- it outputs @a0@ while @t < q@, and afterwards the input sample taken at
--- the latest sample time @s@ with @s + q <= t@ (the delayed signal is
--- piecewise constant between samples): a sample is due out at @s + q@ and
--- released at the first sample whose 'AFRP.Basic.localTime' has
--- 'AFRP.Internal.Clock.reached' that, as every timed event of the library. This holds for any sequence of
--- time steps, however irregular; at dt 0.05, @delay 1.1@ releases the
--- sample of time 0 at exactly t = 1.1 (Yampa, summing floats, may be one
--- sample late). @delay 0@ is the identity; a negative
--- delay is an error.
+-- it outputs @a0@ until @t@ has 'AFRP.Internal.Clock.reached' @q@, and
+-- afterwards the input sample taken at the latest sample time @s@ such
+-- that @t@ has reached @s + q@ (the delayed signal is piecewise constant
+-- between samples): a sample is due out at @s + q@ and released at the
+-- first sample whose 'AFRP.Basic.localTime' has reached that, as every
+-- timed event of the library, and never at the sample it came in at (a
+-- @q@ below the clock's rounding at that time delays by one sample, and
+-- the output never depends on the current input, so the delay can close a
+-- 'loop'). This holds for any sequence of time steps, however irregular;
+-- at dt 0.05, @delay 1.1@ releases the sample of time 0 at exactly t = 1.1
+-- (Yampa, summing floats, may be one sample late), and at dt 0.1 @delay
+-- 0.3@ releases every sample exactly three samples later. @delay 0@ is the
+-- identity; a negative delay is an error.
 --
 -- > embed (delay 1 0) (1, [(0.5, Just 2), (0.5, Just 3), (0.5, Just 4)])  ==  [0, 0, 1, 2]
 delay :: forall a. Time -> a -> SF a a
@@ -78,25 +82,30 @@ delay q a0
   | q < 0 || isNaN q = error ("AFRP.Delay.delay: negative or NaN delay, got " ++ show q)
   | q == 0           = SF idN
   | isInfinite q     = SF (constN a0)
-  | otherwise        = SF (initN (\a -> step clockZero (Seq.singleton (q, a))))
+  | otherwise        = SF (initN (\a -> step clockZero Seq.empty q a))
   where
-    -- The buffer holds each sample with the time it is due out (its local
-    -- time plus q): a sample is released at the first sample whose local
-    -- time is >= its due time, the rule of every timed event in the library.
-    step :: Clock -> Seq (Time, a) -> (# Node a a, a #)
-    step clock buf =
+    -- The buffer holds each earlier sample with the time it is due out
+    -- (its local time plus q): a sample is released at the first sample
+    -- whose local time has reached its due time, the rule of every timed
+    -- event in the library. The sample of this step is held apart, with
+    -- its due time, and joins the buffer at the next step: it is never
+    -- released at the step it came in, whatever q (with a q below the
+    -- rounding of the local time, its due time would count as reached at
+    -- once, and the delay would pass its input through).
+    step :: Clock -> Seq (Time, a) -> Time -> a -> (# Node a a, a #)
+    step clock buf due a =
       let !now = clockTime clock
           buf' = dropOld now buf
           out  = case Seq.viewl buf' of
-            (due, x) :< _ | reached due now -> x
-            _                          -> a0
-      in (# go clock buf', out #)
-    go !clock !buf = NStep (\dt a ->
+            (d, x) :< _ | reached d now -> x
+            _                           -> a0
+      in (# go clock buf' due a, out #)
+    go !clock !buf !dueNew aNew = NStep (\dt a ->
       let !clock' = tick clock dt
           !due    = clockTime clock' + q
-      in step clock' (case Seq.viewr buf of
-           rest :> (d, _) | d == due -> rest |> (due, a)   -- superseded (dt 0)
-           _                         -> buf |> (due, a)))
+      in if dueNew == due
+           then step clock' buf due a                      -- superseded (dt 0)
+           else step clock' (buf |> (dueNew, aNew)) due a)
     -- Drop every sample that a later sample, itself due, supersedes.
     dropOld now buf = case Seq.viewl buf of
       _ :< rest | (due, _) :< _ <- Seq.viewl rest, reached due now -> dropOld now rest

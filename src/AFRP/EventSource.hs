@@ -80,7 +80,8 @@ now :: b -> SF a (Event b)
 now x = SF (initN (\_ -> (# neverN, Event x #)))
 
 -- | @after t x@ occurs once, with value @x@, at the first sample whose
--- local time is @>= t@; @after 0 x@ is @now x@. A negative @t@ is an error.
+-- local time has reached @t@ (see the module's timing conventions);
+-- @after 0 x@ is @now x@. A negative @t@ is an error.
 --
 -- > embed (after 1.0 ()) ((), replicate 3 (0.5, Nothing))
 -- >   ==  [NoEvent, NoEvent, Event (), NoEvent]
@@ -91,7 +92,7 @@ after t x
   | otherwise        = afterEach [(t, x)]
 
 -- | @repeatedly p x@ occurs with value @x@ at local times @p, 2p, 3p, ...@,
--- each at the first sample at or after that time. No backlog: if a time
+-- each at the first sample whose local time has reached it. No backlog: if a time
 -- step spans several periods, one occurrence is produced and the schedule
 -- moves on to the first period boundary after the current time. There is
 -- no occurrence at time 0. A non-positive period is an error.
@@ -150,14 +151,13 @@ afterEachCat qxs0 = SF (initN (\_ -> emit clockZero clockZero qxs0))
     next clock due qxs = NStep (\dt _ -> emit (tick clock dt) due qxs)
 
 -- | @delayEvent q@ delays every occurrence by @q@ seconds: an occurrence
--- at local time @t@ is produced at the first sample at or after @t + q@.
--- When several delayed occurrences fall due at one sample only the first
--- (earliest) is produced ('delayEventCat' gives them all).
--- @delayEvent 0@ is the identity; a negative delay is an error. The due
--- time @t + q@ is one floating-point addition, so an occurrence due within
--- a rounding error of a sample time may come one sample later than exact
--- arithmetic would put it (Yampa, which sums the gaps between occurrences,
--- drifts by more).
+-- at local time @t@ is produced at the first sample after it whose local
+-- time has reached @t + q@ (the due time is one floating-point addition,
+-- and reaching it allows for the rounding, so decimal times and steps
+-- give the samples decimal arithmetic gives). When several delayed
+-- occurrences fall due at one sample only the first (earliest) is
+-- produced ('delayEventCat' gives them all). @delayEvent 0@ is the
+-- identity; a negative delay is an error.
 delayEvent :: Time -> SF (Event a) (Event a)
 delayEvent q
   | q < 0 || isNaN q = errNeg "delayEvent" q
@@ -304,8 +304,8 @@ snap :: SF a (Event a)
 snap = SF (initN (\a -> (# neverN, Event a #)))
 
 -- | One occurrence, carrying the input sample, at the first sample whose
--- local time is @>= t@ (at time 0 if @t == 0@). A negative @t@ is an error,
--- as for 'after'.
+-- local time has reached @t@ (at time 0 if @t == 0@). A negative @t@ is an
+-- error, as for 'after'.
 snapAfter :: Time -> SF a (Event a)
 snapAfter t
   | t < 0 || isNaN t = errNeg "snapAfter" t

@@ -187,7 +187,8 @@ deltaEncode = deltaEncodeBy (==)
 
 -- | 'deltaEncode' with a custom equality: a sample is written 'Nothing'
 -- when it is equal to the sample before it (not to the last one written),
--- as in Yampa. With an equality that is not transitive the two differ:
+-- the new sample given first (@eq new previous@), as in Yampa. With an
+-- equality that is not transitive the two rules differ:
 --
 -- > deltaEncodeBy (\a b -> abs (a - b) < 2) 0.5 [1, 2, 3, 4, 8, 9 :: Double]
 -- >   ==  (1, [(0.5, Nothing), (0.5, Nothing), (0.5, Nothing), (0.5, Just 8), (0.5, Nothing)])
@@ -197,5 +198,5 @@ deltaEncodeBy eq dt (x : xs) = (x, go x xs)
   where
     go _    []       = []
     go prev (y : ys)
-      | eq prev y = (dt, Nothing) : go y ys
+      | eq y prev = (dt, Nothing) : go y ys
       | otherwise = (dt, Just y) : go y ys

@@ -77,6 +77,8 @@ spec = do
     it "deltaEncodeBy compares each sample with the one before it, as Yampa does (not with the last written)" $
       deltaEncodeBy (\a b -> abs (a - b) < 2) 0.5 [1, 2, 3, 4, 8, 9 :: Double]
         `shouldBe` (1, [(0.5, Nothing), (0.5, Nothing), (0.5, Nothing), (0.5, Just 8), (0.5, Nothing)])
+    it "deltaEncodeBy gives the new sample first to the equality, as Yampa does" $
+      deltaEncodeBy (<) 1 [1, 2, 3, 1 :: Int] `shouldBe` (1, [(1, Just 2), (1, Just 3), (1, Nothing)])
     it "deltaEncodeBy uses the given equality" $
       snd (deltaEncodeBy (\x y -> abs (x - y) < 1) 1 [1, 1.5, 3 :: Double])
         `shouldBe` [(1, Nothing), (1, Just 3)]

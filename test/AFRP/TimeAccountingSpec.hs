@@ -126,3 +126,23 @@ spec = describe "every event due at t fires at the first sample whose localTime 
     it "delayEvent 0.2 at dt 0.2 releases an occurrence one sample later" $
       eventIndices (runDt 0.2 (delayEvent 0.2) [ if k == 17 then Event () else NoEvent | k <- [0 .. 25 :: Int] ])
         `shouldBe` [18]
+
+  describe "reached" $ do
+    it "allows a few units in the last place, no more: 8 short counts, 64 short does not (property)" $
+      property $ forAll (choose (1e-3, 1e9)) $ \t ->
+        let u = t * 2 ** (-52)
+        in reached (t + 8 * u) t .&&. not (reached (t + 64 * u) t) .&&. reached t t
+    it "never for NaN, and for infinity only at infinity" $ do
+      reached (0 / 0) 1 `shouldBe` False
+      reached 1 (0 / 0) `shouldBe` False
+      reached (1 / 0) 1e308 `shouldBe` False
+      reached (1 / 0) (1 / 0) `shouldBe` True
+
+  describe "delay never releases a sample at the step it came in" $ do
+    it "a delay below the rounding of a late local time delays by one sample (it passed the input through)" $
+      runSamples (delay 1e-12 0) ((0, 1) : (1000, 2) : [ (0.01, k) | k <- [3 .. 5 :: Int] ])
+        `shouldBe` [0, 1, 2, 3, 4]
+    it "so that it closes a loop at any local time (it hung)" $ do
+      let acc = loop (arr (\(a, c) -> (c + a, c + a)) >>> second (delay 1e-12 0))
+      runSamples acc ((0, 1) : (1000, 2) : [ (0.01, k) | k <- [3 .. 5 :: Int] ])
+        `withinTwoSeconds` [1, 3, 6, 10, 15]
