@@ -183,7 +183,7 @@ pushedTo arena robots near robotsNear p@(Point2 px py) push@(Vector2 ux uy) =
             (\acc _ bx -> case sweepCircleBox p ballRadius push bx of
                 Just (s', _) -> min acc s'
                 Nothing      -> acc) 1
-    s | not robotsNear || pointIndexCount near == 0 = sBoxes
+    s | not robotsNear = sBoxes
       | otherwise =
           foldPointsIn near (x0 - rr) (y0 - rr) (x1 + rr) (y1 + rr)
             (\acc j -> case sweepCircleCircle p ballRadius push (rPos (unsafeAt robots j)) robotRadius of
@@ -293,15 +293,8 @@ resolvePairs arena robots near bs0 = runST $ do
             | otherwise = do
                 let x = pointX grid k
                     y = pointY grid k
-                    nr = pointIndexCount near
-                    -- (a few robots are looked at one by one: cheaper than
-                    -- the cells of the square)
-                    within j = let dx = pointX near j - x
-                                   dy = pointY near j - y
-                               in not (abs dx > reach || abs dy > reach)
-                    close | nr <= 16  = any within [0 .. nr - 1]
-                          | otherwise = foldPointsIn near (x - reach) (y - reach) (x + reach) (y + reach)
-                                          (\_ _ -> True) False
+                    close = foldPointsIn near (x - reach) (y - reach) (x + reach) (y + reach)
+                              (\_ _ -> True) False
                 writeI cl k (if close then 1 else 0)
                 mark (k + 1)
       mark 0

@@ -108,8 +108,8 @@ repeatedly p x
       in if reached (fromIntegral n * p) t
            then (# go clock' (nextIndex t (n + 1)), Event x #)
            else (# go clock' n, NoEvent #))
-    -- The first period boundary strictly after t, starting the search at
-    -- floor (t / p) so that even a huge step costs O(1).
+    -- The first period boundary that t has not reached, starting the
+    -- search at floor (t / p) so that even a huge step costs O(1).
     nextIndex :: Time -> Integer -> Integer
     nextIndex t n0 = firstAbove (4 :: Int) (max n0 (floor (t / p)))
       where firstAbove k n | k > 0, reached (fromIntegral n * p) t = firstAbove (k - 1) (n + 1)

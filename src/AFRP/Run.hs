@@ -194,9 +194,6 @@ deltaEncode = deltaEncodeBy (==)
 -- >   ==  (1, [(0.5, Nothing), (0.5, Nothing), (0.5, Nothing), (0.5, Just 8), (0.5, Nothing)])
 deltaEncodeBy :: (a -> a -> Bool) -> DTime -> [a] -> (a, [(DTime, Maybe a)])
 deltaEncodeBy _  _  []       = error "AFRP.Run.deltaEncodeBy: empty list of samples"
-deltaEncodeBy eq dt (x : xs) = (x, go x xs)
+deltaEncodeBy eq dt (x : xs) = (x, zipWith step (x : xs) xs)
   where
-    go _    []       = []
-    go prev (y : ys)
-      | eq y prev = (dt, Nothing) : go y ys
-      | otherwise = (dt, Just y) : go y ys
+    step prev y = (dt, if eq y prev then Nothing else Just y)
