@@ -205,8 +205,9 @@ gatherNear :: PointIndex -> Int -> Double -> Double -> Gathered
 gatherNear grid skip px py = runST $ do
   let n   = pointIndexCount grid
       tr  = gatherRange
+      win = pointWindow grid (px - tr) (py - tr) (px + tr) (py + tr)
       cap | n <= 32   = n
-          | otherwise = pointsInCellsOf grid (px - tr) (py - tr) (px + tr) (py + tr)
+          | otherwise = windowSize win
   js  <- newIntArrUnset (max 1 cap)
   d2s <- newDblArr (max 1 cap)
   let add !c j
@@ -222,7 +223,7 @@ gatherNear grid skip px py = runST $ do
         | j >= n    = pure c
         | otherwise = add c j >>= scan (j + 1)
   k <- if n <= 32 then scan 0 0
-       else foldPointsInM grid (px - tr) (py - tr) (px + tr) (py + tr) add 0
+       else foldWindowM win add 0
   Gathered grid k <$> freezeI js <*> freezeD d2s
 
 -- Points of an index near a robot: the index, how many, and for the k-th

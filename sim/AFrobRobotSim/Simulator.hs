@@ -303,27 +303,32 @@ stepEvery :: () -> [Agent] -> [Robot] -> (Int -> Agent -> (SimbotOutput, FutureS
           -> (Robot -> DriveCommand -> Plan)
           -> ([(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, Plan)])
 stepEvery ready agents robots stepOne planOne
-  | caps <= 1 || n < 2 * minChunk = case stepRun 0 agents robots of Chunk ss ps -> (ss, ps)
-  | otherwise = ready `pseq` forceAll caps chunks `pseq`
-                (concatMap chunkSteps chunks, concatMap chunkPlans chunks)
+  | caps <= 1 || n < 2 * minChunk = case stepRun 0 maxBound agents robots [] [] of Chunk ss ps -> (ss, ps)
+  | otherwise = ready `pseq` forceAll caps chunks `pseq` joined chunks
   where
     n    = length robots
     caps = capabilitiesNow agents   -- (not n: one capability needs no count)
     size = max minChunk ((n + 4 * caps - 1) `div` (4 * caps))
     chunks = cut 0 agents robots
+    -- Chunks of @size@ consecutive robots. Each chunk's lists end with the
+    -- next chunk's, so the chunks joined are the first one's lists: no
+    -- list is copied to cut them apart or to join them.
     cut !i as rs
       | null as || null rs = []
-      | otherwise = let (as1, as2) = splitAt size as
-                        (rs1, rs2) = splitAt size rs
-                    in stepRun i as1 rs1 : cut (i + size) as2 rs2
+      | otherwise = let rest = cut (i + size) (drop size as) (drop size rs)
+                    in stepRun i size as rs (fst (joined rest)) (snd (joined rest)) : rest
+    joined (c : _) = (chunkSteps c, chunkPlans c)
+    joined []      = ([], [])
     -- Strict loops: a step needs every element, and lazy zips would build
-    -- a thunk per robot and list.
-    stepRun !i as rs = case go i as rs of (# ss, ds #) -> Chunk ss ds
-    go !i (a : as) (r : rs) = case stepOne i a of
-      st@(!o, !_) -> case go (i + 1) as rs of
-        (# ss, ps #) -> case planOne r (soDrive o) of
-          !pl -> (# st : ss, (r, pl) : ps #)
-    go _  _        _        = (# [], [] #)
+    -- a thunk per robot and list. A chunk's steps end with @tailS@, its
+    -- plans with @tailP@.
+    stepRun !i !k as rs tailS tailP = case go i k as rs tailS tailP of (# ss, ds #) -> Chunk ss ds
+    go !i !k (a : as) (r : rs) tailS tailP
+      | k > (0 :: Int) = case stepOne i a of
+          st@(!o, !_) -> case go (i + 1) (k - 1) as rs tailS tailP of
+            (# ss, ps #) -> case planOne r (soDrive o) of
+              !pl -> (# st : ss, (r, pl) : ps #)
+    go _ _ _ _ tailS tailP = (# tailS, tailP #)
 
 -- The controller steps and move plans of consecutive robots.
 data Chunk = Chunk { chunkSteps :: [(SimbotOutput, FutureSF SimbotInput SimbotOutput)]

@@ -48,6 +48,10 @@ module AFrobRobotSim.SpatialIndex
   , foldPointsIn
   , foldPointsInM
   , pointsInCellsOf
+  , PointWindow
+  , pointWindow
+  , windowSize
+  , foldWindowM
   ) where
 
 import           Control.Monad.ST (runST)
@@ -313,15 +317,57 @@ foldPointsIn p x0 y0 x1 y1 f z0
 -- | 'foldPointsIn' with an action (in 'ST', for example) at every point.
 foldPointsInM :: Monad m => PointIndex -> Double -> Double -> Double -> Double
               -> (a -> Int -> m a) -> a -> m a
-foldPointsInM p x0 y0 x1 y1 f z0
-  | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
+foldPointsInM p x0 y0 x1 y1 = foldWindowM (pointWindow p x0 y0 x1 y1)
+{-# INLINE foldPointsInM #-}
+
+-- | How many points 'foldPointsIn' looks at for the rectangle: those
+-- listed in the cells it overlaps and those with non-finite coordinates
+-- (every point for a rectangle that is not finite). At least as many as
+-- it visits: for sizing a buffer before the fold.
+pointsInCellsOf :: PointIndex -> Double -> Double -> Double -> Double -> Int
+pointsInCellsOf p x0 y0 x1 y1 = windowSize (pointWindow p x0 y0 x1 y1)
+
+-- | A rectangle's cells in a point index, found once for a caller that
+-- both sizes a buffer ('windowSize') and folds over the points
+-- ('foldWindowM'): @foldWindowM (pointWindow p x0 y0 x1 y1)@ is
+-- @foldPointsInM p x0 y0 x1 y1@, and 'windowSize' is 'pointsInCellsOf'.
+data PointWindow = PointWindow
+  !PointIndex
+  {-# UNPACK #-} !Double {-# UNPACK #-} !Double  -- the rectangle: x0, y0,
+  {-# UNPACK #-} !Double {-# UNPACK #-} !Double  -- x1, y1
+  {-# UNPACK #-} !Int {-# UNPACK #-} !Int        -- its cells' columns,
+  {-# UNPACK #-} !Int {-# UNPACK #-} !Int        -- rows (-1 -1: every point)
+
+-- | The cells of a rectangle (see 'PointWindow').
+pointWindow :: PointIndex -> Double -> Double -> Double -> Double -> PointWindow
+pointWindow p x0 y0 x1 y1
+  | not (finite x0 && finite y0 && finite x1 && finite y1) = PointWindow p x0 y0 x1 y1 0 0 (-1) (-1)
+  | otherwise = PointWindow p x0 y0 x1 y1 (cellOf gx cs nx x0) (cellOf gx cs nx x1)
+                                          (cellOf gy cs ny y0) (cellOf gy cs ny y1)
+  where
+    Grid gx gy cs nx ny = piGrid p
+{-# INLINE pointWindow #-}
+
+-- | How many points a fold over the window looks at (see 'pointsInCellsOf').
+windowSize :: PointWindow -> Int
+windowSize (PointWindow p _ _ _ _ cx0 cx1 cy0 cy1)
+  | cy1 < 0   = piCount p
+  | otherwise = rows cy0 (length (piWild p))
+  where
+    nx = gNx (piGrid p)
+    starts = piStarts p
+    rows !cy !acc
+      | cy > cy1  = acc
+      | otherwise = rows (cy + 1) (acc + indexI starts (cy * nx + cx1 + 1) - indexI starts (cy * nx + cx0))
+{-# INLINE windowSize #-}
+
+-- | 'foldPointsInM' over a window's points.
+foldWindowM :: Monad m => PointWindow -> (a -> Int -> m a) -> a -> m a
+foldWindowM (PointWindow p x0 y0 x1 y1 cx0 cx1 cy0 cy1) f z0
+  | cy1 < 0   = goAll 0 z0
   | otherwise = row cy0 z0
   where
-    !(Grid gx gy cs nx ny) = piGrid p
-    !cx0 = cellOf gx cs nx x0
-    !cx1 = cellOf gx cs nx x1
-    !cy0 = cellOf gy cs ny y0
-    !cy1 = cellOf gy cs ny y1
+    nx = gNx (piGrid p)
     starts = piStarts p
     items  = piItems p
     -- One loop of tail calls (no closures allocated): a row's cells are
@@ -342,23 +388,4 @@ foldPointsInM p x0 y0 x1 y1 f z0
     goAll !i !z
       | i >= piCount p = pure z
       | otherwise      = f z i >>= goAll (i + 1)
-{-# INLINE foldPointsInM #-}
-
--- | How many points 'foldPointsIn' looks at for the rectangle: those
--- listed in the cells it overlaps and those with non-finite coordinates
--- (every point for a rectangle that is not finite). At least as many as
--- it visits: for sizing a buffer before the fold.
-pointsInCellsOf :: PointIndex -> Double -> Double -> Double -> Double -> Int
-pointsInCellsOf p x0 y0 x1 y1
-  | not (finite x0 && finite y0 && finite x1 && finite y1) = piCount p
-  | otherwise = rows cy0 (length (piWild p))
-  where
-    !(Grid gx gy cs nx ny) = piGrid p
-    !cx0 = cellOf gx cs nx x0
-    !cx1 = cellOf gx cs nx x1
-    !cy0 = cellOf gy cs ny y0
-    !cy1 = cellOf gy cs ny y1
-    starts = piStarts p
-    rows !cy !acc
-      | cy > cy1  = acc
-      | otherwise = rows (cy + 1) (acc + indexI starts (cy * nx + cx1 + 1) - indexI starts (cy * nx + cx0))
+{-# INLINE foldWindowM #-}
