@@ -76,7 +76,7 @@ import           AFrobRobotSim.Sensors
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
 import           AFrobRobotSim.Console     (displayPath)
-import           AFrobRobotSim.WorldFile.Lexical (cannotRead, decodeUtf8, readFileUpTo, utf8Error)
+import           AFrobRobotSim.WorldFile.Lexical (cannotRead, readFileUpTo, utf8Text)
 
 -- | What a log needs besides the states: the world and how it was run.
 data LogConfig = LogConfig
@@ -403,10 +403,7 @@ readLogFileUpTo cap path = do
     Left e             -> Left (cannotRead path e)
     Right Nothing      -> Left (name ++ ": more than " ++ show cap ++ " bytes, more than a log is read (write a"
                                 ++ " shorter run, or fewer frames with --fps)")
-    Right (Just bytes) -> case utf8Error bytes of
-          Just (l, c, b) -> Left (name ++ ":" ++ show l ++ ":" ++ show c
-                                  ++ ": not UTF-8 text (byte " ++ show b ++ ")")
-          Nothing        -> readLogAt (\i mc -> name ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": ")
-                                      (decodeUtf8 bytes)
+    Right (Just bytes) ->
+      utf8Text name bytes >>= readLogAt (\i mc -> name ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": ")
   where
     name = displayPath path   -- (a name with control characters escaped)

@@ -32,7 +32,7 @@ import           Text.Printf         (printf)
 
 import           AFrobRobotSim.JSON
 import           AFrobRobotSim.Console (displayPath, endOutput, ioErrorText, printableLine, tolerantOutput)
-import           AFrobRobotSim.WorldFile.Lexical (decodeUtf8, utf8Error)
+import           AFrobRobotSim.WorldFile.Lexical (utf8Text)
 
 -- One run as the table needs it.
 data Run = Run
@@ -164,8 +164,8 @@ sweepMergeMain = do
     cannotRead f e = do
       hPutStrLn stderr (prog ++ ": " ++ displayPath f ++ ": " ++ ioErrorText e)
       exitWith (ExitFailure 2)
-    decoded (name, bytes) = case utf8Error bytes of
-      Nothing        -> pure (name, decodeUtf8 bytes)
-      Just (l, c, _) -> do
-        hPutStrLn stderr (prog ++ ": " ++ name ++ ":" ++ show l ++ ":" ++ show c ++ ": not UTF-8 text")
+    decoded (name, bytes) = case utf8Text name bytes of
+      Right text -> pure (name, text)
+      Left msg   -> do
+        hPutStrLn stderr (prog ++ ": " ++ msg)
         exitWith (ExitFailure 1)

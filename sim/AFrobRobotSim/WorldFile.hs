@@ -170,7 +170,6 @@ module AFrobRobotSim.WorldFile
 import qualified Data.ByteString   as B
 import           Data.List         (intercalate)
 import qualified Data.Map.Strict   as M
-import           Numeric           (showHex)
 
 import           AFRP.Geometry     (Point2 (..))
 import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems,
@@ -275,10 +274,8 @@ checkLine l = case [ c | (c, ch) <- zip [1 ..] (take (maxLineLength + 1) l), ch 
 -- w.world:2: SimbotA 1 at (0.1, 0.0) (line 2) overlaps block at (0.0, 0.0) (line 1)
 -- @
 readWorldBytes :: FilePath -> B.ByteString -> Either String WorldTemplate
-readWorldBytes name bytes = case utf8Error bytes of
-  Just (l, c, b) -> Left (file ++ ":" ++ show l ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
-                          ++ (if b < 16 then "0" else "") ++ showHex b ")")
-  Nothing        -> parseNumbered name (decodeUtf8 bytes) >>= check   -- (which displays the name itself)
+readWorldBytes name bytes =
+  utf8Text file bytes >>= parseNumbered name >>= check   -- (parseNumbered displays the name itself)
   where
     file = displayPath name   -- (control characters escaped in messages)
     check numbered =

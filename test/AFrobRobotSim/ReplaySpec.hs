@@ -137,4 +137,4 @@ spec = do
       hClose h
       r <- writeReplayFromLog logPath (logPath ++ ".html")
       removeFile logPath
-      r `shouldBe` Left (logPath ++ ":2:2: not UTF-8 text (byte 255)")
+      r `shouldBe` Left (logPath ++ ":2:2: invalid UTF-8 (byte 0xff)")

@@ -6,6 +6,7 @@
 module AFrobRobotSim.SweepSpec (spec, childVariable, child) where
 
 import           Control.Monad       (forM, forM_, unless)
+import qualified Data.ByteString     as B
 import           Data.Int            (Int8)
 import qualified Data.Map            as M
 import           Data.Ratio          (Ratio, (%))
@@ -196,6 +197,13 @@ spec = do
       mergeResults evil `shouldSatisfy` either (const False)
         (\t -> "speed=0.1\\ESC[2J" `isInfixOf` t && "bad\\nFAILED seed 9: forged" `isInfixOf` t
                && all (\c -> c == '\n' || c >= ' ') t)
+
+    it "afrp-sweep-merge: a file that is not UTF-8 is refused with its line, column and byte (exit 1)" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      B.writeFile (dir </> "r.jsonl") (B.concat [B.pack (map (fromIntegral . fromEnum) (head sampleLines)), B.pack [10, 0x7b, 0xff, 10]])
+      (code, out, err) <- readProcessWithExitCode merger [dir </> "r.jsonl"] ""
+      (code, out) `shouldBe` (ExitFailure 1, "")
+      err `shouldBe` ("afrp-sweep-merge: " ++ dir </> "r.jsonl" ++ ":2:2: invalid UTF-8 (byte 0xff)\n")
 
   describe "--param" $ do
     it "collects NAME=VALUE pairs in order, a repeated name keeping its last value" $

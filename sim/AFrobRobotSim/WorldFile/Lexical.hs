@@ -16,6 +16,7 @@ module AFrobRobotSim.WorldFile.Lexical
   ( -- * UTF-8
     utf8Error
   , decodeUtf8
+  , utf8Text
     -- * Tokens
   , Tok (..)
   , tokenize
@@ -43,6 +44,7 @@ import qualified Data.ByteString.Lazy   as BL
 import qualified Data.ByteString.Unsafe as BU
 import           Data.Char              (chr, isDigit, isSpace, toLower)
 import           Data.Word              (Word8)
+import           Numeric                (showHex)
 import           GHC.IO.Exception       (IOException (ioe_description))
 import           System.Directory       (canonicalizePath)
 import           System.FilePath        (normalise)
@@ -81,6 +83,20 @@ utf8Error bs = go 0 1 1
           | k >= 2 && not (cont (i + 2) 0x80 0xBF) = Just (l, c, b)
           | k >= 3 && not (cont (i + 3) 0x80 0xBF) = Just (l, c, b)
           | otherwise = go (i + 1 + k) l (c + 1)
+
+-- | The text of a file's bytes, or, when they are not UTF-8, the message
+-- every reader of text files gives:
+-- @NAME:LINE:COLUMN: invalid UTF-8 (byte 0xNN)@, for the first bad byte
+-- (its column counted in characters). The name is used as given (a
+-- caller escapes it for display).
+--
+-- >>> utf8Text "w.world" (B.pack [0x61, 0x0a, 0x62, 0xff])
+-- Left "w.world:2:2: invalid UTF-8 (byte 0xff)"
+utf8Text :: String -> B.ByteString -> Either String String
+utf8Text name bytes = case utf8Error bytes of
+  Just (l, c, b) -> Left (name ++ ":" ++ show l ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
+                          ++ (if b < 16 then "0" else "") ++ showHex b ")")
+  Nothing        -> Right (decodeUtf8 bytes)
 
 -- | Decode valid UTF-8 (as 'utf8Error' accepts it), lazily.
 decodeUtf8 :: B.ByteString -> String
