@@ -208,26 +208,27 @@ gatherNear :: PointIndex -> Int -> Double -> Double -> Gathered
 gatherNear grid skip px py
   | n <= 32   = gatherBy n (\add -> let scan !j !c
                                           | j >= n    = pure c
-                                          | otherwise = add c j >>= scan (j + 1)
+                                          | otherwise = add c j (pointX grid j) (pointY grid j) >>= scan (j + 1)
                                    in scan 0 0)
   | otherwise =
       -- (the window taken apart before the loops: shared by the two, it
-      -- was a record allocated for every robot and step)
+      -- was a record allocated for every robot and step; the points of its
+      -- cells are tested by distance alone)
       case pointWindow grid (px - tr) (py - tr) (px + tr) (py + tr) of
-        !win -> gatherBy (windowSize win) (\add -> foldWindowM win add 0)
+        !win -> gatherBy (windowSize win) (\add -> foldWindowCellsM win add 0)
   where
     n  = pointIndexCount grid
     tr = gatherRange
     -- the points a walk gives, into arrays of the given size
-    gatherBy :: Int -> (forall s. (Int -> Int -> ST s Int) -> ST s Int) -> Gathered
+    gatherBy :: Int -> (forall s. (Int -> Int -> Double -> Double -> ST s Int) -> ST s Int) -> Gathered
     gatherBy cap walk = runST $ do
       js  <- newIntArrUnset (max 1 cap)
       d2s <- newDblArr (max 1 cap)
-      let add !c j
+      let add !c j qx qy
             | j == skip = pure c
             | otherwise =
-                let x  = pointX grid j - px
-                    y  = pointY grid j - py
+                let x  = qx - px
+                    y  = qy - py
                     d2 = x * x + y * y
                 in if d2 <= tr * tr
                      then writeI js c j >> writeD d2s c d2 >> pure (c + 1)

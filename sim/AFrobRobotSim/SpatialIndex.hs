@@ -52,6 +52,7 @@ module AFrobRobotSim.SpatialIndex
   , pointWindow
   , windowSize
   , foldWindowM
+  , foldWindowCellsM
   ) where
 
 import           Control.Monad.ST (runST)
@@ -389,3 +390,31 @@ foldWindowM (PointWindow p x0 y0 x1 y1 cx0 cx1 cy0 cy1) f z0
       | i >= piCount p = pure z
       | otherwise      = f z i >>= goAll (i + 1)
 {-# INLINE foldWindowM #-}
+
+-- | A fold over every point listed in the window's cells, and every point
+-- with non-finite coordinates ('windowSize' of them, a superset of what
+-- 'foldWindowM' visits), without testing it against the rectangle: for a
+-- caller that applies a test of its own, such as a distance, and is given
+-- each point's coordinates (as indexed) with its number.
+foldWindowCellsM :: Monad m => PointWindow -> (a -> Int -> Double -> Double -> m a) -> a -> m a
+foldWindowCellsM (PointWindow p _ _ _ _ cx0 cx1 cy0 cy1) f z0
+  | cy1 < 0   = goAll 0 z0
+  | otherwise = row cy0 z0
+  where
+    nx = gNx (piGrid p)
+    starts = piStarts p
+    items  = piItems p
+    at z i = f z i (indexD (piXs p) i) (indexD (piYs p) i)
+    {-# INLINE at #-}
+    row !cy !z
+      | cy > cy1  = wild (piWild p) z
+      | otherwise = inRow cy (indexI starts (cy * nx + cx0)) (indexI starts (cy * nx + cx1 + 1)) z
+    inRow !cy !k !e !z
+      | k >= e    = row (cy + 1) z
+      | otherwise = at z (indexI items k) >>= inRow cy (k + 1) e
+    wild [] !z       = pure z
+    wild (i : is) !z = at z i >>= wild is
+    goAll !i !z
+      | i >= piCount p = pure z
+      | otherwise      = at z i >>= goAll (i + 1)
+{-# INLINE foldWindowCellsM #-}

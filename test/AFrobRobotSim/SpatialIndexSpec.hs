@@ -9,6 +9,7 @@
 -- "AFrobRobotSim.SensorsSpec", the balls' in "AFrobRobotSim.BallsSpec".
 module AFrobRobotSim.SpatialIndexSpec (spec) where
 
+import           Data.Functor.Identity (Identity (..))
 import           Data.List             (nub, sort)
 import           Test.Hspec
 import           Test.QuickCheck
@@ -133,6 +134,27 @@ spec = do
               visited = foldPointsIn pix x0 y0 x1 y1 (\c _ -> c + 1) (0 :: Int)
               counted = pointsInCellsOf pix x0 y0 x1 y1
           in counterexample (show (visited, counted)) (visited <= counted && counted <= length pts)
+
+  describe "foldWindowCellsM" $
+    it "visits windowSize points, each once with its coordinates, among them every point foldPointsIn visits" $
+      property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
+        forAll (genRobots (halfSide w)) $ \rs ->
+        forAll (vectorOf (length rs) (elements [Nothing, Nothing, Nothing, Just (0 / 0), Just (1 / 0)])) $ \bad ->
+          let h = halfSide w
+              pts = [ maybe (x, y) (\v -> if even k then (v, y) else (x, v)) b
+                    | (k, Robot { rPos = Point2 x y }, b) <- zip3 [0 :: Int ..] rs bad ]
+              pix = pointIndex (-h) (-h) h h pts
+              win = pointWindow pix x0 y0 x1 y1
+              seen = runIdentity (foldWindowCellsM win (\acc k x y -> Identity ((k, x, y) : acc)) [])
+              ks = sort [ k | (k, _, _) <- seen ]
+              inRect = sort (foldPointsIn pix x0 y0 x1 y1 (flip (:)) [])
+              same a b = a == b || (isNaN a && isNaN b)
+          in conjoin
+               [ length seen === windowSize win
+               , windowSize win === pointsInCellsOf pix x0 y0 x1 y1
+               , nub ks === ks
+               , counterexample "a point's coordinates" (and [ same x px && same y py | (k, x, y) <- seen, let (px, py) = pts !! k ])
+               , counterexample "a point in the rectangle not visited" (all (`elem` ks) inRect) ]
 
   describe "stepRobots" $
     it "moves the robots exactly as testing every box and every other robot does" $
