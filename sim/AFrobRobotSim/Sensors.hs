@@ -148,14 +148,16 @@ senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
     -- disc's centre is within a radius of the ray's line (the
     -- discriminant is negative otherwise, by far more than rounding), and
     -- the four quarter-turn rays lie on the heading's axis and its
-    -- perpendicular. Usually none of the others is that near either line,
-    -- and those four rays then test no robot at all.
+    -- perpendicular; and only within the ray's reach (the cast ignores
+    -- the others anyway). Usually none of the others is that near either
+    -- line, and those four rays then test no robot at all.
     crossing = let Vector2 c s = headingDir
-               in selectNear (\qx qy ->
+               in selectNear (\qx qy d2 ->
                     let x = qx - px
                         y = qy - py
-                    in abs (y * c - x * s) <= robotRadius + querySlack
-                       || abs (x * c + y * s) <= robotRadius + querySlack)
+                    in d2 <= rayReach * rayReach
+                       && (abs (y * c - x * s) <= robotRadius + querySlack
+                           || abs (x * c + y * s) <= robotRadius + querySlack))
                   others
     -- a robot the tracker sees: its type and number taken out as the
     -- element is made, the bearing computed when it is read
@@ -248,13 +250,14 @@ data Some = None | Some {-# UNPACK #-} !Int !Some
 allNear :: Gathered -> Some
 allNear _ = All
 
--- The gathered points (coordinates) that pass a test.
-selectNear :: (Double -> Double -> Bool) -> Gathered -> Some
-selectNear keep (Gathered grid k js _) = go (k - 1) None
+-- The gathered points that pass a test of their coordinates and squared
+-- distance.
+selectNear :: (Double -> Double -> Double -> Bool) -> Gathered -> Some
+selectNear keep (Gathered grid k js d2s) = go (k - 1) None
   where
     go !p acc
       | p < 0     = acc
-      | let j = indexI js p, keep (pointX grid j) (pointY grid j) = go (p - 1) (Some p acc)
+      | let j = indexI js p, keep (pointX grid j) (pointY grid j) (indexD d2s p) = go (p - 1) (Some p acc)
       | otherwise = go (p - 1) acc
 {-# INLINE selectNear #-}
 
