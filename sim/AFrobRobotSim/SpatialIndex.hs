@@ -364,13 +364,33 @@ windowSize (PointWindow p _ _ _ _ cx0 cx1 cy0 cy1)
 
 -- | 'foldPointsInM' over a window's points.
 foldWindowM :: Monad m => PointWindow -> (a -> Int -> m a) -> a -> m a
-foldWindowM (PointWindow p x0 y0 x1 y1 cx0 cx1 cy0 cy1) f z0
+foldWindowM win@(PointWindow _ x0 y0 x1 y1 _ _ _ _) f =
+  foldWindowWith (\x y -> x >= x0 && x <= x1 && y >= y0 && y <= y1) win (\z i _ _ -> f z i)
+{-# INLINE foldWindowM #-}
+
+-- | A fold over every point listed in the window's cells, and every point
+-- with non-finite coordinates ('windowSize' of them, a superset of what
+-- 'foldWindowM' visits), without testing it against the rectangle: for a
+-- caller that applies a test of its own, such as a distance, and is given
+-- each point's coordinates (as indexed) with its number.
+foldWindowCellsM :: Monad m => PointWindow -> (a -> Int -> Double -> Double -> m a) -> a -> m a
+foldWindowCellsM = foldWindowWith (\_ _ -> True)
+{-# INLINE foldWindowCellsM #-}
+
+-- The fold of both: the points listed in the window's cells that pass
+-- the test, then every point with non-finite coordinates (for a window
+-- that is not finite, every point, untested).
+foldWindowWith :: Monad m => (Double -> Double -> Bool) -> PointWindow
+               -> (a -> Int -> Double -> Double -> m a) -> a -> m a
+foldWindowWith keep (PointWindow p _ _ _ _ cx0 cx1 cy0 cy1) f z0
   | cy1 < 0   = goAll 0 z0
   | otherwise = row cy0 z0
   where
     nx = gNx (piGrid p)
     starts = piStarts p
     items  = piItems p
+    at z i = f z i (indexD (piXs p) i) (indexD (piYs p) i)
+    {-# INLINE at #-}
     -- One loop of tail calls (no closures allocated): a row's cells are
     -- contiguous in the items array, so each row is one run of items.
     row !cy !z
@@ -382,39 +402,11 @@ foldWindowM (PointWindow p x0 y0 x1 y1 cx0 cx1 cy0 cy1) f z0
           let i = indexI items k
               x = indexD (piXs p) i
               y = indexD (piYs p) i
-          z' <- if x >= x0 && x <= x1 && y >= y0 && y <= y1 then f z i else pure z
+          z' <- if keep x y then f z i x y else pure z
           inRow cy (k + 1) e z'
-    wild [] !z       = pure z
-    wild (i : is) !z = f z i >>= wild is
-    goAll !i !z
-      | i >= piCount p = pure z
-      | otherwise      = f z i >>= goAll (i + 1)
-{-# INLINE foldWindowM #-}
-
--- | A fold over every point listed in the window's cells, and every point
--- with non-finite coordinates ('windowSize' of them, a superset of what
--- 'foldWindowM' visits), without testing it against the rectangle: for a
--- caller that applies a test of its own, such as a distance, and is given
--- each point's coordinates (as indexed) with its number.
-foldWindowCellsM :: Monad m => PointWindow -> (a -> Int -> Double -> Double -> m a) -> a -> m a
-foldWindowCellsM (PointWindow p _ _ _ _ cx0 cx1 cy0 cy1) f z0
-  | cy1 < 0   = goAll 0 z0
-  | otherwise = row cy0 z0
-  where
-    nx = gNx (piGrid p)
-    starts = piStarts p
-    items  = piItems p
-    at z i = f z i (indexD (piXs p) i) (indexD (piYs p) i)
-    {-# INLINE at #-}
-    row !cy !z
-      | cy > cy1  = wild (piWild p) z
-      | otherwise = inRow cy (indexI starts (cy * nx + cx0)) (indexI starts (cy * nx + cx1 + 1)) z
-    inRow !cy !k !e !z
-      | k >= e    = row (cy + 1) z
-      | otherwise = at z (indexI items k) >>= inRow cy (k + 1) e
     wild [] !z       = pure z
     wild (i : is) !z = at z i >>= wild is
     goAll !i !z
       | i >= piCount p = pure z
       | otherwise      = at z i >>= goAll (i + 1)
-{-# INLINE foldWindowCellsM #-}
+{-# INLINE foldWindowWith #-}

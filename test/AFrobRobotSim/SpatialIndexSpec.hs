@@ -86,6 +86,32 @@ refFirstContact p d arena others
 
 ------------------------------------------------------------------------------
 
+-- The robots' centres, each coordinate replaced, at random, by one of the
+-- given values (@Nothing@ keeps it): an even-numbered robot's x, an odd one's y.
+spoiled :: [Maybe Double] -> [Robot] -> Gen [(Double, Double)]
+spoiled choices rs = do
+  bad <- vectorOf (length rs) (elements choices)
+  pure [ maybe (x, y) (\v -> if even k then (v, y) else (x, v)) b
+       | (k, Robot { rPos = Point2 x y }, b) <- zip3 [0 :: Int ..] rs bad ]
+
+-- A rectangle over and around a world of half-side @h@.
+genRect :: Double -> Gen (Double, Double, Double, Double)
+genRect h = do
+  x0 <- choose (-h - 2, h + 2)
+  y0 <- choose (-h - 2, h + 2)
+  wd <- choose (0, h)
+  ht <- choose (0, h)
+  pure (x0, y0, x0 + wd, y0 + ht)
+
+-- A world's rectangle, its robots' centres spoiled with the given values
+-- ('spoiled'), and those centres on an index over the world.
+forSpoiledIndex :: Testable t => [Maybe Double]
+                -> ((Double, Double, Double, Double) -> [(Double, Double)] -> PointIndex -> t) -> Property
+forSpoiledIndex choices k =
+  forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \rect ->
+    forAll (genRobots (halfSide w)) $ \rs -> forAll (spoiled choices rs) $ \pts ->
+      let h = halfSide w in k rect pts (pointIndex (-h) (-h) h h pts)
+
 spec :: Spec
 spec = do
   describe "foldBoxesIn" $
@@ -109,14 +135,8 @@ spec = do
           in got === want
 
     it "visits every point that is not finite, whatever the rectangle, and the others as before" $
-      property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
-        forAll (genRobots (halfSide w)) $ \rs ->
-        forAll (vectorOf (length rs) (elements [Nothing, Nothing, Just (0 / 0), Just (1 / 0), Just (-1 / 0)])) $ \bad ->
-          let h = halfSide w
-              pts = [ maybe (x, y) (\v -> if even k then (v, y) else (x, v)) b
-                    | (k, Robot { rPos = Point2 x y }, b) <- zip3 [0 :: Int ..] rs bad ]
-              pix = pointIndex (-h) (-h) h h pts
-              got = sort (foldPointsIn pix x0 y0 x1 y1 (flip (:)) [])
+      property $ forSpoiledIndex [Nothing, Nothing, Just (0 / 0), Just (1 / 0), Just (-1 / 0)] $ \(x0, y0, x1, y1) pts pix ->
+          let got = sort (foldPointsIn pix x0 y0 x1 y1 (flip (:)) [])
               finitePt (x, y) = not (isNaN x || isInfinite x || isNaN y || isInfinite y)
               want = [ k | (k, p@(x, y)) <- zip [0 ..] pts
                          , not (finitePt p) || (x >= x0 && x <= x1 && y >= y0 && y <= y1) ]
@@ -124,27 +144,15 @@ spec = do
 
   describe "pointsInCellsOf" $
     it "counts at least the points foldPointsIn visits (a buffer's size), and at most all of them" $
-      property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
-        forAll (genRobots (halfSide w)) $ \rs ->
-        forAll (vectorOf (length rs) (elements [Nothing, Nothing, Nothing, Just (0 / 0), Just (1 / 0)])) $ \bad ->
-          let h = halfSide w
-              pts = [ maybe (x, y) (\v -> if even k then (v, y) else (x, v)) b
-                    | (k, Robot { rPos = Point2 x y }, b) <- zip3 [0 :: Int ..] rs bad ]
-              pix = pointIndex (-h) (-h) h h pts
-              visited = foldPointsIn pix x0 y0 x1 y1 (\c _ -> c + 1) (0 :: Int)
+      property $ forSpoiledIndex [Nothing, Nothing, Nothing, Just (0 / 0), Just (1 / 0)] $ \(x0, y0, x1, y1) pts pix ->
+          let visited = foldPointsIn pix x0 y0 x1 y1 (\c _ -> c + 1) (0 :: Int)
               counted = pointsInCellsOf pix x0 y0 x1 y1
           in counterexample (show (visited, counted)) (visited <= counted && counted <= length pts)
 
   describe "foldWindowCellsM" $
     it "visits windowSize points, each once with its coordinates, among them every point foldPointsIn visits" $
-      property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
-        forAll (genRobots (halfSide w)) $ \rs ->
-        forAll (vectorOf (length rs) (elements [Nothing, Nothing, Nothing, Just (0 / 0), Just (1 / 0)])) $ \bad ->
-          let h = halfSide w
-              pts = [ maybe (x, y) (\v -> if even k then (v, y) else (x, v)) b
-                    | (k, Robot { rPos = Point2 x y }, b) <- zip3 [0 :: Int ..] rs bad ]
-              pix = pointIndex (-h) (-h) h h pts
-              win = pointWindow pix x0 y0 x1 y1
+      property $ forSpoiledIndex [Nothing, Nothing, Nothing, Just (0 / 0), Just (1 / 0)] $ \(x0, y0, x1, y1) pts pix ->
+          let win = pointWindow pix x0 y0 x1 y1
               seen = runIdentity (foldWindowCellsM win (\acc k x y -> Identity ((k, x, y) : acc)) [])
               ks = sort [ k | (k, _, _) <- seen ]
               inRect = sort (foldPointsIn pix x0 y0 x1 y1 (flip (:)) [])
@@ -173,10 +181,3 @@ spec = do
               near = scRobotIndex (SenseContext arena rs [])
           in stepRobotsNear near dt arena cmds === refStepRobots dt arena cmds
 
-  where
-    genRect h = do
-      x0 <- choose (-h - 2, h + 2)
-      y0 <- choose (-h - 2, h + 2)
-      wd <- choose (0, h)
-      ht <- choose (0, h)
-      pure (x0, y0, x0 + wd, y0 + ht)
