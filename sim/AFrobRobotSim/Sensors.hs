@@ -213,9 +213,10 @@ gatherNear grid skip px py
                                           | otherwise = add c j (pointX grid j) (pointY grid j) >>= scan (j + 1)
                                    in scan 0 0)
   | otherwise =
-      -- (the window taken apart before the loops: shared by the two, it
-      -- was a record allocated for every robot and step; the points of its
-      -- cells are tested by distance alone)
+      -- (the window is taken apart here, before the two loops that read
+      -- it: bound lazily for both, it was a record allocated for every
+      -- robot and step; the points of its cells are tested by distance
+      -- alone)
       case pointWindow grid (px - tr) (py - tr) (px + tr) (py + tr) of
         !win -> gatherBy (windowSize win) (\add -> foldWindowCellsM win add 0)
   where
@@ -294,8 +295,9 @@ foldNear f z0 (Gathered grid k js d2s) sel = case sel of
 -- insertion sort, then a lazy merge sort) was most of a sample's cost.
 --
 -- The list is made as it is read, and so is the sorting: more than
--- 'bandsAbove' points are first put into bands of distance ('bandOf': below 1 m, 2 m, 3 m, and
--- the rest of the range), and a band is sorted when the list reaches it.
+-- 'bandsAbove' points are first put into bands of distance ('bandOf':
+-- below 1 m, 2 m, 3 m, and the rest of the range), and a band is sorted
+-- when the list reaches it.
 -- A band holds only distances above the previous band's, so the bands'
 -- sorted runs one after the other are the whole list sorted; a
 -- controller that reads the nearest few robots (the usual case) sorts

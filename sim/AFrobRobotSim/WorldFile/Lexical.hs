@@ -44,8 +44,8 @@ import qualified Data.ByteString.Lazy   as BL
 import qualified Data.ByteString.Unsafe as BU
 import           Data.Char              (chr, isDigit, isSpace, toLower)
 import           Data.Word              (Word8)
-import           Numeric                (showHex)
 import           GHC.IO.Exception       (IOException (ioe_description))
+import           Numeric                (showHex)
 import           System.Directory       (canonicalizePath)
 import           System.FilePath        (normalise)
 import           System.IO              (IOMode (ReadMode), hFileSize, withBinaryFile)
