@@ -175,11 +175,13 @@ boxIndexWild = biWild
 -- that overlap the rectangle @[x0, x1] x [y0, y1]@ (closed), giving it the
 -- box's position in the original list and the box, possibly more than
 -- once (once per cell it is listed in). A query that is not finite visits
--- every box, and boxes with non-finite coordinates are always visited.
+-- every box, and boxes with non-finite coordinates are always visited. A
+-- rectangle with @x1 < x0@ or @y1 < y0@ is empty: it meets no box.
 foldBoxesIn :: BoxIndex -> Double -> Double -> Double -> Double
             -> (a -> Int -> Box -> a) -> a -> a
 foldBoxesIn bi x0 y0 x1 y1 f z0
   | not (finite x0 && finite y0 && finite x1 && finite y1) = goAll 0 z0
+  | x1 < x0 || y1 < y0 = wild (biWild bi) z0
   | otherwise = cell cy0 cx0 z0
   where
     !(Grid gx gy cs nx ny) = biGrid bi
@@ -359,7 +361,9 @@ windowSize (PointWindow p _ _ _ _ cx0 cx1 cy0 cy1)
     starts = piStarts p
     rows !cy !acc
       | cy > cy1  = acc
-      | otherwise = rows (cy + 1) (acc + indexI starts (cy * nx + cx1 + 1) - indexI starts (cy * nx + cx0))
+      -- (a rectangle with x1 < x0 has no cells in a row: none counted, as
+      -- none are visited)
+      | otherwise = rows (cy + 1) (acc + max 0 (indexI starts (cy * nx + cx1 + 1) - indexI starts (cy * nx + cx0)))
 {-# INLINE windowSize #-}
 
 -- | 'foldPointsInM' over a window's points.

@@ -94,14 +94,16 @@ spoiled choices rs = do
   pure [ maybe (x, y) (\v -> if even k then (v, y) else (x, v)) b
        | (k, Robot { rPos = Point2 x y }, b) <- zip3 [0 :: Int ..] rs bad ]
 
--- A rectangle over and around a world of half-side @h@.
+-- A rectangle over and around a world of half-side @h@; one in ten
+-- inverted (its far side before its near one, in x, y or both: empty).
 genRect :: Double -> Gen (Double, Double, Double, Double)
 genRect h = do
   x0 <- choose (-h - 2, h + 2)
   y0 <- choose (-h - 2, h + 2)
   wd <- choose (0, h)
   ht <- choose (0, h)
-  pure (x0, y0, x0 + wd, y0 + ht)
+  frequency [ (9, pure (x0, y0, x0 + wd, y0 + ht))
+            , (1, elements [(x0 + wd, y0, x0, y0 + ht), (x0, y0 + ht, x0 + wd, y0), (x0 + wd, y0 + ht, x0, y0)]) ]
 
 -- A world's rectangle, its robots' centres spoiled with the given values
 -- ('spoiled'), and those centres on an index over the world.
@@ -115,12 +117,12 @@ forSpoiledIndex choices k =
 spec :: Spec
 spec = do
   describe "foldBoxesIn" $
-    it "visits exactly the boxes that meet the rectangle (each at least once)" $
+    it "visits exactly the boxes that meet the rectangle (each at least once; none for an empty one)" $
       property $ forAll genWorld $ \w -> forAll (genRect (halfSide w)) $ \(x0, y0, x1, y1) ->
         let Arena boxes = arenaFor w
             bi = boxIndex boxes
             got = nub (sort (foldBoxesIn bi x0 y0 x1 y1 (\acc k _ -> k : acc) []))
-            want = [ k | (k, Box a b c d) <- zip [0 ..] boxes, a <= x1, c >= x0, b <= y1, d >= y0 ]
+            want = [ k | x0 <= x1, y0 <= y1, (k, Box a b c d) <- zip [0 ..] boxes, a <= x1, c >= x0, b <= y1, d >= y0 ]
         in got === want
 
   describe "foldPointsIn" $ do
