@@ -48,6 +48,7 @@ module AFrobRobotSim.Shapes
   ) where
 
 import AFRP.Geometry (Point2 (..), Vector2 (..))
+import AFrobRobotSim.FlatArray (finite)
 
 ------------------------------------------------------------------------------
 -- Boxes
@@ -148,8 +149,8 @@ earlier h1@(Hit s1 _ _) h2@(Hit s2 _ _) = if s1 <= s2 then h1 else h2
 enterCircle :: Double -> Double -> Double -> Double
             -> Double -> Double -> Double -> Hit
 enterCircle px py dx dy cx cy r
-  | a - a == 0 && disc - disc == 0 = enter 1 noHit dx dy b disc
-  | not (k - k == 0) || k == 0     = noHit   -- (a non-finite move)
+  | finite a && finite disc = enter 1 noHit dx dy b disc
+  | not (finite k) || k == 0 = noHit   -- (a non-finite move)
   | otherwise =
       case enter k (Hit (1 / 0) 0 0) ex ey b' disc' of
         Hit s nx ny | s <= k    -> Hit (s / k) nx ny

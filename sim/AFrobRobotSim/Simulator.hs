@@ -80,6 +80,7 @@ import           AFrobRobotSim.Arena
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
+import           AFrobRobotSim.SpatialIndex (finite)
 import           AFrobRobotSim.Workers
 import           AFrobRobotSim.World
 
@@ -365,9 +366,8 @@ finiteDrive c = case c of
   DriveWheels l r -> both "DriveWheels" l r
   DriveTR v w     -> both "DriveTR" v w
   where
-    -- (x - x is 0 for a finite x, NaN for NaN and the infinities)
     both name a b
-      | a - a == 0 && b - b == 0 = ()
+      | finite a && finite b = ()
       | otherwise = errorWithoutStackTrace ("its wheel command is not finite: " ++ name ++ " " ++ show a ++ " " ++ show b)
 
 forceList :: [a] -> ()

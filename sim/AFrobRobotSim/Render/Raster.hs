@@ -57,6 +57,7 @@ import           Foreign.Ptr              (Ptr, plusPtr)
 import           Foreign.Storable         (pokeByteOff)
 
 import           AFRP.Geometry.Point      (Point2 (..))
+import           AFrobRobotSim.FlatArray  (finite)
 
 -- | An RGB colour, one byte per channel.
 data Colour = Colour !Word8 !Word8 !Word8
@@ -136,10 +137,6 @@ fillRectI c@(Canvas _ _ h) col i0 j0 i1 j1 =
 -- Keep a coordinate within a range where converting to Int is safe.
 clampD :: Double -> Double
 clampD = max (-1e7) . min 1e7
-
-finite :: Double -> Bool
-finite v = v - v == 0   -- false for NaN and the infinities
-{-# INLINE finite #-}
 
 -- The pixels whose centres lie in [a, b), or the one containing the
 -- midpoint if there are none.
