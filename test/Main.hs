@@ -60,6 +60,7 @@ import qualified AFrobRobotSim.SimulatorSpec
 import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified AFrobRobotSim.WorldSpec
+import qualified AFrobRobotSim.WorkersSpec
 import qualified NetworksSpec
 import qualified SwarmSpec
 import qualified Ported.BouncingBallSpec
@@ -124,6 +125,7 @@ specs = hspec $ do
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec
   describe "AFrobRobotSim.World" AFrobRobotSim.WorldSpec.spec
+  describe "AFrobRobotSim.Workers" AFrobRobotSim.WorkersSpec.spec
   describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec
   describe "AFrobRobotSim.Run"       AFrobRobotSim.RunSpec.spec
   describe "AFrobRobotSim.Sweep"     AFrobRobotSim.SweepSpec.spec

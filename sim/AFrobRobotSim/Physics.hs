@@ -185,28 +185,37 @@ planMove dt arena r c =
   in Plan mv (boxesFirstContact arena (rPos r) (mvDisp mv))
 
 -- | Move every robot by one step, in order, as planned, each against the
--- other robots' current positions ('stepRobotsNear' with the plans made).
+-- other robots' current positions ('stepRobotsNear' with the plans made),
+-- given the 'robotIndex' of the robots before their move (the plans'
+-- robots, in order). The plans are read in order, one at a time: a plan
+-- is not needed before the robots before it have moved (the simulator's
+-- parallel step computes later plans meanwhile). An error if there are
+-- more plans than indexed robots.
 stepRobotsPlanned :: PointIndex -> [(Robot, Plan)] -> [Robot]
 stepRobotsPlanned near plans = runST $ do
-  -- the current centres: the old ones, replaced as the robots move
+  -- the current centres: the old ones (as indexed, the robots' positions),
+  -- replaced as the robots move
   xs <- newDblArr (max 1 n)
   ys <- newDblArr (max 1 n)
-  let start !_ []                                 = pure ()
-      start !i ((Robot { rPos = Point2 x y }, _) : rest) = writeD xs i x >> writeD ys i y >> start (i + 1) rest
-  start 0 plans
+  let start !i | i >= n    = pure ()
+               | otherwise = writeD xs i (pointX near i) >> writeD ys i (pointY near i) >> start (i + 1)
+  start 0
   let go !_ !_ [] = pure []
-      go !i !drift ((r, Plan mv boxHit) : rest) = do
-        contact <- firstContactST near xs ys i drift (rPos r) (mvDisp mv) boxHit
-        let !r' = finishMove mv r contact
-            Point2 x1 y1 = rPos r'
-            !moved = norm (rPos r' .-. rPos r)
-        writeD xs i x1
-        writeD ys i y1
-        rs <- go (i + 1) (max drift moved) rest
-        pure (r' : rs)
+      go !i !drift ((r, Plan mv boxHit) : rest)
+        | i >= n = error ("AFrobRobotSim.Physics.stepRobotsPlanned: more plans than the "
+                          ++ show n ++ " robots indexed")
+        | otherwise = do
+          contact <- firstContactST near xs ys i drift (rPos r) (mvDisp mv) boxHit
+          let !r' = finishMove mv r contact
+              Point2 x1 y1 = rPos r'
+              !moved = norm (rPos r' .-. rPos r)
+          writeD xs i x1
+          writeD ys i y1
+          rs <- go (i + 1) (max drift moved) rest
+          pure (r' : rs)
   go (0 :: Int) 0 plans
   where
-    n = length plans
+    n = pointIndexCount near
 
 -- | The robots' centres on a grid over the arena ('pointsOver'): point
 -- @i@ of the index is the centre of the @i@-th robot of the list.

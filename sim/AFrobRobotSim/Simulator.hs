@@ -24,18 +24,21 @@
 -- its move that depends on nothing but the robot, its command and the
 -- arena ('AFrobRobotSim.Physics.planMove': its motion and its first
 -- contact with a box). The robots are cut into consecutive chunks (about
--- four per capability, at least 8 robots each) and
--- "AFrobRobotSim.Workers" evaluates them: the stepping thread takes them
--- in template order while a fixed pool of worker threads takes them from
--- the last. Each chunk is a pure value, and the step's lists are the
--- chunks' lists concatenated in order, so the snapshots are the same, bit
--- for bit, on any number of cores; a failing controller fails the step
--- with the error of the first failing robot in template order, as on one
--- core. The sensors' indexes are built before the chunks are handed out.
--- The robots then move against each other, and the balls, on the
--- stepping thread (a robot's move depends on the moves of those before
--- it). On one capability the steps are computed in order, by the
--- stepping thread alone.
+-- sixteen per capability, at least 16 robots each), evaluated by a fixed
+-- pool of worker threads from the first and by the stepping thread
+-- ("AFrobRobotSim.Workers"). The sensors' indexes are built before the
+-- chunks are handed out. The stepping thread moves the robots against
+-- each other in template order (a robot's move depends on the moves of
+-- those before it), reading each chunk as it reaches it: a chunk no
+-- worker has taken, it computes; while it would wait for one a worker is
+-- computing, it computes chunks from the last instead. So the moves are
+-- made while the workers compute the later chunks. Each chunk is a pure
+-- value, and the step's lists are the chunks' lists concatenated in
+-- order, so the snapshots are the same, bit for bit, on any number of
+-- cores; a failing controller fails the step with the error of the first
+-- failing robot in template order, as on one core. The balls move after
+-- the robots, on the stepping thread. On one capability the steps are
+-- computed in order, by the stepping thread alone.
 --
 -- A larger allocation area than the runtime's 1 MB matters: each minor
 -- collection copies the robots' live state, and on several cores every
@@ -295,29 +298,35 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 
 -- Every robot's controller step and the plan of its move, in template
 -- order, given a robot's step by its number and agent and the plan of a
--- robot's move under a command: all of them at once, when either list is
--- first needed. On several capabilities the robots are cut into chunks
--- computed in parallel (see the module's documentation), after @ready@
--- (what every robot's step shares); each chunk, in weak head normal form,
--- has computed every step in it.
+-- robot's move under a command. On one capability all of them at once,
+-- when either list is first needed. On several, the robots are cut into
+-- chunks computed in parallel (see the module's documentation), after
+-- @ready@ (what every robot's step shares): the workers are given the
+-- chunks (the last first) when either list is first needed, and a chunk
+-- is computed by whoever reaches it first, the reader of the lists (in
+-- order) or a worker; each chunk, in weak head normal form, has computed
+-- every step in it. So the reader, which moves the robots in order, moves
+-- those of a chunk while the workers compute later chunks.
 stepEvery :: () -> [Agent] -> [Robot] -> (Int -> Agent -> (SimbotOutput, FutureSF SimbotInput SimbotOutput))
           -> (Robot -> DriveCommand -> Plan)
           -> ([(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, Plan)])
 stepEvery ready agents robots stepOne planOne
   | caps <= 1 || n < 2 * minChunk = case stepRun 0 maxBound agents robots [] [] of Chunk ss ps -> (ss, ps)
-  | otherwise = ready `pseq` forceAll caps chunks `pseq` joined chunks
+  | otherwise = ready `pseq` joined shared
   where
     n    = length robots
     caps = capabilitiesNow agents   -- (not n: one capability needs no count)
-    size = max minChunk ((n + 4 * caps - 1) `div` (4 * caps))
-    chunks = cut 0 agents robots
+    size = max minChunk ((n + 16 * caps - 1) `div` (16 * caps))
+    -- the chunks as the workers share them with the reader of the lists
+    shared = readInOrder caps (cut 0 agents robots (drop 1 shared))
     -- Chunks of @size@ consecutive robots. Each chunk's lists end with the
-    -- next chunk's, so the chunks joined are the first one's lists: no
-    -- list is copied to cut them apart or to join them.
-    cut !i as rs
+    -- next chunk's (as shared), so the chunks joined are the first one's
+    -- lists: no list is copied to cut them apart or to join them.
+    cut !i as rs nexts
       | null as || null rs = []
-      | otherwise = let rest = cut (i + size) (drop size as) (drop size rs)
-                    in stepRun i size as rs (fst (joined rest)) (snd (joined rest)) : rest
+      | otherwise = let rest = cut (i + size) (drop size as) (drop size rs) (drop 1 nexts)
+                        next = joined nexts
+                    in stepRun i size as rs (fst next) (snd next) : rest
     joined (c : _) = (chunkSteps c, chunkPlans c)
     joined []      = ([], [])
     -- Strict loops: a step needs every element, and lazy zips would build
@@ -335,10 +344,11 @@ stepEvery ready agents robots stepOne planOne
 data Chunk = Chunk { chunkSteps :: [(SimbotOutput, FutureSF SimbotInput SimbotOutput)]
                    , chunkPlans :: [(Robot, Plan)] }
 
--- The fewest robots whose steps are handed to a worker together: 8
--- (handing one over costs about as much as a robot's step).
+-- The fewest robots whose steps are handed to a worker together: 16
+-- (handing one over costs about as much as a robot's step; with the 100
+-- packed wanderers, 16 a chunk ran as fast as 13, faster than 8).
 minChunk :: Int
-minChunk = 8
+minChunk = 16
 
 -- | @blaming f v@ is @v@, with an exception that its evaluation raises
 -- turned into @f e@: 'Control.Exception.mapException', but leaving

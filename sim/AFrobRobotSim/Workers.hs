@@ -1,4 +1,4 @@
-{-# LANGUAGE ExistentialQuantification #-}
+{-# LANGUAGE ScopedTypeVariables #-}
 -- No full laziness: it would float the reading of the number of
 -- capabilities out of 'capabilitiesNow' as a constant, read only once.
 {-# OPTIONS_GHC -fno-full-laziness #-}
@@ -7,82 +7,153 @@
 -- Description : A fixed pool of worker threads that evaluate pure values
 --               in parallel, for the simulator's step.
 --
--- 'forceAll' evaluates a list of values (to weak head normal form) in
--- order, and, on several capabilities (@+RTS -N@ in a program built
--- @-threaded@), lets worker threads evaluate the later ones meanwhile.
+-- 'readInOrder' gives a list of values back unchanged, for a reader that
+-- forces them in order; on several capabilities (@+RTS -N@ in a program
+-- built @-threaded@), worker threads evaluate them meanwhile, and the
+-- reader, while it waits for one, evaluates others.
 --
 -- Why threads and not sparks ('GHC.Conc.par'): an idle capability sleeps
 -- until the running thread next enters the scheduler, which with a large
 -- allocation area can be a whole timer tick (20 ms) away, so most sparks
 -- of a step of a few milliseconds fizzle. A worker blocked on an 'MVar'
--- is woken as soon as a value is handed to it.
+-- is woken as soon as work is handed to it.
 --
 -- The pool is made the first time it is needed: one worker per capability
 -- but the caller's, pinned to it ('forkOn'), more when the program enables
--- more capabilities. Each worker takes values from one queue and
--- evaluates them, ignoring what they raise: the value stays a thunk that
--- raises the same exception when 'forceAll' (or anyone) forces it. A
--- value that the calling thread reaches while a worker is evaluating it
--- is waited for (it is a black hole, when the module that builds it is
+-- more capabilities. A worker evaluates values ignoring what they raise:
+-- the value stays a thunk that raises the same exception when the reader
+-- forces it. A value that the reader forces while a worker is evaluating
+-- it is waited for (it is a black hole, when the module that builds it is
 -- compiled with @-feager-blackholing@, as "AFrobRobotSim.Simulator" is),
--- not evaluated twice; one it reaches first is evaluated by the caller,
--- and the worker then finds it evaluated. So the result, and which
--- exception is raised first, are those of evaluating the list in order
--- on one thread.
+-- not evaluated twice. So the values, and which exception the reader
+-- meets first, are those of evaluating the list in order on one thread.
 module AFrobRobotSim.Workers
-  ( forceAll
+  ( readInOrder
   , capabilitiesNow
   ) where
 
-import           Control.Concurrent      (forkOn, myThreadId, threadCapability)
+import           Control.Concurrent      (ThreadId, forkOn, myThreadId, threadCapability)
 import           Control.Concurrent.Chan (Chan, newChan, readChan, writeChan)
-import           Control.Concurrent.MVar (MVar, modifyMVar_, newMVar)
-import           Control.Exception       (SomeException, evaluate, try)
-import           Control.Monad           (forM_, forever, void)
+import           Control.Concurrent.MVar (MVar, modifyMVar, newMVar)
+import           Control.Exception       (SomeAsyncException, SomeException, evaluate, fromException,
+                                          throwIO, try)
+import           Control.Monad           (void)
+import           Data.IORef              (atomicModifyIORef', atomicWriteIORef, newIORef,
+                                          readIORef)
+import           GHC.Arr                 (Array, listArray, (!))
 import           GHC.Conc                (getNumCapabilities)
 import           GHC.IO                  (unsafeDupablePerformIO, unsafePerformIO)
 
--- A value to evaluate, whatever its type.
-data Job = forall a. Job a
+-- The workers started so far: the @i@-th (from 1) is pinned to
+-- capability @i@, or to capability 0 if @i@ is the capability of the
+-- thread that hands them work.
+newtype Pool = Pool (MVar [Worker])
 
--- The queue of values and how many workers have been started.
-data Pool = Pool (Chan Job) (MVar Int)
+-- A worker thread and its queue of work (@Nothing@: stop).
+data Worker = Worker ThreadId (Chan (Maybe (IO ())))
 
 thePool :: Pool
-thePool = unsafePerformIO (Pool <$> newChan <*> newMVar 0)
+thePool = unsafePerformIO (Pool <$> newMVar [])
 {-# NOINLINE thePool #-}
 
--- | @forceAll caps xs@ evaluates every element of @xs@ to weak head normal
--- form, in order, and is then @()@; with @caps > 1@ it first hands every
--- element but the first, the last first, to the pool's workers (started
--- as needed, @caps - 1@ of them), so that the caller and the workers
--- meet in the middle. An exception is that of the first element that
--- raises one, as when evaluating in order on one thread.
-forceAll :: Int -> [a] -> ()
-forceAll caps xs
-  | caps <= 1 = inOrder xs
-  | otherwise = handOut caps (reverse (drop 1 xs)) `seq` inOrder xs
+-- | @readInOrder caps xs@ is @xs@, element for element, for a reader that
+-- forces the elements in order (each to weak head normal form).
+--
+-- With @caps > 1@, when the list itself is first forced, the pool's
+-- workers (started as needed, @caps - 1@ of them) are set to evaluate
+-- every element but the first, from the front. When the reader forces an
+-- element:
+--
+-- * one no worker has taken, it evaluates itself;
+-- * one a worker has finished, it has at once;
+-- * one a worker is still evaluating, it does not wait for while any
+--   element is left that no one has taken: it evaluates the last of
+--   those (ignoring what it raises, which stays with the element), then
+--   looks again; it waits when none is left.
+--
+-- So the reader can do work of its own between two elements (the
+-- simulator moves the robots of one chunk before it reads the next), and
+-- the workers are not idle meanwhile. With one capability, or fewer than
+-- two elements, the list is @xs@ itself.
+readInOrder :: forall a. Int -> [a] -> [a]
+readInOrder caps xs
+  | caps <= 1 = xs
+  | otherwise = case xs of
+      x0 : rest@(_ : _) -> unsafePerformIO (start x0 rest)
+      _                 -> xs
   where
-    inOrder = foldr seq ()
+    start x0 rest = do
+      let m = 1 + length rest
+          items = listArray (1, m - 1) rest :: Array Int a
+      -- elements [front, back) are those no one has taken
+      claims <- newIORef (1 :: Int, m)
+      dones <- listArray (1, m - 1) <$> mapM (const (newIORef False)) rest
+      let takeFront = atomicModifyIORef' claims $ \c@(f, b) ->
+            if f < b then ((f + 1, b), Just f) else (c, Nothing)
+          -- element k, if it is the front one
+          takeAt k = atomicModifyIORef' claims $ \c@(f, b) ->
+            if f == k && f < b then ((f + 1, b), True) else (c, False)
+          takeBack = atomicModifyIORef' claims $ \c@(f, b) ->
+            if f < b then ((f, b - 1), Just (b - 1)) else (c, Nothing)
+          work = takeFront >>= \t -> case t of
+            Just k  -> do
+              _ <- try (void (evaluate (items ! k))) :: IO (Either SomeException ())
+              atomicWriteIORef (dones ! k) True
+              work
+            Nothing -> pure ()
+          -- the reader, before it forces element k
+          before k = do
+            (f, b) <- readIORef claims
+            done <- readIORef (dones ! k)
+            if done || k >= b then pure ()        -- finished, or taken by the reader from the back
+              else if k >= f then takeAt k >>= \t -> if t then pure () else before k
+                                                  -- no one's yet: the reader's (k is the front)
+              else takeBack >>= \t -> case t of   -- a worker's, unfinished
+                Just j  -> evaluateKeeping (items ! j) >> before k
+                Nothing -> pure ()                -- nothing left: wait for it
+          view k = unsafePerformIO (before k) `seq` (items ! k)
+      queues <- workersFor caps
+      mapM_ (`writeChan` Just work) queues
+      pure (x0 : map view [1 .. m - 1])
 
--- Hand values to the workers (once per call: not duplicated).
-handOut :: Int -> [a] -> ()
-handOut caps xs = unsafePerformIO $ do
-  let Pool q started = thePool
-  modifyMVar_ started $ \k -> do
-    -- pinned to the capabilities other than the caller's (the caller, the
-    -- main thread usually, stays where it is)
+-- Evaluate a value, leaving what it raises with it; an asynchronous
+-- exception (Ctrl-C, a timeout) is the caller's and goes on.
+evaluateKeeping :: a -> IO ()
+evaluateKeeping x = try (void (evaluate x)) >>= \r -> case r of
+  Left (e :: SomeException) | Just (_ :: SomeAsyncException) <- fromException e -> throwIO e
+  _ -> pure ()
+
+-- The queues of @caps - 1@ workers, one on each capability below @caps@
+-- but the caller's: the workers of the pool for capabilities 1 to
+-- @caps - 1@, started as needed (the one for the caller's capability is on
+-- capability 0). A worker that the runtime has moved to another
+-- capability (when the program lowered its number of capabilities) is
+-- stopped and started again where it belongs.
+workersFor :: Int -> IO [Chan (Maybe (IO ()))]
+workersFor caps = do
+  let Pool started = thePool
+  modifyMVar started $ \ws -> do
     (mine, _) <- threadCapability =<< myThreadId
-    forM_ [k + 1 .. caps - 1] $ \i -> forkOn (if i == mine then 0 else i) (worker q)
-    pure (max k (caps - 1))
-  mapM_ (writeChan q . Job) xs
-{-# NOINLINE handOut #-}
+    let place i = if i == mine then 0 else i
+        start i = do q <- newChan
+                     t <- forkOn (place i) (worker q)
+                     pure (Worker t q)
+        keep i w@(Worker t q) = do
+          (c, _) <- threadCapability t
+          if c == place i then pure w else writeChan q Nothing >> start i
+    used <- mapM (\i -> case drop (i - 1) ws of
+                           w : _ -> keep i w
+                           []    -> start i)
+                 [1 .. caps - 1]
+    -- (the workers of capabilities above @caps@ stay, idle)
+    pure (used ++ drop (caps - 1) ws, [ q | Worker _ q <- used ])
 
-worker :: Chan Job -> IO ()
-worker q = forever $ do
-  Job x <- readChan q
-  -- what the value raises, it keeps, for whoever forces it next
-  (try (void (evaluate x)) :: IO (Either SomeException ())) >> pure ()
+-- Run the work handed over until told to stop.
+worker :: Chan (Maybe (IO ())) -> IO ()
+worker q = readChan q >>= \w -> case w of
+  Nothing -> pure ()
+  -- (the work keeps what its values raise; anything else is dropped)
+  Just act -> (try act :: IO (Either SomeException ())) >> worker q
 
 -- | The number of capabilities now, read each time (a program may change
 -- it while it runs): the argument, any value, makes it a function, so

@@ -216,7 +216,7 @@ spec = do
       map robotPos (wsRobots (last one)) `shouldNotBe` map robotPos (wsRobots (head one))
 
   describe "every core" $ do
-    -- 60 robots (eight chunks on two capabilities) packed in the 10 m
+    -- 60 robots (four chunks on two capabilities) packed in the 10 m
     -- world with balls, noisy odometry and keys, every controller reading
     -- its range finders, tracker and bumper and printing messages
     let crowd = [ (if even k then OTSimbotA else OTSimbotB) (k `div` 2 + 1)
