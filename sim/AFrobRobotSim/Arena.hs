@@ -16,6 +16,7 @@ module AFrobRobotSim.Arena
   , arenaIndex
   , arenaClearance
   , pointsOver
+  , pointsOverOn
   ) where
 
 import           AFrobRobotSim.Clearance
@@ -76,8 +77,14 @@ boundaryBoxes (Bounds x0 y0 x1 y1) =
 
 -- | Points on a grid over the arena (its boxes' bounding box).
 pointsOver :: Arena -> [(Double, Double)] -> PointIndex
-pointsOver arena pts = case arenaExtent arena of
-  (x0, y0, x1, y1) -> pointIndex x0 y0 x1 y1 pts
+pointsOver = pointsOverOn fst snd
+
+-- | @pointsOverOn px py@: 'pointsOver' of the points @(px e, py e)@ of the
+-- elements @e@ of a list ('pointIndexOn').
+pointsOverOn :: (e -> Double) -> (e -> Double) -> Arena -> [e] -> PointIndex
+pointsOverOn px py arena es = case arenaExtent arena of
+  (x0, y0, x1, y1) -> pointIndexOn px py x0 y0 x1 y1 es
+{-# INLINE pointsOverOn #-}
 
 boxesExtent :: [Box] -> (Double, Double, Double, Double)
 boxesExtent [] = (0, 0, 0, 0)

@@ -99,7 +99,7 @@ stepBalls dt arena robots balls =
 -- | The balls' centres on a grid over the arena ('pointsOver'): point @i@
 -- of the index is the centre of the @i@-th ball of the list.
 ballIndex :: Arena -> [Ball] -> PointIndex
-ballIndex arena bs = pointsOver arena [ (x, y) | Ball (Point2 x y) _ <- bs ]
+ballIndex = pointsOverOn (\(Ball (Point2 x _) _) -> x) (\(Ball (Point2 _ y) _) -> y)
 
 stepBall :: DTime -> Arena -> Array Int Robot -> PointIndex -> Ball -> Ball
 stepBall dt arena robots near b0 =

@@ -220,7 +220,7 @@ stepRobotsPlanned near plans = runST $ do
 -- | The robots' centres on a grid over the arena ('pointsOver'): point
 -- @i@ of the index is the centre of the @i@-th robot of the list.
 robotIndex :: Arena -> [Robot] -> PointIndex
-robotIndex arena rs = pointsOver arena [ (x, y) | Robot { rPos = Point2 x y } <- rs ]
+robotIndex = pointsOverOn (\r -> let Point2 x _ = rPos r in x) (\r -> let Point2 _ y = rPos r in y)
 
 -- | The motion a robot attempts in one step, before collisions.
 data Motion = Motion

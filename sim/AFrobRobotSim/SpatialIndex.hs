@@ -42,6 +42,7 @@ module AFrobRobotSim.SpatialIndex
     -- * Points
   , PointIndex
   , pointIndex
+  , pointIndexOn
   , pointIndexCount
   , pointX
   , pointY
@@ -234,7 +235,13 @@ data PointIndex = PointIndex
 -- | Index the points @(x, y)@ of a list on a grid over the given domain
 -- (@x0 y0 x1 y1@; points outside it go to the border cells).
 pointIndex :: Double -> Double -> Double -> Double -> [(Double, Double)] -> PointIndex
-pointIndex dx0 dy0 dx1 dy1 pts = runST $ do
+pointIndex = pointIndexOn fst snd
+
+-- | @pointIndexOn px py@: 'pointIndex' of the points @(px e, py e)@ of the
+-- elements @e@ of a list, made without the list of pairs (the simulator
+-- indexes its robots and balls this way at every step).
+pointIndexOn :: (e -> Double) -> (e -> Double) -> Double -> Double -> Double -> Double -> [e] -> PointIndex
+pointIndexOn px py dx0 dy0 dx1 dy1 pts = runST $ do
   let Grid gx gy cs nx ny = grid
       cellAt x y = cellOf gy cs ny y * nx + cellOf gx cs nx x
   xs <- newDblArr (max 1 n)
@@ -243,7 +250,9 @@ pointIndex dx0 dy0 dx1 dy1 pts = runST $ do
   -- One pass over the list: the coordinates and each point's cell (-1 for
   -- a point that is not finite); the points that are not finite, in order.
   let scan !_ [] wild = pure (reverse wild)
-      scan !i ((x, y) : rest) wild = do
+      scan !i (e : rest) wild = do
+        let !x = px e
+            !y = py e
         writeD xs i x
         writeD ys i y
         if finite x && finite y
@@ -263,6 +272,7 @@ pointIndex dx0 dy0 dx1 dy1 pts = runST $ do
   where
     n    = length pts
     grid = gridFor dx0 dy0 dx1 dy1 n
+{-# INLINE pointIndexOn #-}
 
 -- | How many points are indexed.
 pointIndexCount :: PointIndex -> Int
