@@ -106,8 +106,9 @@ readInOrder caps xs
             (f, b) <- readIORef claims
             done <- readIORef (dones ! k)
             if done || k >= b then pure ()        -- finished, or taken by the reader from the back
-              else if k >= f then takeAt k >>= \t -> if t then pure () else before k
+              else if k == f then takeAt k >>= \t -> if t then pure () else before k
                                                   -- no one's yet: the reader's (k is the front)
+              else if k > f then pure ()          -- (read out of order: just force it)
               else takeBack >>= \t -> case t of   -- a worker's, unfinished
                 Just j  -> evaluateKeeping (items ! j) >> before k
                 Nothing -> pure ()                -- nothing left: wait for it

@@ -64,6 +64,15 @@ spec = describe "readInOrder" $ do
     first <- withCaps 2 (try (readAll [] (readInOrder 2 (xs 6))))
     either (\(ErrorCall m) -> m) show first `shouldBe` "element 3"
 
+  it "gives the same values to a reader that does not read in order" $ do
+    let xs s = [ work (s + k) 100000 | k <- [0 .. 11 :: Int] ]
+    got <- withCaps 2 $ do
+      let ys = readInOrder 2 (xs 9)
+      _ <- evaluate (ys !! 6)
+      _ <- evaluate (ys !! 2)
+      mapM evaluate (reverse ys)
+    got `shouldBe` reverse (xs 9)
+
   it "with one capability, or fewer than two elements, leaves the list as it is" $ do
     let xs = [ work k 10 | k <- [1 .. 5] ]
     readInOrder 1 xs `shouldBe` xs
