@@ -25,9 +25,11 @@
 -- arena ('AFrobRobotSim.Physics.planMove': its motion and its first
 -- contact with a box). The robots are cut into consecutive chunks (about
 -- sixteen per capability, at least 16 robots each), evaluated by a fixed
--- pool of worker threads from the first and by the stepping thread
--- ("AFrobRobotSim.Workers"). The sensors' indexes are built before the
--- chunks are handed out. The stepping thread moves the robots against
+-- pool of worker threads from the first, and by the stepping thread
+-- ("AFrobRobotSim.Workers"). The sensors' indexes are built and the
+-- chunks handed out before the snapshot before the step is given to its
+-- reader, so that the workers compute while the snapshot is read (by a
+-- log writer, say). The stepping thread moves the robots against
 -- each other in template order (a robot's move depends on the moves of
 -- those before it), reading each chunk as it reaches it: a chunk no
 -- worker has taken, it computes; while it would wait for one a worker is
@@ -211,7 +213,10 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
     balls0  = [ Ball (otPos o) zeroVector | o@OTBall {} <- world ]
     engine0 = Engine 0 robots0 balls0 agents0 (sortOn fst (simKeys cfg)) (fromIntegral (simSeed cfg))
 
-    run en = snapshot : run en'
+    -- (on several capabilities, the workers are given the step's chunks
+    -- before the snapshot is: they compute while the snapshot's reader,
+    -- a log writer say, reads it)
+    run en = started `seq` (snapshot : run en')
       where
         n      = enStep en
         t      = fromIntegral n * dt
@@ -223,7 +228,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         -- when any is needed (a failing controller fails the step: its
         -- messages and the next state, never the robots' positions now),
         -- with each robot and the plan of its move.
-        (stepped, plans) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
+        (started, stepped, plans) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
           (\i a -> stepAgent t a (senseRobot ctx i (agOdo a) key)) (planMove dt arena)
         snapshot = WorldState
           { wsTime     = t
@@ -298,22 +303,27 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 
 -- Every robot's controller step and the plan of its move, in template
 -- order, given a robot's step by its number and agent and the plan of a
--- robot's move under a command. On one capability all of them at once,
--- when either list is first needed. On several, the robots are cut into
--- chunks computed in parallel (see the module's documentation), after
--- @ready@ (what every robot's step shares): the workers are given the
--- chunks (the last first) when either list is first needed, and a chunk
--- is computed by whoever reaches it first, the reader of the lists (in
--- order) or a worker; each chunk, in weak head normal form, has computed
--- every step in it. So the reader, which moves the robots in order, moves
--- those of a chunk while the workers compute later chunks.
+-- robot's move under a command; and first @()@, which starts the work.
+-- On one capability all of them at once, when either list is first
+-- needed, and the start does nothing. On several, the robots are cut into
+-- chunks computed in parallel (see the module's documentation): the start
+-- computes @ready@ (what every robot's step shares) and gives the workers
+-- the chunks, from the first; a chunk is computed by whoever reaches it
+-- first, the reader of the lists (in order) or a worker; each chunk, in
+-- weak head normal form, has computed every step in it. So the reader,
+-- which moves the robots in order, moves those of a chunk while the
+-- workers compute later chunks.
 stepEvery :: () -> [Agent] -> [Robot] -> (Int -> Agent -> (SimbotOutput, FutureSF SimbotInput SimbotOutput))
           -> (Robot -> DriveCommand -> Plan)
-          -> ([(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, Plan)])
+          -> ((), [(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, Plan)])
 stepEvery ready agents robots stepOne planOne
-  | caps <= 1 || n < 2 * minChunk = case stepRun 0 maxBound agents robots [] [] of Chunk ss ps -> (ss, ps)
-  | otherwise = ready `pseq` joined shared
+  | caps <= 1 || n < 2 * minChunk =
+      let (ss, ps) = case stepRun 0 maxBound agents robots [] [] of Chunk ss' ps' -> (ss', ps')
+      in ((), ss, ps)
+  | otherwise = (started, started `pseq` fst (joined shared), started `pseq` snd (joined shared))
   where
+    -- the workers given the chunks (once @ready@)
+    started = ready `pseq` shared `pseq` ()
     n    = length robots
     caps = capabilitiesNow agents   -- (not n: one capability needs no count)
     size = max minChunk ((n + 16 * caps - 1) `div` (16 * caps))

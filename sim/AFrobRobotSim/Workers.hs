@@ -61,8 +61,7 @@ thePool = unsafePerformIO (Pool <$> newMVar [])
 --
 -- With @caps > 1@, when the list itself is first forced, the pool's
 -- workers (started as needed, @caps - 1@ of them) are set to evaluate
--- every element but the first, from the front. When the reader forces an
--- element:
+-- the elements from the front. When the reader forces an element:
 --
 -- * one no worker has taken, it evaluates itself;
 -- * one a worker has finished, it has at once;
@@ -72,22 +71,24 @@ thePool = unsafePerformIO (Pool <$> newMVar [])
 --   looks again; it waits when none is left.
 --
 -- So the reader can do work of its own between two elements (the
--- simulator moves the robots of one chunk before it reads the next), and
--- the workers are not idle meanwhile. With one capability, or fewer than
--- two elements, the list is @xs@ itself.
+-- simulator moves the robots of one chunk before it reads the next), or
+-- before the first (the simulator hands a step's chunks out before its
+-- reader has read the snapshot before it), and the workers are not idle
+-- meanwhile. With one capability, or fewer than two elements, the list
+-- is @xs@ itself.
 readInOrder :: forall a. Int -> [a] -> [a]
 readInOrder caps xs
   | caps <= 1 = xs
   | otherwise = case xs of
-      x0 : rest@(_ : _) -> unsafePerformIO (start x0 rest)
-      _                 -> xs
+      _ : _ : _ -> unsafePerformIO start
+      _         -> xs
   where
-    start x0 rest = do
-      let m = 1 + length rest
-          items = listArray (1, m - 1) rest :: Array Int a
+    start = do
+      let m = length xs
+          items = listArray (0, m - 1) xs :: Array Int a
       -- elements [front, back) are those no one has taken
-      claims <- newIORef (1 :: Int, m)
-      dones <- listArray (1, m - 1) <$> mapM (const (newIORef False)) rest
+      claims <- newIORef (0 :: Int, m)
+      dones <- listArray (0, m - 1) <$> mapM (const (newIORef False)) xs
       let takeFront = atomicModifyIORef' claims $ \c@(f, b) ->
             if f < b then ((f + 1, b), Just f) else (c, Nothing)
           -- element k, if it is the front one
@@ -115,7 +116,7 @@ readInOrder caps xs
           view k = unsafePerformIO (before k) `seq` (items ! k)
       queues <- workersFor caps
       mapM_ (`writeChan` Just work) queues
-      pure (x0 : map view [1 .. m - 1])
+      pure (map view [0 .. m - 1])
 
 -- Evaluate a value, leaving what it raises with it; an asynchronous
 -- exception (Ctrl-C, a timeout) is the caller's and goes on.
