@@ -43,6 +43,7 @@
 -- testing everything.
 module AFrobRobotSim.Sensors
   ( senseRobot
+  , senseRobotApart
   , rangeReading
   , rayDirection
   , rangeFinderMax
@@ -123,19 +124,29 @@ indexes arena rs bs = Indexes
 -- | The input of one robot (by its index in the context's robot list),
 -- given its odometry reading and the key pressed now.
 senseRobot :: SenseContext -> Int -> (Position2, Heading) -> Maybe Char -> SimbotInput
-senseRobot (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = SimbotInput
-  { siBattery  = batteryStatusOf (rCharge me)
-  , siStuck    = rStuck me
-  , siPosition = odoPos
-  , siHeading  = odoHead
-  , siRange    = range
-  , siMaxRange = rangeFinderMax
-  , siRobots   = inRangeSorted tracked others
-  , siBalls    = inRangeSorted (\d _ bx by -> (angleTo bx by, d))
-                               (gatherNear (ixBallGrid ix) (-1) px py)
-  , siKey      = key
-  }
+senseRobot ctx i odo key = fst (senseRobotApart ctx i odo key)
+
+-- | 'senseRobot', and a lower bound on the distance from the robot's
+-- centre to every other robot's centre (as the context has them): the
+-- distance to the nearest one within 'gatherRange', or 'gatherRange' if
+-- none is that near. Both made from one gathering of the robots near it
+-- ('AFrobRobotSim.Physics.planMoveApart' takes the bound).
+senseRobotApart :: SenseContext -> Int -> (Position2, Heading) -> Maybe Char -> (SimbotInput, Double)
+senseRobotApart (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = case nearestOf others of
+  !apart -> (input, apart)
   where
+    input = SimbotInput
+      { siBattery  = batteryStatusOf (rCharge me)
+      , siStuck    = rStuck me
+      , siPosition = odoPos
+      , siHeading  = odoHead
+      , siRange    = range
+      , siMaxRange = rangeFinderMax
+      , siRobots   = inRangeSorted tracked others
+      , siBalls    = inRangeSorted (\d _ bx by -> (angleTo bx by, d))
+                                   (gatherNear (ixBallGrid ix) (-1) px py)
+      , siKey      = key
+      }
     me | i >= 0 && i < ixNRobots ix = robotAt i
        | otherwise                  = error ("AFrobRobotSim.Sensors.senseRobot: no robot number " ++ show i)
     robotAt j = unsafeAt (ixRobots ix) j
@@ -243,6 +254,19 @@ gatherNear grid skip px py
 -- Points of an index near a robot: the index, how many, and for the k-th
 -- its number in the index and its squared distance from the robot.
 data Gathered = Gathered !PointIndex {-# UNPACK #-} !Int !IntArr !DblArr
+
+-- A lower bound on the distance to every point of the index but the one
+-- skipped: the distance to the nearest gathered point, or 'gatherRange'
+-- if there is none; 0 when more than 'bandsAbove' are gathered (in such
+-- a crowd a robot is seldom far from all the others, and the bound is
+-- not worth its pass over them).
+nearestOf :: Gathered -> Double
+nearestOf (Gathered _ k _ d2s)
+  | k > bandsAbove = 0
+  | otherwise      = go 0 (gatherRange * gatherRange)
+  where
+    go !p !m | p >= k    = sqrt m
+             | otherwise = go (p + 1) (min m (indexD d2s p))
 
 -- Some of the gathered points, by their positions in the arrays.
 data Some = None | Some {-# UNPACK #-} !Int !Some

@@ -229,7 +229,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         -- messages and the next state, never the robots' positions now),
         -- with each robot and the plan of its move.
         (started, stepped, plans) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
-          (\i a -> stepAgent t a (senseRobot ctx i (agOdo a) key)) (planMove dt arena)
+          (\i a -> case senseRobotApart ctx i (agOdo a) key of
+                     (input, apart) -> (stepAgent t a input, apart))
+          (planMoveApart dt arena)
         snapshot = WorldState
           { wsTime     = t
           , wsRobots   = robotStates (enRobots en) (enAgents en)
@@ -313,8 +315,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 -- weak head normal form, has computed every step in it. So the reader,
 -- which moves the robots in order, moves those of a chunk while the
 -- workers compute later chunks.
-stepEvery :: () -> [Agent] -> [Robot] -> (Int -> Agent -> (SimbotOutput, FutureSF SimbotInput SimbotOutput))
-          -> (Robot -> DriveCommand -> Plan)
+stepEvery :: () -> [Agent] -> [Robot]
+          -> (Int -> Agent -> ((SimbotOutput, FutureSF SimbotInput SimbotOutput), Double))
+          -> (Double -> Robot -> DriveCommand -> Plan)
           -> ((), [(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, Plan)])
 stepEvery ready agents robots stepOne planOne
   | caps <= 1 || n < 2 * minChunk =
@@ -345,8 +348,8 @@ stepEvery ready agents robots stepOne planOne
     stepRun !i !k as rs tailS tailP = case go i k as rs tailS tailP of (# ss, ds #) -> Chunk ss ds
     go !i !k (a : as) (r : rs) tailS tailP
       | k > (0 :: Int) = case stepOne i a of
-          st@(!o, !_) -> case go (i + 1) (k - 1) as rs tailS tailP of
-            (# ss, ps #) -> case planOne r (soDrive o) of
+          (st@(!o, !_), apart) -> case go (i + 1) (k - 1) as rs tailS tailP of
+            (# ss, ps #) -> case planOne apart r (soDrive o) of
               !pl -> (# st : ss, (r, pl) : ps #)
     go _ _ _ _ tailS tailP = (# tailS, tailP #)
 

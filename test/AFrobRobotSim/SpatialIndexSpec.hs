@@ -10,7 +10,7 @@
 module AFrobRobotSim.SpatialIndexSpec (spec) where
 
 import           Data.Functor.Identity (Identity (..))
-import           Data.List             (nub, sort)
+import           Data.List             (nub, sort, zip4)
 import           Test.Hspec
 import           Test.QuickCheck
 
@@ -182,4 +182,20 @@ spec = do
               cmds = zip rs cs
               near = scRobotIndex (SenseContext arena rs [])
           in stepRobotsNear near dt arena cmds === refStepRobots dt arena cmds
+
+  describe "planMoveApart" $
+    it "moves the robots as planMove does, given the sensors' bound on each one's distance to the others, or any lower one" $
+      property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
+        forAll (genRobots (halfSide w)) $ \rs -> forAll (vectorOf (length rs) genCommand) $ \cs ->
+          forAll (vectorOf (length rs) (elements [1, 1, 1, 0.999, 0.5, 0])) $ \shrink ->
+            let arena = arenaFor w
+                ctx   = SenseContext arena rs []
+                near  = scRobotIndex ctx
+                apart i = snd (senseRobotApart ctx i (origin, 0) Nothing)
+                plans = [ (r, planMoveApart dt arena (f * apart i) r c)
+                        | (i, r, c, f) <- zip4 [0 ..] rs cs shrink ]
+                -- (the bound is one: at most the distance to each other robot)
+                exact i = minimum ((1 / 0) : [ norm (rPos o .-. rPos (rs !! i)) | (j, o) <- zip [0 ..] rs, j /= i ])
+            in conjoin [ counterexample ("robot " ++ show i) (apart i <= exact i) | i <- [0 .. length rs - 1] ]
+               .&&. stepRobotsPlanned near plans === refStepRobots dt arena (zip rs cs)
 
