@@ -128,9 +128,12 @@ senseRobot ctx i odo key = fst (senseRobotApart ctx i odo key)
 
 -- | 'senseRobot', and a lower bound on the distance from the robot's
 -- centre to every other robot's centre (as the context has them): the
--- distance to the nearest one within 'gatherRange', or 'gatherRange' if
--- none is that near. Both made from one gathering of the robots near it
--- ('AFrobRobotSim.Physics.planMoveApart' takes the bound).
+-- distance to the nearest one within the tracker's range (a millimetre
+-- more: 4.001 m), or that range if none is that near; 0 when more than 16
+-- are that near (a crowd, where a bound is seldom of use). Both made
+-- from one gathering of the robots near it, done when the pair is
+-- evaluated ('AFrobRobotSim.Physics.planMoveApart' takes the bound); the
+-- rays and the tracker's lists are computed when read.
 senseRobotApart :: SenseContext -> Int -> (Position2, Heading) -> Maybe Char -> (SimbotInput, Double)
 senseRobotApart (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = case nearestOf others of
   !apart -> (input, apart)

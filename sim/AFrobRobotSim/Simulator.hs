@@ -251,8 +251,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
               en { enStep = n + 1, enRobots = robots', enBalls = balls', enAgents = agents'
                  , enKeys = keys', enRng = rng' }
 
-    -- (the input passed unmade: a controller that never reads it makes
-    -- none of its record and closures, about 660 bytes a robot-step)
+    -- (the input is made with the bound on the robot's distance to the
+    -- others that its move's plan takes, from one gathering of the robots
+    -- near it; the rays and the tracker's lists are computed when read)
     stepAgent t a input = blaming (blame (agProps a) t) (stepController a input)
     stepController a input =
       case (case a of
@@ -304,8 +305,10 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         exact _ _ _ = []
 
 -- Every robot's controller step and the plan of its move, in template
--- order, given a robot's step by its number and agent and the plan of a
--- robot's move under a command; and first @()@, which starts the work.
+-- order, given a robot's step by its number and agent (with a lower bound
+-- on its distance to the other robots) and the plan of a robot's move
+-- under a command, given that bound; and first @()@, which starts the
+-- work.
 -- On one capability all of them at once, when either list is first
 -- needed, and the start does nothing. On several, the robots are cut into
 -- chunks computed in parallel (see the module's documentation): the start
