@@ -187,13 +187,13 @@ spec = do
     it "moves the robots as planMove does, given the sensors' bound on each one's distance to the others, or any lower one" $
       property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
         forAll (genRobots (halfSide w)) $ \rs -> forAll (vectorOf (length rs) genCommand) $ \cs ->
-          forAll (vectorOf (length rs) (elements [1, 1, 1, 0.999, 0.5, 0])) $ \shrink ->
+          forAll (vectorOf (length rs) (elements [1, 1, 1, 0.999, 0.5, 0])) $ \factors ->
             let arena = arenaFor w
                 ctx   = SenseContext arena rs []
                 near  = scRobotIndex ctx
                 apart i = snd (senseRobotApart ctx i (origin, 0) Nothing)
                 plans = [ (r, planMoveApart dt arena (f * apart i) r c)
-                        | (i, r, c, f) <- zip4 [0 ..] rs cs shrink ]
+                        | (i, r, c, f) <- zip4 [0 ..] rs cs factors ]
                 -- (the bound is one: at most the distance to each other robot)
                 exact i = minimum ((1 / 0) : [ norm (rPos o .-. rPos (rs !! i)) | (j, o) <- zip [0 ..] rs, j /= i ])
             in conjoin [ counterexample ("robot " ++ show i) (apart i <= exact i) | i <- [0 .. length rs - 1] ]
