@@ -5,8 +5,8 @@
 --               positions, tokens, and number and id literals.
 --
 -- What "AFrobRobotSim.WorldFile" needs below its grammar, each piece linear
--- in its input: the position of the first invalid UTF-8 byte and the
--- decoding of valid UTF-8; the tokens of a line with their columns; the
+-- in its input: the text of UTF-8 bytes, or the position of the first
+-- invalid byte; the tokens of a line with their columns; the
 -- literals (decimal numbers, correctly rounded and checked to be finite,
 -- and robot ids), each rejecting a token with what was expected instead;
 -- and a file's bytes read up to a limit, and the message when it cannot
@@ -14,9 +14,7 @@
 -- "AFrobRobotSim.WorldFile" for the format.
 module AFrobRobotSim.WorldFile.Lexical
   ( -- * UTF-8
-    utf8Error
-  , decodeUtf8
-  , utf8Text
+    utf8Text
     -- * Tokens
   , Tok (..)
   , tokenize
@@ -56,7 +54,7 @@ import           AFrobRobotSim.Console  (displayPath, quote)
 ------------------------------------------------------------------------------
 -- UTF-8
 
--- | The first invalid byte of a UTF-8 text, if any: its line, column (in
+-- The first invalid byte of a UTF-8 text, if any: its line, column (in
 -- characters) and value.
 utf8Error :: B.ByteString -> Maybe (Int, Int, Word8)
 utf8Error bs = go 0 1 1
@@ -98,7 +96,7 @@ utf8Text name bytes = case utf8Error bytes of
                           ++ (if b < 16 then "0" else "") ++ showHex b ")")
   Nothing        -> Right (decodeUtf8 bytes)
 
--- | Decode valid UTF-8 (as 'utf8Error' accepts it), lazily.
+-- Decode valid UTF-8 (as 'utf8Error' accepts it), lazily.
 decodeUtf8 :: B.ByteString -> String
 decodeUtf8 bs = go 0
   where
