@@ -219,11 +219,7 @@ stepRobotsPlanned near plans = runST $ do
         | i >= n = error ("AFrobRobotSim.Physics.stepRobotsPlanned: more plans than the "
                           ++ show n ++ " robots indexed")
         | otherwise = do
-          -- (far from every other robot: no robot to test, as the grid
-          -- query would find none that touches)
-          contact <- if apart > 2 * robotRadius + norm (mvDisp mv) + drift + 2 * querySlack
-                       then pure (if boxHit == 1 / 0 then Nothing else Just boxHit)
-                       else firstContactST near xs ys i drift (rPos r) (mvDisp mv) boxHit
+          contact <- firstContactST near xs ys i drift apart (rPos r) (mvDisp mv) boxHit
           let !r' = finishMove mv r contact
               Point2 x1 y1 = rPos r'
               !moved = norm (rPos r' .-. rPos r)
@@ -359,11 +355,17 @@ boxesFirstContact arena (Point2 px py) d@(Vector2 dx dy)
 -- Only the robots the grid finds near the path are tested: a robot if its
 -- centre is within twice the radius of the path, and a robot's current
 -- centre is at most @drift@ from the centre it was indexed with (the
--- furthest any robot has moved this step).
-firstContactST :: PointIndex -> MDblArr s -> MDblArr s -> Int -> Double
+-- furthest any robot has moved this step). None is tested when the
+-- robot's centre was at least @apart@ from every other's (its plan's
+-- bound) and that is more than twice the radius, the move, the drift and
+-- a margin: then no robot is near the path, and the grid would find none
+-- that touches.
+firstContactST :: PointIndex -> MDblArr s -> MDblArr s -> Int -> Double -> Double
                -> Position2 -> Vector2 Double -> Double -> ST s (Maybe Double)
-firstContactST near xs ys i drift p d@(Vector2 dx dy) boxHit
+firstContactST near xs ys i drift apart p d@(Vector2 dx dy) boxHit
   | d == zeroVector = pure Nothing
+  | apart > 2 * robotRadius + norm d + drift + 2 * querySlack =
+      pure (if boxHit == 1 / 0 then Nothing else Just boxHit)
   | otherwise = do
       let Point2 px py = p
           qx = px + dx

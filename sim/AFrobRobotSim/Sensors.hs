@@ -131,12 +131,12 @@ senseRobot ctx i odo key = fst (senseRobotApart ctx i odo key)
 -- distance to the nearest one within the tracker's range (a millimetre
 -- more: 4.001 m), or that range if none is that near; 0 when more than 16
 -- are that near (a crowd, where a bound is seldom of use). Both made
--- from one gathering of the robots near it, done when the pair is
--- evaluated ('AFrobRobotSim.Physics.planMoveApart' takes the bound); the
--- rays and the tracker's lists are computed when read.
+-- from one gathering of the robots near it, done when the bound, the
+-- tracker or a ray is first read
+-- ('AFrobRobotSim.Physics.planMoveApart' takes the bound); the rays and
+-- the tracker's lists are computed when read.
 senseRobotApart :: SenseContext -> Int -> (Position2, Heading) -> Maybe Char -> (SimbotInput, Double)
-senseRobotApart (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = case nearestOf others of
-  !apart -> (input, apart)
+senseRobotApart (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = (input, nearestOf others)
   where
     input = SimbotInput
       { siBattery  = batteryStatusOf (rCharge me)
@@ -371,8 +371,7 @@ sortedInRange n gjs gd2s = runST $ do
             in if d <= trackerRange then writeD ds c d >> writeI js c (indexI gjs p) >> fill (p + 1) (c + 1)
                                     else fill (p + 1) c
   k <- fill 0 0
-  (ds', js') <- sortKeys k ds js
-  Sorted k <$> freezeD ds' <*> freezeI js'
+  sortedFrom k ds js
 
 -- The gathered points within the tracker's range, their distances and
 -- numbers grouped by band ('bandOf'), each band in the gathered order:
@@ -443,10 +442,16 @@ sortedRun lo hi bds bjs = runST $ do
   let copy !i | i >= k    = pure ()
               | otherwise = writeD ds i (indexD bds (lo + i)) >> writeI js i (indexI bjs (lo + i)) >> copy (i + 1)
   copy 0
-  (ds', js') <- sortKeys k ds js
-  Sorted k <$> freezeD ds' <*> freezeI js'
+  sortedFrom k ds js
 
 data Sorted = Sorted !Int !DblArr !IntArr
+
+-- The first @k@ keys of two arrays, sorted ('sortKeys'), as a 'Sorted'.
+sortedFrom :: Int -> MDblArr s -> MIntArr s -> ST s Sorted
+sortedFrom k ds js = do
+  (ds', js') <- sortKeys k ds js
+  Sorted k <$> freezeD ds' <*> freezeI js'
+{-# INLINE sortedFrom #-}
 
 -- Sort the first @k@ keys (distance, index) of two arrays, by distance
 -- then index: runs of 8 by insertion, then merged bottom-up through a
