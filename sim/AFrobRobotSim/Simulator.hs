@@ -69,6 +69,7 @@ module AFrobRobotSim.Simulator
 
 import           Control.Exception       (Exception (..), SomeAsyncException, SomeException, catch,
                                           throwIO)
+import           GHC.Arr                 (Array, listArray, (!))
 import           GHC.IO                  (IO (..), unsafeDupablePerformIO)
 import           Data.Bits               (shiftR, xor)
 import           Data.List               (sortOn)
@@ -161,30 +162,27 @@ instance Exception ControllerError where
 simulate :: DTime -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
 simulate dt = simulateWith defaultSimConfig { simDt = dt }
 
--- Per-robot bookkeeping that is not physics: its controller (before its
--- first sample, or as it continues) and odometry. One record per robot
--- and step, with no box around the controller or the reading: it is part
--- of what the collector copies for every robot at every step.
+-- A robot's controller, before its first sample or as it continues. One
+-- record per robot and step, made where the controller is stepped (in the
+-- parallel chunks on several capabilities), with no box around the
+-- controller: it is part of what the collector copies for every robot at
+-- every step.
 data Agent
   = AgentNew { agProps :: !SimbotProperties
-             , agStart :: SF SimbotInput SimbotOutput
-             , agOdoPos :: !Position2
-             , agOdoHdg :: {-# UNPACK #-} !Heading }
+             , agStart :: SF SimbotInput SimbotOutput }
   | Agent    { agProps :: !SimbotProperties
-             , agFut   :: FutureSF SimbotInput SimbotOutput
-             , agOdoPos :: !Position2
-             , agOdoHdg :: {-# UNPACK #-} !Heading }
+             , agFut   :: FutureSF SimbotInput SimbotOutput }
 
--- What its odometry reads.
-agOdo :: Agent -> (Position2, Heading)
-agOdo a = (agOdoPos a, agOdoHdg a)
-{-# INLINE agOdo #-}
+-- What a robot's odometry reads, when it is noisy (exact odometry reads
+-- the robot's true pose, and is not kept apart).
+data Odometry = Odometry !Position2 {-# UNPACK #-} !Heading
 
 data Engine = Engine
   { enStep   :: !Int
   , enRobots :: [Robot]
   , enBalls  :: [Ball]
   , enAgents :: [Agent]
+  , enOdo    :: [Odometry]   -- ^ noisy odometry, in template order; [] when exact
   , enKeys   :: [(Time, Char)]
   , enRng    :: !Word64
   }
@@ -206,12 +204,12 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
     arena = arenaOf (simBounds cfg) world
     robots0 = [ mkRobot k (otRId o) (otPos o) (normalizeHeading (otHdng o)) 0 False 1
               | o <- world, Just k <- [robotKindOf o] ]
-    agents0 = [ AgentNew props (ctrl props) (rPos r) (rHeading r)
-              | r <- robots0
-              , let props = SimbotProperties (rKind r) (rId r)
-                    ctrl  = if rKind r == SimbotA then rcA else rcB ]
+    agents0 = [ AgentNew props ((if rKind r == SimbotA then rcA else rcB) props)
+              | r <- robots0, let props = SimbotProperties (rKind r) (rId r) ]
+    odo0    | noise == 0 = []
+            | otherwise  = [ Odometry (rPos r) (rHeading r) | r <- robots0 ]
     balls0  = [ Ball (otPos o) zeroVector | o@OTBall {} <- world ]
-    engine0 = Engine 0 robots0 balls0 agents0 (sortOn fst (simKeys cfg)) (fromIntegral (simSeed cfg))
+    engine0 = Engine 0 robots0 balls0 agents0 odo0 (sortOn fst (simKeys cfg)) (fromIntegral (simSeed cfg))
 
     -- (on several capabilities, the workers are given the step's chunks
     -- before the snapshot is: they compute while the snapshot's reader,
@@ -224,32 +222,39 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         (key, keys') = case enKeys en of
           (tk, c) : rest | tk <= t + dt * 1e-6 -> (Just c, rest)
           ks                                    -> (Nothing, ks)
+        -- noisy odometry, by robot number (only read when noisy)
+        odoArr = listArray (0, length (enOdo en) - 1) (enOdo en) :: Array Int Odometry
+        odometry i r
+          | noise == 0 = (rPos r, rHeading r)
+          | otherwise  = case odoArr ! i of Odometry p h -> (p, h)
         -- Every controller's step, in template order, all of them at once
         -- when any is needed (a failing controller fails the step: its
-        -- messages and the next state, never the robots' positions now),
-        -- with each robot and the plan of its move.
-        (started, stepped, plans) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
-          (\i a -> case senseRobotApart ctx i (agOdo a) key of
-                     (input, apart) -> (stepAgent t a input, apart))
+        -- messages and the next state, never the robots' positions now):
+        -- its output and continued controller, with each robot and the
+        -- plan of its move.
+        (started, outputs, agents', plans) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
+          (\i a r -> case senseRobotApart ctx i (odometry i r) key of
+                       (input, apart) -> (stepAgent t a input, apart))
           (planMoveApart dt arena)
         snapshot = WorldState
           { wsTime     = t
-          , wsRobots   = robotStates (enRobots en) (enAgents en)
+          , wsRobots   = robotStates (enRobots en) (enOdo en)
           , wsBalls    = map bPos (enBalls en)
           , wsMessages = [ printf "[%.2f] %s.%d: %s" t (rpType (agProps a)) (rpId (agProps a)) m
-                         | (a, (o, _)) <- zip (enAgents en) stepped, m <- soMessages o ]
+                         | (a, o) <- zip (enAgents en) outputs, m <- soMessages o ]
           }
         robots' = stepRobotsPlanned (scRobotIndex ctx) plans
         moved   = stepBalls dt arena robots' (enBalls en)
         balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
           Nothing -> moved
           Just ps -> [ Ball q zeroVector | q <- ps ]
-        (agents', rng') = nextAgents (enRng en) (enRobots en) robots' (enAgents en) stepped
+        (odo', rng') = nextOdometry (enRng en) (enRobots en) robots' (enOdo en)
         -- keys' is forced too: left lazy, it would hold the previous
         -- engine (and so the whole run) when no controller reads its input
-        en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq` keys' `seq`
+        en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq`
+              forceList odo' `seq` keys' `seq`
               en { enStep = n + 1, enRobots = robots', enBalls = balls', enAgents = agents'
-                 , enKeys = keys', enRng = rng' }
+                 , enOdo = odo', enKeys = keys', enRng = rng' }
 
     -- (the input is made with the bound on the robot's distance to the
     -- others that its move's plan takes, from one gathering of the robots
@@ -259,56 +264,52 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
       case (case a of
               AgentNew { agStart = sf } -> evalAtZero sf input
               Agent { agFut = fut }     -> evalAt fut dt input) of
-        res@(o, fut) -> fut `seq` finiteDrive (soDrive o) `seq` forceList (soMessages o) `seq` res
+        (o, fut) -> fut `seq` finiteDrive (soDrive o) `seq` forceList (soMessages o) `seq`
+                    (o, Agent (agProps a) fut)
 
     blame props t (e :: SomeException) = case fromException e of
       Just (ce :: ControllerError) -> ce
       Nothing                      -> ControllerError (rpType props) (rpId props) t e
 
     -- every robot's state, all at once when the list is first needed
-    robotStates (r : rs) (a : as) = let !rest = robotStates rs as
-                                        !st   = robotState r a
-                                    in st : rest
-    robotStates _ _               = []
-    robotState r a = RobotState
+    -- (with the noisy odometry's readings, or none when it is exact)
+    robotStates (r : rs) os = let (o, os') = case os of
+                                    Odometry p _ : more -> (p, more)
+                                    []                  -> (rPos r, [])
+                                  !rest = robotStates rs os'
+                                  !st   = robotState r o
+                              in st : rest
+    robotStates [] _        = []
+    robotState r o = RobotState
       { robotType = kindType (rKind r), robotId = rId r, robotPos = rPos r
       , robotHeading = rHeading r, robotSpeed = rSpeed r, robotStuck = rStuck r
       , robotBattery = batteryStatusOf (rCharge r), robotCharge = rCharge r
-      , robotOdometry = agOdoPos a }
+      , robotOdometry = o }
 
     noise = simOdometryNoise cfg
-    -- Every agent's next state: its stepped controller and its odometry
-    -- after the move. Exact odometry is the true pose; noisy odometry
-    -- integrates the true motion with a random relative error on each
-    -- step's distance and turn.
-    nextAgents rng olds news as stepped
-      | noise == 0 = (exact as news stepped, rng)
-      | otherwise  = go rng olds news as stepped []
+    -- Noisy odometry after the move: it integrates the true motion with a
+    -- random relative error on each step's distance and turn. (Exact
+    -- odometry is the true pose, read from the robots: no list, and no
+    -- pass over them here.)
+    nextOdometry rng olds news odos
+      | noise == 0 = ([], rng)
+      | otherwise  = go rng olds news odos []
       where
-        go g (r0 : rs0) (r1 : rs1) (a : as') ((_, fut) : st) acc =
+        go g (r0 : rs0) (r1 : rs1) (Odometry p h : os) acc =
           let (u1, g1) = uniform g
               (u2, g2) = uniform g1
-              (p, h)   = agOdo a
               dTrue    = rPos r1 .-. rPos r0
               turn     = normalizeAngle (rHeading r1 - rHeading r0)
               h'       = normalizeHeading (h + turn * (1 + noise * u2))
               d'       = vector2Rotate (h - rHeading r0) ((1 + noise * u1) *^ dTrue)
-          in go g2 rs0 rs1 as' st (Agent (agProps a) fut (p .+^ d') h' : acc)
-        go g _ _ _ _ acc = (reverse acc, g)
-        -- (the pose taken out of the robot now: left as selections, it
-        -- was a thunk or two per robot and step for the collector)
-        exact (a : as') (!r : rs) ((_, fut) : st) =
-          let !rest = exact as' rs st
-              !p    = rPos r
-              !h    = rHeading r
-          in Agent (agProps a) fut p h : rest
-        exact _ _ _ = []
+          in go g2 rs0 rs1 os (Odometry (p .+^ d') h' : acc)
+        go g _ _ _ acc = (reverse acc, g)
 
--- Every robot's controller step and the plan of its move, in template
--- order, given a robot's step by its number and agent (with a lower bound
--- on its distance to the other robots) and the plan of a robot's move
--- under a command, given that bound; and first @()@, which starts the
--- work.
+-- Every robot's controller step (its output and its next agent) and the
+-- plan of its move, in template order, given a robot's step by its
+-- number, agent and robot (with a lower bound on its distance to the
+-- other robots) and the plan of a robot's move under a command, given
+-- that bound; and first @()@, which starts the work.
 -- On one capability all of them at once, when either list is first
 -- needed, and the start does nothing. On several, the robots are cut into
 -- chunks computed in parallel (see the module's documentation): the start
@@ -319,14 +320,16 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 -- which moves the robots in order, moves those of a chunk while the
 -- workers compute later chunks.
 stepEvery :: () -> [Agent] -> [Robot]
-          -> (Int -> Agent -> ((SimbotOutput, FutureSF SimbotInput SimbotOutput), Double))
+          -> (Int -> Agent -> Robot -> ((SimbotOutput, Agent), Double))
           -> (Double -> Robot -> DriveCommand -> Plan)
-          -> ((), [(SimbotOutput, FutureSF SimbotInput SimbotOutput)], [(Robot, Plan)])
+          -> ((), [SimbotOutput], [Agent], [(Robot, Plan)])
 stepEvery ready agents robots stepOne planOne
   | caps <= 1 || n < 2 * minChunk =
-      let (ss, ps) = case stepRun 0 maxBound agents robots [] [] of Chunk ss' ps' -> (ss', ps')
-      in ((), ss, ps)
-  | otherwise = (started, started `pseq` fst (joined shared), started `pseq` snd (joined shared))
+      case stepRun 0 maxBound agents robots [] [] [] of Chunk os as ps -> ((), os, as, ps)
+  | otherwise = ( started
+                , started `pseq` chunkOutputs (joined shared)
+                , started `pseq` chunkAgents (joined shared)
+                , started `pseq` chunkPlans (joined shared) )
   where
     -- the workers given the chunks (once @ready@)
     started = ready `pseq` shared `pseq` ()
@@ -341,24 +344,29 @@ stepEvery ready agents robots stepOne planOne
     cut !i as rs nexts
       | null as || null rs = []
       | otherwise = let rest = cut (i + size) (drop size as) (drop size rs) (drop 1 nexts)
+                        -- (lazily: the next chunk is not computed yet)
                         next = joined nexts
-                    in stepRun i size as rs (fst next) (snd next) : rest
-    joined (c : _) = (chunkSteps c, chunkPlans c)
-    joined []      = ([], [])
+                    in stepRun i size as rs (chunkOutputs next) (chunkAgents next) (chunkPlans next)
+                         : rest
+    joined (c : _) = c
+    joined []      = Chunk [] [] []
     -- Strict loops: a step needs every element, and lazy zips would build
-    -- a thunk per robot and list. A chunk's steps end with @tailS@, its
-    -- plans with @tailP@.
-    stepRun !i !k as rs tailS tailP = case go i k as rs tailS tailP of (# ss, ds #) -> Chunk ss ds
-    go !i !k (a : as) (r : rs) tailS tailP
-      | k > (0 :: Int) = case stepOne i a of
-          (st@(!o, !_), apart) -> case go (i + 1) (k - 1) as rs tailS tailP of
-            (# ss, ps #) -> case planOne apart r (soDrive o) of
-              !pl -> (# st : ss, (r, pl) : ps #)
-    go _ _ _ _ tailS tailP = (# tailS, tailP #)
+    -- a thunk per robot and list. A chunk's lists end with @tailO@,
+    -- @tailA@ and @tailP@.
+    stepRun !i !k as rs tailO tailA tailP = case go i k as rs tailO tailA tailP of
+      (# os, as', ps #) -> Chunk os as' ps
+    go !i !k (a : as) (r : rs) tailO tailA tailP
+      | k > (0 :: Int) = case stepOne i a r of
+          ((!o, !a'), apart) -> case go (i + 1) (k - 1) as rs tailO tailA tailP of
+            (# os, as', ps #) -> case planOne apart r (soDrive o) of
+              !pl -> (# o : os, a' : as', (r, pl) : ps #)
+    go _ _ _ _ tailO tailA tailP = (# tailO, tailA, tailP #)
 
--- The controller steps and move plans of consecutive robots.
-data Chunk = Chunk { chunkSteps :: [(SimbotOutput, FutureSF SimbotInput SimbotOutput)]
-                   , chunkPlans :: [(Robot, Plan)] }
+-- The controller outputs, next agents and move plans of consecutive
+-- robots.
+data Chunk = Chunk { chunkOutputs :: [SimbotOutput]
+                   , chunkAgents  :: [Agent]
+                   , chunkPlans   :: [(Robot, Plan)] }
 
 -- The fewest robots whose steps are handed to a worker together: 16
 -- (handing one over costs about as much as a robot's step; with the 100
