@@ -16,7 +16,11 @@
 -- until the running thread next enters the scheduler, which with a large
 -- allocation area can be a whole timer tick (20 ms) away, so most sparks
 -- of a step of a few milliseconds fizzle. A worker blocked on an 'MVar'
--- is woken as soon as work is handed to it.
+-- is woken as soon as work is handed to it; but waking a sleeping thread
+-- takes the operating system 10-30 microseconds, so a worker that runs
+-- out of work first looks for more for a while ('spinTime', 0.2 ms,
+-- yielding to the runtime between looks) before it sleeps: the
+-- simulator's next step usually comes within that time.
 --
 -- The pool is made the first time it is needed: one worker per capability
 -- but the caller's, pinned to it ('forkOn'), more when the program enables
@@ -32,15 +36,17 @@ module AFrobRobotSim.Workers
   , capabilitiesNow
   ) where
 
-import           Control.Concurrent      (ThreadId, forkOn, myThreadId, threadCapability)
-import           Control.Concurrent.Chan (Chan, newChan, readChan, writeChan)
-import           Control.Concurrent.MVar (MVar, modifyMVar, newMVar)
+import           Control.Concurrent      (ThreadId, forkOn, myThreadId, threadCapability, yield)
+import           Control.Concurrent.MVar (MVar, modifyMVar, newEmptyMVar, newMVar, putMVar,
+                                          takeMVar)
 import           Control.Exception       (SomeAsyncException, SomeException, evaluate, fromException,
                                           throwIO, try)
-import           Control.Monad           (void)
-import           Data.IORef              (atomicModifyIORef', atomicWriteIORef, newIORef,
+import           Control.Monad           (void, when)
+import           Data.IORef              (IORef, atomicModifyIORef', atomicWriteIORef, newIORef,
                                           readIORef)
+import           Data.Word               (Word64)
 import           GHC.Arr                 (Array, listArray, (!))
+import           GHC.Clock               (getMonotonicTimeNSec)
 import           GHC.Conc                (getNumCapabilities)
 import           GHC.IO                  (unsafeDupablePerformIO, unsafePerformIO)
 
@@ -49,8 +55,29 @@ import           GHC.IO                  (unsafeDupablePerformIO, unsafePerformI
 -- thread that hands them work.
 newtype Pool = Pool (MVar [Worker])
 
--- A worker thread and its queue of work (@Nothing@: stop).
-data Worker = Worker ThreadId (Chan (Maybe (IO ())))
+-- A worker thread and its mailbox.
+data Worker = Worker ThreadId Mailbox
+
+-- What is handed to a worker: work, or @Nothing@: stop.
+type Order = Maybe (IO ())
+
+-- A worker's mailbox: the orders handed to it and not yet taken (the
+-- latest first), or that it sleeps, to be woken with an order through the
+-- 'MVar'.
+data Mailbox = Mailbox (IORef Box) (MVar Order)
+
+data Box = Orders [Order] | Asleep
+
+newMailbox :: IO Mailbox
+newMailbox = Mailbox <$> newIORef (Orders []) <*> newEmptyMVar
+
+-- Hand an order to a worker: into its box, or to it if it sleeps.
+hand :: Mailbox -> Order -> IO ()
+hand (Mailbox box wake) o = do
+  asleep <- atomicModifyIORef' box $ \b -> case b of
+    Asleep    -> (Orders [], True)
+    Orders os -> (Orders (o : os), False)
+  when asleep (putMVar wake o)
 
 thePool :: Pool
 thePool = unsafePerformIO (Pool <$> newMVar [])
@@ -115,7 +142,7 @@ readInOrder caps xs
                 Nothing -> pure ()                -- nothing left: wait for it
           view k = unsafePerformIO (before k) `seq` (items ! k)
       queues <- workersFor caps
-      mapM_ (`writeChan` Just work) queues
+      mapM_ (`hand` Just work) queues
       pure (map view [0 .. m - 1])
 
 -- Evaluate a value, leaving what it raises with it; an asynchronous
@@ -131,18 +158,18 @@ evaluateKeeping x = try (void (evaluate x)) >>= \r -> case r of
 -- capability 0). A worker that the runtime has moved to another
 -- capability (when the program lowered its number of capabilities) is
 -- stopped and started again where it belongs.
-workersFor :: Int -> IO [Chan (Maybe (IO ()))]
+workersFor :: Int -> IO [Mailbox]
 workersFor caps = do
   let Pool started = thePool
   modifyMVar started $ \ws -> do
     (mine, _) <- threadCapability =<< myThreadId
     let place i = if i == mine then 0 else i
-        start i = do q <- newChan
+        start i = do q <- newMailbox
                      t <- forkOn (place i) (worker q)
                      pure (Worker t q)
         keep i w@(Worker t q) = do
           (c, _) <- threadCapability t
-          if c == place i then pure w else writeChan q Nothing >> start i
+          if c == place i then pure w else hand q Nothing >> start i
     used <- mapM (\i -> case drop (i - 1) ws of
                            w : _ -> keep i w
                            []    -> start i)
@@ -150,12 +177,40 @@ workersFor caps = do
     -- (the workers of capabilities above @caps@ stay, idle)
     pure (used ++ drop (caps - 1) ws, [ q | Worker _ q <- used ])
 
--- Run the work handed over until told to stop.
-worker :: Chan (Maybe (IO ())) -> IO ()
-worker q = readChan q >>= \w -> case w of
-  Nothing -> pure ()
-  -- (the work keeps what its values raise; anything else is dropped)
-  Just act -> (try act :: IO (Either SomeException ())) >> worker q
+-- Run the orders handed over, in order, until told to stop; out of work,
+-- look for more for 'spinTime', then sleep until woken.
+worker :: Mailbox -> IO ()
+worker q@(Mailbox box wake) = look =<< getMonotonicTimeNSec
+  where
+    look t0 = do
+      b <- readIORef box
+      case b of
+        Orders (_ : _) -> do
+          os <- atomicModifyIORef' box $ \b' -> case b' of
+            Orders os -> (Orders [], reverse os)
+            Asleep    -> (b', [])          -- (only the worker sleeps)
+          run os
+        _ -> do
+          t <- getMonotonicTimeNSec
+          if t - t0 < spinTime
+            then yield >> look t0
+            else do
+              sleep <- atomicModifyIORef' box $ \b' -> case b' of
+                Orders [] -> (Asleep, True)
+                _         -> (b', False)
+              if sleep then takeMVar wake >>= \o -> run [o] else look t0
+    run [] = worker q
+    run (Nothing : _) = pure ()
+    -- (the work keeps what its values raise; anything else is dropped)
+    run (Just act : os) = (try act :: IO (Either SomeException ())) >> run os
+
+-- How long a worker out of work looks for more before it sleeps, in
+-- nanoseconds: 0.2 ms, longer than the simulator's stepping thread takes
+-- between two steps' work at 1000 robots (the moves after the last chunk,
+-- the next indexes), and short enough not to matter to a program that
+-- steps now and then.
+spinTime :: Word64
+spinTime = 200000
 
 -- | The number of capabilities now, read each time (a program may change
 -- it while it runs): the argument, any value, makes it a function, so
