@@ -2,12 +2,17 @@
 -- one capability and on several, whether the reader is quicker or slower
 -- than the workers (so that it waits for them, or computes elements from
 -- the end while they are busy), and the reader meets the exception of
--- the first failing element first, as when evaluating on one thread.
+-- the first failing element first, as when evaluating on one thread; and
+-- a worker that has gone to sleep for want of work is woken by the next.
 module AFrobRobotSim.WorkersSpec (spec) where
 
+import           Control.Concurrent (threadDelay)
 import           Control.Exception (ErrorCall (..), bracket, evaluate, try)
+import           Control.Monad     (forM_)
+import           Data.IORef        (IORef, atomicModifyIORef', newIORef, readIORef, writeIORef)
 import           Data.List         (foldl')
 import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
+import           System.IO.Unsafe  (unsafePerformIO)
 import           Test.Hspec
 import           Test.QuickCheck
 
@@ -22,6 +27,13 @@ withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapa
 work :: Int -> Int -> Int
 work seed n = foldl' (\acc j -> (acc * 31 + j * seed) `mod` 1000003) seed [1 .. n]
 {-# NOINLINE work #-}
+
+-- | 'work', counting in the reference each time it is computed.
+counted :: IORef Int -> Int -> Int
+counted ref k = unsafePerformIO $ do
+  atomicModifyIORef' ref (\c -> (c + 1, ()))
+  pure $! work k 1000
+{-# NOINLINE counted #-}
 
 -- | Read a list in order, doing @between !! k@ of work after element @k@,
 -- and return the values and that work (forced alongside).
@@ -78,3 +90,17 @@ spec = describe "readInOrder" $ do
     readInOrder 1 xs `shouldBe` xs
     readInOrder 4 [work 1 10] `shouldBe` [work 1 10]
     readInOrder 4 ([] :: [Int]) `shouldBe` []
+
+  it "wakes a worker that has gone to sleep: after a pause, the workers compute what the reader does not read" $ do
+    computed <- newIORef 0
+    withCaps 2 $ forM_ [1 .. 3 :: Int] $ \r -> do
+      threadDelay 5000   -- (a worker out of work looks for more for 0.2 ms, then sleeps)
+      writeIORef computed 0
+      let ys = readInOrder 2 [ counted computed (100 * r + k) | k <- [0 .. 7] ]
+      _ <- evaluate (head ys)
+      -- elements 1 to 7 are left to the worker: wait for it (at most 2 s)
+      let waitFor :: Int -> IO Int
+          waitFor n = do
+            c <- readIORef computed
+            if c >= 8 || n <= 0 then pure c else threadDelay 1000 >> waitFor (n - 1)
+      waitFor 2000 `shouldReturn` 8
