@@ -20,7 +20,10 @@
 -- takes the operating system 10-30 microseconds, so a worker that runs
 -- out of work first looks for more for a while ('spinTime', 0.2 ms,
 -- yielding to the runtime between looks) before it sleeps: the
--- simulator's next step usually comes within that time.
+-- simulator's next step usually comes within that time. (Not when the
+-- program has more capabilities than the machine has processors: there
+-- a worker that looks for work takes a processor from one that has some,
+-- so it sleeps at once.)
 --
 -- The pool is made the first time it is needed: one worker per capability
 -- but the caller's, pinned to it ('forkOn'), more when the program enables
@@ -47,7 +50,7 @@ import           Data.IORef              (IORef, atomicModifyIORef', atomicWrite
 import           Data.Word               (Word64)
 import           GHC.Arr                 (Array, listArray, (!))
 import           GHC.Clock               (getMonotonicTimeNSec)
-import           GHC.Conc                (getNumCapabilities)
+import           GHC.Conc                (getNumCapabilities, getNumProcessors)
 import           GHC.IO                  (unsafeDupablePerformIO, unsafePerformIO)
 
 -- The workers started so far: the @i@-th (from 1) is pinned to
@@ -178,11 +181,17 @@ workersFor caps = do
     pure (used ++ drop (caps - 1) ws, [ q | Worker _ q <- used ])
 
 -- Run the orders handed over, in order, until told to stop; out of work,
--- look for more for 'spinTime', then sleep until woken.
+-- look for more for 'spinTime' (unless there are more capabilities than
+-- processors), then sleep until woken.
 worker :: Mailbox -> IO ()
-worker q@(Mailbox box wake) = look =<< getMonotonicTimeNSec
+worker q@(Mailbox box wake) = do
+  caps <- getNumCapabilities
+  cpus <- getNumProcessors
+  t0 <- getMonotonicTimeNSec
+  look (if caps <= cpus then t0 + spinTime else t0)
   where
-    look t0 = do
+    -- (for work, until the deadline)
+    look deadline = do
       b <- readIORef box
       case b of
         Orders (_ : _) -> do
@@ -192,13 +201,13 @@ worker q@(Mailbox box wake) = look =<< getMonotonicTimeNSec
           run os
         _ -> do
           t <- getMonotonicTimeNSec
-          if t - t0 < spinTime
-            then yield >> look t0
+          if t < deadline
+            then yield >> look deadline
             else do
               sleep <- atomicModifyIORef' box $ \b' -> case b' of
                 Orders [] -> (Asleep, True)
                 _         -> (b', False)
-              if sleep then takeMVar wake >>= \o -> run [o] else look t0
+              if sleep then takeMVar wake >>= \o -> run [o] else look deadline
     run [] = worker q
     run (Nothing : _) = pure ()
     -- (the work keeps what its values raise; anything else is dropped)
