@@ -222,8 +222,10 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         (key, keys') = case enKeys en of
           (tk, c) : rest | tk <= t + dt * 1e-6 -> (Just c, rest)
           ks                                    -> (Nothing, ks)
-        -- noisy odometry, by robot number (only read when noisy)
+        -- noisy odometry, by robot number (only made when noisy, before
+        -- the parallel work, as the sensors' indexes are)
         odoArr = listArray (0, length (enOdo en) - 1) (enOdo en) :: Array Int Odometry
+        odoReady = if noise == 0 then () else odoArr `seq` ()
         odometry i r
           | noise == 0 = (rPos r, rHeading r)
           | otherwise  = case odoArr ! i of Odometry p h -> (p, h)
@@ -232,7 +234,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         -- messages and the next state, never the robots' positions now):
         -- its output and continued controller, with each robot and the
         -- plan of its move.
-        (started, outputs, agents', plans) = stepEvery (senseReady ctx) (enAgents en) (enRobots en)
+        (started, outputs, agents', plans) = stepEvery (senseReady ctx `seq` odoReady) (enAgents en) (enRobots en)
           (\i a r -> case senseRobotApart ctx i (odometry i r) key of
                        (input, apart) -> (stepAgent t a input, apart))
           (planMoveApart dt arena)
@@ -273,13 +275,13 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 
     -- every robot's state, all at once when the list is first needed
     -- (with the noisy odometry's readings, or none when it is exact)
-    robotStates (r : rs) os = let (o, os') = case os of
-                                    Odometry p _ : more -> (p, more)
-                                    []                  -> (rPos r, [])
-                                  !rest = robotStates rs os'
-                                  !st   = robotState r o
-                              in st : rest
-    robotStates [] _        = []
+    robotStates (r : rs) os = case os of
+      Odometry p _ : more -> states p more
+      []                  -> states (rPos r) []
+      where states o more = let !rest = robotStates rs more
+                                !st   = robotState r o
+                            in st : rest
+    robotStates [] _ = []
     robotState r o = RobotState
       { robotType = kindType (rKind r), robotId = rId r, robotPos = rPos r
       , robotHeading = rHeading r, robotSpeed = rSpeed r, robotStuck = rStuck r
