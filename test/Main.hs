@@ -38,6 +38,7 @@ import qualified AFrobRobotSim.ConsoleSpec
 import qualified AFrobRobotSim.FlatArraySpec
 import qualified AFrobRobotSim.JSONSpec
 import qualified AFrobRobotSim.LogSpec
+import qualified AFrobRobotSim.Log.RecordsSpec
 import qualified AFrobRobotSim.ReplayBrowserSpec
 import qualified AFrobRobotSim.ReplaySpec
 import qualified AFrobRobotSim.NotesSection3Spec
@@ -110,6 +111,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.FlatArray" AFrobRobotSim.FlatArraySpec.spec
   describe "AFrobRobotSim.JSON"      AFrobRobotSim.JSONSpec.spec
   describe "AFrobRobotSim.Log"       AFrobRobotSim.LogSpec.spec
+  describe "AFrobRobotSim.Log.Records" AFrobRobotSim.Log.RecordsSpec.spec
   describe "AFrobRobotSim.Replay"    AFrobRobotSim.ReplaySpec.spec
   describe "AFrobRobotSim.Replay in Chromium" AFrobRobotSim.ReplayBrowserSpec.spec
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec

@@ -36,6 +36,8 @@ module AFrobRobotSim.JSON
   , encodeJSONBuilder
   , encodeString
   , encodeNumber
+  , stringBuilder
+  , numberBuilder
     -- * Parsing
   , parseJSON
   , maxDepth
@@ -87,8 +89,10 @@ encodeJSONBuilder = go
     commaSep []       = mempty
     commaSep (b : bs) = b <> foldr (\c acc -> B.char7 ',' <> c <> acc) mempty bs
 
--- A string's JSON text: as 'encodeString', with a string that needs no
--- escape (the usual case: names, keys) copied as it is.
+-- | A string's JSON text as a 'B.Builder': the characters of
+-- 'encodeString' (a string that needs no escape, the usual case: names,
+-- keys, is copied as it is). For a writer that makes a value's text
+-- directly, without a 'JSON' value.
 stringBuilder :: String -> B.Builder
 stringBuilder str
   | all plain str = B.char7 '"' <> B.string7 str <> B.char7 '"'
@@ -102,17 +106,27 @@ stringBuilder str
 encodeNumber :: Double -> String
 encodeNumber = BLC.unpack . B.toLazyByteString . numberBuilder
 
--- A number's JSON text (see 'encodeNumber').
+-- | A number's JSON text as a 'B.Builder': the characters of
+-- 'encodeNumber'. (Written with comparisons
+-- and truncation rather than 'isNaN', 'isInfinite' and 'round', which
+-- are foreign calls, and with no 'String' but for the last case: a run
+-- log writes some twenty numbers for each robot at each frame.)
 numberBuilder :: Double -> B.Builder
 numberBuilder x
-  | isNaN x || isInfinite x = B.string7 "null"
-  | abs x < 1e15 && x == fromIntegral r = B.intDec r
+  | not (abs x <= 1.7976931348623157e308) = B.string7 "null"   -- NaN, the infinities
+  | abs x < 1e15 && x == fromIntegral t = B.intDec t
   | abs x < 1e9 && x == fromIntegral m / 1e6 = millionths m
   | otherwise = B.string7 (show x)
   where
-    -- (evaluated only below the bounds above, where they are exact)
-    r = round x :: Int
-    m = round (x * 1e6) :: Int
+    -- (evaluated only below the bounds above, where they are exact; a
+    -- whole number is its truncation, and a whole number of millionths
+    -- is within far less than half a millionth of @x * 10^6@, so any
+    -- rounding to the nearest whole number finds it)
+    t = truncate x :: Int
+    m = nearest (x * 1e6)
+    nearest y = let k = truncate y :: Int
+                    d = y - fromIntegral k
+                in if d >= 0.5 then k + 1 else if d <= -0.5 then k - 1 else k
 
 -- A whole number of millionths, not a whole number, in decimals: the
 -- digits of @m / 10^6@ exactly, without trailing zeros. (The decimal is
@@ -120,12 +134,19 @@ numberBuilder x
 -- division of the exact @m@ by @10^6@ rounds to nearest: so it reads back
 -- as @x@.)
 millionths :: Int -> B.Builder
-millionths m = sign <> B.intDec whole <> B.char7 '.' <> B.string7 (trimZeros (pad6 (show frac)))
+millionths m = sign <> B.intDec whole <> B.char7 '.' <> zeros (places - digitsOf kept) <> B.intDec kept
   where
     sign          = if m < 0 then B.char7 '-' else mempty
     (whole, frac) = abs m `quotRem` 1000000
-    pad6 ds       = replicate (6 - length ds) '0' ++ ds
-    trimZeros     = reverse . dropWhile (== '0') . reverse
+    -- the fraction's six places without their trailing zeros: the
+    -- number they spell, and how many places are left
+    (kept, places) = trim frac 6
+    trim f p | p > 1 && f `rem` 10 == 0 = trim (f `quot` 10) (p - 1)
+             | otherwise                = (f, p) :: (Int, Int)
+    digitsOf k | k < 10    = 1
+               | otherwise = 1 + digitsOf (k `quot` 10) :: Int
+    zeros k | k > 0     = B.char7 '0' <> zeros (k - 1)
+            | otherwise = mempty
 
 -- | A string's JSON text, quotes included (see the module documentation).
 encodeString :: String -> String

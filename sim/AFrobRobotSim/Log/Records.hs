@@ -205,9 +205,56 @@ encodeLogLine :: LogLine -> String
 encodeLogLine = encodeJSON . logLineJSON
 
 -- | One line's JSON text as bytes (ASCII), evaluated to the last one: the
--- characters of 'encodeLogLine', made without a 'String'.
+-- characters of 'encodeLogLine', made without a 'String'; a frame's made
+-- without its 'JSON' value too (a run log and a replay page write one
+-- frame for some 25 steps a second, each with some twenty numbers a
+-- robot).
 encodeLogLineBytes :: LogLine -> BS.ByteString
-encodeLogLineBytes = BL.toStrict . B.toLazyByteString . encodeJSONBuilder . logLineJSON
+encodeLogLineBytes l = BL.toStrict (B.toLazyByteString (case l of
+  LineFrame f -> frameBuilder f
+  _           -> encodeJSONBuilder (logLineJSON l)))
+
+-- A frame's JSON text, written member by member: the characters of
+-- 'encodeJSONBuilder' of its 'logLineJSON' (the members in that order).
+frameBuilder :: LogFrame -> B.Builder
+frameBuilder f =
+  B.string7 "{\"kind\":\"frame\",\"t\":" <> numB (lfTime f)
+  <> B.string7 ",\"robots\":[" <> commas robot (lfRobots f)
+  <> B.string7 "],\"balls\":[" <> commas pair (lfBalls f)
+  <> B.string7 "],\"scores\":{" <> commas score (lfScores f)
+  <> B.string7 "},\"events\":[" <> commas event (lfEvents f)
+  <> B.string7 "],\"console\":[" <> commas strB (lfConsole f)
+  <> B.string7 "]}"
+  where
+    numB = numberBuilder
+    intB = numberBuilder . fromIntegral   -- (as the 'JSON' value has it: a number)
+    strB = stringBuilder
+    comma = B.char7 ','
+    commas _ []       = mempty
+    commas g (x : xs) = g x <> foldr (\y acc -> comma <> g y <> acc) mempty xs
+    pair (x, y) = B.char7 '[' <> numB x <> comma <> numB y <> B.char7 ']'
+    score (k, n) = strB k <> B.char7 ':' <> intB n
+    robot r =
+      B.string7 "{\"x\":" <> numB (lrX r) <> B.string7 ",\"y\":" <> numB (lrY r)
+      <> B.string7 ",\"heading\":" <> numB (lrHeading r)
+      <> B.string7 ",\"wheels\":" <> pair (lrWheelLeft r, lrWheelRight r)
+      <> B.string7 ",\"v\":" <> numB (lrSpeed r) <> B.string7 ",\"omega\":" <> numB (lrRotVel r)
+      <> B.string7 (if lrBumper r then ",\"bumper\":true" else ",\"bumper\":false")
+      <> B.string7 ",\"range\":[" <> commas numB (lrRange r)
+      <> B.string7 "],\"seenRobots\":[" <> commas seen (lrSeenRobots r)
+      <> B.string7 "],\"seenBalls\":[" <> commas pair (lrSeenBalls r)
+      <> B.string7 "],\"battery\":" <> strB (lrBattery r)
+      <> B.string7 ",\"charge\":" <> numB (lrCharge r)
+      <> B.string7 ",\"odometry\":" <> pair (lrOdoX r, lrOdoY r)
+      <> B.string7 ",\"messages\":[" <> commas message (lrMessages r)
+      <> B.string7 "]}"
+    seen (ty, i, a, d) = B.char7 '[' <> strB ty <> comma <> intB i <> comma <> numB a <> comma <> numB d
+                         <> B.char7 ']'
+    message (t, m) = B.char7 '[' <> numB t <> comma <> strB m <> B.char7 ']'
+    event e = B.string7 "{\"t\":" <> numB (evTime e) <> B.string7 ",\"kind\":" <> strB (evKind e)
+              <> maybe mempty (\(ty, i) -> B.string7 ",\"robot\":[" <> strB ty <> comma <> intB i <> B.char7 ']')
+                       (evRobot e)
+              <> B.string7 ",\"text\":" <> strB (evText e) <> B.char7 '}'
 
 -- | Parse one line's text ('parseJSON', then 'logLineFromJSON').
 decodeLogLine :: String -> Either String LogLine
