@@ -52,8 +52,13 @@ module AFrobRobotSim.JSON
   ) where
 
 import qualified Data.ByteString.Builder    as B
+import qualified Data.ByteString.Builder.Prim as P
+import           Data.ByteString.Builder.Prim.Internal (boundedPrim)
 import qualified Data.ByteString.Lazy.Char8 as BLC
 import           Data.Char                  (chr, isDigit, isHexDigit, ord, digitToInt)
+import           Data.Word                  (Word8)
+import           Foreign.Ptr                (Ptr, plusPtr)
+import           Foreign.Storable           (pokeByteOff)
 import           Numeric                    (showHex)
 
 -- | A JSON value. An object keeps its members in order; a duplicate name
@@ -107,16 +112,41 @@ encodeNumber :: Double -> String
 encodeNumber = BLC.unpack . B.toLazyByteString . numberBuilder
 
 -- | A number's JSON text as a 'B.Builder': the characters of
--- 'encodeNumber'. (Written with comparisons
--- and truncation rather than 'isNaN', 'isInfinite' and 'round', which
--- are foreign calls, and with no 'String' but for the last case: a run
--- log writes some twenty numbers for each robot at each frame.)
+-- 'encodeNumber'. Written straight into the builder's buffer, with
+-- comparisons and truncation rather than 'isNaN', 'isInfinite' and
+-- 'round' (foreign calls), and no 'String' but for the last case: a run
+-- log writes some twenty numbers for each robot at each frame.
 numberBuilder :: Double -> B.Builder
-numberBuilder x
-  | not (abs x <= 1.7976931348623157e308) = B.string7 "null"   -- NaN, the infinities
-  | abs x < 1e15 && x == fromIntegral t = B.intDec t
-  | abs x < 1e9 && x == fromIntegral m / 1e6 = millionths m
-  | otherwise = B.string7 (show x)
+numberBuilder = P.primBounded numberPrim
+
+-- (At most 25 bytes: @null@; a sign and 15 digits; a sign, nine digits,
+-- the point and six places; or 'show''s longest, 24 characters, as in
+-- @-2.2250738585072014e-308@.)
+numberPrim :: P.BoundedPrim Double
+numberPrim = boundedPrim 32 writeNumber
+
+writeNumber :: Double -> Ptr Word8 -> IO (Ptr Word8)
+writeNumber x op
+  | not (abs x <= 1.7976931348623157e308) = chars op "null"      -- NaN, the infinities
+  | abs x < 1e15 && x == fromIntegral t =
+      signed op (t < 0) $ \op1 -> let n = digitsOf (abs t) in decimal op1 n (abs t) >> pure (op1 `plusPtr` n)
+  | abs x < 1e9 && x == fromIntegral m / 1e6 =
+      -- a whole number of millionths, not a whole number: the digits of
+      -- @m / 10^6@ exactly, without trailing zeros. (The decimal is
+      -- exactly @m / 10^6@, and @x@ is the 'Double' nearest to it, since
+      -- IEEE division of the exact @m@ by @10^6@ rounds to nearest: so it
+      -- reads back as @x@.)
+      let (whole, frac) = abs m `quotRem` 1000000
+          -- the six places without their trailing zeros: the number they
+          -- spell, and how many places are left
+          (kept, places) = trim frac 6
+          n = digitsOf whole
+      in signed op (m < 0) $ \op1 -> do
+           decimal op1 n whole
+           byte (op1 `plusPtr` n) 0 46                                -- '.'
+           decimal (op1 `plusPtr` (n + 1)) places kept
+           pure (op1 `plusPtr` (n + 1 + places))
+  | otherwise = chars op (show x)
   where
     -- (evaluated only below the bounds above, where they are exact; a
     -- whole number is its truncation, and a whole number of millionths
@@ -127,26 +157,30 @@ numberBuilder x
     nearest y = let k = truncate y :: Int
                     d = y - fromIntegral k
                 in if d >= 0.5 then k + 1 else if d <= -0.5 then k - 1 else k
-
--- A whole number of millionths, not a whole number, in decimals: the
--- digits of @m / 10^6@ exactly, without trailing zeros. (The decimal is
--- exactly @m / 10^6@, and @x@ is the 'Double' nearest to it, since IEEE
--- division of the exact @m@ by @10^6@ rounds to nearest: so it reads back
--- as @x@.)
-millionths :: Int -> B.Builder
-millionths m = sign <> B.intDec whole <> B.char7 '.' <> zeros (places - digitsOf kept) <> B.intDec kept
-  where
-    sign          = if m < 0 then B.char7 '-' else mempty
-    (whole, frac) = abs m `quotRem` 1000000
-    -- the fraction's six places without their trailing zeros: the
-    -- number they spell, and how many places are left
-    (kept, places) = trim frac 6
+    trim :: Int -> Int -> (Int, Int)
     trim f p | p > 1 && f `rem` 10 == 0 = trim (f `quot` 10) (p - 1)
-             | otherwise                = (f, p) :: (Int, Int)
+             | otherwise                = (f, p)
+    digitsOf :: Int -> Int
     digitsOf k | k < 10    = 1
-               | otherwise = 1 + digitsOf (k `quot` 10) :: Int
-    zeros k | k > 0     = B.char7 '0' <> zeros (k - 1)
-            | otherwise = mempty
+               | otherwise = 1 + digitsOf (k `quot` 10)
+    byte :: Ptr Word8 -> Int -> Word8 -> IO ()
+    byte = pokeByteOff
+    -- a minus sign if asked, then what @k@ writes after it
+    signed :: Ptr Word8 -> Bool -> (Ptr Word8 -> IO (Ptr Word8)) -> IO (Ptr Word8)
+    signed p neg k | neg       = byte p 0 45 >> k (p `plusPtr` 1)
+                   | otherwise = k p
+    -- the @n@ last decimal digits of @k@ (zeros first if it has fewer), at @p@
+    decimal :: Ptr Word8 -> Int -> Int -> IO ()
+    decimal p n k
+      | n <= 0    = pure ()
+      | otherwise = do
+          let (q, r) = k `quotRem` 10
+          byte p (n - 1) (fromIntegral (48 + r))
+          decimal p (n - 1) q
+    -- ASCII characters, at @p@
+    chars :: Ptr Word8 -> String -> IO (Ptr Word8)
+    chars p []       = pure p
+    chars p (c : cs) = byte p 0 (fromIntegral (fromEnum c)) >> chars (p `plusPtr` 1) cs
 
 -- | A string's JSON text, quotes included (see the module documentation).
 encodeString :: String -> String

@@ -34,6 +34,7 @@ module AFrobRobotSim.Log.Records
   ) where
 
 import qualified Data.ByteString          as BS
+import qualified Data.ByteString.Char8    as BC
 import qualified Data.ByteString.Builder  as B
 import qualified Data.ByteString.Lazy     as BL
 
@@ -218,14 +219,16 @@ encodeLogLineBytes l = BL.toStrict (B.toLazyByteString (case l of
 -- 'encodeJSONBuilder' of its 'logLineJSON' (the members in that order).
 frameBuilder :: LogFrame -> B.Builder
 frameBuilder f =
-  B.string7 "{\"kind\":\"frame\",\"t\":" <> numB (lfTime f)
-  <> B.string7 ",\"robots\":[" <> commas robot (lfRobots f)
-  <> B.string7 "],\"balls\":[" <> commas pair (lfBalls f)
-  <> B.string7 "],\"scores\":{" <> commas score (lfScores f)
-  <> B.string7 "},\"events\":[" <> commas event (lfEvents f)
-  <> B.string7 "],\"console\":[" <> commas strB (lfConsole f)
-  <> B.string7 "]}"
+  lit "{\"kind\":\"frame\",\"t\":" <> numB (lfTime f)
+  <> lit ",\"robots\":[" <> commas robot (lfRobots f)
+  <> lit "],\"balls\":[" <> commas pair (lfBalls f)
+  <> lit "],\"scores\":{" <> commas score (lfScores f)
+  <> lit "},\"events\":[" <> commas event (lfEvents f)
+  <> lit "],\"console\":[" <> commas strB (lfConsole f)
+  <> lit "]}"
   where
+    -- (the literal pieces are packed once: each is a constant)
+    lit = B.byteString . BC.pack
     numB = numberBuilder
     intB = numberBuilder . fromIntegral   -- (as the 'JSON' value has it: a number)
     strB = stringBuilder
@@ -235,26 +238,26 @@ frameBuilder f =
     pair (x, y) = B.char7 '[' <> numB x <> comma <> numB y <> B.char7 ']'
     score (k, n) = strB k <> B.char7 ':' <> intB n
     robot r =
-      B.string7 "{\"x\":" <> numB (lrX r) <> B.string7 ",\"y\":" <> numB (lrY r)
-      <> B.string7 ",\"heading\":" <> numB (lrHeading r)
-      <> B.string7 ",\"wheels\":" <> pair (lrWheelLeft r, lrWheelRight r)
-      <> B.string7 ",\"v\":" <> numB (lrSpeed r) <> B.string7 ",\"omega\":" <> numB (lrRotVel r)
-      <> B.string7 (if lrBumper r then ",\"bumper\":true" else ",\"bumper\":false")
-      <> B.string7 ",\"range\":[" <> commas numB (lrRange r)
-      <> B.string7 "],\"seenRobots\":[" <> commas seen (lrSeenRobots r)
-      <> B.string7 "],\"seenBalls\":[" <> commas pair (lrSeenBalls r)
-      <> B.string7 "],\"battery\":" <> strB (lrBattery r)
-      <> B.string7 ",\"charge\":" <> numB (lrCharge r)
-      <> B.string7 ",\"odometry\":" <> pair (lrOdoX r, lrOdoY r)
-      <> B.string7 ",\"messages\":[" <> commas message (lrMessages r)
-      <> B.string7 "]}"
+      lit "{\"x\":" <> numB (lrX r) <> lit ",\"y\":" <> numB (lrY r)
+      <> lit ",\"heading\":" <> numB (lrHeading r)
+      <> lit ",\"wheels\":" <> pair (lrWheelLeft r, lrWheelRight r)
+      <> lit ",\"v\":" <> numB (lrSpeed r) <> lit ",\"omega\":" <> numB (lrRotVel r)
+      <> (if lrBumper r then lit ",\"bumper\":true" else lit ",\"bumper\":false")
+      <> lit ",\"range\":[" <> commas numB (lrRange r)
+      <> lit "],\"seenRobots\":[" <> commas seen (lrSeenRobots r)
+      <> lit "],\"seenBalls\":[" <> commas pair (lrSeenBalls r)
+      <> lit "],\"battery\":" <> strB (lrBattery r)
+      <> lit ",\"charge\":" <> numB (lrCharge r)
+      <> lit ",\"odometry\":" <> pair (lrOdoX r, lrOdoY r)
+      <> lit ",\"messages\":[" <> commas message (lrMessages r)
+      <> lit "]}"
     seen (ty, i, a, d) = B.char7 '[' <> strB ty <> comma <> intB i <> comma <> numB a <> comma <> numB d
                          <> B.char7 ']'
     message (t, m) = B.char7 '[' <> numB t <> comma <> strB m <> B.char7 ']'
-    event e = B.string7 "{\"t\":" <> numB (evTime e) <> B.string7 ",\"kind\":" <> strB (evKind e)
-              <> maybe mempty (\(ty, i) -> B.string7 ",\"robot\":[" <> strB ty <> comma <> intB i <> B.char7 ']')
+    event e = lit "{\"t\":" <> numB (evTime e) <> lit ",\"kind\":" <> strB (evKind e)
+              <> maybe mempty (\(ty, i) -> lit ",\"robot\":[" <> strB ty <> comma <> intB i <> B.char7 ']')
                        (evRobot e)
-              <> B.string7 ",\"text\":" <> strB (evText e) <> B.char7 '}'
+              <> lit ",\"text\":" <> strB (evText e) <> B.char7 '}'
 
 -- | Parse one line's text ('parseJSON', then 'logLineFromJSON').
 decodeLogLine :: String -> Either String LogLine
