@@ -207,9 +207,9 @@ encodeLogLine = encodeJSON . logLineJSON
 
 -- | One line's JSON text as bytes (ASCII), evaluated to the last one: the
 -- characters of 'encodeLogLine', made without a 'String'; a frame's made
--- without its 'JSON' value too (a run log and a replay page write one
--- frame for some 25 steps a second, each with some twenty numbers a
--- robot).
+-- without its 'JSON' value too (a run log and a replay page write 25
+-- frames a simulated second by default, with some twenty numbers a robot
+-- in each).
 encodeLogLineBytes :: LogLine -> BS.ByteString
 encodeLogLineBytes l = BL.toStrict (B.toLazyByteString (case l of
   LineFrame f -> frameBuilder f
