@@ -187,12 +187,12 @@ planMove dt arena = planMoveApart dt arena 0
 
 -- | 'planMove', given a lower bound on the distance from the robot's
 -- centre to every other robot's centre before the step (the one the
--- robot index given to 'stepRobotsPlanned' holds): a robot whose move
--- cannot bring it within touching distance of any other (the bound is
--- more than twice the radius plus its move, the furthest any robot before
--- it has moved, and a margin for rounding) is moved without looking for
--- the others. The same moves as 'planMove''s, and as fast for a robot
--- near others.
+-- robot index given to 'stepRobotsPlanned' holds), kept in the plan:
+-- 'stepRobotsPlanned' then moves a robot whose move cannot bring it
+-- within touching distance of any other (the bound is more than twice the
+-- radius plus its move, the furthest any robot before it has moved, and a
+-- margin for rounding) without looking for the others. The same moves as
+-- 'planMove''s, and as fast for a robot near others.
 planMoveApart :: DTime -> Arena -> Double -> Robot -> DriveCommand -> Plan
 planMoveApart dt arena apart r c =
   let mv = robotMotion dt r c
