@@ -40,7 +40,11 @@
 -- cores; a failing controller fails the step with the error of the first
 -- failing robot in template order, as on one core. The balls move after
 -- the robots, on the stepping thread. On one capability the steps are
--- computed in order, by the stepping thread alone.
+-- computed in order, by the stepping thread alone, in chunks too: a chunk
+-- of 64 robots when the move of its first robot needs it (so that few
+-- robots' outputs and plans wait for their move, and the stack stays
+-- shallow: at 10,000 robots the collector copied 42% less than when every
+-- robot's step was computed before the first move).
 --
 -- A larger allocation area than the runtime's 1 MB matters: each minor
 -- collection copies the robots' live state, and on several cores every
@@ -229,8 +233,8 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         odometry i r
           | noise == 0 = (rPos r, rHeading r)
           | otherwise  = case odoArr ! i of Odometry p h -> (p, h)
-        -- Every controller's step, in template order, all of them at once
-        -- when any is needed (a failing controller fails the step: its
+        -- Every controller's step, in template order, chunk by chunk as
+        -- the moves need them (a failing controller fails the step: its
         -- messages and the next state, never the robots' positions now):
         -- its output and continued controller, with each robot and the
         -- plan of its move.
@@ -312,8 +316,11 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 -- number, agent and robot (with a lower bound on its distance to the
 -- other robots) and the plan of a robot's move under a command, given
 -- that bound; and first @()@, which starts the work.
--- On one capability all of them at once, when either list is first
--- needed, and the start does nothing. On several, the robots are cut into
+-- On one capability the start does nothing, and the robots are cut into
+-- chunks of 'seqChunk', each computed when the first of its elements is
+-- needed (the reader of the lists, which moves the robots in order, moves
+-- a chunk's robots before the next chunk is computed); a world of at most
+-- 'seqChunk' robots is one chunk. On several, the robots are cut into
 -- chunks computed in parallel (see the module's documentation): the start
 -- computes @ready@ (what every robot's step shares) and gives the workers
 -- the chunks, from the first; a chunk is computed by whoever reaches it
@@ -326,6 +333,8 @@ stepEvery :: () -> [Agent] -> [Robot]
           -> (Double -> Robot -> DriveCommand -> Plan)
           -> ((), [SimbotOutput], [Agent], [(Robot, Plan)])
 stepEvery ready agents robots stepOne planOne
+  | caps <= 1 && not (null (drop seqChunk robots)) =
+      let c = joined inOrder in ((), chunkOutputs c, chunkAgents c, chunkPlans c)
   | caps <= 1 || n < 2 * minChunk =
       case stepRun 0 maxBound agents robots [] [] [] of Chunk os as ps -> ((), os, as, ps)
   | otherwise = ( started
@@ -339,16 +348,19 @@ stepEvery ready agents robots stepOne planOne
     caps = capabilitiesNow agents   -- (not n: one capability needs no count)
     size = max minChunk ((n + 16 * caps - 1) `div` (16 * caps))
     -- the chunks as the workers share them with the reader of the lists
-    shared = readInOrder caps (cut 0 agents robots (drop 1 shared))
+    shared = readInOrder caps (cut size 0 agents robots (drop 1 shared))
+    -- on one capability, chunks of 'seqChunk' robots, each computed when
+    -- the first of its elements is needed
+    inOrder = cut seqChunk 0 agents robots (drop 1 inOrder)
     -- Chunks of @size@ consecutive robots. Each chunk's lists end with the
     -- next chunk's (as shared), so the chunks joined are the first one's
     -- lists: no list is copied to cut them apart or to join them.
-    cut !i as rs nexts
+    cut !k !i as rs nexts
       | null as || null rs = []
-      | otherwise = let rest = cut (i + size) (drop size as) (drop size rs) (drop 1 nexts)
+      | otherwise = let rest = cut k (i + k) (drop k as) (drop k rs) (drop 1 nexts)
                         -- (lazily: the next chunk is not computed yet)
                         next = joined nexts
-                    in stepRun i size as rs (chunkOutputs next) (chunkAgents next) (chunkPlans next)
+                    in stepRun i k as rs (chunkOutputs next) (chunkAgents next) (chunkPlans next)
                          : rest
     joined (c : _) = c
     joined []      = Chunk [] [] []
@@ -375,6 +387,15 @@ data Chunk = Chunk { chunkOutputs :: [SimbotOutput]
 -- packed wanderers, 16 a chunk ran as fast as 13, faster than 8).
 minChunk :: Int
 minChunk = 16
+
+-- The robots of a chunk on one capability: 64. At 10,000 robots the
+-- collector copied 960 MB in 100 steps (1,660 MB when every robot's step
+-- was computed before the first move: every robot's output and plan, and
+-- a stack one frame deep per robot, were live at each collection); one
+-- core's instructions per robot-step fell 17% at 10,000 robots and 3% at
+-- 1000.
+seqChunk :: Int
+seqChunk = 64
 
 -- | @blaming f v@ is @v@, with an exception that its evaluation raises
 -- turned into @f e@: 'Control.Exception.mapException', but leaving

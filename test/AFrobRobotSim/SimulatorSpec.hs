@@ -255,6 +255,37 @@ spec = do
       withCaps 2 ((> 1) <$> getNumCapabilities) `shouldReturn` True
       described two `shouldBe` described one
 
+    -- 130 robots over a 20 m world: on one capability they are stepped
+    -- in chunks of 64 (the 60 above are stepped all at once), on two in
+    -- chunks of 16
+    let many = [ (if even k then OTSimbotA else OTSimbotB) (k `div` 2 + 1)
+                   (Point2 (-9 + 1.4 * fromIntegral (k `mod` 13)) (-9 + 1.8 * fromIntegral (k `div` 13)))
+                   (fromIntegral k)
+               | k <- [0 .. 129 :: Int] ]
+        big = cfg { simBounds = Bounds (-10) (-10) 10 10 }
+    it "gives the same snapshots on one capability, where many robots are stepped in chunks, as on two" $ do
+      let run _ = show (take 250 (simulateWith big many sensing sensing))
+      one <- withCaps 1 (let r = run (1 :: Int) in evaluate (length r) >> pure r)
+      two <- withCaps 2 (let r = run (2 :: Int) in evaluate (length r) >> pure r)
+      length two `shouldBe` length one
+      two `shouldBe` one
+      let final = wsRobots (last (take 250 (simulateWith big many sensing sensing)))
+      length final `shouldBe` 130
+      map robotId final `shouldBe` [ k `div` 2 + 1 | k <- [0 .. 129 :: Int] ]
+    it "reports the failing controller that comes first in template order when many robots are stepped in chunks" $ do
+      -- SimbotA 11 is the 21st robot (the first chunk), SimbotA 51 the
+      -- 101st (the second)
+      let failing rps = proc sbi -> do
+            t <- localTime -< ()
+            o <- sensing rps -< sbi
+            returnA -< if t >= 1 && rpId rps `elem` [51, 11] then error "boom" else o
+          failure k = withCaps k (try (evaluate (length (show (take 200 (simulateWith big many failing failing))))))
+          described = either (\e -> Just (ceRobotType e, ceRobotId e, ceTime e)) (const Nothing)
+      one <- failure 1
+      two <- failure 2
+      described one `shouldBe` Just ("SimbotA", 11, 1)
+      described two `shouldBe` described one
+
     it "runSimWith writes the same frames, SVG, log, page, result and summary on one capability and on two" $ do
       let run dir = do
             createDirectory dir
