@@ -336,7 +336,7 @@ stepEvery ready agents robots stepOne planOne
   | caps <= 1 && not (null (drop seqChunk robots)) =
       let c = joined inOrder in ((), chunkOutputs c, chunkAgents c, chunkPlans c)
   | caps <= 1 || n < 2 * minChunk =
-      case stepRun 0 maxBound agents robots [] [] [] of Chunk os as ps -> ((), os, as, ps)
+      let c = stepRun 0 maxBound agents robots [] [] [] in ((), chunkOutputs c, chunkAgents c, chunkPlans c)
   | otherwise = ( started
                 , started `pseq` chunkOutputs (joined shared)
                 , started `pseq` chunkAgents (joined shared)

@@ -286,6 +286,17 @@ spec = do
       described one `shouldBe` Just ("SimbotA", 11, 1)
       described two `shouldBe` described one
 
+    it "leaves the positions before a failing step readable, and fails its messages, with any number of robots and capabilities" $ do
+      let boom _ = arr (\_ -> error "boom") :: SF SimbotInput SimbotOutput
+          check world k = withCaps k $ do
+            let s0 = head (simulateWith big world boom boom)
+            ps <- evaluate (map robotPos (wsRobots s0))
+            ps `shouldBe` [ otPos o | o <- world ]
+            r <- try (evaluate (length (wsMessages s0)))
+            either (\e -> Just (ceRobotType e, ceRobotId e, ceTime e)) (const Nothing) r
+              `shouldBe` Just ("SimbotA", 1, 0)
+      mapM_ (uncurry check) [ (w, k) | w <- [take 1 many, take 40 many, many], k <- [1, 2] ]
+
     it "runSimWith writes the same frames, SVG, log, page, result and summary on one capability and on two" $ do
       let run dir = do
             createDirectory dir
