@@ -228,11 +228,14 @@ r6 :: Double -> Double
 r6 = roundTo 1e6
 
 -- Rounded to a multiple of @1 / k@ (non-finite numbers and numbers too
--- large for the multiple to be exact stay as they are).
+-- large for the multiple to be exact stay as they are: NaN fails the
+-- comparison). The multiple's count is at most 10^15, so an 'Int' holds
+-- it exactly and converts back exactly (an 'Integer', and the foreign
+-- calls of 'isNaN' and 'isInfinite', cost a third of the rounding).
 roundTo :: Double -> Double -> Double
 roundTo k x
-  | isNaN x || isInfinite x || abs x * k > 1e15 = x
-  | otherwise = fromIntegral (round (x * k) :: Integer) / k
+  | not (abs x * k <= 1e15) = x
+  | otherwise               = fromIntegral (round (x * k) :: Int) / k
 
 -- | The console lines of a period taken apart, given the robots (type and
 -- id) of the world: each robot's own lines as (time, text), in the order
