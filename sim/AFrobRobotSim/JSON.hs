@@ -38,6 +38,7 @@ module AFrobRobotSim.JSON
   , encodeNumber
   , stringBuilder
   , numberBuilder
+  , numberPrim
     -- * Parsing
   , parseJSON
   , maxDepth
@@ -100,9 +101,35 @@ encodeJSONBuilder = go
 -- directly, without a 'JSON' value.
 stringBuilder :: String -> B.Builder
 stringBuilder str
+  | short 0 str   = P.primBounded quotedPrim str
   | all plain str = B.char7 '"' <> B.string7 str <> B.char7 '"'
   | otherwise     = B.string7 (encodeString str)
-  where plain c = c >= ' ' && c < '\DEL' && c /= '"' && c /= '\\' && c /= '<' && c /= '>' && c /= '&'
+  where
+    -- (the usual string, a name or a type, is short: in quotes in one
+    -- bounded write, rather than three builder pieces)
+    short :: Int -> String -> Bool
+    short n (c : cs) = n < shortString && plain c && short (n + 1) cs
+    short _ []       = True
+
+-- Whether a character goes into a JSON string as it is.
+plain :: Char -> Bool
+plain c = c >= ' ' && c < '\DEL' && c /= '"' && c /= '\\' && c /= '<' && c /= '>' && c /= '&'
+
+-- The most characters of a string 'stringBuilder' writes in one bounded
+-- write.
+shortString :: Int
+shortString = 64
+
+-- A string of at most 'shortString' characters that are all 'plain', in
+-- quotes.
+quotedPrim :: P.BoundedPrim String
+quotedPrim = boundedPrim (shortString + 2) $ \str op -> do
+  byte op 0 34
+  let go p (c : cs) = byte p 0 (fromIntegral (ord c)) >> go (p `plusPtr` 1) cs
+      go p []       = byte p 0 34 >> pure (p `plusPtr` 1)
+  go (op `plusPtr` 1) str
+  where byte :: Ptr Word8 -> Int -> Word8 -> IO ()
+        byte = pokeByteOff
 
 -- | A number's JSON text: @null@ for NaN and the infinities; integral
 -- values of magnitude below 10^15 without a fraction; whole numbers of
@@ -119,9 +146,12 @@ encodeNumber = BLC.unpack . B.toLazyByteString . numberBuilder
 numberBuilder :: Double -> B.Builder
 numberBuilder = P.primBounded numberPrim
 
--- (At most 25 bytes: @null@; a sign and 15 digits; a sign, nine digits,
--- the point and six places; or 'show''s longest, 24 characters, as in
--- @-2.2250738585072014e-308@.)
+-- | 'numberBuilder' as a bounded primitive (at most 32 bytes), for a
+-- writer that puts several numbers and constants in one bounded write
+-- (a log frame's robot, say: a builder piece for each costs more than the
+-- digits). It writes 25 bytes at most: @null@; a sign and 15 digits; a
+-- sign, nine digits, the point and six places; or 'show''s longest, 24
+-- characters, as in @-2.2250738585072014e-308@.
 numberPrim :: P.BoundedPrim Double
 numberPrim = boundedPrim 32 writeNumber
 

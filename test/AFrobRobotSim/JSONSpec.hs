@@ -3,7 +3,7 @@
 module AFrobRobotSim.JSONSpec (spec) where
 
 import           Data.Char             (ord)
-import           Data.List             (isInfixOf, isPrefixOf)
+import           Data.List             (isInfixOf, isPrefixOf, (\\))
 import           Test.Hspec
 import           Test.QuickCheck
 
@@ -41,6 +41,13 @@ spec = do
   describe "encodeJSON and parseJSON" $ do
     it "round trip any value (property)" $ property $ \(AnyJSON v) ->
       parseJSON (encodeJSON v) === Right v
+    it "write a string as encodeString does, short or long, plain or not (property)" $
+      -- (mostly plain ASCII, the usual case, of every length around the
+      -- short strings written in one piece)
+      let plainChar = elements ([' ' .. '~'] \\ "\"\\<>&")
+          str = oneof [ listOf plainChar, vectorOf 63 plainChar, vectorOf 64 plainChar, vectorOf 65 plainChar
+                      , (++) <$> listOf plainChar <*> ((:) <$> elements "\"\\<>&\n\DEL\x2028" <*> listOf plainChar) ]
+      in forAll str $ \t -> encodeJSON (JString t) === encodeString t .&&. parseJSON (encodeJSON (JString t)) === Right (JString t)
     it "write pure printable ASCII, one line (property)" $ property $ \(AnyJSON v) ->
       all (\c -> c >= ' ' && c <= '~') (encodeJSON v)
     it "never write '<', '>' or '&' (so no string closes a <script>) (property)" $ property $ \(AnyJSON v) ->

@@ -1,3 +1,4 @@
+{-# LANGUAGE MagicHash #-}
 -- |
 -- Module      : AFrobRobotSim.Log.Records
 -- Description : The records of a run log and their JSON, line by line.
@@ -36,7 +37,14 @@ module AFrobRobotSim.Log.Records
 import qualified Data.ByteString          as BS
 import qualified Data.ByteString.Char8    as BC
 import qualified Data.ByteString.Builder  as B
+import qualified Data.ByteString.Builder.Prim as P
+import           Data.ByteString.Builder.Prim.Internal (boundedPrim, runB)
 import qualified Data.ByteString.Lazy     as BL
+import           Data.Word                (Word8)
+import           Foreign.Marshal.Utils    (copyBytes)
+import           Foreign.Ptr              (Ptr, plusPtr)
+import           Foreign.Storable         (pokeByteOff)
+import           GHC.Exts                 (Addr#, Int (I#), Ptr (Ptr), cstringLength#)
 
 import           AFrobRobotSim.JSON
 
@@ -237,27 +245,85 @@ frameBuilder f =
     commas g (x : xs) = g x <> foldr (\y acc -> comma <> g y <> acc) mempty xs
     pair (x, y) = B.char7 '[' <> numB x <> comma <> numB y <> B.char7 ']'
     score (k, n) = strB k <> B.char7 ':' <> intB n
+    -- A robot: its members up to the range finders' readings as one
+    -- bounded write, the lists as loops of bounded writes, and the
+    -- members between and after them likewise (a builder piece for each
+    -- number and constant allocated and cost more than the digits: 56,000
+    -- instructions a robot-frame at 1000 robots, most of the page's cost)
     robot r =
-      lit "{\"x\":" <> numB (lrX r) <> lit ",\"y\":" <> numB (lrY r)
-      <> lit ",\"heading\":" <> numB (lrHeading r)
-      <> lit ",\"wheels\":" <> pair (lrWheelLeft r, lrWheelRight r)
-      <> lit ",\"v\":" <> numB (lrSpeed r) <> lit ",\"omega\":" <> numB (lrRotVel r)
-      <> (if lrBumper r then lit ",\"bumper\":true" else lit ",\"bumper\":false")
-      <> lit ",\"range\":[" <> commas numB (lrRange r)
+      P.primBounded robotHead r <> numbers (lrRange r)
       <> lit "],\"seenRobots\":[" <> commas seen (lrSeenRobots r)
-      <> lit "],\"seenBalls\":[" <> commas pair (lrSeenBalls r)
+      <> lit "],\"seenBalls\":[" <> pairs (lrSeenBalls r)
       <> lit "],\"battery\":" <> strB (lrBattery r)
-      <> lit ",\"charge\":" <> numB (lrCharge r)
-      <> lit ",\"odometry\":" <> pair (lrOdoX r, lrOdoY r)
-      <> lit ",\"messages\":[" <> commas message (lrMessages r)
+      <> P.primBounded robotTail r
+      <> commas message (lrMessages r)
       <> lit "]}"
-    seen (ty, i, a, d) = B.char7 '[' <> strB ty <> comma <> intB i <> comma <> numB a <> comma <> numB d
-                         <> B.char7 ']'
+    seen e@(ty, _, _, _) = B.char7 '[' <> strB ty <> P.primBounded seenRest e
+    numbers []       = mempty
+    numbers (x : xs) = P.primBounded numberPrim x <> P.primMapListBounded commaNumber xs
+    pairs []       = mempty
+    pairs (p : ps) = P.primBounded pairPrim p <> P.primMapListBounded commaPair ps
     message (t, m) = B.char7 '[' <> numB t <> comma <> strB m <> B.char7 ']'
     event e = lit "{\"t\":" <> numB (evTime e) <> lit ",\"kind\":" <> strB (evKind e)
               <> maybe mempty (\(ty, i) -> lit ",\"robot\":[" <> strB ty <> comma <> intB i <> B.char7 ']')
                        (evRobot e)
               <> lit ",\"text\":" <> strB (evText e) <> B.char7 '}'
+
+-- The bounded writes of 'frameBuilder'. Each writes constants (ASCII
+-- literals, copied whole) and numbers ('numberPrim', at most 32 bytes
+-- each) straight into the buffer, within its bound.
+
+-- A robot's members before its range finders' readings, to the opening
+-- bracket of @range@: 73 bytes of constants and 7 numbers.
+robotHead :: P.BoundedPrim LogRobot
+robotHead = boundedPrim (73 + 7 * 32) $ \r op ->
+  litAt "{\"x\":"# op >>= numAt (lrX r) >>= litAt ",\"y\":"# >>= numAt (lrY r)
+  >>= litAt ",\"heading\":"# >>= numAt (lrHeading r)
+  >>= litAt ",\"wheels\":["# >>= numAt (lrWheelLeft r) >>= charAt ',' >>= numAt (lrWheelRight r)
+  >>= litAt "],\"v\":"# >>= numAt (lrSpeed r) >>= litAt ",\"omega\":"# >>= numAt (lrRotVel r)
+  >>= (if lrBumper r then litAt ",\"bumper\":true"# else litAt ",\"bumper\":false"#)
+  >>= litAt ",\"range\":["#
+
+-- A robot's members after its battery, to the opening bracket of
+-- @messages@: 37 bytes of constants and 3 numbers.
+robotTail :: P.BoundedPrim LogRobot
+robotTail = boundedPrim (37 + 3 * 32) $ \r op ->
+  litAt ",\"charge\":"# op >>= numAt (lrCharge r)
+  >>= litAt ",\"odometry\":["# >>= numAt (lrOdoX r) >>= charAt ',' >>= numAt (lrOdoY r)
+  >>= litAt "],\"messages\":["#
+
+-- A seen robot after its type: its number, bearing and distance, and the
+-- closing bracket.
+seenRest :: P.BoundedPrim (String, Int, Double, Double)
+seenRest = boundedPrim (4 + 3 * 32) $ \(_, i, a, d) op ->
+  charAt ',' op >>= numAt (fromIntegral i) >>= charAt ',' >>= numAt a >>= charAt ',' >>= numAt d
+  >>= charAt ']'
+
+-- A pair of numbers in brackets, and the same after a comma.
+pairPrim, commaPair :: P.BoundedPrim (Double, Double)
+pairPrim = boundedPrim (3 + 2 * 32) $ \(x, y) op ->
+  charAt '[' op >>= numAt x >>= charAt ',' >>= numAt y >>= charAt ']'
+commaPair = boundedPrim (4 + 2 * 32) $ \p op -> charAt ',' op >>= runB pairPrim p
+
+-- A number after a comma.
+commaNumber :: P.BoundedPrim Double
+commaNumber = boundedPrim (1 + 32) $ \x op -> charAt ',' op >>= numAt x
+
+-- An ASCII literal's bytes (its length is a constant GHC folds), then the
+-- pointer after them.
+litAt :: Addr# -> Ptr Word8 -> IO (Ptr Word8)
+litAt a op = let n = I# (cstringLength# a) in copyBytes op (Ptr a) n >> pure (op `plusPtr` n)
+{-# INLINE litAt #-}
+
+-- One ASCII character.
+charAt :: Char -> Ptr Word8 -> IO (Ptr Word8)
+charAt c op = pokeByteOff op 0 (fromIntegral (fromEnum c) :: Word8) >> pure (op `plusPtr` 1)
+{-# INLINE charAt #-}
+
+-- A number ('numberPrim').
+numAt :: Double -> Ptr Word8 -> IO (Ptr Word8)
+numAt = runB numberPrim
+{-# INLINE numAt #-}
 
 -- | Parse one line's text ('parseJSON', then 'logLineFromJSON').
 decodeLogLine :: String -> Either String LogLine
