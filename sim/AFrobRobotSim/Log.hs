@@ -43,6 +43,7 @@ module AFrobRobotSim.Log
   , LogWriter
   , openLogWriter
   , writeLogState
+  , writeLogStateLine
   , closeLogWriter
   , logWriterFrames
     -- * Reading a log back
@@ -288,7 +289,13 @@ openLogWriter cfg path = do
 -- | Give the writer the next step's state (call it for every step, the
 -- first at time 0); it writes a frame line when the step is a frame's.
 writeLogState :: LogWriter -> WorldState -> IO ()
-writeLogState (LogWriter cfg h ref) s = do
+writeLogState w s = () <$ writeLogStateLine w s
+
+-- | 'writeLogState', giving back the frame line it wrote (without its
+-- newline), if the step is a frame's: for a writer of the same frames
+-- that need not encode them again ('AFrobRobotSim.Replay.recordReplayStateWith').
+writeLogStateLine :: LogWriter -> WorldState -> IO (Maybe BC.ByteString)
+writeLogStateLine (LogWriter cfg h ref) s = do
   (st, k) <- readIORef ref
   let (st', mf) = logStep cfg st s
   case mf of
@@ -298,7 +305,8 @@ writeLogState (LogWriter cfg h ref) s = do
       -- for the line to be written, so an interrupted run's log reads back
       let k' = k + 1
       uninterruptibleMask_ (BC.hPutStrLn h line >> hFlush h >> (k' `seq` writeIORef ref (st', k')))
-    Nothing -> st' `seq` writeIORef ref (st', k)
+      pure (Just line)
+    Nothing -> Nothing <$ (st' `seq` writeIORef ref (st', k))
 
 -- | How many frame lines the writer has written.
 logWriterFrames :: LogWriter -> IO Int

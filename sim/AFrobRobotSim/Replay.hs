@@ -34,6 +34,7 @@ module AFrobRobotSim.Replay
   , ReplayRecorder
   , newReplayRecorder
   , recordReplayState
+  , recordReplayStateWith
   , writeReplay
   ) where
 
@@ -152,11 +153,22 @@ newReplayRecorder cfg = do
 -- | Give the recorder the next step's state (every step, the first at
 -- time 0).
 recordReplayState :: ReplayRecorder -> WorldState -> IO ()
-recordReplayState (ReplayRecorder cfg _ h ref) s = do
+recordReplayState r = recordReplayStateWith r Nothing
+
+-- | 'recordReplayState', given the frame line that a writer of the same
+-- frames made of this state, if any: a run log's
+-- ('AFrobRobotSim.Log.writeLogStateLine') whose 'LogConfig' is the
+-- recorder's (the same frame rate: a page that keeps every frame period).
+-- The recorder then writes that line instead of encoding its frame again
+-- (at 1000 robots the encoding costs several times the step); the page is
+-- the same. With 'Nothing', or at a step that is not a frame's, it is
+-- 'recordReplayState'.
+recordReplayStateWith :: ReplayRecorder -> Maybe BC.ByteString -> WorldState -> IO ()
+recordReplayStateWith (ReplayRecorder cfg _ h ref) made s = do
   Recording st n hash <- readIORef ref
   case logStep cfg st s of
     (st', Just f)  -> do
-      !bytes <- evaluate (encodeLogLineBytes (LineFrame f))
+      !bytes <- maybe (evaluate (encodeLogLineBytes (LineFrame f))) pure made
       let !hash' = fnvBytes hash bytes
       -- a whole line or none, whatever the moment of a Ctrl-C
       uninterruptibleMask_ (BC.hPutStrLn h bytes >> writeIORef ref (Recording st' (n + 1) hash'))

@@ -331,6 +331,14 @@ svgSink every (style, scene) file = do
 logSink :: LogWriter -> Sink
 logSink w = Sink (const (writeLogState w)) (\summary -> attempt "the log" Nothing (closeLogWriter w summary))
 
+-- The run log and a replay page of the same frames ('logSink' then
+-- 'replaySink', as two sinks would be), each frame encoded once: the page
+-- records the line the log wrote.
+logAndReplaySink :: LogWriter -> String -> ReplayRecorder -> FilePath -> Sink
+logAndReplaySink w note r file = Sink
+  (\_ s -> writeLogStateLine w s >>= \line -> recordReplayStateWith r line s)
+  (\summary -> (<>) <$> sinkFinish (logSink w) summary <*> sinkFinish (replaySink note r file) summary)
+
 -- The replay page, written at the end from the recorder's temporary file
 -- (constant memory; the page grows with the run's length, about 70 kB per
 -- simulated second of the default world); @note@ follows its \"wrote\"
@@ -408,7 +416,12 @@ simulateRun prog opts ffmpeg world rcA rcB = do
   result <- forM (optResult opts) (resultSink prog opts)
   let sinks = [ messagesSink | not (optQuiet opts) ]
               ++ [ progressSink nSteps framesRef | tty, not (optQuiet opts) ]
-              ++ catMaybes [ logSink <$> mlog, replaySink thinNote <$> mrec <*> optReplay opts, frames, svg, result ]
+              ++ catMaybes (logAndReplay ++ [ frames, svg, result ])
+      -- the log and the page, which share each frame's line when the page
+      -- keeps every frame period (the same frames)
+      logAndReplay = case (mlog, (,) <$> mrec <*> optReplay opts) of
+        (Just w, Just (r, file)) | replayThin == 1 -> [ Just (logAndReplaySink w thinNote r file) ]
+        (ml, mr) -> [ logSink <$> ml, uncurry (replaySink thinNote) <$> mr ]
       loop !_ [] = pure Finished
       loop !n (s : rest) = do
         _ <- evaluate (forceState s)

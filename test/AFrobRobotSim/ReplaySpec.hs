@@ -2,6 +2,7 @@
 module AFrobRobotSim.ReplaySpec (spec) where
 
 import qualified Data.ByteString          as BS
+import qualified Data.ByteString.Char8    as BC
 import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf, tails)
 import           System.Directory         (getTemporaryDirectory, listDirectory, removeFile)
 import           System.FilePath          (splitFileName, (</>))
@@ -86,6 +87,34 @@ spec = do
       written `shouldBe` page
       spoolsAfter <- spools
       spoolsAfter `shouldBe` spoolsBefore
+
+  describe "recordReplayStateWith" $ do
+    let summary = LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing []
+        pageOf :: (ReplayRecorder -> IO ()) -> IO String
+        pageOf record = do
+          tmp <- getTemporaryDirectory
+          rec <- newReplayRecorder fixtureConfig
+          record rec
+          (path, h) <- openTempFile tmp "afrp-replay.html"
+          hClose h
+          writeReplay rec summary path
+          written <- readFile path
+          length written `seq` removeFile path
+          pure written
+    it "records the same page from the lines a run log of the same frames wrote (fixed)" $ do
+      tmp <- getTemporaryDirectory
+      (logPath, lh) <- openTempFile tmp "afrp-log.jsonl"
+      hClose lh
+      w <- openLogWriter fixtureConfig logPath
+      written <- pageOf (\rec -> mapM_ (\s -> writeLogStateLine w s >>= \l -> recordReplayStateWith rec l s) fixtureStates)
+      closeLogWriter w summary
+      removeFile logPath
+      written `shouldBe` page
+    it "writes the line it is given at a frame's step, not its own (fixed)" $ do
+      let marker = "{\"kind\":\"frame\",\"marker\":1}"
+      written <- pageOf (\rec -> mapM_ (recordReplayStateWith rec (Just (BC.pack marker))) fixtureStates)
+      occurrences marker written `shouldBe` length (rlFrames fixtureLog)
+      occurrences "\"kind\":\"frame\"" written `shouldBe` length (rlFrames fixtureLog)
 
   describe "writeReplayFromLog" $ do
     it "turns a log file into the same page (fixed)" $ do
