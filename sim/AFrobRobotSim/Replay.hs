@@ -160,8 +160,8 @@ recordReplayState r = recordReplayStateWith r Nothing
 -- ('AFrobRobotSim.Log.writeLogStateLine') whose 'LogConfig' is the
 -- recorder's (the same frame rate: a page that keeps every frame period).
 -- The recorder then writes that line instead of encoding its frame again
--- (at 1000 robots the encoding costs several times the step); the page is
--- the same. With 'Nothing', or at a step that is not a frame's, it is
+-- (at 1000 robots a frame's encoding costs several times the step it
+-- shows); the page is the same. With 'Nothing', or at a step that is not a frame's, it is
 -- 'recordReplayState'.
 recordReplayStateWith :: ReplayRecorder -> Maybe BC.ByteString -> WorldState -> IO ()
 recordReplayStateWith (ReplayRecorder cfg _ h ref) made s = do

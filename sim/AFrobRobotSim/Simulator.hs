@@ -352,7 +352,7 @@ stepEvery ready agents robots stepOne planOne
     -- on one capability, chunks of 'seqChunk' robots, each computed when
     -- the first of its elements is needed
     inOrder = cut seqChunk 0 agents robots (drop 1 inOrder)
-    -- Chunks of @size@ consecutive robots. Each chunk's lists end with the
+    -- Chunks of @k@ consecutive robots. Each chunk's lists end with the
     -- next chunk's (as shared), so the chunks joined are the first one's
     -- lists: no list is copied to cut them apart or to join them.
     cut !k !i as rs nexts

@@ -247,9 +247,9 @@ frameBuilder f =
     score (k, n) = strB k <> B.char7 ':' <> intB n
     -- A robot: its members up to the range finders' readings as one
     -- bounded write, the lists as loops of bounded writes, and the
-    -- members between and after them likewise (a builder piece for each
-    -- number and constant allocated and cost more than the digits: 56,000
-    -- instructions a robot-frame at 1000 robots, most of the page's cost)
+    -- members between and after them likewise. (With a builder piece for
+    -- each number and constant, each allocated, a replay page of 1000
+    -- robots cost 53,900 instructions a robot-frame; 48,100 so.)
     robot r =
       P.primBounded robotHead r <> numbers (lrRange r)
       <> lit "],\"seenRobots\":[" <> commas seen (lrSeenRobots r)
@@ -285,9 +285,9 @@ robotHead = boundedPrim (73 + 7 * 32) $ \r op ->
   >>= litAt ",\"range\":["#
 
 -- A robot's members after its battery, to the opening bracket of
--- @messages@: 37 bytes of constants and 3 numbers.
+-- @messages@: 38 bytes of constants and 3 numbers.
 robotTail :: P.BoundedPrim LogRobot
-robotTail = boundedPrim (37 + 3 * 32) $ \r op ->
+robotTail = boundedPrim (38 + 3 * 32) $ \r op ->
   litAt ",\"charge\":"# op >>= numAt (lrCharge r)
   >>= litAt ",\"odometry\":["# >>= numAt (lrOdoX r) >>= charAt ',' >>= numAt (lrOdoY r)
   >>= litAt "],\"messages\":["#
