@@ -235,25 +235,34 @@ spec = do
                                  `mrMerge` tcoPrintMessage (tag ping (show (rfRight sbi, near, take 1 (aotBalls sbi), tciKey sbi))))
         cfg = defaultSimConfig { simOdometryNoise = 0.02, simSeed = 7, simKeys = [(0.5, 'a'), (1.5, 'b')] }
         withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
+        -- the text of a run's first snapshots, on one capability and on two
+        -- (each run made anew: the argument keeps it from being shared)
+        onOneAndTwo c world n = do
+          let run _ = show (take n (simulateWith c world sensing sensing))
+          one <- withCaps 1 (let r = run (1 :: Int) in evaluate (length r) >> pure r)
+          two <- withCaps 2 (let r = run (2 :: Int) in evaluate (length r) >> pure r)
+          pure (one, two)
+        -- the failure of a run whose robots with the given numbers fail
+        -- from t = 1, on k capabilities: its robot and time
+        firstFailure :: SimConfig -> WorldTemplate -> [RobotId] -> Int -> IO (Maybe (RobotType, RobotId, Time))
+        firstFailure c world ids k = do
+          let failing rps = proc sbi -> do
+                t <- localTime -< ()
+                o <- sensing rps -< sbi
+                returnA -< if t >= 1 && rpId rps `elem` ids then error "boom" else o
+          r <- withCaps k (try (evaluate (length (show (take 200 (simulateWith c world failing failing))))))
+          pure (either (\e -> Just (ceRobotType e, ceRobotId e, ceTime e)) (const Nothing) (r :: Either ControllerError Int))
     it "gives the same snapshots, bit for bit, on one capability and on two" $ do
-      let run _ = show (take 400 (simulateWith cfg crowd sensing sensing))
-      one <- withCaps 1 (let r = run (1 :: Int) in evaluate (length r) >> pure r)
-      two <- withCaps 2 (let r = run (2 :: Int) in evaluate (length r) >> pure r)
+      (one, two) <- onOneAndTwo cfg crowd 400
       length two `shouldBe` length one
       two `shouldBe` one
       length (concatMap wsMessages (take 400 (simulateWith cfg crowd sensing sensing))) `shouldSatisfy` (> 400)
     it "reports the failing controller that comes first in template order, as on one core" $ do
-      let failing rps = proc sbi -> do
-            t <- localTime -< ()
-            o <- sensing rps -< sbi
-            returnA -< if t >= 1 && rpId rps `elem` [9, 27] then error "boom" else o
-          failure k = withCaps k (try (evaluate (length (show (take 200 (simulateWith cfg crowd failing failing))))))
-      one <- failure 1
-      two <- failure 2
-      let described = either (\e -> Just (ceRobotType e, ceRobotId e, ceTime e)) (const Nothing)
-      described one `shouldBe` Just ("SimbotA", 9, 1)
+      one <- firstFailure cfg crowd [9, 27] 1
+      two <- firstFailure cfg crowd [9, 27] 2
+      one `shouldBe` Just ("SimbotA", 9, 1)
       withCaps 2 ((> 1) <$> getNumCapabilities) `shouldReturn` True
-      described two `shouldBe` described one
+      two `shouldBe` one
 
     -- 130 robots over a 20 m world: on one capability they are stepped
     -- in chunks of 64 (the 60 above are stepped all at once), on two in
@@ -264,9 +273,7 @@ spec = do
                | k <- [0 .. 129 :: Int] ]
         big = cfg { simBounds = Bounds (-10) (-10) 10 10 }
     it "gives the same snapshots on one capability, where many robots are stepped in chunks, as on two" $ do
-      let run _ = show (take 250 (simulateWith big many sensing sensing))
-      one <- withCaps 1 (let r = run (1 :: Int) in evaluate (length r) >> pure r)
-      two <- withCaps 2 (let r = run (2 :: Int) in evaluate (length r) >> pure r)
+      (one, two) <- onOneAndTwo big many 250
       length two `shouldBe` length one
       two `shouldBe` one
       let final = wsRobots (last (take 250 (simulateWith big many sensing sensing)))
@@ -275,16 +282,10 @@ spec = do
     it "reports the failing controller that comes first in template order when many robots are stepped in chunks" $ do
       -- SimbotA 11 is the 21st robot (the first chunk), SimbotA 51 the
       -- 101st (the second)
-      let failing rps = proc sbi -> do
-            t <- localTime -< ()
-            o <- sensing rps -< sbi
-            returnA -< if t >= 1 && rpId rps `elem` [51, 11] then error "boom" else o
-          failure k = withCaps k (try (evaluate (length (show (take 200 (simulateWith big many failing failing))))))
-          described = either (\e -> Just (ceRobotType e, ceRobotId e, ceTime e)) (const Nothing)
-      one <- failure 1
-      two <- failure 2
-      described one `shouldBe` Just ("SimbotA", 11, 1)
-      described two `shouldBe` described one
+      one <- firstFailure big many [51, 11] 1
+      two <- firstFailure big many [51, 11] 2
+      one `shouldBe` Just ("SimbotA", 11, 1)
+      two `shouldBe` one
 
     it "leaves the positions before a failing step readable, and fails its messages, with any number of robots and capabilities" $ do
       let boom _ = arr (\_ -> error "boom") :: SF SimbotInput SimbotOutput
