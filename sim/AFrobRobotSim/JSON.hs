@@ -125,11 +125,9 @@ shortString = 64
 quotedPrim :: P.BoundedPrim String
 quotedPrim = boundedPrim (shortString + 2) $ \str op -> do
   byte op 0 34
-  let go p (c : cs) = byte p 0 (fromIntegral (ord c)) >> go (p `plusPtr` 1) cs
-      go p []       = byte p 0 34 >> pure (p `plusPtr` 1)
-  go (op `plusPtr` 1) str
-  where byte :: Ptr Word8 -> Int -> Word8 -> IO ()
-        byte = pokeByteOff
+  p <- chars (op `plusPtr` 1) str
+  byte p 0 34
+  pure (p `plusPtr` 1)
 
 -- | A number's JSON text: @null@ for NaN and the infinities; integral
 -- values of magnitude below 10^15 without a fraction; whole numbers of
@@ -193,8 +191,6 @@ writeNumber x op
     digitsOf :: Int -> Int
     digitsOf k | k < 10    = 1
                | otherwise = 1 + digitsOf (k `quot` 10)
-    byte :: Ptr Word8 -> Int -> Word8 -> IO ()
-    byte = pokeByteOff
     -- a minus sign if asked, then what @k@ writes after it
     signed :: Ptr Word8 -> Bool -> (Ptr Word8 -> IO (Ptr Word8)) -> IO (Ptr Word8)
     signed p neg k | neg       = byte p 0 45 >> k (p `plusPtr` 1)
@@ -207,10 +203,15 @@ writeNumber x op
           let (q, r) = k `quotRem` 10
           byte p (n - 1) (fromIntegral (48 + r))
           decimal p (n - 1) q
-    -- ASCII characters, at @p@
-    chars :: Ptr Word8 -> String -> IO (Ptr Word8)
-    chars p []       = pure p
-    chars p (c : cs) = byte p 0 (fromIntegral (fromEnum c)) >> chars (p `plusPtr` 1) cs
+
+-- A byte at an offset from a pointer.
+byte :: Ptr Word8 -> Int -> Word8 -> IO ()
+byte = pokeByteOff
+
+-- ASCII characters at a pointer, then the pointer after them.
+chars :: Ptr Word8 -> String -> IO (Ptr Word8)
+chars p []       = pure p
+chars p (c : cs) = byte p 0 (fromIntegral (fromEnum c)) >> chars (p `plusPtr` 1) cs
 
 -- | A string's JSON text, quotes included (see the module documentation).
 encodeString :: String -> String

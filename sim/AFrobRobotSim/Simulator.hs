@@ -333,15 +333,12 @@ stepEvery :: () -> [Agent] -> [Robot]
           -> (Double -> Robot -> DriveCommand -> Plan)
           -> ((), [SimbotOutput], [Agent], [(Robot, Plan)])
 stepEvery ready agents robots stepOne planOne
-  | caps <= 1 && not (null (drop seqChunk robots)) =
-      let c = joined inOrder in ((), chunkOutputs c, chunkAgents c, chunkPlans c)
-  | caps <= 1 || n < 2 * minChunk =
-      let c = stepRun 0 maxBound agents robots [] [] [] in ((), chunkOutputs c, chunkAgents c, chunkPlans c)
-  | otherwise = ( started
-                , started `pseq` chunkOutputs (joined shared)
-                , started `pseq` chunkAgents (joined shared)
-                , started `pseq` chunkPlans (joined shared) )
+  | caps <= 1 && not (null (drop seqChunk robots)) = lists () (joined inOrder)
+  | caps <= 1 || n < 2 * minChunk = lists () (stepRun 0 maxBound agents robots [] [] [])
+  | otherwise = lists started (joined shared)
   where
+    -- the start and the lists of the chunks joined, each list after the start
+    lists s c = (s, s `pseq` chunkOutputs c, s `pseq` chunkAgents c, s `pseq` chunkPlans c)
     -- the workers given the chunks (once @ready@)
     started = ready `pseq` shared `pseq` ()
     n    = length robots

@@ -229,7 +229,7 @@ frameBuilder :: LogFrame -> B.Builder
 frameBuilder f =
   lit "{\"kind\":\"frame\",\"t\":" <> numB (lfTime f)
   <> lit ",\"robots\":[" <> commas robot (lfRobots f)
-  <> lit "],\"balls\":[" <> commas pair (lfBalls f)
+  <> lit "],\"balls\":[" <> pairs (lfBalls f)
   <> lit "],\"scores\":{" <> commas score (lfScores f)
   <> lit "},\"events\":[" <> commas event (lfEvents f)
   <> lit "],\"console\":[" <> commas strB (lfConsole f)
@@ -243,7 +243,6 @@ frameBuilder f =
     comma = B.char7 ','
     commas _ []       = mempty
     commas g (x : xs) = g x <> foldr (\y acc -> comma <> g y <> acc) mempty xs
-    pair (x, y) = B.char7 '[' <> numB x <> comma <> numB y <> B.char7 ']'
     score (k, n) = strB k <> B.char7 ':' <> intB n
     -- A robot: its members up to the range finders' readings as one
     -- bounded write, the lists as loops of bounded writes, and the
