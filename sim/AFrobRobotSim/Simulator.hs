@@ -333,12 +333,13 @@ stepEvery :: () -> [Agent] -> [Robot]
           -> (Double -> Robot -> DriveCommand -> Plan)
           -> ((), [SimbotOutput], [Agent], [(Robot, Plan)])
 stepEvery ready agents robots stepOne planOne
-  | caps <= 1 && not (null (drop seqChunk robots)) = lists () (joined inOrder)
+  | caps <= 1 && not (null (drop seqChunk robots)) = lists () (firstChunk () inOrder)
   | caps <= 1 || n < 2 * minChunk = lists () (stepRun 0 maxBound agents robots [] [] [])
-  | otherwise = lists started (joined shared)
+  | otherwise = lists started (firstChunk started shared)
   where
-    -- the start and the lists of the chunks joined, each list after the start
-    lists s c = (s, s `pseq` chunkOutputs c, s `pseq` chunkAgents c, s `pseq` chunkPlans c)
+    -- the start and the lists of the chunks joined (each list after the
+    -- start, which 'firstChunk' takes)
+    lists s c = (s, chunkOutputs c, chunkAgents c, chunkPlans c)
     -- the workers given the chunks (once @ready@)
     started = ready `pseq` shared `pseq` ()
     n    = length robots
@@ -356,11 +357,9 @@ stepEvery ready agents robots stepOne planOne
       | null as || null rs = []
       | otherwise = let rest = cut k (i + k) (drop k as) (drop k rs) (drop 1 nexts)
                         -- (lazily: the next chunk is not computed yet)
-                        next = joined nexts
+                        next = firstChunk () nexts
                     in stepRun i k as rs (chunkOutputs next) (chunkAgents next) (chunkPlans next)
                          : rest
-    joined (c : _) = c
-    joined []      = Chunk [] [] []
     -- Strict loops: a step needs every element, and lazy zips would build
     -- a thunk per robot and list. A chunk's lists end with @tailO@,
     -- @tailA@ and @tailP@.
@@ -378,6 +377,19 @@ stepEvery ready agents robots stepOne planOne
 data Chunk = Chunk { chunkOutputs :: [SimbotOutput]
                    , chunkAgents  :: [Agent]
                    , chunkPlans   :: [(Robot, Plan)] }
+
+-- @firstChunk s cs@: the first chunk of @cs@ (an empty one if none),
+-- after @s@; so the chunks joined are the first one's lists. Not inlined,
+-- so that a chunk's lists are selections from one shared value
+-- (@chunkAgents next@), which the collector replaces by the list selected
+-- once the value is computed: inlined, each was a closure over the rest of
+-- the chunks, and kept every chunk of the step (its plans and outputs
+-- included) alive until the step's end.
+firstChunk :: () -> [Chunk] -> Chunk
+firstChunk s cs = s `pseq` case cs of
+  c : _ -> c
+  []    -> Chunk [] [] []
+{-# NOINLINE firstChunk #-}
 
 -- The fewest robots whose steps are handed to a worker together: 16
 -- (handing one over costs about as much as a robot's step; with the 100
