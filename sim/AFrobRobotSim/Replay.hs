@@ -40,10 +40,13 @@ module AFrobRobotSim.Replay
 
 import qualified Data.ByteString.Char8     as BC
 import           Data.Bits                 (xor)
-import           Data.Char                 (ord)
 import           Data.IORef
 import           Data.List                 (foldl', intercalate)
-import           Data.Word                 (Word64)
+import           Data.Word                 (Word64, Word8, byteSwap64)
+import           Foreign.Storable          (peekByteOff)
+import qualified Data.ByteString.Internal  as BU (accursedUnutterablePerformIO)
+import qualified Data.ByteString.Unsafe    as BU (unsafeUseAsCStringLen)
+import           GHC.ByteOrder             (ByteOrder (..), targetByteOrder)
 import           Numeric                   (showHex)
 import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
 import           Control.Monad             (unless)
@@ -102,14 +105,32 @@ replayPageParts nonce = (concat
   , concat [ "]\n</script>\n"
            , "<script nonce=\"", nonce, "\">\n", replayScript, "</script>\n</body>\n</html>\n" ])
 
--- The page's nonce depends on its data, so that pages differ: an FNV-1a
--- hash of the log's lines, one after the other.
+-- The page's nonce depends on its data, so that pages differ: a hash of
+-- the log's lines, one after the other, each line's bytes taken eight at
+-- a time (FNV-1a's step on 64-bit little-endian words, then on its last
+-- bytes one by one). A byte at a time, it cost about 11 instructions a
+-- byte, a tenth of a 1000-robot page's cost; a word at a time, it costs
+-- well under one.
 fnv :: Word64 -> String -> Word64
-fnv = foldl' (\h c -> (h `xor` fromIntegral (ord c)) * 1099511628211)
+fnv h = fnvBytes h . BC.pack
 
 -- 'fnv' of a line's bytes (ASCII: the same as of its characters).
 fnvBytes :: Word64 -> BC.ByteString -> Word64
-fnvBytes = BC.foldl' (\h c -> (h `xor` fromIntegral (ord c)) * 1099511628211)
+fnvBytes h0 bs = BU.accursedUnutterablePerformIO $ BU.unsafeUseAsCStringLen bs $ \(p, n) ->
+  let mix h w = (h `xor` w) * 1099511628211
+      words8 !h !i
+        | i + 8 <= n = peekByteOff p i >>= \w -> words8 (mix h (fromLE w)) (i + 8)
+        | otherwise  = bytes1 h i
+      bytes1 !h !i
+        | i < n     = peekByteOff p i >>= \b -> bytes1 (mix h (fromIntegral (b :: Word8))) (i + 1)
+        | otherwise = pure h
+  in words8 h0 0
+  where
+    -- (the words as little-endian numbers on any machine)
+    fromLE :: Word64 -> Word64
+    fromLE = case targetByteOrder of
+      LittleEndian -> id
+      BigEndian    -> byteSwap64
 
 fnvBasis :: Word64
 fnvBasis = 14695981039346656037

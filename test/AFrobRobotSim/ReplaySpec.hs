@@ -59,6 +59,23 @@ spec = do
       mapM_ (\i -> page `shouldSatisfy` (("id=\"" ++ i ++ "\"") `isInfixOf`))
         ["world", "play", "back", "fwd", "slider", "speed", "rays", "trails", "sightings", "info", "time"]
 
+  describe "the page's nonce" $ do
+    -- (lines of lengths about the hash's eight-byte words: a character in
+    -- a whole word and one in the bytes after the last are both hashed)
+    let lns = [ take k (cycle "{\"kind\":\"frame\",\"t\":0.04}") | k <- [0, 1, 7, 8, 9, 15, 16, 17, 23] ]
+        pageNonce = takeWhile (/= '\'') . drop (length "nonce-") . head . filter ("nonce-" `isPrefixOf`) . tails
+        nonceOf = pageNonce . replayPageFromLines
+        changed = [ take i lns ++ [l'] ++ drop (i + 1) lns
+                  | (i, l) <- zip [0 :: Int ..] lns, j <- [0 .. length l - 1]
+                  , let l' = take j l ++ [if l !! j == 'x' then 'y' else 'x'] ++ drop (j + 1) l ]
+    it "changes with any one character of any line" $ do
+      length changed `shouldBe` 96
+      filter ((== nonceOf lns) . nonceOf) changed `shouldBe` []
+    it "is the same from the lines' texts as from the log's records" $
+      nonceOf (map encodeLogLine (LineHeader (rlHeader fixtureLog) : map LineFrame (rlFrames fixtureLog)
+                                   ++ maybe [] ((: []) . LineSummary) (rlSummary fixtureLog)))
+        `shouldBe` pageNonce page
+
   describe "the page of the default world's 30-second run" $
     it "stays under 3 MB, and its log reads back (fixed)" $ do
       let cfg = defaultLogConfig { lcWorld = defaultWorld, lcDt = 0.01, lcFps = 25 }
