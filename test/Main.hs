@@ -62,6 +62,7 @@ import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified AFrobRobotSim.WorldSpec
 import qualified AFrobRobotSim.WorkersSpec
+import qualified AFrobRobotSim.PipelineSpec
 import qualified NetworksSpec
 import qualified SwarmSpec
 import qualified Ported.BouncingBallSpec
@@ -128,6 +129,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec
   describe "AFrobRobotSim.World" AFrobRobotSim.WorldSpec.spec
   describe "AFrobRobotSim.Workers" AFrobRobotSim.WorkersSpec.spec
+  describe "AFrobRobotSim.Pipeline" AFrobRobotSim.PipelineSpec.spec
   describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec
   describe "AFrobRobotSim.Run"       AFrobRobotSim.RunSpec.spec
   describe "AFrobRobotSim.Sweep"     AFrobRobotSim.SweepSpec.spec

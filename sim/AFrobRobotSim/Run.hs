@@ -41,11 +41,20 @@
 -- itself grows with the run (about 70 kB per simulated second of the
 -- default world): leave it out (@--no-replay@) for very long runs and
 -- write a log instead.
+--
+-- On several capabilities (@+RTS -N2@) the sinks take the states on a
+-- thread of their own ("AFrobRobotSim.Pipeline"), while the stepping
+-- thread computes the next ones; a few batches of states at most wait
+-- between them. The sinks take the same states in the same order, and a
+-- failing write, a failing controller or Ctrl-C stops the run at the same
+-- step, as on one capability (where one loop does both): the outputs are
+-- the same, byte for byte.
 module AFrobRobotSim.Run
   ( runSim
   , runSimWith
   ) where
 
+import           Control.Concurrent        (getNumCapabilities)
 import           Control.Exception         (AsyncException (UserInterrupt), Exception (..), IOException, catch,
                                             evaluate, throwIO, try)
 import           Control.Monad             (forM, unless, when)
@@ -70,6 +79,7 @@ import           AFrob.Dimensions          (Position2)
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
+import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.JSON        (encodeJSON)
 import           AFrobRobotSim.Replay
@@ -422,17 +432,35 @@ simulateRun prog opts ffmpeg world rcA rcB = do
       logAndReplay = case (mlog, (,) <$> mrec <*> optReplay opts) of
         (Just w, Just (r, file)) | replayThin == 1 -> [ Just (logAndReplaySink w thinNote r file) ]
         (ml, mr) -> [ logSink <$> ml, uncurry (replaySink thinNote) <$> mr ]
+      sinkAll n s = do
+        mapM_ (\k -> sinkStep k n s) sinks
+        writeIORef stepsRef $! n + 1
       loop !_ [] = pure Finished
       loop !n (s : rest) = do
         _ <- evaluate (forceState s)
-        mapM_ (\k -> sinkStep k n s) sinks
-        writeIORef stepsRef $! n + 1
+        sinkAll n s
         loop (n + 1) rest
-  ending <- ((loop 0 states `catch` \e -> case e of
-                     UserInterrupt -> pure Interrupted
-                     _             -> throwIO e)
-             `catch` (pure . Failed))
-            `catch` (pure . WriteFailed)
+      nRobots = length [ () | o <- world, Just _ <- [robotKindOf o] ]
+  caps <- getNumCapabilities
+  ending <- if caps > 1 && not (null sinks)
+    -- on several capabilities the sinks take the states on a thread of
+    -- their own while the next steps are computed (the same states in the
+    -- same order: the same outputs)
+    then do
+      (produced, stopped) <- pipeline (batchFor nRobots) (\s -> () <$ evaluate (forceState s)) sinkAll states
+      case (stopped, produced) of
+        (Just e, _) | Just io <- fromException e -> pure (WriteFailed io)
+                    | otherwise                  -> throwIO e
+        (Nothing, Right ()) -> pure Finished
+        (Nothing, Left e)
+          | Just UserInterrupt <- fromException e -> pure Interrupted
+          | Just ce <- fromException e            -> pure (Failed ce)
+          | otherwise                             -> throwIO e
+    else ((loop 0 states `catch` \e -> case e of
+                UserInterrupt -> pure Interrupted
+                _             -> throwIO e)
+          `catch` (pure . Failed))
+         `catch` (pure . WriteFailed)
   when tty (hPutStr stderr "\r                         \r")
   steps <- readIORef stepsRef
   nFrames <- readIORef framesRef

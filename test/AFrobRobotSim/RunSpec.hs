@@ -3,7 +3,9 @@
 -- file round trip, every reported fault, determinism.
 module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 
-import           Control.Exception   (finally, try)
+import           Control.Exception   (bracket, finally, try)
+import           Control.Monad       (forM_)
+import           GHC.Conc            (getNumCapabilities, setNumCapabilities)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
 import           Control.Concurrent  (threadDelay)
@@ -12,7 +14,7 @@ import           System.Process      (CreateProcess (..), StdStream (..), create
 import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
-import           Data.List           (isInfixOf, isPrefixOf, sort, tails)
+import           Data.List           (isInfixOf, isPrefixOf, sort, stripPrefix, tails)
 import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
 import           Data.Char           (isPrint)
 import           System.Directory    (createDirectory, createFileLink, doesFileExist, listDirectory)
@@ -57,6 +59,31 @@ captured act = withTempDir $ \dir -> do
     readAll f = do
       s <- readFile f
       length s `seq` pure s
+
+-- | Run an action on @k@ capabilities.
+withCaps :: Int -> IO a -> IO a
+withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
+
+-- | A text with its wall-clock times blanked: the log's and the result's
+-- @"wallTime":@ numbers, the summary line's wall time and speed, and the
+-- page's nonce (a hash of its lines, the summary's included).
+blankWall :: String -> String
+blankWall s = case s of
+  [] -> []
+  _ | Just rest <- stripPrefix "\"wallTime\":" s -> "\"wallTime\":" ++ blankWall (dropWhile (`elem` "0123456789.e-") rest)
+    | Just rest <- stripPrefix "nonce-" s         -> "nonce-" ++ blankWall (dropWhile (/= '\'') rest)
+    | Just rest <- stripPrefix "nonce=\"" s       -> "nonce=\"" ++ blankWall (dropWhile (/= '"') rest)
+    | Just rest <- stripPrefix "frames, " s, (_ : _, r) <- span (`elem` "0123456789.") rest
+    , Just rest' <- stripPrefix " s wall time, " r -> "frames, " ++ blankWall (dropWhile (/= 'x') rest')
+  c : cs -> c : blankWall cs
+
+-- | Every occurrence of a string replaced by another.
+replaceAll :: String -> String -> String -> String
+replaceAll old new = go
+  where go t | null old = t
+        go t@(c : cs) | old `isPrefixOf` t = new ++ go (drop (length old) t)
+                      | otherwise          = c : go cs
+        go [] = []
 
 framesIn :: FilePath -> IO [BS.ByteString]
 framesIn dir = do
@@ -173,11 +200,12 @@ spec = do
       err `shouldSatisfy` ("cannot write to standard output" `isInfixOf`)
       err `shouldSatisfy` ("Bad file descriptor" `isInfixOf`)
       doesFileExist (dir </> "run.svg") `shouldReturn` True
-  describe "Ctrl-C" $
-    it "stops with exit code 130, the summary, whole frames, a log with its summary and the page" $ withTempDir $ \dir -> do
+  describe "Ctrl-C" $ forM_ [1, 2 :: Int] $ \caps ->
+    it ("stops with exit code 130, the summary, whole frames, a log with its summary and the page (+RTS -N"
+        ++ show caps ++ ")") $ withTempDir $ \dir -> do
       self <- getExecutablePath
       environment <- getEnvironment
-      (_, Just hout, _, ph) <- createProcess (proc self [])
+      (_, Just hout, _, ph) <- createProcess (proc self ["+RTS", "-N" ++ show caps, "-RTS"])
         { env = Just ((childVariable, "long:" ++ dir) : environment), create_group = True
         , std_out = CreatePipe, std_err = Inherit }
       let waitForFrames k = do
@@ -428,6 +456,46 @@ spec = do
       names <- listDirectory out
       filter (".tmp" `isInfixOf`) names `shouldBe` []
       length names `shouldBe` 4
+
+  describe "every core: the outputs written by a thread of their own (two capabilities)" $ do
+    let talk _ = localTime >>> arr (\t -> mrFinalize (ddVelDiff 0.7 0.9 `mrMerge` tcoPrintMessage
+                   (if t > 0.3 && t < 0.35 then Event ("at " ++ show t) else NoEvent)))
+        full dir = (quick (dir </> "f")) { optSeconds = 1.5, optQuiet = False, optTrails = True
+                                          , optSvg = Just (dir </> "run.svg"), optLog = Just (dir </> "run.jsonl")
+                                          , optReplay = Just (dir </> "run.html"), optResult = Just (dir </> "r.json") }
+        -- every output of a run, the wall-clock times (and the page's
+        -- nonce, a hash that includes them) blanked
+        outputs dir out = do
+          frames <- framesIn (dir </> "f")
+          texts <- mapM (fmap blankWall . readFile . (dir </>)) ["run.svg", "run.jsonl", "run.html", "r.json"]
+          pure (frames, texts, blankWall out)
+        twoRuns opts ctl = withTempDir $ \d1 -> withTempDir $ \d2 -> do
+          (o1, _, r1) <- withCaps 1 (captured (runSimWith (opts d1) (Just world) ctl drive))
+          (o2, _, r2) <- withCaps 2 (captured (runSimWith (opts d2) (Just world) ctl drive))
+          r2 `shouldBe` r1
+          a <- outputs d1 (replaceAll d1 "D" o1)
+          b <- outputs d2 (replaceAll d2 "D" o2)
+          pure (a, b, o2)
+    it "writes the same frames, SVG, log, page, result and console lines as one capability" $ do
+      ((f1, t1, o1), (f2, t2, o2), _) <- twoRuns full talk
+      length f1 `shouldBe` 38
+      (f2, t2, o2) `shouldBe` (f1, t1, o1)
+      o1 `shouldSatisfy` ("SimbotA.1: at 0.31" `isInfixOf`)
+    it "stops at the same state when a frame cannot be written" $ do
+      let blocked dir = (full dir) { optSvg = Nothing, optLog = Nothing, optReplay = Nothing, optResult = Nothing }
+      withTempDir $ \dir -> do
+        createDirectory (dir </> "f")
+        createDirectory (dir </> "f" </> "frame-000003.ppm")
+        (o, _, r) <- withCaps 2 (captured (runSimWith (blocked dir) (Just world) talk drive))
+        r `shouldBe` Left (ExitFailure 1)
+        o `shouldSatisfy` ("stopped: 0.11 s simulated in 12 steps, 3 frames" `isInfixOf`)
+        listDirectory (dir </> "f") >>= (`shouldBe` 4) . length
+    it "writes the same outputs as one capability when a controller fails" $ do
+      let bad _ = localTime >>> arr (\t -> mrFinalize (tcoPrintMessage
+                    (if t >= 0.5 then merge (Event "a") (Event "b") else NoEvent)))
+      ((f1, t1, o1), (f2, t2, o2), out) <- twoRuns full bad
+      (f2, t2, o2) `shouldBe` (f1, t1, o1)
+      out `shouldSatisfy` ("failed: 0.49 s simulated" `isInfixOf`)
 
   describe "the run log and the replay page" $ do
     it "--log and --replay with --no-frames: a log of every frame period and a page" $ withTempDir $ \dir -> do
