@@ -39,6 +39,9 @@ module AFrobRobotSim.JSON
   , stringBuilder
   , numberBuilder
   , numberPrim
+  , shortString
+  , isShortPlain
+  , shortStringPrim
     -- * Parsing
   , parseJSON
   , maxDepth
@@ -101,12 +104,18 @@ encodeJSONBuilder = go
 -- directly, without a 'JSON' value.
 stringBuilder :: String -> B.Builder
 stringBuilder str
-  | short 0 str   = P.primBounded quotedPrim str
-  | all plain str = B.char7 '"' <> B.string7 str <> B.char7 '"'
-  | otherwise     = B.string7 (encodeString str)
+  | isShortPlain str = P.primBounded shortStringPrim str
+  | all plain str    = B.char7 '"' <> B.string7 str <> B.char7 '"'
+  | otherwise        = B.string7 (encodeString str)
+
+-- | Whether a string is short and plain: at most 'shortString'
+-- characters, none of which needs an escape (in JSON or in a page). Such a
+-- string's JSON text is its characters in quotes, which
+-- 'shortStringPrim' writes in one bounded write (the usual string, a
+-- name or a type, is one).
+isShortPlain :: String -> Bool
+isShortPlain = short 0
   where
-    -- (the usual string, a name or a type, is short: in quotes in one
-    -- bounded write, rather than three builder pieces)
     short :: Int -> String -> Bool
     short n (c : cs) = n < shortString && plain c && short (n + 1) cs
     short _ []       = True
@@ -115,15 +124,16 @@ stringBuilder str
 plain :: Char -> Bool
 plain c = c >= ' ' && c < '\DEL' && c /= '"' && c /= '\\' && c /= '<' && c /= '>' && c /= '&'
 
--- The most characters of a string 'stringBuilder' writes in one bounded
--- write.
+-- | The most characters of a string 'stringBuilder' writes in one
+-- bounded write: 64.
 shortString :: Int
 shortString = 64
 
--- A string of at most 'shortString' characters that are all 'plain', in
--- quotes.
-quotedPrim :: P.BoundedPrim String
-quotedPrim = boundedPrim (shortString + 2) $ \str op -> do
+-- | The JSON text of a short plain string ('isShortPlain'): its
+-- characters in quotes, at most 'shortString' + 2 bytes. Only for such a
+-- string (a longer one would overrun the bound).
+shortStringPrim :: P.BoundedPrim String
+shortStringPrim = boundedPrim (shortString + 2) $ \str op -> do
   byte op 0 34
   p <- chars (op `plusPtr` 1) str
   byte p 0 34
@@ -156,24 +166,32 @@ numberPrim = boundedPrim 32 writeNumber
 writeNumber :: Double -> Ptr Word8 -> IO (Ptr Word8)
 writeNumber x op
   | not (abs x <= 1.7976931348623157e308) = chars op "null"      -- NaN, the infinities
-  | abs x < 1e15 && x == fromIntegral t =
-      signed op (t < 0) $ \op1 -> let n = digitsOf (abs t) in decimal op1 n (abs t) >> pure (op1 `plusPtr` n)
-  | abs x < 1e9 && x == fromIntegral m / 1e6 =
+  | abs x < 1e15 && x == fromIntegral t = do
+      op1 <- sign op (t < 0)
+      let a = abs t
+          n = digitsOf a
+      decimal op1 n a
+      pure (op1 `plusPtr` n)
+  | abs x < 1e9 && x == fromIntegral m / 1e6 = do
       -- a whole number of millionths, not a whole number: the digits of
       -- @m / 10^6@ exactly, without trailing zeros. (The decimal is
       -- exactly @m / 10^6@, and @x@ is the 'Double' nearest to it, since
       -- IEEE division of the exact @m@ by @10^6@ rounds to nearest: so it
       -- reads back as @x@.)
-      let (whole, frac) = abs m `quotRem` 1000000
-          -- the six places without their trailing zeros: the number they
-          -- spell, and how many places are left
-          (kept, places) = trim frac 6
-          n = digitsOf whole
-      in signed op (m < 0) $ \op1 -> do
-           decimal op1 n whole
-           byte (op1 `plusPtr` n) 0 46                                -- '.'
-           decimal (op1 `plusPtr` (n + 1)) places kept
-           pure (op1 `plusPtr` (n + 1 + places))
+      op1 <- sign op (m < 0)
+      let a      = abs m
+          whole  = a `quot` 1000000
+          frac   = a `rem` 1000000
+          -- the six places without their trailing zeros (at least one
+          -- place is kept): how many are left, and the number they spell
+          zeros  = trailingZeros frac 0
+          places = 6 - zeros
+          kept   = frac `quot` tenTo zeros
+          n      = digitsOf whole
+      decimal op1 n whole
+      byte (op1 `plusPtr` n) 0 46                                     -- '.'
+      decimal (op1 `plusPtr` (n + 1)) places kept
+      pure (op1 `plusPtr` (n + 1 + places))
   | otherwise = chars op (show x)
   where
     -- (evaluated only below the bounds above, where they are exact; a
@@ -185,16 +203,26 @@ writeNumber x op
     nearest y = let k = truncate y :: Int
                     d = y - fromIntegral k
                 in if d >= 0.5 then k + 1 else if d <= -0.5 then k - 1 else k
-    trim :: Int -> Int -> (Int, Int)
-    trim f p | p > 1 && f `rem` 10 == 0 = trim (f `quot` 10) (p - 1)
-             | otherwise                = (f, p)
+    -- (each a loop or a test on plain numbers: no closure or pair is
+    -- allocated for a number, of which a log writes some twenty a robot)
+    trailingZeros :: Int -> Int -> Int
+    trailingZeros f z | z < 5 && f `rem` 10 == 0 = trailingZeros (f `quot` 10) (z + 1)
+                      | otherwise                = z
+    tenTo :: Int -> Int
+    tenTo z = case z of
+      0 -> 1
+      1 -> 10
+      2 -> 100
+      3 -> 1000
+      4 -> 10000
+      _ -> 100000
     digitsOf :: Int -> Int
     digitsOf k | k < 10    = 1
                | otherwise = 1 + digitsOf (k `quot` 10)
-    -- a minus sign if asked, then what @k@ writes after it
-    signed :: Ptr Word8 -> Bool -> (Ptr Word8 -> IO (Ptr Word8)) -> IO (Ptr Word8)
-    signed p neg k | neg       = byte p 0 45 >> k (p `plusPtr` 1)
-                   | otherwise = k p
+    -- a minus sign if asked, and the pointer after it
+    sign :: Ptr Word8 -> Bool -> IO (Ptr Word8)
+    sign p neg | neg       = p `plusPtr` 1 <$ byte p 0 45
+               | otherwise = pure p
     -- the @n@ last decimal digits of @k@ (zeros first if it has fewer), at @p@
     decimal :: Ptr Word8 -> Int -> Int -> IO ()
     decimal p n k

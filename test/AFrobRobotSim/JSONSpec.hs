@@ -81,6 +81,16 @@ spec = do
                            txt = encodeNumber x
                        in (all (`notElem` "eE") txt, parseJSON txt) === (True, Right (JNumber x))
 
+    it "writes them as the shortest such decimal, digit for digit (property)" $
+      -- (below 10^9, as 'encodeNumber' writes them; some with trailing
+      -- zeros among the six places, some whole)
+      forAll (oneof [ choose (-1000000, 1000000), choose (-999999999999999, 999999999999999)
+                    , (* 1000) <$> choose (-999999999999, 999999999999) ]) $ \n ->
+        let x = fromIntegral (n :: Int) / 1e6 :: Double
+            (w, f) = abs n `quotRem` 1000000
+            places = reverse (dropWhile (== '0') (reverse (replicate (6 - length (show f)) '0' ++ show f)))
+        in encodeNumber x === (if n < 0 then "-" else "") ++ show w ++ (if f == 0 then "" else '.' : places)
+
   describe "parseJSON" $ do
     it "accepts whitespace and the escapes of RFC 8259 (fixed)" $
       parseJSON " { \"a\" : [1, -0.5e1, true, false, null, \"\\/\\b\\f\\u00e9\"] } \n"

@@ -27,23 +27,42 @@ text :: Gen String
 text = listOf (oneof [ arbitrary `suchThat` (\c -> ord c < 0xD800 || ord c > 0xDFFF)
                      , elements "\"\\/<>&\n\r\t\0\DEL\x2028\x1F600 abcxyz" ])
 
-robot :: Gen LogRobot
-robot = LogRobot <$> number <*> number <*> number <*> number <*> number <*> number <*> number
-                 <*> arbitrary <*> short number
-                 <*> short ((,,,) <$> text <*> arbitrary <*> number <*> number)
-                 <*> short ((,) <$> number <*> number)
-                 <*> text <*> number <*> number <*> number
-                 <*> short ((,) <$> number <*> text)
+-- | Plain text of at most 64 characters, as a simulator's robot types and
+-- battery states are, and some longer.
+plainText :: Gen String
+plainText = oneof [ elements ["SimbotA", "SimbotB", "high", "low", "critical", ""]
+                  , listOf (elements "abcxyz019 _-.:/")
+                  , (\k -> replicate k 'p') <$> elements [63, 64, 65] ]
+
+-- | A robot, its seen robots' types and its battery drawn from @names@.
+robotWith :: Gen String -> Gen LogRobot
+robotWith names =
+  LogRobot <$> number <*> number <*> number <*> number <*> number <*> number <*> number
+           <*> arbitrary <*> short number
+           <*> short ((,,,) <$> names <*> arbitrary <*> number <*> number)
+           <*> short ((,) <$> number <*> number)
+           <*> names <*> number <*> number <*> number
+           <*> short ((,) <$> number <*> text)
   where short g = resize 4 (listOf g)
 
-frame :: Gen LogFrame
-frame = LogFrame <$> number <*> resize 6 (listOf robot) <*> resize 4 (listOf ((,) <$> number <*> number))
+robot :: Gen LogRobot
+robot = robotWith text
+
+frameOf :: Gen LogRobot -> Gen LogFrame
+frameOf robots =
+  LogFrame <$> number <*> resize 6 (listOf robots) <*> resize 4 (listOf ((,) <$> number <*> number))
                  <*> resize 3 (listOf ((,) <$> text <*> arbitrary))
                  <*> resize 3 (listOf event) <*> resize 3 (listOf text)
   where event = LogEvent <$> number <*> text <*> oneof [pure Nothing, curry Just <$> text <*> arbitrary] <*> text
 
+frame :: Gen LogFrame
+frame = frameOf robot
+
 spec :: Spec
-spec = describe "encodeLogLineBytes" $
+spec = describe "encodeLogLineBytes" $ do
   it "writes a frame as encodeJSON writes its JSON value, character for character (property)" $
     forAll frame $ \f ->
+      encodeLogLineBytes (LineFrame f) === BC.pack (encodeJSON (logLineJSON (LineFrame f)))
+  it "and so with plain types and batteries, up to and beyond 64 characters (one write a robot) (property)" $
+    forAll (frameOf (robotWith plainText)) $ \f ->
       encodeLogLineBytes (LineFrame f) === BC.pack (encodeJSON (logLineJSON (LineFrame f)))
