@@ -1,3 +1,4 @@
+{-# LANGUAGE BangPatterns #-}
 -- |
 -- Module      : AFrobRobotSim.Log
 -- Description : The run log: JSON lines made from a simulation's states.
@@ -57,6 +58,7 @@ module AFrobRobotSim.Log
   ) where
 
 import           Control.Exception         (evaluate, uninterruptibleMask_)
+import           Control.Monad.ST          (runST)
 import qualified Data.ByteString.Char8     as BC
 import           Data.Char                 (isDigit)
 import           Data.IORef
@@ -70,6 +72,8 @@ import           AFRP.Geometry
 import           AFrob.Dimensions          (Position2, RobotId, RobotType)
 import           AFrobRobotSim.Arena       (Arena, arenaOf)
 import           AFrobRobotSim.Balls       (Ball (..))
+import           AFrobRobotSim.FlatArray   (DblArr, IntArr, freezeD, freezeI, indexD, indexI, newDblArr,
+                                            newIntArr, writeD, writeI)
 import           AFrobRobotSim.Log.Records
 import           AFrobRobotSim.Physics     (mkRobot)
 import           AFrobRobotSim.Robot
@@ -133,11 +137,38 @@ xy (Point2 x y) = (x, y)
 -- | What 'logStep' remembers between steps.
 data LogState = LogState
   { stStep    :: !Int
-  , stPrev    :: Maybe WorldState     -- the previous step's state
+  , stPrev    :: !(Maybe Prev)        -- what the events and a frame need of the previous step
   , stEvents  :: [LogEvent]           -- of the period so far, newest first
   , stLines   :: [String]             -- console lines of the period so far, newest first
   , stArena   :: Arena
   }
+
+-- What the next step needs of a step: each robot's heading and whether
+-- it is stuck (by robot number, in unboxed arrays), how many robots, and
+-- the scores. Not the state itself: kept until the next step, each
+-- state's robot records outlived a collection or two.
+data Prev = Prev
+  { pvHeading :: !DblArr
+  , pvStuck   :: !IntArr
+  , pvCount   :: {-# UNPACK #-} !Int
+  , pvScores  :: [(String, Int)]
+  }
+
+-- 'Prev' of a state, given its scores (evaluated to the last character).
+prevOf :: WorldState -> [(String, Int)] -> Prev
+prevOf s scores = forceScores `seq` runST (do
+  hs <- newDblArr (max 1 n)
+  ks <- newIntArr (max 1 n) 0
+  let fill !_ []       = pure ()
+      fill !i (r : rs) = do
+        writeD hs i (robotHeading r)
+        writeI ks i (if robotStuck r then 1 else 0)
+        fill (i + 1) rs
+  fill 0 (wsRobots s)
+  Prev <$> freezeD hs <*> freezeI ks <*> pure n <*> pure scores)
+  where
+    n = length (wsRobots s)
+    forceScores = foldr (\(k, v) acc -> foldr seq () k `seq` v `seq` acc) () scores
 
 -- | The state before the first step.
 logStart :: LogConfig -> LogState
@@ -159,9 +190,15 @@ logStep cfg st s
   | otherwise = (st', Nothing)
   where
     n       = stStep st
-    events  = newEvents cfg (stPrev st) s ++ stEvents st
+    scores  = lcScores cfg s
+    -- (the step's events and console lines made now, so that nothing
+    -- keeps the state: left lazy until the frame, they kept every state
+    -- of the frame period)
+    new     = newEvents (stPrev st) s scores
+    events  = foldr seq () new `seq` (new ++ stEvents st)
     lines'  = reverse (wsMessages s) ++ stLines st
-    st'     = st { stStep = n + 1, stPrev = Just s, stEvents = events, stLines = lines' }
+    st'     = events `seq` lines' `seq`
+              st { stStep = n + 1, stPrev = Just $! prevOf s scores, stEvents = events, stLines = lines' }
 
 -- | The frames of a list of states (every step, from time 0), lazily.
 logFrames :: LogConfig -> [WorldState] -> [LogFrame]
@@ -174,37 +211,36 @@ logFrames cfg = go (logStart cfg)
 
 -- Events from one step to the next (newest first): a robot that got
 -- stuck, a score that rose.
-newEvents :: LogConfig -> Maybe WorldState -> WorldState -> [LogEvent]
-newEvents _ Nothing _ = []
-newEvents cfg (Just p) s = reverse (bumps ++ scores)
+newEvents :: Maybe Prev -> WorldState -> [(String, Int)] -> [LogEvent]
+newEvents Nothing _ _ = []
+newEvents (Just p) s now = reverse (bumps ++ scores)
   where
     t = wsTime s
     bumps = [ LogEvent t "bump" (Just (robotType r, robotId r))
                 (robotType r ++ " " ++ show (robotId r) ++ " bumped into something")
-            | (r0, r) <- zip (wsRobots p) (wsRobots s), robotStuck r, not (robotStuck r0) ]
-    before = lcScores cfg p
+            | (i, r) <- zip [0 .. pvCount p - 1] (wsRobots s), robotStuck r, indexI (pvStuck p) i == 0 ]
     scores = [ LogEvent t "score" Nothing (k ++ " scores: " ++ show v)
-             | (k, v) <- lcScores cfg s, maybe True (< v) (lookup k before) , v > 0 ]
+             | (k, v) <- now, maybe True (< v) (lookup k (pvScores p)) , v > 0 ]
 
 frameOf :: LogConfig -> LogState -> WorldState -> [LogEvent] -> [String] -> LogFrame
 frameOf cfg st s events lines' = LogFrame
   { lfTime = roundTo 1e9 (wsTime s)
-  , lfRobots = zipWith3 robotOf [0 ..] (wsRobots s) prevRobots
+  , lfRobots = zipWith robotOf [0 ..] (wsRobots s)
   , lfBalls = [ (r6 x, r6 y) | (x, y) <- map xy (wsBalls s) ]
   , lfScores = lcScores cfg s
   , lfEvents = events
   , lfConsole = console }
   where
     (messagesOf, console) = linesByRobot [ (robotType r, robotId r) | r <- wsRobots s ] lines'
-    prevRobots = maybe (map Just (wsRobots s)) (map Just . wsRobots) (stPrev st) ++ repeat Nothing
     physical = [ mkRobot (kindOfType (robotType r)) (robotId r) (robotPos r) (robotHeading r)
                          (robotSpeed r) (robotStuck r) (robotCharge r) | r <- wsRobots s ]
     ctx = SenseContext (stArena st) physical [ Ball p zeroVector | p <- wsBalls s ]
-    robotOf i r prev =
+    robotOf i r =
       let input = senseRobot ctx i (robotOdometry r, robotHeading r) Nothing
-          omega = case (prev, stPrev st) of
-            (Just r0, Just _) | lcDt cfg > 0 -> normalizeAngle (robotHeading r - robotHeading r0) / lcDt cfg
-            _                                -> 0
+          omega = case stPrev st of
+            Just p | i < pvCount p, lcDt cfg > 0 ->
+              normalizeAngle (robotHeading r - indexD (pvHeading p) i) / lcDt cfg
+            _ -> 0
           half = kindWheelBase (kindOfType (robotType r)) / 2
           v = robotSpeed r
           Point2 ox oy = robotOdometry r
