@@ -36,6 +36,16 @@ world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2
 drive :: SimbotController
 drive _ = constant (mrFinalize (ddVelDiff 1 1))
 
+-- | 100 robots on a 10 by 10 lattice in the notes' world, 0.9 m apart.
+crowd :: WorldTemplate
+crowd = [ OTSimbotA k (Point2 (-4.05 + 0.9 * fromIntegral (k `mod` 10)) (-4.05 + 0.9 * fromIntegral (k `div` 10))) 0
+        | k <- [0 .. 99] ]
+
+-- | Turning on the spot, so that every robot's heading changes at every
+-- step and its centre stays put.
+circle :: SimbotController
+circle _ = constant (mrFinalize (ddVelDiff 0.3 0.5))
+
 quick :: FilePath -> SimOptions
 quick dir = defaultSimOptions { optSeconds = 2, optOut = dir, optQuiet = True, optFrames = True
                               , optSvg = Nothing, optReplay = Nothing }
@@ -101,6 +111,8 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- (@+RTS -M40m@); a leak ends it with heap overflow (exit code 251).
 -- @long@: ten simulated hours with small frames, the log and the page,
 -- for the parent to interrupt. @quick@: two simulated seconds, an SVG.
+-- @svgmany@: 100 robots turning on the spot for 2000 s, an SVG of their
+-- 2001 snapshots (the most it keeps), under the parent's heap limit.
 child :: String -> IO ()
 child arg = case break (== ':') arg of
   ("hour", _ : dir) -> runSimWith defaultSimOptions
@@ -111,6 +123,9 @@ child arg = case break (== ':') arg of
     , optSvg = Just (dir </> "run.svg"), optLog = Just (dir </> "run.jsonl")
     , optReplay = Just (dir </> "run.html") } Nothing drive drive
   ("quick", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg") } (Just world) drive drive
+  ("svgmany", _ : dir) -> runSimWith defaultSimOptions
+    { optSeconds = 2000, optDt = 0.04, optQuiet = True, optFrames = False, optSvg = Just (dir </> "run.svg")
+    , optReplay = Nothing, optOut = dir } (Just crowd) circle circle
   _ -> ioError (userError ("unknown child " ++ show arg))
 
 spec :: Spec
@@ -174,7 +189,7 @@ spec = do
       a <- framesIn (dir </> "a")
       b <- framesIn (dir </> "b")
       (length a, a == b) `shouldBe` (51, True)
-  describe "memory" $
+  describe "memory" $ do
     it "a simulated hour with the SVG and trails runs in 40 MB of heap (+RTS -M40m)" $ withTempDir $ \dir -> do
       self <- getExecutablePath
       environment <- getEnvironment
@@ -182,6 +197,16 @@ spec = do
         (proc self ["+RTS", "-M40m", "-RTS"]) { env = Just ((childVariable, "hour:" ++ dir) : environment) } ""
       (code, err) `shouldBe` (ExitSuccess, "")
       out `shouldSatisfy` ("3600.00 s simulated in 360001 steps" `isPrefixOf`)
+
+    it "an SVG of 100 robots' 2001 snapshots runs in 20 MB of heap (+RTS -M20m)" $ withTempDir $ \dir -> do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (code, out, err) <- readCreateProcessWithExitCode
+        (proc self ["+RTS", "-M20m", "-RTS"]) { env = Just ((childVariable, "svgmany:" ++ dir) : environment) } ""
+      (code, err) `shouldBe` (ExitSuccess, "")
+      out `shouldSatisfy` ("2000.00 s simulated in 50001 steps" `isPrefixOf`)
+      svg <- readFile (dir </> "run.svg")
+      length (filter ("<polyline" `isPrefixOf`) (tails svg)) `shouldBe` 100
 
   describe "standard output closed when the program starts" $
     it "runs, writes its files, then fails with exit code 1 and a message (it waited forever)" $ withTempDir $ \dir -> do

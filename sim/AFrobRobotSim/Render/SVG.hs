@@ -7,6 +7,7 @@
 -- trajectory, its start and a legend.
 module AFrobRobotSim.Render.SVG
   ( renderSVG
+  , svgOf
   , svgMaxPoints
   ) where
 
@@ -17,6 +18,7 @@ import           AFrobRobotSim.Render.Raster
 import           AFrobRobotSim.Render.Scene
 import           AFrobRobotSim.Simulator    (RobotState (..), WorldState (..))
 import           AFrobRobotSim.World        (simbotDiameter)
+import           AFrob.Dimensions           (Position2)
 
 -- | The most points of a trajectory in 'renderSVG': 2000. Longer ones are
 -- thinned to evenly spaced snapshots, always keeping the first and last.
@@ -39,7 +41,20 @@ svgMaxPoints = 2000
 -- starts with @\"\<svg\"@ and ends with @\"\<\/svg\>\\n\"@. With no snapshots,
 -- only the walls and blocks are drawn.
 renderSVG :: RenderStyle -> Scene -> [WorldState] -> String
-renderSVG style scene states = concat $
+renderSVG style scene states = case states of
+  []     -> svgOf style scene Nothing [] []
+  s0 : _ -> svgOf style scene (Just (s0, last states)) tracks [ p | p : _ <- tracks ]
+  where
+    tracks = transpose (map (map robotPos . wsRobots) states)
+
+-- | 'renderSVG' given the first and the last snapshots (none for a run
+-- with none), each robot's track (in the order of the first snapshot's
+-- robots, each at most 'svgMaxPoints' points once thinned) and each
+-- one's start: for a writer that keeps a long run's tracks more compactly
+-- than as snapshots, and makes each track only as it is drawn (the
+-- tracks are read once, in order; the starts after them).
+svgOf :: RenderStyle -> Scene -> Maybe (WorldState, WorldState) -> [[Position2]] -> [Position2] -> String
+svgOf style scene ends tracks starts = concat $
   [ printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\">\n"
       totalW totalH totalW totalH
   , printf "<rect x=\"0\" y=\"0\" width=\"%d\" height=\"%d\" fill=\"%s\"/>\n" totalW totalH (hex backgroundColour) ]
@@ -47,10 +62,10 @@ renderSVG style scene states = concat $
   ++ [ svgShape v (SPolyline col 2 (thin track))
      | ok, (col, track) <- zip colours0 tracks ]
   ++ [ svgShape v sh
-     | ok, (col, p : _) <- zip colours0 tracks
+     | ok, (col, p) <- zip colours0 starts
      , let (x, y) = toImg v p
      , sh <- [SDisc col x y startR, SDisc headingColour x y (0.6 * startR)] ]
-  ++ map (svgShape v) (maybe [] (snapshotShapes v) final)
+  ++ map (svgShape v) (maybe [] (snapshotShapes v . snd) ends)
   ++ legend
   ++ ["</svg>\n"]
   where
@@ -60,11 +75,7 @@ renderSVG style scene states = concat $
     startR   = min 5 (max 2 (vScale v * simbotDiameter / 2))
     ok       = validScale v
     (w, h)   = vSize v
-    final    = if null states then Nothing else Just (last states)
-    robots0  = case states of
-      s0 : _ -> wsRobots s0
-      []     -> []
-    tracks   = transpose (map (map robotPos . wsRobots) states)
+    robots0  = maybe [] (wsRobots . fst) ends
     colours0 = [ robotColour (robotType r) k | (r, k) <- zip robots0 (typeRanks robots0) ]
     legendW  = 170 :: Int
     rowH     = 18 :: Int
