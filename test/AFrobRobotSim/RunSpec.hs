@@ -190,21 +190,19 @@ spec = do
       b <- framesIn (dir </> "b")
       (length a, a == b) `shouldBe` (51, True)
   describe "memory" $ do
-    it "a simulated hour with the SVG and trails runs in 40 MB of heap (+RTS -M40m)" $ withTempDir $ \dir -> do
-      self <- getExecutablePath
-      environment <- getEnvironment
-      (code, out, err) <- readCreateProcessWithExitCode
-        (proc self ["+RTS", "-M40m", "-RTS"]) { env = Just ((childVariable, "hour:" ++ dir) : environment) } ""
-      (code, err) `shouldBe` (ExitSuccess, "")
-      out `shouldSatisfy` ("3600.00 s simulated in 360001 steps" `isPrefixOf`)
-
+    -- a child run (see 'child') under a heap limit: it ends well, having
+    -- simulated what it should
+    let underHeap limit what dir summary = do
+          self <- getExecutablePath
+          environment <- getEnvironment
+          (code, out, err) <- readCreateProcessWithExitCode
+            (proc self ["+RTS", "-M" ++ limit, "-RTS"]) { env = Just ((childVariable, what ++ ":" ++ dir) : environment) } ""
+          (code, err) `shouldBe` (ExitSuccess, "")
+          out `shouldSatisfy` (summary `isPrefixOf`)
+    it "a simulated hour with the SVG and trails runs in 40 MB of heap (+RTS -M40m)" $ withTempDir $ \dir ->
+      underHeap "40m" "hour" dir "3600.00 s simulated in 360001 steps"
     it "an SVG of 100 robots' 2001 snapshots runs in 20 MB of heap (+RTS -M20m)" $ withTempDir $ \dir -> do
-      self <- getExecutablePath
-      environment <- getEnvironment
-      (code, out, err) <- readCreateProcessWithExitCode
-        (proc self ["+RTS", "-M20m", "-RTS"]) { env = Just ((childVariable, "svgmany:" ++ dir) : environment) } ""
-      (code, err) `shouldBe` (ExitSuccess, "")
-      out `shouldSatisfy` ("2000.00 s simulated in 50001 steps" `isPrefixOf`)
+      underHeap "20m" "svgmany" dir "2000.00 s simulated in 50001 steps"
       svg <- readFile (dir </> "run.svg")
       length (filter ("<polyline" `isPrefixOf`) (tails svg)) `shouldBe` 100
 
