@@ -186,7 +186,7 @@ isFrameStep dt fps n =
 logStep :: LogConfig -> LogState -> WorldState -> (LogState, Maybe LogFrame)
 logStep cfg st s
   | isFrameStep (lcDt cfg) (lcFps cfg) n =
-      (st' { stEvents = [], stLines = [] }, Just (frameOf cfg st s (reverse events) (reverse lines')))
+      (st' { stEvents = [], stLines = [] }, Just (frameOf cfg st s scores (reverse events) (reverse lines')))
   | otherwise = (st', Nothing)
   where
     n       = stStep st
@@ -222,12 +222,13 @@ newEvents (Just p) s now = reverse (bumps ++ scores)
     scores = [ LogEvent t "score" Nothing (k ++ " scores: " ++ show v)
              | (k, v) <- now, maybe True (< v) (lookup k (pvScores p)) , v > 0 ]
 
-frameOf :: LogConfig -> LogState -> WorldState -> [LogEvent] -> [String] -> LogFrame
-frameOf cfg st s events lines' = LogFrame
+-- (given the state's scores, which the step has made)
+frameOf :: LogConfig -> LogState -> WorldState -> [(String, Int)] -> [LogEvent] -> [String] -> LogFrame
+frameOf cfg st s scores events lines' = LogFrame
   { lfTime = roundTo 1e9 (wsTime s)
   , lfRobots = zipWith robotOf [0 ..] (wsRobots s)
   , lfBalls = [ (r6 x, r6 y) | (x, y) <- map xy (wsBalls s) ]
-  , lfScores = lcScores cfg s
+  , lfScores = scores
   , lfEvents = events
   , lfConsole = console }
   where

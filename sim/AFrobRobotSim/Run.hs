@@ -56,7 +56,7 @@ module AFrobRobotSim.Run
   ) where
 
 import           Control.Concurrent        (getNumCapabilities)
-import           Control.Exception         (AsyncException (UserInterrupt), Exception (..), IOException, catch,
+import           Control.Exception         (AsyncException (UserInterrupt), Exception (..), IOException,
                                             evaluate, throwIO, try)
 import           Control.Monad             (forM, unless, when)
 import qualified Data.ByteString           as BS
@@ -344,11 +344,12 @@ svgSink every (style, scene) file = do
       finish _ = do
         (first, kept, final) <- readIORef ref
         let picture = case (first, reverse kept, final) of
-              (Just s0, _ : middle, Just f) ->
-                -- the snapshots' centres in time order: the first, those
-                -- kept, and the last state's (unless it is the newest kept);
-                -- each track made as it is drawn, from the arrays
-                let cs = centresOf s0 : [ c | c <- middle, centresTime c /= wsTime f ]
+              (Just s0, c0 : middle, Just f) ->
+                -- the snapshots' centres in time order: the first (s0's),
+                -- those kept, and the last state's (unless it is the
+                -- newest kept); each track made as it is drawn, from the
+                -- arrays
+                let cs = c0 : [ c | c <- middle, centresTime c /= wsTime f ]
                          ++ [ centresOf f | wsTime f /= wsTime s0 ]
                     track i = [ centreAt c i | c <- cs, i < centresCount c ]
                     robots = [0 .. maximum (map centresCount cs) - 1]
@@ -487,26 +488,22 @@ simulateRun prog opts ffmpeg world rcA rcB = do
         sinkAll n s
         loop (n + 1) rest
       nRobots = length [ () | o <- world, Just _ <- [robotKindOf o] ]
+      -- how an exception ends the run (any other is thrown on)
+      endedBy e
+        | Just UserInterrupt <- fromException e       = pure Interrupted
+        | Just ce <- fromException e                  = pure (Failed ce)
+        | Just (io :: IOException) <- fromException e = pure (WriteFailed io)
+        | otherwise                                   = throwIO e
   caps <- getNumCapabilities
   ending <- if caps > 1 && not (null sinks)
     -- on several capabilities the sinks take the states on a thread of
     -- their own while the next steps are computed (the same states in the
-    -- same order: the same outputs)
+    -- same order: the same outputs); a sink's failure comes first (it
+    -- stopped at an earlier state than the stepping thread)
     then do
       (produced, stopped) <- pipeline (batchFor nRobots) (\s -> () <$ evaluate (forceState s)) sinkAll states
-      case (stopped, produced) of
-        (Just e, _) | Just io <- fromException e -> pure (WriteFailed io)
-                    | otherwise                  -> throwIO e
-        (Nothing, Right ()) -> pure Finished
-        (Nothing, Left e)
-          | Just UserInterrupt <- fromException e -> pure Interrupted
-          | Just ce <- fromException e            -> pure (Failed ce)
-          | otherwise                             -> throwIO e
-    else ((loop 0 states `catch` \e -> case e of
-                UserInterrupt -> pure Interrupted
-                _             -> throwIO e)
-          `catch` (pure . Failed))
-         `catch` (pure . WriteFailed)
+      maybe (either endedBy (const (pure Finished)) produced) endedBy stopped
+    else try (loop 0 states) >>= either endedBy pure
   when tty (hPutStr stderr "\r                         \r")
   steps <- readIORef stepsRef
   nFrames <- readIORef framesRef
