@@ -3,14 +3,17 @@
 -- one-thread loop would, in order, with their numbers, on one capability
 -- and on two; it stops where that loop would when producing or consuming
 -- fails (the producer then stops too, on an endless list); and the
--- producer stays at most a few batches ahead.
+-- producer stays at most a few batches ahead; an interrupt while the
+-- consumer catches up makes it skip the rest.
 module AFrobRobotSim.PipelineSpec (spec) where
 
-import           Control.Concurrent (myThreadId, threadDelay, throwTo)
+import           Control.Concurrent (forkIO, myThreadId, threadDelay, throwTo)
+import           Control.Concurrent.MVar
 import           Control.Exception (AsyncException (..), ErrorCall (..), bracket, fromException, throwIO)
 import           Control.Monad     (forM_, when)
 import           Data.IORef
-import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
+import           GHC.Conc          (ThreadStatus (..), getNumCapabilities, setNumCapabilities,
+                                    threadStatus)
 import           Test.Hspec
 
 import           AFrobRobotSim.Pipeline
@@ -75,6 +78,38 @@ spec = do
       either (\e -> fromException e == Just UserInterrupt) (const False) ended `shouldBe` True
       fmap show stopped `shouldBe` Nothing
       reverse <$> readIORef taken `shouldReturn` zip [0 ..] [0 .. 39]
+
+    it "an interrupt while the consumer catches up, the list ended: the consumer skips the rest, and the interrupt is returned" $
+      withCaps caps $ do
+        -- the consumer holds element 0 until the pipeline's thread,
+        -- every element produced, waits for it; then Ctrl-C, and the
+        -- consumer goes on once that thread, the interrupt handled,
+        -- waits again
+        gate     <- newEmptyMVar
+        produced <- newIORef (0 :: Int)
+        taken    <- newIORef []
+        result   <- newEmptyMVar
+        tid <- forkIO $
+          pipeline 16 (\_ -> modifyIORef' produced (+ 1))
+                      (\n x -> do when (n == 0) (readMVar gate)
+                                  modifyIORef' taken ((n, x) :))
+                      [0 .. 39 :: Int]
+            >>= putMVar result
+        let waiting = do
+              p  <- readIORef produced
+              st <- threadStatus tid
+              pure (p == 40 && case st of ThreadBlocked _ -> True; _ -> False)
+            settle k = do
+              w <- waiting
+              if w || k <= (0 :: Int) then pure w else threadDelay 1000 >> settle (k - 1)
+        settle 10000 `shouldReturn` True
+        throwTo tid UserInterrupt
+        settle 10000 `shouldReturn` True
+        putMVar gate ()
+        (ended, stopped) <- takeMVar result
+        either (\e -> fromException e == Just UserInterrupt) (const False) ended `shouldBe` True
+        fmap show stopped `shouldBe` Nothing
+        reverse <$> readIORef taken `shouldReturn` [(0, 0)]
 
   describe "batchFor" $
     it "16 small elements a batch, about 4096 parts a batch, at least one element" $
