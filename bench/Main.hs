@@ -26,6 +26,11 @@
 --   validation, the arena's grids and the first indexes are built then),
 --   by the wall clock and the CPU time (of every core), and print
 --   robot-steps per second by both;
+-- * @afrp-bench --steady-with CONTROLLER ROBOTS STEPS@ is @--steady@ with
+--   every robot driven by @idle@, @rays@, @tracker@ or @bench@ (the
+--   controllers of 'benchRunWith'; @bench@ is @--steady@'s own): their
+--   differences split a robot-step's cost (bench/README.md, "Fifteenth
+--   round");
 -- * @afrp-bench --render FRAMES@ renders that many 600x600 PPM frames of
 --   the 10-robot world and prints the frames per second;
 -- * @afrp-bench --pairs R@ times every network and its baseline R times,
@@ -48,7 +53,7 @@ import           System.IO          (hPutStrLn, stderr)
 import           Text.Printf        (printf)
 
 import           AFRP               (SF, arr)
-import           AFrobRobotSim      (WorldState)
+import           AFrobRobotSim      (SimbotController, WorldState)
 import           Networks
 import           Residency          (loopNetwork, loopNetworks)
 import           RenderBench        (prepareFrames, renderFrames)
@@ -81,6 +86,8 @@ main = do
     ["--swarm", n, cov, secs] -> swarmReport (read n) (read cov) (read secs)
     ["--packed", n, steps] -> packedReport (read n) (read steps)
     ["--steady", n, steps] -> steadyReport "robots" (read n) (benchRun (read n)) (read steps)
+    ["--steady-with", c, n, steps] -> withController c $ \ctl ->
+      steadyReport "robots" (read n) (benchRunWith ctl (read n)) (read steps)
     ["--steady-packed", n, steps] -> steadyReport "packed wanderers" (packedRobots (read n)) (packedRun (read n)) (read steps)
     ["--pairs", r] -> mapM_ (pairsReport (read r)) networks
     ["--loop", name, n] -> withLoopNetwork name $ \nw -> print (sumNetwork nw (read n))
@@ -100,6 +107,18 @@ main = do
            [ env (evaluate (prepareFrames 10)) $ \_ ->
                bench "10 robots, 600x600 PPM x 10 frames" (whnf renderFrames 10) ]
        ]))
+
+-- The controllers of @--steady-with@, by name.
+withController :: String -> (SimbotController -> IO ()) -> IO ()
+withController name k = case lookup name controllers of
+  Just c  -> k c
+  Nothing -> do
+    hPutStrLn stderr ("afrp-bench: no controller " ++ show name ++ "; the names are "
+                      ++ unwords (map fst controllers))
+    exitFailure
+  where
+    controllers = [ ("idle", idleController), ("rays", raysController)
+                  , ("tracker", trackerController), ("bench", benchController) ]
 
 withNetwork :: String -> (Network -> IO ()) -> IO ()
 withNetwork key k = case [nw | nw <- networks, (key ++ ":") `isPrefixOf` nwName nw] of

@@ -11,6 +11,10 @@ module SimBench
   , benchWorld
   , benchConfig
   , benchController
+  , idleController
+  , raysController
+  , trackerController
+  , benchRunWith
   , runBench
   , sharedWorld
   , worldChecksum
@@ -121,6 +125,48 @@ benchController _ = proc sbi -> do
   returnA -< mrFinalize (if stuck then ddVelTR (-0.1) 0.6
                                   else ddVelTR speed (max (-0.6) (min 0.6 (omega + away))))
 
+-- | The first of the controllers that split a robot-step's cost (see
+-- 'benchRunWith'): reads nothing and drives a constant curve (0.3 m/s,
+-- 0.1 rad/s). Its input is never made, so its robot-step is the engine's
+-- own work: stepping a trivial network, the move, the bound on the
+-- distance to the others that the move takes (a gathering of the robots
+-- near it), the lists and the snapshot.
+idleController :: SimbotController
+idleController _ = arr (\_ -> mrFinalize (ddVelTR 0.3 0.1))
+
+-- | 'idleController''s work and the four quarter-turn range finders,
+-- every one reaching the wheels (no tracker, no state).
+raysController :: SimbotController
+raysController _ = arr $ \sbi ->
+  let f = rfFront sbi
+      l = rfLeft sbi
+      r = rfRight sbi
+      b = rfBack sbi
+  in mrFinalize (ddVelTR (0.3 * min 1 f + 0.02 * min 1 (r + b)) (max (-0.6) (min 0.6 (l - 0.5))))
+
+-- | 'raysController''s work and the tracker's nearest robot: every sensor
+-- 'benchController' reads, without its derivative (no state).
+trackerController :: SimbotController
+trackerController _ = arr $ \sbi ->
+  let f    = rfFront sbi
+      l    = rfLeft sbi
+      r    = rfRight sbi
+      b    = rfBack sbi
+      near = case aotOtherRobots sbi of
+               (_, _, _, d) : _ -> d
+               []               -> 4
+  in mrFinalize (ddVelTR (0.3 * min 1 f * min 1 (near / 1.5) + 0.02 * min 1 (r + b))
+                         (max (-0.6) (min 0.6 (l - 0.5))))
+
+-- | The snapshots of 'benchRun''s world of @n@ robots, every robot driven
+-- by the given controller. Timed with 'idleController',
+-- 'raysController', 'trackerController' and 'benchController' in turn
+-- (@afrp-bench --steady-with@), the differences split a robot-step's
+-- cost into the engine's, the range finders', the tracker's and the
+-- controller's own (its derivative and its network).
+benchRunWith :: SimbotController -> Int -> [WorldState]
+benchRunWith c n = simulateWith (benchConfig n) (sharedWorld n) c c
+
 -- | Run @n@ robots for @steps@ steps and return a checksum of every
 -- robot's position at every step (so that every step is computed). The
 -- worlds of the benchmark sizes are built once ('sharedWorld'), so that a
@@ -212,7 +258,7 @@ runPacked n steps =
 -- | The snapshots of 'runBench' with @n@ robots (for timing the steps
 -- apart from the start of the run).
 benchRun :: Int -> [WorldState]
-benchRun n = simulateWith (benchConfig n) (sharedWorld n) benchController benchController
+benchRun = benchRunWith benchController
 
 -- | The snapshots of 'runPacked' with @n@ wanderers.
 packedRun :: Int -> [WorldState]
