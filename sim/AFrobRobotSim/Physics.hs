@@ -99,7 +99,7 @@ import           AFrobRobotSim.World
 data Robot = Robot
   { rKind    :: !RobotKind
   , rId      :: !RobotId
-  , rPos     :: !Position2
+  , rPos     :: {-# UNPACK #-} !Position2
   , rHeading :: !Heading
   , rSpeed   :: !Speed      -- ^ actual translational speed (signed)
   , rStuck   :: !Bool

@@ -137,13 +137,13 @@ data WorldState = WorldState
 data RobotState = RobotState
   { robotType     :: !RobotType
   , robotId       :: !RobotId
-  , robotPos      :: !Position2      -- ^ true position of its centre
+  , robotPos      :: {-# UNPACK #-} !Position2  -- ^ true position of its centre
   , robotHeading  :: !Heading        -- ^ true heading
   , robotSpeed    :: !Speed          -- ^ translational speed
   , robotStuck    :: !Bool
   , robotBattery  :: !BatteryStatus
   , robotCharge   :: !Double         -- ^ battery charge, 1 = full
-  , robotOdometry :: !Position2      -- ^ what its odometry reads
+  , robotOdometry :: {-# UNPACK #-} !Position2  -- ^ what its odometry reads
   } deriving (Eq, Show)
 
 -- | A controller failed while the simulation ran: it threw an exception,
