@@ -127,10 +127,11 @@ benchController _ = proc sbi -> do
 
 -- | The first of the controllers that split a robot-step's cost (see
 -- 'benchRunWith'): reads nothing and drives a constant curve (0.3 m/s,
--- 0.1 rad/s). Its input is never made, so its robot-step is the engine's
--- own work: stepping a trivial network, the move, the bound on the
--- distance to the others that the move takes (a gathering of the robots
--- near it), the lists and the snapshot.
+-- 0.1 rad/s). It never reads its input, so no ray is cast and no
+-- tracker's list is made: its robot-step is the engine's own work
+-- (stepping a trivial network, the input's unread record, the move, the
+-- bound on the distance to the others that the move takes, a gathering
+-- of the robots near it, the lists and the snapshot).
 idleController :: SimbotController
 idleController _ = arr (\_ -> mrFinalize (ddVelTR 0.3 0.1))
 
