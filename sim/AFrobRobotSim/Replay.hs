@@ -6,7 +6,8 @@
 -- One HTML file holds the log, the script and the style: it needs no
 -- network and no server, and opens from @file://@. The log goes in as
 -- JSON inside a @\<script type="application/json"\>@ element, which the
--- browser does not run; 'AFrobRobotSim.JSON.encodeJSON' writes no @<@,
+-- browser does not run (a long log in several such elements, each an
+-- array of at most 'replayChunkChars' characters: see below); 'AFrobRobotSim.JSON.encodeJSON' writes no @<@,
 -- @>@ or @&@, so no string of the run (a robot's message, the command
 -- line) can end that element or become markup, and the script shows
 -- every such string with @textContent@. A Content-Security-Policy allows
@@ -24,11 +25,26 @@
 -- @playing()@, @selectRobot(i)@, @selected()@, @worldToCanvas(x, y)@ (in
 -- the canvas's pixels), @header@ and @summary@. Element ids: @world@
 -- (the canvas), @play@, @back@, @fwd@, @slider@, @speed@, @rays@,
--- @trails@, @sightings@, @time@, @info@, @events@, @meta@, @afrp-log@.
+-- @trails@, @sightings@, @time@, @info@, @events@, @meta@, @afrp-log@
+-- (the log's lines, a JSON array), and @afrp-log-2@, @afrp-log-3@, ...
+-- (the lines that follow, when there are more).
+--
+-- = Long logs
+--
+-- A browser reads a data element's text as one string, and Chromium's
+-- strings hold at most 2^29 - 24 characters (about 512 MiB): a page of
+-- 10,000 robots for 10 s (about 1 GB) opened, but its script met
+-- "Unexpected end of JSON input" and never drew a frame. So the lines go
+-- into elements of at most 'replayChunkChars' characters each (64 MiB; a
+-- line is never split, so an element holds at least one, however long),
+-- and the page's script joins the elements' arrays in order. A log
+-- shorter than that is one element, as before.
 module AFrobRobotSim.Replay
   ( -- * Pages
     replayPage
   , replayPageFromLines
+  , replayPageChunked
+  , replayChunkChars
   , writeReplayFromLog
     -- * Recording a run as it goes
   , ReplayRecorder
@@ -36,12 +52,13 @@ module AFrobRobotSim.Replay
   , recordReplayState
   , recordReplayStateWith
   , writeReplay
+  , writeReplayChunked
   ) where
 
 import qualified Data.ByteString.Char8     as BC
 import           Data.Bits                 (xor)
 import           Data.IORef
-import           Data.List                 (foldl', intercalate)
+import           Data.List                 (foldl')
 import           Data.Word                 (Word64, Word8, byteSwap64)
 import           Foreign.Storable          (peekByteOff)
 import qualified Data.ByteString.Internal  as BU (accursedUnutterablePerformIO)
@@ -49,7 +66,6 @@ import qualified Data.ByteString.Unsafe    as BU (unsafeUseAsCStringLen)
 import           GHC.ByteOrder             (ByteOrder (..), targetByteOrder)
 import           Numeric                   (showHex)
 import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
-import           Control.Monad             (unless)
 import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.IO
 
@@ -61,7 +77,13 @@ import           AFrobRobotSim.Simulator   (WorldState)
 
 -- | The page of a log.
 replayPage :: RunLog -> String
-replayPage l = pre ++ intercalate ",\n" (map encodeLogLine lns) ++ post
+replayPage = replayPageChunked replayChunkChars
+
+-- | 'replayPage' with the log's lines in data elements of at most @n@
+-- characters each (at least one line each, however long it is): the
+-- same page as 'replayPage' when the log is shorter than @n@.
+replayPageChunked :: Int -> RunLog -> String
+replayPageChunked n l = pre ++ joinChunked n (map encodeLogLine lns) ++ post
   where
     lns = LineHeader (rlHeader l) : map LineFrame (rlFrames l) ++ maybe [] ((: []) . LineSummary) (rlSummary l)
     -- The nonce, which comes first, hashes every line: in a pass of its
@@ -74,7 +96,7 @@ replayPage l = pre ++ intercalate ",\n" (map encodeLogLine lns) ++ post
 -- writes them: a header first). The lines are embedded as they are, so
 -- they must come from 'encodeLogLine' (which writes no @<@).
 replayPageFromLines :: [String] -> String
-replayPageFromLines ls = pre ++ intercalate ",\n" ls ++ post
+replayPageFromLines ls = pre ++ joinChunked replayChunkChars ls ++ post
   where
     (pre, post) = replayPageParts (showHex (foldl' fnv fnvBasis ls) "")
 
@@ -101,9 +123,38 @@ replayPageParts nonce = (concat
   , "<label><input id=\"sightings\" type=\"checkbox\"> tracker sightings</label>\n"
   , "</div>\n</div>\n<div id=\"side\">\n<pre id=\"info\"></pre>\n<h1>events</h1>\n<pre id=\"events\"></pre>\n"
   , "</div>\n</div>\n"
-  , "<script id=\"afrp-log\" type=\"application/json\">\n[" ]
+  , dataOpen 1 ]
   , concat [ "]\n</script>\n"
            , "<script nonce=\"", nonce, "\">\n", replayScript, "</script>\n</body>\n</html>\n" ])
+
+-- | The most characters of the log's lines that one of the page's data
+-- elements holds (see "Long logs" above): 64 MiB, an eighth of what
+-- Chromium reads as one string.
+replayChunkChars :: Int
+replayChunkChars = 64 * 1024 * 1024
+
+-- The opening of the page's @k@-th data element (from 1), up to its
+-- array's @[@.
+dataOpen :: Int -> String
+dataOpen k = "<script id=\"afrp-log" ++ (if k == 1 then "" else '-' : show k) ++ "\" type=\"application/json\">\n["
+
+-- What ends the @k@-th data element and opens the next.
+dataBreak :: Int -> String
+dataBreak k = "]\n</script>\n" ++ dataOpen (k + 1)
+
+-- The lines of the page's data, for elements of at most @n@ characters:
+-- separated by commas, and by an element's end and the next one's
+-- opening where a line would take its element beyond @n@ (an element
+-- holds at least one line).
+joinChunked :: Int -> [String] -> String
+joinChunked _ [] = ""
+joinChunked n (l0 : ls0) = l0 ++ go 1 (length l0) ls0
+  where
+    go !_ !_ [] = ""
+    go !k !used (l : ls)
+      | used + 2 + len > n = dataBreak k ++ l ++ go (k + 1) len ls
+      | otherwise          = ",\n" ++ l ++ go k (used + 2 + len) ls
+      where len = length l
 
 -- The page's nonce depends on its data, so that pages differ: a hash of
 -- the log's lines, one after the other, each line's bytes taken eight at
@@ -200,7 +251,12 @@ recordReplayStateWith (ReplayRecorder cfg _ h ref) made s = do
 -- the recorder's temporary file (also when the page cannot be written).
 -- Call it once, at the end of the run.
 writeReplay :: ReplayRecorder -> LogSummary -> FilePath -> IO ()
-writeReplay (ReplayRecorder cfg path h ref) s out =
+writeReplay = writeReplayChunked replayChunkChars
+
+-- | 'writeReplay' with the log's lines in data elements of at most @n@
+-- characters each, as 'replayPageChunked' writes them.
+writeReplayChunked :: Int -> ReplayRecorder -> LogSummary -> FilePath -> IO ()
+writeReplayChunked chunk (ReplayRecorder cfg path h ref) s out =
   (do hClose h
       Recording _ n hash <- readIORef ref
       let s'      = if lsFrames s < 0 then s { lsFrames = n } else s
@@ -209,17 +265,25 @@ writeReplay (ReplayRecorder cfg path h ref) s out =
       withBinaryFile path ReadMode $ \fh ->
         withBinaryFile out WriteMode $ \oh -> do
           hSetBuffering oh (BlockBuffering Nothing)
-          BC.hPutStr oh (BC.pack pre)
-          BC.hPutStr oh (BC.pack (encodeLogLine (LineHeader (logHeader cfg))))
-          let copy = do
+          let header = BC.pack (encodeLogLine (LineHeader (logHeader cfg)))
+              -- a line after the others (in data element k, which holds
+              -- @used@ characters so far), as 'joinChunked' joins them
+              next (!k, !used) l
+                | used + 2 + BC.length l > chunk = do
+                    BC.hPutStr oh (BC.pack (dataBreak k))
+                    BC.hPutStr oh l
+                    pure (k + 1, BC.length l)
+                | otherwise = do
+                    BC.hPutStr oh (BC.pack ",\n")
+                    BC.hPutStr oh l
+                    pure (k, used + 2 + BC.length l)
+              copy at = do
                 eof <- hIsEOF fh
-                unless eof $ do
-                  l <- BC.hGetLine fh
-                  BC.hPutStr oh (BC.pack ",\n")
-                  BC.hPutStr oh l
-                  copy
-          copy
-          BC.hPutStr oh (BC.pack (",\n" ++ summary))
+                if eof then pure at else BC.hGetLine fh >>= next at >>= copy
+          BC.hPutStr oh (BC.pack pre)
+          BC.hPutStr oh header
+          at <- copy (1 :: Int, BC.length header)
+          _ <- next at (BC.pack summary)
           BC.hPutStr oh (BC.pack post))
   `finally` removeIfExists path
   where

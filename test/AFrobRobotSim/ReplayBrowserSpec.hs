@@ -4,6 +4,7 @@
 module AFrobRobotSim.ReplayBrowserSpec (spec) where
 
 import           Control.Monad            (unless)
+import           Data.List                (isInfixOf, isPrefixOf, tails)
 import           System.Directory         (doesDirectoryExist, doesFileExist, findExecutable,
                                            getTemporaryDirectory, removeFile)
 import           System.Environment       (lookupEnv)
@@ -48,7 +49,17 @@ spec = do
               ExitSuccess   -> pure ()
               ExitFailure c -> expectationFailure ("node test/browser/replay-size.test.js exited with " ++ show c
                                                    ++ ":\n" ++ out ++ err)) worlds
-  it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $ do
+  it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $
+    playFixture (replayPage fixtureLog)
+  it "plays it as well with its log split over several data elements, every frame read (fixed)" $ do
+    let page = replayPageChunked 3000 fixtureLog
+    length (filter ("<script id=\"afrp-log" `isPrefixOf`) (tails page)) `shouldSatisfy` (> 5)
+    playFixture page
+
+-- | Run test/browser/replay.test.js on a page of 'fixtureLog', which must
+-- show all of its frames.
+playFixture :: String -> Expectation
+playFixture pageText = do
     node     <- findExecutable "node"
     chromium <- lookupEnv "CHROMIUM" >>= maybe (pure "/usr/bin/chromium") pure
     haveChromium <- doesFileExist chromium
@@ -62,12 +73,13 @@ spec = do
     tmp <- getTemporaryDirectory
     (page, h) <- openTempFile tmp "afrp-replay.html"
     hClose h
-    writeFile page (replayPage fixtureLog)
+    writeFile page pageText
     shot <- lookupEnv "AFRP_REPLAY_SCREENSHOT" >>= maybe (pure (page ++ ".png")) pure
     (code, out, err) <- readProcessWithExitCode (maybe "node" id node)
                           ["test" </> "browser" </> "replay.test.js", page, shot] ""
     removeFile page
     case code of
-      ExitSuccess   -> pure ()
+      ExitSuccess   -> out `shouldSatisfy` (("the page has the log's frames (" ++ show (length (rlFrames fixtureLog)) ++ ")")
+                                              `isInfixOf`)
       ExitFailure c -> expectationFailure ("node test/browser/replay.test.js exited with " ++ show c
                                            ++ ":\n" ++ out ++ err)

@@ -3,6 +3,7 @@ module AFrobRobotSim.ReplaySpec (spec) where
 
 import qualified Data.ByteString          as BS
 import qualified Data.ByteString.Char8    as BC
+import           Control.Monad            (forM_)
 import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf, tails)
 import           System.Directory         (getTemporaryDirectory, listDirectory, removeFile)
 import           System.FilePath          (splitFileName, (</>))
@@ -29,6 +30,23 @@ embeddedData page = case [ rest | rest <- tails page, openTag `isPrefixOf` rest 
     takeUntil end s@(c : cs) | end `isPrefixOf` s = ""
                              | otherwise          = c : takeUntil end cs
     takeUntil _ [] = ""
+
+-- The page's data elements, in order: each one's id and text (its JSON
+-- array, with the newline after its opening tag).
+dataElements :: String -> [(String, String)]
+dataElements page =
+  [ ("afrp-log" ++ takeWhile (/= '"') (drop (length open) rest), takeUntil "</script>" (drop 1 (dropWhile (/= '>') rest)))
+  | rest <- tails page, open `isPrefixOf` rest ]
+  where
+    open = "<script id=\"afrp-log"
+    takeUntil end s@(c : cs) | end `isPrefixOf` s = ""
+                             | otherwise          = c : takeUntil end cs
+    takeUntil _ [] = ""
+
+-- A list cut into consecutive pieces of the given lengths.
+cut :: [Int] -> [a] -> [[a]]
+cut (k : ks) xs = take k xs : cut ks (drop k xs)
+cut [] _        = []
 
 spec :: Spec
 spec = do
@@ -58,6 +76,45 @@ spec = do
     it "has the controls the brief names (fixed)" $
       mapM_ (\i -> page `shouldSatisfy` (("id=\"" ++ i ++ "\"") `isInfixOf`))
         ["world", "play", "back", "fwd", "slider", "speed", "rays", "trails", "sightings", "info", "time"]
+
+  describe "replayPageChunked (a long log in several data elements)" $ do
+    let lns = map encodeLogLine (LineHeader (rlHeader fixtureLog) : map LineFrame (rlFrames fixtureLog)
+                                   ++ maybe [] ((: []) . LineSummary) (rlSummary fixtureLog))
+        -- bounds about where the first lines would end an element: the
+        -- k-th line's joined end, and one more line just fitting or not
+        prefixJoined k = sum (map length (take k lns)) + 2 * (k - 1)
+        edges = concat [ [e - 1, e, e + 1] | k <- [1 .. 6], let e = prefixJoined k ]
+    it "joins its elements' arrays, in order, into the log's lines; each within the bound unless it is one line" $
+      forM_ ([10, 700, 2000, 5000, 20000] ++ edges) $ \n -> do
+        let els = dataElements (replayPageChunked n fixtureLog)
+        map fst els `shouldBe` take (length els) ("afrp-log" : [ "afrp-log-" ++ show k | k <- [2 :: Int ..] ])
+        let arrays = traverse (\(_, txt) -> parseJSON txt >>= asArray) els
+        fmap concat arrays `shouldBe` traverse parseJSON lns
+        -- the lines of each element, by the counts of its array
+        let groups = cut (either (const []) (map length) arrays) lns
+            joined g = sum (map length g) + 2 * (length g - 1)
+        map (\(_, txt) -> length txt - 4) els `shouldBe` map joined groups
+        filter (\g -> joined g > n && length g > 1) groups `shouldBe` []
+        -- (an element ends only where the next line would not fit)
+        [ () | (g, g') <- zip groups (drop 1 groups), joined g + 2 + sum (map length (take 1 g')) <= n ]
+          `shouldBe` []
+    it "puts a line longer than the bound in an element of its own" $
+      length (dataElements (replayPageChunked 10 fixtureLog)) `shouldBe` length lns
+    it "is one element, replayPage's page, when the log fits (fixed)" $ do
+      length (dataElements page) `shouldBe` 1
+      replayPageChunked (sum (map ((+ 2) . length) lns)) fixtureLog `shouldBe` page
+      replayPageChunked replayChunkChars fixtureLog `shouldBe` page
+    it "is written the same by a recorder (writeReplayChunked)" $
+      forM_ ([10, 2000] ++ edges) $ \n -> do
+        tmp <- getTemporaryDirectory
+        rec <- newReplayRecorder fixtureConfig
+        mapM_ (recordReplayState rec) fixtureStates
+        (path, h) <- openTempFile tmp "afrp-replay.html"
+        hClose h
+        writeReplayChunked n rec (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing []) path
+        written <- readFile path
+        length written `seq` removeFile path
+        written `shouldBe` replayPageChunked n fixtureLog
 
   describe "the page's nonce" $ do
     -- (lines of lengths about the hash's eight-byte words: a character in

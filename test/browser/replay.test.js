@@ -86,9 +86,13 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
     check(/wheels\s+left -?\d/.test(text) && /range\s+front \d/.test(text) && text.includes('battery'),
           'the panel shows its wheel speeds, range readings and battery');
     check(text.includes('</script><img src=x onerror="window.__pwned=1">'), 'its hostile message is shown as text');
+    // (the page's own script, and its log's data elements: #afrp-log and,
+    // for a long log, #afrp-log-2, #afrp-log-3, ...)
     const pwned = await page.evaluate(() => ({ flag: window.__pwned, imgs: document.querySelectorAll('img').length,
-                                               scripts: document.querySelectorAll('script').length }));
-    check(pwned.flag === undefined && pwned.imgs === 0 && pwned.scripts === 2, 'the hostile message ran no script and made no element');
+                                               scripts: document.querySelectorAll('script').length,
+                                               data: document.querySelectorAll('script[id^="afrp-log"]').length }));
+    check(pwned.flag === undefined && pwned.imgs === 0 && pwned.data >= 1 && pwned.scripts === pwned.data + 1,
+          'the hostile message ran no script and made no element');
 
     // keyboard: arrows step, space plays and pauses
     await page.locator('#world').focus().catch(() => {});

@@ -1,9 +1,14 @@
-// The afrp replay page: draws the run log embedded in #afrp-log on a
-// canvas. Every string that comes from the run is shown with textContent,
-// never parsed as HTML.
+// The afrp replay page: draws the run log embedded in #afrp-log (and, for
+// a long log, the elements #afrp-log-2, #afrp-log-3, ... that continue it)
+// on a canvas. Every string that comes from the run is shown with
+// textContent, never parsed as HTML.
 (function () {
   'use strict';
   var lines = JSON.parse(document.getElementById('afrp-log').textContent);
+  for (var part = 2, more; (more = document.getElementById('afrp-log-' + part)); part++) {
+    var rest = JSON.parse(more.textContent);
+    for (var r = 0; r < rest.length; r++) lines.push(rest[r]);
+  }
   var header = lines[0];
   var frames = lines.filter(function (l) { return l.kind === 'frame'; });
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
