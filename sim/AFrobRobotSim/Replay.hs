@@ -6,10 +6,10 @@
 -- One HTML file holds the log, the script and the style: it needs no
 -- network and no server, and opens from @file://@. The log goes in as
 -- JSON inside a @\<script type="application/json"\>@ element, which the
--- browser does not run (a long log in several such elements, each an
--- array of at most 'replayChunkChars' characters: see below); 'AFrobRobotSim.JSON.encodeJSON' writes no @<@,
--- @>@ or @&@, so no string of the run (a robot's message, the command
--- line) can end that element or become markup, and the script shows
+-- browser does not run (a long log in several such elements: see "Long
+-- logs" below); 'AFrobRobotSim.JSON.encodeJSON' writes no @<@, @>@ or
+-- @&@, so no string of the run (a robot's message, the command line) can
+-- end that element or become markup, and the script shows
 -- every such string with @textContent@. A Content-Security-Policy allows
 -- only the page's own script (by a nonce), its own style and no network,
 -- so that even markup that got in could run nothing.
@@ -38,7 +38,8 @@
 -- into elements of at most 'replayChunkChars' characters each (64 MiB; a
 -- line is never split, so an element holds at least one, however long),
 -- and the page's script joins the elements' arrays in order. A log
--- shorter than that is one element, as before.
+-- shorter than that is one element, as before. (The page is ASCII, so
+-- its characters are its bytes.)
 module AFrobRobotSim.Replay
   ( -- * Pages
     replayPage

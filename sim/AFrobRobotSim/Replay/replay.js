@@ -4,11 +4,16 @@
 // textContent, never parsed as HTML.
 (function () {
   'use strict';
-  var lines = JSON.parse(document.getElementById('afrp-log').textContent);
-  for (var part = 2, more; (more = document.getElementById('afrp-log-' + part)); part++) {
-    var rest = JSON.parse(more.textContent);
-    for (var r = 0; r < rest.length; r++) lines.push(rest[r]);
+  // the log's lines: #afrp-log's array, then those of #afrp-log-2, ...
+  function readLog() {
+    var all = JSON.parse(document.getElementById('afrp-log').textContent);
+    for (var k = 2, el; (el = document.getElementById('afrp-log-' + k)); k++) {
+      var part = JSON.parse(el.textContent);
+      for (var i = 0; i < part.length; i++) all.push(part[i]);
+    }
+    return all;
   }
+  var lines = readLog();
   var header = lines[0];
   var frames = lines.filter(function (l) { return l.kind === 'frame'; });
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
