@@ -15,6 +15,7 @@ module SimBench
   , raysController
   , trackerController
   , benchRunWith
+  , nearestRobot
   , runBench
   , sharedWorld
   , worldChecksum
@@ -111,9 +112,7 @@ benchController _ = proc sbi -> do
       f    = rfFront sbi
       r    = rfRight sbi
       b    = rfBack sbi
-      near = case aotOtherRobots sbi of
-               (_, _, _, d) : _ -> d
-               []               -> 4
+      near = nearestRobot sbi
   dl <- derivative -< l
   let v     = 0.3
       kd    = 5
@@ -124,6 +123,13 @@ benchController _ = proc sbi -> do
       stuck = rsIsStuck sbi
   returnA -< mrFinalize (if stuck then ddVelTR (-0.1) 0.6
                                   else ddVelTR speed (max (-0.6) (min 0.6 (omega + away))))
+
+-- | The distance to the nearest robot the tracker sees, or its range (4 m)
+-- when it sees none.
+nearestRobot :: SimbotInput -> Distance
+nearestRobot sbi = case aotOtherRobots sbi of
+  (_, _, _, d) : _ -> d
+  []               -> 4
 
 -- | The first of the controllers that split a robot-step's cost (see
 -- 'benchRunWith'): reads nothing and drives a constant curve (0.3 m/s,
@@ -138,26 +144,24 @@ idleController _ = arr (\_ -> mrFinalize (ddVelTR 0.3 0.1))
 -- | 'idleController''s work and the four quarter-turn range finders,
 -- every one reaching the wheels (no tracker, no state).
 raysController :: SimbotController
-raysController _ = arr $ \sbi ->
-  let f = rfFront sbi
-      l = rfLeft sbi
-      r = rfRight sbi
-      b = rfBack sbi
-  in mrFinalize (ddVelTR (0.3 * min 1 f + 0.02 * min 1 (r + b)) (max (-0.6) (min 0.6 (l - 0.5))))
+raysController _ = arr (driveByRanges 1)
 
 -- | 'raysController''s work and the tracker's nearest robot: every sensor
 -- 'benchController' reads, without its derivative (no state).
 trackerController :: SimbotController
-trackerController _ = arr $ \sbi ->
-  let f    = rfFront sbi
-      l    = rfLeft sbi
-      r    = rfRight sbi
-      b    = rfBack sbi
-      near = case aotOtherRobots sbi of
-               (_, _, _, d) : _ -> d
-               []               -> 4
-  in mrFinalize (ddVelTR (0.3 * min 1 f * min 1 (near / 1.5) + 0.02 * min 1 (r + b))
-                         (max (-0.6) (min 0.6 (l - 0.5))))
+trackerController _ = arr (\sbi -> driveByRanges (min 1 (nearestRobot sbi / 1.5)) sbi)
+
+-- The drive of 'raysController' and 'trackerController': ahead at
+-- 0.3 m/s slowed by what is in front (and by the given factor), a creep
+-- when boxed in (right and back), turning to keep the left range at
+-- 0.5 m.
+driveByRanges :: Double -> SimbotInput -> SimbotOutput
+driveByRanges slow sbi =
+  let f = rfFront sbi
+      l = rfLeft sbi
+      r = rfRight sbi
+      b = rfBack sbi
+  in mrFinalize (ddVelTR (0.3 * min 1 f * slow + 0.02 * min 1 (r + b)) (max (-0.6) (min 0.6 (l - 0.5))))
 
 -- | The snapshots of 'benchRun''s world of @n@ robots, every robot driven
 -- by the given controller. Timed with 'idleController',
