@@ -77,6 +77,43 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
     check(!near(await bodyPixel(info.first.robots[1], radiusPx), red, 30), 'and no longer at its first position');
     check(near(await bodyPixel(info.last.robots[0], radiusPx), blue, 2), 'at the end SimbotA 1 is drawn at its final logged position');
 
+    // trails: SimbotB 2 drove from x = 2 to x = 1 along y = 1.5, so at the end its path is drawn at
+    // (1.5, 1.5) (a 1-pixel line, over two rows; the range rays off: its back ray runs along that path)
+    await page.uncheck('#rays');
+    const reddish = c => c[0] > c[1] + 20 && c[0] > c[2] + 20;
+    const trailRows = async () => [await pixelAt(1.5, 1.5, 0, -1), await pixelAt(1.5, 1.5, 0, 0), await pixelAt(1.5, 1.5, 0, 1)];
+    const trailsAtEnd = await trailRows();
+    check(trailsAtEnd.some(reddish), 'trails are drawn (SimbotB 2\'s path behind it: ' + JSON.stringify(trailsAtEnd) + ')');
+    await page.uncheck('#trails');
+    check((await trailRows()).every(c => near(c, background, 0)), 'unticking "trails" hides them');
+    await page.check('#trails');
+    check(JSON.stringify(await trailRows()) === JSON.stringify(trailsAtEnd), 'ticking it again shows the same trails');
+    // the trails of the frames played one by one (each frame adds its stretch) and of a jump to the
+    // end (drawn whole) are the same, but for the anti-aliasing where the stretches meet
+    const stepped = await page.evaluate(() => {
+      const R = window.afrpReplay, k = R.frameCount(), c = document.getElementById('world'), g = c.getContext('2d');
+      const grab = () => g.getImageData(0, 0, c.width, c.height).data;
+      R.setFrame(0);
+      for (let i = 1; i < k; i++) R.setFrame(i);
+      const a = grab();
+      R.setFrame(0);
+      R.setFrame(k - 1);
+      const b = grab();
+      let differ = 0, trail = 0;
+      for (let i = 0; i < a.length; i += 4) {
+        if (a[i] !== b[i] || a[i + 1] !== b[i + 1] || a[i + 2] !== b[i + 2]) differ++;
+        if (b[i] > b[i + 1] + 20 && b[i] > b[i + 2] + 20) trail++;
+      }
+      return { differ: differ, reddish: trail };
+    });
+    check(stepped.differ <= 60 && stepped.reddish > 100, 'frames played one by one draw the trails a jump to the end draws (' +
+          stepped.differ + ' pixels differ, ' + stepped.reddish + ' reddish)');
+    await page.evaluate(() => window.afrpReplay.setFrame(0));
+    const atStart = await trailRows();
+    check(atStart.every(c => near(c, background, 0)), 'back at the start, the trails are gone (' + JSON.stringify(atStart) + ')');
+    await page.evaluate(() => window.afrpReplay.setFrame(window.afrpReplay.frameCount() - 1));
+    await page.check('#rays');
+
     // click a robot: its readings appear
     const box = await page.locator('#world').boundingBox();
     const p = await page.evaluate(r => window.afrpReplay.worldToCanvas(r.x, r.y), info.last.robots[0]);

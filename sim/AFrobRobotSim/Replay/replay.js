@@ -73,6 +73,33 @@
     ctx.lineWidth = width; ctx.strokeStyle = colour; ctx.stroke(); ctx.setLineDash([]);
   }
 
+  // The trails, on a layer of their own that keeps the paths up to the
+  // frame they were last drawn for: going forward adds only the new
+  // stretch of each path (playing a big world's page draws a few
+  // segments a robot per frame, not its whole path again); going back
+  // draws the paths afresh. (Drawn whole at every frame, the trails of
+  // 1000 robots took 0.4 s a frame near the end of a 30 s page.)
+  var trailLayer = document.createElement('canvas');
+  trailLayer.width = canvas.width; trailLayer.height = canvas.height;
+  var tctx = trailLayer.getContext('2d');
+  var trailsUpTo = -1;   // the layer holds the paths of frames 0 to this one
+  function drawTrails(upTo) {
+    if (upTo < trailsUpTo) { tctx.clearRect(0, 0, trailLayer.width, trailLayer.height); trailsUpTo = -1; }
+    if (upTo > trailsUpTo) {
+      var from = Math.max(trailsUpTo, 0);
+      header.robots.forEach(function (r, i) {
+        tctx.beginPath();
+        for (var j = from; j <= upTo; j++) {
+          var p = toCanvas(frames[j].robots[i].x, frames[j].robots[i].y);
+          if (j === from) tctx.moveTo(p[0], p[1]); else tctx.lineTo(p[0], p[1]);
+        }
+        tctx.lineWidth = 1; tctx.strokeStyle = rgb(blend(0.5, typeColour(r.type), background)); tctx.stroke();
+      });
+      trailsUpTo = upTo;
+    }
+    ctx.drawImage(trailLayer, 0, 0);
+  }
+
   function draw() {
     var f = frames[state.frame];
     ctx.fillStyle = rgb(background); ctx.fillRect(0, 0, canvas.width, canvas.height);
@@ -82,16 +109,7 @@
     header.goals.forEach(function (g) { rect(g, 'rgba(60,170,60,0.25)'); });
     header.walls.forEach(function (w) { rect(w, 'rgb(90,90,90)'); });
     header.blocks.forEach(function (k) { rect(k, 'rgb(139,90,43)'); });
-    if ($('trails').checked) {
-      header.robots.forEach(function (r, i) {
-        ctx.beginPath();
-        for (var j = 0; j <= state.frame; j++) {
-          var p = toCanvas(frames[j].robots[i].x, frames[j].robots[i].y);
-          if (j === 0) ctx.moveTo(p[0], p[1]); else ctx.lineTo(p[0], p[1]);
-        }
-        ctx.lineWidth = 1; ctx.strokeStyle = rgb(blend(0.5, typeColour(r.type), background)); ctx.stroke();
-      });
-    }
+    if ($('trails').checked) drawTrails(state.frame);
     f.balls.forEach(function (p) { disc(p[0], p[1], header.ballRadius, 'rgb(255,140,0)', 'rgb(170,90,0)', 1.5 * fine); });
     f.robots.forEach(function (r, i) {
       var here = toCanvas(r.x, r.y);
