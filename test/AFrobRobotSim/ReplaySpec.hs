@@ -27,9 +27,12 @@ embeddedData page = case [ rest | rest <- tails page, openTag `isPrefixOf` rest 
   []       -> Nothing
   where
     openTag = "<script id=\"afrp-log\" type=\"application/json\">"
-    takeUntil end s@(c : cs) | end `isPrefixOf` s = ""
-                             | otherwise          = c : takeUntil end cs
-    takeUntil _ [] = ""
+
+-- A text up to the first occurrence of @end@ (all of it if none).
+takeUntil :: String -> String -> String
+takeUntil end s@(c : cs) | end `isPrefixOf` s = ""
+                         | otherwise          = c : takeUntil end cs
+takeUntil _ [] = ""
 
 -- The page's data elements, in order: each one's id and text (its JSON
 -- array, with the newline after its opening tag).
@@ -39,9 +42,6 @@ dataElements page =
   | rest <- tails page, open `isPrefixOf` rest ]
   where
     open = "<script id=\"afrp-log"
-    takeUntil end s@(c : cs) | end `isPrefixOf` s = ""
-                             | otherwise          = c : takeUntil end cs
-    takeUntil _ [] = ""
 
 -- A list cut into consecutive pieces of the given lengths.
 cut :: [Int] -> [a] -> [[a]]
