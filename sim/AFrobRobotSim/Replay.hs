@@ -46,6 +46,10 @@ module AFrobRobotSim.Replay
   , replayPageFromLines
   , replayPageChunked
   , replayChunkChars
+    -- * How many frames a run's page keeps
+  , replayFrameStep
+  , replayMaxFrames
+  , replayMaxRobotFrames
   , writeReplayFromLog
     -- * Recording a run as it goes
   , ReplayRecorder
@@ -133,6 +137,37 @@ replayPageParts nonce = (concat
 -- Chromium reads as one string.
 replayChunkChars :: Int
 replayChunkChars = 64 * 1024 * 1024
+
+-- | The most frames a run's page holds: 9000 (6 minutes at 25 frames a
+-- second, about 25 MB for the default world). See 'replayFrameStep'.
+replayMaxFrames :: Int
+replayMaxFrames = 9000
+
+-- | The most robot-frames (robots times frames) a run's page holds: 2.5
+-- million, about 1 GB of page (some 420 bytes each). Chromium (Debian's
+-- 156) opened the page of 10,000 robots for 10 s (2.5 million, 1.06 GB)
+-- in 25-33 s; the page of their 30 s (7.5 million, 3.2 GB) crashed it.
+-- See 'replayFrameStep'.
+replayMaxRobotFrames :: Int
+replayMaxRobotFrames = 2500000
+
+-- | @replayFrameStep seconds fps robots@: the page of a run of that many
+-- simulated seconds, frames a second and robots keeps one frame period
+-- in this many (at least 1): the fewest that keep it within
+-- 'replayMaxFrames' frames and 'replayMaxRobotFrames' robot-frames
+-- (counting @seconds * fps@ frame periods). So a long run or a big world
+-- gets a page that still opens, its frames thinned evenly; the run's log
+-- keeps every frame.
+--
+-- > replayFrameStep 30 25 6      == 1   -- the default world
+-- > replayFrameStep 400 25 6     == 2   -- 10,000 periods
+-- > replayFrameStep 30 25 10000  == 3   -- 7.5 million robot-frames
+replayFrameStep :: Double -> Double -> Int -> Int
+replayFrameStep seconds fps robots = maximum [1, over replayMaxFrames 1, over replayMaxRobotFrames (max 1 robots)]
+  where
+    periods = seconds * fps
+    over :: Int -> Int -> Int
+    over limit per = ceiling (periods * fromIntegral per / fromIntegral limit)
 
 -- The opening of the page's @k@-th data element (from 1), up to its
 -- array's @[@.

@@ -311,12 +311,6 @@ framesSink opts scale frameAt render countRef = do
         mempty <$ (try (removeFile (frameTemp (optOut opts) k)) :: IO (Either IOException ()))
   pure (Sink step finish)
 
--- The most frames a replay page holds (6 minutes at 25 frames a second,
--- about 25 MB for the default world); a longer run's page thins its
--- frames evenly to stay under it.
-replayMaxFrames :: Int
-replayMaxFrames = 9000
-
 -- The SVG: at most 'svgMaxPoints' + 1 snapshots, taken every @every@
 -- steps when a robot moved more than a pixel since the last one, and the
 -- last state; written at the end. The first snapshot and the last state
@@ -450,12 +444,12 @@ simulateRun prog opts ffmpeg world rcA rcB = do
       -- frame f is taken at the step nearest to simulated time f / fps
       -- (the same steps as the log's frames)
       frameAt  = isFrameStep dt (optFps opts)
-      -- the replay page shows every frame period's state up to
-      -- 'replayMaxFrames' frames, and every k-th beyond (a page of a
-      -- long run stays a few tens of MB)
-      replayThin = max 1 (ceiling (optSeconds opts * optFps opts / fromIntegral replayMaxFrames)) :: Int
+      -- the replay page shows every frame period's state, or every k-th
+      -- in a run that would give it more than 'replayMaxFrames' frames or
+      -- 'replayMaxRobotFrames' robot-frames (a page that opens)
+      replayThin = replayFrameStep (optSeconds opts) (optFps opts) (length [ () | o <- world, Just _ <- [robotKindOf o] ])
       replayCfg  = logCfg { lcFps = optFps opts / fromIntegral replayThin }
-      thinNote | replayThin > 1 = "; this long run's page keeps one frame period in " ++ show replayThin
+      thinNote | replayThin > 1 = "; this run's page keeps one frame period in " ++ show replayThin
                | otherwise      = ""
       svgEvery = max 1 (nSteps `div` svgMaxPoints)
       states   = take (nSteps + 1) (simulateWith cfg world rcA rcB)

@@ -116,6 +116,23 @@ spec = do
         length written `seq` removeFile path
         written `shouldBe` replayPageChunked n fixtureLog
 
+  describe "replayFrameStep (how many frame periods a page keeps one of)" $ do
+    it "keeps every frame up to 9000 frames and 2.5 million robot-frames, and thins evenly beyond (fixed)" $ do
+      map (\(secs, robots) -> replayFrameStep secs 25 robots)
+          [ (30, 6), (360, 6), (360.04, 6), (400, 6), (3600, 2)
+          , (10, 10000), (10.04, 10000), (30, 10000), (30, 1000), (100, 1000), (100.04, 1000) ]
+        `shouldBe` [1, 1, 2, 2, 10, 1, 2, 3, 1, 1, 2]
+    it "keeps every frame of a run of no time, and counts a world without robots as one robot (fixed)" $
+      map (\(secs, robots) -> replayFrameStep secs 25 robots) [(0, 10000), (30, 0), (400, 0)] `shouldBe` [1, 1, 2]
+    it "keeps within both limits with the fewest periods skipped" $
+      forM_ [ (secs, robots) | secs <- [0.5, 7, 30, 123.4, 400, 3600], robots <- [1, 7, 100, 1000, 3333, 10000, 40000] ] $
+        \(secs, robots) -> do
+          let k = replayFrameStep secs 25 robots
+              frames j = secs * 25 / fromIntegral j
+              within j = frames j <= fromIntegral replayMaxFrames
+                         && frames j * fromIntegral robots <= fromIntegral replayMaxRobotFrames
+          (k >= 1, within k, k == 1 || not (within (k - 1))) `shouldBe` (True, True, True)
+
   describe "the page's nonce" $ do
     -- (lines of lengths about the hash's eight-byte words: a character in
     -- a whole word and one in the bytes after the last are both hashed)
