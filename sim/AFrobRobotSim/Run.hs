@@ -447,11 +447,12 @@ simulateRun prog opts ffmpeg world rcA rcB = do
       -- the replay page shows every frame period's state, or every k-th
       -- in a run that would give it more than 'replayMaxFrames' frames or
       -- 'replayMaxRobotFrames' robot-frames (a page that opens)
-      replayThin = replayFrameStep (optSeconds opts) (optFps opts) (length [ () | o <- world, Just _ <- [robotKindOf o] ])
+      replayThin = replayFrameStep (optSeconds opts) (optFps opts) nRobots
       replayCfg  = logCfg { lcFps = optFps opts / fromIntegral replayThin }
       thinNote | replayThin > 1 = "; this run's page keeps one frame period in " ++ show replayThin
                | otherwise      = ""
       svgEvery = max 1 (nSteps `div` svgMaxPoints)
+      nRobots  = length [ () | o <- world, Just _ <- [robotKindOf o] ]
       states   = take (nSteps + 1) (simulateWith cfg world rcA rcB)
   mlog <- forM (optLog opts) $ \file -> do
     r <- try (openLogWriter logCfg file)
@@ -481,7 +482,6 @@ simulateRun prog opts ffmpeg world rcA rcB = do
         _ <- evaluate (forceState s)
         sinkAll n s
         loop (n + 1) rest
-      nRobots = length [ () | o <- world, Just _ <- [robotKindOf o] ]
       -- how an exception ends the run (any other is thrown on)
       endedBy e
         | Just UserInterrupt <- fromException e       = pure Interrupted
