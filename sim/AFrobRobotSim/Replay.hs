@@ -18,14 +18,25 @@
 -- same colours, shapes and robot shades), and has play/pause (space),
 -- one frame back and forth (arrow keys), a time slider, a speed, toggles
 -- for range rays, trails and tracker sightings, and a panel with the
--- readings, wheel speeds and messages of the robot last clicked.
+-- readings, wheel speeds and messages of the robot last clicked. It
+-- zooms (the mouse wheel, about the point under it; the @+@ and @-@
+-- buttons and keys, about the middle; up to 250 pixels a metre) and
+-- moves (a drag) within the world; @0@ or "Fit" shows the whole world
+-- again. In a big world a robot is drawn at least 1.5 pixels in radius,
+-- and the ids are drawn when they can be read: when at most 200 robots
+-- are in view, or the robots are at least 8 pixels across.
 --
 -- For tests and tools the page exposes @window.afrpReplay@: @frameCount()@,
 -- @frame()@, @frameData(i)@, @setFrame(i)@, @play()@, @pause()@,
--- @playing()@, @selectRobot(i)@, @selected()@, @worldToCanvas(x, y)@ (in
--- the canvas's pixels), @header@ and @summary@. Element ids: @world@
--- (the canvas), @play@, @back@, @fwd@, @slider@, @speed@, @rays@,
--- @trails@, @sightings@, @time@, @info@, @events@, @meta@, @afrp-log@
+-- @playing()@, @selectRobot(i)@, @selected()@, @worldToCanvas(x, y)@ and
+-- @canvasToWorld(px, py)@ (in the canvas's pixels, in the view),
+-- @view()@ (@{zoom, cx, cy}@: the zoom, 1 for the whole world, and the
+-- world point in the middle), @setView(zoom, cx, cy)@, @maxZoom@,
+-- @drawn()@ (@{robots, labels}@: how many robots the last frame drew,
+-- those in view, and how many of their ids), @header@ and @summary@.
+-- Element ids: @world@ (the canvas), @play@, @back@, @fwd@, @slider@,
+-- @speed@, @rays@, @trails@, @sightings@, @zoomin@, @zoomout@, @fit@,
+-- @time@, @info@, @events@, @meta@, @afrp-log@
 -- (the log's lines, a JSON array), and @afrp-log-2@, @afrp-log-3@, ...
 -- (the lines that follow, when there are more).
 --
@@ -123,6 +134,9 @@ replayPageParts nonce = (concat
   , "<option value=\"0.5\">0.5x</option><option value=\"1\" selected>1x</option>"
   , "<option value=\"2\">2x</option><option value=\"4\">4x</option></select>\n"
   , "<span id=\"time\"></span>\n</div>\n<div id=\"toggles\">\n"
+  , "<button id=\"zoomout\" title=\"zoom out (-)\">&minus;</button>\n"
+  , "<button id=\"zoomin\" title=\"zoom in (+, or the wheel)\">+</button>\n"
+  , "<button id=\"fit\" title=\"the whole world (0)\">Fit</button>\n"
   , "<label><input id=\"rays\" type=\"checkbox\" checked> range rays</label>\n"
   , "<label><input id=\"trails\" type=\"checkbox\" checked> trails</label>\n"
   , "<label><input id=\"sightings\" type=\"checkbox\"> tracker sightings</label>\n"

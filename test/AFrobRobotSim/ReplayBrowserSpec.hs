@@ -30,31 +30,39 @@ pageOf w = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing)
 
 spec :: Spec
 spec = do
-  it "shows the whole of a 30 by 10 m and a 100 m world, robots near their far corners where the log says (fixed)" $ do
-    node <- findExecutable "node"
-    haveModules <- doesDirectoryExist ("test" </> "browser" </> "node_modules" </> "playwright-core")
-    unless (node /= Nothing && haveModules) $
-      expectationFailure "the browser test needs node and playwright-core (cd test/browser && npm ci; .ci/run installs them)"
-    tmp <- getTemporaryDirectory
-    let worlds = [ [OTSize 30 10, OTSimbotA 1 (Point2 (-14.5) 4.5) 0, OTSimbotB 2 (Point2 14.5 (-4.5)) pi]
-                 , [OTSize 100 100, OTSimbotA 1 (Point2 (-49) 49) 0, OTSimbotB 2 (Point2 49 (-49)) pi] ]
-    mapM_ (\w -> do
-            (page, h) <- openTempFile tmp "afrp-replay-size.html"
-            hClose h
-            writeFile page (pageOf w)
-            (code, out, err) <- readProcessWithExitCode (maybe "node" id node)
-                                  ["test" </> "browser" </> "replay-size.test.js", page] ""
-            removeFile page
-            case code of
-              ExitSuccess   -> pure ()
-              ExitFailure c -> expectationFailure ("node test/browser/replay-size.test.js exited with " ++ show c
-                                                   ++ ":\n" ++ out ++ err)) worlds
+  it "shows the whole of a 30 by 10 m and a 100 m world, robots near their far corners where the log says (fixed)" $
+    mapM_ (runPageTest "replay-size.test.js" . pageOf)
+      [ [OTSize 30 10, OTSimbotA 1 (Point2 (-14.5) 4.5) 0, OTSimbotB 2 (Point2 14.5 (-4.5)) pi]
+      , [OTSize 100 100, OTSimbotA 1 (Point2 (-49) 49) 0, OTSimbotB 2 (Point2 49 (-49)) pi] ]
+  it "draws a crowd of 300 small robots in a 300 m world: every robot shows, ids only when readable, zoomed in only those in view (fixed)" $ do
+    let crowd = OTSize 300 300 : [ (if even (i + j) then OTSimbotA else OTSimbotB) (20 * i + j)
+                                     (Point2 (-140 + 20 * fromIntegral i) (-140 + 15 * fromIntegral j)) 0
+                                 | i <- [0 .. 14 :: Int], j <- [0 .. 19] ]
+    runPageTest "replay-crowd.test.js" (pageOf crowd)
   it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $
     playFixture (replayPage fixtureLog)
   it "plays it as well with its log split over several data elements, every frame read (fixed)" $ do
     let page = replayPageChunked 3000 fixtureLog
     length (filter ("<script id=\"afrp-log" `isPrefixOf`) (tails page)) `shouldSatisfy` (> 5)
     playFixture page
+
+-- | Run a script of test/browser/ on a page (written to a temporary file):
+-- the test passes when the script exits 0.
+runPageTest :: FilePath -> String -> Expectation
+runPageTest script pageText = do
+    node <- findExecutable "node"
+    haveModules <- doesDirectoryExist ("test" </> "browser" </> "node_modules" </> "playwright-core")
+    unless (node /= Nothing && haveModules) $
+      expectationFailure "the browser test needs node and playwright-core (cd test/browser && npm ci; .ci/run installs them)"
+    tmp <- getTemporaryDirectory
+    (page, h) <- openTempFile tmp "afrp-replay-page.html"
+    hClose h
+    writeFile page pageText
+    (code, out, err) <- readProcessWithExitCode (maybe "node" id node) ["test" </> "browser" </> script, page] ""
+    removeFile page
+    case code of
+      ExitSuccess   -> pure ()
+      ExitFailure c -> expectationFailure ("node test/browser/" ++ script ++ " exited with " ++ show c ++ ":\n" ++ out ++ err)
 
 -- | Run test/browser/replay.test.js on a page of 'fixtureLog', which must
 -- show all of its frames.

@@ -46,6 +46,7 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
     const info = await page.evaluate(() => ({
       n: window.afrpReplay.frameCount(), robots: window.afrpReplay.header.robots,
       first: window.afrpReplay.frameData(0), last: window.afrpReplay.frameData(window.afrpReplay.frameCount() - 1),
+      bounds: window.afrpReplay.header.bounds,
       scale: window.afrpReplay.worldToCanvas(1, 0)[0] - window.afrpReplay.worldToCanvas(0, 0)[0] }));
     check(info.n > 10, 'the page has the log\'s frames (' + info.n + ')');
     check(info.robots.length === 2 && info.robots[0].type === 'SimbotA', 'the header lists the fixture\'s robots');
@@ -130,6 +131,73 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
                                                data: document.querySelectorAll('script[id^="afrp-log"]').length }));
     check(pwned.flag === undefined && pwned.imgs === 0 && pwned.data >= 1 && pwned.scripts === pwned.data + 1,
           'the hostile message ran no script and made no element');
+
+    // zoom and move: the wheel zooms about the point under it, the robots grow with the view, the
+    // trails are drawn in it, a drag moves it without selecting, 0 / + / Fit and the limits
+    await page.uncheck('#rays');
+    const rB = info.last.robots[1];
+    const view = () => page.evaluate(() => window.afrpReplay.view());
+    const canvasOf = r => page.evaluate(r => window.afrpReplay.worldToCanvas(r.x, r.y), r);
+    const pixel = p => page.evaluate(p => Array.from(document.getElementById('world').getContext('2d')
+                                                    .getImageData(Math.round(p[0]), Math.round(p[1]), 1, 1).data.slice(0, 3)), p);
+    // (a point beside SimbotB 2, k pixels from its centre across its heading)
+    const beside = async k => { const c = await canvasOf(rB); return pixel([c[0] + k * Math.sin(rB.heading), c[1] + k * Math.cos(rB.heading)]); };
+    const nextFrame = () => page.evaluate(() => new Promise(done => requestAnimationFrame(() => done())));
+    // (the canvas's first pixel on the page, inside its border)
+    const inner = await page.evaluate(() => { const c = document.getElementById('world'), r = c.getBoundingClientRect();
+                                              return [r.left + c.clientLeft, r.top + c.clientTop]; });
+    const fitB = await canvasOf(rB);
+    const drawnAtFit = await page.evaluate(() => window.afrpReplay.drawn());
+    check(drawnAtFit.robots === 2 && drawnAtFit.labels === 2, 'the whole world in view draws both robots and their ids (' + JSON.stringify(drawnAtFit) + ')');
+    check(!near(await beside(1.4 * radiusPx), red, 60), 'in the whole world\'s view, 1.4 radii beside SimbotB 2 is not its body');
+    // (a whole page pixel near SimbotB 2: the mouse's events are in whole pixels)
+    const cursor = (await page.evaluate(r => window.afrpReplay.worldToCanvas(r.x + 0.3, r.y + 0.2), rB))
+                     .map((v, k) => Math.round(inner[k] + v) - inner[k]);
+    const under = () => page.evaluate(p => window.afrpReplay.canvasToWorld(p[0], p[1]), cursor);
+    const underBefore = await under();
+    await page.mouse.move(inner[0] + cursor[0], inner[1] + cursor[1]);
+    await page.mouse.wheel(0, -300);
+    await page.waitForFunction(() => window.afrpReplay.view().zoom > 1);
+    await nextFrame();
+    const zoomed = await view();
+    check(Math.abs(zoomed.zoom - Math.exp(0.6)) < 1e-9, 'the wheel zooms in (' + zoomed.zoom + ')');
+    check(near(await under(), underBefore, 1e-9), 'about the world point under the mouse');
+    check(near(await beside(0.5 * radiusPx * zoomed.zoom), red, 2) && near(await beside(1.4 * radiusPx), red, 2),
+          'SimbotB 2 is drawn where the log puts it, its radius grown with the zoom');
+    check((await trailRows()).some(reddish), 'the trails are drawn in the zoomed view');
+    await page.mouse.move(inner[0] + cursor[0], inner[1] + cursor[1]);
+    await page.mouse.down();
+    await page.mouse.move(inner[0] + cursor[0] - 60, inner[1] + cursor[1] + 40, { steps: 6 });
+    await page.mouse.up();
+    await nextFrame();
+    const dragged = await view(), s = info.scale * zoomed.zoom;
+    check(Math.abs(dragged.cx - (zoomed.cx + 60 / s)) < 1e-9 && Math.abs(dragged.cy - (zoomed.cy + 40 / s)) < 1e-9 &&
+          dragged.zoom === zoomed.zoom, 'a drag moves the view with the mouse');
+    check(await page.evaluate(() => window.afrpReplay.selected()) === 0, 'and selects nothing');
+    check(near(await beside(0.5 * radiusPx * zoomed.zoom), red, 2), 'SimbotB 2 is drawn where the log puts it in the moved view');
+    const bAt = await canvasOf(rB);
+    await page.mouse.click(inner[0] + bAt[0] + 0.5 * radiusPx * zoomed.zoom * Math.sin(rB.heading),
+                           inner[1] + bAt[1] + 0.5 * radiusPx * zoomed.zoom * Math.cos(rB.heading));
+    check(await page.evaluate(() => window.afrpReplay.selected()) === 1 &&
+          (await page.locator('#info').textContent()).includes('SimbotB 2'), 'clicking SimbotB 2 in the zoomed view selects it');
+    await page.keyboard.press('0');
+    check((await view()).zoom === 1 && near(await canvasOf(rB), fitB, 1e-9), 'key 0 shows the whole world again, as before');
+    await page.keyboard.press('+');
+    const plus = await view();
+    check(Math.abs(plus.zoom - 1.5) < 1e-12 && Math.abs(plus.cx - info.bounds.x) < 1e-9 && Math.abs(plus.cy - info.bounds.y) < 1e-9,
+          'key + zooms 1.5 times about the middle (' + JSON.stringify(plus) + ')');
+    await page.click('#fit');
+    check((await view()).zoom === 1, 'the Fit button shows the whole world');
+    const limits = await page.evaluate(() => { const R = window.afrpReplay; R.setView(1e6, 100, -100); const a = R.view();
+                                               R.setView(0.01, 3, 3); const c = R.view(); return [a, c, R.maxZoom]; });
+    check(limits[0].zoom === limits[2] && Math.abs(limits[2] - 250 / info.scale) < 1e-9 &&
+          Math.abs(limits[0].cx - (info.bounds.x + info.bounds.width / 2 * (1 - 1 / limits[2]))) < 1e-9 &&
+          Math.abs(limits[0].cy - (info.bounds.y - info.bounds.height / 2 * (1 - 1 / limits[2]))) < 1e-9,
+          'the zoom stops at 250 pixels a metre, the view within the world (' + JSON.stringify(limits[0]) + ')');
+    check(limits[1].zoom === 1 && limits[1].cx === info.bounds.x && limits[1].cy === info.bounds.y,
+          'and at the whole world, which it cannot leave');
+    await page.evaluate(() => window.afrpReplay.selectRobot(0));
+    await page.check('#rays');
 
     // keyboard: arrows step, space plays and pauses
     await page.locator('#world').focus().catch(() => {});

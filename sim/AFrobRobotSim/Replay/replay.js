@@ -28,16 +28,43 @@
   var b = header.bounds;
   var x0 = b.x - b.width / 2, y1 = b.y + b.height / 2;
   var margin = 10;
-  var scale = Math.min(620 / b.width, 620 / b.height);
-  canvas.width = Math.round(b.width * scale + 2 * margin);
-  canvas.height = Math.round(b.height * scale + 2 * margin);
-  // In a big world a robot is a few pixels across: its rim, heading mark and
-  // id shrink with it (full size from 30 px/m up, the notes' world included).
-  var fine = Math.min(1, scale / 30);
+  // pixels a metre with the whole world in view (620 on its long side)
+  var fitScale = Math.min(620 / b.width, 620 / b.height);
+  canvas.width = Math.round(b.width * fitScale + 2 * margin);
+  canvas.height = Math.round(b.height * fitScale + 2 * margin);
+
+  // The view: the world point at the middle of the world's rectangle on
+  // the canvas, and a zoom (1: the whole world; up to 250 pixels a metre,
+  // or 1 if the whole world is already that close). Zoomed in, the view
+  // stays within the world. 'scale' is the view's pixels a metre; 'vx0'
+  // and 'vy1' the world's coordinates at the rectangle's top left corner.
+  var maxZoom = Math.max(1, 250 / fitScale);
+  var view = { zoom: 1, cx: b.x, cy: b.y };
+  var scale, vx0, vy1, fine, viewKey;
+  function clamp(v, lo, hi) { return Math.max(lo, Math.min(hi, v)); }
+  function setView(zoom, cx, cy) {
+    var z = clamp(zoom, 1, maxZoom), hw = b.width / 2 / z, hh = b.height / 2 / z;
+    view = { zoom: z, cx: clamp(cx, x0 + hw, x0 + b.width - hw), cy: clamp(cy, y1 - b.height + hh, y1 - hh) };
+    scale = fitScale * z;
+    vx0 = view.cx - hw; vy1 = view.cy + hh;
+    // In a big world a robot is a few pixels across: its rim, heading mark and
+    // id shrink with it (full size from 30 px/m up, the notes' world included).
+    fine = Math.min(1, scale / 30);
+    viewKey = view.zoom + ' ' + view.cx + ' ' + view.cy;
+  }
+  setView(1, b.x, b.y);
+  // zoom by a factor, keeping the world point under canvas point (px, py) there
+  function zoomAt(px, py, factor) {
+    var w = toWorld(px, py), z = clamp(view.zoom * factor, 1, maxZoom), s = fitScale * z;
+    setView(z, w[0] - (px - margin) / s + b.width / 2 / z, w[1] + (py - margin) / s - b.height / 2 / z);
+  }
 
   var state = { frame: 0, playing: false, selected: -1, speed: 1, simTime: 0, last: null };
 
-  function toCanvas(x, y) { return [margin + (x - x0) * scale, margin + (y1 - y) * scale]; }
+  function toCanvas(x, y) { return [margin + (x - vx0) * scale, margin + (vy1 - y) * scale]; }
+  function toWorld(px, py) { return [vx0 + (px - margin) / scale, vy1 - (py - margin) / scale]; }
+  // whether a canvas point is within d pixels of the canvas
+  function nearCanvas(p, d) { return p[0] > -d && p[1] > -d && p[0] < canvas.width + d && p[1] < canvas.height + d; }
   function rgb(c) { return 'rgb(' + c[0] + ',' + c[1] + ',' + c[2] + ')'; }
   function darken(f, c) { return [Math.round(c[0] * f), Math.round(c[1] * f), Math.round(c[2] * f)]; }
   function blend(f, a, c) { return [0, 1, 2].map(function (i) { return Math.round(f * a[i] + (1 - f) * c[i]); }); }
@@ -56,99 +83,173 @@
     return s[(k - 1) % s.length];
   });
 
-  function rect(r, fill) {
-    var p = toCanvas(r.x - r.width / 2, r.y + r.height / 2);
-    ctx.fillStyle = fill;
-    ctx.fillRect(p[0], p[1], r.width * scale, r.height * scale);
+  // A layer: a canvas of the page's canvas's size, not in the page.
+  function layer() {
+    var c = document.createElement('canvas');
+    c.width = canvas.width; c.height = canvas.height;
+    return { canvas: c, ctx: c.getContext('2d'), view: null, upTo: -1 };
   }
-  function disc(x, y, radius, fill, stroke, width) {
-    var p = toCanvas(x, y);
-    ctx.beginPath(); ctx.arc(p[0], p[1], radius * scale, 0, 2 * Math.PI);
-    ctx.fillStyle = fill; ctx.fill();
-    if (stroke) { ctx.lineWidth = width; ctx.strokeStyle = stroke; ctx.stroke(); }
+  // Zoomed in, what is drawn stays within the world's rectangle.
+  function clipToWorld(g) {
+    if (view.zoom > 1) { g.beginPath(); g.rect(margin, margin, b.width * fitScale, b.height * fitScale); g.clip(); }
   }
-  function line(a, c, colour, width, dash) {
-    ctx.beginPath(); ctx.setLineDash(dash || []);
-    ctx.moveTo(a[0], a[1]); ctx.lineTo(c[0], c[1]);
-    ctx.lineWidth = width; ctx.strokeStyle = colour; ctx.stroke(); ctx.setLineDash([]);
+
+  // What does not move (the floor, the world's edge, goals, walls and
+  // blocks), drawn once for each view.
+  var still = layer();
+  function drawStill() {
+    if (still.view !== viewKey) {
+      var g = still.ctx;
+      g.save();
+      g.fillStyle = rgb(background); g.fillRect(0, 0, canvas.width, canvas.height);
+      clipToWorld(g);
+      var c0 = toCanvas(x0, y1);
+      g.lineWidth = 2; g.strokeStyle = 'rgb(45,45,45)';
+      g.strokeRect(c0[0], c0[1], b.width * scale, b.height * scale);
+      var rect = function (r, fill) {
+        var p = toCanvas(r.x - r.width / 2, r.y + r.height / 2);
+        g.fillStyle = fill;
+        g.fillRect(p[0], p[1], r.width * scale, r.height * scale);
+      };
+      header.goals.forEach(function (k) { rect(k, 'rgba(60,170,60,0.25)'); });
+      header.walls.forEach(function (w) { rect(w, 'rgb(90,90,90)'); });
+      header.blocks.forEach(function (k) { rect(k, 'rgb(139,90,43)'); });
+      g.restore();
+      still.view = viewKey;
+    }
+    ctx.drawImage(still.canvas, 0, 0);
   }
 
   // The trails, on a layer of their own that keeps the paths up to the
-  // frame they were last drawn for: going forward adds only the new
-  // stretch of each path (playing a big world's page draws a few
-  // segments a robot per frame, not its whole path again); going back
-  // draws the paths afresh. (Drawn whole at every frame, the trails of
-  // 1000 robots took 0.4 s a frame near the end of a 30 s page.)
-  var trailLayer = document.createElement('canvas');
-  trailLayer.width = canvas.width; trailLayer.height = canvas.height;
-  var tctx = trailLayer.getContext('2d');
-  var trailsUpTo = -1;   // the layer holds the paths of frames 0 to this one
+  // frame they were last drawn for, in the view they were drawn in: going
+  // forward adds only the new stretch of each path (playing a big world's
+  // page draws a few segments a robot per frame, not its whole path
+  // again); going back, or another view, draws the paths afresh. (Drawn
+  // whole at every frame, the trails of 1000 robots took 0.4 s a frame
+  // near the end of a 30 s page.)
+  var trails = layer();
   function drawTrails(upTo) {
-    if (upTo < trailsUpTo) { tctx.clearRect(0, 0, trailLayer.width, trailLayer.height); trailsUpTo = -1; }
-    if (upTo > trailsUpTo) {
-      var from = Math.max(trailsUpTo, 0);
+    var g = trails.ctx;
+    if (upTo < trails.upTo || trails.view !== viewKey) {
+      g.clearRect(0, 0, canvas.width, canvas.height); trails.upTo = -1; trails.view = viewKey;
+    }
+    if (upTo > trails.upTo) {
+      var from = Math.max(trails.upTo, 0);
+      g.save(); clipToWorld(g);
       header.robots.forEach(function (r, i) {
-        tctx.beginPath();
+        g.beginPath();
         for (var j = from; j <= upTo; j++) {
           var p = toCanvas(frames[j].robots[i].x, frames[j].robots[i].y);
-          if (j === from) tctx.moveTo(p[0], p[1]); else tctx.lineTo(p[0], p[1]);
+          if (j === from) g.moveTo(p[0], p[1]); else g.lineTo(p[0], p[1]);
         }
-        tctx.lineWidth = 1; tctx.strokeStyle = rgb(blend(0.5, typeColour(r.type), background)); tctx.stroke();
+        g.lineWidth = 1; g.strokeStyle = rgb(blend(0.5, typeColour(r.type), background)); g.stroke();
       });
-      trailsUpTo = upTo;
+      g.restore();
+      trails.upTo = upTo;
     }
-    ctx.drawImage(trailLayer, 0, 0);
+    ctx.drawImage(trails.canvas, 0, 0);
+  }
+
+  // The robots, each drawn where the log puts it: a disc in its colour
+  // (darker when its bumper is pressed; at least 1.5 pixels in radius, so
+  // that a big world's robots stay visible), a rim and a white heading
+  // mark (unless under half a pixel wide, or under 1.5 pixels long), and
+  // its id when it can be read: when the robot is at least 8 pixels
+  // across, or at most 200 robots are in view (and always the selected
+  // robot's). Robots with the same colours are drawn as one path (10,000
+  // robots drawn one by one took about 0.2 s a frame); so are the rays,
+  // the heading marks and the balls. Robots out of view are skipped.
+  var drawn = { robots: 0, labels: 0 };
+  function drawMoving(f) {
+    var balls = new Path2D(), ballRadius = header.ballRadius * scale;
+    f.balls.forEach(function (p) {
+      var c = toCanvas(p[0], p[1]);
+      if (nearCanvas(c, ballRadius + 2)) { balls.moveTo(c[0] + ballRadius, c[1]); balls.arc(c[0], c[1], ballRadius, 0, 2 * Math.PI); }
+    });
+    ctx.fillStyle = 'rgb(255,140,0)'; ctx.fill(balls);
+    ctx.lineWidth = 1.5 * fine; ctx.strokeStyle = 'rgb(170,90,0)'; ctx.stroke(balls);
+
+    var reach = 5 * scale;   // (a ray or a sighting is shorter than 5 m)
+    var rays = $('rays').checked ? new Path2D() : null;
+    var seen = $('sightings').checked ? { robots: new Path2D(), balls: new Path2D() } : null;
+    var groups = new Map(), marks = new Path2D(), labels = [];
+    f.robots.forEach(function (r, i) {
+      var here = toCanvas(r.x, r.y);
+      if (!nearCanvas(here, reach)) return;
+      var ray = function (path, a, d) {
+        var end = toCanvas(r.x + d * Math.cos(r.heading + a), r.y + d * Math.sin(r.heading + a));
+        path.moveTo(here[0], here[1]); path.lineTo(end[0], end[1]);
+      };
+      if (rays) header.rangeAngles.forEach(function (a, k) { if (r.range[k] !== null) ray(rays, a, r.range[k]); });
+      if (seen) {
+        r.seenRobots.forEach(function (s) { ray(seen.robots, s[2], s[3]); });
+        r.seenBalls.forEach(function (s) { ray(seen.balls, s[0], s[1]); });
+      }
+      var info = header.robots[i], radius = info.radius * scale;
+      if (!nearCanvas(here, radius + 40)) return;
+      var col = colours[i], selected = i === state.selected;
+      var fill = rgb(r.bumper ? darken(0.6, col) : col), rim = r.bumper ? 'rgb(0,0,0)' : rgb(darken(0.5, col));
+      var width = selected ? Math.max(2, 4 * fine) : 2 * fine, key = fill + rim + width;
+      var group = groups.get(key);
+      if (!group) { group = { fill: fill, rim: rim, width: width, path: new Path2D() }; groups.set(key, group); }
+      var shown = Math.max(radius, 1.5);
+      group.path.moveTo(here[0] + shown, here[1]); group.path.arc(here[0], here[1], shown, 0, 2 * Math.PI);
+      if (radius >= 1.5) {
+        marks.moveTo(here[0], here[1]);
+        marks.lineTo(here[0] + radius * Math.cos(r.heading), here[1] - radius * Math.sin(r.heading));
+      }
+      labels.push([i, here, radius]);
+    });
+    if (rays) { ctx.lineWidth = 1; ctx.strokeStyle = 'rgb(0,170,60)'; ctx.stroke(rays); }
+    if (seen) {
+      ctx.setLineDash([4, 3]); ctx.lineWidth = 1;
+      ctx.strokeStyle = 'rgba(120,40,160,0.8)'; ctx.stroke(seen.robots);
+      ctx.strokeStyle = 'rgba(200,110,0,0.8)'; ctx.stroke(seen.balls);
+      ctx.setLineDash([]);
+    }
+    groups.forEach(function (g) {
+      ctx.fillStyle = g.fill; ctx.fill(g.path);
+      if (g.width >= 0.5) { ctx.lineWidth = g.width; ctx.strokeStyle = g.rim; ctx.stroke(g.path); }
+    });
+    ctx.lineWidth = 3 * fine; ctx.strokeStyle = 'rgb(255,255,255)'; ctx.stroke(marks);
+    var crowd = labels.length > 200;
+    ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = Math.round(Math.max(8, 12 * fine)) + 'px sans-serif';
+    drawn = { robots: labels.length, labels: 0 };
+    labels.forEach(function (l) {
+      if (!crowd || l[2] >= 4 || l[0] === state.selected) {
+        ctx.fillText(String(header.robots[l[0]].id), l[1][0] + l[2] + 2, l[1][1] - l[2]);
+        drawn.labels++;
+      }
+    });
   }
 
   function draw() {
     var f = frames[state.frame];
-    ctx.fillStyle = rgb(background); ctx.fillRect(0, 0, canvas.width, canvas.height);
-    var c0 = toCanvas(x0, y1);
-    ctx.lineWidth = 2; ctx.strokeStyle = 'rgb(45,45,45)';
-    ctx.strokeRect(c0[0], c0[1], b.width * scale, b.height * scale);
-    header.goals.forEach(function (g) { rect(g, 'rgba(60,170,60,0.25)'); });
-    header.walls.forEach(function (w) { rect(w, 'rgb(90,90,90)'); });
-    header.blocks.forEach(function (k) { rect(k, 'rgb(139,90,43)'); });
+    drawStill();
+    ctx.save(); clipToWorld(ctx);
     if ($('trails').checked) drawTrails(state.frame);
-    f.balls.forEach(function (p) { disc(p[0], p[1], header.ballRadius, 'rgb(255,140,0)', 'rgb(170,90,0)', 1.5 * fine); });
-    f.robots.forEach(function (r, i) {
-      var here = toCanvas(r.x, r.y);
-      if ($('rays').checked) {
-        header.rangeAngles.forEach(function (a, k) {
-          var d = r.range[k]; if (d === null) return;
-          line(here, toCanvas(r.x + d * Math.cos(r.heading + a), r.y + d * Math.sin(r.heading + a)),
-               'rgb(0,170,60)', 1);
-        });
-      }
-      if ($('sightings').checked) {
-        var sight = function (a, d, colour) {
-          line(here, toCanvas(r.x + d * Math.cos(r.heading + a), r.y + d * Math.sin(r.heading + a)), colour, 1, [4, 3]);
-        };
-        r.seenRobots.forEach(function (s) { sight(s[2], s[3], 'rgba(120,40,160,0.8)'); });
-        r.seenBalls.forEach(function (s) { sight(s[0], s[1], 'rgba(200,110,0,0.8)'); });
-      }
-    });
-    f.robots.forEach(function (r, i) {
-      var info = header.robots[i], col = colours[i];
-      disc(r.x, r.y, info.radius, rgb(r.bumper ? darken(0.6, col) : col),
-           r.bumper ? 'rgb(0,0,0)' : rgb(darken(0.5, col)), i === state.selected ? Math.max(2, 4 * fine) : 2 * fine);
-      line(toCanvas(r.x, r.y), toCanvas(r.x + info.radius * Math.cos(r.heading), r.y + info.radius * Math.sin(r.heading)),
-           'rgb(255,255,255)', 3 * fine);
-      var p = toCanvas(r.x, r.y);
-      ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = Math.round(Math.max(8, 12 * fine)) + 'px sans-serif';
-      ctx.fillText(String(info.id), p[0] + info.radius * scale + 2, p[1] - info.radius * scale);
-    });
+    drawMoving(f);
+    ctx.restore();
     $('time').textContent = 't = ' + f.t.toFixed(2) + ' s  (frame ' + state.frame + ' of ' + (frames.length - 1) + ')';
     $('slider').value = String(state.frame);
     $('play').textContent = state.playing ? 'Pause' : 'Play';
     showInfo();
     showEvents();
   }
+  // a view changed by the wheel or a drag: drawn once at the next animation frame
+  var drawPending = false;
+  function drawSoon() {
+    if (!drawPending) { drawPending = true; requestAnimationFrame(function () { drawPending = false; draw(); }); }
+  }
 
   function num(x, d) { return x === null ? 'n/a' : x.toFixed(d === undefined ? 3 : d); }
   function showInfo() {
     var el = $('info');
-    if (state.selected < 0) { el.textContent = 'Click a robot to see its readings.'; return; }
+    if (state.selected < 0) {
+      el.textContent = 'Click a robot to see its readings.\n' +
+        'Zoom with the wheel (or + and -), drag to move, 0 for the whole world.';
+      return;
+    }
     var i = state.selected, info = header.robots[i], r = frames[state.frame].robots[i];
     var out = [];
     out.push(info.type + ' ' + info.id + '   at t = ' + frames[state.frame].t.toFixed(2) + ' s');
@@ -212,7 +313,7 @@
     var f = frames[state.frame], best = -1, bestD = Infinity;
     f.robots.forEach(function (r, i) {
       var p = toCanvas(r.x, r.y), d = Math.hypot(p[0] - px, p[1] - py);
-      if (d <= header.robots[i].radius * scale + 3 && d < bestD) { best = i; bestD = d; }
+      if (d <= Math.max(header.robots[i].radius * scale, 1.5) + 3 && d < bestD) { best = i; bestD = d; }
     });
     return best;
   }
@@ -224,16 +325,50 @@
   $('fwd').addEventListener('click', function () { setPlaying(false); setFrame(state.frame + 1); });
   $('speed').addEventListener('change', function () { state.speed = Number($('speed').value); });
   ['rays', 'trails', 'sightings'].forEach(function (id) { $(id).addEventListener('change', draw); });
-  canvas.addEventListener('click', function (e) {
+  // the canvas pixel under a mouse event (inside the canvas's border; the
+  // canvas may be shown scaled)
+  function eventPixel(e) {
     var r = canvas.getBoundingClientRect();
-    state.selected = robotAt((e.clientX - r.left) * canvas.width / r.width, (e.clientY - r.top) * canvas.height / r.height);
+    return [(e.clientX - r.left - canvas.clientLeft) * canvas.width / canvas.clientWidth,
+            (e.clientY - r.top - canvas.clientTop) * canvas.height / canvas.clientHeight];
+  }
+  canvas.addEventListener('wheel', function (e) {
+    e.preventDefault();
+    var p = eventPixel(e);
+    zoomAt(p[0], p[1], Math.exp(-e.deltaY * 0.002));
+    drawSoon();
+  }, { passive: false });
+  // A drag moves the view (a press that moves less than 4 pixels is a click).
+  var drag = null;
+  canvas.addEventListener('mousedown', function (e) {
+    if (e.button === 0) drag = { at: eventPixel(e), cx: view.cx, cy: view.cy, moved: false };
+  });
+  window.addEventListener('mousemove', function (e) {
+    if (!drag) return;
+    var p = eventPixel(e), dx = p[0] - drag.at[0], dy = p[1] - drag.at[1];
+    if (Math.abs(dx) + Math.abs(dy) >= 4) drag.moved = true;
+    if (drag.moved) { setView(view.zoom, drag.cx - dx / scale, drag.cy + dy / scale); drawSoon(); }
+  });
+  window.addEventListener('mouseup', function () { if (drag && !drag.moved) drag = null; });
+  canvas.addEventListener('click', function (e) {
+    if (drag && drag.moved) { drag = null; return; }
+    drag = null;
+    var p = eventPixel(e);
+    state.selected = robotAt(p[0], p[1]);
     draw();
   });
+  function zoomMiddle(factor) { zoomAt(canvas.width / 2, canvas.height / 2, factor); draw(); }
+  $('zoomin').addEventListener('click', function () { zoomMiddle(1.5); });
+  $('zoomout').addEventListener('click', function () { zoomMiddle(1 / 1.5); });
+  $('fit').addEventListener('click', function () { setView(1, b.x, b.y); draw(); });
   document.addEventListener('keydown', function (e) {
     if (e.target && e.target.tagName === 'SELECT') return;
     if (e.key === ' ') { e.preventDefault(); setPlaying(!state.playing); }
     else if (e.key === 'ArrowLeft') { e.preventDefault(); setPlaying(false); setFrame(state.frame - 1); }
     else if (e.key === 'ArrowRight') { e.preventDefault(); setPlaying(false); setFrame(state.frame + 1); }
+    else if (e.key === '+' || e.key === '=') zoomMiddle(1.5);
+    else if (e.key === '-') zoomMiddle(1 / 1.5);
+    else if (e.key === '0') { setView(1, b.x, b.y); draw(); }
   });
   $('meta').textContent = header.commandLine.join(' ') + '\n' + 'dt ' + header.dt + ' s, ' + header.fps +
     ' frames/s, seed ' + header.seed + ', ' + header.robots.length + ' robots' +
@@ -253,7 +388,15 @@
     playing: function () { return state.playing; },
     selectRobot: function (i) { state.selected = i; draw(); },
     selected: function () { return state.selected; },
-    worldToCanvas: toCanvas
+    worldToCanvas: toCanvas,
+    canvasToWorld: toWorld,
+    // the view: {zoom, cx, cy} (zoom 1 shows the whole world; (cx, cy) is
+    // the world point in the middle), and setting it (within its limits)
+    view: function () { return { zoom: view.zoom, cx: view.cx, cy: view.cy }; },
+    setView: function (zoom, cx, cy) { setView(zoom, cx, cy); draw(); },
+    maxZoom: maxZoom,
+    // how many robots the last frame drawn drew (those in view), and with their id
+    drawn: function () { return { robots: drawn.robots, labels: drawn.labels }; }
   };
   setFrame(0);
 })();
