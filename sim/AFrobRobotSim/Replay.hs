@@ -32,8 +32,13 @@
 -- @canvasToWorld(px, py)@ (in the canvas's pixels, in the view),
 -- @view()@ (@{zoom, cx, cy}@: the zoom, 1 for the whole world, and the
 -- world point in the middle), @setView(zoom, cx, cy)@, @maxZoom@,
--- @drawn()@ (@{robots, labels}@: how many robots the last frame drew,
--- those in view, and how many of their ids), @header@ and @summary@.
+-- @drawn()@ (@{robots, labels, roughTrails}@: how many robots the last
+-- frame drew, those in view, how many of their ids, and whether its
+-- trails were the layer moved and scaled while the view changed),
+-- @roughAbove@ (the page's paths, in robots times frames, above which
+-- the trails are so moved while the wheel or a drag changes the view,
+-- and drawn afresh 0.25 s after the last change: 200,000), @header@ and
+-- @summary@.
 -- Element ids: @world@ (the canvas), @play@, @back@, @fwd@, @slider@,
 -- @speed@, @rays@, @trails@, @sightings@, @zoomin@, @zoomout@, @fit@,
 -- @time@, @info@, @events@, @meta@, @afrp-log@

@@ -58,8 +58,8 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
     const blank = fit.robots.filter(r => near(r.pixel, background, 30)).length;
     check(blank === 0, 'every robot shows (' + blank + ' look like the floor)');
     await page.evaluate(() => window.afrpReplay.selectRobot(7));
-    check(JSON.stringify(await page.evaluate(() => window.afrpReplay.drawn())) === JSON.stringify({ robots: n, labels: 1 }),
-          'selected, a robot\'s id is drawn');
+    const selected = await page.evaluate(() => window.afrpReplay.drawn());
+    check(selected.robots === n && selected.labels === 1, 'selected, a robot\'s id is drawn (' + JSON.stringify(selected) + ')');
     await page.evaluate(() => window.afrpReplay.selectRobot(-1));
 
     // zoomed in about the world's middle until a robot is 8 pixels across

@@ -196,6 +196,28 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
           'the zoom stops at 250 pixels a metre, the view within the world (' + JSON.stringify(limits[0]) + ')');
     check(limits[1].zoom === 1 && limits[1].cx === info.bounds.x && limits[1].cy === info.bounds.y,
           'and at the whole world, which it cannot leave');
+    // a big page's trails while the view changes (made big here by lowering the page's bound):
+    // the layer moved and scaled at once, then the paths drawn afresh once the view rests
+    const bound = await page.evaluate(() => { const a = window.afrpReplay.roughAbove; window.afrpReplay.roughAbove = 0; return a; });
+    await page.mouse.move(inner[0] + cursor[0], inner[1] + cursor[1]);
+    await page.mouse.wheel(0, -300);
+    await nextFrame();
+    const rough = await page.evaluate(() => window.afrpReplay.drawn().roughTrails);
+    const roughRows = await trailRows();
+    check(rough && roughRows.some(reddish), 'on a big page the wheel moves the trails at once, roughly (' + JSON.stringify(roughRows) + ')');
+    await page.waitForTimeout(600);
+    const settled = await page.evaluate(() => {
+      const R = window.afrpReplay, k = R.frameCount(), c = document.getElementById('world'), g = c.getContext('2d');
+      const grab = () => g.getImageData(0, 0, c.width, c.height).data;
+      const rough = R.drawn().roughTrails, a = grab();
+      R.setFrame(0); R.setFrame(k - 1);   // (the paths drawn afresh)
+      const b = grab();
+      let differ = 0;
+      for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) differ++;
+      return { rough: rough, differ: differ };
+    });
+    check(!settled.rough && settled.differ === 0, 'and draws them afresh once the view rests (' + settled.differ + ' values differ from the paths drawn anew)');
+    await page.evaluate(b => { const R = window.afrpReplay; R.roughAbove = b; R.setView(1, R.header.bounds.x, R.header.bounds.y); }, bound);
     await page.evaluate(() => window.afrpReplay.selectRobot(0));
     await page.check('#rays');
 

@@ -19,7 +19,7 @@
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
   if (frames.length === 0) {
     document.getElementById('meta').textContent = 'This log has no frames: the run stopped before its first.';
-    window.afrpReplay = { header: header, summary: summary, frameCount: function () { return 0; } };
+    var api = window.afrpReplay = { header: header, summary: summary, frameCount: function () { return 0; } };
     return;
   }
   var canvas = document.getElementById('world');
@@ -128,10 +128,29 @@
   // whole at every frame, the trails of 1000 robots took 0.4 s a frame
   // near the end of a 30 s page.)
   var trails = layer();
-  function drawTrails(upTo) {
+  // While the wheel or a drag changes the view, redrawing the paths of a
+  // big page at every step (1000 robots for 30 s: about 0.2 s; 10,000
+  // robots: about 1 s) would make the view lag: when the layer holds more
+  // than 'roughAbove' stretches, the view's changes show the layer as it
+  // is, moved and scaled to the new view (rough), and the paths are drawn
+  // afresh 0.25 s after the last change.
+  var trailsRough = false;
+  function drawTrails(upTo, quick) {
     var g = trails.ctx;
+    trailsRough = quick && trails.view !== viewKey && trails.upTo === upTo && trails.at &&
+                  header.robots.length * upTo > api.roughAbove;
+    if (trailsRough) {
+      var k = scale / trails.at.scale;
+      ctx.save();
+      ctx.setTransform(k, 0, 0, k, margin * (1 - k) + (trails.at.vx0 - vx0) * scale,
+                       margin * (1 - k) + (vy1 - trails.at.vy1) * scale);
+      ctx.drawImage(trails.canvas, 0, 0);
+      ctx.restore();
+      return;
+    }
     if (upTo < trails.upTo || trails.view !== viewKey) {
-      g.clearRect(0, 0, canvas.width, canvas.height); trails.upTo = -1; trails.view = viewKey;
+      g.clearRect(0, 0, canvas.width, canvas.height); trails.upTo = -1;
+      trails.view = viewKey; trails.at = { scale: scale, vx0: vx0, vy1: vy1 };
     }
     if (upTo > trails.upTo) {
       var from = Math.max(trails.upTo, 0);
@@ -223,11 +242,12 @@
     });
   }
 
-  function draw() {
+  function draw(quick) {
     var f = frames[state.frame];
     drawStill();
     ctx.save(); clipToWorld(ctx);
-    if ($('trails').checked) drawTrails(state.frame);
+    trailsRough = false;
+    if ($('trails').checked) drawTrails(state.frame, quick);
     drawMoving(f);
     ctx.restore();
     $('time').textContent = 't = ' + f.t.toFixed(2) + ' s  (frame ' + state.frame + ' of ' + (frames.length - 1) + ')';
@@ -236,10 +256,13 @@
     showInfo();
     showEvents();
   }
-  // a view changed by the wheel or a drag: drawn once at the next animation frame
-  var drawPending = false;
+  // a view changed by the wheel or a drag: drawn once at the next animation
+  // frame (the trails maybe rough), and in full 0.25 s after the last change
+  var drawPending = false, fullTimer = null;
   function drawSoon() {
-    if (!drawPending) { drawPending = true; requestAnimationFrame(function () { drawPending = false; draw(); }); }
+    if (!drawPending) { drawPending = true; requestAnimationFrame(function () { drawPending = false; draw(true); }); }
+    clearTimeout(fullTimer);
+    fullTimer = setTimeout(function () { fullTimer = null; if (trailsRough) draw(); }, 250);
   }
 
   function num(x, d) { return x === null ? 'n/a' : x.toFixed(d === undefined ? 3 : d); }
@@ -377,7 +400,7 @@
              : '; no summary (the run stopped early)');
 
   // For tests and tools: the page's state, in world and canvas coordinates.
-  window.afrpReplay = {
+  var api = window.afrpReplay = {
     header: header, summary: summary,
     frameCount: function () { return frames.length; },
     frame: function () { return state.frame; },
@@ -395,8 +418,12 @@
     view: function () { return { zoom: view.zoom, cx: view.cx, cy: view.cy }; },
     setView: function (zoom, cx, cy) { setView(zoom, cx, cy); draw(); },
     maxZoom: maxZoom,
-    // how many robots the last frame drawn drew (those in view), and with their id
-    drawn: function () { return { robots: drawn.robots, labels: drawn.labels }; }
+    // how many robots the last frame drawn drew (those in view), how many
+    // of their ids, and whether its trails were rough (see drawTrails)
+    drawn: function () { return { robots: drawn.robots, labels: drawn.labels, roughTrails: trailsRough }; },
+    // above how many stretches of path (robots times frames) the trails are
+    // rough while the view changes
+    roughAbove: 200000
   };
   setFrame(0);
 })();
