@@ -22,7 +22,9 @@
 -- zooms (the mouse wheel, about the point under it; the @+@ and @-@
 -- buttons and keys, about the middle; up to 250 pixels a metre) and
 -- moves (a drag) within the world; @0@ or "Fit" shows the whole world
--- again. In a big world a robot is drawn at least 1.5 pixels in radius,
+-- again; with "follow" ticked (the default), a zoomed view keeps the
+-- selected robot in view, centring on it again when it leaves the
+-- view's middle 60%. In a big world a robot is drawn at least 1.5 pixels in radius,
 -- and the ids are drawn when they can be read: when at most 200 robots
 -- are in view, or the robots are at least 8 pixels across.
 --
@@ -40,7 +42,8 @@
 -- and drawn afresh 0.25 s after the last change: 200,000), @header@ and
 -- @summary@.
 -- Element ids: @world@ (the canvas), @play@, @back@, @fwd@, @slider@,
--- @speed@, @rays@, @trails@, @sightings@, @zoomin@, @zoomout@, @fit@,
+-- @speed@, @rays@, @trails@, @sightings@, @follow@, @zoomin@, @zoomout@,
+-- @fit@,
 -- @time@, @info@, @events@, @meta@, @afrp-log@
 -- (the log's lines, a JSON array), and @afrp-log-2@, @afrp-log-3@, ...
 -- (the lines that follow, when there are more).
@@ -145,6 +148,7 @@ replayPageParts nonce = (concat
   , "<label><input id=\"rays\" type=\"checkbox\" checked> range rays</label>\n"
   , "<label><input id=\"trails\" type=\"checkbox\" checked> trails</label>\n"
   , "<label><input id=\"sightings\" type=\"checkbox\"> tracker sightings</label>\n"
+  , "<label title=\"keep the selected robot in a zoomed view\"><input id=\"follow\" type=\"checkbox\" checked> follow</label>\n"
   , "</div>\n</div>\n<div id=\"side\">\n<pre id=\"info\"></pre>\n<h1>events</h1>\n<pre id=\"events\"></pre>\n"
   , "</div>\n</div>\n"
   , dataOpen 1 ]

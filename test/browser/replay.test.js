@@ -198,7 +198,7 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
           'and at the whole world, which it cannot leave');
     // a big page's trails while the view changes (made big here by lowering the page's bound):
     // the layer moved and scaled at once, then the paths drawn afresh once the view rests
-    const bound = await page.evaluate(() => { const a = window.afrpReplay.roughAbove; window.afrpReplay.roughAbove = 0; return a; });
+    const bound = await page.evaluate(() => { const R = window.afrpReplay, a = R.roughAbove; R.roughAbove = 0; R.selectRobot(-1); return a; });
     await page.mouse.move(inner[0] + cursor[0], inner[1] + cursor[1]);
     await page.mouse.wheel(0, -300);
     await nextFrame();
@@ -218,6 +218,23 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
     });
     check(!settled.rough && settled.differ === 0, 'and draws them afresh once the view rests (' + settled.differ + ' values differ from the paths drawn anew)');
     await page.evaluate(b => { const R = window.afrpReplay; R.roughAbove = b; R.setView(1, R.header.bounds.x, R.header.bounds.y); }, bound);
+    // follow (ticked by default): zoomed in on SimbotB 2 where it starts, selected, the view centres on
+    // it again when it leaves the view's middle, and not while it stays there; unticked, the view stays
+    const rB0 = info.first.robots[1], k = info.n;
+    await page.evaluate(r => { const R = window.afrpReplay; R.setFrame(0); R.selectRobot(1); R.setView(R.maxZoom, r.x, r.y); }, rB0);
+    await page.evaluate(k => window.afrpReplay.setFrame(k - 1), k);
+    const followed = await view();
+    check(followed.cx === rB.x && followed.cy === rB.y, 'following SimbotB 2, the view centres on it at the end (' + JSON.stringify(followed) + ')');
+    check(near(await beside(0.5 * radiusPx * followed.zoom), red, 2), 'and draws it there');
+    await page.evaluate(k => window.afrpReplay.setFrame(k - 2), k);
+    check(JSON.stringify(await view()) === JSON.stringify(followed), 'one frame back, still in the middle, the view stays');
+    await page.uncheck('#follow');
+    await page.evaluate(() => window.afrpReplay.setFrame(0));
+    check(JSON.stringify(await view()) === JSON.stringify(followed), 'unticked, the view stays as SimbotB 2 goes back to its start');
+    await page.check('#follow');
+    const again = await view();
+    check(again.cx === rB0.x && again.cy === rB0.y, 'ticked again, the view centres on it (' + JSON.stringify(again) + ')');
+    await page.evaluate(k => { const R = window.afrpReplay; R.setView(1, R.header.bounds.x, R.header.bounds.y); R.setFrame(k - 1); }, k);
     await page.evaluate(() => window.afrpReplay.selectRobot(0));
     await page.check('#rays');
 

@@ -256,6 +256,17 @@
     showInfo();
     showEvents();
   }
+  // With "follow" ticked and a robot selected, a zoomed view keeps the
+  // robot in its middle part: when the robot leaves the middle 60% of the
+  // view, the view is centred on it again (in jumps, not at every frame,
+  // so that the trails are drawn afresh only then), as the frame changes
+  // (a drag or the wheel can take the view elsewhere meanwhile).
+  function follow(f) {
+    if (!$('follow').checked || state.selected < 0 || view.zoom <= 1) return;
+    var r = f.robots[state.selected], p = toCanvas(r.x, r.y);
+    var w = b.width * fitScale, h = b.height * fitScale;
+    if (Math.abs(p[0] - margin - w / 2) > 0.3 * w || Math.abs(p[1] - margin - h / 2) > 0.3 * h) setView(view.zoom, r.x, r.y);
+  }
   // a view changed by the wheel or a drag: drawn once at the next animation
   // frame (the trails maybe rough), and in full 0.25 s after the last change
   var drawPending = false, fullTimer = null;
@@ -311,6 +322,7 @@
   function setFrame(i) {
     state.frame = Math.max(0, Math.min(frames.length - 1, Math.round(i)));
     state.simTime = frames[state.frame].t;
+    follow(frames[state.frame]);
     draw();
   }
   function setPlaying(p) {
@@ -326,7 +338,7 @@
       state.simTime += (now - state.last) / 1000 * state.speed;
       var i = state.frame;
       while (i + 1 < frames.length && frames[i + 1].t <= state.simTime) i++;
-      if (i !== state.frame) { state.frame = i; draw(); }
+      if (i !== state.frame) { state.frame = i; follow(frames[i]); draw(); }
       if (i >= frames.length - 1) { state.playing = false; draw(); return; }
     }
     state.last = now;
@@ -347,7 +359,8 @@
   $('back').addEventListener('click', function () { setPlaying(false); setFrame(state.frame - 1); });
   $('fwd').addEventListener('click', function () { setPlaying(false); setFrame(state.frame + 1); });
   $('speed').addEventListener('change', function () { state.speed = Number($('speed').value); });
-  ['rays', 'trails', 'sightings'].forEach(function (id) { $(id).addEventListener('change', draw); });
+  ['rays', 'trails', 'sightings'].forEach(function (id) { $(id).addEventListener('change', function () { draw(); }); });
+  $('follow').addEventListener('change', function () { follow(frames[state.frame]); draw(); });
   // the canvas pixel under a mouse event (inside the canvas's border; the
   // canvas may be shown scaled)
   function eventPixel(e) {
