@@ -46,7 +46,7 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
     const info = await page.evaluate(() => ({
       n: window.afrpReplay.frameCount(), robots: window.afrpReplay.header.robots,
       first: window.afrpReplay.frameData(0), last: window.afrpReplay.frameData(window.afrpReplay.frameCount() - 1),
-      bounds: window.afrpReplay.header.bounds,
+      bounds: window.afrpReplay.header.bounds, width: document.getElementById('world').width,
       scale: window.afrpReplay.worldToCanvas(1, 0)[0] - window.afrpReplay.worldToCanvas(0, 0)[0] }));
     check(info.n > 10, 'the page has the log\'s frames (' + info.n + ')');
     check(info.robots.length === 2 && info.robots[0].type === 'SimbotA', 'the header lists the fixture\'s robots');
@@ -174,6 +174,18 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
     check(Math.abs(dragged.cx - (zoomed.cx + 60 / s)) < 1e-9 && Math.abs(dragged.cy - (zoomed.cy + 40 / s)) < 1e-9 &&
           dragged.zoom === zoomed.zoom, 'a drag moves the view with the mouse');
     check(await page.evaluate(() => window.afrpReplay.selected()) === 0, 'and selects nothing');
+    // a drag released off the canvas ends there: moving the mouse afterwards moves nothing
+    await page.mouse.move(inner[0] + cursor[0], inner[1] + cursor[1]);
+    await page.mouse.down();
+    await page.mouse.move(inner[0] + info.width + 40, inner[1] + cursor[1], { steps: 4 });
+    await page.mouse.up();
+    await nextFrame();
+    const released = await view();
+    await page.mouse.move(inner[0] + cursor[0], inner[1] + cursor[1] + 30, { steps: 4 });
+    await nextFrame();
+    check(JSON.stringify(await view()) === JSON.stringify(released) && released.cx !== dragged.cx,
+          'a drag released off the canvas ends there');
+    await page.evaluate(v => window.afrpReplay.setView(v.zoom, v.cx, v.cy), dragged);
     check(near(await beside(0.5 * radiusPx * zoomed.zoom), red, 2), 'SimbotB 2 is drawn where the log puts it in the moved view');
     const bAt = await canvasOf(rB);
     await page.mouse.click(inner[0] + bAt[0] + 0.5 * radiusPx * zoomed.zoom * Math.sin(rB.heading),

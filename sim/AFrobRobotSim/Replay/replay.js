@@ -19,7 +19,7 @@
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
   if (frames.length === 0) {
     document.getElementById('meta').textContent = 'This log has no frames: the run stopped before its first.';
-    var api = window.afrpReplay = { header: header, summary: summary, frameCount: function () { return 0; } };
+    window.afrpReplay = { header: header, summary: summary, frameCount: function () { return 0; } };
     return;
   }
   var canvas = document.getElementById('world');
@@ -374,21 +374,22 @@
     zoomAt(p[0], p[1], Math.exp(-e.deltaY * 0.002));
     drawSoon();
   }, { passive: false });
-  // A drag moves the view (a press that moves less than 4 pixels is a click).
-  var drag = null;
+  // A drag moves the view (a press that moves less than 4 pixels is a
+  // click); it ends where the button is released, on the canvas or not,
+  // and the click that ends it selects nothing.
+  var drag = null, dragged = false;
   canvas.addEventListener('mousedown', function (e) {
-    if (e.button === 0) drag = { at: eventPixel(e), cx: view.cx, cy: view.cy, moved: false };
+    if (e.button === 0) { drag = { at: eventPixel(e), cx: view.cx, cy: view.cy }; dragged = false; }
   });
   window.addEventListener('mousemove', function (e) {
     if (!drag) return;
     var p = eventPixel(e), dx = p[0] - drag.at[0], dy = p[1] - drag.at[1];
-    if (Math.abs(dx) + Math.abs(dy) >= 4) drag.moved = true;
-    if (drag.moved) { setView(view.zoom, drag.cx - dx / scale, drag.cy + dy / scale); drawSoon(); }
+    if (Math.abs(dx) + Math.abs(dy) >= 4) dragged = true;
+    if (dragged) { setView(view.zoom, drag.cx - dx / scale, drag.cy + dy / scale); drawSoon(); }
   });
-  window.addEventListener('mouseup', function () { if (drag && !drag.moved) drag = null; });
+  window.addEventListener('mouseup', function () { drag = null; });
   canvas.addEventListener('click', function (e) {
-    if (drag && drag.moved) { drag = null; return; }
-    drag = null;
+    if (dragged) { dragged = false; return; }
     var p = eventPixel(e);
     state.selected = robotAt(p[0], p[1]);
     draw();
