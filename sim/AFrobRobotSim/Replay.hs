@@ -24,9 +24,10 @@
 -- moves (a drag) within the world; @0@ or "Fit" shows the whole world
 -- again; with "follow" ticked (the default), a zoomed view keeps the
 -- selected robot in view, centring on it again when it leaves the
--- view's middle 60%. In a big world a robot is drawn at least 1.5 pixels in radius,
--- and the ids are drawn when they can be read: when at most 200 robots
--- are in view, or the robots are at least 8 pixels across.
+-- view's middle 60%. In a big world a robot is drawn at least 1.5
+-- pixels in radius, and the ids are drawn when they can be read: when
+-- at most 200 robots are in view, or the robots are at least 8 pixels
+-- across.
 --
 -- For tests and tools the page exposes @window.afrpReplay@: @frameCount()@,
 -- @frame()@, @frameData(i)@, @setFrame(i)@, @play()@, @pause()@,
@@ -43,9 +44,8 @@
 -- @summary@.
 -- Element ids: @world@ (the canvas), @play@, @back@, @fwd@, @slider@,
 -- @speed@, @rays@, @trails@, @sightings@, @follow@, @zoomin@, @zoomout@,
--- @fit@,
--- @time@, @info@, @events@, @meta@, @afrp-log@
--- (the log's lines, a JSON array), and @afrp-log-2@, @afrp-log-3@, ...
+-- @fit@, @time@, @info@, @events@, @meta@, @afrp-log@ (the log's lines,
+-- a JSON array), and @afrp-log-2@, @afrp-log-3@, ...
 -- (the lines that follow, when there are more).
 --
 -- = Long logs

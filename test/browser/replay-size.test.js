@@ -9,32 +9,12 @@
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
 'use strict';
-const path = require('path');
-const fs = require('fs');
-const { chromium } = require('playwright-core');
+const { run, check, near } = require('./harness');
 
-const pagePath = process.argv[2];
-if (!pagePath) { console.error('usage: node replay-size.test.js PAGE.html'); process.exit(2); }
-const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
-if (!fs.existsSync(executablePath)) {
-  console.error('no Chromium at ' + executablePath + ' (on Debian: apt-get install -y chromium; or set CHROMIUM)');
-  process.exit(2);
-}
-
-const failures = [];
-function check(ok, what) { console.log((ok ? 'ok   ' : 'FAIL ') + what); if (!ok) failures.push(what); }
-function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); }
 const typeColours = { SimbotA: [30, 90, 220], SimbotB: [215, 40, 40] };
 
-(async () => {
-  const browser = await chromium.launch({ executablePath, headless: true, args: ['--no-sandbox'] });
-  try {
-    const page = await browser.newPage({ viewport: { width: 1200, height: 800 } });
-    const errors = [];
-    page.on('pageerror', e => errors.push('page error: ' + e.message));
-    page.on('console', m => { if (m.type() === 'error') errors.push(m.text()); });
-    await page.goto('file://' + path.resolve(pagePath));
-    await page.waitForFunction(() => window.afrpReplay !== undefined, null, { timeout: 10000 });
+run('node replay-size.test.js PAGE.html', async (page, errors, open) => {
+    await open();
     await page.uncheck('#rays');
     const v = await page.evaluate(() => {
       const c = document.getElementById('world');
@@ -65,8 +45,4 @@ const typeColours = { SimbotA: [30, 90, 220], SimbotB: [215, 40, 40] };
       check(near(px, typeColours[v.types[i]], 40), v.types[i] + ' ' + i + ' at (' + r.x + ', ' + r.y + ') is drawn there (' + px + ')');
     }
     check(errors.length === 0, 'no script errors' + (errors.length ? ': ' + errors.join('; ') : ''));
-  } finally {
-    await browser.close();
-  }
-  if (failures.length) { console.error(failures.length + ' check(s) failed'); process.exit(1); }
-})().catch(e => { console.error(e); process.exit(1); });
+});

@@ -6,34 +6,15 @@
 // Exits 0 when every check passes, 1 with the failures listed otherwise.
 'use strict';
 const path = require('path');
-const fs = require('fs');
-const { chromium } = require('playwright-core');
+const { run, check, near } = require('./harness');
 
-const pagePath = process.argv[2];
 const shotPath = process.argv[3] || path.join(__dirname, '..', '..', 'docs', 'images', 'replay.png');
-if (!pagePath) { console.error('usage: node replay.test.js PAGE.html [SCREENSHOT.png]'); process.exit(2); }
-const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
-if (!fs.existsSync(executablePath)) {
-  console.error('no Chromium at ' + executablePath + ' (on Debian: apt-get install -y chromium; or set CHROMIUM)');
-  process.exit(2);
-}
-
-const failures = [];
-function check(ok, what) { console.log((ok ? 'ok   ' : 'FAIL ') + what); if (!ok) failures.push(what); }
 const background = [240, 240, 230];
-function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); }
 
-(async () => {
-  const browser = await chromium.launch({ executablePath, headless: true, args: ['--no-sandbox'] });
-  try {
-    const page = await browser.newPage({ viewport: { width: 1200, height: 800 } });
-    const errors = [];
+run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open) => {
     const requests = [];
-    page.on('console', m => { if (m.type() === 'error') errors.push(m.type() + ': ' + m.text()); });
-    page.on('pageerror', e => errors.push('page error: ' + e.message));
     page.on('request', r => { if (!r.url().startsWith('file:') && !r.url().startsWith('data:')) requests.push(r.url()); });
-    await page.goto('file://' + path.resolve(pagePath));
-    await page.waitForFunction(() => window.afrpReplay !== undefined, null, { timeout: 10000 });
+    await open();
 
     // the pixel of the canvas under a world point, shifted (dx, dy) canvas pixels
     const pixelAt = (x, y, dx, dy) => page.evaluate(([x, y, dx, dy]) => {
@@ -274,9 +255,4 @@ function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); 
 
     check(errors.length === 0, 'no console errors' + (errors.length ? ': ' + errors.join(' | ') : ''));
     check(requests.length === 0, 'no network requests' + (requests.length ? ': ' + requests.join(' ') : ''));
-  } finally {
-    await browser.close();
-  }
-  if (failures.length) { console.error(failures.length + ' check(s) failed'); process.exit(1); }
-  console.log('all checks passed');
-})().catch(e => { console.error(e && e.stack || String(e)); process.exit(1); });
+});
