@@ -24,7 +24,8 @@
 -- moves (a drag) within the world; @0@ or "Fit" shows the whole world
 -- again; with "follow" ticked (the default), a zoomed view keeps the
 -- selected robot in view, centring on it again when it leaves the
--- view's middle 60%. In a big world a robot is drawn at least 1.5
+-- view's middle 60% (a drag, which would be undone at the next frame,
+-- unticks it). In a big world a robot is drawn at least 1.5
 -- pixels in radius, and the ids are drawn when they can be read: when
 -- at most 200 robots are in view, or the robots are at least 8 pixels
 -- across.

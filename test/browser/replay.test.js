@@ -211,9 +211,11 @@ run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open)
     });
     check(!settled.rough && settled.differ === 0, 'and draws them afresh once the view rests (' + settled.differ + ' values differ from the paths drawn anew)');
     await page.evaluate(b => { const R = window.afrpReplay; R.roughAbove = b; R.setView(1, R.header.bounds.x, R.header.bounds.y); }, bound);
-    // follow (ticked by default): zoomed in on SimbotB 2 where it starts, selected, the view centres on
+    // follow (ticked by default; ticked again here): zoomed in on SimbotB 2 where it starts, selected, the view centres on
     // it again when it leaves the view's middle, and not while it stays there; unticked, the view stays
     const rB0 = info.first.robots[1], k = info.n;
+    check(!(await page.isChecked('#follow')), 'the drag above, SimbotA 1 selected, unticked follow');
+    await page.check('#follow');
     await page.evaluate(r => { const R = window.afrpReplay; R.setFrame(0); R.selectRobot(1); R.setView(R.maxZoom, r.x, r.y); }, rB0);
     await page.evaluate(k => window.afrpReplay.setFrame(k - 1), k);
     const followed = await view();
@@ -227,6 +229,17 @@ run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open)
     await page.check('#follow');
     const again = await view();
     check(again.cx === rB0.x && again.cy === rB0.y, 'ticked again, the view centres on it (' + JSON.stringify(again) + ')');
+    // a drag away from it stops following: the next frames leave the dragged view be
+    await page.mouse.move(inner[0] + 300, inner[1] + 300);
+    await page.mouse.down();
+    await page.mouse.move(inner[0] + 200, inner[1] + 300, { steps: 4 });
+    await page.mouse.up();
+    await nextFrame();
+    const away = await view();
+    await page.evaluate(k => window.afrpReplay.setFrame(k - 1), k);
+    check(!(await page.isChecked('#follow')) && JSON.stringify(await view()) === JSON.stringify(away) && away.cx !== again.cx,
+          'a drag unticks follow, and the view stays where the drag left it');
+    await page.check('#follow');
     await page.evaluate(k => { const R = window.afrpReplay; R.setView(1, R.header.bounds.x, R.header.bounds.y); R.setFrame(k - 1); }, k);
     await page.evaluate(() => window.afrpReplay.selectRobot(0));
     await page.check('#rays');

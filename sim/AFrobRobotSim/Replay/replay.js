@@ -375,8 +375,9 @@
     drawSoon();
   }, { passive: false });
   // A drag moves the view (a press that moves less than 4 pixels is a
-  // click); it ends where the button is released, on the canvas or not,
-  // and the click that ends it selects nothing.
+  // click), and unticks "follow" when a robot is selected; it ends where
+  // the button is released, on the canvas or not, and the click that ends
+  // it selects nothing.
   var drag = null, dragged = false;
   canvas.addEventListener('mousedown', function (e) {
     if (e.button === 0) { drag = { at: eventPixel(e), cx: view.cx, cy: view.cy }; dragged = false; }
@@ -384,7 +385,12 @@
   window.addEventListener('mousemove', function (e) {
     if (!drag) return;
     var p = eventPixel(e), dx = p[0] - drag.at[0], dy = p[1] - drag.at[1];
-    if (Math.abs(dx) + Math.abs(dy) >= 4) dragged = true;
+    if (!dragged && Math.abs(dx) + Math.abs(dy) >= 4) {
+      dragged = true;
+      // (a drag away from the followed robot stops following it: the next
+      // frame would take the view back)
+      if (state.selected >= 0) $('follow').checked = false;
+    }
     if (dragged) { setView(view.zoom, drag.cx - dx / scale, drag.cy + dy / scale); drawSoon(); }
   });
   window.addEventListener('mouseup', function () { drag = null; });
