@@ -90,6 +90,23 @@ run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open)
     });
     check(stepped.differ <= 60 && stepped.reddish > 100, 'frames played one by one draw the trails a jump to the end draws (' +
           stepped.differ + ' pixels differ, ' + stepped.reddish + ' reddish)');
+    // going back starts from a copy of the trails kept at an earlier frame (every 25th here): the same
+    // pixels as the trails drawn afresh (another view and back, which drops the copies)
+    const back = await page.evaluate(() => {
+      const R = window.afrpReplay, k = R.frameCount(), b = R.header.bounds, c = document.getElementById('world'), g = c.getContext('2d');
+      const grab = () => g.getImageData(0, 0, c.width, c.height).data;
+      const differ = (x, y) => { let n = 0; for (let i = 0; i < x.length; i++) if (x[i] !== y[i]) n++; return n; };
+      const afresh = () => { R.setView(2, b.x, b.y); R.setView(1, b.x, b.y); return grab(); };
+      const out = [];
+      [[k - 1, 27], [35, 20], [k - 1, 25], [k - 1, 49]].forEach(p => {
+        R.setFrame(p[0]); R.setFrame(p[1]);
+        const kept = grab();
+        out.push(differ(kept, afresh()));
+      });
+      return { differ: out, k: k };
+    });
+    check(back.k > 50 && back.differ.every(n => n === 0),
+          'going back draws the trails drawn afresh (values differing at frames 27, 20, 25, 49: ' + back.differ.join(', ') + ')');
     await page.evaluate(() => window.afrpReplay.setFrame(0));
     const atStart = await trailRows();
     check(atStart.every(c => near(c, background, 0)), 'back at the start, the trails are gone (' + JSON.stringify(atStart) + ')');
