@@ -129,8 +129,9 @@
   // whole at every frame, the trails of 1000 robots took 0.4 s a frame
   // near the end of a 30 s page.)
   var trails = layer();
-  // A copy of the layer is kept at every keepEvery-th frame it passes (at
-  // most about 16 copies, 1.6 MB each at the largest canvas, for a view),
+  // A copy of the layer is kept at every keepEvery-th frame it passes
+  // (every 25th, or every sixteenth of the frames on a longer page: at
+  // most 16 copies for a view, 1.6 MB each at the largest canvas),
   // so that going back, a jump or the slider dragged backwards draws the
   // paths from the nearest copy before the frame, not from the start (a
   // 1000-robot, 30 s page: 0.2-0.6 s from the start).
