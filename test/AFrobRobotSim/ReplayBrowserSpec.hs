@@ -3,7 +3,7 @@
 -- the checks). Missing tools fail the test with how to install them.
 module AFrobRobotSim.ReplayBrowserSpec (spec) where
 
-import           Control.Monad            (unless)
+import           Control.Monad            (unless, when)
 import           Data.List                (isInfixOf, isPrefixOf, tails)
 import           System.Directory         (doesDirectoryExist, doesFileExist, findExecutable,
                                            getTemporaryDirectory, removeFile)
@@ -46,28 +46,30 @@ spec = do
     length (filter ("<script id=\"afrp-log" `isPrefixOf`) (tails page)) `shouldSatisfy` (> 5)
     playFixture page
 
--- | Run a script of test/browser/ on a page (written to a temporary file):
--- the test passes when the script exits 0.
+-- | Run a script of test/browser/ on a page (written to a temporary file,
+-- removed after): the test passes when the script exits 0.
 runPageTest :: FilePath -> String -> Expectation
-runPageTest script pageText = do
-    node <- findExecutable "node"
-    haveModules <- doesDirectoryExist ("test" </> "browser" </> "node_modules" </> "playwright-core")
-    unless (node /= Nothing && haveModules) $
-      expectationFailure "the browser test needs node and playwright-core (cd test/browser && npm ci; .ci/run installs them)"
-    tmp <- getTemporaryDirectory
-    (page, h) <- openTempFile tmp "afrp-replay-page.html"
-    hClose h
-    writeFile page pageText
-    (code, out, err) <- readProcessWithExitCode (maybe "node" id node) ["test" </> "browser" </> script, page] ""
-    removeFile page
-    case code of
-      ExitSuccess   -> pure ()
-      ExitFailure c -> expectationFailure ("node test/browser/" ++ script ++ " exited with " ++ show c ++ ":\n" ++ out ++ err)
+runPageTest script pageText = () <$ runPageScript script [] pageText
 
 -- | Run test/browser/replay.test.js on a page of 'fixtureLog', which must
--- show all of its frames.
+-- show all of its frames. Its screenshot goes to $AFRP_REPLAY_SCREENSHOT,
+-- or to a temporary file removed after.
 playFixture :: String -> Expectation
 playFixture pageText = do
+    asked <- lookupEnv "AFRP_REPLAY_SCREENSHOT"
+    tmp <- getTemporaryDirectory
+    shot <- maybe (openTempFile tmp "afrp-replay.png" >>= \(f, h) -> f <$ hClose h) pure asked
+    out <- runPageScript "replay.test.js" [shot] pageText
+    when (asked == Nothing) (removeFile shot)
+    out `shouldSatisfy` (("the page has the log's frames (" ++ show (length (rlFrames fixtureLog)) ++ ")") `isInfixOf`)
+
+-- | @runPageScript script args page@ runs test/browser/@script@ with node
+-- on @page@ (written to a temporary file, removed after) and @args@: its
+-- output when it exits 0, a failure with its output otherwise, and a
+-- failure naming what is missing when node, Chromium or playwright-core
+-- is.
+runPageScript :: FilePath -> [String] -> String -> IO String
+runPageScript script args pageText = do
     node     <- findExecutable "node"
     chromium <- lookupEnv "CHROMIUM" >>= maybe (pure "/usr/bin/chromium") pure
     haveChromium <- doesFileExist chromium
@@ -82,12 +84,10 @@ playFixture pageText = do
     (page, h) <- openTempFile tmp "afrp-replay.html"
     hClose h
     writeFile page pageText
-    shot <- lookupEnv "AFRP_REPLAY_SCREENSHOT" >>= maybe (pure (page ++ ".png")) pure
-    (code, out, err) <- readProcessWithExitCode (maybe "node" id node)
-                          ["test" </> "browser" </> "replay.test.js", page, shot] ""
+    (code, out, err) <- readProcessWithExitCode (maybe "node" id node) (("test" </> "browser" </> script) : page : args) ""
     removeFile page
     case code of
-      ExitSuccess   -> out `shouldSatisfy` (("the page has the log's frames (" ++ show (length (rlFrames fixtureLog)) ++ ")")
-                                              `isInfixOf`)
-      ExitFailure c -> expectationFailure ("node test/browser/replay.test.js exited with " ++ show c
-                                           ++ ":\n" ++ out ++ err)
+      ExitSuccess   -> pure out
+      ExitFailure c -> do
+        expectationFailure ("node test/browser/" ++ script ++ " exited with " ++ show c ++ ":\n" ++ out ++ err)
+        pure out
