@@ -203,18 +203,26 @@ dataBreak :: Int -> String
 dataBreak k = "]\n</script>\n" ++ dataOpen (k + 1)
 
 -- The lines of the page's data, for elements of at most @n@ characters:
--- separated by commas, and by an element's end and the next one's
--- opening where a line would take its element beyond @n@ (an element
--- holds at least one line).
+-- separated as 'placeLine' places them (an element holds at least one
+-- line).
 joinChunked :: Int -> [String] -> String
 joinChunked _ [] = ""
-joinChunked n (l0 : ls0) = l0 ++ go 1 (length l0) ls0
+joinChunked n (l0 : ls0) = l0 ++ go (1, length l0) ls0
   where
-    go !_ !_ [] = ""
-    go !k !used (l : ls)
-      | used + 2 + len > n = dataBreak k ++ l ++ go (k + 1) len ls
-      | otherwise          = ",\n" ++ l ++ go k (used + 2 + len) ls
-      where len = length l
+    go _ [] = ""
+    go at (l : ls) = case placeLine n at (length l) of
+      (before, at') -> before ++ l ++ go at' ls
+
+-- @placeLine n (k, used) len@: what goes before a line of @len@
+-- characters that follows the others in data element @k@ (which holds
+-- @used@ characters so far), in elements of at most @n@ characters, and
+-- the element and its count after it: a comma, or, where the line would
+-- take its element beyond @n@, that element's end and the next one's
+-- opening. The one rule of 'joinChunked' and 'writeReplayChunked'.
+placeLine :: Int -> (Int, Int) -> Int -> (String, (Int, Int))
+placeLine n (!k, !used) len
+  | used + 2 + len > n = (dataBreak k, (k + 1, len))
+  | otherwise          = (",\n", (k, used + 2 + len))
 
 -- The page's nonce depends on its data, so that pages differ: a hash of
 -- the log's lines, one after the other, each line's bytes taken eight at
@@ -326,17 +334,9 @@ writeReplayChunked chunk (ReplayRecorder cfg path h ref) s out =
         withBinaryFile out WriteMode $ \oh -> do
           hSetBuffering oh (BlockBuffering Nothing)
           let header = BC.pack (encodeLogLine (LineHeader (logHeader cfg)))
-              -- a line after the others (in data element k, which holds
-              -- @used@ characters so far), as 'joinChunked' joins them
-              next (!k, !used) l
-                | used + 2 + BC.length l > chunk = do
-                    BC.hPutStr oh (BC.pack (dataBreak k))
-                    BC.hPutStr oh l
-                    pure (k + 1, BC.length l)
-                | otherwise = do
-                    BC.hPutStr oh (BC.pack ",\n")
-                    BC.hPutStr oh l
-                    pure (k, used + 2 + BC.length l)
+              -- a line after the others, as 'joinChunked' joins them
+              next at l = case placeLine chunk at (BC.length l) of
+                (before, at') -> at' <$ (BC.hPutStr oh (BC.pack before) >> BC.hPutStr oh l)
               copy at = do
                 eof <- hIsEOF fh
                 if eof then pure at else BC.hGetLine fh >>= next at >>= copy
