@@ -19,13 +19,16 @@
 -- one frame back and forth (arrow keys), a time slider, a speed, toggles
 -- for range rays, trails and tracker sightings, and a panel with the
 -- readings, wheel speeds and messages of the robot last clicked. It
--- zooms (the mouse wheel, about the point under it; the @+@ and @-@
--- buttons and keys, about the middle; up to 250 pixels a metre) and
--- moves (a drag) within the world; @0@ or "Fit" shows the whole world
+-- zooms (the mouse wheel, or a touchpad's pinch, about the point under
+-- it; two fingers' pinch on a touch screen, about their midpoint; the
+-- @+@ and @-@ buttons and keys, about the middle; up to 250 pixels a
+-- metre) and moves (a drag, with the mouse, a pen or a finger; a pinch's
+-- midpoint) within the world; @0@ or "Fit" shows the whole world
 -- again; with "follow" ticked (the default), a zoomed view keeps the
 -- selected robot in view, centring on it again when it leaves the
--- view's middle 60% (a drag, which would be undone at the next frame,
--- unticks it). In a big world a robot is drawn at least 1.5
+-- view's middle 60% (a drag or a pinch, which would be undone at the
+-- next frame, unticks it). A tap selects, as a click does; on a narrow
+-- screen the canvas is shown scaled to fit. In a big world a robot is drawn at least 1.5
 -- pixels in radius, and the ids are drawn when they can be read: when
 -- at most 200 robots are in view, or the robots are at least 8 pixels
 -- across.
@@ -130,6 +133,7 @@ replayPageFromLines ls = pre ++ joinChunked replayChunkChars ls ++ post
 replayPageParts :: String -> (String, String)
 replayPageParts nonce = (concat
   [ "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+  , "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
   , "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'nonce-"
   , nonce, "'; style-src 'unsafe-inline'; img-src data:\">\n"
   , "<link rel=\"icon\" href=\"data:,\">\n<title>afrp replay</title>\n<style>\n", replayStyle, "</style>\n"

@@ -39,6 +39,9 @@ spec = do
                                      (Point2 (-140 + 20 * fromIntegral i) (-140 + 15 * fromIntegral j)) 0
                                  | i <- [0 .. 14 :: Int], j <- [0 .. 19] ]
     runPageTest "replay-crowd.test.js" (pageOf crowd)
+  it "takes a touch screen's gestures: a pinch zooms about the fingers' midpoint and moves with it, a drag moves, a tap selects, and a phone's narrow screen shows the canvas scaled (fixed)" $
+    runPageTest "replay-touch.test.js"
+      (pageOf [OTSize 20 20, OTSimbotA 1 (Point2 3 2) 0, OTSimbotB 2 (Point2 (-3) (-2)) pi])
   it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $
     playFixture (replayPage fixtureLog)
   it "plays it as well with its log split over several data elements, every frame read (fixed)" $ do

@@ -1,10 +1,11 @@
 // What the replay page's browser tests share: the page named on the
 // command line, Debian's Chromium through playwright-core, and the checks'
-// bookkeeping. A test script calls run(usage, body): body gets a new page
-// (1200 by 800) with the page file loaded and window.afrpReplay ready, and
-// the script errors the page met so far; run exits 0 when every check
-// passed, 1 with the failures listed otherwise, 2 when the page or
-// Chromium is missing.
+// bookkeeping. A test script calls run(usage, body[, pageOptions]): body
+// gets a new page (1200 by 800; pageOptions are more of playwright's
+// newPage options, e.g. { hasTouch: true }), the console errors the page
+// has met so far, and a function that loads the page file and waits for
+// window.afrpReplay. run exits 0 when every check passed, 1 with the
+// failures listed otherwise, 2 when the page or Chromium is missing.
 // Chromium: $CHROMIUM, else /usr/bin/chromium (Debian: apt-get install chromium).
 'use strict';
 const path = require('path');
@@ -15,7 +16,7 @@ const failures = [];
 function check(ok, what) { console.log((ok ? 'ok   ' : 'FAIL ') + what); if (!ok) failures.push(what); }
 function near(a, b, tol) { return a.every((v, i) => Math.abs(v - b[i]) <= tol); }
 
-function run(usage, body) {
+function run(usage, body, pageOptions) {
   const pagePath = process.argv[2];
   if (!pagePath) { console.error('usage: ' + usage); process.exit(2); }
   const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
@@ -26,7 +27,7 @@ function run(usage, body) {
   (async () => {
     const browser = await chromium.launch({ executablePath, headless: true, args: ['--no-sandbox'] });
     try {
-      const page = await browser.newPage({ viewport: { width: 1200, height: 800 } });
+      const page = await browser.newPage(Object.assign({ viewport: { width: 1200, height: 800 } }, pageOptions || {}));
       const errors = [];
       page.on('console', m => { if (m.type() === 'error') errors.push(m.type() + ': ' + m.text()); });
       page.on('pageerror', e => errors.push('page error: ' + e.message));

@@ -183,6 +183,13 @@ run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open)
     await nextFrame();
     check(JSON.stringify(await view()) === JSON.stringify(released) && released.cx !== dragged.cx,
           'a drag released off the canvas ends there');
+    // only the left button drags
+    await page.mouse.move(inner[0] + cursor[0], inner[1] + cursor[1]);
+    await page.mouse.down({ button: 'right' });
+    await page.mouse.move(inner[0] + cursor[0] - 50, inner[1] + cursor[1] - 30, { steps: 4 });
+    await page.mouse.up({ button: 'right' });
+    await nextFrame();
+    check(JSON.stringify(await view()) === JSON.stringify(released), 'the right button does not drag');
     await page.evaluate(v => window.afrpReplay.setView(v.zoom, v.cx, v.cy), dragged);
     check(near(await beside(0.5 * radiusPx * zoomed.zoom), red, 2), 'SimbotB 2 is drawn where the log puts it in the moved view');
     const bAt = await canvasOf(rB);

@@ -53,11 +53,14 @@
     viewKey = view.zoom + ' ' + view.cx + ' ' + view.cy;
   }
   setView(1, b.x, b.y);
-  // zoom by a factor, keeping the world point under canvas point (px, py) there
-  function zoomAt(px, py, factor) {
-    var w = toWorld(px, py), z = clamp(view.zoom * factor, 1, maxZoom), s = fitScale * z;
+  // the view of zoom z (within its limits) with world point w at canvas point (px, py)
+  function placeAt(w, px, py, z) {
+    z = clamp(z, 1, maxZoom);
+    var s = fitScale * z;
     setView(z, w[0] - (px - margin) / s + b.width / 2 / z, w[1] + (py - margin) / s - b.height / 2 / z);
   }
+  // zoom by a factor, keeping the world point under canvas point (px, py) there
+  function zoomAt(px, py, factor) { placeAt(toWorld(px, py), px, py, view.zoom * factor); }
 
   var state = { frame: 0, playing: false, selected: -1, speed: 1, simTime: 0, last: null };
 
@@ -385,8 +388,8 @@
   $('speed').addEventListener('change', function () { state.speed = Number($('speed').value); });
   ['rays', 'trails', 'sightings'].forEach(function (id) { $(id).addEventListener('change', function () { draw(); }); });
   $('follow').addEventListener('change', function () { follow(frames[state.frame]); draw(); });
-  // the canvas pixel under a mouse event (inside the canvas's border; the
-  // canvas may be shown scaled)
+  // the canvas pixel under a mouse or pointer event (inside the canvas's
+  // border; the canvas may be shown scaled)
   function eventPixel(e) {
     var r = canvas.getBoundingClientRect();
     return [(e.clientX - r.left - canvas.clientLeft) * canvas.width / canvas.clientWidth,
@@ -395,29 +398,69 @@
   canvas.addEventListener('wheel', function (e) {
     e.preventDefault();
     var p = eventPixel(e);
-    zoomAt(p[0], p[1], Math.exp(-e.deltaY * 0.002));
+    // (a touchpad's pinch comes as the wheel with the control key, its
+    // steps smaller than a wheel's)
+    zoomAt(p[0], p[1], Math.exp(-e.deltaY * (e.ctrlKey ? 0.01 : 0.002)));
     drawSoon();
   }, { passive: false });
-  // A drag moves the view (a press that moves less than 4 pixels is a
-  // click), and unticks "follow" when a robot is selected; it ends where
-  // the button is released, on the canvas or not, and the click that ends
-  // it selects nothing.
-  var drag = null, dragged = false;
-  canvas.addEventListener('mousedown', function (e) {
-    if (e.button === 0) { drag = { at: eventPixel(e), cx: view.cx, cy: view.cy }; dragged = false; }
-  });
-  window.addEventListener('mousemove', function (e) {
-    if (!drag) return;
-    var p = eventPixel(e), dx = p[0] - drag.at[0], dy = p[1] - drag.at[1];
-    if (!dragged && Math.abs(dx) + Math.abs(dy) >= 4) {
-      dragged = true;
-      // (a drag away from the followed robot stops following it: the next
-      // frame would take the view back)
-      if (state.selected >= 0) $('follow').checked = false;
+  // The pointers down on the canvas (the mouse's left button, a pen,
+  // fingers), by id, and the gesture they make. One pointer drags: the view
+  // moves with it (a press that moves less than 4 pixels is a click). Two
+  // pinch: the view zooms by the change of their distance and keeps the
+  // world point that was under their midpoint under it as it moves. When
+  // a pointer is added or lifted, the gesture starts again from the view
+  // as it is, so lifting one finger of a pinch goes on as a drag, without
+  // a jump. A drag or a pinch unticks "follow" when a robot is selected
+  // (the next frame would take the view back), and the click that ends it
+  // selects nothing. Each pointer is captured: a drag ends where it is
+  // released, on the canvas or not.
+  var pointers = {}, gesture = null, dragged = false;
+  function pointerList() { return Object.keys(pointers).sort().map(function (k) { return pointers[k]; }); }
+  function startGesture() {
+    var ps = pointerList();
+    if (ps.length === 0) gesture = null;
+    else if (ps.length === 1) gesture = { at: ps[0], cx: view.cx, cy: view.cy };
+    else {
+      var mid = [(ps[0][0] + ps[1][0]) / 2, (ps[0][1] + ps[1][1]) / 2];
+      gesture = { pinch: true, world: toWorld(mid[0], mid[1]), zoom: view.zoom,
+                  dist: Math.max(1, Math.hypot(ps[1][0] - ps[0][0], ps[1][1] - ps[0][1])) };
     }
-    if (dragged) { setView(view.zoom, drag.cx - dx / scale, drag.cy + dy / scale); drawSoon(); }
+  }
+  function moved() {
+    if (dragged) return;
+    dragged = true;
+    if (state.selected >= 0) $('follow').checked = false;
+  }
+  canvas.addEventListener('pointerdown', function (e) {
+    if (e.pointerType === 'mouse' && e.button !== 0) return;
+    if (Object.keys(pointers).length === 0) dragged = false;
+    pointers[e.pointerId] = eventPixel(e);
+    if (canvas.setPointerCapture) { try { canvas.setPointerCapture(e.pointerId); } catch (err) { /* gone already */ } }
+    if (Object.keys(pointers).length > 1) moved();
+    startGesture();
   });
-  window.addEventListener('mouseup', function () { drag = null; });
+  canvas.addEventListener('pointermove', function (e) {
+    if (!(e.pointerId in pointers) || !gesture) return;
+    pointers[e.pointerId] = eventPixel(e);
+    var ps = pointerList();
+    if (gesture.pinch) {
+      var mid = [(ps[0][0] + ps[1][0]) / 2, (ps[0][1] + ps[1][1]) / 2];
+      placeAt(gesture.world, mid[0], mid[1], gesture.zoom * Math.hypot(ps[1][0] - ps[0][0], ps[1][1] - ps[0][1]) / gesture.dist);
+      drawSoon();
+      return;
+    }
+    var dx = ps[0][0] - gesture.at[0], dy = ps[0][1] - gesture.at[1];
+    if (Math.abs(dx) + Math.abs(dy) >= 4) moved();
+    if (dragged) { setView(view.zoom, gesture.cx - dx / scale, gesture.cy + dy / scale); drawSoon(); }
+  });
+  function pointerGone(e) {
+    if (!(e.pointerId in pointers)) return;
+    delete pointers[e.pointerId];
+    startGesture();
+  }
+  canvas.addEventListener('pointerup', pointerGone);
+  canvas.addEventListener('pointercancel', pointerGone);
+  canvas.addEventListener('lostpointercapture', pointerGone);
   canvas.addEventListener('click', function (e) {
     if (dragged) { dragged = false; return; }
     var p = eventPixel(e);
