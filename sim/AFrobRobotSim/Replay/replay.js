@@ -307,8 +307,8 @@
   function showInfo() {
     var el = $('info');
     if (state.selected < 0) {
-      el.textContent = 'Click a robot to see its readings.\n' +
-        'Zoom with the wheel (or + and -), drag to move, 0 for the whole world.';
+      el.textContent = 'Click or tap a robot to see its readings.\n' +
+        'Zoom with the wheel, two fingers or + and -; drag to move; 0 or Fit for the whole world.';
       return;
     }
     var i = state.selected, info = header.robots[i], r = frames[state.frame].robots[i];
