@@ -138,7 +138,9 @@ senseRobot ctx i odo key = fst (senseRobotApart ctx i odo key)
 senseRobotApart :: SenseContext -> Int -> (Position2, Heading) -> Maybe Char -> (SimbotInput, Double)
 senseRobotApart (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = (input, nearestOf others)
   where
-    input = SimbotInput
+    -- (the input record, the robot and its position are made at the call,
+    -- not as thunks: every controller reads its input at once)
+    !input = SimbotInput
       { siBattery  = batteryStatusOf (rCharge me)
       , siStuck    = rStuck me
       , siPosition = odoPos
@@ -150,10 +152,10 @@ senseRobotApart (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = (input, 
                                    (gatherNear (ixBallGrid ix) (-1) px py)
       , siKey      = key
       }
-    me | i >= 0 && i < ixNRobots ix = robotAt i
-       | otherwise                  = error ("AFrobRobotSim.Sensors.senseRobot: no robot number " ++ show i)
+    !me | i >= 0 && i < ixNRobots ix = robotAt i
+        | otherwise                  = error ("AFrobRobotSim.Sensors.senseRobot: no robot number " ++ show i)
     robotAt j = unsafeAt (ixRobots ix) j
-    p@(Point2 px py) = rPos me
+    !p@(Point2 px py) = rPos me
     -- The other robots near this one, gathered once per sample and shared
     -- by the tracker and every ray: all within 'gatherRange', which covers
     -- the tracker's range and every robot a ray can hit.
