@@ -28,7 +28,9 @@
 -- selected robot in view, centring on it again when it leaves the
 -- view's middle 60% (a drag or a pinch, which would be undone at the
 -- next frame, unticks it). A tap selects, as a click does; on a narrow
--- screen the canvas is shown scaled to fit. In a big world a robot is drawn at least 1.5
+-- screen the canvas is shown scaled to fit; in the whole world's view a
+-- finger's vertical swipe on the canvas scrolls the page (a zoomed view
+-- takes every touch). In a big world a robot is drawn at least 1.5
 -- pixels in radius, and the ids are drawn when they can be read: when
 -- at most 200 robots are in view, or the robots are at least 8 pixels
 -- across.

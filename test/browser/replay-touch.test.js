@@ -8,10 +8,11 @@
 // as the midpoint moves; lifting one finger goes on as a drag, without a
 // jump; a one-finger drag moves the view and selects nothing; a tap
 // selects a robot; a pinch or a drag unticks "follow"; a touchpad's pinch
-// (the wheel with the control key) zooms about the pointer; the page does not
-// scroll or zoom itself under the fingers; and on a phone's narrow screen
-// the canvas is shown scaled to fit, a tap still selecting the robot
-// under it. The touches are sent as Chromium's own (CDP
+// (the wheel with the control key) zooms about the pointer; on a phone's
+// narrow screen the canvas is shown scaled to fit, a tap still selecting
+// the robot under it; and a vertical swipe on the canvas scrolls the page
+// in the whole world's view (where the view cannot move), and moves the
+// view, not the page, when zoomed. The touches are sent as Chromium's own (CDP
 // Input.dispatchTouchEvent), which the page receives as pointer events.
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
@@ -42,8 +43,8 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     };
     const mid = (a, b) => [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
 
-    check(await page.evaluate(() => getComputedStyle(document.getElementById('world')).touchAction) === 'none',
-          'the canvas takes the touches itself (touch-action: none)');
+    const touchAction = () => page.evaluate(() => getComputedStyle(document.getElementById('world')).touchAction);
+    check(await touchAction() === 'pan-y', 'the whole world\'s view leaves vertical swipes to the page (touch-action: pan-y)');
     const l = await layout();
     const info = await page.evaluate(() => ({ robots: window.afrpReplay.frameData().robots,
                                                  scale: window.afrpReplay.worldToCanvas(1, 0)[0] - window.afrpReplay.worldToCanvas(0, 0)[0] }));
@@ -57,6 +58,7 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     const pinched = await view();
     check(Math.abs(pinched.zoom - 2.5) < 1e-9, 'spreading two fingers from 80 to 200 pixels apart zooms 2.5 times (' + pinched.zoom + ')');
     check(near(await worldUnder(l, m), worldAtM, 1e-9), 'about the world point under their midpoint');
+    check(await touchAction() === 'none', 'a zoomed view takes every touch itself (touch-action: none)');
     // the midpoint moves, the distance stays: the view moves with it, the zoom stays
     for (const k of [1, 2, 3]) await touch('touchMove', [[m[0] - 100 + 10 * k, m[1] - 7 * k], [m[0] + 100 + 10 * k, m[1] - 7 * k]]);
     await nextFrame();
@@ -127,5 +129,25 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     await touch('touchEnd', []);
     await page.waitForFunction(() => window.afrpReplay.selected() === 0, null, { timeout: 3000 }).catch(() => {});
     check(await page.evaluate(() => window.afrpReplay.selected()) === 0, 'a tap on SimbotA 1 in the scaled canvas selects it');
+    // a vertical swipe on the canvas: the page scrolls in the whole world's view, the view moves when zoomed
+    await page.setViewportSize({ width: 360, height: 480 });
+    const swipe = async () => {
+      const lay = await layout(), x = lay.inner[0] + 100, y = lay.inner[1] + 250;
+      await touch('touchStart', [[x, y]]);
+      for (const k of [1, 2, 3, 4, 5, 6]) await touch('touchMove', [[x, y - 25 * k]]);
+      await touch('touchEnd', []);
+      await page.waitForTimeout(300);
+      await nextFrame();
+    };
+    const fitView = await view();
+    await swipe();
+    const scrolled = await page.evaluate(() => window.scrollY);
+    check(scrolled > 50 && JSON.stringify(await view()) === JSON.stringify(fitView),
+          'in the whole world\'s view a vertical swipe on the canvas scrolls the page (' + scrolled + ' pixels), the view stays');
+    await page.evaluate(() => { window.scrollTo(0, 0); window.afrpReplay.setView(2, 0, 0); });
+    const zoomedView = await view();
+    await swipe();
+    check(await page.evaluate(() => window.scrollY) === 0 && (await view()).cy < zoomedView.cy,
+          'in a zoomed view the same swipe moves the view, not the page');
     check(errors.length === 0, 'no errors on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
 }, { hasTouch: true, isMobile: true });

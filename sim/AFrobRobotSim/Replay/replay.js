@@ -51,6 +51,10 @@
     // id shrink with it (full size from 30 px/m up, the notes' world included).
     fine = Math.min(1, scale / 30);
     viewKey = view.zoom + ' ' + view.cx + ' ' + view.cy;
+    // On a touch screen the whole world's view leaves a finger's vertical
+    // swipe to the page, which scrolls (there is nothing to move: the view
+    // is the world); a zoomed view takes every touch, to move it.
+    canvas.style.touchAction = z > 1 ? 'none' : 'pan-y';
   }
   setView(1, b.x, b.y);
   // the view of zoom z (within its limits) with world point w at canvas point (px, py)
