@@ -7,12 +7,14 @@
 // distance and keeps the world point under their midpoint under it, also
 // as the midpoint moves; lifting one finger goes on as a drag, without a
 // jump; a one-finger drag moves the view and selects nothing; a tap
-// selects a robot; a pinch or a drag unticks "follow"; a touchpad's pinch
-// (the wheel with the control key) zooms about the pointer; on a phone's
-// narrow screen the canvas is shown scaled to fit, a tap still selecting
-// the robot under it; and a vertical swipe on the canvas scrolls the page
-// in the whole world's view (where the view cannot move), and moves the
-// view, not the page, when zoomed. The touches are sent as Chromium's own (CDP
+// selects a robot, also when the finger moves a little; a pinch or a drag
+// that moves the view unticks "follow"; a touchpad's pinch (the wheel with
+// the control key, in small steps) zooms about the pointer, and a wheel
+// counting lines zooms as one counting pixels; on a phone's narrow screen
+// the canvas is shown scaled to fit, a tap still selecting the robot
+// under it; and a vertical swipe on the canvas scrolls the page in the
+// whole world's view (where the view cannot move, and follow stays
+// ticked), and moves the view, not the page, when zoomed. The touches are sent as Chromium's own (CDP
 // Input.dispatchTouchEvent), which the page receives as pointer events.
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
@@ -41,7 +43,35 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
       const c = await page.evaluate(([x, y]) => window.afrpReplay.worldToCanvas(x, y), [x, y]);
       return [l.inner[0] + c[0] / l.ratio, l.inner[1] + c[1] / l.ratio];
     };
-    const mid = (a, b) => [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+    const selected = () => page.evaluate(() => window.afrpReplay.selected());
+    // a tap on robot k of the frame, the finger moving 3 pixels on the way (as a finger does):
+    // whether it selected the robot
+    const tapSelects = async (lay, k) => {
+      const r = info.robots[k], at = await pageOf(lay, r.x, r.y);
+      await touch('touchStart', [at]);
+      await touch('touchMove', [[at[0] + 2, at[1] + 1]]);
+      await touch('touchEnd', []);
+      await page.waitForFunction(k => window.afrpReplay.selected() === k, k, { timeout: 3000 }).catch(() => {});
+      return (await selected()) === k;
+    };
+    // a finger's drag from a point by steps of (dx, dy), held still before it is lifted: a
+    // finger lifted while moving flings on, and Chromium takes the next tap for the one that
+    // stops the fling (no click)
+    const drag = async (from, dx, dy, steps) => {
+      await touch('touchStart', [from]);
+      for (let k = 1; k <= steps; k++) await touch('touchMove', [[from[0] + dx * k, from[1] + dy * k]]);
+      for (let k = 0; k < 4; k++) { await page.waitForTimeout(50); await touch('touchMove', [[from[0] + dx * steps, from[1] + dy * steps]]); }
+      await touch('touchEnd', []);
+      await nextFrame();
+    };
+    // a swipe up the canvas, and the page's scrolling come to rest
+    const swipe = async () => {
+      const lay = await layout();
+      await drag([lay.inner[0] + 100, lay.inner[1] + 250], 0, -25, 6);
+      let last = -1, now = await page.evaluate(() => window.scrollY);
+      while (now !== last) { last = now; await page.waitForTimeout(150); now = await page.evaluate(() => window.scrollY); }
+      await nextFrame();
+    };
 
     const touchAction = () => page.evaluate(() => getComputedStyle(document.getElementById('world')).touchAction);
     check(await touchAction() === 'pan-y', 'the whole world\'s view leaves vertical swipes to the page (touch-action: pan-y)');
@@ -77,29 +107,22 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
           'lifting one finger of a pinch goes on as a drag by the other finger, without a jump');
     await touch('touchEnd', []);
     await nextFrame();
-    check(await page.evaluate(() => window.afrpReplay.selected()) === -1, 'a pinch selects nothing');
 
-    // a tap on SimbotB 2 selects it
-    await page.evaluate(() => window.afrpReplay.setView(1.5, 0, 0));
-    const rB = info.robots[1];
-    const atB = await pageOf(l, rB.x, rB.y);
-    await touch('touchStart', [atB]);
-    await touch('touchEnd', []);
-    await page.waitForFunction(() => window.afrpReplay.selected() === 1, null, { timeout: 3000 }).catch(() => {});
-    check(await page.evaluate(() => window.afrpReplay.selected()) === 1, 'a tap on SimbotB 2 selects it');
-    // a one-finger drag moves the view, keeps the selection, and unticks follow
-    await page.check('#follow');
+    // a one-finger drag that starts on SimbotB 2 moves the view and selects nothing
     await page.evaluate(() => window.afrpReplay.setView(2, 0, 0));
-    const before = await view(), s2 = info.scale * before.zoom;
-    await touch('touchStart', [[m[0], m[1]]]);
-    for (const k of [1, 2, 3, 4]) await touch('touchMove', [[m[0] + 15 * k, m[1] + 10 * k]]);
-    await touch('touchEnd', []);
-    await nextFrame();
+    const before = await view(), s2 = info.scale * before.zoom, rB = info.robots[1];
+    await drag(await pageOf(l, rB.x, rB.y), 15, 10, 4);
     const dragged = await view();
     check(Math.abs(dragged.cx - (before.cx - 60 / s2)) < 1e-9 && Math.abs(dragged.cy - (before.cy + 40 / s2)) < 1e-9 &&
           dragged.zoom === before.zoom, 'a one-finger drag moves the view with the finger');
-    check(await page.evaluate(() => window.afrpReplay.selected()) === 1 && !(await page.isChecked('#follow')),
-          'and keeps the selection, unticking follow');
+    check(await selected() === -1, 'a drag that starts on SimbotB 2 does not select it');
+    // a tap on SimbotB 2 selects it; a drag then keeps the selection and unticks follow
+    await page.evaluate(() => window.afrpReplay.setView(1.5, 0, 0));
+    check(await tapSelects(l, 1), 'a tap on SimbotB 2 selects it');
+    await page.check('#follow');
+    await page.evaluate(() => window.afrpReplay.setView(2, 0, 0));
+    await drag(m, 15, 10, 4);
+    check(await selected() === 1 && !(await page.isChecked('#follow')), 'a drag keeps the selection, and unticks follow');
     await page.check('#follow');
     await touch('touchStart', [[m[0] - 30, m[1]], [m[0] + 30, m[1]]]);
     await touch('touchMove', [[m[0] - 45, m[1]], [m[0] + 45, m[1]]]);
@@ -107,15 +130,23 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     check(!(await page.isChecked('#follow')), 'a pinch unticks follow too');
     check(await page.evaluate(() => window.scrollX === 0 && window.scrollY === 0), 'the page itself did not scroll');
 
-    // a touchpad's pinch: the wheel with the control key, in larger steps than the wheel alone
-    await page.evaluate(() => window.afrpReplay.setView(1, 0, 0));
-    await page.mouse.move(m[0], m[1]);
-    await page.keyboard.down('Control');
-    await page.mouse.wheel(0, -30);
-    await page.keyboard.up('Control');
-    await page.waitForFunction(() => window.afrpReplay.view().zoom > 1, null, { timeout: 3000 }).catch(() => {});
-    check(Math.abs((await view()).zoom - Math.exp(0.3)) < 1e-9 && near(await worldUnder(l, m), worldAtM, 1e-9),
-          'a touchpad\'s pinch (the wheel with the control key, -30) zooms exp(0.3) times about the pointer (' + (await view()).zoom + ')');
+    // the wheel's kinds: a touchpad's pinch (the control key, small steps) zooms more a pixel
+    // than a wheel, also a mouse wheel with the control key held; a wheel counting lines, 40
+    // pixels a line
+    const wheelZoom = async (init) => {
+      await page.evaluate(() => window.afrpReplay.setView(1, 0, 0));
+      await page.evaluate(([init, x, y]) => document.getElementById('world').dispatchEvent(
+        new WheelEvent('wheel', Object.assign({ clientX: x, clientY: y, cancelable: true, bubbles: true }, init))), [init, m[0], m[1]]);
+      return { zoom: (await view()).zoom, under: await worldUnder(l, m) };
+    };
+    const pinchpad = await wheelZoom({ deltaY: -30, ctrlKey: true });
+    check(Math.abs(pinchpad.zoom - Math.exp(0.3)) < 1e-9 && near(pinchpad.under, worldAtM, 1e-9),
+          'a touchpad\'s pinch (the wheel with the control key, -30) zooms exp(0.3) times about the pointer (' + pinchpad.zoom + ')');
+    const ctrlWheel = await wheelZoom({ deltaY: -100, ctrlKey: true });
+    check(Math.abs(ctrlWheel.zoom - Math.exp(0.2)) < 1e-9,
+          'a mouse wheel\'s step (-100) with the control key zooms as without it, exp(0.2) times (' + ctrlWheel.zoom + ')');
+    const lines = await wheelZoom({ deltaY: -3, deltaMode: 1 });
+    check(Math.abs(lines.zoom - Math.exp(0.24)) < 1e-9, 'a wheel counting 3 lines zooms as 120 pixels, exp(0.24) times (' + lines.zoom + ')');
 
     // a phone's narrow screen: the canvas is scaled to fit, and a tap still finds the robot under it
     await page.setViewportSize({ width: 360, height: 740 });
@@ -123,28 +154,19 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     const narrow = await layout();
     check(narrow.shown <= narrow.page && narrow.ratio > 1.2,
           'on a 360-pixel screen the canvas is shown ' + Math.round(narrow.shown) + ' pixels wide, within the page (' + narrow.page + ')');
-    const rA = info.robots[0];
-    const atA = await pageOf(narrow, rA.x, rA.y);
-    await touch('touchStart', [atA]);
-    await touch('touchEnd', []);
-    await page.waitForFunction(() => window.afrpReplay.selected() === 0, null, { timeout: 3000 }).catch(() => {});
-    check(await page.evaluate(() => window.afrpReplay.selected()) === 0, 'a tap on SimbotA 1 in the scaled canvas selects it');
-    // a vertical swipe on the canvas: the page scrolls in the whole world's view, the view moves when zoomed
+    check(await tapSelects(narrow, 0), 'a tap on SimbotA 1 in the scaled canvas selects it (the finger moving 3 pixels)');
+    // a vertical swipe on the canvas: the page scrolls in the whole world's view (follow stays
+    // ticked, the selection kept), the view moves when zoomed
     await page.setViewportSize({ width: 360, height: 480 });
-    const swipe = async () => {
-      const lay = await layout(), x = lay.inner[0] + 100, y = lay.inner[1] + 250;
-      await touch('touchStart', [[x, y]]);
-      for (const k of [1, 2, 3, 4, 5, 6]) await touch('touchMove', [[x, y - 25 * k]]);
-      await touch('touchEnd', []);
-      await page.waitForTimeout(300);
-      await nextFrame();
-    };
+    await page.check('#follow');
     const fitView = await view();
     await swipe();
     const scrolled = await page.evaluate(() => window.scrollY);
     check(scrolled > 50 && JSON.stringify(await view()) === JSON.stringify(fitView),
           'in the whole world\'s view a vertical swipe on the canvas scrolls the page (' + scrolled + ' pixels), the view stays');
+    check(await page.isChecked('#follow') && await selected() === 0, 'and leaves follow ticked and the selection');
     await page.evaluate(() => { window.scrollTo(0, 0); window.afrpReplay.setView(2, 0, 0); });
+    await page.waitForFunction(() => window.scrollY === 0);
     const zoomedView = await view();
     await swipe();
     check(await page.evaluate(() => window.scrollY) === 0 && (await view()).cy < zoomedView.cy,

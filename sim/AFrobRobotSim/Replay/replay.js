@@ -402,60 +402,73 @@
   canvas.addEventListener('wheel', function (e) {
     e.preventDefault();
     var p = eventPixel(e);
-    // (a touchpad's pinch comes as the wheel with the control key, its
-    // steps smaller than a wheel's)
-    zoomAt(p[0], p[1], Math.exp(-e.deltaY * (e.ctrlKey ? 0.01 : 0.002)));
+    // (a wheel that counts in lines or pages, as Firefox's may, is taken
+    // at 40 pixels a line; a touchpad's pinch comes as the wheel with the
+    // control key, in small steps, which zoom more a pixel than a wheel's)
+    var dy = e.deltaY * (e.deltaMode === 1 ? 40 : e.deltaMode === 2 ? 800 : 1);
+    zoomAt(p[0], p[1], Math.exp(-dy * (e.ctrlKey && Math.abs(dy) < 50 ? 0.01 : 0.002)));
     drawSoon();
   }, { passive: false });
   // The pointers down on the canvas (the mouse's left button, a pen,
   // fingers), by id, and the gesture they make. One pointer drags: the view
-  // moves with it (a press that moves less than 4 pixels is a click). Two
-  // pinch: the view zooms by the change of their distance and keeps the
-  // world point that was under their midpoint under it as it moves. When
-  // a pointer is added or lifted, the gesture starts again from the view
-  // as it is, so lifting one finger of a pinch goes on as a drag, without
-  // a jump. A drag or a pinch unticks "follow" when a robot is selected
-  // (the next frame would take the view back), and the click that ends it
-  // selects nothing. Each pointer is captured: a drag ends where it is
-  // released, on the canvas or not.
+  // moves with it (a press that moves less than 4 CSS pixels with the
+  // mouse, 10 with a finger or a pen, is a click or a tap). Two pinch: the
+  // view zooms by the change of their distance and keeps the world point
+  // that was under their midpoint under it as it moves. When a pointer is
+  // added or lifted, the gesture starts again from the view as it is, so
+  // lifting one finger of a pinch goes on as a drag, without a jump. A
+  // drag or a pinch that moves the view unticks "follow" when a robot is
+  // selected (the next frame would take the view back; one that cannot
+  // move it, as in the whole world's view, leaves it be), and the click
+  // that ends a drag, or follows two pointers, selects nothing. Each
+  // pointer is captured: a drag ends where it is released, on the canvas
+  // or not.
   var pointers = {}, gesture = null, dragged = false;
   function pointerList() { return Object.keys(pointers).sort().map(function (k) { return pointers[k]; }); }
   function startGesture() {
     var ps = pointerList();
     if (ps.length === 0) gesture = null;
-    else if (ps.length === 1) gesture = { at: ps[0], cx: view.cx, cy: view.cy };
+    else if (ps.length === 1) gesture = { at: ps[0].at, client: ps[0].client, cx: view.cx, cy: view.cy };
     else {
-      var mid = [(ps[0][0] + ps[1][0]) / 2, (ps[0][1] + ps[1][1]) / 2];
+      var mid = [(ps[0].at[0] + ps[1].at[0]) / 2, (ps[0].at[1] + ps[1].at[1]) / 2];
       gesture = { pinch: true, world: toWorld(mid[0], mid[1]), zoom: view.zoom,
-                  dist: Math.max(1, Math.hypot(ps[1][0] - ps[0][0], ps[1][1] - ps[0][1])) };
+                  dist: Math.max(1, Math.hypot(ps[1].at[0] - ps[0].at[0], ps[1].at[1] - ps[0].at[1])) };
     }
   }
-  function moved() {
-    if (dragged) return;
-    dragged = true;
-    if (state.selected >= 0) $('follow').checked = false;
+  // a change of the view by a gesture: follow is unticked if it moved
+  function moveView(change) {
+    var before = viewKey;
+    change();
+    if (viewKey !== before) {
+      if (state.selected >= 0) $('follow').checked = false;
+      drawSoon();
+    }
   }
   canvas.addEventListener('pointerdown', function (e) {
     if (e.pointerType === 'mouse' && e.button !== 0) return;
     if (Object.keys(pointers).length === 0) dragged = false;
-    pointers[e.pointerId] = eventPixel(e);
+    pointers[e.pointerId] = { at: eventPixel(e), client: [e.clientX, e.clientY], slop: e.pointerType === 'mouse' ? 4 : 10 };
     if (canvas.setPointerCapture) { try { canvas.setPointerCapture(e.pointerId); } catch (err) { /* gone already */ } }
-    if (Object.keys(pointers).length > 1) moved();
+    if (Object.keys(pointers).length > 1) dragged = true;
     startGesture();
   });
   canvas.addEventListener('pointermove', function (e) {
     if (!(e.pointerId in pointers) || !gesture) return;
-    pointers[e.pointerId] = eventPixel(e);
+    var q = pointers[e.pointerId];
+    q.at = eventPixel(e);
+    q.client = [e.clientX, e.clientY];
     var ps = pointerList();
     if (gesture.pinch) {
-      var mid = [(ps[0][0] + ps[1][0]) / 2, (ps[0][1] + ps[1][1]) / 2];
-      placeAt(gesture.world, mid[0], mid[1], gesture.zoom * Math.hypot(ps[1][0] - ps[0][0], ps[1][1] - ps[0][1]) / gesture.dist);
-      drawSoon();
+      var mid = [(ps[0].at[0] + ps[1].at[0]) / 2, (ps[0].at[1] + ps[1].at[1]) / 2];
+      moveView(function () {
+        placeAt(gesture.world, mid[0], mid[1],
+                gesture.zoom * Math.hypot(ps[1].at[0] - ps[0].at[0], ps[1].at[1] - ps[0].at[1]) / gesture.dist);
+      });
       return;
     }
-    var dx = ps[0][0] - gesture.at[0], dy = ps[0][1] - gesture.at[1];
-    if (Math.abs(dx) + Math.abs(dy) >= 4) moved();
-    if (dragged) { setView(view.zoom, gesture.cx - dx / scale, gesture.cy + dy / scale); drawSoon(); }
+    var p = ps[0], dx = p.at[0] - gesture.at[0], dy = p.at[1] - gesture.at[1];
+    if (Math.abs(p.client[0] - gesture.client[0]) + Math.abs(p.client[1] - gesture.client[1]) >= p.slop) dragged = true;
+    if (dragged) moveView(function () { setView(view.zoom, gesture.cx - dx / scale, gesture.cy + dy / scale); });
   });
   function pointerGone(e) {
     if (!(e.pointerId in pointers)) return;
