@@ -40,6 +40,7 @@ module AFrobRobotSim.Log
   , logFrames
   , isFrameStep
   , linesByRobot
+  , roundHalfEven
     -- * Writing a file as the run goes
   , LogWriter
   , openLogWriter
@@ -276,11 +277,16 @@ roundTo k x
   | not (abs x * k <= 1e15) = x
   | otherwise               = fromIntegral (roundHalfEven (x * k)) / k
 
--- 'round' (to the nearest whole number, a tie to the even one) of a
--- number of magnitude at most 10^15, with plain arithmetic: GHC's
--- 'round' to an 'Int' is a foreign call of C's @rint@, about 800
--- instructions a robot-frame of a 1000-robot page with its call. Exact
--- there: the truncation and the fraction left are exact below 2^53.
+-- | 'round' to an 'Int' (to the nearest whole number, a tie to the even
+-- one) of a number of magnitude at most 10^15, as the log rounds its
+-- values to millionths; beyond that magnitude, or for NaN, the result is
+-- unspecified (the log keeps such values as they are). Plain arithmetic:
+-- GHC's 'round' to an 'Int' is a foreign call of C's @rint@, about 800
+-- instructions a robot-frame of a 1000-robot page with its call. Exact:
+-- below 2^53 the truncation and the fraction it leaves are exact.
+--
+-- >>> map roundHalfEven [0.5, 1.5, 2.5, -0.5, -1.5, 2.4999, -2.6]
+-- [0,2,2,0,-2,2,-3]
 roundHalfEven :: Double -> Int
 roundHalfEven y
   | d > 0.5 || (d == 0.5 && odd t)   = t + 1

@@ -85,6 +85,15 @@ spec = do
       lhBlocks h `shouldBe` [LogRect (-3) 3 0.5 0.5]
       lhBounds h `shouldBe` LogRect 0 0 10 10
 
+  describe "roundHalfEven" $ do
+    it "is round on numbers up to 10^15 in magnitude, ties to even (the log's rounding without a foreign call)" $
+      property $ forAll (oneof [ choose (-1e15, 1e15), choose (-1e3, 1e3)
+                               , (+ 0.5) . fromIntegral <$> (choose (-10 ^ (14 :: Int), 10 ^ (14 :: Int)) :: Gen Int)
+                               , (* 0.5) . fromIntegral <$> (choose (-64, 64) :: Gen Int)
+                               , elements [0, -0, 1e15, -1e15, 999999999999999.5, -999999999999999.5] ]) $ \y ->
+        roundHalfEven y == (round y :: Int)
+    it "rounds the ties of 0.5 to the even neighbour" $
+      map roundHalfEven [0.5, 1.5, 2.5, -0.5, -1.5, -2.5, 2.4999, -2.6] `shouldBe` [0, 2, 2, 0, -2, -2, 2, -3]
   describe "linesByRobot" $ do
     it "gives each robot its own lines and leaves the rest to the console (fixed)" $ do
       let (own, rest) = linesByRobot [("SimbotA", 1), ("SimbotB", 10)]
