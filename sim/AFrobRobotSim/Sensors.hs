@@ -139,7 +139,8 @@ senseRobotApart :: SenseContext -> Int -> (Position2, Heading) -> Maybe Char -> 
 senseRobotApart (MkSenseContext arena _ _ ix) i (odoPos, odoHead) key = (input, nearestOf others)
   where
     -- (the input record, the robot and its position are made at the call,
-    -- not as thunks: every controller reads its input at once)
+    -- not as thunks: a controller's step reads its input, so the thunks
+    -- only cost; one that reads nothing of it pays a little more)
     !input = SimbotInput
       { siBattery  = batteryStatusOf (rCharge me)
       , siStuck    = rStuck me
