@@ -26,8 +26,9 @@
 -- midpoint) within the world; @0@ or "Fit" shows the whole world
 -- again; with "follow" ticked (the default), a zoomed view keeps the
 -- selected robot in view, centring on it again when it leaves the
--- view's middle 60% (a drag or a pinch, which would be undone at the
--- next frame, unticks it). A tap selects, as a click does; on a narrow
+-- view's middle 60% (a drag or a pinch that moves the view, which the
+-- next frame would undo, unticks it). A tap selects, as a click does (a
+-- finger may move up to 10 CSS pixels in it, the mouse 4); on a narrow
 -- screen the canvas is shown scaled to fit; in the whole world's view a
 -- finger's vertical swipe on the canvas scrolls the page (a zoomed view
 -- takes every touch). In a big world a robot is drawn at least 1.5
