@@ -40,6 +40,7 @@ module AFrobRobotSim.Log
   , logFrames
   , isFrameStep
   , linesByRobot
+    -- * The values' rounding
   , roundHalfEven
     -- * Writing a file as the run goes
   , LogWriter

@@ -424,7 +424,10 @@
   // pointer is captured: a drag ends where it is released, on the canvas
   // or not.
   var pointers = {}, gesture = null, dragged = false;
-  function pointerList() { return Object.keys(pointers).sort().map(function (k) { return pointers[k]; }); }
+  // (in the order of their ids: the first two are the pinch's)
+  function pointerList() {
+    return Object.keys(pointers).map(Number).sort(function (a, b) { return a - b; }).map(function (k) { return pointers[k]; });
+  }
   function startGesture() {
     var ps = pointerList();
     if (ps.length === 0) gesture = null;
