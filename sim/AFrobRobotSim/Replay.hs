@@ -46,9 +46,9 @@
 -- frame drew, those in view, how many of their ids, and whether its
 -- trails were the layer moved and scaled while the view changed),
 -- @roughAbove@ (the page's paths, in robots times frames, above which
--- the trails are so moved while the wheel or a drag changes the view,
--- and drawn afresh 0.25 s after the last change: 200,000), @header@ and
--- @summary@.
+-- the trails are so moved while the wheel, a drag or a pinch changes
+-- the view, and drawn afresh 0.25 s after the last change: 200,000),
+-- @header@ and @summary@.
 -- Element ids: @world@ (the canvas), @play@, @back@, @fwd@, @slider@,
 -- @speed@, @rays@, @trails@, @sightings@, @follow@, @zoomin@, @zoomout@,
 -- @fit@, @time@, @info@, @events@, @meta@, @afrp-log@ (the log's lines,

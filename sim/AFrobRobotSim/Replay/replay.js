@@ -144,7 +144,7 @@
   // 1000-robot, 30 s page: 0.2-0.6 s from the start).
   var keepEvery = Math.max(25, Math.ceil(frames.length / 16));
   trails.saved = [];
-  // While the wheel or a drag changes the view, redrawing the paths of a
+  // While the wheel, a drag or a pinch changes the view, redrawing the paths of a
   // big page at every step (1000 robots for 30 s: about 0.2 s; 10,000
   // robots: about 1 s) would make the view lag: when the layer holds more
   // than 'roughAbove' stretches, the view's changes show the layer as it
@@ -298,7 +298,7 @@
     var w = b.width * fitScale, h = b.height * fitScale;
     if (Math.abs(p[0] - margin - w / 2) > 0.3 * w || Math.abs(p[1] - margin - h / 2) > 0.3 * h) setView(view.zoom, r.x, r.y);
   }
-  // a view changed by the wheel or a drag: drawn once at the next animation
+  // a view changed by the wheel, a drag or a pinch: drawn once at the next animation
   // frame (the trails maybe rough), and in full 0.25 s after the last change
   var drawPending = false, fullTimer = null;
   function drawSoon() {
@@ -488,9 +488,10 @@
     draw();
   });
   function zoomMiddle(factor) { zoomAt(canvas.width / 2, canvas.height / 2, factor); draw(); }
+  function fit() { setView(1, b.x, b.y); draw(); }
   $('zoomin').addEventListener('click', function () { zoomMiddle(1.5); });
   $('zoomout').addEventListener('click', function () { zoomMiddle(1 / 1.5); });
-  $('fit').addEventListener('click', function () { setView(1, b.x, b.y); draw(); });
+  $('fit').addEventListener('click', fit);
   document.addEventListener('keydown', function (e) {
     if (e.target && e.target.tagName === 'SELECT') return;
     if (e.key === ' ') { e.preventDefault(); setPlaying(!state.playing); }
@@ -498,7 +499,7 @@
     else if (e.key === 'ArrowRight') { e.preventDefault(); setPlaying(false); setFrame(state.frame + 1); }
     else if (e.key === '+' || e.key === '=') zoomMiddle(1.5);
     else if (e.key === '-') zoomMiddle(1 / 1.5);
-    else if (e.key === '0') { setView(1, b.x, b.y); draw(); }
+    else if (e.key === '0') fit();
   });
   $('meta').textContent = header.commandLine.join(' ') + '\n' + 'dt ' + header.dt + ' s, ' + header.fps +
     ' frames/s, seed ' + header.seed + ', ' + header.robots.length + ' robots' +
