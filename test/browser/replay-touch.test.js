@@ -7,7 +7,8 @@
 // distance and keeps the world point under their midpoint under it, also
 // as the midpoint moves; lifting one finger goes on as a drag, without a
 // jump; a one-finger drag moves the view and selects nothing; a tap
-// selects a robot, also when the finger moves a little; a pinch or a drag
+// selects a robot, also when the finger moves a little, and one up to 16
+// CSS pixels off its disc (a mouse's click there selects nothing); a pinch or a drag
 // that moves the view unticks "follow"; a touchpad's pinch (the wheel with
 // the control key, in small steps) zooms about the pointer, and a wheel
 // counting lines zooms as one counting pixels; on a phone's narrow screen
@@ -119,6 +120,29 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     // a tap on SimbotB 2 selects it; a drag then keeps the selection and unticks follow
     await page.evaluate(() => window.afrpReplay.setView(1.5, 0, 0));
     check(await tapSelects(l, 1), 'a tap on SimbotB 2 selects it');
+    // a finger covers more than it points at: a tap up to 16 CSS pixels off SimbotB 2's disc
+    // selects it, where a mouse's click selects nothing (3 canvas pixels)
+    // the page point gap page pixels to the right of robot k's disc, in the view at a zoom
+    const offDisc = async (gap, lay = l, k = 1, zoom = 1.5) => {
+      const radius = await page.evaluate(k => window.afrpReplay.header.robots[k].radius, k);
+      const r = info.robots[k], c = await pageOf(lay, r.x, r.y);
+      return [c[0] + radius * info.scale * zoom / lay.ratio + gap, c[1]];
+    };
+    const fingerTap = async (at) => {
+      await page.evaluate(() => window.afrpReplay.selectRobot(-1));
+      await touch('touchStart', [at]);
+      await touch('touchEnd', []);
+      await page.waitForFunction(() => window.afrpReplay.selected() !== -1, null, { timeout: 1500 }).catch(() => {});
+      return selected();
+    };
+    check(await fingerTap(await offDisc(12)) === 1, 'a tap 12 pixels off SimbotB 2\'s disc selects it');
+    check(await fingerTap(await offDisc(22)) === -1, 'a tap 22 pixels off it selects nothing');
+    await page.evaluate(() => window.afrpReplay.selectRobot(-1));
+    const off12 = await offDisc(12);
+    await page.mouse.click(off12[0], off12[1]);
+    await nextFrame();
+    check(await selected() === -1, 'a mouse\'s click 12 pixels off it selects nothing');
+    check(await tapSelects(l, 1), 'and a tap on it selects it again');
     await page.check('#follow');
     await page.evaluate(() => window.afrpReplay.setView(2, 0, 0));
     await drag(m, 15, 10, 4);
@@ -155,6 +179,8 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     check(narrow.shown <= narrow.page && narrow.ratio > 1.2,
           'on a 360-pixel screen the canvas is shown ' + Math.round(narrow.shown) + ' pixels wide, within the page (' + narrow.page + ')');
     check(await tapSelects(narrow, 0), 'a tap on SimbotA 1 in the scaled canvas selects it (the finger moving 3 pixels)');
+    check(await fingerTap(await offDisc(12, narrow, 0, 1)) === 0,
+          'and a tap 12 page pixels off its disc (' + (12 * narrow.ratio).toFixed(1) + ' canvas pixels) selects it too');
     // a vertical swipe on the canvas: the page scrolls in the whole world's view (follow stays
     // ticked, the selection kept), the view moves when zoomed
     await page.setViewportSize({ width: 360, height: 480 });

@@ -375,11 +375,13 @@
     state.last = now;
     requestAnimationFrame(tick);
   }
-  function robotAt(px, py) {
+  // the robot whose disc is within reach (canvas pixels) of a canvas
+  // pixel, the nearest (by its centre) if several are: -1 if none
+  function robotAt(px, py, reach) {
     var f = frames[state.frame], best = -1, bestD = Infinity;
     f.robots.forEach(function (r, i) {
       var p = toCanvas(r.x, r.y), d = Math.hypot(p[0] - px, p[1] - py);
-      if (d <= Math.max(header.robots[i].radius * scale, 1.5) + 3 && d < bestD) { best = i; bestD = d; }
+      if (d <= Math.max(header.robots[i].radius * scale, 1.5) + reach && d < bestD) { best = i; bestD = d; }
     });
     return best;
   }
@@ -422,8 +424,10 @@
   // move it, as in the whole world's view, leaves it be), and the click
   // that ends a drag, or follows two pointers, selects nothing. Each
   // pointer is captured: a drag ends where it is released, on the canvas
-  // or not.
-  var pointers = {}, gesture = null, dragged = false;
+  // or not. A click selects the robot within 3 canvas pixels of it; a
+  // tap, the robot within 16 CSS pixels of the finger (8 of a pen), as a
+  // finger covers more than it points at.
+  var pointers = {}, gesture = null, dragged = false, lastKind = 'mouse';
   // (in the order of their ids: the first two are the pinch's)
   function pointerList() {
     return Object.keys(pointers).map(Number).sort(function (a, b) { return a - b; }).map(function (k) { return pointers[k]; });
@@ -450,6 +454,7 @@
   canvas.addEventListener('pointerdown', function (e) {
     if (e.pointerType === 'mouse' && e.button !== 0) return;
     if (Object.keys(pointers).length === 0) dragged = false;
+    lastKind = e.pointerType;
     pointers[e.pointerId] = { at: eventPixel(e), client: [e.clientX, e.clientY], slop: e.pointerType === 'mouse' ? 4 : 10 };
     if (canvas.setPointerCapture) { try { canvas.setPointerCapture(e.pointerId); } catch (err) { /* gone already */ } }
     if (Object.keys(pointers).length > 1) dragged = true;
@@ -483,8 +488,9 @@
   canvas.addEventListener('lostpointercapture', pointerGone);
   canvas.addEventListener('click', function (e) {
     if (dragged) { dragged = false; return; }
-    var p = eventPixel(e);
-    state.selected = robotAt(p[0], p[1]);
+    var p = eventPixel(e), kind = e.pointerType || lastKind;
+    state.selected = robotAt(p[0], p[1], kind === 'touch' ? 16 * canvas.width / canvas.clientWidth
+                                         : kind === 'pen' ? 8 * canvas.width / canvas.clientWidth : 3);
     draw();
   });
   function zoomMiddle(factor) { zoomAt(canvas.width / 2, canvas.height / 2, factor); draw(); }
