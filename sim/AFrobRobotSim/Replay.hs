@@ -30,7 +30,9 @@
 -- next frame would undo, unticks it). A tap selects, as a click does (a
 -- finger may move up to 10 CSS pixels in it, the mouse 4): a click the
 -- robot within 3 canvas pixels, a finger's tap the robot within 16 CSS
--- pixels (a pen's, 8), the nearest if several are; on a narrow
+-- pixels (a pen's, 8), the nearest if several are, when the finger is
+-- lifted (also right after a flick, where the browser may fire no
+-- click); on a narrow
 -- screen the canvas is shown scaled to fit; in the whole world's view a
 -- finger's vertical swipe on the canvas scrolls the page (a zoomed view
 -- takes every touch). In a big world a robot is drawn at least 1.5

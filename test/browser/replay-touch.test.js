@@ -8,7 +8,8 @@
 // as the midpoint moves; lifting one finger goes on as a drag, without a
 // jump; a one-finger drag moves the view and selects nothing; a tap
 // selects a robot, also when the finger moves a little, and one up to 16
-// CSS pixels off its disc (a mouse's click there selects nothing); a pinch or a drag
+// CSS pixels off its disc (a mouse's click there selects nothing), also
+// right after a flick; a pinch or a drag
 // that moves the view unticks "follow"; a touchpad's pinch (the wheel with
 // the control key, in small steps) zooms about the pointer, and a wheel
 // counting lines zooms as one counting pixels; on a phone's narrow screen
@@ -143,6 +144,15 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     await nextFrame();
     check(await selected() === -1, 'a mouse\'s click 12 pixels off it selects nothing');
     check(await tapSelects(l, 1), 'and a tap on it selects it again');
+    // a quick drag, lifted while the finger still moves (a flick), then at once a tap on a
+    // robot: the tap selects it (Chromium fires no click for a tap that ends a flick)
+    await page.evaluate(() => { window.afrpReplay.selectRobot(-1); window.afrpReplay.setView(2, 0, 0); });
+    await touch('touchStart', [m]);
+    for (let k = 1; k <= 5; k++) await touch('touchMove', [[m[0] + 12 * k, m[1] + 4 * k]]);
+    await touch('touchEnd', []);
+    await nextFrame();
+    const afterFlick = await pageOf(l, rB.x, rB.y);
+    check(await fingerTap(afterFlick) === 1, 'a tap right after a flick selects the robot under it');
     await page.check('#follow');
     await page.evaluate(() => window.afrpReplay.setView(2, 0, 0));
     await drag(m, 15, 10, 4);

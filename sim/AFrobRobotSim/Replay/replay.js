@@ -453,7 +453,7 @@
   }
   canvas.addEventListener('pointerdown', function (e) {
     if (e.pointerType === 'mouse' && e.button !== 0) return;
-    if (Object.keys(pointers).length === 0) dragged = false;
+    if (Object.keys(pointers).length === 0) { dragged = false; tapped = false; }
     lastKind = e.pointerType;
     pointers[e.pointerId] = { at: eventPixel(e), client: [e.clientX, e.clientY], slop: e.pointerType === 'mouse' ? 4 : 10 };
     if (canvas.setPointerCapture) { try { canvas.setPointerCapture(e.pointerId); } catch (err) { /* gone already */ } }
@@ -483,15 +483,27 @@
     delete pointers[e.pointerId];
     startGesture();
   }
-  canvas.addEventListener('pointerup', pointerGone);
-  canvas.addEventListener('pointercancel', pointerGone);
-  canvas.addEventListener('lostpointercapture', pointerGone);
-  canvas.addEventListener('click', function (e) {
-    if (dragged) { dragged = false; return; }
-    var p = eventPixel(e), kind = e.pointerType || lastKind;
+  // the robot a click or a tap at a canvas pixel selects
+  function select(p, kind) {
     state.selected = robotAt(p[0], p[1], kind === 'touch' ? 16 * canvas.width / canvas.clientWidth
                                          : kind === 'pen' ? 8 * canvas.width / canvas.clientWidth : 3);
     draw();
+  }
+  // A finger's or a pen's tap selects when it is lifted, and the click
+  // that may follow is then passed over: Chromium fires no click for a tap
+  // that ends a flick (a drag lifted while moving), which would otherwise
+  // select nothing.
+  var tapped = false;
+  canvas.addEventListener('pointerup', function (e) {
+    var alone = e.pointerId in pointers && Object.keys(pointers).length === 1;
+    pointerGone(e);
+    if (e.pointerType !== 'mouse' && alone && !dragged) { tapped = true; select(eventPixel(e), e.pointerType); }
+  });
+  canvas.addEventListener('pointercancel', pointerGone);
+  canvas.addEventListener('lostpointercapture', pointerGone);
+  canvas.addEventListener('click', function (e) {
+    if (dragged || tapped) { dragged = false; tapped = false; return; }
+    select(eventPixel(e), e.pointerType || lastKind);
   });
   function zoomMiddle(factor) { zoomAt(canvas.width / 2, canvas.height / 2, factor); draw(); }
   function fit() { setView(1, b.x, b.y); draw(); }
