@@ -57,8 +57,9 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
       return (await selected()) === k;
     };
     // a finger's drag from a point by steps of (dx, dy), held still before it is lifted: a
-    // finger lifted while moving flings on, and Chromium takes the next tap for the one that
-    // stops the fling (no click)
+    // finger lifted while moving flings on (a page scrolled by it would go on scrolling, and
+    // Chromium takes the next tap for the one that stops the fling; the flick check below
+    // lifts the finger moving on purpose)
     const drag = async (from, dx, dy, steps) => {
       await touch('touchStart', [from]);
       for (let k = 1; k <= steps; k++) await touch('touchMove', [[from[0] + dx * k, from[1] + dy * k]]);
