@@ -1,20 +1,44 @@
 #!/usr/bin/env bash
 # How far apart this machine's processors are: the one-way latency of a
-# cache line between processor 0 and each other one (bench/cores/pingpong.c,
-# built with the C compiler into a temporary directory, never part of the
-# library). The simulator's parallel step passes every robot's state from
-# one core to the other at each step, so this number bounds what two cores
-# can give it: a few tens of nanoseconds on cores that share a cache, a few
-# hundred between chips or on a virtual machine's distant processors.
+# cache line between the first processor this program may use and each
+# other one (bench/cores/pingpong.c, built with the C compiler, $CC or cc,
+# into a temporary directory, never part of the library). The simulator's
+# parallel step passes robots' state from one core to the other at every
+# step, so this number indicates what two cores can give it: a few tens of
+# nanoseconds between cores that share a cache, a few hundred between
+# chips or on a virtual machine's distant processors. (A program run with
+# +RTS -N2 may land on any pair; only pairs with the first are measured.)
 #   bench/cores.sh [RUNS]     (each pair RUNS times, default 3)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-3}
+case "$runs" in
+  '' | *[!0-9]* | 0) echo "bench/cores.sh: RUNS must be a positive whole number, got '$runs'" >&2; exit 2 ;;
+esac
+# the processors this program may run on (a cpuset or taskset may leave
+# some out), from a list such as 0-3,6
+allowed=$(grep '^Cpus_allowed_list:' /proc/self/status | cut -f2)
+cpus=()
+IFS=, read -ra ranges <<<"$allowed"
+for r in "${ranges[@]}"; do
+  if [[ $r == *-* ]]; then
+    for ((c = ${r%-*}; c <= ${r#*-}; c++)); do cpus+=("$c"); done
+  else
+    cpus+=("$r")
+  fi
+done
+if [ "${#cpus[@]}" -lt 2 ]; then
+  echo "bench/cores.sh: one processor to run on (${allowed}): nothing to measure" >&2
+  exit 0
+fi
 build=$(mktemp -d /tmp/afrp-cores.XXXXXX)
 trap 'rm -rf "$build"' EXIT
-cc -O2 -Wall -Wextra -pthread bench/cores/pingpong.c -o "$build/pingpong"
-n=$(getconf _NPROCESSORS_ONLN)
-if [ "$n" -lt 2 ]; then echo "one processor: nothing to measure" >&2; exit 0; fi
-for ((b = 1; b < n; b++)); do
-  for ((r = 0; r < runs; r++)); do "$build/pingpong" 0 "$b"; done
+"${CC:-cc}" -O2 -Wall -Wextra -pthread bench/cores/pingpong.c -o "$build/pingpong"
+first=${cpus[0]}
+status=0
+for other in "${cpus[@]:1}"; do
+  for ((r = 0; r < runs; r++)); do
+    "$build/pingpong" "$first" "$other" || { status=1; break; }
+  done
 done
+exit $status

@@ -11,10 +11,12 @@
 #   bench/scaling.sh [R]        (R runs of each, the fastest kept: the
 #                                machine is shared; default 3, about three
 #                                minutes on the 2-core machine)
-# One core runs with the setting afrp-bench is linked with, as the
-# project's executables are (-A8m: an 8 MB allocation area); two cores
-# with +RTS -N2 -A8m -qg (a sequential collector: with the parallel one
-# every collection stops both cores, and two cores can be slower than one).
+# Both run with the settings afrp-bench is linked with, as the project's
+# executables are (-A8m -qb0: an 8 MB allocation area, and on two cores
+# the parallel collector sharing the minor collections' work too); two
+# cores with +RTS -N2. (Until the eighteenth round of bench/README.md two
+# cores ran with -N2 -A8m -qg, a sequential collector, which was faster
+# before -qb0 and is slower since.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cabal build -v0 --enable-benchmarks afrp-bench
@@ -25,7 +27,7 @@ printf 'what\trobots\tside_m\tcores\tsteps\trobot_steps_per_s\tx_real_time\tcpu_
 row() {  # what robots side cores steps -- afrp-bench arguments
   local what=$1 robots=$2 side=$3 cores=$4 steps=$5; shift 6
   local rts=(-N1)
-  if [ "$cores" = 2 ]; then rts=(-N2 -A8m -qg); fi
+  if [ "$cores" = 2 ]; then rts=(-N2); fi
   local line load best=0 try r
   load=$(cut -d' ' -f1 /proc/loadavg)
   for ((r = 0; r < repeats; r++)); do

@@ -28,22 +28,22 @@
 -- selected robot in view, centring on it again when it leaves the
 -- view's middle 60% (a drag or a pinch that moves the view, which the
 -- next frame would undo, unticks it). A tap selects, as a click does (a
--- finger may move up to 10 CSS pixels in it, the mouse 4): a click the
--- robot within 3 canvas pixels, a finger's tap the robot within 16 CSS
--- pixels (a pen's, 8), the nearest if several are, when the finger is
--- lifted (also right after a flick, where the browser may fire no
--- click); on a narrow
--- screen the canvas is shown scaled to fit; in the whole world's view a
--- finger's vertical swipe on the canvas scrolls the page (a zoomed view
--- takes every touch). In a big world a robot is drawn at least 1.5
--- pixels in radius, and the ids are drawn when they can be read: when
--- at most 200 robots are in view, or the robots are at least 8 pixels
--- across.
+-- finger may move up to 10 CSS pixels in it, the mouse 4): a click
+-- selects the robot within 3 canvas pixels, a finger's tap the robot
+-- within 16 CSS pixels (a pen's, 8), the nearest if several are, when
+-- the finger is lifted (also the tap right after a flick, for which the
+-- browser may fire no click); on a narrow screen the canvas is shown
+-- scaled to fit; in the whole world's view a finger's vertical swipe on
+-- the canvas scrolls the page (a zoomed view takes every touch). In a big
+-- world a robot is drawn at least 1.5 pixels in radius, and the ids are
+-- drawn when they can be read: when at most 200 robots are in view, or
+-- the robots are at least 8 pixels across.
 --
 -- For tests and tools the page exposes @window.afrpReplay@: @frameCount()@,
 -- @frame()@, @frameData(i)@, @setFrame(i)@, @play()@, @pause()@,
--- @playing()@, @selectRobot(i)@, @selected()@, @worldToCanvas(x, y)@ and
--- @canvasToWorld(px, py)@ (in the canvas's pixels, in the view),
+-- @playing()@, @selectRobot(i)@, @selected()@, @selections()@ (how many
+-- clicks and taps have selected, a robot or none), @worldToCanvas(x,
+-- y)@ and @canvasToWorld(px, py)@ (in the canvas's pixels, in the view),
 -- @view()@ (@{zoom, cx, cy}@: the zoom, 1 for the whole world, and the
 -- world point in the middle), @setView(zoom, cx, cy)@, @maxZoom@,
 -- @drawn()@ (@{robots, labels, roughTrails}@: how many robots the last

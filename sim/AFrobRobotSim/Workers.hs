@@ -25,12 +25,14 @@
 -- a worker that looks for work takes a processor from one that has some,
 -- so it sleeps at once.) The reader, likewise, when it needs an element
 -- a worker is still evaluating and has nothing else to do, looks for it
--- to be done (for at most 'spinTime', yielding between looks) before it
--- waits on the element itself: a thread blocked on a value another
--- computes sleeps, and is woken by the operating system when the value is
--- there. On the third machine measured (@bench/README.md@, eighteenth
--- round) this made 300 robots on two cores 6% faster and the 100 packed
--- wanderers 4%, and changed nothing at 100 or 1000 robots.
+-- to be done (for about 'spinTime', yielding between looks: a yield may
+-- let another thread run a while) before it waits on the element itself:
+-- when the reader blocks on a value another thread computes, its
+-- capability's operating-system thread sleeps, and is woken through the
+-- operating system when the value is there. On the third machine
+-- measured (@bench/README.md@, eighteenth round) this made 300 robots on
+-- two cores 6% faster and the 100 packed wanderers 4%, and changed
+-- nothing at 100 or 1000 robots.
 --
 -- The pool is made the first time it is needed: one worker per capability
 -- but the caller's, pinned to it ('forkOn'), more when the program enables
@@ -106,7 +108,7 @@ thePool = unsafePerformIO (Pool <$> newMVar [])
 --   element is left that no one has taken: it evaluates the last of
 --   those (ignoring what it raises, which stays with the element), then
 --   looks again; when none is left, it looks for the element to be done,
---   for at most 'spinTime' (at once, with more capabilities than
+--   for about 'spinTime' (not at all, with more capabilities than
 --   processors), then waits for it.
 --
 -- So the reader can do work of its own between two elements (the
@@ -127,7 +129,8 @@ readInOrder caps xs
           items = listArray (0, m - 1) xs :: Array Int a
       -- elements [front, back) are those no one has taken
       claims <- newIORef (0 :: Int, m)
-      spin <- (caps <=) <$> getNumProcessors
+      -- (as a worker decides it: by the capabilities the program has)
+      spin <- (<=) <$> getNumCapabilities <*> getNumProcessors
       dones <- listArray (0, m - 1) <$> mapM (const (newIORef False)) xs
       let takeFront = atomicModifyIORef' claims $ \c@(f, b) ->
             if f < b then ((f + 1, b), Just f) else (c, Nothing)

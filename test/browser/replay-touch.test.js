@@ -7,16 +7,18 @@
 // distance and keeps the world point under their midpoint under it, also
 // as the midpoint moves; lifting one finger goes on as a drag, without a
 // jump; a one-finger drag moves the view and selects nothing; a tap
-// selects a robot, also when the finger moves a little, and one up to 16
-// CSS pixels off its disc (a mouse's click there selects nothing), also
-// right after a flick; a pinch or a drag
-// that moves the view unticks "follow"; a touchpad's pinch (the wheel with
-// the control key, in small steps) zooms about the pointer, and a wheel
+// selects a robot once (the click after it passed over), also when the
+// finger moves a little, also up to 16 CSS pixels off its disc (a mouse's
+// click there selects nothing; a pen reaches 8), and also right after a
+// flick (a later mouse click still selecting); a pinch or a drag that
+// moves the view unticks "follow"; a touchpad's pinch (the wheel with the
+// control key, in small steps) zooms about the pointer, and a wheel
 // counting lines zooms as one counting pixels; on a phone's narrow screen
-// the canvas is shown scaled to fit, a tap still selecting the robot
-// under it; and a vertical swipe on the canvas scrolls the page in the
-// whole world's view (where the view cannot move, and follow stays
-// ticked), and moves the view, not the page, when zoomed. The touches are sent as Chromium's own (CDP
+// the canvas is shown scaled to fit, a tap still selecting the robot under
+// it, and one 12 CSS pixels off its disc; and a vertical swipe on the
+// canvas scrolls the page in the whole world's view (where the view cannot
+// move, and follow stays ticked), and moves the view, not the page, when
+// zoomed. The touches are sent as Chromium's own (CDP
 // Input.dispatchTouchEvent), which the page receives as pointer events.
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
@@ -137,13 +139,27 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
       await page.waitForFunction(() => window.afrpReplay.selected() !== -1, null, { timeout: 1500 }).catch(() => {});
       return selected();
     };
+    const counted = await page.evaluate(() => window.afrpReplay.selections());
     check(await fingerTap(await offDisc(12)) === 1, 'a tap 12 pixels off SimbotB 2\'s disc selects it');
+    await page.waitForTimeout(300);
+    check(await page.evaluate(() => window.afrpReplay.selections()) === counted + 1,
+          'once: the click that follows the tap is passed over');
     check(await fingerTap(await offDisc(22)) === -1, 'a tap 22 pixels off it selects nothing');
     await page.evaluate(() => window.afrpReplay.selectRobot(-1));
     const off12 = await offDisc(12);
     await page.mouse.click(off12[0], off12[1]);
     await nextFrame();
     check(await selected() === -1, 'a mouse\'s click 12 pixels off it selects nothing');
+    // a pen reaches 8 CSS pixels: 6 off the disc selects, 12 off does not
+    const penClick = async (at) => {
+      await page.evaluate(() => window.afrpReplay.selectRobot(-1));
+      for (const type of ['mousePressed', 'mouseReleased'])
+        await cdp.send('Input.dispatchMouseEvent', { type, x: at[0], y: at[1], button: 'left', clickCount: 1, pointerType: 'pen' });
+      await page.waitForTimeout(200);
+      return selected();
+    };
+    check(await penClick(await offDisc(6)) === 1 && await penClick(await offDisc(12)) === -1,
+          'a pen\'s tap selects SimbotB 2 from 6 pixels off its disc, not from 12');
     check(await tapSelects(l, 1), 'and a tap on it selects it again');
     // a quick drag, lifted while the finger still moves (a flick), then at once a tap on a
     // robot: the tap selects it (Chromium fires no click for a tap that ends a flick)
@@ -154,6 +170,12 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     await nextFrame();
     const afterFlick = await pageOf(l, rB.x, rB.y);
     check(await fingerTap(afterFlick) === 1, 'a tap right after a flick selects the robot under it');
+    // and the mouse's next click is not passed over (the tap's click never came)
+    const rA = info.robots[0], atA = await pageOf(l, rA.x, rA.y);
+    await page.mouse.click(atA[0], atA[1]);
+    await page.waitForFunction(() => window.afrpReplay.selected() === 0, null, { timeout: 1500 }).catch(() => {});
+    check(await selected() === 0, 'a mouse click on SimbotA 1 after that selects it');
+    await page.evaluate(() => window.afrpReplay.selectRobot(1));
     await page.check('#follow');
     await page.evaluate(() => window.afrpReplay.setView(2, 0, 0));
     await drag(m, 15, 10, 4);
@@ -190,7 +212,7 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     check(narrow.shown <= narrow.page && narrow.ratio > 1.2,
           'on a 360-pixel screen the canvas is shown ' + Math.round(narrow.shown) + ' pixels wide, within the page (' + narrow.page + ')');
     check(await tapSelects(narrow, 0), 'a tap on SimbotA 1 in the scaled canvas selects it (the finger moving 3 pixels)');
-    check(await fingerTap(await offDisc(12, narrow, 0, 1)) === 0,
+    check(12 * narrow.ratio > 16 && await fingerTap(await offDisc(12, narrow, 0, 1)) === 0,
           'and a tap 12 page pixels off its disc (' + (12 * narrow.ratio).toFixed(1) + ' canvas pixels) selects it too');
     // a vertical swipe on the canvas: the page scrolls in the whole world's view (follow stays
     // ticked, the selection kept), the view moves when zoomed

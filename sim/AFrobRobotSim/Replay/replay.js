@@ -426,8 +426,10 @@
   // pointer is captured: a drag ends where it is released, on the canvas
   // or not. A click selects the robot within 3 canvas pixels of it; a
   // tap, the robot within 16 CSS pixels of the finger (8 of a pen), as a
-  // finger covers more than it points at.
-  var pointers = {}, gesture = null, dragged = false, lastKind = 'mouse';
+  // finger covers more than it points at. A finger's or a pen's tap
+  // selects when it is lifted ('tapped' then passes over the click that
+  // may follow, until the next press).
+  var pointers = {}, gesture = null, dragged = false, tapped = false, lastKind = 'mouse', selections = 0;
   // (in the order of their ids: the first two are the pinch's)
   function pointerList() {
     return Object.keys(pointers).map(Number).sort(function (a, b) { return a - b; }).map(function (k) { return pointers[k]; });
@@ -487,13 +489,12 @@
   function select(p, kind) {
     state.selected = robotAt(p[0], p[1], kind === 'touch' ? 16 * canvas.width / canvas.clientWidth
                                          : kind === 'pen' ? 8 * canvas.width / canvas.clientWidth : 3);
+    selections++;
     draw();
   }
-  // A finger's or a pen's tap selects when it is lifted, and the click
-  // that may follow is then passed over: Chromium fires no click for a tap
-  // that ends a flick (a drag lifted while moving), which would otherwise
-  // select nothing.
-  var tapped = false;
+  // (a tap selects when it is lifted, not on its click: Chromium fires no
+  // click for the tap right after a flick, a drag lifted while the finger
+  // still moved, which would otherwise select nothing)
   canvas.addEventListener('pointerup', function (e) {
     var alone = e.pointerId in pointers && Object.keys(pointers).length === 1;
     pointerGone(e);
@@ -537,6 +538,7 @@
     playing: function () { return state.playing; },
     selectRobot: function (i) { state.selected = i; draw(); },
     selected: function () { return state.selected; },
+    selections: function () { return selections; },
     worldToCanvas: toCanvas,
     canvasToWorld: toWorld,
     // the view: {zoom, cx, cy} (zoom 1 shows the whole world; (cx, cy) is
