@@ -124,14 +124,13 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     // a tap on SimbotB 2 selects it; a drag then keeps the selection and unticks follow
     await page.evaluate(() => window.afrpReplay.setView(1.5, 0, 0));
     check(await tapSelects(l, 1), 'a tap on SimbotB 2 selects it');
-    // a finger covers more than it points at: a tap up to 16 CSS pixels off SimbotB 2's disc
-    // selects it, where a mouse's click selects nothing (3 canvas pixels)
     // the page point gap page pixels to the right of robot k's disc, in the view at a zoom
     const offDisc = async (gap, lay = l, k = 1, zoom = 1.5) => {
       const radius = await page.evaluate(k => window.afrpReplay.header.robots[k].radius, k);
       const r = info.robots[k], c = await pageOf(lay, r.x, r.y);
       return [c[0] + radius * info.scale * zoom / lay.ratio + gap, c[1]];
     };
+    // a finger's tap, still, at a page point: what it selected
     const fingerTap = async (at) => {
       await page.evaluate(() => window.afrpReplay.selectRobot(-1));
       await touch('touchStart', [at]);
@@ -139,6 +138,8 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
       await page.waitForFunction(() => window.afrpReplay.selected() !== -1, null, { timeout: 1500 }).catch(() => {});
       return selected();
     };
+    // a finger covers more than it points at: a tap up to 16 CSS pixels off SimbotB 2's disc
+    // selects it, where a mouse's click selects nothing (3 canvas pixels)
     const counted = await page.evaluate(() => window.afrpReplay.selections());
     check(await fingerTap(await offDisc(12)) === 1, 'a tap 12 pixels off SimbotB 2\'s disc selects it');
     await page.waitForTimeout(300);
@@ -162,7 +163,7 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
           'a pen\'s tap selects SimbotB 2 from 6 pixels off its disc, not from 12');
     check(await tapSelects(l, 1), 'and a tap on it selects it again');
     // a quick drag, lifted while the finger still moves (a flick), then at once a tap on a
-    // robot: the tap selects it (Chromium fires no click for a tap that ends a flick)
+    // robot: the tap selects it (Chromium fires no click for the tap right after a flick)
     await page.evaluate(() => { window.afrpReplay.selectRobot(-1); window.afrpReplay.setView(2, 0, 0); });
     await touch('touchStart', [m]);
     for (let k = 1; k <= 5; k++) await touch('touchMove', [[m[0] + 12 * k, m[1] + 4 * k]]);
