@@ -15,8 +15,9 @@
 # executables are (-A8m -qb0: an 8 MB allocation area, and on two cores
 # the parallel collector sharing the minor collections' work too); two
 # cores with +RTS -N2. (Until the eighteenth round of bench/README.md two
-# cores ran with -N2 -A8m -qg, a sequential collector, which was faster
-# before -qb0 and is slower since.)
+# cores ran with -N2 -A8m -qg, a sequential collector, chosen when the
+# parallel one made two cores slower than one; with -qb0 the parallel one
+# is the faster, as that round measured.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cabal build -v0 --enable-benchmarks afrp-bench
