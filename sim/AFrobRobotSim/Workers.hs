@@ -129,8 +129,6 @@ readInOrder caps xs
           items = listArray (0, m - 1) xs :: Array Int a
       -- elements [front, back) are those no one has taken
       claims <- newIORef (0 :: Int, m)
-      -- (as a worker decides it: by the capabilities the program has)
-      spin <- (<=) <$> getNumCapabilities <*> getNumProcessors
       dones <- listArray (0, m - 1) <$> mapM (const (newIORef False)) xs
       let takeFront = atomicModifyIORef' claims $ \c@(f, b) ->
             if f < b then ((f + 1, b), Just f) else (c, Nothing)
@@ -155,16 +153,8 @@ readInOrder caps xs
               else if k > f then pure ()          -- (read out of order: just force it)
               else takeBack >>= \t -> case t of   -- a worker's, unfinished
                 Just j  -> evaluateKeeping (items ! j) >> before k
-                Nothing -> spinFor k              -- nothing left: look, then wait for it
-          -- (looking, for a while, before sleeping on the element: the
-          -- worker marks it done once it is evaluated)
-          spinFor k
-            | not spin = pure ()
-            | otherwise = getMonotonicTimeNSec >>= \t0 -> let
-                go = readIORef (dones ! k) >>= \done -> if done then pure () else do
-                  t <- getMonotonicTimeNSec
-                  if t < t0 + spinTime then yield >> go else pure ()
-                in go
+                Nothing -> void (lookAWhile (readIORef (dones ! k)))
+                                                  -- nothing left: look, then wait for it
           view k = unsafePerformIO (before k) `seq` (items ! k)
       queues <- workersFor caps
       mapM_ (`hand` Just work) queues
@@ -203,33 +193,23 @@ workersFor caps = do
     pure (used ++ drop (caps - 1) ws, [ q | Worker _ q <- used ])
 
 -- Run the orders handed over, in order, until told to stop; out of work,
--- look for more for 'spinTime' (unless there are more capabilities than
--- processors), then sleep until woken.
+-- look for more a while ('lookAWhile'), then sleep until woken.
 worker :: Mailbox -> IO ()
 worker q@(Mailbox box wake) = do
-  caps <- getNumCapabilities
-  cpus <- getNumProcessors
-  t0 <- getMonotonicTimeNSec
-  look (if caps <= cpus then t0 + spinTime else t0)
+  ready <- lookAWhile (hasOrders <$> readIORef box)
+  if ready then takeOrders >>= run else do
+    sleep <- atomicModifyIORef' box $ \b -> case b of
+      Orders [] -> (Asleep, True)
+      _         -> (b, False)
+    -- (not asleep: orders came meanwhile)
+    if sleep then takeMVar wake >>= \o -> run [o] else takeOrders >>= run
   where
-    -- (for work, until the deadline)
-    look deadline = do
-      b <- readIORef box
-      case b of
-        Orders (_ : _) -> do
-          os <- atomicModifyIORef' box $ \b' -> case b' of
-            Orders os -> (Orders [], reverse os)
-            Asleep    -> (b', [])          -- (only the worker sleeps)
-          run os
-        _ -> do
-          t <- getMonotonicTimeNSec
-          if t < deadline
-            then yield >> look deadline
-            else do
-              sleep <- atomicModifyIORef' box $ \b' -> case b' of
-                Orders [] -> (Asleep, True)
-                _         -> (b', False)
-              if sleep then takeMVar wake >>= \o -> run [o] else look deadline
+    hasOrders b = case b of
+      Orders (_ : _) -> True
+      _              -> False
+    takeOrders = atomicModifyIORef' box $ \b -> case b of
+      Orders os -> (Orders [], reverse os)
+      Asleep    -> (b, [])                 -- (only the worker sleeps)
     run [] = worker q
     run (Nothing : _) = pure ()
     -- (the work keeps what its values raise; anything else is dropped)
@@ -243,6 +223,22 @@ worker q@(Mailbox box wake) = do
 -- worker is finishing (a chunk of robots takes 10-70 microseconds).
 spinTime :: Word64
 spinTime = 200000
+
+-- Look at a condition until it holds, yielding to the runtime between
+-- looks, for about 'spinTime' (a yield may let another thread run a
+-- while); not at all (one look) when the program has more capabilities
+-- than the machine has processors, where looking takes a processor from
+-- a thread that has work. Whether it held.
+lookAWhile :: IO Bool -> IO Bool
+lookAWhile ready = do
+  caps <- getNumCapabilities
+  cpus <- getNumProcessors
+  t0 <- getMonotonicTimeNSec
+  let deadline = if caps <= cpus then t0 + spinTime else t0
+      go = ready >>= \r -> if r then pure True else do
+        t <- getMonotonicTimeNSec
+        if t < deadline then yield >> go else pure False
+  go
 
 -- | The number of capabilities now, read each time (a program may change
 -- it while it runs): the argument, any value, makes it a function, so

@@ -427,9 +427,10 @@
   // or not. A click selects the robot within 3 canvas pixels of it; a
   // tap, the robot within 16 CSS pixels of the finger (8 of a pen), as a
   // finger covers more than it points at. A finger's or a pen's tap
-  // selects when it is lifted ('tapped' then passes over the click that
-  // may follow, until the next press).
-  var pointers = {}, gesture = null, dragged = false, tapped = false, lastKind = 'mouse', selections = 0;
+  // selects when it is lifted, and the click that may follow a finger's
+  // or a pen's press ('lastKind', the kind of the last press) is passed
+  // over.
+  var pointers = {}, gesture = null, dragged = false, lastKind = 'mouse', selections = 0;
   // (in the order of their ids: the first two are the pinch's)
   function pointerList() {
     return Object.keys(pointers).map(Number).sort(function (a, b) { return a - b; }).map(function (k) { return pointers[k]; });
@@ -455,7 +456,7 @@
   }
   canvas.addEventListener('pointerdown', function (e) {
     if (e.pointerType === 'mouse' && e.button !== 0) return;
-    if (Object.keys(pointers).length === 0) { dragged = false; tapped = false; }
+    if (Object.keys(pointers).length === 0) dragged = false;
     lastKind = e.pointerType;
     pointers[e.pointerId] = { at: eventPixel(e), client: [e.clientX, e.clientY], slop: e.pointerType === 'mouse' ? 4 : 10 };
     if (canvas.setPointerCapture) { try { canvas.setPointerCapture(e.pointerId); } catch (err) { /* gone already */ } }
@@ -498,13 +499,13 @@
   canvas.addEventListener('pointerup', function (e) {
     var alone = e.pointerId in pointers && Object.keys(pointers).length === 1;
     pointerGone(e);
-    if (e.pointerType !== 'mouse' && alone && !dragged) { tapped = true; select(eventPixel(e), e.pointerType); }
+    if (e.pointerType !== 'mouse' && alone && !dragged) select(eventPixel(e), e.pointerType);
   });
   canvas.addEventListener('pointercancel', pointerGone);
   canvas.addEventListener('lostpointercapture', pointerGone);
   canvas.addEventListener('click', function (e) {
-    if (dragged || tapped) { dragged = false; tapped = false; return; }
-    select(eventPixel(e), e.pointerType || lastKind);
+    if (dragged || lastKind !== 'mouse') { dragged = false; return; }
+    select(eventPixel(e), 'mouse');
   });
   function zoomMiddle(factor) { zoomAt(canvas.width / 2, canvas.height / 2, factor); draw(); }
   function fit() { setView(1, b.x, b.y); draw(); }
