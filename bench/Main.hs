@@ -31,6 +31,12 @@
 --   controllers of 'benchRunWith'; @bench@ is @--steady@'s own): their
 --   differences split a robot-step's cost (bench/README.md, "Fifteenth
 --   round");
+-- * @afrp-bench --side-by-side ROBOTS STEPS@ times, as @--steady@ does,
+--   one run of @--steady@'s world on each capability at once, each
+--   stepped alone ('AFrobRobotSim.simParallel' 'False'), and prints their
+--   robot-steps per second together: what the program's capabilities
+--   give work that shares nothing but the runtime (bench/README.md,
+--   "Nineteenth round");
 -- * @afrp-bench --render FRAMES@ renders that many 600x600 PPM frames of
 --   the 10-robot world and prints the frames per second;
 -- * @afrp-bench --pairs R@ times every network and its baseline R times,
@@ -41,7 +47,9 @@
 --   and prints the sum of the outputs.
 module Main (main) where
 
+import           Control.Concurrent (forkOn, newEmptyMVar, putMVar, takeMVar)
 import           Control.Exception  (evaluate)
+import           GHC.Conc           (getNumCapabilities)
 import           Criterion.Main
 import           Criterion.Types    (Config (..))
 import           Data.List          (foldl', isPrefixOf, sort)
@@ -86,6 +94,7 @@ main = do
     ["--swarm", n, cov, secs] -> swarmReport (read n) (read cov) (read secs)
     ["--packed", n, steps] -> packedReport (read n) (read steps)
     ["--steady", n, steps] -> steadyReport "robots" (read n) (benchRun (read n)) (read steps)
+    ["--side-by-side", n, steps] -> sideBySideReport (read n) (read steps)
     ["--steady-with", c, n, steps] -> withController c $ \ctl ->
       steadyReport "robots" (read n) (benchRunWith ctl (read n)) (read steps)
     ["--steady-packed", n, steps] -> steadyReport "packed wanderers" (packedRobots (read n)) (packedRun (read n)) (read steps)
@@ -160,6 +169,27 @@ steadyReport what n run steps = do
       rs   = fromIntegral (n * steps) :: Double
   printf "%5d %s x %6d steps: %10.0f robot-steps/s (wall), %8.2fx real time (wall %.3f s; CPU %.3f s: %.0f robot-steps per CPU second, %.2f us each; checksum %.6g)\n"
     n what steps (rs / wall) (simT / wall) wall cpu (rs / cpu) (cpu / rs * 1e6) s
+
+-- | Time the steps after their first two of one run of 'benchRunAlone'
+-- on each capability, all at once (each run's thread on its own
+-- capability), by the wall clock from the start of the first to the end
+-- of the last.
+sideBySideReport :: Int -> Int -> IO ()
+sideBySideReport n steps = do
+  caps <- getNumCapabilities
+  let runs = [ splitAt 2 (benchRunAlone n) | _ <- [1 .. caps] ]
+  _  <- evaluate (sum [ snapshotsChecksum warm | (warm, _) <- runs ])
+  dones <- mapM (const newEmptyMVar) runs
+  w0 <- getMonotonicTime
+  sequence_ [ forkOn c (evaluate (snapshotsChecksum (take steps rest)) >>= putMVar done)
+            | (c, (_, rest), done) <- zip3 [0 ..] runs dones ]
+  sums <- mapM takeMVar dones
+  w1 <- getMonotonicTime
+  let wall = w1 - w0
+      simT = fromIntegral steps * simDtBench
+      rs   = fromIntegral (caps * n * steps) :: Double
+  printf "%d runs of %5d robots x %6d steps side by side: %10.0f robot-steps/s (wall) together, %8.2fx real time each (wall %.3f s; checksum %.6g)\n"
+    caps n steps (rs / wall) (simT / wall) wall (sum sums)
 
 -- | Time @n@ wanderers of 'packedWorld' for @steps@ steps.
 packedReport :: Int -> Int -> IO ()

@@ -27,6 +27,7 @@ module SimBench
   , wanderer
   , runPacked
   , benchRun
+  , benchRunAlone
   , packedRun
   , snapshotsChecksum
   ) where
@@ -171,6 +172,12 @@ driveByRanges slow sbi =
 -- controller's own (its derivative and its network).
 benchRunWith :: SimbotController -> Int -> [WorldState]
 benchRunWith c n = simulateWith (benchConfig n) (sharedWorld n) c c
+
+-- | 'benchRun' stepped alone ('simParallel' 'False'): on the thread that
+-- reads it, whatever the capabilities (@afrp-bench --side-by-side@ runs
+-- one on each).
+benchRunAlone :: Int -> [WorldState]
+benchRunAlone n = simulateWith (benchConfig n) { simParallel = False } (sharedWorld n) benchController benchController
 
 -- | Run @n@ robots for @steps@ steps and return a checksum of every
 -- robot's position at every step (so that every step is computed). The

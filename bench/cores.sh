@@ -15,25 +15,15 @@ runs=${1:-3}
 case "$runs" in
   '' | *[!0-9]* | 0) echo "bench/cores.sh: RUNS must be a positive whole number, got '$runs'" >&2; exit 2 ;;
 esac
-# the processors this program may run on (a cpuset or taskset may leave
-# some out), from a list such as 0-3,6
-allowed=$(grep '^Cpus_allowed_list:' /proc/self/status | cut -f2)
-cpus=()
-IFS=, read -ra ranges <<<"$allowed"
-for r in "${ranges[@]}"; do
-  if [[ $r == *-* ]]; then
-    for ((c = ${r%-*}; c <= ${r#*-}; c++)); do cpus+=("$c"); done
-  else
-    cpus+=("$r")
-  fi
-done
+source bench/cores/lib.sh
+allowed_cpus
 if [ "${#cpus[@]}" -lt 2 ]; then
   echo "bench/cores.sh: one processor to run on (${allowed}): nothing to measure" >&2
   exit 0
 fi
 build=$(mktemp -d /tmp/afrp-cores.XXXXXX)
 trap 'rm -rf "$build"' EXIT
-"${CC:-cc}" -O2 -Wall -Wextra -pthread bench/cores/pingpong.c -o "$build/pingpong"
+build_pingpong "$build"
 first=${cpus[0]}
 status=0
 for other in "${cpus[@]:1}"; do

@@ -8,7 +8,9 @@ an SVG, with no library beyond Python's own:
 One line per number of cores: microseconds of wall-clock time per
 robot-step (1e6 / robot-steps per second), the benchmark world only; the
 grey band is "within 2x" of the 10-robot figure on one core (the flatness
-the issue asks for). A two-core point drawn hollow used no more than 1.2
+the issue asks for). The legend gives the range of the one-way latency
+between the two processors (the file's latency_ns, when it has it) over
+the two-core rows. A two-core point drawn hollow used no more than 1.2
 cores' worth of CPU time (CPU time over wall-clock time): other work held
 the second core while it ran (or, below 16 robots, the step is not split)."""
 import csv
@@ -78,9 +80,12 @@ for k, (cores, s) in enumerate(sorted(series.items())):
                    % (px(n), py(u), 4 if alone else 3, 'white' if alone else c, c))
         out.append('<text x="%.1f" y="%.1f" fill="%s" text-anchor="middle">%.2f</text>'
                    % (px(n), py(u) - 8, c, u))
+    lats = sorted(int(r['latency_ns']) for r in rows
+                  if int(r['cores']) == cores and r.get('latency_ns', '-').isdigit())
     out.append('<text x="%d" y="%d" fill="%s">%s</text>'
-               % (W - R - 150, T + 16 + 16 * k, c,
-                  '%d core%s' % (cores, '' if cores == 1 else 's')))
+               % (W - R - 190, T + 16 + 16 * k, c,
+                  '%d core%s' % (cores, '' if cores == 1 else 's')
+                  + (' (%d-%d ns apart)' % (lats[0], lats[-1]) if cores > 1 and lats else '')))
 if any(alone for s in series.values() for _, _, alone in s):
     out.append('<text x="%d" y="%d" fill="#777">hollow: two cores asked for, one used</text>'
                % (L + 6, T + 16))

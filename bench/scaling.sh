@@ -7,7 +7,11 @@
 # row per run: what, robots, world side, cores, steps, robot-steps per
 # second by the wall clock, x real time, microseconds of CPU per
 # robot-step, the 1-minute load average before the run: the machine is
-# shared) and draws bench/scaling.svg from it (bench/plot-scaling.py).
+# shared, and the one-way latency in nanoseconds between the first two
+# processors just before it, as bench/cores.sh measures it, or - with
+# one processor: on a virtual machine, where the host puts them changes
+# from minute to minute, and two cores give much less when they are far
+# apart) and draws bench/scaling.svg from it (bench/plot-scaling.py).
 #   bench/scaling.sh [R]        (R runs of each, the fastest kept: the
 #                                machine is shared; default 3, about three
 #                                minutes on the 2-core machine)
@@ -22,15 +26,24 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cabal build -v0 --enable-benchmarks afrp-bench
 bin=$(find dist-newstyle -type f -perm -u+x -name afrp-bench | head -1)
+source bench/cores/lib.sh
+allowed_cpus
+build=$(mktemp -d /tmp/afrp-scaling.XXXXXX)
+trap 'rm -rf "$build"' EXIT
+build_pingpong "$build"
+latency() {
+  if [ "${#cpus[@]}" -ge 2 ]; then latency_ns "$build/pingpong" "${cpus[0]}" "${cpus[1]}"; else echo -; fi
+}
 out=bench/scaling.tsv
 repeats=${1:-3}
-printf 'what\trobots\tside_m\tcores\tsteps\trobot_steps_per_s\tx_real_time\tcpu_us_per_robot_step\tload\n' > "$out"
+printf 'what\trobots\tside_m\tcores\tsteps\trobot_steps_per_s\tx_real_time\tcpu_us_per_robot_step\tload\tlatency_ns\n' > "$out"
 row() {  # what robots side cores steps -- afrp-bench arguments
   local what=$1 robots=$2 side=$3 cores=$4 steps=$5; shift 6
   local rts=(-N1)
   if [ "$cores" = 2 ]; then rts=(-N2); fi
-  local line load best=0 try r
+  local line load lat best=0 try r
   load=$(cut -d' ' -f1 /proc/loadavg)
+  lat=$(latency)
   for ((r = 0; r < repeats; r++)); do
     try=$("$bin" "$@" +RTS "${rts[@]}" -RTS)
     echo "$try" >&2
@@ -43,7 +56,7 @@ row() {  # what robots side cores steps -- afrp-bench arguments
   rate=$(sed -E 's/.*: +([0-9]+) robot-steps\/s \(wall\).*/\1/' <<<"$line")
   x=$(sed -E 's/.*, +([0-9.]+)x real time.*/\1/' <<<"$line")
   us=$(sed -E 's/.*, ([0-9.]+) us each.*/\1/' <<<"$line")
-  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$what" "$robots" "$side" "$cores" "$steps" "$rate" "$x" "$us" "$load" >> "$out"
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$what" "$robots" "$side" "$cores" "$steps" "$rate" "$x" "$us" "$load" "$lat" >> "$out"
 }
 # one core and two cores one after the other for each size, so that both
 # see about the same load

@@ -44,7 +44,11 @@
 -- of 64 robots when the move of its first robot needs it (so that few
 -- robots' outputs and plans wait for their move, and the stack stays
 -- shallow: at 10,000 robots the collector copied 42% less than when every
--- robot's step was computed before the first move).
+-- robot's step was computed before the first move). A run with
+-- 'simParallel' 'False' is stepped so whatever the capabilities: several
+-- such runs side by side, one a capability, each keep to one core
+-- (@afrp-bench --side-by-side@ times two such runs against one run in
+-- parallel: @bench/README.md@, its nineteenth round).
 --
 -- A larger allocation area than the runtime's 1 MB matters: each minor
 -- collection copies the robots' live state, and on several cores every
@@ -110,6 +114,15 @@ data SimConfig = SimConfig
     -- ^ a referee: after each step, given the time and the balls' new
     -- positions, 'Just' new positions puts the balls there, at rest (for
     -- example the centre mark after a goal); 'Nothing' leaves them be
+  , simParallel       :: !Bool
+    -- ^ whether a step may use the program's other capabilities (see
+    -- "Every core" above): 'True' (the default) computes it in parallel
+    -- when the program runs on several; 'False' computes it on the thread
+    -- that reads the snapshots alone, whatever the capabilities. The
+    -- snapshots are the same either way, bit for bit. 'False' is for a
+    -- program that runs several simulations side by side, one a
+    -- capability (a sweep's runs in one program, say): each then keeps
+    -- to its own core instead of sharing the workers with the others.
   }
 
 -- | The longest time step 'simulate' takes: 10^6 s (about 11 days). The
@@ -126,9 +139,9 @@ maxOdometryNoise :: Double
 maxOdometryNoise = 1
 
 -- | A time step of 0.01 s, no keys, exact odometry, the notes' 10 m world,
--- no referee.
+-- no referee, the step in parallel on several capabilities.
 defaultSimConfig :: SimConfig
-defaultSimConfig = SimConfig 0.01 [] 0 0 notesBounds (\_ _ -> Nothing)
+defaultSimConfig = SimConfig 0.01 [] 0 0 notesBounds (\_ _ -> Nothing) True
 
 -- | The state of the world at one instant.
 data WorldState = WorldState
@@ -243,7 +256,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         -- messages and the next state, never the robots' positions now):
         -- its output and continued controller, with each robot and the
         -- plan of its move.
-        (started, outputs, agents', plans) = stepEvery (senseReady ctx `seq` odoReady) (enAgents en) (enRobots en)
+        (started, outputs, agents', plans) = stepEvery (simParallel cfg) (senseReady ctx `seq` odoReady) (enAgents en) (enRobots en)
           (\i a r -> case senseRobotApart ctx i (odometry i r) key of
                        (input, apart) -> (stepAgent t a input, apart))
           (planMoveApart dt arena)
@@ -320,7 +333,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 -- plan of its move, in template order, given a robot's step by its
 -- number, agent and robot (with a lower bound on its distance to the
 -- other robots) and the plan of a robot's move under a command, given
--- that bound; and first @()@, which starts the work.
+-- that bound; and first @()@, which starts the work. Unless the first
+-- argument is 'True' ('simParallel'), the step is computed as on one
+-- capability, whatever their number.
 -- On one capability the start does nothing, and the robots are cut into
 -- chunks of 'seqChunk', each computed when the first of its elements is
 -- needed (the reader of the lists, which moves the robots in order, moves
@@ -333,11 +348,11 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 -- weak head normal form, has computed every step in it. So the reader,
 -- which moves the robots in order, moves those of a chunk while the
 -- workers compute later chunks.
-stepEvery :: () -> [Agent] -> [Robot]
+stepEvery :: Bool -> () -> [Agent] -> [Robot]
           -> (Int -> Agent -> Robot -> ((SimbotOutput, Agent), Double))
           -> (Double -> Robot -> DriveCommand -> Plan)
           -> ((), [SimbotOutput], [Agent], [(Robot, Plan)])
-stepEvery ready agents robots stepOne planOne
+stepEvery parallel ready agents robots stepOne planOne
   | caps <= 1 && not (null (drop seqChunk robots)) = lists () (firstChunk () inOrder)
   | caps <= 1 || n < 2 * minChunk = lists () (stepRun 0 maxBound agents robots [] [] [])
   | otherwise = lists started (firstChunk started shared)
@@ -348,7 +363,8 @@ stepEvery ready agents robots stepOne planOne
     -- the workers given the chunks (once @ready@)
     started = ready `pseq` shared `pseq` ()
     n    = length robots
-    caps = capabilitiesNow agents   -- (not n: one capability needs no count)
+    caps | parallel  = capabilitiesNow agents   -- (not n: one capability needs no count)
+         | otherwise = 1
     size = max minChunk ((n + 16 * caps - 1) `div` (16 * caps))
     -- the chunks as the workers share them with the reader of the lists
     shared = readInOrder caps (cut size 0 agents robots (drop 1 shared))

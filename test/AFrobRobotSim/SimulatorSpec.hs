@@ -6,15 +6,19 @@
 -- | The simulation engine, checked against hand-computed physics.
 module AFrobRobotSim.SimulatorSpec (spec) where
 
+import           Control.Concurrent (myThreadId)
 import           Control.Exception (AsyncException (..), ErrorCall (..), bracket, evaluate, finally, throw, try)
 import qualified Data.ByteString   as BS
 import qualified Data.ByteString.Char8 as BC
 import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
 import           GHC.IO.Handle     (hDuplicate, hDuplicateTo)
+import           Data.IORef        (atomicModifyIORef', newIORef, readIORef)
 import           Data.List         (isInfixOf, isPrefixOf, sort)
+import qualified Data.Set          as Set
 import           System.Directory  (createDirectory, listDirectory)
 import           System.FilePath   ((</>))
 import           System.IO         (IOMode (..), hClose, hFlush, stdout, withFile)
+import           System.IO.Unsafe  (unsafePerformIO)
 import           Test.Hspec        hiding (after)
 
 import           AFrob             hiding (forAll)
@@ -319,6 +323,29 @@ spec = do
         map fst (fst two) `shouldBe` map fst (fst one)
         [ f | ((f, a), (_, b)) <- zip (fst one) (fst two), a /= b ] `shouldBe` []
         snd two `shouldBe` snd one
+
+    -- the threads that computed a run's controller steps, on two
+    -- capabilities, with the step in parallel or not
+    let threadsOf c = withCaps 2 $ do
+          seen <- newIORef Set.empty
+          let noting rps = proc sbi -> do
+                o <- sensing rps -< sbi
+                returnA -< unsafePerformIO (myThreadId >>= \t -> atomicModifyIORef' seen (\s -> (Set.insert t s, ()))) `seq` o
+          r <- evaluate (length (show (take 60 (simulateWith c many noting noting))))
+          r `seq` readIORef seen
+    it "steps a run on the thread that reads it alone with simParallel False, whatever the capabilities" $ do
+      me <- myThreadId
+      alone <- threadsOf big { simParallel = False }
+      alone `shouldBe` Set.singleton me
+      -- (the same run in parallel uses the workers: what this test would
+      -- see if the setting were ignored)
+      shared <- threadsOf big
+      Set.size shared `shouldSatisfy` (> 1)
+    it "gives the same snapshots with simParallel False as in parallel" $ do
+      let run c = withCaps 2 (let r = show (take 250 (simulateWith c many sensing sensing)) in evaluate (length r) >> pure r)
+      alone <- run big { simParallel = False }
+      shared <- run big
+      alone `shouldBe` shared
 
   describe "bad input" $ do
     it "rejects a robot outside the walls, naming it" $

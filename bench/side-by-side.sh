@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# What two cores give the simulator, against what they give work that
+# shares nothing, in alternating rounds (the machine is shared, and on a
+# virtual machine where the host puts its two processors changes from
+# minute to minute). Each round measures, one after the other:
+#   latency   the one-way latency of a cache line between the two
+#             processors (bench/cores/pingpong.c, as bench/cores.sh);
+#   one       afrp-bench --steady N S +RTS -N1: one run on one core;
+#   side      afrp-bench --side-by-side N S +RTS -N2: two runs at once in
+#             one program, each stepped alone on its own capability
+#             (what the program's runtime allows, its collector shared);
+#   parallel  afrp-bench --steady N S +RTS -N2: one run, its step in
+#             parallel (what the issue's "two cores" figure measures);
+#   programs  two programs of afrp-bench --steady N S +RTS -N1 at once
+#             (what the machine allows);
+# and prints each as robot-steps per second by the wall clock, with its
+# ratio to 'one', then the medians of the ratios over the rounds with the
+# latency below 100 ns and over those above.
+#   bench/side-by-side.sh [ROUNDS [ROBOTS [STEPS]]]   (default 8 1000 400)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rounds=${1:-8}
+robots=${2:-1000}
+steps=${3:-400}
+for v in "$rounds" "$robots" "$steps"; do
+  case "$v" in
+    '' | *[!0-9]* | 0) echo "bench/side-by-side.sh: ROUNDS, ROBOTS and STEPS must be positive whole numbers, got '$v'" >&2; exit 2 ;;
+  esac
+done
+source bench/cores/lib.sh
+allowed_cpus
+if [ "${#cpus[@]}" -lt 2 ]; then
+  echo "bench/side-by-side.sh: one processor to run on (${allowed}): nothing to compare" >&2
+  exit 0
+fi
+first=${cpus[0]}
+second=${cpus[1]}
+cabal build -v0 --enable-benchmarks afrp-bench
+bin=$(find dist-newstyle -type f -perm -u+x -name afrp-bench | head -1)
+build=$(mktemp -d /tmp/afrp-side.XXXXXX)
+trap 'rm -rf "$build"' EXIT
+build_pingpong "$build"
+wall() { sed -E 's/^.*: +([0-9]+) robot-steps\/s \(wall\).*/\1/'; }
+out=$build/rounds
+for ((r = 1; r <= rounds; r++)); do
+  lat=$(latency_ns "$build/pingpong" "$first" "$second")
+  one=$("$bin" --steady "$robots" "$steps" +RTS -N1 -RTS | wall)
+  side=$("$bin" --side-by-side "$robots" "$steps" +RTS -N2 -RTS | wall)
+  par=$("$bin" --steady "$robots" "$steps" +RTS -N2 -RTS | wall)
+  "$bin" --steady "$robots" "$steps" +RTS -N1 -RTS > "$build/a" &
+  "$bin" --steady "$robots" "$steps" +RTS -N1 -RTS > "$build/b"
+  wait
+  progs=$(( $(wall < "$build/a") + $(wall < "$build/b") ))
+  echo "$lat $one $side $par $progs" >> "$out"
+  awk -v l="$lat" -v o="$one" -v s="$side" -v p="$par" -v q="$progs" 'BEGIN {
+    printf "latency %4d ns  one %8d  side %8d (%.2f)  parallel %8d (%.2f)  programs %8d (%.2f)\n",
+           l, o, s, s / o, p, p / o, q, q / o }'
+done
+python3 - "$out" "$robots" <<'EOF'
+import statistics, sys
+rows = [list(map(int, l.split())) for l in open(sys.argv[1])]
+for name, keep in (("below 100 ns", lambda l: l < 100), ("100 ns and above", lambda l: l >= 100)):
+    rs = [r for r in rows if keep(r[0])]
+    if not rs:
+        continue
+    med = lambda k: statistics.median(r[k] / r[1] for r in rs)
+    print("%s robots, %d rounds with the latency %s: medians side %.2f, parallel %.2f, programs %.2f"
+          % (sys.argv[2], len(rs), name, med(2), med(3), med(4)))
+EOF
