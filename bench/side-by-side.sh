@@ -14,8 +14,9 @@
 #   programs  two programs of afrp-bench --steady N S +RTS -N1 at once
 #             (what the machine allows);
 # and prints each as robot-steps per second by the wall clock, with its
-# ratio to 'one', then the medians of the ratios over the rounds with the
-# latency below 100 ns and over those above.
+# ratio to 'one', then the medians of the ratios, and of parallel over
+# programs (how much of what the machine gives the step takes), over the
+# rounds in each band of latency (below 70 ns, 70-149, 150 and above).
 #   bench/side-by-side.sh [ROUNDS [ROBOTS [STEPS]]]   (default 8 1000 400)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,11 +60,15 @@ done
 python3 - "$out" "$robots" <<'EOF'
 import statistics, sys
 rows = [list(map(int, l.split())) for l in open(sys.argv[1])]
-for name, keep in (("below 100 ns", lambda l: l < 100), ("100 ns and above", lambda l: l >= 100)):
-    rs = [r for r in rows if keep(r[0])]
+bands = (("below 70 ns", 0, 70), ("70-149 ns", 70, 150), ("150 ns and above", 150, 10 ** 9))
+for name, lo, hi in bands:
+    rs = [r for r in rows if lo <= r[0] < hi]
     if not rs:
         continue
-    med = lambda k: statistics.median(r[k] / r[1] for r in rs)
-    print("%s robots, %d rounds with the latency %s: medians side %.2f, parallel %.2f, programs %.2f"
-          % (sys.argv[2], len(rs), name, med(2), med(3), med(4)))
+    med = lambda f: statistics.median(f(r) for r in rs)
+    print("%s robots, %d round%s with the latency %s: medians side %.2f, parallel %.2f, programs %.2f;"
+          " parallel / programs %.2f"
+          % (sys.argv[2], len(rs), "" if len(rs) == 1 else "s", name,
+             med(lambda r: r[2] / r[1]), med(lambda r: r[3] / r[1]), med(lambda r: r[4] / r[1]),
+             med(lambda r: r[3] / r[4])))
 EOF
