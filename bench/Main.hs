@@ -47,9 +47,8 @@
 --   and prints the sum of the outputs.
 module Main (main) where
 
-import           Control.Concurrent (forkOn, newEmptyMVar, putMVar, takeMVar)
+import           Control.Concurrent (forkOn, getNumCapabilities, newEmptyMVar, putMVar, takeMVar)
 import           Control.Exception  (evaluate)
-import           GHC.Conc           (getNumCapabilities)
 import           Criterion.Main
 import           Criterion.Types    (Config (..))
 import           Data.List          (foldl', isPrefixOf, sort)
@@ -156,8 +155,7 @@ simReport n steps = do
 -- | Time the steps of a run after its first two (see the module header).
 steadyReport :: String -> Int -> [WorldState] -> Int -> IO ()
 steadyReport what n run steps = do
-  let (warm, rest) = splitAt 2 run
-  _  <- evaluate (snapshotsChecksum warm)
+  rest <- afterStart run
   w0 <- getMonotonicTime
   c0 <- getCPUTime
   s  <- evaluate (snapshotsChecksum (take steps rest))
@@ -170,26 +168,32 @@ steadyReport what n run steps = do
   printf "%5d %s x %6d steps: %10.0f robot-steps/s (wall), %8.2fx real time (wall %.3f s; CPU %.3f s: %.0f robot-steps per CPU second, %.2f us each; checksum %.6g)\n"
     n what steps (rs / wall) (simT / wall) wall cpu (rs / cpu) (cpu / rs * 1e6) s
 
--- | Time the steps after their first two of one run of 'benchRunAlone'
--- on each capability, all at once (each run's thread on its own
--- capability), by the wall clock from the start of the first to the end
--- of the last.
+-- | A run's snapshots after its first two, which are computed first
+-- (the world's validation, the arena's grids and the first indexes are
+-- built then).
+afterStart :: [WorldState] -> IO [WorldState]
+afterStart run = let (warm, rest) = splitAt 2 run
+                 in evaluate (snapshotsChecksum warm) >> pure rest
+
+-- | Time, as 'steadyReport' does by the wall clock, one run of
+-- 'benchRunAlone' on each capability, all at once (each run's thread
+-- pinned to its capability), from the start of the first to the end of
+-- the last.
 sideBySideReport :: Int -> Int -> IO ()
 sideBySideReport n steps = do
   caps <- getNumCapabilities
-  let runs = [ splitAt 2 (benchRunAlone n) | _ <- [1 .. caps] ]
-  _  <- evaluate (sum [ snapshotsChecksum warm | (warm, _) <- runs ])
+  runs <- mapM (\_ -> afterStart (benchRunAlone n)) [1 .. caps]   -- (a run each: no full laziness here)
   dones <- mapM (const newEmptyMVar) runs
   w0 <- getMonotonicTime
-  sequence_ [ forkOn c (evaluate (snapshotsChecksum (take steps rest)) >>= putMVar done)
-            | (c, (_, rest), done) <- zip3 [0 ..] runs dones ]
+  sequence_ [ forkOn c (evaluate (snapshotsChecksum (take steps run)) >>= putMVar done)
+            | (c, run, done) <- zip3 [0 ..] runs dones ]
   sums <- mapM takeMVar dones
   w1 <- getMonotonicTime
   let wall = w1 - w0
       simT = fromIntegral steps * simDtBench
       rs   = fromIntegral (caps * n * steps) :: Double
-  printf "%d runs of %5d robots x %6d steps side by side: %10.0f robot-steps/s (wall) together, %8.2fx real time each (wall %.3f s; checksum %.6g)\n"
-    caps n steps (rs / wall) (simT / wall) wall (sum sums)
+  printf "%d run%s of %5d robots x %6d steps side by side: %10.0f robot-steps/s (wall) together, %8.2fx real time each (wall %.3f s; checksum %.6g)\n"
+    caps (if caps == 1 then "" else "s") n steps (rs / wall) (simT / wall) wall (sum sums)
 
 -- | Time @n@ wanderers of 'packedWorld' for @steps@ steps.
 packedReport :: Int -> Int -> IO ()

@@ -171,13 +171,18 @@ driveByRanges slow sbi =
 -- cost into the engine's, the range finders', the tracker's and the
 -- controller's own (its derivative and its network).
 benchRunWith :: SimbotController -> Int -> [WorldState]
-benchRunWith c n = simulateWith (benchConfig n) (sharedWorld n) c c
+benchRunWith c n = benchRunIn (benchConfig n) c n
 
 -- | 'benchRun' stepped alone ('simParallel' 'False'): on the thread that
 -- reads it, whatever the capabilities (@afrp-bench --side-by-side@ runs
 -- one on each).
 benchRunAlone :: Int -> [WorldState]
-benchRunAlone n = simulateWith (benchConfig n) { simParallel = False } (sharedWorld n) benchController benchController
+benchRunAlone n = benchRunIn (benchConfig n) { simParallel = False } benchController n
+
+-- The snapshots of the world of @n@ robots with the given settings, every
+-- robot driven by the given controller.
+benchRunIn :: SimConfig -> SimbotController -> Int -> [WorldState]
+benchRunIn cfg c n = simulateWith cfg (sharedWorld n) c c
 
 -- | Run @n@ robots for @steps@ steps and return a checksum of every
 -- robot's position at every step (so that every step is computed). The

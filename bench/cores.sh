@@ -11,11 +11,9 @@
 #   bench/cores.sh [RUNS]     (each pair RUNS times, default 3)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-runs=${1:-3}
-case "$runs" in
-  '' | *[!0-9]* | 0) echo "bench/cores.sh: RUNS must be a positive whole number, got '$runs'" >&2; exit 2 ;;
-esac
 source bench/cores/lib.sh
+runs=${1:-3}
+positive_int bench/cores.sh RUNS "$runs"
 allowed_cpus
 if [ "${#cpus[@]}" -lt 2 ]; then
   echo "bench/cores.sh: one processor to run on (${allowed}): nothing to measure" >&2

@@ -81,7 +81,7 @@ for k, (cores, s) in enumerate(sorted(series.items())):
         out.append('<text x="%.1f" y="%.1f" fill="%s" text-anchor="middle">%.2f</text>'
                    % (px(n), py(u) - 8, c, u))
     lats = sorted(int(r['latency_ns']) for r in rows
-                  if int(r['cores']) == cores and r.get('latency_ns', '-').isdigit())
+                  if int(r['cores']) == cores and (r.get('latency_ns') or '-').isdigit())
     out.append('<text x="%d" y="%d" fill="%s">%s</text>'
                % (W - R - 190, T + 16 + 16 * k, c,
                   '%d core%s' % (cores, '' if cores == 1 else 's')

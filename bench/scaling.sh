@@ -3,15 +3,19 @@
 # bench/SimBench.hs: 10 m^2 per robot, the notes' density; a wall follower
 # reading four range finders and the tracker; dt = 0.01) and the 100 packed
 # wanderers, each on one core and on two, timed after the run's start
-# (afrp-bench --steady / --steady-packed). Writes bench/scaling.tsv (one
-# row per run: what, robots, world side, cores, steps, robot-steps per
-# second by the wall clock, x real time, microseconds of CPU per
-# robot-step, the 1-minute load average before the run: the machine is
-# shared, and the one-way latency in nanoseconds between the first two
-# processors just before it, as bench/cores.sh measures it, or - with
-# one processor: on a virtual machine, where the host puts them changes
-# from minute to minute, and two cores give much less when they are far
-# apart) and draws bench/scaling.svg from it (bench/plot-scaling.py).
+# (afrp-bench --steady / --steady-packed). Writes bench/scaling.tsv and
+# draws bench/scaling.svg from it (bench/plot-scaling.py). One row per
+# run, its columns:
+#   what, robots, world side, cores, steps; robot-steps per second by the
+#   wall clock; x real time; microseconds of CPU per robot-step;
+#   load: the 1-minute load average before the run (the machine is
+#     shared);
+#   latency_ns: the one-way latency between the first two processors this
+#     program may use just before the run, as bench/cores.sh measures it
+#     (- with one processor). On a virtual machine the host moves its
+#     processors from minute to minute, and two cores give the step much
+#     less when they are far apart. The runs are kept to those two
+#     processors (taskset).
 #   bench/scaling.sh [R]        (R runs of each, the fastest kept: the
 #                                machine is shared; default 3, about three
 #                                minutes on the 2-core machine)
@@ -24,18 +28,26 @@
 # is the faster, as that round measured.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source bench/cores/lib.sh
+repeats=${1:-3}
+positive_int bench/scaling.sh R "$repeats"
 cabal build -v0 --enable-benchmarks afrp-bench
 bin=$(find dist-newstyle -type f -perm -u+x -name afrp-bench | head -1)
-source bench/cores/lib.sh
 allowed_cpus
-build=$(mktemp -d /tmp/afrp-scaling.XXXXXX)
-trap 'rm -rf "$build"' EXIT
-build_pingpong "$build"
+two=no
+if [ "${#cpus[@]}" -ge 2 ]; then
+  build=$(mktemp -d /tmp/afrp-scaling.XXXXXX)
+  trap 'rm -rf "$build"' EXIT
+  if build_pingpong "$build"; then two=yes; fi
+fi
 latency() {
-  if [ "${#cpus[@]}" -ge 2 ]; then latency_ns "$build/pingpong" "${cpus[0]}" "${cpus[1]}"; else echo -; fi
+  if [ $two = yes ]; then latency_ns "$build/pingpong" "${cpus[0]}" "${cpus[1]}" || echo -; else echo -; fi
+}
+# a run on the first two processors (all of them with fewer)
+on2() {
+  if [ "${#cpus[@]}" -ge 2 ]; then taskset -c "${cpus[0]},${cpus[1]}" "$@"; else "$@"; fi
 }
 out=bench/scaling.tsv
-repeats=${1:-3}
 printf 'what\trobots\tside_m\tcores\tsteps\trobot_steps_per_s\tx_real_time\tcpu_us_per_robot_step\tload\tlatency_ns\n' > "$out"
 row() {  # what robots side cores steps -- afrp-bench arguments
   local what=$1 robots=$2 side=$3 cores=$4 steps=$5; shift 6
@@ -45,15 +57,15 @@ row() {  # what robots side cores steps -- afrp-bench arguments
   load=$(cut -d' ' -f1 /proc/loadavg)
   lat=$(latency)
   for ((r = 0; r < repeats; r++)); do
-    try=$("$bin" "$@" +RTS "${rts[@]}" -RTS)
+    try=$(on2 "$bin" "$@" +RTS "${rts[@]}" -RTS)
     echo "$try" >&2
     local tr
-    tr=$(sed -E 's/.*: +([0-9]+) robot-steps\/s \(wall\).*/\1/' <<<"$try")
+    tr=$(wall_rate <<<"$try")
     if [ "$tr" -gt "$best" ]; then best=$tr; line=$try; fi
   done
   # "... N robot-steps/s (wall), X x real time (...; CPU ...: ..., U us each; ...)"
   local rate x us
-  rate=$(sed -E 's/.*: +([0-9]+) robot-steps\/s \(wall\).*/\1/' <<<"$line")
+  rate=$(wall_rate <<<"$line")
   x=$(sed -E 's/.*, +([0-9.]+)x real time.*/\1/' <<<"$line")
   us=$(sed -E 's/.*, ([0-9.]+) us each.*/\1/' <<<"$line")
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$what" "$robots" "$side" "$cores" "$steps" "$rate" "$x" "$us" "$load" "$lat" >> "$out"

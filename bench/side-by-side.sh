@@ -17,18 +17,19 @@
 # ratio to 'one', then the medians of the ratios, and of parallel over
 # programs (how much of what the machine gives the step takes), over the
 # rounds in each band of latency (below 70 ns, 70-149, 150 and above).
+# Every run is kept to the first two processors this program may use
+# (taskset), the pair whose latency is measured; each of the two
+# programs to one of them.
 #   bench/side-by-side.sh [ROUNDS [ROBOTS [STEPS]]]   (default 8 1000 400)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source bench/cores/lib.sh
 rounds=${1:-8}
 robots=${2:-1000}
 steps=${3:-400}
-for v in "$rounds" "$robots" "$steps"; do
-  case "$v" in
-    '' | *[!0-9]* | 0) echo "bench/side-by-side.sh: ROUNDS, ROBOTS and STEPS must be positive whole numbers, got '$v'" >&2; exit 2 ;;
-  esac
-done
-source bench/cores/lib.sh
+positive_int bench/side-by-side.sh ROUNDS "$rounds"
+positive_int bench/side-by-side.sh ROBOTS "$robots"
+positive_int bench/side-by-side.sh STEPS "$steps"
 allowed_cpus
 if [ "${#cpus[@]}" -lt 2 ]; then
   echo "bench/side-by-side.sh: one processor to run on (${allowed}): nothing to compare" >&2
@@ -39,19 +40,37 @@ second=${cpus[1]}
 cabal build -v0 --enable-benchmarks afrp-bench
 bin=$(find dist-newstyle -type f -perm -u+x -name afrp-bench | head -1)
 build=$(mktemp -d /tmp/afrp-side.XXXXXX)
-trap 'rm -rf "$build"' EXIT
+other=
+trap 'if [ -n "$other" ]; then kill "$other" 2>/dev/null || true; fi; rm -rf "$build"' EXIT
 build_pingpong "$build"
-wall() { sed -E 's/^.*: +([0-9]+) robot-steps\/s \(wall\).*/\1/'; }
+# every run on the two processors measured (the runtime's threads may
+# move between them, as on any two)
+on2() { taskset -c "$first,$second" "$@"; }
+# robot-steps per second from a file of afrp-bench's output, or a
+# message and exit 1 if it has none
+rate() {
+  local v
+  v=$(wall_rate < "$1")
+  case "$v" in
+    '' | *[!0-9]*) echo "bench/side-by-side.sh: no robot-steps per second in afrp-bench's output: $(cat "$1")" >&2; exit 1 ;;
+  esac
+  echo "$v"
+}
 out=$build/rounds
 for ((r = 1; r <= rounds; r++)); do
   lat=$(latency_ns "$build/pingpong" "$first" "$second")
-  one=$("$bin" --steady "$robots" "$steps" +RTS -N1 -RTS | wall)
-  side=$("$bin" --side-by-side "$robots" "$steps" +RTS -N2 -RTS | wall)
-  par=$("$bin" --steady "$robots" "$steps" +RTS -N2 -RTS | wall)
-  "$bin" --steady "$robots" "$steps" +RTS -N1 -RTS > "$build/a" &
-  "$bin" --steady "$robots" "$steps" +RTS -N1 -RTS > "$build/b"
-  wait
-  progs=$(( $(wall < "$build/a") + $(wall < "$build/b") ))
+  on2 "$bin" --steady "$robots" "$steps" +RTS -N1 -RTS > "$build/one"
+  on2 "$bin" --side-by-side "$robots" "$steps" +RTS -N2 -RTS > "$build/side"
+  on2 "$bin" --steady "$robots" "$steps" +RTS -N2 -RTS > "$build/par"
+  taskset -c "$first" "$bin" --steady "$robots" "$steps" +RTS -N1 -RTS > "$build/a" &
+  other=$!
+  taskset -c "$second" "$bin" --steady "$robots" "$steps" +RTS -N1 -RTS > "$build/b"
+  wait "$other"
+  other=
+  one=$(rate "$build/one")
+  side=$(rate "$build/side")
+  par=$(rate "$build/par")
+  progs=$(( $(rate "$build/a") + $(rate "$build/b") ))
   echo "$lat $one $side $par $progs" >> "$out"
   awk -v l="$lat" -v o="$one" -v s="$side" -v p="$par" -v q="$progs" 'BEGIN {
     printf "latency %4d ns  one %8d  side %8d (%.2f)  parallel %8d (%.2f)  programs %8d (%.2f)\n",

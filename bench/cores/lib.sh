@@ -2,10 +2,12 @@
 # (sourced, from the repository's root).
 
 # allowed_cpus: the processors this program may run on (a cpuset or
-# taskset may leave some out), from a list such as 0-3,6, into the array
-# cpus.
+# taskset may leave some out), from a list such as 0-3,6: the list as
+# written in the variable allowed, one processor an element in the array
+# cpus. Without the list (not Linux), the first $(nproc).
 allowed_cpus() {
-  allowed=$(grep '^Cpus_allowed_list:' /proc/self/status | cut -f2)
+  allowed=$(grep '^Cpus_allowed_list:' /proc/self/status 2>/dev/null | cut -f2 || true)
+  if [ -z "$allowed" ]; then allowed="0-$(($(nproc) - 1))"; fi
   cpus=()
   local ranges r c
   IFS=, read -ra ranges <<<"$allowed"
@@ -18,6 +20,16 @@ allowed_cpus() {
   done
 }
 
+# positive_int SCRIPT NAME VALUE: exits 2 with a message unless VALUE is
+# a positive whole number written without leading zeros.
+positive_int() {
+  case "$3" in
+    [1-9] | [1-9]*[0-9]) case "$3" in *[!0-9]*) ;; *) return 0 ;; esac ;;
+  esac
+  echo "$1: $2 must be a positive whole number, got '$3'" >&2
+  exit 2
+}
+
 # build_pingpong DIR: bench/cores/pingpong.c built with the C compiler
 # ($CC or cc) as DIR/pingpong.
 build_pingpong() {
@@ -28,4 +40,10 @@ build_pingpong() {
 # B, in nanoseconds, as PINGPONG measures it.
 latency_ns() {
   "$1" "$2" "$3" | sed -E 's/.*one-way ([0-9]+) ns.*/\1/'
+}
+
+# wall_rate: the robot-steps per second by the wall clock of an
+# afrp-bench --steady or --side-by-side line on standard input.
+wall_rate() {
+  sed -E 's/^.*: +([0-9]+) robot-steps\/s \(wall\).*/\1/'
 }

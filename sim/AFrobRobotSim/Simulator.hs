@@ -46,9 +46,9 @@
 -- shallow: at 10,000 robots the collector copied 42% less than when every
 -- robot's step was computed before the first move). A run with
 -- 'simParallel' 'False' is stepped so whatever the capabilities: several
--- such runs side by side, one a capability, each keep to one core
--- (@afrp-bench --side-by-side@ times two such runs against one run in
--- parallel: @bench/README.md@, its nineteenth round).
+-- such runs side by side, each on a thread pinned to its own capability,
+-- each keep to one core (@bench/side-by-side.sh@ compares two such runs
+-- with one run in parallel: @bench/README.md@, its nineteenth round).
 --
 -- A larger allocation area than the runtime's 1 MB matters: each minor
 -- collection copies the robots' live state, and on several cores every
@@ -120,9 +120,11 @@ data SimConfig = SimConfig
     -- when the program runs on several; 'False' computes it on the thread
     -- that reads the snapshots alone, whatever the capabilities. The
     -- snapshots are the same either way, bit for bit. 'False' is for a
-    -- program that runs several simulations side by side, one a
-    -- capability (a sweep's runs in one program, say): each then keeps
-    -- to its own core instead of sharing the workers with the others.
+    -- program that runs several simulations side by side (a sweep's runs
+    -- in one program, say), each read by a thread pinned to its own
+    -- capability ('Control.Concurrent.forkOn'): each run then keeps to
+    -- that capability instead of sharing the workers with the others.
+    -- (The runtime's collections still stop every capability.)
   }
 
 -- | The longest time step 'simulate' takes: 10^6 s (about 11 days). The

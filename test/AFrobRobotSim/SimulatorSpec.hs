@@ -10,11 +10,11 @@ import           Control.Concurrent (myThreadId)
 import           Control.Exception (AsyncException (..), ErrorCall (..), bracket, evaluate, finally, throw, try)
 import qualified Data.ByteString   as BS
 import qualified Data.ByteString.Char8 as BC
-import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
-import           GHC.IO.Handle     (hDuplicate, hDuplicateTo)
 import           Data.IORef        (atomicModifyIORef', newIORef, readIORef)
 import           Data.List         (isInfixOf, isPrefixOf, sort)
 import qualified Data.Set          as Set
+import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
+import           GHC.IO.Handle     (hDuplicate, hDuplicateTo)
 import           System.Directory  (createDirectory, listDirectory)
 import           System.FilePath   ((</>))
 import           System.IO         (IOMode (..), hClose, hFlush, stdout, withFile)
@@ -239,13 +239,12 @@ spec = do
                                  `mrMerge` tcoPrintMessage (tag ping (show (rfRight sbi, near, take 1 (aotBalls sbi), tciKey sbi))))
         cfg = defaultSimConfig { simOdometryNoise = 0.02, simSeed = 7, simKeys = [(0.5, 'a'), (1.5, 'b')] }
         withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
-        -- the text of a run's first snapshots, on one capability and on two
-        -- (each run made anew: the argument keeps it from being shared)
-        onOneAndTwo c world n = do
-          let run _ = show (take n (simulateWith c world sensing sensing))
-          one <- withCaps 1 (let r = run (1 :: Int) in evaluate (length r) >> pure r)
-          two <- withCaps 2 (let r = run (2 :: Int) in evaluate (length r) >> pure r)
-          pure (one, two)
+        -- the text of a run's first n snapshots, on k capabilities (each
+        -- run made anew: the argument keeps it from being shared)
+        textOn k c world n = withCaps k (let r = show (take n (simulateWith c world sensing sensing))
+                                         in evaluate (length r) >> pure r)
+        -- on one capability and on two
+        onOneAndTwo c world n = (,) <$> textOn (1 :: Int) c world n <*> textOn 2 c world n
         -- the failure of a run whose robots with the given numbers fail
         -- from t = 1, on k capabilities: its robot and time
         firstFailure :: SimConfig -> WorldTemplate -> [RobotId] -> Int -> IO (Maybe (RobotType, RobotId, Time))
@@ -324,27 +323,32 @@ spec = do
         [ f | ((f, a), (_, b)) <- zip (fst one) (fst two), a /= b ] `shouldBe` []
         snd two `shouldBe` snd one
 
-    -- the threads that computed a run's controller steps, on two
-    -- capabilities, with the step in parallel or not
-    let threadsOf c = withCaps 2 $ do
+    -- The threads that computed a run's controller steps, on two
+    -- capabilities, in blocks of 100 steps until the given test of them
+    -- holds or 3000 steps are done.
+    let threadsUntil c enough = withCaps 2 $ do
           seen <- newIORef Set.empty
           let noting rps = proc sbi -> do
                 o <- sensing rps -< sbi
                 returnA -< unsafePerformIO (myThreadId >>= \t -> atomicModifyIORef' seen (\s -> (Set.insert t s, ()))) `seq` o
-          r <- evaluate (length (show (take 60 (simulateWith c many noting noting))))
-          r `seq` readIORef seen
+              go run done = do
+                -- (the positions need every controller's step)
+                _ <- evaluate (sum [ x + y | ws <- take 100 run, r <- wsRobots ws, let Point2 x y = robotPos r ])
+                ts <- readIORef seen
+                if enough ts || done + 100 >= (3000 :: Int) then pure ts else go (drop 100 run) (done + 100)
+          go (simulateWith c many noting noting) 0
     it "steps a run on the thread that reads it alone with simParallel False, whatever the capabilities" $ do
       me <- myThreadId
-      alone <- threadsOf big { simParallel = False }
+      alone <- threadsUntil big { simParallel = False } ((> 1) . Set.size)
       alone `shouldBe` Set.singleton me
-      -- (the same run in parallel uses the workers: what this test would
-      -- see if the setting were ignored)
-      shared <- threadsOf big
+      -- (the same run in parallel uses the workers, within those 3000
+      -- steps even on a busy machine: what this test would see if the
+      -- setting were ignored)
+      shared <- threadsUntil big ((> 1) . Set.size)
       Set.size shared `shouldSatisfy` (> 1)
     it "gives the same snapshots with simParallel False as in parallel" $ do
-      let run c = withCaps 2 (let r = show (take 250 (simulateWith c many sensing sensing)) in evaluate (length r) >> pure r)
-      alone <- run big { simParallel = False }
-      shared <- run big
+      alone <- textOn 2 big { simParallel = False } many 250
+      shared <- textOn 2 big many 250
       alone `shouldBe` shared
 
   describe "bad input" $ do
