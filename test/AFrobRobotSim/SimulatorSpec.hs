@@ -240,7 +240,8 @@ spec = do
         cfg = defaultSimConfig { simOdometryNoise = 0.02, simSeed = 7, simKeys = [(0.5, 'a'), (1.5, 'b')] }
         withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
         -- the text of a run's first n snapshots, on k capabilities (each
-        -- run made anew: the argument keeps it from being shared)
+        -- call makes its run anew: the module is compiled without full
+        -- laziness and common subexpressions)
         textOn k c world n = withCaps k (let r = show (take n (simulateWith c world sensing sensing))
                                          in evaluate (length r) >> pure r)
         -- on one capability and on two
