@@ -48,7 +48,7 @@
 module Main (main) where
 
 import           Control.Concurrent (forkOn, getNumCapabilities, newEmptyMVar, putMVar, takeMVar)
-import           Control.Exception  (evaluate)
+import           Control.Exception  (SomeException, evaluate, throwIO, try)
 import           Criterion.Main
 import           Criterion.Types    (Config (..))
 import           Data.List          (foldl', isPrefixOf, sort)
@@ -185,9 +185,9 @@ sideBySideReport n steps = do
   runs <- mapM (\_ -> afterStart (benchRunAlone n)) [1 .. caps]   -- (a run each: no full laziness here)
   dones <- mapM (const newEmptyMVar) runs
   w0 <- getMonotonicTime
-  sequence_ [ forkOn c (evaluate (snapshotsChecksum (take steps run)) >>= putMVar done)
+  sequence_ [ forkOn c (try (evaluate (snapshotsChecksum (take steps run))) >>= putMVar done)
             | (c, run, done) <- zip3 [0 ..] runs dones ]
-  sums <- mapM takeMVar dones
+  sums <- mapM (\d -> takeMVar d >>= either (\e -> throwIO (e :: SomeException)) pure) dones
   w1 <- getMonotonicTime
   let wall = w1 - w0
       simT = fromIntegral steps * simDtBench

@@ -61,6 +61,9 @@ row() {  # what robots side cores steps -- afrp-bench arguments
     echo "$try" >&2
     local tr
     tr=$(wall_rate <<<"$try")
+    case "$tr" in
+      '' | *[!0-9]*) echo "bench/scaling.sh: no robot-steps per second in afrp-bench's output: $try" >&2; exit 1 ;;
+    esac
     if [ "$tr" -gt "$best" ]; then best=$tr; line=$try; fi
   done
   # "... N robot-steps/s (wall), X x real time (...; CPU ...: ..., U us each; ...)"

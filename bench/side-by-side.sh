@@ -12,7 +12,8 @@
 #   parallel  afrp-bench --steady N S +RTS -N2: one run, its step in
 #             parallel (what the issue's "two cores" figure measures);
 #   programs  two programs of afrp-bench --steady N S +RTS -N1 at once
-#             (what the machine allows);
+#             (what the machine allows), counted as side is: their work
+#             over the longer of their two timed windows;
 # and prints each as robot-steps per second by the wall clock, with its
 # ratio to 'one', then the medians of the ratios, and of parallel over
 # programs (how much of what the machine gives the step takes), over the
@@ -42,6 +43,7 @@ bin=$(find dist-newstyle -type f -perm -u+x -name afrp-bench | head -1)
 build=$(mktemp -d /tmp/afrp-side.XXXXXX)
 other=
 trap 'if [ -n "$other" ]; then kill "$other" 2>/dev/null || true; fi; rm -rf "$build"' EXIT
+trap 'exit 143' TERM HUP
 build_pingpong "$build"
 # every run on the two processors measured (the runtime's threads may
 # move between them, as on any two)
@@ -59,6 +61,9 @@ rate() {
 out=$build/rounds
 for ((r = 1; r <= rounds; r++)); do
   lat=$(latency_ns "$build/pingpong" "$first" "$second")
+  case "$lat" in
+    '' | *[!0-9]*) echo "bench/side-by-side.sh: no latency from pingpong: '$lat'" >&2; exit 1 ;;
+  esac
   on2 "$bin" --steady "$robots" "$steps" +RTS -N1 -RTS > "$build/one"
   on2 "$bin" --side-by-side "$robots" "$steps" +RTS -N2 -RTS > "$build/side"
   on2 "$bin" --steady "$robots" "$steps" +RTS -N2 -RTS > "$build/par"
@@ -70,7 +75,12 @@ for ((r = 1; r <= rounds; r++)); do
   one=$(rate "$build/one")
   side=$(rate "$build/side")
   par=$(rate "$build/par")
-  progs=$(( $(rate "$build/a") + $(rate "$build/b") ))
+  pa=$(rate "$build/a")
+  pb=$(rate "$build/b")
+  # both programs' work over the longer of their two timed windows (the
+  # basis of --side-by-side's figure: work over the time until the last
+  # run ends), that is twice the slower program's rate
+  progs=$(( 2 * (pa < pb ? pa : pb) ))
   echo "$lat $one $side $par $progs" >> "$out"
   awk -v l="$lat" -v o="$one" -v s="$side" -v p="$par" -v q="$progs" 'BEGIN {
     printf "latency %4d ns  one %8d  side %8d (%.2f)  parallel %8d (%.2f)  programs %8d (%.2f)\n",

@@ -21,12 +21,13 @@ allowed_cpus() {
 }
 
 # positive_int SCRIPT NAME VALUE: exits 2 with a message unless VALUE is
-# a positive whole number written without leading zeros.
+# a positive whole number of at most nine digits, written without leading
+# zeros.
 positive_int() {
   case "$3" in
-    [1-9] | [1-9]*[0-9]) case "$3" in *[!0-9]*) ;; *) return 0 ;; esac ;;
+    [1-9] | [1-9]*[0-9]) case "$3" in *[!0-9]*) ;; *) [ "${#3}" -le 9 ] && return 0 ;; esac ;;
   esac
-  echo "$1: $2 must be a positive whole number, got '$3'" >&2
+  echo "$1: $2 must be a positive whole number of at most nine digits, got '$3'" >&2
   exit 2
 }
 
