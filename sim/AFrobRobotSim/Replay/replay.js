@@ -144,9 +144,9 @@
   // 1000-robot, 30 s page: 0.2-0.6 s from the start).
   var keepEvery = Math.max(25, Math.ceil(frames.length / 16));
   trails.saved = [];
-  // While the wheel, a drag or a pinch changes the view, redrawing the paths of a
-  // big page at every step (1000 robots for 30 s: about 0.2 s; 10,000
-  // robots: about 1 s) would make the view lag: when the layer holds more
+  // While the wheel, a drag or a pinch changes the view, redrawing the
+  // paths of a big page at every step (1000 robots for 30 s: about 0.2 s;
+  // 10,000 robots: about 1 s) would make the view lag: when the layer holds more
   // than 'roughAbove' stretches, the view's changes show the layer as it
   // is, moved and scaled to the new view (rough), and the paths are drawn
   // afresh 0.25 s after the last change.
@@ -298,8 +298,9 @@
     var w = b.width * fitScale, h = b.height * fitScale;
     if (Math.abs(p[0] - margin - w / 2) > 0.3 * w || Math.abs(p[1] - margin - h / 2) > 0.3 * h) setView(view.zoom, r.x, r.y);
   }
-  // a view changed by the wheel, a drag or a pinch: drawn once at the next animation
-  // frame (the trails maybe rough), and in full 0.25 s after the last change
+  // a view changed by the wheel, a drag or a pinch: drawn once at the next
+  // animation frame (the trails maybe rough), and in full 0.25 s after the
+  // last change
   var drawPending = false, fullTimer = null;
   function drawSoon() {
     if (!drawPending) { drawPending = true; requestAnimationFrame(function () { drawPending = false; draw(true); }); }
@@ -486,10 +487,10 @@
     delete pointers[e.pointerId];
     startGesture();
   }
-  // the robot a click or a tap at a canvas pixel selects
+  // the robot a click or a tap at a canvas pixel selects (a finger's and a
+  // pen's reach in CSS pixels, the mouse's in canvas pixels)
   function select(p, kind) {
-    state.selected = robotAt(p[0], p[1], kind === 'touch' ? 16 * canvas.width / canvas.clientWidth
-                                         : kind === 'pen' ? 8 * canvas.width / canvas.clientWidth : 3);
+    state.selected = robotAt(p[0], p[1], kind === 'mouse' ? 3 : (kind === 'touch' ? 16 : 8) * canvas.width / canvas.clientWidth);
     selections++;
     draw();
   }
