@@ -26,8 +26,7 @@ trap 'rm -rf "$build"' EXIT
 g++ -O2 -std=c++17 -Wall -Wextra bench/enki/swarm.cpp -o "$build/enki-swarm" -lenki
 
 cabal build -v0 --enable-benchmarks afrp-bench
-# (cabal list-bin fails under the project's per-component: False)
-afrp=$(find dist-newstyle -type f -perm -u+x -name afrp-bench | head -1)
+afrp=$(cabal list-bin -v0 --enable-benchmarks afrp-bench)
 
 # field NAME LINE: the value of NAME=... in a result line
 field() { sed -n "s/.*[[:space:]]$1=\([^[:space:]]*\).*/\1/p" <<<" $2"; }

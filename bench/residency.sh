@@ -11,8 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 n=${1:-1000000}
 cabal build -v0 --enable-benchmarks afrp-bench
-# (cabal list-bin fails under the project's per-component: False)
-bin=$(find dist-newstyle -type f -perm -u+x -name afrp-bench | head -1)
+bin=$(cabal list-bin -v0 --enable-benchmarks afrp-bench)
 residency() {
   "$bin" "$@" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}'
 }

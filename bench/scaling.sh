@@ -32,7 +32,7 @@ source bench/cores/lib.sh
 repeats=${1:-3}
 positive_int bench/scaling.sh R "$repeats"
 cabal build -v0 --enable-benchmarks afrp-bench
-bin=$(find dist-newstyle -type f -perm -u+x -name afrp-bench | head -1)
+bin=$(cabal list-bin -v0 --enable-benchmarks afrp-bench)
 allowed_cpus
 two=no
 if [ "${#cpus[@]}" -ge 2 ]; then

@@ -39,7 +39,7 @@ fi
 first=${cpus[0]}
 second=${cpus[1]}
 cabal build -v0 --enable-benchmarks afrp-bench
-bin=$(find dist-newstyle -type f -perm -u+x -name afrp-bench | head -1)
+bin=$(cabal list-bin -v0 --enable-benchmarks afrp-bench)
 build=$(mktemp -d /tmp/afrp-side.XXXXXX)
 other=
 trap 'if [ -n "$other" ]; then kill "$other" 2>/dev/null || true; fi; rm -rf "$build"' EXIT
