@@ -17,21 +17,27 @@ module AFrobRobotSim.FlatArray
   ( -- * Immutable
     IntArr
   , DblArr
+  , W8Arr
   , indexI
   , indexD
+  , indexW8
     -- * Mutable
   , MIntArr
   , MDblArr
+  , MW8Arr
   , newIntArr
   , newIntArrUnset
   , newLineIntArr
   , newDblArr
+  , newW8Arr
   , readI
   , writeI
   , readD
   , writeD
+  , writeW8
   , freezeI
   , freezeD
+  , freezeW8
   , bucketLists
   , bucketListsUpTo
     -- * Numbers
@@ -40,15 +46,22 @@ module AFrobRobotSim.FlatArray
 
 import           GHC.Exts
 import           GHC.ST   (ST (..))
+import           GHC.Word (Word8 (..))
 
 -- | An immutable array of 'Int's.
 data IntArr = IntArr ByteArray#
 -- | An immutable array of 'Double's.
 data DblArr = DblArr ByteArray#
+-- | An immutable array of bytes ('Word8's): an eighth of the room of
+-- 'Int's or 'Double's, for a large table read at random (a cache line
+-- holds 64 of its entries).
+data W8Arr = W8Arr ByteArray#
 -- | A mutable array of 'Int's.
 data MIntArr s = MIntArr (MutableByteArray# s)
 -- | A mutable array of 'Double's.
 data MDblArr s = MDblArr (MutableByteArray# s)
+-- | A mutable array of bytes.
+data MW8Arr s = MW8Arr (MutableByteArray# s)
 
 -- | A new array of @n@ 'Int's, all @v@.
 newIntArr :: Int -> Int -> ST s (MIntArr s)
@@ -81,6 +94,11 @@ newDblArr :: Int -> ST s (MDblArr s)
 newDblArr (I# n) = ST $ \s -> case newByteArray# (n *# 8#) s of
   (# s1, a #) -> (# s1, MDblArr a #)
 
+-- | A new array of @n@ bytes (their values unspecified).
+newW8Arr :: Int -> ST s (MW8Arr s)
+newW8Arr (I# n) = ST $ \s -> case newByteArray# n s of
+  (# s1, a #) -> (# s1, MW8Arr a #)
+
 -- | Read a 'Double' element (no bounds checks).
 readD :: MDblArr s -> Int -> ST s Double
 readD (MDblArr a) (I# i) = ST $ \s -> case readDoubleArray# a i s of (# s1, x #) -> (# s1, D# x #)
@@ -101,6 +119,11 @@ writeD :: MDblArr s -> Int -> Double -> ST s ()
 writeD (MDblArr a) (I# i) (D# x) = ST $ \s -> case writeDoubleArray# a i x s of s1 -> (# s1, () #)
 {-# INLINE writeD #-}
 
+-- | Write a byte (no bounds checks).
+writeW8 :: MW8Arr s -> Int -> Word8 -> ST s ()
+writeW8 (MW8Arr a) (I# i) (W8# x) = ST $ \s -> case writeWord8Array# a i x s of s1 -> (# s1, () #)
+{-# INLINE writeW8 #-}
+
 -- | The array, immutable from now on (not copied: write no more to it).
 freezeI :: MIntArr s -> ST s IntArr
 freezeI (MIntArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, IntArr b #)
@@ -108,6 +131,15 @@ freezeI (MIntArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) 
 -- | The array, immutable from now on (not copied: write no more to it).
 freezeD :: MDblArr s -> ST s DblArr
 freezeD (MDblArr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, DblArr b #)
+
+-- | The array, immutable from now on (not copied: write no more to it).
+freezeW8 :: MW8Arr s -> ST s W8Arr
+freezeW8 (MW8Arr a) = ST $ \s -> case unsafeFreezeByteArray# a s of (# s1, b #) -> (# s1, W8Arr b #)
+
+-- | An element (no bounds checks).
+indexW8 :: W8Arr -> Int -> Word8
+indexW8 (W8Arr a) (I# i) = W8# (indexWord8Array# a i)
+{-# INLINE indexW8 #-}
 
 -- | An element (no bounds checks).
 indexI :: IntArr -> Int -> Int

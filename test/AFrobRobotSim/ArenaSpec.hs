@@ -13,7 +13,7 @@ import           Test.QuickCheck
 
 import           AFRP.Geometry           (Point2 (..))
 import           AFrobRobotSim.Arena
-import           AFrobRobotSim.Clearance (clearanceAt, clearanceCap, clearanceCellSize)
+import           AFrobRobotSim.Clearance (clearanceAt, clearanceCap, clearanceCellSize, clearanceQuantum)
 import           AFrobRobotSim.Shapes    (Box (..))
 import           AFrobRobotSim.SpatialIndex
 import           AFrobRobotSim.World
@@ -114,7 +114,7 @@ spec = do
     -- (the upper bound at points inside a world is checked in
     -- "AFrobRobotSim.ClearanceSpec" too; the lower bound shows that the
     -- clearance covers the whole extent, the boundary walls included)
-    it "is at most the distance to the nearest box, and at least that less a cell's diagonal (capped) over the boxes' extent" $
+    it "is at most the distance to the nearest box, and at least that less a cell's diagonal (capped) and a quantum over the boxes' extent" $
       property $ forAll genArena $ \e ->
         let arena = arenaOfEither e
             boxes = arenaBoxes arena
@@ -125,7 +125,7 @@ spec = do
         in forAll (vectorOf 40 nearby) $ \pts ->
              conjoin [ counterexample (show (x, y, c, d)) $
                          c <= d + 1e-12
-                           && (not inExtent || c >= min clearanceCap (d - diag) - 1e-9)
+                           && (not inExtent || c >= min clearanceCap (d - diag) - clearanceQuantum - 1e-9)
                      | (x, y) <- corners ++ pts
                      , let c = clearanceAt (arenaClearance arena) x y
                            d = minimum (1 / 0 : map (pointBoxDistance x y) boxes)

@@ -40,7 +40,20 @@ spec = do
       clearanceAt cl 0.05 0.05 `shouldBe` 0
       -- a point 0.6 m right of the first box: its cell starts at most one
       -- cell nearer
-      clearanceAt cl 0.7 0.05 `shouldSatisfy` (\c -> c >= 0.6 - clearanceCellSize 10 10 && c <= 0.6)
+      clearanceAt cl 0.7 0.05 `shouldSatisfy` (\c -> c >= 0.6 - clearanceCellSize 10 10 - clearanceQuantum && c <= 0.6)
+    it "is a whole number of quanta, less than a quantum below the cell's distance" $ do
+      -- one box, its right side at x = 0: a cell from x = a to x = a + cs
+      -- (and level with the box) has the distance a; the point 0.01 m into
+      -- the cell reads that distance rounded down to quanta
+      let bs = [Box (-1) 0 0 10, Box 9.9 9.9 10 10]
+          cs = clearanceCellSize 11 10
+          cl = clearanceOf (boxIndex bs) (boxesExtent bs)
+      conjoin [ counterexample (show (a, c)) $
+                  c <= a && c > a - clearanceQuantum
+                    && abs (c / clearanceQuantum - fromIntegral (round (c / clearanceQuantum) :: Int)) < 1e-9
+              | k <- [5 .. 8 :: Int]
+              , let a = fromIntegral k * cs - 1
+                    c = clearanceAt cl (a + 0.01) 5 ]
     it "is 0 outside the grid and for points that are not finite" $ do
       let bs = [Box 0 0 1 1, Box 5 5 6 6]
           cl = clearanceOf (boxIndex bs) (boxesExtent bs)
