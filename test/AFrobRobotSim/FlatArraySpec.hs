@@ -1,5 +1,6 @@
 -- | "AFrobRobotSim.FlatArray": what is written is read back, bit for bit,
--- before and after freezing, and a fresh 'Int' array holds its fill value;
+-- before and after freezing (byte arrays once frozen), and a fresh 'Int'
+-- array holds its fill value;
 -- 'bucketLists' groups the pairs as a plain 'Data.Map' does, each bucket in
 -- the order given; 'finite' is 'isNaN' and 'isInfinite' in one test.
 --
@@ -11,7 +12,7 @@ module AFrobRobotSim.FlatArraySpec (spec) where
 import           Control.Monad.ST        (ST, runST)
 import           Data.Either             (lefts, rights)
 import qualified Data.Map.Strict         as M
-import           Data.Word               (Word64)
+import           Data.Word               (Word64, Word8)
 import           GHC.Float               (castDoubleToWord64)
 import           Test.Hspec              hiding (after)
 import           Test.QuickCheck
@@ -150,6 +151,22 @@ spec = do
               want = ( model (zip [0 ..] us) (lefts ws), model (zip [0 ..] vs) (rights ws) )
               asBits (xs, ys) = (bits xs, bits ys)
           in asBits written === asBits want .&&. asBits frozen === asBits want
+
+  describe "newW8Arr, writeW8, freezeW8, indexW8" $
+    it "hold the last byte written to each element, each array its own, all 256 values" $
+      property $ forAll (chooseInt (0, 40)) $ \n ->
+        forAll (vectorOf n arbitrary) $ \us -> forAll (vectorOf n arbitrary) $ \vs ->
+        forAll (genWrites (elements [minBound .. maxBound :: Word8]) n) $ \ws ->
+          let frozen = runST $ do
+                a <- newW8Arr n
+                b <- newW8Arr n
+                mapM_ (uncurry (writeW8 a)) (zip [0 ..] us)
+                mapM_ (uncurry (writeW8 b)) (zip [0 ..] vs)
+                mapM_ (either (uncurry (writeW8 a)) (uncurry (writeW8 b))) ws
+                fa <- freezeW8 a
+                fb <- freezeW8 b
+                pure (map (indexW8 fa) [0 .. n - 1], map (indexW8 fb) [0 .. n - 1])
+          in frozen === (model (zip [0 ..] us) (lefts ws), model (zip [0 ..] vs) (rights ws))
 
   describe "bucketLists" $ do
     it "lists each bucket's items in the order given, as a map from buckets to lists has them" $
