@@ -45,6 +45,7 @@ import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.OptionsSpec
 import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.BallsSpec
+import qualified AFrobRobotSim.ChunksSpec
 import qualified AFrobRobotSim.RayCastSpec
 import qualified AFrobRobotSim.RayGridSpec
 import qualified AFrobRobotSim.RenderSpec
@@ -121,6 +122,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Options" AFrobRobotSim.OptionsSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
   describe "AFrobRobotSim.Balls" AFrobRobotSim.BallsSpec.spec
+  describe "AFrobRobotSim.Chunks" AFrobRobotSim.ChunksSpec.spec
   describe "AFrobRobotSim.RayGrid" AFrobRobotSim.RayGridSpec.spec
   describe "AFrobRobotSim.RayCast" AFrobRobotSim.RayCastSpec.spec
   describe "AFrobRobotSim.SpatialIndex" AFrobRobotSim.SpatialIndexSpec.spec

@@ -1,6 +1,7 @@
 {-# LANGUAGE ScopedTypeVariables #-}
 -- | Helpers shared by the specs: running signal functions on sample lists
--- and comparing floating-point outputs; laziness checks; temporary folders.
+-- and comparing floating-point outputs; laziness checks; temporary folders;
+-- a number of capabilities.
 module TestUtil
   ( runDt
   , runSamples
@@ -12,9 +13,11 @@ module TestUtil
   , genSamples
   , withinTwoSeconds
   , withTempDir
+  , withCaps
   ) where
 
 import           Control.Exception (NonTermination (..), bracket, evaluate, try)
+import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
 import           System.Directory  (createDirectory, getTemporaryDirectory, removeDirectoryRecursive)
 import           System.FilePath   ((</>))
 import           System.Timeout    (timeout)
@@ -92,3 +95,8 @@ withTempDir act = do
         r <- try (createDirectory d)
         either (\(_ :: IOError) -> go (k + 1)) (const (pure d)) r
   bracket (go 0) removeDirectoryRecursive act
+
+-- | Run an action on @k@ capabilities (the program's number restored
+-- afterwards).
+withCaps :: Int -> IO a -> IO a
+withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)

@@ -1,9 +1,10 @@
 {-# LANGUAGE BangPatterns        #-}
 {-# LANGUAGE UnboxedTuples       #-}
 {-# LANGUAGE ScopedTypeVariables #-}
--- The chunks of a parallel step are blackholed as soon as a thread enters
--- them, so that a thread that needs a chunk another is computing waits for
--- it instead of computing it again.
+-- Each robot's step is made here and computed inside its chunk
+-- ("AFrobRobotSim.Chunks"), by whichever thread computes the chunk; like
+-- the chunks, its thunks are blackholed as soon as a thread enters them,
+-- so that no two threads compute one.
 {-# OPTIONS_GHC -feager-blackholing #-}
 -- |
 -- Module      : AFrobRobotSim.Simulator
@@ -26,7 +27,8 @@
 -- contact with a box). The robots are cut into consecutive chunks (about
 -- sixteen per capability, at least 16 robots each), evaluated by a fixed
 -- pool of worker threads from the first, and by the stepping thread
--- ("AFrobRobotSim.Workers"). The sensors' indexes are built and the
+-- ("AFrobRobotSim.Chunks"; the threads are "AFrobRobotSim.Workers"'s).
+-- The sensors' indexes are built and the
 -- chunks handed out before the snapshot before the step is given to its
 -- reader, so that the workers compute while the snapshot is read (by a
 -- log writer, say). The stepping thread moves the robots against
@@ -87,20 +89,19 @@ import           GHC.IO                  (IO (..), unsafeDupablePerformIO)
 import           Data.Bits               (shiftR, xor)
 import           Data.List               (sortOn)
 import           Data.Word               (Word64)
-import           GHC.Conc                (pseq)
 import           Text.Printf             (printf)
 
 import           AFRP
 import           AFrob.Angle             (normalizeAngle, normalizeHeading)
 import           AFrob.Dimensions
 import           AFrob.RobotIO           (BatteryStatus, HasRobotProperties (..))
-import           AFrobRobotSim.Balls
 import           AFrobRobotSim.Arena
+import           AFrobRobotSim.Balls
+import           AFrobRobotSim.Chunks
 import           AFrobRobotSim.Physics
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
 import           AFrobRobotSim.SpatialIndex (finite)
-import           AFrobRobotSim.Workers
 import           AFrobRobotSim.World
 
 -- | Settings of a simulation run.
@@ -261,7 +262,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         (started, outputs, agents', plans) = stepEvery (simParallel cfg) (senseReady ctx `seq` odoReady) (enAgents en) (enRobots en)
           (\i a r -> case senseRobotApart ctx i (odometry i r) key of
                        (input, apart) -> (stepAgent t a input, apart))
-          (planMoveApart dt arena)
+          (\apart r o -> planMoveApart dt arena apart r (soDrive o))
         snapshot = WorldState
           { wsTime     = t
           , wsRobots   = robotStates (enRobots en) (enOdo en)
@@ -330,104 +331,6 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
               d'       = vector2Rotate (h - rHeading r0) ((1 + noise * u1) *^ dTrue)
           in go g2 rs0 rs1 os (Odometry (p .+^ d') h' : acc)
         go g _ _ _ acc = (reverse acc, g)
-
--- Every robot's controller step (its output and its next agent) and the
--- plan of its move, in template order, given a robot's step by its
--- number, agent and robot (with a lower bound on its distance to the
--- other robots) and the plan of a robot's move under a command, given
--- that bound; and first @()@, which starts the work. Unless the first
--- argument is 'True' ('simParallel'), the step is computed as on one
--- capability, whatever their number.
--- On one capability the start does nothing, and the robots are cut into
--- chunks of 'seqChunk', each computed when the first of its elements is
--- needed (the reader of the lists, which moves the robots in order, moves
--- a chunk's robots before the next chunk is computed); a world of at most
--- 'seqChunk' robots is one chunk. On several, the robots are cut into
--- chunks computed in parallel (see the module's documentation): the start
--- computes @ready@ (what every robot's step shares) and gives the workers
--- the chunks, from the first; a chunk is computed by whoever reaches it
--- first, the reader of the lists (in order) or a worker; each chunk, in
--- weak head normal form, has computed every step in it. So the reader,
--- which moves the robots in order, moves those of a chunk while the
--- workers compute later chunks.
-stepEvery :: Bool -> () -> [Agent] -> [Robot]
-          -> (Int -> Agent -> Robot -> ((SimbotOutput, Agent), Double))
-          -> (Double -> Robot -> DriveCommand -> Plan)
-          -> ((), [SimbotOutput], [Agent], [(Robot, Plan)])
-stepEvery parallel ready agents robots stepOne planOne
-  | caps <= 1 && not (null (drop seqChunk robots)) = lists () (firstChunk () inOrder)
-  | caps <= 1 || n < 2 * minChunk = lists () (stepRun 0 maxBound agents robots [] [] [])
-  | otherwise = lists started (firstChunk started shared)
-  where
-    -- the start and the lists of the chunks joined (each list after the
-    -- start, which 'firstChunk' takes)
-    lists s c = (s, chunkOutputs c, chunkAgents c, chunkPlans c)
-    -- the workers given the chunks (once @ready@)
-    started = ready `pseq` shared `pseq` ()
-    n    = length robots
-    caps | parallel  = capabilitiesNow agents   -- (not n: one capability needs no count)
-         | otherwise = 1
-    size = max minChunk ((n + 16 * caps - 1) `div` (16 * caps))
-    -- the chunks as the workers share them with the reader of the lists
-    shared = readInOrder caps (cut size 0 agents robots (drop 1 shared))
-    -- on one capability, chunks of 'seqChunk' robots, each computed when
-    -- the first of its elements is needed
-    inOrder = cut seqChunk 0 agents robots (drop 1 inOrder)
-    -- Chunks of @k@ consecutive robots. Each chunk's lists end with the
-    -- next chunk's (as shared), so the chunks joined are the first one's
-    -- lists: no list is copied to cut them apart or to join them.
-    cut !k !i as rs nexts
-      | null as || null rs = []
-      | otherwise = let rest = cut k (i + k) (drop k as) (drop k rs) (drop 1 nexts)
-                        -- (lazily: the next chunk is not computed yet)
-                        next = firstChunk () nexts
-                    in stepRun i k as rs (chunkOutputs next) (chunkAgents next) (chunkPlans next)
-                         : rest
-    -- Strict loops: a step needs every element, and lazy zips would build
-    -- a thunk per robot and list. A chunk's lists end with @tailO@,
-    -- @tailA@ and @tailP@.
-    stepRun !i !k as rs tailO tailA tailP = case go i k as rs tailO tailA tailP of
-      (# os, as', ps #) -> Chunk os as' ps
-    go !i !k (a : as) (r : rs) tailO tailA tailP
-      | k > (0 :: Int) = case stepOne i a r of
-          ((!o, !a'), apart) -> case go (i + 1) (k - 1) as rs tailO tailA tailP of
-            (# os, as', ps #) -> case planOne apart r (soDrive o) of
-              !pl -> (# o : os, a' : as', (r, pl) : ps #)
-    go _ _ _ _ tailO tailA tailP = (# tailO, tailA, tailP #)
-
--- The controller outputs, next agents and move plans of consecutive
--- robots.
-data Chunk = Chunk { chunkOutputs :: [SimbotOutput]
-                   , chunkAgents  :: [Agent]
-                   , chunkPlans   :: [(Robot, Plan)] }
-
--- @firstChunk s cs@: the first chunk of @cs@ (an empty one if none),
--- after @s@; so the chunks joined are the first one's lists. Not inlined,
--- so that a chunk's lists are selections from one shared value
--- (@chunkAgents next@), which the collector replaces by the list selected
--- once the value is computed: inlined, each was a closure over the rest of
--- the chunks, and kept every chunk of the step (its plans and outputs
--- included) alive until the step's end.
-firstChunk :: () -> [Chunk] -> Chunk
-firstChunk s cs = s `pseq` case cs of
-  c : _ -> c
-  []    -> Chunk [] [] []
-{-# NOINLINE firstChunk #-}
-
--- The fewest robots whose steps are handed to a worker together: 16
--- (handing one over costs about as much as a robot's step; with the 100
--- packed wanderers, 16 a chunk ran as fast as 13, faster than 8).
-minChunk :: Int
-minChunk = 16
-
--- The robots of a chunk on one capability: 64. At 10,000 robots the
--- collector copied 960 MB in 100 steps (1,660 MB when every robot's step
--- was computed before the first move: every robot's output and plan, and
--- a stack one frame deep per robot, were live at each collection); one
--- core's instructions per robot-step fell 17% at 10,000 robots and 3% at
--- 1000.
-seqChunk :: Int
-seqChunk = 64
 
 -- | @blaming f v@ is @v@, with an exception that its evaluation raises
 -- turned into @f e@: 'Control.Exception.mapException', but leaving

@@ -17,10 +17,7 @@ import           GHC.Conc          (ThreadStatus (..), getNumCapabilities, setNu
 import           Test.Hspec
 
 import           AFrobRobotSim.Pipeline
-
--- | Run an action on @k@ capabilities.
-withCaps :: Int -> IO a -> IO a
-withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
+import           TestUtil (withCaps)
 
 -- | Run 'pipeline' over a list, recording what the consumer took (in the
 -- order taken, with the numbers given); the producer counts what it has

@@ -3,9 +3,8 @@
 -- file round trip, every reported fault, determinism.
 module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 
-import           Control.Exception   (bracket, finally, try)
+import           Control.Exception   (finally, try)
 import           Control.Monad       (forM_)
-import           GHC.Conc            (getNumCapabilities, setNumCapabilities)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
 import           Control.Concurrent  (threadDelay)
@@ -28,7 +27,7 @@ import           AFrobRobotSim
 import           AFrobRobotSim.Log   (LogFrame (..), LogHeader (..), LogRect (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
 import           AFrobRobotSim.Replay (writeReplayFromLog)
-import           TestUtil (withTempDir)
+import           TestUtil (withCaps, withTempDir)
 
 world :: WorldTemplate
 world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2)]
@@ -69,10 +68,6 @@ captured act = withTempDir $ \dir -> do
     readAll f = do
       s <- readFile f
       length s `seq` pure s
-
--- | Run an action on @k@ capabilities.
-withCaps :: Int -> IO a -> IO a
-withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
 
 -- | A text with its wall-clock times blanked: the log's and the result's
 -- @"wallTime":@ numbers, the summary line's wall time and speed, and the

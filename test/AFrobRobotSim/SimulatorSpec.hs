@@ -7,13 +7,13 @@
 module AFrobRobotSim.SimulatorSpec (spec) where
 
 import           Control.Concurrent (myThreadId)
-import           Control.Exception (AsyncException (..), ErrorCall (..), bracket, evaluate, finally, throw, try)
+import           Control.Exception (AsyncException (..), ErrorCall (..), evaluate, finally, throw, try)
 import qualified Data.ByteString   as BS
 import qualified Data.ByteString.Char8 as BC
 import           Data.IORef        (atomicModifyIORef', newIORef, readIORef)
 import           Data.List         (isInfixOf, isPrefixOf, sort)
 import qualified Data.Set          as Set
-import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
+import           GHC.Conc          (getNumCapabilities)
 import           GHC.IO.Handle     (hDuplicate, hDuplicateTo)
 import           System.Directory  (createDirectory, listDirectory)
 import           System.FilePath   ((</>))
@@ -23,7 +23,7 @@ import           Test.Hspec        hiding (after)
 
 import           AFrob             hiding (forAll)
 import           AFrobRobotSim
-import           TestUtil (withTempDir)
+import           TestUtil (withCaps, withTempDir)
 
 -- | The snapshot at (about) time t of a run with step dt.
 at :: DTime -> Double -> [WorldState] -> WorldState
@@ -238,7 +238,6 @@ spec = do
           returnA -< mrFinalize (ddVelTR (if rsIsStuck sbi then -0.05 else v) (turn + 0.2 * sin (t + rfLeft sbi))
                                  `mrMerge` tcoPrintMessage (tag ping (show (rfRight sbi, near, take 1 (aotBalls sbi), tciKey sbi))))
         cfg = defaultSimConfig { simOdometryNoise = 0.02, simSeed = 7, simKeys = [(0.5, 'a'), (1.5, 'b')] }
-        withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
         -- the text of a run's first n snapshots, on k capabilities (each
         -- call makes its run anew: the module is compiled without full
         -- laziness and common subexpressions)

@@ -7,20 +7,16 @@
 module AFrobRobotSim.WorkersSpec (spec) where
 
 import           Control.Concurrent (threadDelay)
-import           Control.Exception (ErrorCall (..), bracket, evaluate, try)
+import           Control.Exception (ErrorCall (..), evaluate, try)
 import           Control.Monad     (forM_)
 import           Data.IORef        (IORef, atomicModifyIORef', newIORef, readIORef, writeIORef)
 import           Data.List         (foldl')
-import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
 import           System.IO.Unsafe  (unsafePerformIO)
 import           Test.Hspec
 import           Test.QuickCheck
 
 import           AFrobRobotSim.Workers
-
--- | Run an action on @k@ capabilities.
-withCaps :: Int -> IO a -> IO a
-withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
+import           TestUtil (withCaps)
 
 -- | Some work that depends on its arguments (so that no two elements, and
 -- no two runs, share it): a sum over @n@ numbers.
