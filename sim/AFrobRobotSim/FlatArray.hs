@@ -66,11 +66,7 @@ data MW8Arr s = MW8Arr (MutableByteArray# s)
 -- | A new array of @n@ 'Int's, all @v@.
 newIntArr :: Int -> Int -> ST s (MIntArr s)
 newIntArr (I# n) (I# v) = ST $ \s -> case newByteArray# (n *# 8#) s of
-  (# s1, a #) -> case setIntArray a 0# n v s1 of s2 -> (# s2, MIntArr a #)
-  where
-    setIntArray a i m x s
-      | isTrue# (i >=# m) = s
-      | otherwise         = setIntArray a (i +# 1#) m x (writeIntArray# a i x s)
+  (# s1, a #) -> case fillInts a n v s1 of s2 -> (# s2, MIntArr a #)
 
 -- | A new array of @n@ 'Int's whose contents are unspecified, for a
 -- caller that writes every entry before it reads it (no pass to set them).
@@ -83,11 +79,15 @@ newIntArrUnset (I# n) = ST $ \s -> case newByteArray# (n *# 8#) s of
 -- of 8 is one cache line.
 newLineIntArr :: Int -> Int -> ST s (MIntArr s)
 newLineIntArr (I# n) (I# v) = ST $ \s -> case newAlignedPinnedByteArray# (n *# 8#) 64# s of
-  (# s1, a #) -> case setIntArray a 0# n v s1 of s2 -> (# s2, MIntArr a #)
+  (# s1, a #) -> case fillInts a n v s1 of s2 -> (# s2, MIntArr a #)
+
+-- The first @n@ 'Int's of an array set to @v@.
+fillInts :: MutableByteArray# s -> Int# -> Int# -> State# s -> State# s
+fillInts a n v = go 0#
   where
-    setIntArray a i m x s
-      | isTrue# (i >=# m) = s
-      | otherwise         = setIntArray a (i +# 1#) m x (writeIntArray# a i x s)
+    go i s
+      | isTrue# (i >=# n) = s
+      | otherwise         = go (i +# 1#) (writeIntArray# a i v s)
 
 -- | A new array of @n@ numbers (their values unspecified).
 newDblArr :: Int -> ST s (MDblArr s)
