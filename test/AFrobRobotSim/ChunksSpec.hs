@@ -30,10 +30,10 @@ planOne apart r o = (apart, r, o)
 
 -- | Every list of 'stepEvery', its start first.
 allLists :: Bool -> Int -> IO ((), [Int], [Int], [(Int, (Double, Int, Int))])
-allLists parallel n = do
+allLists par n = do
   let agents = [0 .. n - 1]
       robots = map (* 3) agents
-      (s, os, as, ps) = stepEvery parallel () agents robots stepOne planOne
+      (s, os, as, ps) = stepEvery par () agents robots stepOne planOne
   _ <- evaluate s
   _ <- evaluate (sum os + sum as + sum [ r + o | (r, (_, _, o)) <- ps ])
   pure (s, os, as, ps)
@@ -41,21 +41,21 @@ allLists parallel n = do
 spec :: Spec
 spec = describe "stepEvery" $ do
   it "gives every robot's output, next agent and plan, in order, on one capability or two, parallel or not" $
-    forM_ [1, 2] $ \k -> withCaps k $ forM_ [False, True] $ \parallel -> forM_ sizes $ \n -> do
-      got <- allLists parallel n
+    forM_ [1, 2] $ \k -> withCaps k $ forM_ [False, True] $ \par -> forM_ sizes $ \n -> do
+      got <- allLists par n
       let want = [ (i * 1000000 + i * 1000 + 3 * i, i + 1, (3 * i, (fromIntegral (4 * i), 3 * i, i * 1000000 + i * 1000 + 3 * i)))
                  | i <- [0 .. n - 1] ]
           (_, os, as, ps) = got
-      (k, parallel, n, os, as, ps)
-        `shouldBe` (k, parallel, n, [ o | (o, _, _) <- want ], [ a | (_, a, _) <- want ], [ p | (_, _, p) <- want ])
+      (k, par, n, os, as, ps)
+        `shouldBe` (k, par, n, [ o | (o, _, _) <- want ], [ a | (_, a, _) <- want ], [ p | (_, _, p) <- want ])
 
   it "fails with the first failing robot's error, in order, whoever computes the later ones" $
-    forM_ [1, 2] $ \k -> withCaps k $ forM_ [False, True] $ \parallel -> do
+    forM_ [1, 2] $ \k -> withCaps k $ forM_ [False, True] $ \par -> do
       let n = 1000
           failing i a r
             | i == 37 || i == 80 || i == 900 = errorWithoutStackTrace ("robot " ++ show i)
             | otherwise                       = stepOne i a r
-          (s, os, _, _) = stepEvery parallel () [0 .. n - 1] (map (* 3) [0 .. n - 1]) failing planOne
+          (s, os, _, _) = stepEvery par () [0 .. n - 1] (map (* 3) [0 .. n - 1]) failing planOne
       _ <- evaluate s
       r <- try (evaluate (sum os))
-      (k, parallel, either (\(ErrorCall m) -> m) show r) `shouldBe` (k, parallel, "robot 37")
+      (k, par, either (\(ErrorCall m) -> m) show r) `shouldBe` (k, par, "robot 37")

@@ -9,11 +9,10 @@ module AFrobRobotSim.PipelineSpec (spec) where
 
 import           Control.Concurrent (forkIO, myThreadId, threadDelay, throwTo)
 import           Control.Concurrent.MVar
-import           Control.Exception (AsyncException (..), ErrorCall (..), bracket, fromException, throwIO)
+import           Control.Exception (AsyncException (..), ErrorCall (..), fromException, throwIO)
 import           Control.Monad     (forM_, when)
 import           Data.IORef
-import           GHC.Conc          (ThreadStatus (..), getNumCapabilities, setNumCapabilities,
-                                    threadStatus)
+import           GHC.Conc          (ThreadStatus (..), threadStatus)
 import           Test.Hspec
 
 import           AFrobRobotSim.Pipeline
