@@ -21,12 +21,17 @@
 # the line, not the symbol. --delay MS
 # starts sampling MS milliseconds after the program starts (perf record
 # -D), to leave out a world's construction. Needs perf (Debian package
-# linux-perf) and addr2line (binutils). For example:
+# linux-perf) and addr2line and readelf (binutils), and a kernel that
+# lets the user sample (root, or kernel.perf_event_paranoid at most 2;
+# Debian's default, 3, allows root only). afrp-bench runs from the
+# repository's root: a relative path among its arguments (criterion's
+# --csv, say) is taken from there. For example:
 #
 #   bench/profile.sh -- --steady-with bench 10000 200 +RTS -N1
 #
 # The twentieth round of bench/README.md was measured this way.
 set -euo pipefail
+export LC_ALL=C
 cd "$(dirname "$0")/.."
 source bench/cores/lib.sh
 top=25
@@ -43,31 +48,37 @@ if [ $# -eq 0 ]; then
   echo "bench/profile.sh: no afrp-bench arguments (usage: bench/profile.sh [--top N] [--delay MS] -- AFRP-BENCH-ARGUMENTS)" >&2
   exit 2
 fi
-for tool in perf addr2line; do
+for tool in perf addr2line readelf; do
   command -v "$tool" >/dev/null || { echo "bench/profile.sh: $tool not found (Debian: apt-get install -y linux-perf binutils)" >&2; exit 2; }
 done
 opts=(-v0 --enable-benchmarks --builddir dist-profile --ghc-options=-g1)
 cabal build "${opts[@]}" afrp-bench
 bin=$(cabal list-bin "${opts[@]}" afrp-bench)
+# (perf script prints the addresses a program ran at, which addr2line
+# takes as they are only for a program loaded where it was linked)
+if ! readelf -h "$bin" | grep -q 'Type: *EXEC'; then
+  echo "bench/profile.sh: $bin is position-independent; its sampled addresses cannot be named (build it without -pie)" >&2
+  exit 1
+fi
 work=$(mktemp -d /tmp/afrp-profile.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 record=(perf record -q -e cpu-clock -F 4000 -o "$work/perf.data")
 if [ -n "$delay" ]; then record+=(-D "$delay"); fi
 "${record[@]}" -- "$bin" "$@" >&2
 # every sample: its address, and the object it is in
-perf script -i "$work/perf.data" -F ip,dso 2>/dev/null | awk '{print $1, $2}' > "$work/samples"
+perf script -i "$work/perf.data" -F ip,dso | awk '{print $1, $2}' > "$work/samples"
 total=$(wc -l < "$work/samples")
 if [ "$total" -eq 0 ]; then echo "bench/profile.sh: perf recorded no samples" >&2; exit 1; fi
 # afrp-bench's addresses named by addr2line (function and file:line), the
 # others by their object; then counted by name
 awk -v bin="$bin" '$2 == "(" bin ")" {print $1}' "$work/samples" | sort -u > "$work/ips"
-if [ -s "$work/ips" ]; then
-  sed 's/^/0x/' "$work/ips" | addr2line -f -e "$bin" | paste - - > "$work/names"
-  paste "$work/ips" "$work/names" > "$work/table"
-else
-  : > "$work/table"
+if [ ! -s "$work/ips" ]; then
+  echo "bench/profile.sh: none of the $total samples is in $bin (perf script names it otherwise?)" >&2
+  exit 1
 fi
-awk -v bin="$bin" -v top="$top" -v total="$total" -v root="$PWD/" '
+sed 's/^/0x/' "$work/ips" | addr2line -f -e "$bin" | paste - - > "$work/names"
+paste "$work/ips" "$work/names" > "$work/table"
+awk -v bin="$bin" -v top="$top" -v total="$total" -v root="$(pwd -P)/" '
   # GHC'"'"'s z-encoding of names, decoded (the common cases)
   function decode(s,   out, i, c, d) {
     out = ""
@@ -95,7 +106,7 @@ awk -v bin="$bin" -v top="$top" -v total="$total" -v root="$PWD/" '
     sub(/^[a-z][a-z0-9-]*-[0-9.]+(-inplace|-[A-Za-z0-9]+)?_/, "", out)
     return out
   }
-  FNR == NR { fn[$1] = decode($2); line[$1] = $3; next }
+  FILENAME == ARGV[1] { fn[$1] = decode($2); line[$1] = $3; next }
   {
     if ($2 == "(" bin ")" && ($1 in fn)) {
       where = line[$1]
@@ -108,7 +119,7 @@ awk -v bin="$bin" -v top="$top" -v total="$total" -v root="$PWD/" '
     byline[key]++; byfn[f]++
   }
   END {
-    printf "%d samples at 4000 a second\n\nhottest source lines (nearest symbol, file:line):\n", total
+    printf "%d samples (asked for at 4000 a second)\n\nhottest source lines (nearest symbol, file:line):\n", total
     for (k in byline) printf "%6.2f%% %7d  %s\n", 100 * byline[k] / total, byline[k], k | "sort -rn | head -" top
     close("sort -rn | head -" top)
     printf "\nhottest symbols:\n"

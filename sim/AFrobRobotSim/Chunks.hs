@@ -1,8 +1,11 @@
 {-# LANGUAGE BangPatterns  #-}
 {-# LANGUAGE UnboxedTuples #-}
--- The chunks of a parallel step are blackholed as soon as a thread enters
--- them, so that a thread that needs a chunk another is computing waits for
--- it instead of computing it again.
+-- The chunks of a parallel step must be blackholed as soon as a thread
+-- enters them, so that a thread that needs a chunk another is computing
+-- waits for it instead of computing it again. 'stepEvery' is inlined
+-- where it is used, and its chunks' thunks are compiled there: a module
+-- that uses it needs this flag too ("AFrobRobotSim.Simulator" has it).
+-- Here it covers what is not inlined ('firstChunk').
 {-# OPTIONS_GHC -feager-blackholing #-}
 -- |
 -- Module      : AFrobRobotSim.Chunks

@@ -33,6 +33,7 @@ module AFrobRobotSim.Clearance
   , clearanceAt
   , clearanceCap
   , clearanceQuantum
+  , clearanceQuanta
   , clearanceCellSize
   ) where
 
@@ -60,8 +61,8 @@ clearanceCap = 1
 
 -- | The step of the bounds a cell holds: a 255th of 'clearanceCap' (about
 -- 4 mm). Each bound is the largest multiple of it not above the distance
--- computed for the cell, so it is still a lower bound, and at most a
--- quantum less than that distance.
+-- computed for the cell ('clearanceQuanta'), so it is still a lower bound,
+-- and less than a quantum below that distance.
 clearanceQuantum :: Double
 clearanceQuantum = clearanceCap / 255
 
@@ -98,12 +99,25 @@ clearanceOf bi (x0, y0, x1, y1)
            clearanceCap
     fromList xs = runST $ do
       arr <- newW8Arr (length xs)
-      mapM_ (\(i, d) -> writeW8 arr i (quanta d)) (zip [0 ..] xs)
+      mapM_ (\(i, d) -> writeW8 arr i (fromIntegral (clearanceQuanta d))) (zip [0 ..] xs)
       freezeW8 arr
-    -- (the product rounds, so the quotient is checked: never above d)
-    quanta d = let q = max 0 (min 255 (floor (d * 255) :: Int))
-                   q' = if fromIntegral q * clearanceQuantum > d then max 0 (q - 1) else q
-               in fromIntegral q'
+
+-- | The bound a cell holds for the distance @d@, in quanta: the largest
+-- @q@ from 0 to 255 with @q * 'clearanceQuantum' <= d@ (the product as
+-- 'clearanceAt' computes it), so 255 for @d >= 'clearanceCap'@, and 0 for
+-- a @d@ that is not positive (or NaN).
+clearanceQuanta :: Double -> Int
+clearanceQuanta d
+  | not (d > 0) = 0
+  | otherwise   = down (up (max 0 (min 255 (floor (min 1 d * 255)))))
+  where
+    -- (@d * 255@ rounds, so the first guess can be a quantum off either
+    -- way: 33 quanta's distance times 255 came to 32.99...)
+    fits q = fromIntegral q * clearanceQuantum <= d
+    up q   | q < 255 && fits (q + 1) = up (q + 1)
+           | otherwise               = q
+    down q | q > 0 && not (fits q) = down (q - 1)
+           | otherwise             = q
 
 -- | The bound for the cell holding the point @(x, y)@: no box is nearer to
 -- the point than this. 0 for a point outside the grid (or not finite).

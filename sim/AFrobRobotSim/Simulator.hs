@@ -1,10 +1,11 @@
 {-# LANGUAGE BangPatterns        #-}
 {-# LANGUAGE UnboxedTuples       #-}
 {-# LANGUAGE ScopedTypeVariables #-}
--- Each robot's step is made here and computed inside its chunk
--- ("AFrobRobotSim.Chunks"), by whichever thread computes the chunk; like
--- the chunks, its thunks are blackholed as soon as a thread enters them,
--- so that no two threads compute one.
+-- The chunks of a parallel step ("AFrobRobotSim.Chunks"'s 'stepEvery',
+-- inlined here, so that their thunks are compiled in this module) and
+-- each robot's step in them are blackholed as soon as a thread enters
+-- them, so that a thread that needs a chunk another is computing waits
+-- for it instead of computing it again. Do not drop this flag.
 {-# OPTIONS_GHC -feager-blackholing #-}
 -- |
 -- Module      : AFrobRobotSim.Simulator

@@ -26,6 +26,21 @@ genBoxes h = do
 
 spec :: Spec
 spec = do
+  describe "clearanceQuanta" $ do
+    it "is the largest number of quanta, up to 255, whose distance is at most the given one" $
+      property $ forAll (oneof [ choose (0, 1.2)
+                               , (\k -> fromIntegral k * clearanceQuantum) <$> chooseInt (0, 260)
+                               , (\k e -> fromIntegral (k :: Int) * clearanceQuantum + e) <$> chooseInt (0, 255) <*> elements [-1e-15, 1e-15] ]) $ \d ->
+        let q = clearanceQuanta d
+        in counterexample (show (d, q)) $
+             q >= 0 && q <= 255 && fromIntegral q * clearanceQuantum <= max 0 d
+               && (q == 255 || fromIntegral (q + 1) * clearanceQuantum > d)
+    it "is k for each multiple of a quantum k times, and 255 from the cap on" $ do
+      [ clearanceQuanta (fromIntegral k * clearanceQuantum) | k <- [0 .. 255 :: Int] ] `shouldBe` [0 .. 255]
+      map clearanceQuanta [clearanceCap, 1.5, 1 / 0] `shouldBe` [255, 255, 255]
+    it "is 0 for a distance that is not positive, or NaN" $
+      map clearanceQuanta [0, -0, -1, -1 / 0, 0 / 0] `shouldBe` [0, 0, 0, 0, 0]
+
   describe "clearanceAt" $ do
     it "is never more than the distance from the point to any box" $
       property $ forAll (elements [5, 20, 200]) $ \h -> forAll (genBoxes h) $ \bs ->
