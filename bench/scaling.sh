@@ -41,7 +41,7 @@ if [ "${#cpus[@]}" -ge 2 ]; then
   if build_pingpong "$build"; then two=yes; fi
 fi
 latency() {
-  if [ $two = yes ]; then latency_ns "$build/pingpong" "${cpus[0]}" "${cpus[1]}" || echo -; else echo -; fi
+  if [ $two = yes ]; then latency_ns bench/scaling.sh "$build/pingpong" "${cpus[0]}" "${cpus[1]}" || echo -; else echo -; fi
 }
 # a run on the first two processors (all of them with fewer)
 on2() {
@@ -60,15 +60,12 @@ row() {  # what robots side cores steps -- afrp-bench arguments
     try=$(on2 "$bin" "$@" +RTS "${rts[@]}" -RTS)
     echo "$try" >&2
     local tr
-    tr=$(wall_rate <<<"$try")
-    case "$tr" in
-      '' | *[!0-9]*) echo "bench/scaling.sh: no robot-steps per second in afrp-bench's output: $try" >&2; exit 1 ;;
-    esac
+    tr=$(wall_rate bench/scaling.sh <<<"$try")
     if [ "$tr" -gt "$best" ]; then best=$tr; line=$try; fi
   done
   # "... N robot-steps/s (wall), X x real time (...; CPU ...: ..., U us each; ...)"
   local rate x us
-  rate=$(wall_rate <<<"$line")
+  rate=$(wall_rate bench/scaling.sh <<<"$line")
   x=$(sed -E 's/.*, +([0-9.]+)x real time.*/\1/' <<<"$line")
   us=$(sed -E 's/.*, ([0-9.]+) us each.*/\1/' <<<"$line")
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$what" "$robots" "$side" "$cores" "$steps" "$rate" "$x" "$us" "$load" "$lat" >> "$out"

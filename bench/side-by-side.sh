@@ -48,22 +48,12 @@ build_pingpong "$build"
 # every run on the two processors measured (the runtime's threads may
 # move between them, as on any two)
 on2() { taskset -c "$first,$second" "$@"; }
-# robot-steps per second from a file of afrp-bench's output, or a
-# message and exit 1 if it has none
-rate() {
-  local v
-  v=$(wall_rate < "$1")
-  case "$v" in
-    '' | *[!0-9]*) echo "bench/side-by-side.sh: no robot-steps per second in afrp-bench's output: $(cat "$1")" >&2; exit 1 ;;
-  esac
-  echo "$v"
-}
+# robot-steps per second from a file of afrp-bench's output (a message
+# and a failure if it has none)
+rate() { wall_rate bench/side-by-side.sh < "$1"; }
 out=$build/rounds
 for ((r = 1; r <= rounds; r++)); do
-  lat=$(latency_ns "$build/pingpong" "$first" "$second")
-  case "$lat" in
-    '' | *[!0-9]*) echo "bench/side-by-side.sh: no latency from pingpong: '$lat'" >&2; exit 1 ;;
-  esac
+  lat=$(latency_ns bench/side-by-side.sh "$build/pingpong" "$first" "$second")
   on2 "$bin" --steady "$robots" "$steps" +RTS -N1 -RTS > "$build/one"
   on2 "$bin" --side-by-side "$robots" "$steps" +RTS -N2 -RTS > "$build/side"
   on2 "$bin" --steady "$robots" "$steps" +RTS -N2 -RTS > "$build/par"

@@ -37,14 +37,28 @@ build_pingpong() {
   "${CC:-cc}" -O2 -Wall -Wextra -pthread bench/cores/pingpong.c -o "$1/pingpong"
 }
 
-# latency_ns PINGPONG A B: the one-way latency between processors A and
-# B, in nanoseconds, as PINGPONG measures it.
-latency_ns() {
-  "$1" "$2" "$3" | sed -E 's/.*one-way ([0-9]+) ns.*/\1/'
+# whole_number SCRIPT WHAT TEXT: prints TEXT if it is a whole number;
+# otherwise says that SCRIPT found no WHAT and returns 1.
+whole_number() {
+  case "$3" in
+    '' | *[!0-9]*) echo "$1: no $2 (got '$3')" >&2; return 1 ;;
+  esac
+  echo "$3"
 }
 
-# wall_rate: the robot-steps per second by the wall clock of an
-# afrp-bench --steady or --side-by-side line on standard input.
+# latency_ns SCRIPT PINGPONG A B: the one-way latency between processors
+# A and B, in nanoseconds, as PINGPONG measures it; returns 1, with a
+# message, when PINGPONG gives none.
+latency_ns() {
+  whole_number "$1" "latency from pingpong" "$("$2" "$3" "$4" | sed -E 's/.*one-way ([0-9]+) ns.*/\1/')"
+}
+
+# wall_rate SCRIPT: the robot-steps per second by the wall clock of an
+# afrp-bench --steady or --side-by-side line on standard input; returns
+# 1, with a message, when the line has none.
 wall_rate() {
-  sed -E 's/^.*: +([0-9]+) robot-steps\/s \(wall\).*/\1/'
+  local line
+  line=$(cat)
+  whole_number "$1" "robot-steps per second in afrp-bench's output: $line" \
+    "$(sed -E 's/^.*: +([0-9]+) robot-steps\/s \(wall\).*/\1/' <<<"$line")"
 }
