@@ -190,20 +190,22 @@ rayGridList (RayGrid x0 y0 x1 y1 inv nx ny starts items _) px py qx qy k none
     dy = qy - py
 {-# INLINE rayGridList #-}
 
--- A cell's four lists again, in one cache line of its own, when they are
--- short: on a large world the lists and their offsets are megabytes, read
--- at a robot's place once per ray, and the two dependent reads (an offset,
--- then the list) missed the caches on most of a 10,000-robot world's rays;
--- the line is one read, shared by the robot's rays.
+-- A cell's four lists again, in half a cache line of its own, when they
+-- are short: on a large world the lists and their offsets are megabytes,
+-- read at a robot's place once per ray, and the two dependent reads (an
+-- offset, then the list) missed the caches on most of a 10,000-robot
+-- world's rays; the line is one read, shared by the robot's rays.
 --
--- Cell @c@ has the 8 words @lines[8 c .. 8 c + 7]@ (64 bytes, one cache
--- line: the array is aligned): word 0 holds the ends of the four lists,
--- counted from the cell's first entry, one byte each (quadrant @q@'s list
--- ends at byte @q@ and begins where quadrant @q - 1@'s ends, or at 0),
--- and words 1 to 7 the entries, two 32-bit halves each (entry @k@ in word
--- @1 + k / 2@, the low half for even @k@), in the lists' order. A cell
--- with more than 14 entries (or a box position that does not fit in 31
--- bits) has word 0 = -1: its lists are read from @starts@ and @items@.
+-- Cell @c@ has the 4 words @lines[4 c .. 4 c + 3]@ (32 bytes, half a
+-- cache line: the array is aligned), read as 16 halves of 16 bits, half
+-- @h@ in word @h / 4@ (the lowest half for @h@ divisible by 4). Half 0
+-- holds the ends of the four lists, counted from the cell's first entry,
+-- one nibble each (quadrant @q@'s list ends at nibble @q@ and begins where
+-- quadrant @q - 1@'s ends, or at 0), and halves 1 to 15 the entries, entry
+-- @k@ in half @k + 1@, in the lists' order. A cell with more than 15
+-- entries (or a box position that does not fit in 16 bits) has word 0 =
+-- -1: its lists are read from @starts@ and @items@. No short cell's word 0
+-- is -1: that would take three equal entries in one list.
 cellLines :: Int -> IntArr -> IntArr -> ST s IntArr
 cellLines cells starts items = do
   ls <- newLineIntArr (max 8 (lineWords * cells)) 0
@@ -214,22 +216,21 @@ cellLines cells starts items = do
                 ends  = [ indexI starts (4 * c + q + 1) - b | q <- [0 .. 3] ]
                 total = indexI starts (4 * c + 4) - b
                 its   = [ indexI items k | k <- [b .. b + total - 1] ]
-            if total <= lineEntries && all (\i -> i >= 0 && i < 2 ^ (31 :: Int)) its
-              then do
-                writeI ls (lineWords * c) (foldr (\(q, e) acc -> acc .|. (e `shiftL` (8 * q))) 0 (zip [0 ..] ends))
-                mapM_ (\(k, i) -> do
-                         let wd = lineWords * c + 1 + k `shiftR` 1
-                         v <- readI ls wd
-                         writeI ls wd (v .|. (i `shiftL` (32 * (k .&. 1)))))
-                      (zip [0 :: Int ..] its)
+            if total <= lineEntries && all (\i -> i >= 0 && i < 2 ^ (16 :: Int)) its
+              then mapM_ (\(h, v) -> do
+                            let wd = lineWords * c + h `shiftR` 2
+                            old <- readI ls wd
+                            writeI ls wd (old .|. (v `shiftL` (16 * (h .&. 3)))))
+                         ((0, foldr (\(q, e) acc -> acc .|. (e `shiftL` (4 * q))) 0 (zip [0 ..] ends))
+                          : zip [1 :: Int ..] its)
               else writeI ls (lineWords * c) (-1)
             cell (c + 1)
   cell 0
   freezeI ls
 
 lineWords, lineEntries :: Int
-lineWords   = 8
-lineEntries = 14
+lineWords   = 4
+lineEntries = 15
 
 -- | @rayGridLookup rg px py qx qy line list none@: the list of
 -- 'rayGridList' for the segment, read from its cell's cache line when the
@@ -250,9 +251,9 @@ rayGridLookup (RayGrid x0 y0 x1 y1 inv nx ny starts items ls) px py qx qy line l
           c = j * nx + i
           w = lineWords * c
           h = indexI ls w
-      in if h >= 0
-           then line ls w (if q == 0 then 0 else (h `shiftR` (8 * (q - 1))) .&. 255)
-                          ((h `shiftR` (8 * q)) .&. 255)
+      in if h /= -1
+           then line ls w (if q == 0 then 0 else (h `shiftR` (4 * (q - 1))) .&. 15)
+                          ((h `shiftR` (4 * q)) .&. 15)
            else let l = 4 * c + q in list items (indexI starts l) (indexI starts (l + 1))
   | otherwise = none
   where
@@ -262,5 +263,5 @@ rayGridLookup (RayGrid x0 y0 x1 y1 inv nx ny starts items ls) px py qx qy line l
 
 -- | Entry @k@ of the cell line at word @w@ (see 'rayGridLookup').
 rayGridLineItem :: IntArr -> Int -> Int -> Int
-rayGridLineItem ls w k = (indexI ls (w + 1 + k `shiftR` 1) `shiftR` (32 * (k .&. 1))) .&. 0xffffffff
+rayGridLineItem ls w k = let h = k + 1 in (indexI ls (w + h `shiftR` 2) `shiftR` (16 * (h .&. 3))) .&. 0xffff
 {-# INLINE rayGridLineItem #-}

@@ -134,7 +134,7 @@ spec = do
                      | seg <- probes bs ++ segs ]
     it "reads a cell's short lists from its line, and long ones from the lists" $ do
       -- 20 small boxes around the origin (every cell near them has more
-      -- than 14 entries) and one box 20 m away
+      -- than 15 entries) and one box 20 m away
       let bs = [ Box (x - 0.01) (y - 0.01) (x + 0.01) (y + 0.01)
                | k <- [0 .. 19 :: Int], let x = 0.02 * fromIntegral k, let y = 0.01 * fromIntegral k ]
                ++ [Box 20 20 20.2 20.2]
@@ -144,6 +144,26 @@ spec = do
       fmap fst (lookupFor rg (seg 19 19)) `shouldBe` Just True
       lookupFor rg (seg 0.1 0.05) `shouldBe` Just (False, [0 .. 19])
       lookupFor rg (seg 19 19) `shouldBe` Just (True, [20])
+    it "keeps in a line the lists of up to 15 entries with positions below 2^16, and no others" $ do
+      -- A cell's entries are those of its four lists. Boxes side by side
+      -- wholly north-east of the cell of (5, 5) (4.4 to 5.5 m on either
+      -- axis) are listed for its north-east quadrant only: 15 of them fit
+      -- its line, 16 do not. (The box at the origin, out of reach, makes
+      -- the domain hold the cell.) And one box at the largest position a
+      -- line holds, or one past it.
+      let row k = Box 0 0 0.01 0.01
+                  : [ Box x 5.6 (x + 0.01) 5.61 | j <- [0 .. k - 1 :: Int], let x = 5.6 + 0.02 * fromIntegral j ]
+          ne = (5, 5, 5.1, 5.1)
+          viaLine sg bs = fmap fst (lookupFor (rayGrid bs) sg)
+      viaLine ne (zip [0 ..] (row 15)) `shouldBe` Just True
+      viaLine ne (zip [0 ..] (row 16)) `shouldBe` Just False
+      lookupFor (rayGrid (zip [0 ..] (row 15))) ne `shouldBe` Just (True, [1 .. 15])
+      lookupFor (rayGrid (zip [0 ..] (row 16))) ne `shouldBe` Just (False, [1 .. 16])
+      let seg = (0.1, 0.005, 0.2, 0.105)
+          viaLine' = viaLine seg
+      viaLine' [(65535, Box 0 0 1 1)] `shouldBe` Just True
+      viaLine' [(65536, Box 0 0 1 1)] `shouldBe` Just False
+      lookupFor (rayGrid [(65535, Box 0 0 1 1), (7, Box 2 2 3 3)]) seg `shouldBe` Just (True, [65535, 7])
 
   describe "rayGrid" $ do
     it "has no lists, and answers for no segment, without boxes or when their extent overflows" $ do
