@@ -75,7 +75,9 @@ maxEntries = 2 ^ (22 :: Int)
 -- A list is @items [starts l .. starts (l + 1) - 1]@ for
 -- @l = 4 * (row * nx + column) + quadrant@, the quadrant 0 for directions
 -- @(>= 0, >= 0)@, 1 for @(< 0, >= 0)@, 2 for @(>= 0, < 0)@ and 3 for
--- @(< 0, < 0)@; each box at most once per list, in index order.
+-- @(< 0, < 0)@; each box at most once per list, in the order of the
+-- boxes given to 'rayGrid' ("AFrobRobotSim.SpatialIndex" gives them in
+-- the order of their positions).
 data RayGrid
   = NoRayGrid
   | RayGrid
@@ -205,10 +207,13 @@ rayGridList (RayGrid x0 y0 x1 y1 inv nx ny starts items _) px py qx qy k none
 -- @k@ in half @k + 1@, in the lists' order. A cell with more than 15
 -- entries (or a box position that does not fit in 16 bits) has word 0 =
 -- -1: its lists are read from @starts@ and @items@. No short cell's word 0
--- is -1: that would take three equal entries in one list.
+-- is -1: that would take half 0 = 0xffff (all 15 entries in quadrant 0's
+-- list) and that list's first three entries all 65535, where a list holds
+-- a box once and the boxes' positions are distinct; and were it -1, the
+-- cell would only be read from the full lists, with the same answer.
 cellLines :: Int -> IntArr -> IntArr -> ST s IntArr
 cellLines cells starts items = do
-  ls <- newLineIntArr (max 8 (lineWords * cells)) 0
+  ls <- newLineIntArr (max lineWords (lineWords * cells)) 0
   let cell !c
         | c >= cells = pure ()
         | otherwise  = do
@@ -233,7 +238,7 @@ lineWords   = 4
 lineEntries = 15
 
 -- | @rayGridLookup rg px py qx qy line list none@: the list of
--- 'rayGridList' for the segment, read from its cell's cache line when the
+-- 'rayGridList' for the segment, read from its cell's 32-byte line when the
 -- cell's lists are short: @line ls w s e@, where the list's boxes are
 -- @rayGridLineItem ls w k@ for @k@ from @s@ to @e - 1@; otherwise @list
 -- items s e@ as 'rayGridList' gives it; @none@ when the grid does not

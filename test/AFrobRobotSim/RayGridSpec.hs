@@ -161,9 +161,16 @@ spec = do
       lookupFor (rayGrid (zip [0 ..] (row 16))) ne `shouldBe` Just (False, [1 .. 16])
       let seg = (0.1, 0.005, 0.2, 0.105)
           viaLine' = viaLine seg
+      -- (the box is listed in all four quadrants: entry 2, 65535, is the
+      -- top half of the line's first word, which a check of that word's
+      -- sign would take for a long cell)
       viaLine' [(65535, Box 0 0 1 1)] `shouldBe` Just True
       viaLine' [(65536, Box 0 0 1 1)] `shouldBe` Just False
-      lookupFor (rayGrid [(65535, Box 0 0 1 1), (7, Box 2 2 3 3)]) seg `shouldBe` Just (True, [65535, 7])
+      lookupFor (rayGrid [(7, Box 2 2 3 3), (65535, Box 0 0 1 1)]) seg `shouldBe` Just (True, [7, 65535])
+      -- the other quadrants' lists, read from the line's other ends
+      lookupFor (rayGrid [(7, Box 2 2 3 3), (65535, Box 0 0 1 1)]) (0.1, 0.005, 0.0, 0.105) `shouldBe` Just (True, [65535])
+      lookupFor (rayGrid [(7, Box 2 2 3 3), (65535, Box 0 0 1 1), (9, Box (-0.5) (-0.5) (-0.4) (-0.4))])
+                (0.1, 0.005, 0.0, -0.095) `shouldBe` Just (True, [65535, 9])
 
   describe "rayGrid" $ do
     it "has no lists, and answers for no segment, without boxes or when their extent overflows" $ do
