@@ -47,6 +47,7 @@ import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.BallsSpec
 import qualified AFrobRobotSim.ChunksSpec
 import qualified AFrobRobotSim.RayCastSpec
+import qualified AFrobRobotSim.NearbySpec
 import qualified AFrobRobotSim.RayGridSpec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
@@ -119,6 +120,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Console"   AFrobRobotSim.ConsoleSpec.spec
+  describe "AFrobRobotSim.Nearby"  AFrobRobotSim.NearbySpec.spec
   describe "AFrobRobotSim.Options" AFrobRobotSim.OptionsSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
   describe "AFrobRobotSim.Balls" AFrobRobotSim.BallsSpec.spec
