@@ -47,6 +47,7 @@ import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.BallsSpec
 import qualified AFrobRobotSim.ChunksSpec
 import qualified AFrobRobotSim.RayCastSpec
+import qualified AFrobRobotSim.Run.SinksSpec
 import qualified AFrobRobotSim.NearbySpec
 import qualified AFrobRobotSim.RayGridSpec
 import qualified AFrobRobotSim.RenderSpec
@@ -136,6 +137,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Pipeline" AFrobRobotSim.PipelineSpec.spec
   describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec
   describe "AFrobRobotSim.Run"       AFrobRobotSim.RunSpec.spec
+  describe "AFrobRobotSim.Run.Sinks" AFrobRobotSim.Run.SinksSpec.spec
   describe "AFrobRobotSim.Sweep"     AFrobRobotSim.SweepSpec.spec
   describe "examples: section 2"     Examples.Section2Spec.spec
   describe "examples: section 3"     Examples.Section3Spec.spec

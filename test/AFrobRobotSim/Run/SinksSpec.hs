@@ -1,0 +1,116 @@
+-- | The outputs of a run ("AFrobRobotSim.Run.Sinks"), each fed the states
+-- of a short run of the default world by hand, as "AFrobRobotSim.Run"
+-- feeds them: what each writes, and that a write that fails at the end is
+-- reported in the outcome, not thrown. (The runner's whole path, with the
+-- command line, is "AFrobRobotSim.RunSpec"'s.)
+module AFrobRobotSim.Run.SinksSpec (spec) where
+
+import qualified Data.ByteString.Char8   as BC
+import           Data.IORef
+import           Data.List               (isInfixOf, isPrefixOf, sort)
+import           System.Directory        (listDirectory)
+import           System.FilePath         ((</>))
+import           Test.Hspec
+
+import           AFRP.Geometry           (Point2 (..), norm, (.-.))
+import           AFrob                   (constant, ddVelDiff, mrFinalize)
+import           AFrobRobotSim           (defaultWorld, simulate)
+import           AFrobRobotSim.Log       (LogSummary (..))
+import           AFrobRobotSim.Options
+import           AFrobRobotSim.Render
+import           AFrobRobotSim.Run.Sinks
+import           AFrobRobotSim.Simulator (RobotState (..), WorldState (..))
+import           AFrobRobotSim.World     (notesBounds)
+import           TestUtil                (withTempDir)
+
+-- | 101 states (1 s) of the default world, every robot driving a curve.
+states :: [WorldState]
+states = take 101 (simulate 0.01 defaultWorld ctl ctl)
+  where ctl _ = constant (mrFinalize (ddVelDiff 0.3 0.5))
+
+-- | A summary of that run.
+summary :: LogSummary
+summary = LogSummary 1 101 0 0.1 False Nothing []
+
+-- | Every state to the sink, in order, then its end.
+feed :: Sink -> IO Outcome
+feed sink = mapM_ (uncurry (sinkStep sink)) (zip [0 ..] states) >> sinkFinish sink summary
+
+-- | A frame that is the text of its trails (as pairs) and its time.
+trailsFrame :: [[Point2 Double]] -> WorldState -> BC.ByteString
+trailsFrame trails s = BC.pack (show (map (map (\(Point2 x y) -> (x, y))) trails, wsTime s))
+
+spec :: Spec
+spec = do
+  describe "Outcome" $
+    it "joins the failures and the lines written, each in order" $ do
+      let Outcome errs wrote = Outcome ["a"] ["1"] <> mempty <> Outcome ["b"] ["2", "3"]
+      (errs, wrote) `shouldBe` (["a", "b"], ["1", "2", "3"])
+
+  describe "framesSink" $ do
+    it "writes the frames of the steps picked, numbered from 0, and leaves no temporary file" $
+      withTempDir $ \dir -> do
+        count <- newIORef 0
+        sink <- framesSink defaultSimOptions { optOut = dir } 60 (\n -> n `mod` 25 == 0)
+                           (\_ s -> BC.pack (show (wsTime s))) count
+        Outcome errs _ <- feed sink
+        errs `shouldBe` []
+        readIORef count `shouldReturn` 5
+        files <- sort <$> listDirectory dir
+        files `shouldBe` [ "frame-00000" ++ show k ++ ".ppm" | k <- [0 .. 4 :: Int] ]
+        contents <- mapM (\f -> BC.unpack <$> BC.readFile (dir </> f)) files
+        contents `shouldBe` [ show (wsTime s) | (n, s) <- zip [0 :: Int ..] states, n `mod` 25 == 0 ]
+    it "gives the render each robot's trail: its start, then points more than a pixel apart" $
+      withTempDir $ \dir -> do
+        count <- newIORef 0
+        let scale = 60
+            px = 1 / scale
+        sink <- framesSink defaultSimOptions { optOut = dir, optTrails = True } scale (const True)
+                           trailsFrame count
+        _ <- feed sink
+        files <- sort <$> listDirectory dir
+        length files `shouldBe` length states
+        text <- BC.unpack <$> BC.readFile (dir </> last files)
+        let (trails, t) = read text :: ([[(Double, Double)]], Double)
+            final = last states
+            start = head states
+            pos r = let Point2 x y = robotPos r in (x, y)
+            dist (a, b) (c, d) = norm (Point2 a b .-. Point2 c d)
+        t `shouldBe` wsTime final
+        length trails `shouldBe` length (wsRobots final)
+        map (take 1) trails `shouldBe` [ [pos r] | r <- wsRobots start ]
+        -- consecutive points more than a pixel apart, and the robot now
+        -- within a pixel of its trail's newest point (or it would be added)
+        and [ dist a b > px | tr <- trails, (a, b) <- zip tr (drop 1 tr) ] `shouldBe` True
+        and [ dist (last tr) (pos r) <= px | (tr, r) <- zip trails (wsRobots final) ] `shouldBe` True
+        -- every robot moved several pixels in the second: the trails grew
+        map length trails `shouldSatisfy` all (> 2)
+
+  describe "svgSink" $
+    it "writes the picture at the end and says so" $
+      withTempDir $ \dir -> do
+        let file = dir </> "run.svg"
+        sink <- svgSink 10 (RenderStyle 60 False False, Scene notesBounds defaultWorld) file
+        Outcome errs wrote <- feed sink
+        errs `shouldBe` []
+        length wrote `shouldBe` 1
+        picture <- readFile file
+        ("<svg" `isInfixOf` picture) `shouldBe` True
+
+  describe "resultSink" $ do
+    it "writes one line of JSON at the end" $
+      withTempDir $ \dir -> do
+        let file = dir </> "result.jsonl"
+        sink <- resultSink "sinks-spec" defaultSimOptions file
+        Outcome errs _ <- feed sink
+        errs `shouldBe` []
+        ls <- lines <$> readFile file
+        length ls `shouldBe` 1
+        map ("{" `isPrefixOf`) ls `shouldBe` [True]
+    it "reports a write that fails at the end in the outcome, and does not throw" $
+      withTempDir $ \dir -> do
+        let file = dir </> "no-such-folder" </> "result.jsonl"
+        sink <- resultSink "sinks-spec" defaultSimOptions file
+        Outcome errs wrote <- feed sink
+        wrote `shouldBe` []
+        map (("cannot write " ++ show file) `isPrefixOf`) errs `shouldBe` [True]
