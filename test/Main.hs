@@ -41,6 +41,7 @@ import qualified AFrobRobotSim.LogSpec
 import qualified AFrobRobotSim.Log.RecordsSpec
 import qualified AFrobRobotSim.ReplayBrowserSpec
 import qualified AFrobRobotSim.ReplaySpec
+import qualified AFrobRobotSim.NearbySpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.OptionsSpec
 import qualified AFrobRobotSim.PhysicsSpec
@@ -48,7 +49,6 @@ import qualified AFrobRobotSim.BallsSpec
 import qualified AFrobRobotSim.ChunksSpec
 import qualified AFrobRobotSim.RayCastSpec
 import qualified AFrobRobotSim.Run.SinksSpec
-import qualified AFrobRobotSim.NearbySpec
 import qualified AFrobRobotSim.RayGridSpec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
@@ -121,7 +121,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Console"   AFrobRobotSim.ConsoleSpec.spec
-  describe "AFrobRobotSim.Nearby"  AFrobRobotSim.NearbySpec.spec
+  describe "AFrobRobotSim.Nearby" AFrobRobotSim.NearbySpec.spec
   describe "AFrobRobotSim.Options" AFrobRobotSim.OptionsSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
   describe "AFrobRobotSim.Balls" AFrobRobotSim.BallsSpec.spec

@@ -14,9 +14,10 @@
 -- their squared distances (no list or box per point: a packed world puts
 -- 50 robots within range of each), and every reading works from those.
 -- The tracker's list is sorted in the arrays too ('inRangeSorted'), a
--- band of distances at a time when many points are near. Every result is
--- exactly that of looking at every point of the index: the gathering
--- keeps every point within its distance, and the sort is stable.
+-- band of distances at a time when many points are near. The points
+-- gathered are exactly those a look at every point of the index finds
+-- within the distance, and the list is sorted by distance, then number,
+-- as a look at every point would sort it; 'nearestOf' is a lower bound.
 module AFrobRobotSim.Nearby
   ( -- * Gathering
     Gathered
@@ -37,9 +38,10 @@ import           AFrobRobotSim.FlatArray
 import           AFrobRobotSim.SpatialIndex
 
 -- | @gatherNear r grid skip px py@: the points of an index (all but number
--- @skip@; -1 skips none) within distance @r@ of @(px, py)@, in unboxed arrays (no list or box per point: a packed world
--- puts 50 robots within range of each): their indexes and squared
--- distances; their coordinates are read from the index itself. An index
+-- @skip@; -1 skips none) within distance @r@ of @(px, py)@ (a negative or
+-- NaN @r@ counts as 0), in unboxed arrays (no list or box per point: a
+-- packed world puts 50 robots within range of each): their indexes and
+-- squared distances; their coordinates are read from the index itself. An index
 -- of a few points is scanned, which costs less than walking the cells of
 -- the square around the range (in the 10-robot benchmark, that square
 -- covers most of the world); a larger one is walked cell by cell, into
@@ -47,7 +49,7 @@ import           AFrobRobotSim.SpatialIndex
 -- points is the walk's: nothing read from them depends on it (a ray takes
 -- the nearest hit, the tracker sorts).
 gatherNear :: Double -> PointIndex -> Int -> Double -> Double -> Gathered
-gatherNear tr grid skip px py
+gatherNear r grid skip px py
   | n <= 32   = gatherBy n (\add -> let scan !j !c
                                           | j >= n    = pure c
                                           | otherwise = add c j (pointX grid j) (pointY grid j) >>= scan (j + 1)
@@ -61,6 +63,7 @@ gatherNear tr grid skip px py
         !win -> gatherBy (windowSize win) (\add -> foldWindowCellsM win add 0)
   where
     n  = pointIndexCount grid
+    tr = max 0 r   -- (max 0 NaN is 0)
     -- the points a walk gives, into arrays of the given size
     gatherBy :: Int -> (forall s. (Int -> Int -> Double -> Double -> ST s Int) -> ST s Int) -> Gathered
     gatherBy cap walk = runST $ do
@@ -141,18 +144,19 @@ foldNear f z0 (Gathered _ grid k js d2s) sel = case sel of
 -- | @inRangeSorted range mk g@: the gathered points within @range@ (at
 -- most the distance they were gathered within) of the place, centre to
 -- centre (the distance as 'AFRP.Geometry.vector2RhoTheta' has it: the
--- square root of the same sum of squares), nearest first, in index order among equally near ones
--- (as a stable sort of all of them by distance would have them), each
+-- square root of the same sum of squares), nearest first, in index order
+-- among equally near ones (as a stable sort of all of them by distance
+-- would have them), each
 -- made by @mk d j x y@ from its distance, its number in the index and its
 -- coordinates there, evaluated as its list cell is made. Sorted in
 -- unboxed arrays, with no list or thunk per point: a packed world puts
 -- 50 robots within range of each, and sorting them as a list (an
 -- insertion sort, then a lazy merge sort) was most of a sample's cost.
 --
--- The list is made as it is read, and so is the sorting: more than
--- 'bandsAbove' points are first put into bands of distance ('bandOf':
--- below 1 m, 2 m, 3 m, and the rest of the range), and a band is sorted
--- when the list reaches it.
+-- The list is made as it is read, and so is the sorting: more than 16
+-- points are first put into bands of distance (below 1 m, 2 m, 3 m, and
+-- the rest of the range), and a band is sorted when the list reaches
+-- it.
 -- A band holds only distances above the previous band's, so the bands'
 -- sorted runs one after the other are the whole list sorted; a
 -- controller that reads the nearest few robots (the usual case) sorts
@@ -183,7 +187,8 @@ inRangeSorted range mk (Gathered _ grid n gjs gd2s)
 
 -- Up to how many gathered points 'inRangeSorted' sorts all at once (in
 -- the 1000-robot benchmark world about 5 are gathered; bands there cost
--- 620 instructions a robot-step more than they save).
+-- 620 instructions a robot-step more than they save). Also the most
+-- points 'nearestOf' looks at: beyond it, its bound is 0.
 bandsAbove :: Int
 bandsAbove = 16
 

@@ -31,15 +31,16 @@
 -- arena's boxes are indexed once, with the lists of boxes a ray from each
 -- place can reach ("AFrobRobotSim.RayGrid"): a ray is tested only against
 -- the boxes near its 3.25 m segment. The other robots within the
--- tracker's range of a robot are gathered once per sample, into unboxed
+-- tracker's range of a robot (and a millimetre more) are gathered once
+-- per sample, into unboxed
 -- arrays (index and squared distance), and shared by its
 -- tracker and its rays (every robot a ray can hit is among them). The
 -- tracker's lists are sorted in unboxed arrays (by distance, then
 -- template order: a merge sort, no list or thunk per point), and the lists
 -- are made as the controller reads them: with many robots in range, a
 -- band of distances at a time, so that a controller that reads the nearest
--- few sorts only the nearest bands ("AFrobRobotSim.Nearby" does both). The
--- readings are exactly those of testing everything.
+-- few sorts only the nearest bands ("AFrobRobotSim.Nearby" gathers and
+-- sorts them). The readings are exactly those of testing everything.
 module AFrobRobotSim.Sensors
   ( senseRobot
   , senseRobotApart

@@ -18,22 +18,36 @@ import           AFrobRobotSim.SpatialIndex
 data Case = Case [(Double, Double)] (Double, Double) Double Int
   deriving Show
 
--- | Up to 40 random points, or a lattice of 0.5 m (so that many are
--- equally far from a lattice place) of up to 400, over a square of up to
--- 20 m; a place in it; a distance of 1 to 6 m.
+-- | Up to 40 random points over a square of up to 20 m with a place in
+-- it, or a lattice of 0.5 m of up to 400 points (so that many are equally
+-- far from a lattice place) with a place on it or near it; a distance of
+-- 1 to 6 m.
 genCase :: Gen Case
 genCase = do
-  side <- elements [3, 8, 20]
-  pts <- oneof
-    [ do n <- chooseInt (0, 40)
-         vectorOf n ((,) <$> choose (0, side) <*> choose (0, side))
+  (pts, place) <- oneof
+    [ do side <- elements [3, 8, 20]
+         n <- chooseInt (0, 40)
+         pts <- vectorOf n ((,) <$> choose (0, side) <*> choose (0, side))
+         place <- (,) <$> choose (0, side) <*> choose (0, side)
+         pure (pts, place)
     , do k <- chooseInt (1, 20)
-         pure [ (0.5 * fromIntegral i, 0.5 * fromIntegral j) | i <- [0 .. k - 1], j <- [0 .. k - 1 :: Int] ] ]
-  place <- oneof [ (,) <$> choose (0, side) <*> choose (0, side)
-                 , (\i j -> (0.5 * fromIntegral i, 0.5 * fromIntegral j)) <$> chooseInt (0, 8) <*> chooseInt (0, 8 :: Int) ]
+         let pts = [ (0.5 * fromIntegral i, 0.5 * fromIntegral j) | i <- [0 .. k - 1], j <- [0 .. k - 1 :: Int] ]
+             side = 0.5 * fromIntegral (k - 1)
+         place <- oneof [ (\i j -> (0.5 * fromIntegral i, 0.5 * fromIntegral j)) <$> chooseInt (0, k - 1) <*> chooseInt (0, k - 1)
+                        , (,) <$> choose (0, side) <*> choose (0, side) ]
+         pure (pts, place) ]
   r <- elements [1, 2.5, 4.001] >>= \r0 -> oneof [pure r0, choose (1, 6)]
   skip <- chooseInt (-1, length pts - 1)
   pure (Case pts place r skip)
+
+-- | A property of every case, with the share of cases that reach the
+-- window's walk (more than 32 points) and the bands (more than 16
+-- gathered) checked.
+forCases :: Testable p => (Case -> p) -> Property
+forCases p = checkCoverage $ forAll genCase $ \c@(Case pts _ _ _) ->
+  cover 20 (length pts > 32) "the index's cells walked" $
+  cover 15 (length (reference c) > 16) "more than 16 gathered" $
+  p c
 
 -- | The index of the points, over their square (and the place).
 indexOf :: Case -> PointIndex
@@ -57,16 +71,23 @@ reference (Case pts (px, py) r skip) =
 
 spec :: Spec
 spec = do
-  describe "gatherNear, foldNear and allNear" $
+  describe "gatherNear, foldNear and allNear" $ do
     it "gather every point within the distance but the one skipped, and only those" $
-      property $ forAll genCase $ \c ->
+      forCases $ \c ->
         let g = gathered c
         in sort (foldNear (\acc x y d2 -> (x, y, d2) : acc) [] g (allNear g))
              === sort [ (x, y, d2) | (_, x, y, d2) <- reference c ]
+    it "gathers within 0 for a negative or NaN distance" $ do
+      let at0 n = Case ((0, 0) : [ (0.1 * fromIntegral i, 1) | i <- [1 .. n :: Int] ]) (0, 0)
+          found c = let g = gathered c in foldNear (\acc x y d2 -> (x, y, d2) : acc) [] g (allNear g)
+      -- 5 points (the index scanned) and 50 (its cells walked)
+      map found [at0 4 (-1) (-1), at0 49 (-1) (-1), at0 4 (0 / 0) (-1), at0 49 (0 / 0) (-1)]
+        `shouldBe` replicate 4 [(0, 0, 0)]
+      nearestOf (gathered (at0 49 (-1) 0)) `shouldBe` 0
 
   describe "selectNear" $
     it "selects the gathered points that pass the test, and foldNear visits those" $
-      property $ forAll genCase $ \c@(Case _ (px, _) _ _) ->
+      forCases $ \c@(Case _ (px, _) _ _) ->
         let g = gathered c
             keep x _ d2 = x >= px && d2 <= 4
         in sort (foldNear (\acc x y d2 -> (x, y, d2) : acc) [] g (selectNear keep g))
@@ -74,7 +95,7 @@ spec = do
 
   describe "nearestOf" $ do
     it "is the distance to the nearest gathered point, the distance gathered within if none, 0 beyond 16" $
-      property $ forAll genCase $ \c@(Case _ _ r _) ->
+      forCases $ \c@(Case _ _ r _) ->
         let ref = reference c
         in nearestOf (gathered c)
              === (if length ref > 16 then 0
@@ -84,14 +105,14 @@ spec = do
       nearestOf (gathered (row 16)) `shouldBe` sqrt ((5.2 - 5) * (5.2 - 5))
       nearestOf (gathered (row 17)) `shouldBe` 0
     it "is never above the distance to a point of the index not skipped" $
-      property $ forAll genCase $ \c@(Case pts (px, py) _ skip) ->
+      forCases $ \c@(Case pts (px, py) _ skip) ->
         let b = nearestOf (gathered c)
         in conjoin [ counterexample (show p) (b <= sqrt ((x - px) ^ (2 :: Int) + (y - py) ^ (2 :: Int)))
                    | (j, p@(x, y)) <- zip [0 ..] pts, j /= skip ]
 
   describe "inRangeSorted" $ do
     it "lists the points within the range, nearest first, in index order among equally near ones" $
-      property $ forAll genCase $ \c@(Case _ _ r _) -> forAll (elements [r, r / 2, 4]) $ \range ->
+      forCases $ \c@(Case _ _ r _) -> forAll (elements [r, r / 2, 4]) $ \range ->
         let range' = min r range
         in inRangeSorted range' (\d j x y -> (d, j, x, y)) (gathered c)
              === sortOn (\(d, j, _, _) -> (d, j))
