@@ -32,11 +32,13 @@
 -- The design that keeps a run's memory independent of its length: the
 -- simulation is one lazy list of world states walked once, and each output
 -- (the messages, the progress line, the frames with their trails, the SVG,
--- the log, the replay page) is a sink ("AFrobRobotSim.Run.Sinks"), a
--- strict fold with its own small state that takes every state and is
--- finished at the end; nothing else holds a state. Trails keep only points more than a pixel apart (at most
--- 20,000 a robot), the SVG at most 2,001 snapshots (as their robots'
--- centres in unboxed arrays, 16 bytes a robot). The replay page's
+-- the log, the replay page, the result line) is a sink
+-- ("AFrobRobotSim.Run.Sinks"), a strict fold with its own small state
+-- that takes every state and is finished at the end; nothing else holds
+-- a state. Trails keep only points more than a pixel apart (at most
+-- 40,000 a robot, the newest 20,000 drawn), the SVG fewer than 4,000
+-- snapshots (at most one every @max 1 (steps `div` 2000)@ steps, as
+-- their robots' centres in unboxed arrays, 16 bytes a robot). The replay page's
 -- recorder spools each frame's encoded line to a temporary file and streams
 -- it into the page at the end, so its memory is constant too; the page
 -- itself grows with the run (about 70 kB per simulated second of the

@@ -6,12 +6,13 @@
 --               states with a small state of its own.
 --
 -- "AFrobRobotSim.Run" walks a run's lazy list of world states once and
--- gives every state to each of its outputs, in order: the console
--- messages, the progress line, the PPM frames with their trails, the SVG,
--- the run log, the replay page and the result line. Each is a 'Sink': what
--- it does with a state ('sinkStep', which keeps no state, only what it
--- needs of it: trails of at most 20,000 points a robot, at most 2,001
--- snapshots of the SVG as their robots' centres in unboxed arrays) and
+-- gives every state to each of its outputs: the console messages, the
+-- progress line, the PPM frames with their trails, the SVG, the run log,
+-- the replay page and the result line. Each is a 'Sink': what it does
+-- with a state ('sinkStep', which keeps no world state, only what it
+-- needs of it: trails of at most 40,000 points a robot, the newest 20,000
+-- drawn; the SVG's snapshots, one every so many steps, as their robots'
+-- centres in unboxed arrays) and
 -- what it writes when the run ends ('sinkFinish', with the run's summary,
 -- however the run ended). So a run's memory does not grow with its length
 -- (but for the replay page's frames, which its recorder spools to a
@@ -80,7 +81,8 @@ stepOnly f = Sink f (const (pure mempty))
 
 -- | The robots' console messages, printed as they happen, each on its own
 -- line with what does not print (an escape sequence, a newline) escaped
--- ('printableLine'; the log and the replay page keep them as they are).
+-- ('AFrobRobotSim.Console.printableLine'; the log and the replay page
+-- keep them as they are).
 messagesSink :: Sink
 messagesSink = stepOnly $ \_ s -> unless (null (wsMessages s))
   (mapM_ (putStrLn . printableLine) (wsMessages s) >> hFlush stdout)
@@ -93,7 +95,8 @@ progressSink nSteps framesRef = stepOnly $ \n _ -> when (n `mod` 100 == 0) $ do
   hPutStr stderr (printf "\r%3d%%  %d frames " ((100 * n) `div` max 1 nSteps) frames)
 
 -- A trail: the points of a robot's path that are more than a pixel from
--- the previous one, newest first, at most 'trailMax'.
+-- the previous one, newest first: at most twice 'trailMax' (trimmed to
+-- 'trailMax' when it reaches that), the newest 'trailMax' drawn.
 data Trail = Trail !Int ![Position2]
 
 trailMax :: Int
@@ -113,8 +116,9 @@ trailPoints (Trail _ ps) = reverse (take trailMax ps)
 -- | @framesSink opts scale frameAt render count@: the PPM frames of the
 -- steps @frameAt@ picks (with the trails, when drawn), each rendered by
 -- @render@ and written atomically into the output folder as the run goes
--- (a temporary file, then a rename; a stopped run leaves no temporary
--- file); the count is shared with the progress line and the summary.
+-- (a temporary file, then a rename: a frame whose writing fails leaves
+-- its temporary file, which the sink's end removes); the count is shared
+-- with the progress line and the summary.
 framesSink :: SimOptions -> Double -> (Int -> Bool) -> ([[Position2]] -> WorldState -> BS.ByteString) -> IORef Int
            -> IO Sink
 framesSink opts scale frameAt render countRef = do
@@ -138,14 +142,15 @@ framesSink opts scale frameAt render countRef = do
         mempty <$ (try (removeFile (frameTemp (optOut opts) k)) :: IO (Either IOException ()))
   pure (Sink step finish)
 
--- | The SVG: at most 'svgMaxPoints' + 1 snapshots, taken every @every@
--- steps when a robot moved more than a pixel since the last one, and the
--- last state; written at the end. The first snapshot and the last state
--- are kept whole; the others only as their robots' centres ('Centres'),
--- which is all the picture draws of them, and each robot's track is made
--- as it is drawn ('svgOf'). (Kept whole, a 1000-robot world's 100 s
--- had 53 MB alive as the picture was drawn, and the snapshots, alive all
--- run long, were copied by every major collection.)
+-- | The SVG: snapshots taken every @every@ steps when a robot moved more
+-- than a pixel since the last one, and the last state; written at the
+-- end. The first snapshot and the last state
+-- are kept whole; the others only as their robots' centres (in unboxed
+-- arrays), which is all the picture draws of them, and each robot's
+-- track is made as it is drawn ('AFrobRobotSim.Render.SVG.svgOf'). (Kept
+-- whole, a 1000-robot world's 100 s had 53 MB alive as the picture was
+-- drawn, and the snapshots, alive all run long, were copied by every
+-- major collection.)
 svgSink :: Int -> (RenderStyle, Scene) -> FilePath -> IO Sink
 svgSink every (style, scene) file = do
   ref <- newIORef (Nothing, [], Nothing)

@@ -5,9 +5,10 @@
 -- command line, is "AFrobRobotSim.RunSpec"'s.)
 module AFrobRobotSim.Run.SinksSpec (spec) where
 
+import           Control.Exception       (ErrorCall, try)
 import qualified Data.ByteString.Char8   as BC
 import           Data.IORef
-import           Data.List               (isInfixOf, isPrefixOf, sort)
+import           Data.List               (isInfixOf, isPrefixOf, sort, tails)
 import           System.Directory        (listDirectory)
 import           System.FilePath         ((</>))
 import           Test.Hspec
@@ -15,6 +16,7 @@ import           Test.Hspec
 import           AFRP.Geometry           (Point2 (..), norm, (.-.))
 import           AFrob                   (constant, ddVelDiff, mrFinalize)
 import           AFrobRobotSim           (defaultWorld, simulate)
+import           AFrobRobotSim.JSON      (asArray, asNumber, member, parseJSON)
 import           AFrobRobotSim.Log       (LogSummary (..))
 import           AFrobRobotSim.Options
 import           AFrobRobotSim.Render
@@ -60,6 +62,21 @@ spec = do
         files `shouldBe` [ "frame-00000" ++ show k ++ ".ppm" | k <- [0 .. 4 :: Int] ]
         contents <- mapM (\f -> BC.unpack <$> BC.readFile (dir </> f)) files
         contents `shouldBe` [ show (wsTime s) | (n, s) <- zip [0 :: Int ..] states, n `mod` 25 == 0 ]
+    it "removes, once finished, the temporary file a failed frame left" $
+      withTempDir $ \dir -> do
+        count <- newIORef 0
+        -- (the frame of 0.75 s fails as it is written: its temporary file
+        -- is open by then)
+        sink <- framesSink defaultSimOptions { optOut = dir } 60 (\n -> n `mod` 25 == 0)
+                           (\_ s -> if wsTime s > 0.7 then errorWithoutStackTrace "no frame" else BC.pack (show (wsTime s))) count
+        r <- try (mapM_ (uncurry (sinkStep sink)) (zip [0 ..] states))
+        either (\e -> show (e :: ErrorCall)) (const "no failure") r `shouldBe` "no frame"
+        left <- sort <$> listDirectory dir
+        left `shouldBe` [ "frame-00000" ++ show k ++ ".ppm" | k <- [0 .. 2 :: Int] ] ++ ["frame-000003.ppm.tmp"]
+        Outcome errs _ <- sinkFinish sink summary
+        errs `shouldBe` []
+        kept <- sort <$> listDirectory dir
+        kept `shouldBe` take 3 left
     it "gives the render each robot's trail: its start, then points more than a pixel apart" $
       withTempDir $ \dir -> do
         count <- newIORef 0
@@ -93,9 +110,11 @@ spec = do
         sink <- svgSink 10 (RenderStyle 60 False False, Scene notesBounds defaultWorld) file
         Outcome errs wrote <- feed sink
         errs `shouldBe` []
-        length wrote `shouldBe` 1
+        map ("wrote " `isPrefixOf`) wrote `shouldBe` [True]
         picture <- readFile file
         ("<svg" `isInfixOf` picture) `shouldBe` True
+        -- each robot's track, one polyline each
+        length (filter ("<polyline" `isPrefixOf`) (tails picture)) `shouldBe` length (wsRobots (last states))
 
   describe "resultSink" $ do
     it "writes one line of JSON at the end" $
@@ -106,7 +125,18 @@ spec = do
         errs `shouldBe` []
         ls <- lines <$> readFile file
         length ls `shouldBe` 1
-        map ("{" `isPrefixOf`) ls `shouldBe` [True]
+        -- each robot's tally: where it ended and how far it went, step by step
+        let robotsOf txt = parseJSON txt >>= member "outcome" >>= member "robots" >>= asArray
+            field k v = member k v >>= asNumber
+            final = last states
+            travelled i = sum [ norm (robotPos (wsRobots b !! i) .-. robotPos (wsRobots a !! i))
+                              | (a, b) <- zip states (drop 1 states) ]
+        case robotsOf (concat ls) of
+          Left err -> expectationFailure err
+          Right rs -> do
+            map (field "x") rs `shouldBe` [ Right (let Point2 x _ = robotPos r in x) | r <- wsRobots final ]
+            [ either (const False) (\d -> abs (d - travelled i) < 1e-12) (field "distance" v)
+              | (i, v) <- zip [0 ..] rs ] `shouldBe` map (const True) (wsRobots final)
     it "reports a write that fails at the end in the outcome, and does not throw" $
       withTempDir $ \dir -> do
         let file = dir </> "no-such-folder" </> "result.jsonl"
