@@ -41,11 +41,11 @@ import           AFrobRobotSim.SpatialIndex
 -- @skip@; -1 skips none) within distance @r@ of @(px, py)@ (a negative or
 -- NaN @r@ counts as 0), in unboxed arrays (no list or box per point: a
 -- packed world puts 50 robots within range of each): their indexes and
--- squared distances; their coordinates are read from the index itself. An index
--- of a few points is scanned, which costs less than walking the cells of
--- the square around the range (in the 10-robot benchmark, that square
--- covers most of the world); a larger one is walked cell by cell, into
--- arrays as large as the points listed in those cells. The order of the
+-- squared distances; their coordinates are read from the index itself.
+-- An index of a few points is scanned, which costs less than walking the
+-- cells of the square around the range (in the 10-robot benchmark, that
+-- square covers most of the world); a larger one is walked cell by cell,
+-- into arrays as large as the points listed in those cells. The order of the
 -- points is the walk's: nothing read from them depends on it (a ray takes
 -- the nearest hit, the tracker sorts).
 gatherNear :: Double -> PointIndex -> Int -> Double -> Double -> Gathered

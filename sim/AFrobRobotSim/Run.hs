@@ -38,12 +38,12 @@
 -- a state. Trails keep only points more than a pixel apart (at most
 -- 40,000 a robot, the newest 20,000 drawn), the SVG fewer than 4,000
 -- snapshots (at most one every @max 1 (steps `div` 2000)@ steps, as
--- their robots' centres in unboxed arrays, 16 bytes a robot). The replay page's
--- recorder spools each frame's encoded line to a temporary file and streams
--- it into the page at the end, so its memory is constant too; the page
--- itself grows with the run (about 70 kB per simulated second of the
--- default world): leave it out (@--no-replay@) for very long runs and
--- write a log instead.
+-- their robots' centres in unboxed arrays, 16 bytes a robot). The
+-- replay page's recorder spools each frame's encoded line to a temporary
+-- file and streams it into the page at the end, so its memory is
+-- constant too; the page itself grows with the run (about 70 kB per
+-- simulated second of the default world): leave it out (@--no-replay@)
+-- for very long runs and write a log instead.
 --
 -- On several capabilities (@+RTS -N2@) the sinks take the states on a
 -- thread of their own ("AFrobRobotSim.Pipeline"), while the stepping

@@ -32,10 +32,9 @@
 -- place can reach ("AFrobRobotSim.RayGrid"): a ray is tested only against
 -- the boxes near its 3.25 m segment. The other robots within the
 -- tracker's range of a robot (and a millimetre more) are gathered once
--- per sample, into unboxed
--- arrays (index and squared distance), and shared by its
--- tracker and its rays (every robot a ray can hit is among them). The
--- tracker's lists are sorted in unboxed arrays (by distance, then
+-- per sample, into unboxed arrays (index and squared distance), and
+-- shared by its tracker and its rays (every robot a ray can hit is among
+-- them). The tracker's lists are sorted in unboxed arrays (by distance, then
 -- template order: a merge sort, no list or thunk per point), and the lists
 -- are made as the controller reads them: with many robots in range, a
 -- band of distances at a time, so that a controller that reads the nearest
