@@ -29,10 +29,9 @@
 -- sixteen per capability, at least 16 robots each), evaluated by a fixed
 -- pool of worker threads from the first, and by the stepping thread
 -- ("AFrobRobotSim.Chunks"; the threads are "AFrobRobotSim.Workers"'s).
--- The sensors' indexes are built and the
--- chunks handed out before the snapshot before the step is given to its
--- reader, so that the workers compute while the snapshot is read (by a
--- log writer, say). The stepping thread moves the robots against
+-- The sensors' indexes are built and the chunks handed out before the
+-- snapshot before the step is given to its reader, so that the workers
+-- compute while the snapshot is read (by a log writer, say). The stepping thread moves the robots against
 -- each other in template order (a robot's move depends on the moves of
 -- those before it), reading each chunk as it reaches it: a chunk no
 -- worker has taken, it computes; while it would wait for one a worker is

@@ -69,17 +69,25 @@ reference (Case pts (px, py) r skip) =
                   , let dx = x - px, let dy = y - py, let d2 = dx * dx + dy * dy
                   , d2 <= r * r ]
 
+-- | The points a fold over a selection visits: coordinates and squared
+-- distance.
+visited :: Gathered -> Some -> [(Double, Double, Double)]
+visited = foldNear (\acc x y d2 -> (x, y, d2) : acc) []
+
+-- | The reference's points: coordinates and squared distance.
+referencePoints :: Case -> [(Double, Double, Double)]
+referencePoints c = [ (x, y, d2) | (_, x, y, d2) <- reference c ]
+
 spec :: Spec
 spec = do
   describe "gatherNear, foldNear and allNear" $ do
     it "gather every point within the distance but the one skipped, and only those" $
       forCases $ \c ->
         let g = gathered c
-        in sort (foldNear (\acc x y d2 -> (x, y, d2) : acc) [] g (allNear g))
-             === sort [ (x, y, d2) | (_, x, y, d2) <- reference c ]
+        in sort (visited g (allNear g)) === sort (referencePoints c)
     it "gathers within 0 for a negative or NaN distance" $ do
       let at0 n = Case ((0, 0) : [ (0.1 * fromIntegral i, 1) | i <- [1 .. n :: Int] ]) (0, 0)
-          found c = let g = gathered c in foldNear (\acc x y d2 -> (x, y, d2) : acc) [] g (allNear g)
+          found c = let g = gathered c in visited g (allNear g)
       -- 5 points (the index scanned) and 50 (its cells walked)
       map found [at0 4 (-1) (-1), at0 49 (-1) (-1), at0 4 (0 / 0) (-1), at0 49 (0 / 0) (-1)]
         `shouldBe` replicate 4 [(0, 0, 0)]
@@ -90,8 +98,8 @@ spec = do
       forCases $ \c@(Case _ (px, _) _ _) ->
         let g = gathered c
             keep x _ d2 = x >= px && d2 <= 4
-        in sort (foldNear (\acc x y d2 -> (x, y, d2) : acc) [] g (selectNear keep g))
-             === sort [ (x, y, d2) | (_, x, y, d2) <- reference c, keep x y d2 ]
+        in sort (visited g (selectNear keep g))
+             === sort [ p | p@(x, y, d2) <- referencePoints c, keep x y d2 ]
 
   describe "nearestOf" $ do
     it "is the distance to the nearest gathered point, the distance gathered within if none, 0 beyond 16" $

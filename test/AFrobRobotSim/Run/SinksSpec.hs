@@ -12,6 +12,7 @@ import           Data.List               (isInfixOf, isPrefixOf, sort, tails)
 import           System.Directory        (listDirectory)
 import           System.FilePath         ((</>))
 import           Test.Hspec
+import           Text.Printf             (printf)
 
 import           AFRP.Geometry           (Point2 (..), norm, (.-.))
 import           AFrob                   (constant, ddVelDiff, mrFinalize)
@@ -38,6 +39,10 @@ summary = LogSummary 1 101 0 0.1 False Nothing []
 feed :: Sink -> IO Outcome
 feed sink = mapM_ (uncurry (sinkStep sink)) (zip [0 ..] states) >> sinkFinish sink summary
 
+-- | The name of frame @k@.
+frameName :: Int -> FilePath
+frameName = printf "frame-%06d.ppm"
+
 -- | A frame that is the text of its trails (as pairs) and its time.
 trailsFrame :: [[Point2 Double]] -> WorldState -> BC.ByteString
 trailsFrame trails s = BC.pack (show (map (map (\(Point2 x y) -> (x, y))) trails, wsTime s))
@@ -59,7 +64,7 @@ spec = do
         errs `shouldBe` []
         readIORef count `shouldReturn` 5
         files <- sort <$> listDirectory dir
-        files `shouldBe` [ "frame-00000" ++ show k ++ ".ppm" | k <- [0 .. 4 :: Int] ]
+        files `shouldBe` map frameName [0 .. 4]
         contents <- mapM (\f -> BC.unpack <$> BC.readFile (dir </> f)) files
         contents `shouldBe` [ show (wsTime s) | (n, s) <- zip [0 :: Int ..] states, n `mod` 25 == 0 ]
     it "removes, once finished, the temporary file a failed frame left" $
@@ -72,7 +77,7 @@ spec = do
         r <- try (mapM_ (uncurry (sinkStep sink)) (zip [0 ..] states))
         either (\e -> show (e :: ErrorCall)) (const "no failure") r `shouldBe` "no frame"
         left <- sort <$> listDirectory dir
-        left `shouldBe` [ "frame-00000" ++ show k ++ ".ppm" | k <- [0 .. 2 :: Int] ] ++ ["frame-000003.ppm.tmp"]
+        left `shouldBe` map frameName [0 .. 2] ++ [frameName 3 ++ ".tmp"]
         Outcome errs _ <- sinkFinish sink summary
         errs `shouldBe` []
         kept <- sort <$> listDirectory dir
