@@ -273,9 +273,12 @@ simulateRun prog opts ffmpeg world rcA rcB = do
                               else pure Nothing
   svg <- forM (optSvg opts) (svgSink svgEvery (style, scene))
   result <- forM (optResult opts) (resultSink prog opts)
-  let sinks = [ messagesSink | not (optQuiet opts) ]
-              ++ [ progressSink nSteps framesRef | tty, not (optQuiet opts) ]
+  -- (the progress line last: it counts the frames written up to and
+  -- including this step's)
+  let progress = tty && not (optQuiet opts)
+      sinks = [ messagesSink progress | not (optQuiet opts) ]
               ++ catMaybes (logAndReplay ++ [ frames, svg, result ])
+              ++ [ progressSink nSteps framesRef | progress ]
       -- the log and the page, which share each frame's line when the page
       -- keeps every frame period (the same frames)
       logAndReplay = case (mlog, (,) <$> mrec <*> optReplay opts) of
@@ -305,7 +308,7 @@ simulateRun prog opts ffmpeg world rcA rcB = do
       (produced, stopped) <- pipeline (batchFor nRobots) (\s -> () <$ evaluate (forceState s)) sinkAll states
       maybe (either endedBy (const (pure Finished)) produced) endedBy stopped
     else try (loop 0 states) >>= either endedBy pure
-  when tty (hPutStr stderr "\r                         \r")
+  when progress (hPutStr stderr eraseProgress)
   steps <- readIORef stepsRef
   nFrames <- readIORef framesRef
   end <- getMonotonicTime

@@ -25,6 +25,7 @@ module AFrobRobotSim.Run.Sinks
     -- * The outputs
   , messagesSink
   , progressSink
+  , eraseProgress
   , framesSink
   , svgSink
   , logSink
@@ -82,17 +83,29 @@ stepOnly f = Sink f (const (pure mempty))
 -- | The robots' console messages, printed as they happen, each on its own
 -- line with what does not print (an escape sequence, a newline) escaped
 -- ('AFrobRobotSim.Console.printableLine'; the log and the replay page
--- keep them as they are).
-messagesSink :: Sink
-messagesSink = stepOnly $ \_ s -> unless (null (wsMessages s))
-  (mapM_ (putStrLn . printableLine) (wsMessages s) >> hFlush stdout)
+-- keep them as they are). With 'True' ('progressSink' shows its line on
+-- the terminal), the progress line is erased first, so that a message
+-- starts a line of its own ('progressSink' draws it again).
+messagesSink :: Bool -> Sink
+messagesSink progress = stepOnly $ \_ s -> unless (null (wsMessages s)) $ do
+  when progress (hPutStr stderr eraseProgress >> hFlush stderr)
+  mapM_ (putStrLn . printableLine) (wsMessages s)
+  hFlush stdout
 
--- | The progress line on a terminal: every 100 steps, the share of the
--- @nSteps@ steps done and the count of frames written so far.
+-- | The progress line on a terminal: every 100 steps, and after a step
+-- whose console messages erased it ('messagesSink'), the share of the
+-- @nSteps@ steps done and the count of frames written so far (this
+-- step's included when the frames' sink comes before it).
 progressSink :: Int -> IORef Int -> Sink
-progressSink nSteps framesRef = stepOnly $ \n _ -> when (n `mod` 100 == 0) $ do
+progressSink nSteps framesRef = stepOnly $ \n s -> when (n `mod` 100 == 0 || not (null (wsMessages s))) $ do
   frames <- readIORef framesRef
   hPutStr stderr (printf "\r%3d%%  %d frames " ((100 * n) `div` max 1 nSteps) frames)
+
+-- | What erases the progress line: a carriage return, spaces over the
+-- longest line 'progressSink' draws for a run of fewer than 10^15
+-- frames, and a carriage return.
+eraseProgress :: String
+eraseProgress = "\r" ++ replicate 30 ' ' ++ "\r"
 
 -- A trail: the points of a robot's path that are more than a pixel from
 -- the previous one, newest first: at most twice 'trailMax' (trimmed to

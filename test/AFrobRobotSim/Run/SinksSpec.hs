@@ -5,12 +5,15 @@
 -- command line, is "AFrobRobotSim.RunSpec"'s.)
 module AFrobRobotSim.Run.SinksSpec (spec) where
 
-import           Control.Exception       (ErrorCall, try)
+import           Control.Exception       (ErrorCall, finally, try)
 import qualified Data.ByteString.Char8   as BC
 import           Data.IORef
 import           Data.List               (isInfixOf, isPrefixOf, sort, tails)
+import           GHC.IO.Handle           (hDuplicate, hDuplicateTo)
 import           System.Directory        (listDirectory)
 import           System.FilePath         ((</>))
+import           System.IO               (BufferMode (..), Handle, IOMode (..), hClose, hFlush, hSetBuffering,
+                                          stderr, stdout, withFile)
 import           Test.Hspec
 import           Text.Printf             (printf)
 
@@ -53,6 +56,20 @@ spec = do
     it "joins the failures and the lines written, each in order" $ do
       let Outcome errs wrote = Outcome ["a"] ["1"] <> mempty <> Outcome ["b"] ["2", "3"]
       (errs, wrote) `shouldBe` (["a", "b"], ["1", "2", "3"])
+
+  describe "messagesSink and progressSink" $
+    it "put a message on a line of its own: the progress line erased before it, drawn again after" $
+      withTempDir $ \dir -> do
+        frames <- newIORef (0 :: Int)
+        let file = dir </> "terminal"
+            sinks = [messagesSink True, progressSink 4 frames]
+            said k s = s { wsMessages = [ "hello" | k == (2 :: Int) ] }
+        withFile file WriteMode $ \h -> redirect stdout h $ redirect stderr h $ do
+          hSetBuffering stderr NoBuffering   -- (as on a terminal)
+          mapM_ (\(k, s) -> writeIORef frames k >> mapM_ (\sk -> sinkStep sk k (said k s)) sinks)
+                (zip [0 .. 3] states)
+        text <- readFile file
+        length text `seq` text `shouldBe` ("\r  0%  0 frames " ++ eraseProgress ++ "hello\n" ++ "\r 50%  2 frames ")
 
   describe "framesSink" $ do
     it "writes the frames of the steps picked, numbered from 0, and leaves no temporary file" $
@@ -149,3 +166,10 @@ spec = do
         Outcome errs wrote <- feed sink
         wrote `shouldBe` []
         map (("cannot write " ++ show file) `isPrefixOf`) errs `shouldBe` [True]
+
+-- | Run an action with a handle's output sent to another handle.
+redirect :: Handle -> Handle -> IO a -> IO a
+redirect h to act = do
+  hFlush h
+  saved <- hDuplicate h
+  (hDuplicateTo to h >> act) `finally` (hFlush h >> hDuplicateTo saved h >> hClose saved)
