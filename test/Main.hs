@@ -38,6 +38,7 @@ import qualified AFrobRobotSim.ConsoleSpec
 import qualified AFrobRobotSim.FlatArraySpec
 import qualified AFrobRobotSim.JSONSpec
 import qualified AFrobRobotSim.LogSpec
+import qualified AFrobRobotSim.Log.ReadSpec
 import qualified AFrobRobotSim.Log.RecordsSpec
 import qualified AFrobRobotSim.ReplayBrowserSpec
 import qualified AFrobRobotSim.ReplaySpec
@@ -115,6 +116,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.FlatArray" AFrobRobotSim.FlatArraySpec.spec
   describe "AFrobRobotSim.JSON"      AFrobRobotSim.JSONSpec.spec
   describe "AFrobRobotSim.Log"       AFrobRobotSim.LogSpec.spec
+  describe "AFrobRobotSim.Log.Read"  AFrobRobotSim.Log.ReadSpec.spec
   describe "AFrobRobotSim.Log.Records" AFrobRobotSim.Log.RecordsSpec.spec
   describe "AFrobRobotSim.Replay"    AFrobRobotSim.ReplaySpec.spec
   describe "AFrobRobotSim.Replay in Chromium" AFrobRobotSim.ReplayBrowserSpec.spec

@@ -1,14 +1,12 @@
--- | The run log: records made from a real run, read back, written as the
--- run goes.
+-- | The run log: records made from a real run, written as the run goes.
+-- (Reading it back is "AFrobRobotSim.Log.ReadSpec"'s.)
 module AFrobRobotSim.LogSpec (spec) where
 
-import           Data.Char                (isPrint)
-import           Data.List                (isInfixOf, isPrefixOf, stripPrefix)
+import           Data.List                (stripPrefix)
 import           Test.QuickCheck          (Gen, choose, elements, forAll, listOf, oneof, property)
 import           Text.Printf              (printf)
 import           System.Directory         (getTemporaryDirectory, removeFile)
 import           System.IO                (hClose, openTempFile)
-import           System.FilePath          ((</>))
 import           System.Process           (readProcessWithExitCode)
 import           Test.Hspec
 
@@ -16,7 +14,6 @@ import           AFrob                    hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.LogFixture
-import           TestUtil                 (withTempDir)
 
 -- The two robots of a frame (the fixture has two).
 pair :: [a] -> (a, a)
@@ -125,84 +122,6 @@ spec = do
       [ (lfTime f, evTime e, evText e) | f <- fs, e <- lfEvents f ]
         `shouldBe` [(1, 1, "seconds scores: 1"), (2, 2, "seconds scores: 2")]
       lfScores (last fs) `shouldBe` [("seconds", 2)]
-
-  describe "readLog" $ do
-    it "reads back exactly the log of a real run (fixed)" $
-      readLog fixtureLogText `shouldBe` Right fixtureLog
-    it "keeps the hostile message intact on one line (fixed)" $ do
-      length (lines fixtureLogText) `shouldBe` 53
-      fixtureLogText `shouldNotSatisfy` ("</script" `isInfixOf`)
-    it "refuses another version, saying which (fixed)" $ do
-      let h = (rlHeader fixtureLog) { lhVersion = 2 }
-          txt = unlines (encodeLogLine (LineHeader h) : drop 1 (lines fixtureLogText))
-      readLog txt `shouldSatisfy` either ("version 2" `isInfixOf`) (const False)
-    it "refuses a log that is not one, or a broken line, with its line number (fixed)" $ do
-      readLog "" `shouldSatisfy` either ("line 1" `isInfixOf`) (const False)
-      readLog (unlines (take 3 (lines fixtureLogText) ++ ["{\"kind\": \"frame\""]))
-        `shouldSatisfy` either ("line 4, column 17:" `isPrefixOf`) (const False)
-    it "refuses a frame whose robots are not the header's, and a header whose dt or fps is not positive" $ do
-      let ls = lines fixtureLogText
-          h = rlHeader fixtureLog
-          f = head (rlFrames fixtureLog)
-          withFrame f' = unlines (take 2 ls ++ [encodeLogLine (LineFrame f')] ++ drop 2 ls)
-          withHeader h' = unlines (encodeLogLine (LineHeader h') : drop 1 ls)
-      length (lfRobots f) `shouldBe` length (lhRobots h)
-      readLog (withFrame f { lfRobots = drop 1 (lfRobots f) })
-        `shouldSatisfy` either ("line 3: a frame of" `isPrefixOf`) (const False)
-      readLog (withFrame f { lfRobots = lfRobots f ++ lfRobots f })
-        `shouldSatisfy` either ("line 3: a frame of" `isPrefixOf`) (const False)
-      readLog (withHeader h { lhFps = 0 }) `shouldSatisfy` either ("fps" `isInfixOf`) (const False)
-      readLog (withHeader h { lhDt = -1 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
-      readLog (withHeader h { lhDt = 0 / 0 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
-    it "refuses a frame time or a summary time written as null (the page could not draw it)" $ do
-      let ls = lines fixtureLogText
-          f = head (rlFrames fixtureLog)
-          withFrame f' = unlines (take 2 ls ++ [encodeLogLine (LineFrame f')] ++ drop 2 ls)
-          withSummary s' = unlines (init ls ++ [encodeLogLine (LineSummary s')])
-      readLog (withFrame f { lfTime = 0 / 0 }) `shouldSatisfy` either ("a frame's time must be a number" `isInfixOf`) (const False)
-      case rlSummary fixtureLog of
-        Nothing -> expectationFailure "the fixture log has no summary"
-        Just sm -> do
-          readLog (withSummary sm { lsSimulated = 0 / 0 }) `shouldSatisfy` either ("summary's simulated" `isInfixOf`) (const False)
-          readLog (withSummary sm) `shouldSatisfy` either (const False) (const True)
-    it "readLogFile locates an error as FILE:LINE:COLUMN: or FILE:LINE:, like a world file" $ do
-      tmp <- getTemporaryDirectory
-      (path, h) <- openTempFile tmp "afrp-log.jsonl"
-      hClose h
-      let ls = lines fixtureLogText
-      writeFile path (unlines (take 3 ls ++ ["{\"kind\": \"frame\""]))
-      r1 <- readLogFile path
-      writeFile path (unlines (take 3 ls ++ [head ls]))
-      r2 <- readLogFile path
-      removeFile path
-      fmap (const ()) r1 `shouldBe` Left (path ++ ":4:17: expected ',' or '}', found end of input")
-      fmap (const ()) r2 `shouldBe` Left (path ++ ":4: a second header")
-    it "readLogFile names a log with control characters in its name escaped, whatever the fault" $ withTempDir $ \dir -> do
-      let bad = dir </> "bad\ESC[1mlog\n.jsonl"
-      writeFile bad "{\"bad\"\n"
-      r1 <- readLogFile bad
-      r2 <- readLogFile (dir </> "no\ESC[31msuch.jsonl")
-      writeFile bad (replicate 300 'x')
-      r3 <- readLogFileUpTo 200 bad
-      let printable = either (\m -> all isPrint m && "\\ESC[" `isInfixOf` m) (const False)
-      r1 `shouldSatisfy` printable
-      r2 `shouldSatisfy` printable
-      r3 `shouldSatisfy` printable
-    it "readLogFile reads at most so many bytes, and says so of a longer or endless file" $ withTempDir $ \dir -> do
-      let path = dir </> "run.jsonl"
-      writeFile path (replicate 300 'x')
-      r <- readLogFileUpTo 200 path
-      r `shouldSatisfy` either ((path ++ ": more than 200 bytes") `isPrefixOf`) (const False)
-      z <- readLogFileUpTo 1000 "/dev/zero"
-      z `shouldSatisfy` either ("/dev/zero: more than 1000 bytes" `isPrefixOf`) (const False)
-      -- within the limit, the file is read as a log (here: not one)
-      s <- readLogFileUpTo 400 path
-      s `shouldSatisfy` either (not . ("more than" `isInfixOf`)) (const False)
-    it "readLogFile says which file it cannot read and why, not which Haskell function failed" $ do
-      r <- readLogFile "no-such-dir/run.jsonl"
-      fmap (const ()) r `shouldBe` Left "no-such-dir/run.jsonl: cannot read it: does not exist (No such file or directory)"
-    it "reads a log cut short (no summary) (fixed)" $
-      fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
 
   describe "LogWriter" $ do
     it "writes, step by step, the same lines as the pure function (fixed)" $ do
