@@ -47,6 +47,7 @@ import           Control.DeepSeq     (NFData (..))
 import           Control.Monad       (MonadPlus)
 
 infixl 8 `tag`, `attach`, `gate`
+infixl 7 `joinE`
 infixl 6 `lMerge`, `rMerge`, `merge`
 
 -- | An event occurrence ('Event' @x@) or the absence of one ('NoEvent').
@@ -187,7 +188,9 @@ catEvents es = case [x | Event x <- es] of
   [] -> NoEvent
   xs -> Event xs
 
--- | Occurs when both occur, with both values.
+-- | Occurs when both occur, with both values. As infix, @infixl 7@
+-- (Yampa's): it binds less tightly than 'tag' and more than 'merge', so
+-- @e1 \`joinE\` e2 \`tag\` x@ is @e1 \`joinE\` (e2 \`tag\` x)@.
 joinE :: Event a -> Event b -> Event (a, b)
 joinE (Event a) (Event b) = Event (a, b)
 joinE _         _         = NoEvent

@@ -19,7 +19,11 @@
 -- through a 'Control.Arrow.loop' whose output nobody needs at that
 -- instant. Accumulated values are evaluated (to weak head normal form)
 -- when the next sample folds them in, so a long run accumulates no
--- thunks.
+-- thunks. (This is where afrp differs from Yampa: an accumulating
+-- function that gives an error, as in
+-- @accumBy (\_ a -> if a == 2 then error "e" else a) 0@, stops the run
+-- at the sample after the one whose event made the error, one sample
+-- before Yampa's does.)
 module AFRP.Hybrid
   ( -- * Holding
     hold

@@ -8,9 +8,34 @@
 -- Every runner takes the first input sample without a time step (the
 -- signal function's local time 0) and each later one with the time step
 -- since the previous sample. A later sample may omit the input
--- ('Nothing'), meaning "unchanged since the last sample". As in Yampa, each
--- input sample is evaluated to weak head normal form before it is used, so
--- a signal function that ignores its input still runs in constant space.
+-- ('Nothing'), meaning "unchanged since the last sample".
+--
+-- = What the runners evaluate
+--
+-- As Yampa's, with one exception: 'reactimate' evaluates each input
+-- sample and each output sample to weak head normal form after the output
+-- has been actuated (the first ones included, even when @actuate@ says
+-- stop); 'embed' evaluates a later sample's input when the rest of the
+-- list is demanded, after that sample's output is in the list (so the
+-- first input is not evaluated unless a 'Nothing' repeats it). A step
+-- never evaluates its input itself. So a signal function that ignores its
+-- input still runs in constant space, and an undefined input raises its
+-- error where Yampa's does:
+--
+-- > take 2 (embed (iPre 0) (1, [(1, Just undefined), (1, Just 3)]))  ==  [0, 1]
+-- > length (embed (iPre 0) (1, [(1, Just undefined), (1, Just 3)]))   -- raises
+--
+-- The exception: 'embed' never evaluates an output (Yampa's evaluates
+-- each one but the first when the list goes past it), so @length@ of an
+-- embedded run shows what a signal function computes without its outputs
+-- being looked at:
+--
+-- > length (embed (arr (\x -> if x == 2 then error "boom" else x)) (1, [(1, Just 2)]))  ==  2
+-- >   -- (Yampa's raises "boom")
+--
+-- 'react' evaluates neither (as Yampa's): it only looks at whether the
+-- sample is 'Nothing', so that a long run of unchanged samples builds no
+-- chain of thunks. 'evalAtZero' and 'evalAt' evaluate nothing.
 module AFRP.Run
   ( -- * Running in a monad
     reactimate
@@ -45,23 +70,25 @@ import           AFRP.Internal.SF
 -- * @actuate changed out@ consumes each output sample, the first included,
 --   and returns 'True' to stop the loop; @changed@ is always 'True'.
 --
--- The signal function's state is evaluated at every step, so a loop of any
--- length runs in the space its signal function needs.
+-- The signal function's state is evaluated at every step, and each
+-- sample's input and output after its actuation (as in Yampa: see "What
+-- the runners evaluate" above), so a loop of any length runs in the space
+-- its signal function needs.
 reactimate :: Monad m => m a -> (Bool -> m (DTime, Maybe a)) -> (Bool -> b -> m Bool) -> SF a b -> m ()
 reactimate initialise sense actuate (SF n0) = do
   a0 <- initialise
   case stepN n0 0 a0 of
-    (# n1, b0 #) -> do
-      stop <- actuate True b0
-      if stop then pure () else loop n1 a0
+    (# n1, b0 #) -> loop n1 a0 b0
   where
-    loop !n a = do
-      (dt, ma) <- sense False
-      let !a' = fromMaybe a ma
-      case stepN n dt a' of
-        (# n', b #) -> do
-          stop <- actuate True b
-          if stop then pure () else loop n' a'
+    -- (the sample's input and output evaluated after the actuation, as
+    -- in Yampa: see the module's documentation)
+    loop !n a b = do
+      stop <- actuate True b
+      if a `seq` b `seq` stop then pure () else do
+        (dt, ma) <- sense False
+        let a' = fromMaybe a ma
+        case stepN n dt a' of
+          (# n', b' #) -> loop n' a' b'
 
 -- | The state of a signal function being driven sample by sample from the
 -- outside ('reactInit', 'react'): for event loops owned by another library
@@ -92,7 +119,10 @@ reactInit initialise actuate (SF n0) = do
 react :: ReactHandle a b -> (DTime, Maybe a) -> IO Bool
 react h (dt, ma) = do
   ReactState n a <- readIORef (rhState h)
-  let !a' = fromMaybe a ma
+  -- (the input not evaluated, as in Yampa; only whether it is new)
+  a' <- case ma of
+    Nothing -> pure a
+    Just x  -> pure x
   case stepN n dt a' of
     (# n', b #) -> do
       writeIORef (rhState h) (ReactState n' a')
@@ -125,7 +155,9 @@ evalFuture (SF n) a dt = case stepN n 0 a of (# n', b #) -> (b, SF (freezeN n' d
 -- | @embed sf (a0, samples)@ runs @sf@ purely: @a0@ is the input at local
 -- time 0, each @(dt, ma)@ a later sample. The result has one output per
 -- input sample (the first at time 0), produced lazily; the state is
--- evaluated as the list is consumed.
+-- evaluated as the list is consumed, and each later sample's input when
+-- the list goes past it; no output is evaluated (see "What the runners
+-- evaluate" above).
 --
 -- > embed integral (1, [(0.5, Just 2), (0.5, Nothing)])  ==  [0, 0.5, 1.5]
 embed :: SF a b -> (a, [(DTime, Maybe a)]) -> [b]
@@ -138,8 +170,9 @@ embed sf input = build (\cons nil -> embedFB cons nil sf input)
 -- producer (@[(dt, Just x) | x <- ...]@) GHC fuses the two and no input
 -- list is built (and, where 'embed' is inlined into a list consumer, no
 -- output list either). @embedFB (:) []@ is the direct recursion
--- @go n a ((dt, ma) : rest) = b : go n' a' rest@: the same input forced,
--- the same step, the same lazy tail.
+-- @go n a ((dt, ma) : rest) = b : (a' \`seq\` go n' a' rest)@: the same
+-- step, the same tail, evaluating the sample's input when the tail is
+-- demanded, as Yampa's does (and not its output, which Yampa's does).
 embedFB :: (b -> r -> r) -> r -> SF a b -> (a, [(DTime, Maybe a)]) -> r
 embedFB cons nil (SF n0) (a0, samples) = case stepN n0 0 a0 of
   (# n1, b0 #) -> b0 `cons` foldr (embedStep cons) (\ !_ _ -> nil) samples n1 a0
@@ -148,8 +181,8 @@ embedFB cons nil (SF n0) (a0, samples) = case stepN n0 0 a0 of
 -- One sample of 'embedFB'.
 embedStep :: (b -> r -> r) -> (DTime, Maybe a) -> (Node a b -> a -> r) -> Node a b -> a -> r
 embedStep cons (dt, ma) k = oneShot (\n a ->
-  let !a' = fromMaybe a ma
-  in case stepN n dt a' of (# n', b #) -> b `cons` k n' a')
+  let a' = fromMaybe a ma
+  in case stepN n dt a' of (# n', b #) -> b `cons` (a' `seq` k n' a'))
 {-# INLINE embedStep #-}
 
 -- | @embedSynch sf (a0, samples)@ is a signal function that replays the

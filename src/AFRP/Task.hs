@@ -93,7 +93,9 @@ constT :: b -> Task a b c
 constT b = mkTask (constant b &&& never)
 
 -- | @sleepT t b@ outputs @b@ and ends, with @()@, at the first sample at or
--- after local time @t@.
+-- after local time @t@, within the rounding of the time accounting (as
+-- 'AFRP.EventSource.after', which it uses: six steps of 0.15 end
+-- @sleepT 0.9@, at a local time of 0.8999999999999999).
 sleepT :: Time -> b -> Task a b ()
 sleepT t b = mkTask (constant b &&& after t ())
 

@@ -14,23 +14,26 @@
 -- dependency @v -> a@), so @2 *^ (1, 2 :: Double)@ needs no further
 -- annotation.
 --
--- Fixities (chosen so that ordinary linear-algebra expressions need no
--- parentheses, e.g. @a *^ u ^+^ b *^ v@ means @(a *^ u) ^+^ (b *^ v)@):
+-- Fixities, Yampa's (so that ordinary linear-algebra expressions need no
+-- parentheses, e.g. @a *^ u ^+^ b *^ v@ means @(a *^ u) ^+^ (b *^ v)@ and
+-- @a *^ u \`dot\` v@ means @(a *^ u) \`dot\` v@):
 --
--- > infixr 7 *^
--- > infixl 7 ^/
+-- > infixr 9 *^
+-- > infixl 9 ^/
 -- > infix  7 `dot`
 -- > infixl 6 ^+^, ^-^
 --
--- Note that @*^@ and @^/@ have the same precedence but different
--- associativity, so an expression mixing them without parentheses is
--- rejected by the compiler; write @(a *^ v) ^/ b@.
+-- So @*^@ and @^/@ bind tighter than the scalars' @*@ and @/@:
+-- @2 * dt *^ v@ is @2 * (dt *^ v)@; write @(2 * dt) *^ v@. They have the
+-- same precedence but different associativity, so an expression mixing
+-- them without parentheses is rejected by the compiler; write
+-- @(a *^ v) ^/ b@.
 module AFRP.VectorSpace
   ( VectorSpace (..)
   ) where
 
-infixr 7 *^
-infixl 7 ^/
+infixr 9 *^
+infixl 9 ^/
 infix  7 `dot`
 infixl 6 ^+^, ^-^
 
@@ -213,3 +216,27 @@ instance (a ~ b, a ~ c, Eq a, Floating a) => VectorSpace (a, b, c) a where
   {-# INLINE (^+^) #-}
   {-# INLINE (^-^) #-}
   {-# INLINE dot #-}
+
+-- | Quadruples @(a, a, a, a)@ as four-dimensional vectors, as in Yampa
+-- (component-wise operations, the Euclidean inner product; the head as
+-- for pairs).
+instance (a ~ b, a ~ c, a ~ d, Eq a, Floating a) => VectorSpace (a, b, c, d) a where
+  zeroVector                              = (0, 0, 0, 0)
+  a *^ (x, y, z, u)                       = (a * x, a * y, a * z, a * u)
+  (x, y, z, u) ^/ a                       = (x / a, y / a, z / a, u / a)
+  negateVector (x, y, z, u)               = (negate x, negate y, negate z, negate u)
+  (x1, y1, z1, u1) ^+^ (x2, y2, z2, u2)   = (x1 + x2, y1 + y2, z1 + z2, u1 + u2)
+  (x1, y1, z1, u1) ^-^ (x2, y2, z2, u2)   = (x1 - x2, y1 - y2, z1 - z2, u1 - u2)
+  dot (x1, y1, z1, u1) (x2, y2, z2, u2)   = x1 * x2 + y1 * y2 + z1 * z2 + u1 * u2
+
+-- | Quintuples @(a, a, a, a, a)@ as five-dimensional vectors, as in Yampa
+-- (component-wise operations, the Euclidean inner product; the head as
+-- for pairs).
+instance (a ~ b, a ~ c, a ~ d, a ~ e, Eq a, Floating a) => VectorSpace (a, b, c, d, e) a where
+  zeroVector                                      = (0, 0, 0, 0, 0)
+  a *^ (x, y, z, u, v)                            = (a * x, a * y, a * z, a * u, a * v)
+  (x, y, z, u, v) ^/ a                            = (x / a, y / a, z / a, u / a, v / a)
+  negateVector (x, y, z, u, v)                    = (negate x, negate y, negate z, negate u, negate v)
+  (x1, y1, z1, u1, v1) ^+^ (x2, y2, z2, u2, v2)   = (x1 + x2, y1 + y2, z1 + z2, u1 + u2, v1 + v2)
+  (x1, y1, z1, u1, v1) ^-^ (x2, y2, z2, u2, v2)   = (x1 - x2, y1 - y2, z1 - z2, u1 - u2, v1 - v2)
+  dot (x1, y1, z1, u1, v1) (x2, y2, z2, u2, v2)   = x1 * x2 + y1 * y2 + z1 * z2 + u1 * u2 + v1 * v2

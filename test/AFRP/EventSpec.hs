@@ -208,6 +208,10 @@ spec = do
       joinE (ev 1) (Event 'a') `shouldBe` Event (1, 'a')
       joinE (ev 1) (NoEvent :: Event Char) `shouldBe` NoEvent
       joinE none (Event 'a') `shouldBe` NoEvent
+    it "binds less tightly than tag and more than the merges (infixl 7, Yampa's)" $ do
+      -- ev 1 `joinE` (Event 'b' `tag` 'c'), and (ev 1 `joinE` Event 'b') `lMerge` ...
+      (ev 1 `joinE` Event 'b' `tag` 'c') `shouldBe` Event (1, 'c')
+      (none `joinE` Event 'b' `lMerge` Event (2, 'd')) `shouldBe` Event (2, 'd')
 
   describe "splitE" $ do
     it "splits an occurrence of a pair into two occurrences" $

@@ -128,6 +128,14 @@ parSpec = do
       evaluate (sum (map sum (runDt 1 (parZ [identity, arr (+ 1)]) [[1, 2], [3 :: Double]])))
         `shouldThrow` anyErrorCall
 
+    it "gives a member without an input an error only it meets, and runs on, as Yampa's" $ do
+      let outs = runDt 1 (parZ [localTime, identity, localTime]) [[1, 2, 3], [5 :: Double], [6, 7, 8]]
+      map (take 1) outs `shouldBe` [[0], [1], [2]]
+      map (!! 2) outs `shouldBe` [0, 1, 2]
+      map (!! 1) [outs !! 0, outs !! 2] `shouldBe` [2, 7]
+      evaluate (outs !! 1 !! 1) `shouldThrow`
+        errorCall "AFRP.Parallel.parZ: the input list is shorter than the list of signal functions"
+
 ------------------------------------------------------------------------------
 
 -- The input 1, 2, 3, ... at steps of 0.5. The integral member:

@@ -16,6 +16,15 @@ spec = do
       embed identity ('a', [(1, Nothing), (1, Just 'b'), (1, Nothing)]) `shouldBe` "aabb"
     it "runs 10^6 samples of an integral without trouble" $
       last (embed integral (1, replicate 1000000 (0.001, Nothing))) `shouldApprox` (1000 :: Double)
+    it "evaluates a later sample's input when the list goes past it, as Yampa's, and no output" $ do
+      -- the input of sample 1 is not needed for its own output (a delay)
+      take 2 (embed (iPre 0) (1, [(1, Just undefined), (1, Just (3 :: Int))])) `shouldBe` [0, 1]
+      -- ... but is evaluated before the list goes on
+      evaluate (length (embed (iPre 0) (1, [(1, Just undefined), (1, Just (3 :: Int))])))
+        `shouldThrow` errorCall "Prelude.undefined"
+      -- no output is (where Yampa's evaluates all but the first)
+      length (embed (arr (\x -> if x == 2 then error "boom" else x)) (1, [(1, Just 2), (1, Just (3 :: Int))]))
+        `shouldBe` 3
 
   describe "reactimate" $ do
     it "senses, steps and actuates until actuate says stop" $ do
@@ -29,13 +38,24 @@ spec = do
             pure (b >= (2 :: Double))
       reactimate (pure 1) sense actuate integral
       reverse <$> readIORef outs `shouldReturn` [0, 0.5, 1.5, 2.5]
+    it "evaluates each sample's input and output after actuating it, as Yampa's" $ do
+      actuated <- newIORef (0 :: Int)
+      let actuate _ _ = modifyIORef actuated (+ 1) >> (>= 3) <$> readIORef actuated
+      reactimate (pure 1) (\_ -> pure (1, Just 2)) actuate (arr (\x -> if x == 2 then error "boom" else x :: Int))
+        `shouldThrow` errorCall "boom"
+      readIORef actuated `shouldReturn` 2
+      -- the first input and output too, even when the first actuation stops the loop
+      reactimate (pure (error "input")) (\_ -> pure (1, Nothing)) (\_ _ -> pure True) (constant 'c')
+        `shouldThrow` errorCall "input"
+      reactimate (pure 'i') (\_ -> pure (1, Nothing)) (\_ _ -> pure True) (arr (\_ -> error "output" :: Char))
+        `shouldThrow` errorCall "output"
     it "stops before any step when the first actuate says so" $ do
       steps <- newIORef (0 :: Int)
       reactimate (pure ()) (\_ -> modifyIORef steps (+ 1) >> pure (1, Nothing))
                  (\_ _ -> pure True) (constant ())
       readIORef steps `shouldReturn` 0
 
-  describe "reactInit and react" $
+  describe "reactInit and react" $ do
     it "drive a signal function one step at a time" $ do
       outs <- newIORef []
       h <- reactInit (pure (1 :: Double)) (\_ _ b -> modifyIORef outs (b :) >> pure False) integral
@@ -43,6 +63,10 @@ spec = do
       stop <- react h (0.5, Just 3)
       stop `shouldBe` False
       reverse <$> readIORef outs `shouldReturn` [0, 0.5, 1]
+    it "react evaluates neither the input nor the output, as Yampa's" $ do
+      h <- reactInit (pure (1 :: Int)) (\_ _ _ -> pure False) (arr (\x -> if x == 2 then error "unused" else 'c'))
+      react h (1, Just undefined) `shouldReturn` False
+      react h (1, Just 2) `shouldReturn` False
 
   describe "evalAtZero and evalAt" $
     it "step a signal function by hand exactly as embed does" $ do

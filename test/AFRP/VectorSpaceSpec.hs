@@ -30,6 +30,12 @@ instance Components (Double, Double) where
 instance Components (Double, Double, Double) where
   components (x, y, z) = [x, y, z]
 
+instance Components (Double, Double, Double, Double) where
+  components (x, y, z, u) = [x, y, z, u]
+
+instance Components (Double, Double, Double, Double, Double) where
+  components (x, y, z, u, v) = [x, y, z, u, v]
+
 instance Components (Vector2 Double) where
   components (Vector2 x y) = [x, y]
 
@@ -75,6 +81,12 @@ genPair = (,) <$> genScalar <*> genScalar
 
 genTriple :: Gen (Double, Double, Double)
 genTriple = (,,) <$> genScalar <*> genScalar <*> genScalar
+
+genQuadruple :: Gen (Double, Double, Double, Double)
+genQuadruple = (,,,) <$> genScalar <*> genScalar <*> genScalar <*> genScalar
+
+genQuintuple :: Gen (Double, Double, Double, Double, Double)
+genQuintuple = (,,,,) <$> genScalar <*> genScalar <*> genScalar <*> genScalar <*> genScalar
 
 genVector2 :: Gen (Vector2 Double)
 genVector2 = Vector2 <$> genScalar <*> genScalar
@@ -185,6 +197,8 @@ spec = do
     laws "Double" genScalar
     laws "(Double, Double)" genPair
     laws "(Double, Double, Double)" genTriple
+    laws "(Double, Double, Double, Double)" genQuadruple
+    laws "(Double, Double, Double, Double, Double)" genQuintuple
     laws "Vector2 Double" genVector2
     laws "Vector3 Double" genVector3
 
@@ -244,3 +258,11 @@ spec = do
       2 *^ (1, 1) ^+^ 3 *^ (1, 0) `shouldBe` (5, 2 :: Double)
       (10, 10) ^-^ (1, 1) ^-^ (1, 1) `shouldBe` (8, 8 :: Double)
       1 + (1, 2) `dot` (3, 4) `shouldBe` (12 :: Double)
+
+    it "fixities: *^ and ^/ are Yampa's (infixr 9, infixl 9), tighter than ^, * and dot" $ do
+      -- (2 *^ 3) ^ 2, not 2 *^ (3 ^ 2); (8 ^/ 2) ^ 2, not 8 ^/ (2 ^ 2)
+      2 *^ 3 ^ (2 :: Int) `shouldBe` (36 :: Double)
+      8 ^/ 2 ^ (2 :: Int) `shouldBe` (16 :: Double)
+      -- (2 *^ (1, 2)) `dot` (3, 4), as Yampa parses it
+      2 *^ (1, 2) `dot` (3, 4) `shouldBe` (22 :: Double)
+      (1, 2) ^/ 2 `dot` (2, 2) `shouldBe` (3 :: Double)
