@@ -64,6 +64,7 @@ import qualified Examples.Section3Spec
 import qualified AFrobRobotSim.SimulatorSpec
 import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
+import qualified AFrobRobotSim.WorldFile.GrammarSpec
 import qualified AFrobRobotSim.WorldSpec
 import qualified AFrobRobotSim.WorkersSpec
 import qualified AFrobRobotSim.PipelineSpec
@@ -134,6 +135,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Sensors" AFrobRobotSim.SensorsSpec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec
+  describe "AFrobRobotSim.WorldFile.Grammar" AFrobRobotSim.WorldFile.GrammarSpec.spec
   describe "AFrobRobotSim.World" AFrobRobotSim.WorldSpec.spec
   describe "AFrobRobotSim.Workers" AFrobRobotSim.WorkersSpec.spec
   describe "AFrobRobotSim.Pipeline" AFrobRobotSim.PipelineSpec.spec
