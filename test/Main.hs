@@ -37,6 +37,7 @@ import qualified AFrobRobotSim.ClearanceSpec
 import qualified AFrobRobotSim.ConsoleSpec
 import qualified AFrobRobotSim.FlatArraySpec
 import qualified AFrobRobotSim.JSONSpec
+import qualified AFrobRobotSim.JSON.EncodeSpec
 import qualified AFrobRobotSim.LogSpec
 import qualified AFrobRobotSim.Log.ReadSpec
 import qualified AFrobRobotSim.Log.RecordsSpec
@@ -116,6 +117,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
   describe "AFrobRobotSim.FlatArray" AFrobRobotSim.FlatArraySpec.spec
   describe "AFrobRobotSim.JSON"      AFrobRobotSim.JSONSpec.spec
+  describe "AFrobRobotSim.JSON.Encode" AFrobRobotSim.JSON.EncodeSpec.spec
   describe "AFrobRobotSim.Log"       AFrobRobotSim.LogSpec.spec
   describe "AFrobRobotSim.Log.Read"  AFrobRobotSim.Log.ReadSpec.spec
   describe "AFrobRobotSim.Log.Records" AFrobRobotSim.Log.RecordsSpec.spec
