@@ -46,6 +46,7 @@ import qualified AFrobRobotSim.ReplaySpec
 import qualified AFrobRobotSim.NearbySpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.OptionsSpec
+import qualified AFrobRobotSim.OutputFileSpec
 import qualified AFrobRobotSim.PhysicsSpec
 import qualified AFrobRobotSim.BallsSpec
 import qualified AFrobRobotSim.ChunksSpec
@@ -128,6 +129,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Console"   AFrobRobotSim.ConsoleSpec.spec
   describe "AFrobRobotSim.Nearby" AFrobRobotSim.NearbySpec.spec
   describe "AFrobRobotSim.Options" AFrobRobotSim.OptionsSpec.spec
+  describe "AFrobRobotSim.OutputFile" AFrobRobotSim.OutputFileSpec.spec
   describe "AFrobRobotSim.Physics" AFrobRobotSim.PhysicsSpec.spec
   describe "AFrobRobotSim.Balls" AFrobRobotSim.BallsSpec.spec
   describe "AFrobRobotSim.Chunks" AFrobRobotSim.ChunksSpec.spec

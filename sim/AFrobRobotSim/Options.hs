@@ -66,6 +66,7 @@ module AFrobRobotSim.Options
 
 import           Data.Char       (isSpace)
 import           Data.List       (intercalate, isSuffixOf)
+import           Numeric         (showFFloat)
 import           System.FilePath ((</>))
 import           Text.Printf     (printf)
 
@@ -263,19 +264,29 @@ validateOptions o =
   ++ [ "--dt " ++ num dt ++ " does not divide the frame period 1/" ++ num fps ++ " s; --fps "
        ++ suggestion ++ " would work"
      | finite fps, finite dt, dt > 0, fps > 0, fps * dt <= 1 + 1e-9, fps * dt >= 1e-9, not tooMany
-     , let k = 1 / (fps * dt), abs (k - fromIntegral (round k :: Int)) > 1e-4 * k ]
+     , not (divides fps) ]
   ++ [ "--fps " ++ num fps ++ " is less than one frame in 10^9 steps of --dt " ++ num dt
      | finite fps, finite dt, fps > 0, dt > 0, fps * dt < 1e-9 ]
   ++ [ "--out must not be empty" | null (optOut o) ]
+  ++ [ flag ++ " must not be empty (a file name)"
+     | (flag, Just "") <- [ ("--svg", optSvg o), ("--replay", optReplay o), ("--log", optLog o)
+                          , ("--result", optResult o), ("--video", optVideo o) ] ]
   where
     secs = optSeconds o; dt = optDt o; fps = optFps o; scale = maybe 1 id (optScale o)
     steps = secs / dt
     tooMany = isNaN steps || steps > maxSteps
     finite x = not (isNaN x || isInfinite x)
+    -- whether dt divides the frame period 1/f (to a relative 1e-4)
+    divides f = let k = 1 / (f * dt) in abs (k - fromIntegral (round k :: Int)) <= 1e-4 * k
+    -- frame rates that work, a whole number of steps apart, each written
+    -- with the fewest decimals (3 or more) that still work as written
     suggestion :: String
     suggestion = let k = max 1 (round (1 / (fps * dt)) :: Int)
-                     good j = num (1 / (fromIntegral j * dt))
+                     good j = let f = 1 / (fromIntegral j * dt)
+                              in head ([ w | d <- [3 .. 17], let w = decimals d f, divides (read w) ] ++ [show f])
                  in good k ++ " or " ++ good (k + 1)
+    decimals d f = let w = showFFloat (Just d) f ""
+                   in if '.' `elem` w then reverse (dropWhile (== '.') (dropWhile (== '0') (reverse w))) else w
 
 -- | 'validateOptions' and the faults that depend on the world, of this
 -- extent: a frame (world and margin) at the scale in effect ('scaleFor')

@@ -107,6 +107,7 @@ import           System.IO
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Replay.Assets
 import           AFrobRobotSim.Console     (displayPath, ioErrorText)
+import           AFrobRobotSim.OutputFile  (writeWhole)
 import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 import           AFrobRobotSim.Simulator   (WorldState)
 
@@ -342,7 +343,7 @@ writeReplayChunked chunk (ReplayRecorder cfg path h ref) s out =
           summary = encodeLogLine (LineSummary s')
           (pre, post) = replayPageParts (showHex (fnv hash summary) "")
       withBinaryFile path ReadMode $ \fh ->
-        withBinaryFile out WriteMode $ \oh -> do
+        writeWhole out $ \whole -> withBinaryFile whole WriteMode $ \oh -> do
           hSetBuffering oh (BlockBuffering Nothing)
           let header = BC.pack (encodeLogLine (LineHeader (logHeader cfg)))
               -- a line after the others, as 'joinChunked' joins them
@@ -363,4 +364,4 @@ writeReplayChunked chunk (ReplayRecorder cfg path h ref) s out =
 -- The page is ASCII (the encoder escapes everything else, the assets are
 -- ASCII), written as UTF-8 whatever the locale.
 writeAscii :: FilePath -> String -> IO ()
-writeAscii path txt = withFile path WriteMode (\h -> hSetEncoding h utf8 >> hPutStr h txt)
+writeAscii path txt = writeWhole path (\whole -> withFile whole WriteMode (\h -> hSetEncoding h utf8 >> hPutStr h txt))

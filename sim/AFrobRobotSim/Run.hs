@@ -82,6 +82,7 @@ import           AFrobRobotSim.Options
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
+import           AFrobRobotSim.Run.Signals
 import           AFrobRobotSim.Run.Sinks
 import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Simulator
@@ -233,7 +234,7 @@ data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOEx
 -- replay page's frames).
 simulateRun :: String -> SimOptions -> Maybe FilePath -> WorldTemplate -> SimbotController -> SimbotController
             -> IO ()
-simulateRun prog opts ffmpeg world rcA rcB = do
+simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
   start <- getMonotonicTime
   tty   <- hIsTerminalDevice stderr
   args  <- getArgs
@@ -308,6 +309,10 @@ simulateRun prog opts ffmpeg world rcA rcB = do
       (produced, stopped) <- pipeline (batchFor nRobots) (\s -> () <$ evaluate (forceState s)) sinkAll states
       maybe (either endedBy (const (pure Finished)) produced) endedBy stopped
     else try (loop 0 states) >>= either endedBy pure
+  -- (from here a SIGTERM or SIGHUP no longer stops the run: it is writing
+  -- its outputs)
+  finishing stopper
+  signal <- stopNow stopper
   when progress (hPutStr stderr eraseProgress)
   steps <- readIORef stepsRef
   nFrames <- readIORef framesRef
@@ -320,7 +325,13 @@ simulateRun prog opts ffmpeg world rcA rcB = do
       interrupted = case ending of
         Interrupted -> True
         _           -> False
-      summary   = LogSummary simulated steps (-1) wall interrupted (displayException <$> failure) []
+      -- (what stopped the run early, for the log's summary and the result
+      -- line: a controller's failure, or a write that failed)
+      failureText = case ending of
+        Failed ce     -> Just (displayException ce)
+        WriteFailed e -> Just ("the run stopped: a write failed: " ++ ioErrorText e)
+        _             -> Nothing
+      summary   = LogSummary simulated steps (-1) wall interrupted failureText []
   Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
   let runErrs = case ending of
         WriteFailed e -> [ "the run stopped: a write failed: " ++ ioErrorText e ]
@@ -345,7 +356,9 @@ simulateRun prog opts ffmpeg world rcA rcB = do
                                          ++ outErrs ++ videoErrs)
   unless (null allErrs) (putErr (unlines allErrs))
   case ending of
-    Interrupted -> exitWith (ExitFailure 130)
+    -- (the shell's code for a program ended by a signal: 128 and its
+    -- number, Ctrl-C's 2 when no other came)
+    Interrupted -> exitWith (ExitFailure (128 + maybe 2 id signal))
     Failed _    -> exitWith (ExitFailure 1)
     _ | not (null allErrs) -> exitWith (ExitFailure 1)
       | otherwise          -> pure ()

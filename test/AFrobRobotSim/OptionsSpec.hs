@@ -2,8 +2,9 @@
 -- output files and the output folder, in any order.
 module AFrobRobotSim.OptionsSpec (spec) where
 
-import           Data.List        (isInfixOf, permutations)
+import           Data.List        (isInfixOf, isPrefixOf, permutations, tails)
 import           Test.Hspec
+import           Test.QuickCheck  (conjoin, counterexample, elements, forAll, property, (===))
 
 import           AFrobRobotSim.Options
 
@@ -15,71 +16,101 @@ outputs args = case parseSimArgs defaultSimOptions args of
   Left err          -> Left err
 
 spec :: Spec
-spec = describe "parseSimArgs" $ do
-  it "moves the default SVG and page into the folder --out names" $
-    outputs ["--out", "x"] `shouldBe` Right (Just "x/run.svg", Just "x/replay.html", "x")
-  it "keeps a file the command line names where it says, before or after --out" $ do
-    outputs ["--svg", "a.svg", "--out", "x"] `shouldBe` Right (Just "a.svg", Just "x/replay.html", "x")
-    outputs ["--out", "x", "--svg", "a.svg"] `shouldBe` Right (Just "a.svg", Just "x/replay.html", "x")
-  it "keeps a named file even when it is the default folder's default name" $
-    outputs ["--svg", "simbot-out/run.svg", "--replay", "simbot-out/replay.html", "--out", "x"]
-      `shouldBe` Right (Just "simbot-out/run.svg", Just "simbot-out/replay.html", "x")
-  it "--no-svg and --no-replay hold in any order with --out" $
-    outputs ["--no-svg", "--out", "x", "--no-replay"] `shouldBe` Right (Nothing, Nothing, "x")
-  it "gives the same outputs for every order of the flags" $ do
-    let groups = [["--out", "x"], ["--svg", "p/a.svg"], ["--no-replay"], ["--seconds", "2"], ["--out", "y"]]
-        -- the later --out wins, so keep the two in their order
-        ordered g = let outs = [ v | ["--out", v] <- g ] in outs == ["x", "y"]
-        results = [ outputs (concat g) | g <- permutations groups, ordered g ]
-    length results `shouldBe` 60
-    results `shouldSatisfy` all (== Right (Just "p/a.svg", Nothing, "y"))
-  it "takes no flag as the value of a flag that needs one" $ do
-    outputs ["--out", "--no-svg"] `shouldSatisfy` either ("--out needs a value" `isInfixOf`) (const False)
-    outputs ["--svg", "--quiet"] `shouldSatisfy` either ("--svg needs a value" `isInfixOf`) (const False)
-    outputs ["--seconds", "--dt", "0.02"] `shouldSatisfy` either ("--seconds needs a value" `isInfixOf`) (const False)
-    outputs ["--out", "./--no-svg"] `shouldBe` Right (Just "./--no-svg/run.svg", Just "./--no-svg/replay.html", "./--no-svg")
-    fmap (const ()) (parseSimArgs defaultSimOptions ["--seconds", "-1"]) `shouldSatisfy` either ("non-negative" `isInfixOf`) (const False)
-  it "reads numbers as a world file writes them, not in Haskell's other forms" $ do
-    let secs args = case parseSimArgs defaultSimOptions ("--seconds" : args) of
-          Right (RunWith o) -> Right (optSeconds o)
-          Right ShowHelp    -> Left "help"
-          Left err          -> Left err
-    map (\v -> secs [v]) ["+5", "2.5", "1e2", "1.5E-1", " 3 ", "0"]
-      `shouldBe` map Right [5, 2.5, 100, 0.15, 3, 0]
-    mapM_ (\v -> secs [v] `shouldSatisfy` either ("--seconds expects a non-negative number (written as in a world file" `isInfixOf`) (const False))
-          ["0x10", ".5", "5.", ".", "+", "1e", "1e+", "NaN", "Infinity", "1..2", "5 s", "-1", "--5"]
-    let seedOf v = case parseSimArgs defaultSimOptions ["--seed", v] of
-          Right (RunWith o) -> Just (optSeed o)
-          _                 -> Nothing
-    map seedOf ["7", "+7", "-7", "0x10", "1.0", "07"] `shouldBe` [Just 7, Just 7, Just (-7), Nothing, Nothing, Just 7]
-    let keysOf v = case parseSimArgs defaultSimOptions ["--keys", v] of
-          Right (RunWith o) -> Just (optKeys o)
-          _                 -> Nothing
-    keysOf "0.5:a,2:b" `shouldBe` Just [(0.5, 'a'), (2, 'b')]
-    keysOf "0x1:a" `shouldBe` Nothing
-  it "takes a --seed up to 2^53 either way and refuses a larger one rather than wrap it round" $ do
-    let seed args = case parseSimArgs defaultSimOptions args of
-          Right (RunWith o) -> Right (optSeed o)
-          Right ShowHelp    -> Left "help"
-          Left err          -> Left err
-    seed ["--seed", "9007199254740992"] `shouldBe` Right 9007199254740992
-    seed ["--seed", "-9007199254740992"] `shouldBe` Right (-9007199254740992)
-    seed ["--seed", "9007199254740993"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
-    seed ["--seed", "18446744073709551617"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
-  it "refuses --seconds greater than 0 that is less than half a step: a run of no step after time 0" $ do
-    let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
-    run ["--seconds", "0.004", "--dt", "0.01"] `shouldSatisfy` either ("less than half a step" `isInfixOf`) (const False)
-    run ["--seconds", "0.005", "--dt", "0.01"] `shouldSatisfy` either ("less than half a step" `isInfixOf`) (const False)
-    run ["--seconds", "0.006", "--dt", "0.01"] `shouldBe` Right ()
-    run ["--seconds", "0", "--dt", "0.01"] `shouldBe` Right ()
-  it "refuses a --dt beyond maxTimeStep and an --odometry-noise beyond maxOdometryNoise (a robot's pose became NaN)" $ do
-    let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
-    run ["--dt", "1e6", "--fps", "1e-6", "--seconds", "1e7"] `shouldBe` Right ()
-    run ["--dt", "1.5e6", "--fps", "1e-7", "--seconds", "1e7"] `shouldSatisfy` either ("--dt expects a positive number up to" `isInfixOf`) (const False)
-    run ["--odometry-noise", "1"] `shouldBe` Right ()
-    mapM_ (\v -> run ["--odometry-noise", v] `shouldSatisfy` either ("--odometry-noise expects a number from 0 to 1" `isInfixOf`) (const False))
-          ["1.01", "1e308", "-0.5"]
-  it "refuses a --keys time that is not a finite number (Infinity, 1e400, NaN)" $ do
-    parseKeys "1.5:a,3:b" `shouldBe` Right [(1.5, 'a'), (3, 'b')]
-    mapM_ (\k -> parseKeys k `shouldSatisfy` either ("--keys" `isInfixOf`) (const False))
-          ["Infinity:a", "1e400:a", "1:a,NaN:b"]
+spec = do
+  describe "validateOptions" $
+    it "suggests, for a --dt that does not divide the frame period, two --fps that work as written" $
+      property $ forAll ((,) <$> elements [0.001, 0.003, 0.007, 0.01, 0.02, 0.03, 0.04, 0.06, 0.1, 0.3, 0.6, 0.9]
+                             <*> elements [0.7, 0.98, 1, 3, 7, 13, 24, 25, 29.97, 30, 60]) $ \(dt, fps) ->
+        let faults o = [ m | m <- validateOptions o, "does not divide" `isInfixOf` m ]
+            base = defaultSimOptions { optDt = dt, optFps = fps }
+        in case faults base of
+             [] -> property True
+             m : _ -> case words (takeWhile (/= 'w') (snd (breakOn "--fps " m))) of
+               ["--fps", a, "or", b] ->
+                 counterexample m (conjoin [ counterexample f (faults base { optFps = read f } === []) | f <- [a, b] ])
+               other -> counterexample ("no two rates in: " ++ m ++ " " ++ show other) False
+  describe "validateOptions, file names" $
+    it "refuses an empty file name for every output, before the run" $ do
+      let named f o = [ m | m <- validateOptions o, (f ++ " must not be empty") `isPrefixOf` m ]
+          d = defaultSimOptions
+      map (\(f, o) -> named f o)
+          [ ("--svg", d { optSvg = Just "" }), ("--replay", d { optReplay = Just "" })
+          , ("--log", d { optLog = Just "" }), ("--result", d { optResult = Just "" })
+          , ("--video", d { optVideo = Just "" }) ]
+        `shouldSatisfy` all ((== 1) . length)
+      [ m | m <- validateOptions d, "must not be empty" `isInfixOf` m ] `shouldBe` []
+  describe "parseSimArgs" $ do
+    it "moves the default SVG and page into the folder --out names" $
+      outputs ["--out", "x"] `shouldBe` Right (Just "x/run.svg", Just "x/replay.html", "x")
+    it "keeps a file the command line names where it says, before or after --out" $ do
+      outputs ["--svg", "a.svg", "--out", "x"] `shouldBe` Right (Just "a.svg", Just "x/replay.html", "x")
+      outputs ["--out", "x", "--svg", "a.svg"] `shouldBe` Right (Just "a.svg", Just "x/replay.html", "x")
+    it "keeps a named file even when it is the default folder's default name" $
+      outputs ["--svg", "simbot-out/run.svg", "--replay", "simbot-out/replay.html", "--out", "x"]
+        `shouldBe` Right (Just "simbot-out/run.svg", Just "simbot-out/replay.html", "x")
+    it "--no-svg and --no-replay hold in any order with --out" $
+      outputs ["--no-svg", "--out", "x", "--no-replay"] `shouldBe` Right (Nothing, Nothing, "x")
+    it "gives the same outputs for every order of the flags" $ do
+      let groups = [["--out", "x"], ["--svg", "p/a.svg"], ["--no-replay"], ["--seconds", "2"], ["--out", "y"]]
+          -- the later --out wins, so keep the two in their order
+          ordered g = let outs = [ v | ["--out", v] <- g ] in outs == ["x", "y"]
+          results = [ outputs (concat g) | g <- permutations groups, ordered g ]
+      length results `shouldBe` 60
+      results `shouldSatisfy` all (== Right (Just "p/a.svg", Nothing, "y"))
+    it "takes no flag as the value of a flag that needs one" $ do
+      outputs ["--out", "--no-svg"] `shouldSatisfy` either ("--out needs a value" `isInfixOf`) (const False)
+      outputs ["--svg", "--quiet"] `shouldSatisfy` either ("--svg needs a value" `isInfixOf`) (const False)
+      outputs ["--seconds", "--dt", "0.02"] `shouldSatisfy` either ("--seconds needs a value" `isInfixOf`) (const False)
+      outputs ["--out", "./--no-svg"] `shouldBe` Right (Just "./--no-svg/run.svg", Just "./--no-svg/replay.html", "./--no-svg")
+      fmap (const ()) (parseSimArgs defaultSimOptions ["--seconds", "-1"]) `shouldSatisfy` either ("non-negative" `isInfixOf`) (const False)
+    it "reads numbers as a world file writes them, not in Haskell's other forms" $ do
+      let secs args = case parseSimArgs defaultSimOptions ("--seconds" : args) of
+            Right (RunWith o) -> Right (optSeconds o)
+            Right ShowHelp    -> Left "help"
+            Left err          -> Left err
+      map (\v -> secs [v]) ["+5", "2.5", "1e2", "1.5E-1", " 3 ", "0"]
+        `shouldBe` map Right [5, 2.5, 100, 0.15, 3, 0]
+      mapM_ (\v -> secs [v] `shouldSatisfy` either ("--seconds expects a non-negative number (written as in a world file" `isInfixOf`) (const False))
+            ["0x10", ".5", "5.", ".", "+", "1e", "1e+", "NaN", "Infinity", "1..2", "5 s", "-1", "--5"]
+      let seedOf v = case parseSimArgs defaultSimOptions ["--seed", v] of
+            Right (RunWith o) -> Just (optSeed o)
+            _                 -> Nothing
+      map seedOf ["7", "+7", "-7", "0x10", "1.0", "07"] `shouldBe` [Just 7, Just 7, Just (-7), Nothing, Nothing, Just 7]
+      let keysOf v = case parseSimArgs defaultSimOptions ["--keys", v] of
+            Right (RunWith o) -> Just (optKeys o)
+            _                 -> Nothing
+      keysOf "0.5:a,2:b" `shouldBe` Just [(0.5, 'a'), (2, 'b')]
+      keysOf "0x1:a" `shouldBe` Nothing
+    it "takes a --seed up to 2^53 either way and refuses a larger one rather than wrap it round" $ do
+      let seed args = case parseSimArgs defaultSimOptions args of
+            Right (RunWith o) -> Right (optSeed o)
+            Right ShowHelp    -> Left "help"
+            Left err          -> Left err
+      seed ["--seed", "9007199254740992"] `shouldBe` Right 9007199254740992
+      seed ["--seed", "-9007199254740992"] `shouldBe` Right (-9007199254740992)
+      seed ["--seed", "9007199254740993"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
+      seed ["--seed", "18446744073709551617"] `shouldSatisfy` either ("--seed" `isInfixOf`) (const False)
+    it "refuses --seconds greater than 0 that is less than half a step: a run of no step after time 0" $ do
+      let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
+      run ["--seconds", "0.004", "--dt", "0.01"] `shouldSatisfy` either ("less than half a step" `isInfixOf`) (const False)
+      run ["--seconds", "0.005", "--dt", "0.01"] `shouldSatisfy` either ("less than half a step" `isInfixOf`) (const False)
+      run ["--seconds", "0.006", "--dt", "0.01"] `shouldBe` Right ()
+      run ["--seconds", "0", "--dt", "0.01"] `shouldBe` Right ()
+    it "refuses a --dt beyond maxTimeStep and an --odometry-noise beyond maxOdometryNoise (a robot's pose became NaN)" $ do
+      let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
+      run ["--dt", "1e6", "--fps", "1e-6", "--seconds", "1e7"] `shouldBe` Right ()
+      run ["--dt", "1.5e6", "--fps", "1e-7", "--seconds", "1e7"] `shouldSatisfy` either ("--dt expects a positive number up to" `isInfixOf`) (const False)
+      run ["--odometry-noise", "1"] `shouldBe` Right ()
+      mapM_ (\v -> run ["--odometry-noise", v] `shouldSatisfy` either ("--odometry-noise expects a number from 0 to 1" `isInfixOf`) (const False))
+            ["1.01", "1e308", "-0.5"]
+    it "refuses a --keys time that is not a finite number (Infinity, 1e400, NaN)" $ do
+      parseKeys "1.5:a,3:b" `shouldBe` Right [(1.5, 'a'), (3, 'b')]
+      mapM_ (\k -> parseKeys k `shouldSatisfy` either ("--keys" `isInfixOf`) (const False))
+            ["Infinity:a", "1e400:a", "1:a,NaN:b"]
+
+-- | The text from the last occurrence of a pattern on (and what is before
+-- it), or the whole text and nothing when it does not occur.
+breakOn :: String -> String -> (String, String)
+breakOn pat txt = case [ i | (i, t) <- zip [0 ..] (tails txt), pat `isPrefixOf` t ] of
+  [] -> (txt, "")
+  is -> splitAt (last is) txt

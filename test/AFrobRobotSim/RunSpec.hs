@@ -8,8 +8,10 @@ import           Control.Monad       (forM_)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
 import           Control.Concurrent  (threadDelay)
-import           System.Process      (CreateProcess (..), StdStream (..), createProcess, interruptProcessGroupOf,
-                                      proc, readCreateProcessWithExitCode, terminateProcess, waitForProcess)
+import           System.Posix.Signals (sigHUP, signalProcess)
+import           System.Process      (CreateProcess (..), ProcessHandle, StdStream (..), createProcess, getPid,
+                                      interruptProcessGroupOf, proc, readCreateProcessWithExitCode,
+                                      terminateProcess, waitForProcess)
 import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
@@ -123,6 +125,16 @@ child arg = case break (== ':') arg of
     , optReplay = Nothing, optOut = dir } (Just crowd) circle circle
   _ -> ioError (userError ("unknown child " ++ show arg))
 
+-- | The ways a run is stopped from outside: a name, how to send it to
+-- the child, the exit code expected, and the capabilities to run with.
+stops :: [(String, ProcessHandle -> IO (), Int, Int)]
+stops =
+  [ ("Ctrl-C", interruptProcessGroupOf, 130, 1)
+  , ("Ctrl-C", interruptProcessGroupOf, 130, 2)
+  , ("SIGTERM", terminateProcess, 143, 1)
+  , ("SIGTERM", terminateProcess, 143, 2)
+  , ("SIGHUP", \ph -> getPid ph >>= mapM_ (signalProcess sigHUP), 129, 1) ]
+
 spec :: Spec
 spec = do
   describe "worlds of any size" $ do
@@ -218,8 +230,8 @@ spec = do
       err `shouldSatisfy` ("cannot write to standard output" `isInfixOf`)
       err `shouldSatisfy` ("Bad file descriptor" `isInfixOf`)
       doesFileExist (dir </> "run.svg") `shouldReturn` True
-  describe "Ctrl-C" $ forM_ [1, 2 :: Int] $ \caps ->
-    it ("stops with exit code 130, the summary, whole frames, a log with its summary and the page (+RTS -N"
+  describe "Ctrl-C, SIGTERM and SIGHUP" $ forM_ stops $ \(name, send, expected, caps) ->
+    it ("stop with exit code " ++ show expected ++ " (" ++ name ++ "), the summary, whole frames, a log with its summary and the page (+RTS -N"
         ++ show caps ++ ")") $ withTempDir $ \dir -> do
       self <- getExecutablePath
       environment <- getEnvironment
@@ -231,9 +243,9 @@ spec = do
             if length names >= 20 || k > (200 :: Int) then pure () else threadDelay 50000 >> waitForFrames (k + 1)
           orElse act d = either (\(_ :: IOError) -> d) id <$> try act
       waitForFrames 0
-      interruptProcessGroupOf ph
+      send ph
       code <- waitForProcess ph
-      code `shouldBe` ExitFailure 130
+      code `shouldBe` ExitFailure expected
       out <- hGetContents hout
       out `shouldSatisfy` ("interrupted: " `isPrefixOf`)
       names <- listDirectory (dir </> "f")
@@ -467,13 +479,21 @@ spec = do
       let out = dir </> "f"
       createDirectory out
       createDirectory (out </> "frame-000003.ppm")   -- in the way of the fourth frame
-      (o, err, r) <- captured (runSimWith (quick out) (Just world) drive drive)
+      (o, err, r) <- captured (runSimWith (quick out) { optLog = Just (dir </> "run.jsonl")
+                                                      , optResult = Just (dir </> "r.json") } (Just world) drive drive)
       r `shouldBe` Left (ExitFailure 1)
       o `shouldSatisfy` ("stopped: 0.11 s simulated in 12 steps, 3 frames" `isInfixOf`)
       err `shouldSatisfy` ("a write failed" `isInfixOf`)
       names <- listDirectory out
       filter (".tmp" `isInfixOf`) names `shouldBe` []
       length names `shouldBe` 4
+      -- the log's summary and the result line say what stopped the run
+      logRead <- readLogFile (dir </> "run.jsonl")
+      fmap (fmap (\sm -> (lsInterrupted sm, fmap ("the run stopped: a write failed: " `isPrefixOf`) (lsFailure sm)))
+              . rlSummary) logRead
+        `shouldBe` Right (Just (False, Just True))
+      result <- readFile (dir </> "r.json")
+      result `shouldSatisfy` ("\"failure\":\"the run stopped: a write failed: " `isInfixOf`)
 
   describe "every core: the outputs written by a thread of their own (two capabilities)" $ do
     let talk _ = localTime >>> arr (\t -> mrFinalize (ddVelDiff 0.7 0.9 `mrMerge` tcoPrintMessage

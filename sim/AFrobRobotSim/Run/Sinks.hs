@@ -52,6 +52,7 @@ import           AFrobRobotSim.FlatArray   (DblArr, freezeD, indexD, newDblArr, 
 import           AFrobRobotSim.JSON        (encodeJSON)
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
+import           AFrobRobotSim.OutputFile  (writeWhole)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Render.SVG  (svgOf)
 import           AFrobRobotSim.Replay
@@ -194,7 +195,7 @@ svgSink every (style, scene) file = do
                     robots = [0 .. maximum (map centresCount cs) - 1]
                 in svgOf style scene (Just (s0, f)) (map track robots) [ p | i <- robots, p : _ <- [track i] ]
               _ -> renderSVG style scene []
-        attempt (show file) (Just ("wrote " ++ displayPath file)) (writeFile file picture)
+        attempt (show file) (Just ("wrote " ++ displayPath file)) (writeWhole file (`writeFile` picture))
   pure (Sink step finish)
 
 -- A snapshot's time and its robots' centres, unboxed (x and y of robot
@@ -254,7 +255,8 @@ resultSink prog opts file = do
         writeIORef ref $! if n == 0 then startTallies s else stepTallies (optDt opts) s old
       finish summary = do
         tallies <- readIORef ref
-        attempt (show file) Nothing (writeFile file (encodeJSON (resultJSON prog opts summary tallies) ++ "\n"))
+        attempt (show file) Nothing
+          (writeWhole file (`writeFile` (encodeJSON (resultJSON prog opts summary tallies) ++ "\n")))
   pure (Sink step finish)
 
 -- Run a write: its failure as a message, or its success as the line given

@@ -1,0 +1,50 @@
+-- | "AFrobRobotSim.OutputFile": a file written whole or not at all.
+module AFrobRobotSim.OutputFileSpec (spec) where
+
+import           Control.Concurrent (forkIO, newEmptyMVar, putMVar, takeMVar)
+import           Control.Exception (ErrorCall (..), throwIO, try)
+import           System.Directory  (createFileLink, listDirectory, pathIsSymbolicLink)
+import           System.FilePath   ((</>))
+import           System.Posix.Files (createNamedPipe, getFileStatus, isNamedPipe)
+import           System.Timeout    (timeout)
+import           Test.Hspec
+
+import           AFrobRobotSim.OutputFile
+import           TestUtil          (withTempDir)
+
+spec :: Spec
+spec = describe "writeWhole" $ do
+  it "writes a new file, and replaces an old one, leaving nothing else in the folder" $ withTempDir $ \dir -> do
+    let file = dir </> "run.svg"
+    writeWhole file (`writeFile` "first")
+    readFile file `shouldReturn` "first"
+    writeWhole file (`writeFile` "second")
+    readFile file `shouldReturn` "second"
+    listDirectory dir `shouldReturn` ["run.svg"]
+
+  it "leaves the old file as it was, and no temporary file, when the writing fails half way" $ withTempDir $ \dir -> do
+    let file = dir </> "result.json"
+    writeFile file "old"
+    r <- try (writeWhole file (\tmp -> writeFile tmp "half of the new" >> throwIO (ErrorCall "disk full")))
+    r `shouldBe` Left (ErrorCall "disk full")
+    readFile file `shouldReturn` "old"
+    listDirectory dir `shouldReturn` ["result.json"]
+
+  it "writes through a symbolic link: the link stays, its target is replaced" $ withTempDir $ \dir -> do
+    writeFile (dir </> "target.html") "old"
+    createFileLink "target.html" (dir </> "link.html")
+    writeWhole (dir </> "link.html") (`writeFile` "new")
+    pathIsSymbolicLink (dir </> "link.html") `shouldReturn` True
+    readFile (dir </> "target.html") `shouldReturn` "new"
+
+  it "writes in place what is not a regular file (a named pipe): nothing made beside it or put in its place" $
+    withTempDir $ \dir -> do
+      let pipe = dir </> "pipe"
+      createNamedPipe pipe 0o600
+      got <- newEmptyMVar
+      _ <- forkIO (readFile pipe >>= \t -> length t `seq` putMVar got t)
+      done <- timeout 5000000 (writeWhole pipe (`writeFile` "through the pipe"))
+      done `shouldBe` Just ()
+      timeout 5000000 (takeMVar got) `shouldReturn` Just "through the pipe"
+      isNamedPipe <$> getFileStatus pipe `shouldReturn` True
+      listDirectory dir `shouldReturn` ["pipe"]
