@@ -10,7 +10,8 @@
 -- good file of an earlier run at that path would be gone. 'writeWhole'
 -- writes a regular file (or a new one) beside its final place and renames
 -- it there once it is complete, so the path holds the old file or the new
--- one, never a part. A path that names something else than a regular
+-- one, never a part (an error names the path, not the temporary file).
+-- A path that names something else than a regular
 -- file (a terminal, @\/dev\/stdout@, @\/dev\/full@, a pipe) is written in
 -- place, as before: there is nothing to keep, and no file to rename over.
 module AFrobRobotSim.OutputFile
@@ -20,6 +21,7 @@ module AFrobRobotSim.OutputFile
 import           Control.Exception (IOException, catch, onException)
 import           System.Directory  (canonicalizePath, doesPathExist, removeFile, renameFile)
 import           System.FilePath   (takeDirectory, takeFileName, (</>))
+import           System.IO.Error   (ioeSetFileName)
 #if !defined(mingw32_HOST_OS)
 import           System.Posix.Files (getFileStatus, isRegularFile)
 import           System.Posix.Process (getProcessID)
@@ -39,7 +41,8 @@ writeWhole path write = do
   regular <- if exists then isRegular real else pure True
   if not regular then write path else do
     tmp <- temporaryFor real
-    (write tmp >> renameFile tmp real) `onException` removeQuietly tmp
+    ((write tmp >> renameFile tmp real) `onException` removeQuietly tmp)
+      `catch` \(e :: IOException) -> ioError (ioeSetFileName e path)
   where
     removeQuietly f = removeFile f `catch` \(_ :: IOException) -> pure ()
 

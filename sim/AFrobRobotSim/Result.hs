@@ -43,6 +43,7 @@ module AFrobRobotSim.Result
   , lookupSimParam
   , paramOr
   , readSimParam
+  , unreadParams
     -- * The result line
   , RobotTally (..)
   , startTallies
@@ -51,7 +52,9 @@ module AFrobRobotSim.Result
   ) where
 
 import           Control.Exception    (SomeException, displayException, evaluate, try)
-import           Data.List            (foldl', (\\))
+import           Data.IORef           (IORef, atomicModifyIORef', newIORef, readIORef)
+import           Data.List            (foldl', nub, (\\))
+import           System.IO.Unsafe     (unsafePerformIO)
 import           System.Environment   (getArgs, getProgName)
 import           System.Exit          (ExitCode (..), exitWith)
 import           System.IO            (hPutStrLn, stderr)
@@ -68,7 +71,25 @@ import           AFrobRobotSim.Simulator
 -- place). A command line that does not parse gives @[]@; 'AFrobRobotSim.runSim' then
 -- reports the fault before anything is simulated.
 getSimParams :: IO [(String, String)]
-getSimParams = simParamsOf <$> getArgs
+getSimParams = atomicModifyIORef' paramReads (\(_, ns) -> ((True, ns), ())) >> simParamsOf <$> getArgs
+
+-- The parameters this program has asked for: all of them ('getSimParams'),
+-- or those named ('lookupSimParam', 'paramOr'), for 'unreadParams'.
+paramReads :: IORef (Bool, [String])
+paramReads = unsafePerformIO (newIORef (False, []))
+{-# NOINLINE paramReads #-}
+
+-- | The @--param@s of these options that the program has not asked for
+-- so far (by 'paramOr' or 'lookupSimParam'; none once it has asked for
+-- them all with 'getSimParams'), and the names it has asked for, in
+-- order. 'AFrobRobotSim.runSim' warns of the first list, which is usually
+-- a misspelled name: a run that ignores a parameter silently is a sweep
+-- of identical runs.
+unreadParams :: SimOptions -> IO ([(String, String)], [String])
+unreadParams o = do
+  (everything, names) <- readIORef paramReads
+  let asked = reverse names
+  pure (if everything then [] else [ p | p@(k, _) <- optParams o, k `notElem` asked ], nub asked)
 
 -- | The @--param@ pairs of a command line (as 'getSimParams', purely).
 simParamsOf :: [String] -> [(String, String)]
@@ -78,7 +99,9 @@ simParamsOf args = case parseSimArgs defaultSimOptions args of
 
 -- | The value of one @--param@ of this program's command line, if given.
 lookupSimParam :: String -> IO (Maybe String)
-lookupSimParam name = lookup name <$> getSimParams
+lookupSimParam name = do
+  atomicModifyIORef' paramReads (\(e, ns) -> ((e, name : ns), ()))
+  lookup name . simParamsOf <$> getArgs
 
 -- | @paramOr name def@: the @--param name=VALUE@ of this program's
 -- command line read with 'Read' (a 'String' parameter must then be

@@ -62,7 +62,7 @@ import           Control.Exception         (AsyncException (UserInterrupt), Exce
                                             evaluate, throwIO, try)
 import           Control.Monad             (forM, unless, when)
 import           Data.IORef
-import           Data.List                 (foldl', isPrefixOf)
+import           Data.List                 (foldl', intercalate, isPrefixOf)
 import           Data.Maybe                (catMaybes)
 import           GHC.Clock                 (getMonotonicTime)
 import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
@@ -82,13 +82,14 @@ import           AFrobRobotSim.Options
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
+import           AFrobRobotSim.Result      (unreadParams)
 import           AFrobRobotSim.Run.Signals
 import           AFrobRobotSim.Run.Sinks
 import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
-import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, ioErrorText,
+import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, ioErrorText, quote,
                                             tolerantOutput)
 import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 
@@ -124,6 +125,13 @@ runSimWith opts mworld rcA rcB = do
       (errs, ffmpeg) <- preflight (worldBounds world) opts
       unless (null errs) $
         failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
+      -- (a parameter no controller asked for is usually a misspelled name)
+      (unread, asked) <- unreadParams opts
+      let readsText | null asked = "it reads none"
+                    | otherwise  = "it reads " ++ intercalate ", " (map quote asked)
+      unless (null unread) $ putErr $ unlines
+        [ prog ++ ": warning: --param " ++ k ++ "=" ++ v ++ ": this program has asked for no parameter named "
+          ++ quote k ++ " (" ++ readsText ++ ")" | (k, v) <- unread ]
       simulateRun prog opts ffmpeg world rcA rcB
 
 -- Every check of the options and the file system that can be made before

@@ -1,10 +1,10 @@
 -- | "AFrobRobotSim.OutputFile": a file written whole or not at all.
 module AFrobRobotSim.OutputFileSpec (spec) where
 
-import           Control.Concurrent (forkIO, newEmptyMVar, putMVar, takeMVar)
 import           Control.Exception (ErrorCall (..), throwIO, try)
 import           System.Directory  (createFileLink, listDirectory, pathIsSymbolicLink)
 import           System.FilePath   ((</>))
+import           System.IO         (IOMode (..), hClose, hGetContents, openFile)
 import           System.Posix.Files (createNamedPipe, getFileStatus, isNamedPipe)
 import           System.Timeout    (timeout)
 import           Test.Hspec
@@ -41,10 +41,12 @@ spec = describe "writeWhole" $ do
     withTempDir $ \dir -> do
       let pipe = dir </> "pipe"
       createNamedPipe pipe 0o600
-      got <- newEmptyMVar
-      _ <- forkIO (readFile pipe >>= \t -> length t `seq` putMVar got t)
+      -- (the reading end open first: a pipe is opened for writing only
+      -- when something reads it)
+      h <- openFile pipe ReadMode
       done <- timeout 5000000 (writeWhole pipe (`writeFile` "through the pipe"))
       done `shouldBe` Just ()
-      timeout 5000000 (takeMVar got) `shouldReturn` Just "through the pipe"
+      timeout 5000000 (hGetContents h >>= \t -> length t `seq` pure t) `shouldReturn` Just "through the pipe"
+      hClose h
       isNamedPipe <$> getFileStatus pipe `shouldReturn` True
       listDirectory dir `shouldReturn` ["pipe"]

@@ -20,7 +20,7 @@ import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
 import           Data.Char           (isPrint)
 import           System.Directory    (createDirectory, createFileLink, doesFileExist, listDirectory)
 import           System.Exit         (ExitCode (..))
-import           System.FilePath     ((</>))
+import           System.FilePath     (takeFileName, (</>))
 import           System.IO
 import           Test.Hspec          hiding (after)
 
@@ -123,6 +123,10 @@ child arg = case break (== ':') arg of
   ("svgmany", _ : dir) -> runSimWith defaultSimOptions
     { optSeconds = 2000, optDt = 0.04, optQuiet = True, optFrames = False, optSvg = Just (dir </> "run.svg")
     , optReplay = Nothing, optOut = dir } (Just crowd) circle circle
+  ("params", _ : dir) -> do
+    _ <- paramOr "speed" (1 :: Double)
+    runSimWith (quick dir) { optFrames = False, optSeconds = 0.1, optParams = [("sped", "2"), ("speed", "3")] }
+      (Just world) drive drive
   _ -> ioError (userError ("unknown child " ++ show arg))
 
 -- | The ways a run is stopped from outside: a name, how to send it to
@@ -196,6 +200,15 @@ spec = do
       a <- framesIn (dir </> "a")
       b <- framesIn (dir </> "b")
       (length a, a == b) `shouldBe` (51, True)
+  describe "parameters" $
+    it "warns of a --param the program never asked for (a misspelled name), naming those it did" $ withTempDir $ \dir -> do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (code, _, err) <- readCreateProcessWithExitCode
+        (proc self []) { env = Just ((childVariable, "params:" ++ dir) : environment) } ""
+      code `shouldBe` ExitSuccess
+      lines err `shouldBe`
+        [ takeWhile (/= '.') (takeFileName self) ++ ": warning: --param sped=2: this program has asked for no parameter named \"sped\" (it reads \"speed\")" ]
   describe "memory" $ do
     -- a child run (see 'child') under a heap limit: it ends well, having
     -- simulated what it should

@@ -44,6 +44,7 @@ child "program" = do
   speed  <- paramOr "speed" (0.1 :: Double)
   failAt <- paramOr "failAt" (1 / 0 :: Double)
   _      <- paramOr "ratio" (0 :: Rational)   -- read, for the test of a value that cannot be made
+  _      <- lookupSimParam "tag"               -- asked for, so that runSim does not warn of it
   let seed = case parseSimArgs defaultSimOptions args of
         Right (RunWith o) -> optSeed o
         _                 -> 0
