@@ -11,56 +11,73 @@
 -- writes a regular file (or a new one) beside its final place and renames
 -- it there once it is complete, so the path holds the old file or the new
 -- one, never a part (an error names the path, not the temporary file).
--- A path that names something else than a regular
--- file (a terminal, @\/dev\/stdout@, @\/dev\/full@, a pipe) is written in
--- place, as before: there is nothing to keep, and no file to rename over.
+--
+-- Written in place, as before: a path that names something else than a
+-- regular file (a terminal, @\/dev\/stdout@, @\/dev\/full@, a pipe, a
+-- process substitution's @\/dev\/fd\/N@), where there is nothing to keep
+-- and no file to rename over; a file in a folder this program may not
+-- write to (the file itself writable), where no file can be made beside
+-- it; and every path on Windows. A file replaced keeps its permissions
+-- (and, where this program may set them, its owner and group); another
+-- hard link to the old file keeps the old contents.
 module AFrobRobotSim.OutputFile
   ( writeWhole
   ) where
 
-import           Control.Exception (IOException, catch, onException)
-import           System.Directory  (canonicalizePath, doesPathExist, removeFile, renameFile)
+#if !defined(mingw32_HOST_OS)
+import           Control.Exception (IOException, catch, onException, try)
+import           System.Directory  (canonicalizePath, getPermissions, removeFile, renameFile, writable)
 import           System.FilePath   (takeDirectory, takeFileName, (</>))
 import           System.IO.Error   (ioeSetFileName)
-#if !defined(mingw32_HOST_OS)
-import           System.Posix.Files (getFileStatus, isRegularFile)
+import           System.Posix.Files (FileStatus, fileGroup, fileMode, fileOwner, getFileStatus, isRegularFile,
+                                     setFileMode, setOwnerAndGroup)
 import           System.Posix.Process (getProcessID)
 #endif
 
 -- | @writeWhole path write@ runs @write@ on a path where it writes the
--- whole file. For a regular file, or a path where nothing is yet, that is
--- a temporary file in the same folder (named after the file and this
--- process), renamed to @path@ (a symbolic link's target, when @path@ is
--- one) once @write@ has returned; if @write@ throws, the temporary file is
--- removed and @path@ is as it was. Any other existing path is given to
--- @write@ itself. What @write@ or the rename throws is thrown on.
+-- whole file. For a regular file, or a path where nothing is yet, in a
+-- folder this program may write to, that is a temporary file in the same
+-- folder (named after the file and this process), renamed to @path@ (a
+-- symbolic link's target, when @path@ is one) once @write@ has returned;
+-- if @write@ throws, the temporary file is removed and @path@ is as it
+-- was. Otherwise (see the module's documentation) @write@ is given @path@
+-- itself. What @write@ or the rename throws is thrown on.
 writeWhole :: FilePath -> (FilePath -> IO ()) -> IO ()
+#if !defined(mingw32_HOST_OS)
 writeWhole path write = do
-  real <- canonicalizePath path
-  exists <- doesPathExist real
-  regular <- if exists then isRegular real else pure True
-  if not regular then write path else do
-    tmp <- temporaryFor real
-    ((write tmp >> renameFile tmp real) `onException` removeQuietly tmp)
-      `catch` \(e :: IOException) -> ioError (ioeSetFileName e path)
+  -- (the status of what the path names, links followed: a pipe behind
+  -- /dev/stdout is not a path canonicalizePath can give)
+  status <- try (getFileStatus path)
+  case status of
+    Right st | not (isRegularFile st) -> write path
+    _ -> do
+      real <- canonicalizePath path
+      folderOk <- either (\(_ :: IOException) -> False) writable <$> try (getPermissions (takeDirectory real))
+      if not folderOk then write path else do
+        tmp <- temporaryFor real
+        let old = either (\(_ :: IOException) -> Nothing) Just status
+        ((write tmp >> keepAttributes old tmp >> renameFile tmp real) `onException` removeQuietly tmp)
+          `catch` \(e :: IOException) -> ioError (ioeSetFileName e path)
   where
     removeQuietly f = removeFile f `catch` \(_ :: IOException) -> pure ()
 
--- Whether an existing path is a regular file.
-isRegular :: FilePath -> IO Bool
-#if !defined(mingw32_HOST_OS)
-isRegular p = isRegularFile <$> getFileStatus p
-#else
-isRegular _ = pure True
-#endif
+-- The old file's permissions, owner and group on its replacement (what
+-- this program may not set is left as it is).
+keepAttributes :: Maybe FileStatus -> FilePath -> IO ()
+keepAttributes old tmp = case old of
+  Nothing -> pure ()
+  Just st -> do
+    quietly (setFileMode tmp (fileMode st))
+    quietly (setOwnerAndGroup tmp (fileOwner st) (fileGroup st))
+  where
+    quietly act = act `catch` \(_ :: IOException) -> pure ()
 
 -- A temporary file's name beside a file: hidden, with this process's
 -- number, so that two programs writing the same file do not share it.
 temporaryFor :: FilePath -> IO FilePath
 temporaryFor real = do
-#if !defined(mingw32_HOST_OS)
   pid <- show <$> getProcessID
-#else
-  let pid = "0"
-#endif
   pure (takeDirectory real </> ("." ++ takeFileName real ++ ".afrp-" ++ pid ++ ".tmp"))
+#else
+writeWhole path write = write path
+#endif

@@ -84,7 +84,11 @@ paramReads = unsafePerformIO (newIORef (False, []))
 -- them all with 'getSimParams'), and the names it has asked for, in
 -- order. 'AFrobRobotSim.runSim' warns of the first list, which is usually
 -- a misspelled name: a run that ignores a parameter silently is a sweep
--- of identical runs.
+-- of identical runs. The record is the process's: a program that reads
+-- its parameters otherwise ('simParamsOf' or 'readSimParam' on its own
+-- arguments) is warned of them, unless it calls 'getSimParams'; names
+-- asked for before an earlier 'AFrobRobotSim.runSim' of the same process
+-- still count.
 unreadParams :: SimOptions -> IO ([(String, String)], [String])
 unreadParams o = do
   (everything, names) <- readIORef paramReads

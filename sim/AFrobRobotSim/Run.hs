@@ -317,8 +317,8 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
       (produced, stopped) <- pipeline (batchFor nRobots) (\s -> () <$ evaluate (forceState s)) sinkAll states
       maybe (either endedBy (const (pure Finished)) produced) endedBy stopped
     else try (loop 0 states) >>= either endedBy pure
-  -- (from here a SIGTERM or SIGHUP no longer stops the run: it is writing
-  -- its outputs)
+  -- (from here a SIGTERM no longer stops the run: it is writing its
+  -- outputs, and assembling the video)
   finishing stopper
   signal <- stopNow stopper
   when progress (hPutStr stderr eraseProgress)
@@ -363,11 +363,15 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
   let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs
                                          ++ outErrs ++ videoErrs)
   unless (null allErrs) (putErr (unlines allErrs))
+  -- (a SIGTERM that came while the outputs were written: the run is
+  -- whole, but whoever sent it is told that it came)
+  lateSignal <- stopNow stopper
   case ending of
     -- (the shell's code for a program ended by a signal: 128 and its
     -- number, Ctrl-C's 2 when no other came)
     Interrupted -> exitWith (ExitFailure (128 + maybe 2 id signal))
     Failed _    -> exitWith (ExitFailure 1)
+    _ | Just k <- lateSignal -> exitWith (ExitFailure (128 + k))
     _ | not (null allErrs) -> exitWith (ExitFailure 1)
       | otherwise          -> pure ()
 

@@ -128,22 +128,19 @@ parB = parWith stepperFor broadcast
 {-# INLINE [1] parB #-}
 
 -- | @parZ sfs@ runs the i-th member on the i-th element of the input list.
--- Extra inputs are ignored. When the input list is shorter than @sfs@, a
--- member without an element gets an error as its input (naming the
--- function), raised only if that member uses it; the others run on, and
--- so does every member at the next sample with a list long enough, as in
--- Yampa (whose members get an error in the same place).
---
--- > map head (embed (parZ [localTime, identity]) ([1, 2], [(1, Just [5])]))  ==  [0, 1]
--- >   -- (the second member's output at time 1 is the error)
+-- An input list shorter than @sfs@ is an error (raised when that sample is
+-- stepped, naming the function, and at every later sample: the collection
+-- is gone); extra inputs are ignored. (Yampa 0.15's @parZ@ raises for the
+-- members beyond the list's end only, at that sample and every later
+-- one, and runs the others on; its @parC@ raises for the whole output, as
+-- afrp's do.)
 parZ :: [SF a b] -> SF [a] [b]
 parZ = parWith stepColL (zipRoute "parZ")
 
 -- | @parC sf@ runs one copy of @sf@ per element of its input list, the i-th
 -- on the i-th element. The number of copies is the length of the input
--- list at local time 0; later, as for 'parZ', a copy without an element
--- gets an error as its input (raised only if it uses it), and extra
--- elements are ignored. The input list is looked at only when the
+-- list at local time 0; later a shorter list is an error (as for 'parZ'),
+-- extra elements are ignored. The input list is looked at only when the
 -- output is demanded (or at the next sample), as for every collection.
 --
 -- > embed (parC localTime) ("ab", [(1, Just "cd")])  ==  [[0, 0], [1, 1]]
@@ -391,16 +388,12 @@ drpSwitchZ = drpSwitchWith stepColL (zipRoute "drpSwitchZ")
 broadcast :: Functor col => a -> col sf -> col (a, sf)
 broadcast a = fmap (\sf -> (a, sf))
 
--- Each member with its element of the input list; a member beyond the
--- list's end with an error that names the function (raised only if the
--- member uses its input).
 zipRoute :: String -> [a] -> [sf] -> [(a, sf)]
 zipRoute name = go
   where
     go _        []       = []
     go (a : as) (s : ss) = (a, s) : go as ss
-    go []       ss       = [ (missing, s) | s <- ss ]
-    missing = error ("AFRP.Parallel." ++ name
+    go []       _        = error ("AFRP.Parallel." ++ name
       ++ ": the input list is shorter than the list of signal functions")
 
 -- The stepper of a collection type: 'stepColF', replaced by the rules at

@@ -12,7 +12,7 @@
 --
 -- = What the runners evaluate
 --
--- As Yampa's, with one exception: 'reactimate' evaluates each input
+-- As Yampa's, with two exceptions (below): 'reactimate' evaluates each input
 -- sample and each output sample to weak head normal form after the output
 -- has been actuated (the first ones included, even when @actuate@ says
 -- stop); 'embed' evaluates a later sample's input when the rest of the
@@ -25,7 +25,7 @@
 -- > take 2 (embed (iPre 0) (1, [(1, Just undefined), (1, Just 3)]))  ==  [0, 1]
 -- > length (embed (iPre 0) (1, [(1, Just undefined), (1, Just 3)]))   -- raises
 --
--- The exception: 'embed' never evaluates an output (Yampa's evaluates
+-- The first exception: 'embed' never evaluates an output (Yampa's evaluates
 -- each one but the first when the list goes past it), so @length@ of an
 -- embedded run shows what a signal function computes without its outputs
 -- being looked at:
@@ -33,9 +33,11 @@
 -- > length (embed (arr (\x -> if x == 2 then error "boom" else x)) (1, [(1, Just 2)]))  ==  2
 -- >   -- (Yampa's raises "boom")
 --
--- 'react' evaluates neither (as Yampa's): it only looks at whether the
--- sample is 'Nothing', so that a long run of unchanged samples builds no
--- chain of thunks. 'evalAtZero' and 'evalAt' evaluate nothing.
+-- 'react' evaluates neither the input nor the output, as Yampa's, but
+-- (the second exception) it looks at whether the sample is 'Nothing',
+-- where Yampa's does not, so that a long run of unchanged samples builds
+-- no chain of thunks: @react h (dt, undefined)@ raises. 'evalAtZero' and
+-- 'evalAt' evaluate nothing.
 module AFRP.Run
   ( -- * Running in a monad
     reactimate

@@ -50,7 +50,9 @@ infixl 6 ^+^, ^-^
 -- * @a *^ (u ^+^ v) == a *^ u ^+^ a *^ v@ and @(a + b) *^ v == a *^ v ^+^ b *^ v@
 -- * @dot u v == dot v u@, @dot@ is bilinear and @dot v v >= 0@
 -- * @v ^/ a == (1 / a) *^ v@, @u ^-^ v == u ^+^ negateVector v@
--- * @norm v == sqrt (dot v v)@ and @norm (normalize v) == 1@ for @v /= zeroVector@
+-- * @norm v == sqrt (dot v v)@ (where @dot v v@ does not overflow: at
+--   'Double' and 'Float', 'norm' is 'abs') and @norm (normalize v) == 1@
+--   for @v /= zeroVector@
 class (Eq a, Floating a) => VectorSpace v a | v -> a where
   -- | The additive identity.
   --
@@ -228,6 +230,13 @@ instance (a ~ b, a ~ c, a ~ d, Eq a, Floating a) => VectorSpace (a, b, c, d) a w
   (x1, y1, z1, u1) ^+^ (x2, y2, z2, u2)   = (x1 + x2, y1 + y2, z1 + z2, u1 + u2)
   (x1, y1, z1, u1) ^-^ (x2, y2, z2, u2)   = (x1 - x2, y1 - y2, z1 - z2, u1 - u2)
   dot (x1, y1, z1, u1) (x2, y2, z2, u2)   = x1 * x2 + y1 * y2 + z1 * z2 + u1 * u2
+  {-# INLINE zeroVector #-}
+  {-# INLINE (*^) #-}
+  {-# INLINE (^/) #-}
+  {-# INLINE negateVector #-}
+  {-# INLINE (^+^) #-}
+  {-# INLINE (^-^) #-}
+  {-# INLINE dot #-}
 
 -- | Quintuples @(a, a, a, a, a)@ as five-dimensional vectors, as in Yampa
 -- (component-wise operations, the Euclidean inner product; the head as
@@ -240,3 +249,10 @@ instance (a ~ b, a ~ c, a ~ d, a ~ e, Eq a, Floating a) => VectorSpace (a, b, c,
   (x1, y1, z1, u1, v1) ^+^ (x2, y2, z2, u2, v2)   = (x1 + x2, y1 + y2, z1 + z2, u1 + u2, v1 + v2)
   (x1, y1, z1, u1, v1) ^-^ (x2, y2, z2, u2, v2)   = (x1 - x2, y1 - y2, z1 - z2, u1 - u2, v1 - v2)
   dot (x1, y1, z1, u1, v1) (x2, y2, z2, u2, v2)   = x1 * x2 + y1 * y2 + z1 * z2 + u1 * u2 + v1 * v2
+  {-# INLINE zeroVector #-}
+  {-# INLINE (*^) #-}
+  {-# INLINE (^/) #-}
+  {-# INLINE negateVector #-}
+  {-# INLINE (^+^) #-}
+  {-# INLINE (^-^) #-}
+  {-# INLINE dot #-}

@@ -5,7 +5,9 @@ import           Control.Exception (ErrorCall (..), throwIO, try)
 import           System.Directory  (createFileLink, listDirectory, pathIsSymbolicLink)
 import           System.FilePath   ((</>))
 import           System.IO         (IOMode (..), hClose, hGetContents, openFile)
-import           System.Posix.Files (createNamedPipe, getFileStatus, isNamedPipe)
+import           Data.List         (sort)
+import           System.Posix.Files (createNamedPipe, fileMode, getFileStatus, isNamedPipe, regularFileMode,
+                                     setFileMode)
 import           System.Timeout    (timeout)
 import           Test.Hspec
 
@@ -30,6 +32,14 @@ spec = describe "writeWhole" $ do
     readFile file `shouldReturn` "old"
     listDirectory dir `shouldReturn` ["result.json"]
 
+  it "keeps the permissions of the file it replaces" $ withTempDir $ \dir -> do
+    let file = dir </> "private.json"
+    writeFile file "old"
+    setFileMode file 0o600
+    writeWhole file (`writeFile` "new")
+    readFile file `shouldReturn` "new"
+    (fileMode <$> getFileStatus file) `shouldReturn` (regularFileMode + 0o600)
+
   it "writes through a symbolic link: the link stays, its target is replaced" $ withTempDir $ \dir -> do
     writeFile (dir </> "target.html") "old"
     createFileLink "target.html" (dir </> "link.html")
@@ -50,3 +60,15 @@ spec = describe "writeWhole" $ do
       hClose h
       isNamedPipe <$> getFileStatus pipe `shouldReturn` True
       listDirectory dir `shouldReturn` ["pipe"]
+
+  it "writes in place through a symbolic link to a named pipe (as /dev/stdout may be)" $
+    withTempDir $ \dir -> do
+      let pipe = dir </> "pipe"
+      createNamedPipe pipe 0o600
+      createFileLink pipe (dir </> "out")
+      h <- openFile pipe ReadMode
+      done <- timeout 5000000 (writeWhole (dir </> "out") (`writeFile` "linked"))
+      done `shouldBe` Just ()
+      timeout 5000000 (hGetContents h >>= \t -> length t `seq` pure t) `shouldReturn` Just "linked"
+      hClose h
+      sort <$> listDirectory dir `shouldReturn` ["out", "pipe"]

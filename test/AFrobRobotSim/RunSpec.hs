@@ -8,9 +8,9 @@ import           Control.Monad       (forM_)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
 import           Control.Concurrent  (threadDelay)
-import           System.Posix.Signals (sigHUP, signalProcess)
-import           System.Process      (CreateProcess (..), ProcessHandle, StdStream (..), createProcess, getPid,
-                                      interruptProcessGroupOf, proc, readCreateProcessWithExitCode,
+import           System.Process      (CreateProcess (..), ProcessHandle, StdStream (..), createProcess,
+                                      getProcessExitCode, interruptProcessGroupOf, proc,
+                                      readCreateProcessWithExitCode,
                                       terminateProcess, waitForProcess)
 import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
@@ -136,8 +136,7 @@ stops =
   [ ("Ctrl-C", interruptProcessGroupOf, 130, 1)
   , ("Ctrl-C", interruptProcessGroupOf, 130, 2)
   , ("SIGTERM", terminateProcess, 143, 1)
-  , ("SIGTERM", terminateProcess, 143, 2)
-  , ("SIGHUP", \ph -> getPid ph >>= mapM_ (signalProcess sigHUP), 129, 1) ]
+  , ("SIGTERM", terminateProcess, 143, 2) ]
 
 spec :: Spec
 spec = do
@@ -243,7 +242,23 @@ spec = do
       err `shouldSatisfy` ("cannot write to standard output" `isInfixOf`)
       err `shouldSatisfy` ("Bad file descriptor" `isInfixOf`)
       doesFileExist (dir </> "run.svg") `shouldReturn` True
-  describe "Ctrl-C, SIGTERM and SIGHUP" $ forM_ stops $ \(name, send, expected, caps) ->
+  describe "a SIGTERM the program was started ignoring (nohup, a batch system)" $
+    it "is still ignored: the run goes on, and Ctrl-C stops it" $ withTempDir $ \dir -> do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (_, _, _, ph) <- createProcess (proc "sh" ["-c", "trap '' TERM; exec \"$0\"", self])
+        { env = Just ((childVariable, "long:" ++ dir) : environment), create_group = True
+        , std_out = NoStream, std_err = Inherit }
+      let waitForFrames k = do
+            names <- either (\(_ :: IOError) -> []) id <$> try (listDirectory (dir </> "f"))
+            if length names >= 20 || k > (200 :: Int) then pure () else threadDelay 50000 >> waitForFrames (k + 1)
+      waitForFrames 0
+      terminateProcess ph
+      threadDelay 500000
+      getProcessExitCode ph `shouldReturn` Nothing
+      interruptProcessGroupOf ph
+      waitForProcess ph `shouldReturn` ExitFailure 130
+  describe "Ctrl-C and SIGTERM" $ forM_ stops $ \(name, send, expected, caps) ->
     it ("stop with exit code " ++ show expected ++ " (" ++ name ++ "), the summary, whole frames, a log with its summary and the page (+RTS -N"
         ++ show caps ++ ")") $ withTempDir $ \dir -> do
       self <- getExecutablePath

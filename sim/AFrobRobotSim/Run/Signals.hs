@@ -1,15 +1,23 @@
-{-# LANGUAGE CPP #-}
+{-# LANGUAGE CPP                      #-}
+{-# LANGUAGE ForeignFunctionInterface #-}
 -- |
 -- Module      : AFrobRobotSim.Run.Signals
--- Description : The signals that end a run taken as Ctrl-C is.
+-- Description : The signal that ends a run taken as Ctrl-C is.
 --
 -- A run stopped by Ctrl-C writes what it has (the log's summary, the SVG,
 -- the page, the result line) and says it was interrupted. A run is also
 -- stopped by @SIGTERM@ (@kill@, @timeout@, a batch system's time limit,
--- GNU parallel's halt) and @SIGHUP@ (a closed terminal or SSH session),
--- which by default end a program at once, writing nothing. 'interruptible'
--- makes them stop a run as Ctrl-C does, and ignores them while the run's
--- outputs are being written.
+-- GNU parallel's halt), which by default ends a program at once, writing
+-- nothing. 'interruptible' makes it stop a run as Ctrl-C does, and
+-- ignores it while the run's outputs are being written (the video's
+-- assembly by ffmpeg included), after which the run ends with its exit
+-- code. @SIGHUP@ (a closed terminal) is left as it is: a run that can no
+-- longer write to its terminal could not say what it wrote, and @nohup@
+-- makes a program ignore it.
+--
+-- One window remains: a @SIGTERM@ that comes after a run's last step and
+-- before its outputs are begun (a few instructions), or while the run is
+-- being set up, ends the program as Ctrl-C would there.
 module AFrobRobotSim.Run.Signals
   ( Stopper
   , interruptible
@@ -17,12 +25,17 @@ module AFrobRobotSim.Run.Signals
   , finishing
   ) where
 
-import           Control.Concurrent (ThreadId, myThreadId, throwTo)
-import           Control.Exception  (AsyncException (UserInterrupt), finally)
+import           Control.Concurrent (ThreadId, myThreadId)
 import           Data.IORef
 #if !defined(mingw32_HOST_OS)
-import           Control.Monad      (zipWithM_)
-import           System.Posix.Signals (Handler (Catch), Signal, installHandler, sigHUP, sigTERM)
+import           Control.Concurrent (throwTo)
+import           Control.Exception  (AsyncException (UserInterrupt), finally)
+import           Foreign.C.Types    (CInt (..))
+import           System.Posix.Signals (Handler (Catch), installHandler, sigTERM)
+
+-- Whether the system ignores a signal now (cbits/signals.c).
+foreign import ccall unsafe "afrp_signal_ignored"
+  signalIgnored :: CInt -> IO CInt
 #endif
 
 -- | What 'interruptible' gives its action: which thread a signal stops,
@@ -31,24 +44,26 @@ data Stopper = Stopper ThreadId (IORef Phase)
 
 data Phase = Running | Received Int | Finishing (Maybe Int)
 
--- | @interruptible act@ runs @act@ with @SIGTERM@ and @SIGHUP@ throwing
+-- | @interruptible act@ runs @act@ with @SIGTERM@ throwing
 -- 'UserInterrupt' to the thread that called it (once 'finishing' has
--- been called, they are noted and ignored), and restores their handlers
--- after. Elsewhere than on a POSIX system, @act@ runs as it is.
+-- been called, it is noted and ignored), and restores its handler after.
+-- A program that was started with @SIGTERM@ ignored keeps ignoring it.
+-- Elsewhere than on a POSIX system, @act@ runs as it is.
 interruptible :: (Stopper -> IO a) -> IO a
 interruptible act = do
   me <- myThreadId
   phase <- newIORef Running
   let stopper = Stopper me phase
 #if !defined(mingw32_HOST_OS)
-  let signals = [sigTERM, sigHUP] :: [Signal]
-      on s = installHandler s (Catch (received stopper (fromIntegral s))) Nothing
-  olds <- mapM on signals
-  act stopper `finally` zipWithM_ (\s o -> installHandler s o Nothing) signals olds
+  ignored <- (/= 0) <$> signalIgnored sigTERM
+  if ignored then act stopper else do   -- (as the program was started: nohup, a batch system)
+    old <- installHandler sigTERM (Catch (received stopper (fromIntegral sigTERM))) Nothing
+    act stopper `finally` installHandler sigTERM old Nothing
 #else
   act stopper
 #endif
 
+#if !defined(mingw32_HOST_OS)
 -- A signal received: stop the run, or note it while the outputs are
 -- written.
 received :: Stopper -> Int -> IO ()
@@ -58,6 +73,7 @@ received (Stopper t phase) k = do
     Received j    -> (Received j, False)   -- (the run is stopping already)
     Finishing got -> (Finishing (maybe (Just k) Just got), False)
   if stop then throwTo t UserInterrupt else pure ()
+#endif
 
 -- | The number of the signal that stopped the run ('Nothing' for none, or
 -- for Ctrl-C, which the runtime delivers itself).
