@@ -14,19 +14,8 @@
 -- parser, because a reader's error names a number by its JSON text
 -- ('encodeNumber').
 module AFrobRobotSim.JSON
-  ( -- * Values
-    JSON (..)
-    -- * Encoding
-  , encodeJSON
-  , encodeJSONBuilder
-  , encodeString
-  , encodeNumber
-  , stringBuilder
-  , numberBuilder
-  , numberPrim
-  , shortString
-  , isShortPlain
-  , shortStringPrim
+  ( -- * Values and encoding
+    module AFrobRobotSim.JSON.Encode
     -- * Parsing
   , parseJSON
   , maxDepth
