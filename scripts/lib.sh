@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Shared by scripts/sweep and scripts/sweep-merge (sourced from the
 # folder they are in).
 

@@ -14,6 +14,9 @@
 -- give the same table. A run that failed (a controller error, or a line
 -- the sweep wrote for a run that wrote none) is counted and listed under
 -- its group, never dropped; its outcome, as far as it got, still counts.
+-- A line that is neither a run's result line nor the sweep's line for a
+-- run with no result (a run log given by mistake, @{}@) is refused with
+-- its number and what it lacks, never counted as a failed run.
 module AFrobRobotSim.Sweep
   ( mergeResults
   , sweepMergeMain
@@ -24,7 +27,6 @@ import qualified Data.ByteString     as B
 import           Data.List           (sort, sortOn)
 import qualified Data.Map.Strict     as M
 import qualified Data.Set            as S
-import           Data.Maybe          (fromMaybe)
 import           System.Environment  (getArgs)
 import           System.Exit         (exitWith, ExitCode (..))
 import           System.IO           (hPutStrLn, stderr)
@@ -44,7 +46,7 @@ data Run = Run
 
 -- | The table of a sweep's result lines (the text of one or more result
 -- files, one JSON object a line; blank lines are skipped), or the first
--- line that is not a result, with its number.
+-- line that is not a result line of a sweep, with its number.
 mergeResults :: String -> Either String String
 mergeResults text = do
   runs <- mapM readLine [ (k, l) | (k, l) <- zip [1 :: Int ..] (lines text), any (/= ' ') l ]
@@ -67,37 +69,63 @@ mergeResults text = do
     ++ concatMap (\(kv, rs) -> table (showSetting [kv] ++ " over all other settings") rs) marginal
     ++ note)))
   where
-    readLine (k, l) = either (\e -> Left ("line " ++ show k ++ ": " ++ e)) Right (parseJSON l >>= readRun)
+    readLine (k, l) = either (\e -> Left ("line " ++ show k ++ ": " ++ e)) Right
+                        (either (\e -> Left ("not a result line of a sweep (not JSON: " ++ e ++ ")")) Right (parseJSON l) >>= readRun)
     -- the runs of each key, in input order
     inOrder kvs = M.map reverse (M.fromListWith (++) [ (k, [v]) | (k, v) <- kvs ])
 
+-- | One line of a sweep's result file: either the result line a run
+-- writes (@--result@, "AFrobRobotSim.Result": @program@, @world@, @seed@
+-- a number, @dt@, @seconds@, @params@ and the @outcome@ object with
+-- @simulated@, @steps@, @interrupted@, @failure@, @robots@ and @scores@),
+-- or the line @scripts/sweep@ writes for a run that wrote none
+-- (@program@, @world@, @seed@ a number or a string, @params@, @flags@,
+-- and @failure@ a string where the result line has its outcome). Any
+-- other JSON (a run log's line, @{}@) is refused, naming what it lacks,
+-- rather than counted as a failed run.
 readRun :: JSON -> Either String Run
-readRun v = do
-  world  <- memberMaybe "world" v >>= maybe (Right "?") asString
-  params <- memberMaybe "params" v >>= \mp -> case mp of
-    Just (JObject kvs) -> mapM (\(k, x) -> (,) k <$> asString x) kvs
-    _                  -> Right []
-  seed   <- maybe "?" encodeJSON <$> memberMaybe "seed" v
-  mout   <- memberMaybe "outcome" v
-  failure <- memberMaybe "failure" v >>= traverse asString
-  case mout of
-    Nothing -> pure (Run (("world", world) : sort params) seed (Just (fromMaybe "no result" failure)) [])
+readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) Right $ do
+  fields <- case v of
+    JObject kvs -> Right kvs
+    _           -> Left "not a JSON object"
+  _      <- member "program" v >>= asString
+  world  <- member "world" v >>= asString
+  params <- member "params" v >>= \p -> case p of
+    JObject kvs -> mapM (\(k, x) -> (,) k <$> asString x) kvs
+    _           -> Left "\"params\" is not an object"
+  seedValue <- member "seed" v
+  let group = ("world", world) : sort params
+      seed  = encodeJSON seedValue
+  case lookup "outcome" fields of
+    Nothing -> do
+      -- the sweep's line for a run with no result
+      case seedValue of
+        JNumber _ -> Right ()
+        JString _ -> Right ()
+        _         -> Left "\"seed\" is neither a number nor a string"
+      _       <- member "flags" v >>= asString
+      failure <- member "failure" v >>= asString
+      pure (Run group seed (Just failure) [])
     Just out -> do
-      outFailure <- memberMaybe "failure" out >>= traverse asString
-      interrupted <- maybe False (== JBool True) <$> memberMaybe "interrupted" out
-      simulated <- member "simulated" out >>= asNumber
-      steps     <- member "steps" out >>= asNumber
-      robots    <- maybe (Right []) asArray =<< memberMaybe "robots" out
-      perRobot  <- concat <$> mapM robotValues robots
-      scores    <- memberMaybe "scores" out >>= \ms -> case ms of
-        Just (JObject kvs) -> mapM (\(k, x) -> (,) ("score " ++ k) <$> asNumber x) kvs
-        _                  -> Right []
+      _ <- asNumber seedValue
+      _ <- member "dt" v >>= asNumber
+      _ <- member "seconds" v >>= asNumber
+      outFailure  <- member "failure" out >>= \f -> case f of
+        JNull -> Right Nothing
+        _     -> Just <$> asString f
+      interrupted <- member "interrupted" out >>= asBool
+      simulated   <- member "simulated" out >>= asNumber
+      steps       <- member "steps" out >>= asNumber
+      robots      <- member "robots" out >>= asArray
+      perRobot    <- concat <$> mapM robotValues robots
+      scores      <- member "scores" out >>= \s -> case s of
+        JObject kvs -> mapM (\(k, x) -> (,) ("score " ++ k) <$> asNumber x) kvs
+        _           -> Left "\"scores\" is not an object"
       let fault = case (outFailure, interrupted) of
             (Just f, _)   -> Just f
             (_, True)     -> Just "interrupted"
             _             -> Nothing
-      pure (Run (("world", world) : sort params) seed fault
-                ([("simulated", simulated), ("steps", steps)] ++ perRobot ++ scores))
+      pure (Run group seed fault ([("simulated", simulated), ("steps", steps)] ++ perRobot ++ scores))
   where
     robotValues r = do
       ty <- member "type" r >>= asString
@@ -140,7 +168,10 @@ table heading mine =
 
 -- | The @afrp-sweep-merge FILE...@ program (and @scripts/sweep-merge@):
 -- print the table of the result files (standard input when none is
--- given); exit code 1 with the message when a line is not a result.
+-- given); exit code 1 with the message when a line is not a result line
+-- of a sweep (@FILE: line N: not a result line of a sweep (...)@: not
+-- JSON, or JSON that is neither a run's result line nor the sweep's line
+-- for a run with no result, such as a run log given by mistake).
 sweepMergeMain :: IO ()
 sweepMergeMain = do
   tolerantOutput

@@ -5,6 +5,7 @@
 -- 'childVariable' set.
 module AFrobRobotSim.SweepSpec (spec, childVariable, child) where
 
+import           Control.Concurrent  (threadDelay)
 import           Control.Monad       (forM, forM_, unless)
 import qualified Data.ByteString     as B
 import           Data.Int            (Int8)
@@ -13,13 +14,17 @@ import           Data.Ratio          (Ratio, (%))
 import qualified Data.Set            as S
 import           Data.List           (isInfixOf, isPrefixOf, sort)
 import           Data.Word           (Word8)
-import           System.Directory    (doesFileExist, findExecutable, getPermissions, makeAbsolute,
-                                      setOwnerExecutable, setPermissions)
+import           System.Directory    (createDirectory, createFileLink, doesFileExist, findExecutable,
+                                      getPermissions, listDirectory, makeAbsolute, setOwnerExecutable,
+                                      setPermissions)
 import           System.Environment  (getArgs, getEnvironment, getExecutablePath)
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     ((</>))
-import           System.Process      (CreateProcess (..), proc, readCreateProcessWithExitCode,
-                                      readProcessWithExitCode)
+import           System.IO           (hGetContents, readFile')
+import           System.Process      (CreateProcess (..), StdStream (..), createProcess, getPid, proc,
+                                      readCreateProcessWithExitCode, readProcess, readProcessWithExitCode,
+                                      waitForProcess)
+import           System.Timeout      (timeout)
 import           Test.Hspec
 import           Test.QuickCheck     (forAll, shuffle)
 
@@ -161,6 +166,14 @@ resultLine seed params dist failure = encodeJSON $ JObject
                                    , ("bumps", JNumber 0), ("stuckTime", JNumber 0), ("battery", JNumber 1) ]])
       , ("scores", JObject [("goals", JNumber (fromIntegral seed))]) ]) ]
 
+-- The text with the first occurrence of @old@ replaced by @new@.
+replace :: String -> String -> String -> String
+replace old new = go
+  where
+    go t | old `isPrefixOf` t = new ++ drop (length old) t
+    go (c : cs) = c : go cs
+    go []       = []
+
 spec :: Spec
 spec = do
   describe "mergeResults" $ do
@@ -198,6 +211,42 @@ spec = do
       mergeResults evil `shouldSatisfy` either (const False)
         (\t -> "speed=0.1\\ESC[2J" `isInfixOf` t && "bad\\nFAILED seed 9: forged" `isInfixOf` t
                && all (\c -> c == '\n' || c >= ' ') t)
+
+    it "refuses a line that is neither a run's result line nor the sweep's line for a run with no result" $ do
+      let failureLine = "{\"program\":\"p\",\"world\":\"default\",\"seed\":\"007\",\"params\":{\"speed\":\"1\"}"
+                        ++ ",\"flags\":\"--seed 007 --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
+          refusedAt k ls = mergeResults (unlines ls) `shouldSatisfy`
+            either (("line " ++ show (k :: Int) ++ ": not a result line of a sweep") `isPrefixOf`) (const False)
+      -- the sweep's line for a run that wrote no result is a failed run
+      mergeResults (unlines (take 2 sampleLines ++ [failureLine])) `shouldSatisfy`
+        either (const False) (\t -> "speed=1  (1 runs, 1 failed)" `isInfixOf` t
+                                   && "FAILED seed \"007\": exit code 2, no result: bad flag" `isInfixOf` t)
+      -- an empty object, a run log's lines, another JSON value, not JSON
+      refusedAt 1 ["{}"]
+      refusedAt 2 [head sampleLines, "{\"kind\":\"summary\",\"simulated\":1,\"steps\":101,\"interrupted\":false,\"failure\":null,\"scores\":{}}"]
+      refusedAt 1 ["{\"kind\":\"header\",\"format\":\"afrp-log\",\"version\":1}"]
+      refusedAt 1 ["[1,2]"]
+      refusedAt 2 [head sampleLines, "not json"]
+      -- a result line or a failure line with a field missing or of the wrong kind
+      let without k = encodeJSON . (\v -> case v of
+            JObject kvs -> JObject (filter ((/= k) . fst) kvs)
+            other       -> other) . parsed
+      forM_ ["program", "world", "seed", "dt", "seconds", "params", "outcome"] $ \k ->
+        refusedAt 1 [without k (head sampleLines)]
+      forM_ ["program", "world", "seed", "params", "flags", "failure"] $ \k ->
+        refusedAt 1 [without k failureLine]
+      refusedAt 1 [replace "\"seed\":1," "\"seed\":\"1\"," (head sampleLines)]
+      refusedAt 1 [replace "\"failure\":\"exit" "\"failure\":{\"exit\":1},\"x\":\"exit" failureLine]
+
+    it "afrp-sweep-merge: a run log given by mistake is refused with its file and line (exit 1)" $ withTempDir $ \dir -> do
+      prog <- childScript dir "program"
+      merger <- childScript dir "merge"
+      (code, _, err) <- readProcessWithExitCode prog ["--quiet", "--no-svg", "--no-replay", "--seconds", "1", "--log", dir </> "run.jsonl"] ""
+      (code, err) `shouldBe` (ExitSuccess, "")
+      writeFile (dir </> "r.jsonl") (unlines (take 2 sampleLines))
+      (code', out, err') <- readProcessWithExitCode merger [dir </> "r.jsonl", dir </> "run.jsonl"] ""
+      (code', out) `shouldBe` (ExitFailure 1, "")
+      err' `shouldSatisfy` ((dir </> "run.jsonl" ++ ": line 1: not a result line of a sweep") `isInfixOf`)
 
     it "afrp-sweep-merge: a file that is not UTF-8 is refused with its line, column and byte (exit 1)" $ withTempDir $ \dir -> do
       merger <- childScript dir "merge"
@@ -413,3 +462,128 @@ spec = do
       field ["seed"] (parsed (ls !! 2)) `shouldBe` JString "007"
       table <- merged dir [dir </> "r.jsonl"]
       table `shouldSatisfy` ("FAILED seed \"007\": exit code 2, no result" `isInfixOf`)
+
+    it "refuses a RESULTS that is a world, the jobs file or the program, under any name, before writing anything" $ withTempDir $ \dir -> do
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      let world = dir </> "my.world"
+          keep = "the world, which must not be emptied\n"
+      writeFile world keep
+      writeFile (dir </> "jobs") "--seed 1\n"
+      writeFile (dir </> "world-jobs") ("--seed 1 --world " ++ world ++ "\n")
+      createFileLink world (dir </> "link.jsonl")
+      _ <- readProcess "ln" [world, dir </> "hard.jsonl"] ""
+      let refused args what = do
+            (code, _, err) <- runScriptCode [] sweep args
+            (code, what `isInfixOf` err, "would be emptied" `isInfixOf` err) `shouldBe` (ExitFailure 2, True, True)
+            readFile world `shouldReturn` keep
+      forM_ [world, dir </> "link.jsonl", dir </> "hard.jsonl"] $ \results -> do
+        refused ["--seeds", "1..2", "--worlds", world, prog, results, "--", "--seconds", "1"] "is the world"
+        refused ["--jobs", dir </> "world-jobs", prog, results] "is the world"
+        refused [prog, results, "--", "--world", world] "is the world"
+      refused ["--jobs", dir </> "jobs", prog, dir </> "jobs"] "is the jobs file"
+      readFile (dir </> "jobs") `shouldReturn` "--seed 1\n"
+      refused [prog, prog] "is the program"
+      readFile prog >>= (`shouldSatisfy` (childVariable `isInfixOf`))
+
+    it "RESULTS that cannot be written (/dev/full): exit 1 at once, saying so" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      -- (timeout ends the whole sweep, should it hang)
+      (code, _, err) <- readProcessWithExitCode "timeout" ["120", "bash", sweep, "--seeds", "1..3", prog, "/dev/full", "--", "--seconds", "1"] ""
+      code `shouldBe` ExitFailure 1
+      err `shouldSatisfy` ("could not write the results to /dev/full (No space left on device)" `isInfixOf`)
+      err `shouldNotSatisfy` ("0 failed" `isInfixOf`)
+
+    it "refuses flags after -- that make every run write the same file, and a file two job lines write" $ withTempDir $ \dir -> do
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      let results = dir </> "r.jsonl"
+          refused args what = do
+            (code, _, err) <- runScriptCode [] sweep args
+            (code, what `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
+            doesFileExist results `shouldReturn` False
+      forM_ [["--log", dir </> "run.jsonl"], ["--svg", dir </> "run.svg"], ["--replay", dir </> "run.html"], ["--video", dir </> "run.mp4"]] $ \flags ->
+        refused (["--seeds", "1..2", prog, results, "--", "--seconds", "1"] ++ flags) "would make every run write the same file"
+      forM_ [["--out", dir </> "out"], ["--frames"]] $ \flags ->
+        refused (["--seeds", "1..2", prog, results, "--", "--seconds", "1"] ++ flags) "into the same folder"
+      refused ["--seeds", "1..2", prog, results, "--", "--result", dir </> "x.json"] "sweep writes each run's result line itself"
+      let jobs ls = writeFile (dir </> "jobs") (unlines ls) >> pure ["--jobs", dir </> "jobs", prog, results, "--", "--seconds", "1"]
+      jobs ["--seed 1 --log a.jsonl", "--seed 2 --log b.jsonl", "--seed 3 --log a.jsonl"]
+        >>= \args -> refused args ("jobs: line 3: --log a.jsonl: " ++ dir </> "jobs: line 1 writes it too")
+      jobs ["--seed 1 --frames", "--seed 2 --frames --out f2", "--seed 3 --frames"]
+        >>= \args -> refused args "jobs: line 3: --frames into simbot-out"
+      jobs ["--seed 1 --result x.json"] >>= \args -> refused args "jobs: line 1: --result: sweep writes each run's result line itself"
+      jobs ["--seed 1 --log " ++ results] >>= \args -> refused args "is a file that a run writes too"
+      -- a file of its own for each run is what a jobs file is for
+      requireParallel
+      args <- jobs ["--seed 1 --log " ++ dir </> "a.jsonl", "--seed 2 --log " ++ dir </> "b.jsonl"]
+      _ <- runScript [] sweep args
+      mapM (doesFileExist . (dir </>)) ["a.jsonl", "b.jsonl"] `shouldReturn` [True, True]
+      length . lines <$> readFile results `shouldReturn` 2
+
+    it "checks --jobs, --seeds and --worlds up front, and runs worlds and parameters with spaces" $ withTempDir $ \dir -> do
+      sweep <- script "sweep"
+      let refused args what = do
+            (code, _, err) <- runScriptCode [] sweep args
+            (code, what `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
+      refused ["--list", "--jobs", dir] "is a folder"
+      forM_ ["", "abc", "1,,2", "1,", ",1", "1..x", "1;2"] $ \seedList ->
+        refused ["--list", "--seeds", seedList] "--seeds expects"
+      forM_ ["", "a.world,,b.world", "a.world,"] $ \worldList ->
+        refused ["--list", "--worlds", worldList] "--worlds expects"
+      writeFile (dir </> "jobs") (unlines ["--seed 1", "--seed 2 --world 'a b.world", "--seed 3"])
+      refused ["--list", "--jobs", dir </> "jobs"] "jobs: line 2: a ' is not closed"
+      -- what is accepted: spaces around a seed, leading zeros (decimal)
+      (code, out, _) <- runScriptCode [] sweep ["--list", "--seeds", "1, 010,-2"]
+      (code, lines out) `shouldBe` (ExitSuccess, ["--seed 1", "--seed 10", "--seed -2"])
+      -- a world and a parameter with a space, from --worlds and --param and from a jobs file
+      requireParallel
+      prog <- childScript dir "program"
+      createDirectory (dir </> "my worlds")
+      let world = dir </> "my worlds" </> "it's a.world"
+      (dumped, worldText, _) <- readProcessWithExitCode prog ["--dump-world"] ""
+      dumped `shouldBe` ExitSuccess
+      writeFile world worldText
+      writeFile (dir </> "jobs") ("--seed 3 --world '" ++ replace "'" "'\\''" world ++ "' --param \"note=a \\\"b\\\"\"\n")
+      _ <- runScript [] sweep ["--seeds", "1..2", "--worlds", world, "--param", "note=x y,z", prog, dir </> "r.jsonl", "--", "--seconds", "1"]
+      _ <- runScript [] sweep ["--jobs", dir </> "jobs", prog, dir </> "j.jsonl", "--", "--seconds", "1"]
+      rs <- map parsed . concatMap lines <$> mapM readFile [dir </> "r.jsonl", dir </> "j.jsonl"]
+      map (field ["world"]) rs `shouldBe` replicate 5 (JString world)
+      map (field ["outcome", "failure"]) rs `shouldBe` replicate 5 JNull
+      map (field ["seed"]) rs `shouldBe` map JNumber [1, 2, 1, 2, 3]
+      map (field ["params", "note"]) rs `shouldBe` map JString ["x y", "x y", "z", "z", "a \"b\""]
+
+    it "interrupted (SIGTERM to its process group, as at Slurm's time limit): a line for every run, a message, no temporary file" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      createDirectory (dir </> "tmp")
+      -- two slots: seeds 1 and 2 end, 3 and 4 never do, 5 and 6 never start
+      writeFile (dir </> "jobs") (unlines [ "--seed " ++ show k ++ " --seconds " ++ (if k `elem` [3, 4] then "100000" else "1")
+                                          | k <- [1 .. 6 :: Int] ])
+      environment <- filter ((/= "TMPDIR") . fst) <$> getEnvironment
+      let results = dir </> "r.jsonl"
+      (_, _, Just errH, ph) <- createProcess (proc "bash" [sweep, "-j", "2", "--jobs", dir </> "jobs", prog, results])
+        { env = Just (("TMPDIR", dir </> "tmp") : environment), create_group = True, std_err = CreatePipe }
+      let waitLines :: Int -> IO ()
+          waitLines k = do
+            n <- length . lines <$> (doesFileExist results >>= \e -> if e then readFile' results else pure "")
+            unless (n >= 2 || k <= 0) (threadDelay 100000 >> waitLines (k - 1))
+      waitLines 600
+      Just pid <- getPid ph
+      _ <- readProcess "kill" ["-TERM", "--", "-" ++ show pid] ""
+      code <- timeout 60000000 (waitForProcess ph)
+      err <- hGetContents errH
+      code `shouldBe` Just (ExitFailure 143)
+      err `shouldSatisfy` ("interrupted (SIGTERM): 2 of 6 runs ended" `isInfixOf`)
+      rs <- map parsed . lines <$> readFile' results
+      map (field ["seed"]) rs `shouldBe` map JNumber [1 .. 6]
+      [ either (const Nothing) Just (member "outcome" r) /= Nothing | r <- rs ] `shouldBe` [True, True, False, False, False, False]
+      forM_ (drop 2 rs) $ \r -> field ["failure"] r `shouldSatisfy` \f -> case f of
+        JString t -> "interrupted (SIGTERM)" `isInfixOf` t
+        _         -> False
+      table <- merged dir [results]
+      table `shouldSatisfy` ("(6 runs, 4 failed)" `isInfixOf`)
+      listDirectory (dir </> "tmp") `shouldReturn` []
