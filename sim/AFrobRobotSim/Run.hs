@@ -320,7 +320,6 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
   -- (from here a SIGTERM no longer stops the run: it is writing its
   -- outputs, and assembling the video)
   finishing stopper
-  signal <- stopNow stopper
   when progress (hPutStr stderr eraseProgress)
   steps <- readIORef stepsRef
   nFrames <- readIORef framesRef
@@ -363,15 +362,16 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
   let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs
                                          ++ outErrs ++ videoErrs)
   unless (null allErrs) (putErr (unlines allErrs))
-  -- (a SIGTERM that came while the outputs were written: the run is
-  -- whole, but whoever sent it is told that it came)
-  lateSignal <- stopNow stopper
+  -- (the SIGTERM that stopped the run, or that came while the outputs
+  -- were written: the run is whole then, but whoever sent it is told that
+  -- it came)
+  signal <- signalReceived stopper
   case ending of
     -- (the shell's code for a program ended by a signal: 128 and its
     -- number, Ctrl-C's 2 when no other came)
     Interrupted -> exitWith (ExitFailure (128 + maybe 2 id signal))
     Failed _    -> exitWith (ExitFailure 1)
-    _ | Just k <- lateSignal -> exitWith (ExitFailure (128 + k))
+    _ | Just k <- signal -> exitWith (ExitFailure (128 + k))
     _ | not (null allErrs) -> exitWith (ExitFailure 1)
       | otherwise          -> pure ()
 

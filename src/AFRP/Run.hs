@@ -12,18 +12,18 @@
 --
 -- = What the runners evaluate
 --
--- As Yampa's, with two exceptions (below): 'reactimate' evaluates each input
--- sample and each output sample to weak head normal form after the output
--- has been actuated (the first ones included, even when @actuate@ says
--- stop); 'embed' evaluates a later sample's input when the rest of the
+-- As Yampa's, with two exceptions (below): 'reactimate' evaluates each
+-- input sample and each output sample to weak head normal form after the
+-- output has been actuated (the first ones included, even when @actuate@
+-- says stop); 'embed' evaluates a later sample's input when the rest of the
 -- list is demanded, after that sample's output is in the list (so the
 -- first input is not evaluated unless a 'Nothing' repeats it). A step
 -- never evaluates its input itself. So a signal function that ignores its
--- input still runs in constant space, and an undefined input raises its
--- error where Yampa's does:
+-- input still runs in constant space, and an input that is an error
+-- raises it where Yampa's does:
 --
--- > take 2 (embed (iPre 0) (1, [(1, Just undefined), (1, Just 3)]))  ==  [0, 1]
--- > length (embed (iPre 0) (1, [(1, Just undefined), (1, Just 3)]))   -- raises
+-- > take 2 (embed (iPre 0) (1, [(1, Just (error "no input")), (1, Just 3)]))  ==  [0, 1]
+-- > length (embed (iPre 0) (1, [(1, Just (error "no input")), (1, Just 3)]))   -- raises "no input"
 --
 -- The first exception: 'embed' never evaluates an output (Yampa's evaluates
 -- each one but the first when the list goes past it), so @length@ of an
@@ -36,8 +36,8 @@
 -- 'react' evaluates neither the input nor the output, as Yampa's, but
 -- (the second exception) it looks at whether the sample is 'Nothing',
 -- where Yampa's does not, so that a long run of unchanged samples builds
--- no chain of thunks: @react h (dt, undefined)@ raises. 'evalAtZero' and
--- 'evalAt' evaluate nothing.
+-- no chain of thunks: @react h (dt, error "no sample")@ raises.
+-- 'evalAtZero' and 'evalAt' evaluate nothing.
 module AFRP.Run
   ( -- * Running in a monad
     reactimate

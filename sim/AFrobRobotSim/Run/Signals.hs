@@ -21,7 +21,7 @@
 module AFrobRobotSim.Run.Signals
   ( Stopper
   , interruptible
-  , stopNow
+  , signalReceived
   , finishing
   ) where
 
@@ -39,10 +39,9 @@ foreign import ccall unsafe "afrp_signal_ignored"
 #endif
 
 -- | What 'interruptible' gives its action: which thread a signal stops,
--- and the signal received so far, if any.
-data Stopper = Stopper ThreadId (IORef Phase)
-
-data Phase = Running | Received Int | Finishing (Maybe Int)
+-- whether the run is writing its outputs ('finishing'), and the number of
+-- the first signal received, if any.
+data Stopper = Stopper ThreadId (IORef (Bool, Maybe Int))
 
 -- | @interruptible act@ runs @act@ with @SIGTERM@ throwing
 -- 'UserInterrupt' to the thread that called it (once 'finishing' has
@@ -52,7 +51,7 @@ data Phase = Running | Received Int | Finishing (Maybe Int)
 interruptible :: (Stopper -> IO a) -> IO a
 interruptible act = do
   me <- myThreadId
-  phase <- newIORef Running
+  phase <- newIORef (False, Nothing)
   let stopper = Stopper me phase
 #if !defined(mingw32_HOST_OS)
   ignored <- (/= 0) <$> signalIgnored sigTERM
@@ -64,29 +63,23 @@ interruptible act = do
 #endif
 
 #if !defined(mingw32_HOST_OS)
--- A signal received: stop the run, or note it while the outputs are
--- written.
+-- A signal received: noted (the first one), and the run stopped unless it
+-- is writing its outputs or a signal has stopped it already.
 received :: Stopper -> Int -> IO ()
 received (Stopper t phase) k = do
-  stop <- atomicModifyIORef' phase $ \p -> case p of
-    Running       -> (Received k, True)
-    Received j    -> (Received j, False)   -- (the run is stopping already)
-    Finishing got -> (Finishing (maybe (Just k) Just got), False)
+  stop <- atomicModifyIORef' phase $ \(done, got) -> case got of
+    Nothing -> ((done, Just k), not done)
+    Just _  -> ((done, got), False)
   if stop then throwTo t UserInterrupt else pure ()
 #endif
 
--- | The number of the signal that stopped the run ('Nothing' for none, or
--- for Ctrl-C, which the runtime delivers itself).
-stopNow :: Stopper -> IO (Maybe Int)
-stopNow (Stopper _ phase) = readIORef phase >>= \p -> pure $ case p of
-  Running       -> Nothing
-  Received k    -> Just k
-  Finishing got -> got
+-- | The number of the first signal received: the one that stopped the
+-- run, or one that came while it wrote its outputs ('Nothing' for none,
+-- or for Ctrl-C, which the runtime delivers itself).
+signalReceived :: Stopper -> IO (Maybe Int)
+signalReceived (Stopper _ phase) = snd <$> readIORef phase
 
--- | From now on the signals are noted and ignored: the run is writing its
+-- | From now on a signal is noted and ignored: the run is writing its
 -- outputs.
 finishing :: Stopper -> IO ()
-finishing (Stopper _ phase) = atomicModifyIORef' phase $ \p -> case p of
-  Running     -> (Finishing Nothing, ())
-  Received k  -> (Finishing (Just k), ())
-  Finishing g -> (Finishing g, ())
+finishing (Stopper _ phase) = atomicModifyIORef' phase (\(_, got) -> ((True, got), ()))
