@@ -357,7 +357,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
     _             -> maybe [] pure <$> flushStdout
   videoErrs <- case (ending, optVideo opts) of
     -- (the checks before the run made sure ffmpeg is there when --video is given)
-    (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe file
+    (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe nFrames file
     _                                                      -> pure []
   let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs
                                          ++ outErrs ++ videoErrs)
@@ -379,12 +379,15 @@ forceState :: WorldState -> ()
 forceState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsBalls s)
                `seq` foldl' (flip seq) () (map length (wsMessages s))
 
--- Assemble the frames with ffmpeg (the executable found on the PATH before
--- the run); the errors, if any.
-makeVideo :: SimOptions -> FilePath -> FilePath -> IO [String]
-makeVideo opts exe file = do
+-- Assemble this run's frames with ffmpeg (the executable found on the PATH
+-- before the run); the errors, if any. Only the run's own frames go in:
+-- ffmpeg reads numbered files until a gap, and a longer earlier run's
+-- frames may follow this run's in the folder.
+makeVideo :: SimOptions -> FilePath -> Int -> FilePath -> IO [String]
+makeVideo opts exe nFrames file = do
   code <- rawSystem exe [ "-y", "-loglevel", "error", "-framerate", show (optFps opts)
-                        , "-i", optOut opts </> "frame-%06d.ppm", "-pix_fmt", "yuv420p", file ]
+                        , "-i", optOut opts </> "frame-%06d.ppm", "-frames:v", show nFrames
+                        , "-pix_fmt", "yuv420p", file ]
   case code of
     ExitSuccess   -> [] <$ putStrLn ("wrote " ++ displayPath file)
     ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]

@@ -18,7 +18,8 @@ import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, sort, stripPrefix, tails)
 import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
 import           Data.Char           (isPrint)
-import           System.Directory    (createDirectory, createFileLink, doesFileExist, listDirectory)
+import           System.Directory    (createDirectory, createFileLink, doesFileExist, getPermissions, listDirectory,
+                                      setOwnerExecutable, setPermissions)
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     (takeFileName, (</>))
 import           System.IO
@@ -305,6 +306,36 @@ spec = do
       a <- framesIn (dir </> "a")
       b <- framesIn (dir </> "b")
       (length a, a == b) `shouldBe` (51, True)
+    it "a shorter run into a folder of a longer run's frames rewrites its own, keeps the others, and says so" $
+      withTempDir $ \dir -> do
+        let out = dir </> "f"
+        _ <- captured (runSimWith (quick out) (Just world) drive drive)
+        (o, _, r) <- captured (runSimWith (quick out) { optSeconds = 1, optQuiet = False } (Just world) drive drive)
+        r `shouldBe` Right ()
+        length <$> listDirectory out `shouldReturn` 51
+        filter ("note: " `isPrefixOf`) (lines o) `shouldBe`
+          [ "note: " ++ out ++ " also holds frame-000026.ppm and on, from an earlier run, left as they were: "
+            ++ "this run wrote 26 frames (--video takes only those)" ]
+        (_, o', _) <- captured (runSimWith (quick out) { optQuiet = False } (Just world) drive drive)
+        filter ("note: " `isPrefixOf`) (lines o') `shouldBe` []
+    it "--video gives ffmpeg only the run's own frames" $ withTempDir $ \dir -> do
+      -- (a stand-in ffmpeg that records its arguments)
+      let bin = dir </> "bin"
+          out = dir </> "f"
+      createDirectory bin
+      writeFile (bin </> "ffmpeg") ("#!/bin/sh\nprintf '%s\\n' \"$@\" > " ++ (dir </> "args") ++ "\n")
+      p <- getPermissions (bin </> "ffmpeg")
+      setPermissions (bin </> "ffmpeg") (setOwnerExecutable True p)
+      saved <- lookupEnv "PATH"
+      setEnv "PATH" bin
+      (do _ <- captured (runSimWith (quick out) (Just world) drive drive)
+          (_, _, r) <- captured (runSimWith (quick out) { optSeconds = 1, optVideo = Just (dir </> "run.mp4") }
+                                            (Just world) drive drive)
+          r `shouldBe` Right ())
+        `finally` maybe (pure ()) (setEnv "PATH") saved
+      args <- lines <$> readFile (dir </> "args")
+      take 2 (dropWhile (/= "-frames:v") args) `shouldBe` ["-frames:v", "26"]
+      take 2 (dropWhile (/= "-i") args) `shouldBe` ["-i", out </> "frame-%06d.ppm"]
     it "writes an SVG of the run" $ withTempDir $ \dir -> do
       _ <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg") }
                                 (Just world) drive drive)

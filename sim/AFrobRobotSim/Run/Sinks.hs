@@ -40,8 +40,8 @@ import           Control.Monad.ST          (runST)
 import qualified Data.ByteString           as BS
 import           Data.IORef
 import           Data.List                 (foldl')
-import           System.Directory          (removeFile, renameFile)
-import           System.FilePath           ((</>))
+import           System.Directory          (doesFileExist, removeFile, renameFile)
+import           System.FilePath           (takeFileName, (</>))
 import           System.IO                 (hFlush, hPutStr, stderr, stdout)
 import           Text.Printf               (printf)
 
@@ -150,10 +150,14 @@ framesSink opts scale frameAt render countRef = do
           k <- readIORef countRef
           writeFrame (optOut opts) k (render (map trailPoints trails) s)
           writeIORef countRef $! k + 1
-      -- A stopped run leaves at most the next frame's temporary file.
+      -- A stopped run leaves at most the next frame's temporary file. The
+      -- frames of a longer earlier run into the same folder stay (nothing
+      -- already written is removed), and are said to be there.
       finish _ = do
         k <- readIORef countRef
-        mempty <$ (try (removeFile (frameTemp (optOut opts) k)) :: IO (Either IOException ()))
+        _ <- try (removeFile (frameTemp (optOut opts) k)) :: IO (Either IOException ())
+        stale <- doesFileExist (framePath (optOut opts) k)
+        pure (Outcome [] [ staleFramesNote (optOut opts) k | stale ])
   pure (Sink step finish)
 
 -- | The SVG: snapshots taken every @every@ steps when a robot moved more
@@ -271,10 +275,22 @@ attempt what done act = do
 -- Write frame number k atomically: a temporary file, then a rename.
 writeFrame :: FilePath -> Int -> BS.ByteString -> IO ()
 writeFrame dir k bytes = do
-  let name = dir </> printf "frame-%06d.ppm" k
-      tmp  = frameTemp dir k
+  let tmp = frameTemp dir k
   BS.writeFile tmp bytes
-  renameFile tmp name
+  renameFile tmp (framePath dir k)
+
+-- The file of frame number k.
+framePath :: FilePath -> Int -> FilePath
+framePath dir k = dir </> printf "frame-%06d.ppm" k
+
+-- What the run says when the folder holds frames after its last one (an
+-- earlier, longer run's): they are not this run's, and a video made from
+-- the folder's files would show them.
+staleFramesNote :: FilePath -> Int -> String
+staleFramesNote dir k =
+  "note: " ++ displayPath dir ++ " also holds " ++ takeFileName (framePath dir k)
+  ++ " and on, from an earlier run, left as they were: this run wrote "
+  ++ show k ++ " frames (--video takes only those)"
 
 -- The temporary file of frame k, which an interrupted write leaves behind.
 frameTemp :: FilePath -> Int -> FilePath
