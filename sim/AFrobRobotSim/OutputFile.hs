@@ -22,6 +22,7 @@
 -- hard link to the old file keeps the old contents.
 module AFrobRobotSim.OutputFile
   ( writeWhole
+  , fileIdentity
   ) where
 
 #if !defined(mingw32_HOST_OS)
@@ -29,8 +30,8 @@ import           Control.Exception (IOException, catch, onException, try)
 import           System.Directory  (canonicalizePath, getPermissions, removeFile, renameFile, writable)
 import           System.FilePath   (takeDirectory, takeFileName, (</>))
 import           System.IO.Error   (ioeSetFileName)
-import           System.Posix.Files (FileStatus, fileGroup, fileMode, fileOwner, getFileStatus, isRegularFile,
-                                     setFileMode, setOwnerAndGroup)
+import           System.Posix.Files (FileStatus, deviceID, fileGroup, fileID, fileMode, fileOwner, getFileStatus,
+                                     isRegularFile, setFileMode, setOwnerAndGroup)
 import           System.Posix.Process (getProcessID)
 #endif
 
@@ -80,4 +81,17 @@ temporaryFor real = do
   pure (takeDirectory real </> ("." ++ takeFileName real ++ ".afrp-" ++ pid ++ ".tmp"))
 #else
 writeWhole path write = write path
+#endif
+
+-- | Which file a path names, links followed: its device and file number,
+-- the same for every name of one file (a hard link too, which no
+-- comparison of paths can tell); 'Nothing' when there is no file there
+-- yet, when it cannot be read, and on Windows.
+fileIdentity :: FilePath -> IO (Maybe (Integer, Integer))
+#if !defined(mingw32_HOST_OS)
+fileIdentity path = either (\(_ :: IOException) -> Nothing) (\st -> Just (key st)) <$> try (getFileStatus path)
+  where
+    key st = (fromIntegral (deviceID st), fromIntegral (fileID st))
+#else
+fileIdentity _ = pure Nothing
 #endif

@@ -63,7 +63,7 @@ import           Control.Exception         (AsyncException (UserInterrupt), Exce
 import           Control.Monad             (forM, unless, when)
 import           Data.IORef
 import           Data.List                 (foldl', intercalate, isPrefixOf)
-import           Data.Maybe                (catMaybes)
+import           Data.Maybe                (catMaybes, isJust, isNothing)
 import           GHC.Clock                 (getMonotonicTime)
 import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
                                             findExecutable, getPermissions, getSymbolicLinkTarget,
@@ -79,6 +79,7 @@ import           Text.Printf               (printf)
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
+import           AFrobRobotSim.OutputFile  (fileIdentity)
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
@@ -132,6 +133,11 @@ runSimWith opts mworld rcA rcB = do
       unless (null unread) $ putErr $ unlines
         [ prog ++ ": warning: --param " ++ k ++ "=" ++ v ++ ": this program has asked for no parameter named "
           ++ quote k ++ " (" ++ readsText ++ ")" | (k, v) <- unread ]
+      -- (an empty world file, or a generator's output that never came,
+      -- runs: it is a world, but one the controllers take no part in)
+      when (all (isNothing . robotKindOf) world) $ putErr $
+        prog ++ ": warning: " ++ maybe "the world" (\f -> "the world " ++ displayPath f) (optWorldFile opts)
+        ++ " has no robots: the controllers will not run\n"
       simulateRun prog opts ffmpeg world rcA rcB
 
 -- Every check of the options and the file system that can be made before
@@ -156,9 +162,11 @@ preflight bounds opts = do
   -- by comparing the canonical paths of where the files are written;
   -- devices are not files to keep (--log /dev/stdout --result /dev/stderr
   -- may be one terminal)
+  -- (and a file already there by its device and number, which a hard
+  -- link shares)
   canon <- forM [ tf | tf@(_, f, _) <- targets, not (device f) ] $ \(flag, f, t) ->
-             (,,) flag f <$> canonicalPath (maybe f id t)
-  world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> canonicalPath w
+             (,,) flag f <$> fileKey (maybe f id t)
+  world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> fileKey w
   -- a file is written in its folder, or through a link in its target's:
   -- the output folder is created by the run, any other must exist
   let checkIn flag f dir
@@ -180,15 +188,17 @@ preflight bounds opts = do
                | optVideo opts /= Nothing, ffmpeg == Nothing ]
             ++ [ "two outputs go to the same file: " ++ flag1 ++ " " ++ show f1 ++ " and " ++ flag2 ++ " " ++ show f2
                | ((flag1, f1, c1), i) <- zip canon [0 :: Int ..], ((flag2, f2, c2), j) <- zip canon [0 ..]
-               , i < j, c1 == c2 ]
+               , i < j, sameFile c1 c2 ]
             ++ [ flag ++ " " ++ show f ++ " would overwrite the world file " ++ show w
-               | (w, cw) <- world, (flag, f, c) <- canon, c == cw ]
+               | (w, cw) <- world, (flag, f, c) <- canon, sameFile c cw ]
             ++ concat fileErrs
   -- the output folder is created only when nothing else is wrong
   errs <- if inOut && null pre then checkFolder out else pure pre
   pure (errs, ffmpeg)
   where
     device f = any (`isPrefixOf` normalise f) ["/dev/", "/proc/"]
+    fileKey f = (,) <$> canonicalPath f <*> fileIdentity f
+    sameFile (c1, i1) (c2, i2) = c1 == c2 || (isJust i1 && i1 == i2)
     -- a folder as one name (--out x/ and --out ./x are the folder x, which
     -- the run creates; with the slash its parent was taken to be x itself)
     folder = dropTrailingPathSeparator . normalise

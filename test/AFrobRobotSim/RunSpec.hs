@@ -12,6 +12,7 @@ import           System.Process      (CreateProcess (..), ProcessHandle, StdStre
                                       getProcessExitCode, interruptProcessGroupOf, proc,
                                       readCreateProcessWithExitCode,
                                       terminateProcess, waitForProcess)
+import           System.Posix.Files  (createLink)
 import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
@@ -458,6 +459,36 @@ spec = do
       err `shouldSatisfy` ("--log" `isInfixOf`)
       err `shouldSatisfy` ("would overwrite the world file" `isInfixOf`)
       readFile wf `shouldReturn` "ball at 0 0\n"
+    it "an output that is a hard link to the world file (one file under two names no path shows)" $ withTempDir $ \dir -> do
+      let wf = dir </> "w.world"
+      writeFile wf "ball at 0 0\n"
+      createLink wf (dir </> "r.json")
+      (out, err, r) <- captured (runSimWith (quick (dir </> "f")) { optWorldFile = Just wf, optFrames = False
+                                                                   , optResult = Just (dir </> "r.json") }
+                                            Nothing drive drive)
+      r `shouldBe` Left (ExitFailure 2)
+      out `shouldBe` ""
+      err `shouldSatisfy` (("--result " ++ show (dir </> "r.json") ++ " would overwrite the world file") `isInfixOf`)
+      readFile wf `shouldReturn` "ball at 0 0\n"
+    it "a world file with no robots (empty, or a generator's output that never came) runs, with a warning" $
+      withTempDir $ \dir -> do
+        let wf = dir </> "w.world"
+        writeFile wf "# nothing yet\nball at 0 0\n"
+        (out, err, r) <- captured (runSimWith (quick (dir </> "f")) { optWorldFile = Just wf, optFrames = False }
+                                              Nothing drive drive)
+        r `shouldBe` Right ()
+        out `shouldSatisfy` ("2.00 s simulated" `isPrefixOf`)
+        lines err `shouldSatisfy` any (("warning: the world " ++ wf ++ " has no robots") `isInfixOf`)
+        (_, err', _) <- captured (runSimWith (quick (dir </> "f")) { optFrames = False } (Just world) drive drive)
+        err' `shouldBe` ""
+    it "two outputs that are hard links to one file" $ withTempDir $ \dir -> do
+      writeFile (dir </> "a.svg") ""
+      createLink (dir </> "a.svg") (dir </> "b.jsonl")
+      (_, err, r) <- captured (runSimWith (quick (dir </> "f")) { optFrames = False, optSvg = Just (dir </> "a.svg")
+                                                               , optLog = Just (dir </> "b.jsonl") }
+                                          (Just world) drive drive)
+      r `shouldBe` Left (ExitFailure 2)
+      err `shouldSatisfy` (\e -> all (`isInfixOf` e) ["same file", "--svg", "--log"])
     it "not an --out with a trailing slash: the folder is created, with the SVG and the page in it" $ withTempDir $ \dir -> do
       let o = (quick (dir </> "new/")) { optFrames = False, optSeconds = 0.1
                                        , optSvg = Just (dir </> "new/run.svg"), optReplay = Just (dir </> "new/replay.html") }

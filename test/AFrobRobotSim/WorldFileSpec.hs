@@ -3,11 +3,13 @@
 -- example worlds in @worlds/@.
 module AFrobRobotSim.WorldFileSpec (spec) where
 
+import           Control.Concurrent      (forkIO, threadDelay)
 import           Control.Exception      (evaluate)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Char8  as BC
 import           Data.Char              (isDigit, isPrint)
 import           Data.List              (intercalate, isInfixOf, isPrefixOf, tails)
+import           System.Posix.Files     (createNamedPipe)
 import           System.Timeout         (timeout)
 import           System.Directory       (getTemporaryDirectory, removeFile)
 import           System.FilePath        ((</>))
@@ -501,6 +503,22 @@ spec = do
       r `shouldSatisfy` either ((file ++ ": more than") `isPrefixOf`) (const False)
       z <- timeout 10000000 (readWorldFile "/dev/zero")
       z `shouldSatisfy` maybe False (either ("/dev/zero: more than" `isPrefixOf`) (const False))
+    it "reads a named pipe (FIFO) from its writer, waiting for one to open it (not as an empty world)" $
+      withTempDir $ \dir -> do
+        let fifo = dir </> "w.fifo"
+        createNamedPipe fifo 0o600
+        _ <- forkIO (threadDelay 300000 >> writeFile fifo "ball at 1 2\nsimbota 1 at 0 0 heading 0 rad\n")
+        r <- timeout 20000000 (readWorldFile fifo)
+        r `shouldBe` Just (Right [OTBall (Point2 1 2), OTSimbotA 1 (Point2 0 0) 0])
+    it "a reader waiting for a FIFO's writer can be stopped (timeout, Ctrl-C), and stops waiting" $
+      withTempDir $ \dir -> do
+        let fifo = dir </> "w.fifo"
+        createNamedPipe fifo 0o600
+        timeout 300000 (readWorldFile fifo) `shouldReturn` Nothing
+        -- (the abandoned open is closed once a writer comes: the writer
+        -- does not wait forever for a reader)
+        done <- timeout 20000000 (writeFile fifo "")
+        done `shouldBe` Just ()
     it "reports syntax errors with the file's path" $ do
       tmp <- getTemporaryDirectory
       let file = tmp </> "afrp-bad-syntax.world"
