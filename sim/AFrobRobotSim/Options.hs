@@ -13,7 +13,7 @@
 -- --frames           also write PPM frames into the output folder
 -- --no-frames        write no frames (the default)
 -- --scale PX         pixels per metre  (default: the world's long side 600 px, 'fitScale')
--- --keys "1.5:a,3:b" scripted key presses (time:key, ...)
+-- --keys "1.5:a,3:b" scripted key presses (time:key, ...; 2:space and 4:comma name those keys)
 -- --seed N           seed of the random parts, |N| <= 2^53 (default 0)
 -- --odometry-noise X relative odometry error per step, 0-1 (default 0 = exact)
 -- --quiet            print only the summary line
@@ -64,7 +64,7 @@ module AFrobRobotSim.Options
   , usage
   ) where
 
-import           Data.Char       (isSpace)
+import           Data.Char       (isSpace, toLower)
 import           Data.List       (intercalate, isSuffixOf)
 import           Numeric         (showFFloat)
 import           System.FilePath ((</>))
@@ -171,7 +171,8 @@ parseSimArgs o0 = go o0 False False
                              Just x | abs x <= maxSeed -> Right o { optSeed = fromInteger x }
                              _ -> Left ("--seed expects a whole number from -2^53 to 2^53, got " ++ show v))
       , ("--odometry-noise", \v -> (\x -> o { optOdometryNoise = x }) <$> number "--odometry-noise" (\x -> x >= 0 && x <= maxOdometryNoise) v)
-      , ("--world",   \v -> Right o { optWorldFile = Just v })
+      , ("--world",   \v -> if null v then Left "--world must not be empty (a world file's name)"
+                                        else Right o { optWorldFile = Just v })
       , ("--svg",     \v -> Right o { optSvg = Just v })
       , ("--video",   \v -> Right o { optVideo = Just v })
       , ("--log",     \v -> Right o { optLog = Just v })
@@ -313,16 +314,24 @@ num x
                 in reverse (dropWhile (== '.') (dropWhile (== '0') (reverse s)))
 
 -- | Parse scripted key presses: @"1.5:a,3:b"@ is @a@ at 1.5 s and @b@ at
--- 3 s. Times must be finite and non-negative; a key is one character.
+-- 3 s. Times must be finite and non-negative; a key is one character, or
+-- one of the names @space@ and @comma@ for the two characters the list
+-- itself cannot hold (@"2:space,4:comma"@).
 parseKeys :: String -> Either String [(Double, Char)]
 parseKeys s
   | all isSpace s = Right []
   | otherwise     = mapM one (splitOn ',' s)
   where
     one item = case break (== ':') (trim item) of
-      (t, ':' : [k]) | Just x <- decimalLit (trim t), x >= 0, not (isNaN x || isInfinite x) -> Right (x, k)
-      _ -> Left ("--keys expects TIME:KEY pairs separated by commas (e.g. \"1.5:a,3:b\"), got "
-                 ++ show item)
+      (t, ':' : key) | Just x <- decimalLit (trim t), x >= 0, not (isNaN x || isInfinite x)
+                     , Just k <- keyNamed key -> Right (x, k)
+      _ -> Left ("--keys expects TIME:KEY pairs separated by commas (e.g. \"1.5:a,3:b\"; a KEY is one "
+                 ++ "character, or space or comma), got " ++ show item)
+    keyNamed [c] = Just c
+    keyNamed key = case map toLower key of
+      "space" -> Just ' '
+      "comma" -> Just ','
+      _       -> Nothing
 
 splitOn :: Char -> String -> [String]
 splitOn c str = case break (== c) str of
@@ -348,7 +357,7 @@ usage prog = intercalate "\n"
   , "  --frames           also write PPM frames (1.15 MB each: 866 MB for 30 s at 25 fps)"
   , "  --no-frames        write no frames (the default)"
   , "  --scale PX         pixels per metre   (default: the world's long side is 600 px)"
-  , "  --keys \"1.5:a,3:b\" scripted key presses (time:key, ...)"
+  , "  --keys \"1.5:a,3:b\" scripted key presses (time:key, ...; 2:space and 4:comma name those keys)"
   , "  --seed N           seed of the random parts              (default 0)"
   , "  --odometry-noise X relative odometry error per step, 0-1 (default 0 = exact)"
   , "  --quiet            print only the summary line"

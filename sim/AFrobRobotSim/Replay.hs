@@ -1,3 +1,4 @@
+{-# LANGUAGE MultiWayIf #-}
 {-# LANGUAGE BangPatterns #-}
 -- |
 -- Module      : AFrobRobotSim.Replay
@@ -101,7 +102,8 @@ import qualified Data.ByteString.Unsafe    as BU (unsafeUseAsCStringLen)
 import           GHC.ByteOrder             (ByteOrder (..), targetByteOrder)
 import           Numeric                   (showHex)
 import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
-import           System.Directory          (getTemporaryDirectory, removeFile)
+import           System.Directory          (doesDirectoryExist, doesPathExist, getTemporaryDirectory, removeFile)
+import           System.FilePath           (takeDirectory)
 import           System.IO
 
 import           AFrobRobotSim.Log
@@ -270,15 +272,21 @@ fnvBasis = 14695981039346656037
 -- FILE.jsonl --replay OUT.html@ does. A log that does not read is a
 -- 'Left' with the reader's message (nothing is written then); a page that
 -- cannot be written is a 'Left' naming it, and so is a page that is the
--- log itself (under any name: the log is kept).
+-- log itself (under any name: the log is kept), or in a folder that does
+-- not exist (said before the log is read).
 writeReplayFromLog :: FilePath -> FilePath -> IO (Either String ())
 writeReplayFromLog logPath out = do
   same <- (==) <$> canonicalPath logPath <*> canonicalPath out
-  r <- if same then pure (Left (displayPath out ++ ": is the log being read; the page would overwrite it"))
-               else readLogFile logPath
+  let folder = takeDirectory out
+  folderThere <- doesDirectoryExist folder
+  somethingThere <- doesPathExist folder
+  r <- if | same -> pure (Left (displayPath out ++ ": is the log being read; the page would overwrite it"))
+          | not folderThere -> pure (Left ("cannot write the page " ++ displayPath out ++ ": " ++ displayPath folder
+                                           ++ if somethingThere then " is not a folder" else " does not exist"))
+          | otherwise -> readLogFile logPath
   case r of
     Left e  -> pure (Left e)
-    Right l -> either (Left . ioErrorText) Right   -- it names the page
+    Right l -> either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) Right   -- (it names the page)
                  <$> try (writeAscii out (replayPage l))
 
 

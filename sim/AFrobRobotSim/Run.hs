@@ -1,3 +1,4 @@
+{-# LANGUAGE MultiWayIf           #-}
 {-# LANGUAGE BangPatterns        #-}
 {-# LANGUAGE ScopedTypeVariables #-}
 -- |
@@ -65,7 +66,7 @@ import           Data.IORef
 import           Data.List                 (foldl', intercalate, isPrefixOf)
 import           Data.Maybe                (catMaybes, isJust, isNothing)
 import           GHC.Clock                 (getMonotonicTime)
-import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
+import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist, doesPathExist,
                                             findExecutable, getPermissions, getSymbolicLinkTarget,
                                             pathIsSymbolicLink, removeFile, writable)
 import           System.Environment        (getArgs, getProgName)
@@ -232,10 +233,11 @@ preflight bounds opts = do
     checkFolder dir = do
       there <- doesDirectoryExist dir
       parentThere <- doesDirectoryExist (takeDirectory dir)
-      if not there && not parentThere
-        then pure [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir)
-                    ++ " does not exist" ]
-        else do
+      taken <- doesPathExist dir
+      if | not there && taken -> pure [ writeTo ++ show dir ++ ": it is a file, not a folder" ]
+         | not there && not parentThere ->
+             pure [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir) ++ " does not exist" ]
+         | otherwise -> do
           r <- try (do unless there (createDirectory dir)
                        let probe = dir </> ".afrp-write-test"
                        writeFile probe "ok"

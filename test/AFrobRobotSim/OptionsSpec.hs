@@ -29,7 +29,7 @@ spec = do
                ["--fps", a, "or", b] ->
                  counterexample m (conjoin [ counterexample f (faults base { optFps = read f } === []) | f <- [a, b] ])
                other -> counterexample ("no two rates in: " ++ m ++ " " ++ show other) False
-  describe "validateOptions, file names" $
+  describe "validateOptions, file names" $ do
     it "refuses an empty file name for every output, before the run" $ do
       let named f o = [ m | m <- validateOptions o, (f ++ " must not be empty") `isPrefixOf` m ]
           d = defaultSimOptions
@@ -39,6 +39,8 @@ spec = do
           , ("--video", d { optVideo = Just "" }) ]
         `shouldSatisfy` all ((== 1) . length)
       [ m | m <- validateOptions d, "must not be empty" `isInfixOf` m ] `shouldBe` []
+    it "refuses an empty --world when parsing (it is read before the other checks)" $
+      parseSimArgs defaultSimOptions ["--world", ""] `shouldBe` Left "--world must not be empty (a world file's name)"
   describe "parseSimArgs" $ do
     it "moves the default SVG and page into the folder --out names" $
       outputs ["--out", "x"] `shouldBe` Right (Just "x/run.svg", Just "x/replay.html", "x")
@@ -107,6 +109,10 @@ spec = do
       parseKeys "1.5:a,3:b" `shouldBe` Right [(1.5, 'a'), (3, 'b')]
       mapM_ (\k -> parseKeys k `shouldSatisfy` either ("--keys" `isInfixOf`) (const False))
             ["Infinity:a", "1e400:a", "1:a,NaN:b"]
+    it "scripts the space and comma keys by name (the list cannot hold them), any other key as one character" $ do
+      parseKeys "1:space, 2:COMMA,3::,4:s" `shouldBe` Right [(1, ' '), (2, ','), (3, ':'), (4, 's')]
+      mapM_ (\k -> parseKeys k `shouldSatisfy` either ("a KEY is one character, or space or comma" `isInfixOf`) (const False))
+            ["1:", "1:ab", "1:spacebar", "1: "]
 
 -- | The text from the last occurrence of a pattern on (and what is before
 -- it), or the whole text and nothing when it does not occur.

@@ -239,6 +239,18 @@ spec = do
       r2 <- writeReplayFromLog logPath out
       removeFile logPath
       r2 `shouldSatisfy` either (\e -> out `isInfixOf` e && not ((out ++ ": " ++ out) `isInfixOf` e)) (const False)
+    it "says a page's missing folder before reading the log (and a file in the folder's place)" $ do
+      tmp <- getTemporaryDirectory
+      let missing = tmp ++ "/afrp-no-such-log.jsonl"
+          out = tmp ++ "/afrp-no-such-folder/page.html"
+      -- (the log does not exist either: the folder is said first)
+      writeReplayFromLog missing out `shouldReturn`
+        Left ("cannot write the page " ++ out ++ ": " ++ tmp ++ "/afrp-no-such-folder does not exist")
+      (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      r <- writeReplayFromLog missing (logPath </> "page.html")
+      removeFile logPath
+      r `shouldBe` Left ("cannot write the page " ++ (logPath </> "page.html") ++ ": " ++ logPath ++ " is not a folder")
     it "refuses a page that is the log itself under another name, keeping the log" $ do
       tmp <- getTemporaryDirectory
       (logPath, h) <- openTempFile tmp "afrp-log.jsonl"

@@ -499,6 +499,12 @@ spec = do
     it "an --out whose parent folder does not exist, not said to be for frames when there are none" $
       refused (\dir -> (quick (dir </> "a" </> "b")) { optFrames = False, optSvg = Just (dir </> "a" </> "b" </> "run.svg") })
               (\e -> "output folder (--out)" `isInfixOf` e && not ("frames" `isInfixOf` e))
+    it "an --out that is a file, said so (not \"already exists\"), the file left as it was" $ withTempDir $ \dir -> do
+      writeFile (dir </> "afile") "mine"
+      (out, err, r) <- captured (runSimWith (quick (dir </> "afile")) (Just world) drive drive)
+      (r, out) `shouldBe` (Left (ExitFailure 2), "")
+      err `shouldSatisfy` (("cannot write frames to " ++ show (dir </> "afile") ++ ": it is a file, not a folder") `isInfixOf`)
+      readFile (dir </> "afile") `shouldReturn` "mine"
     it "an --out whose parent folder does not exist" $
       refused (\dir -> quick (dir </> "a" </> "b")) ("does not exist" `isInfixOf`)
     it "an empty --out" $ do
