@@ -154,12 +154,18 @@ boxesOverlap (a0, b0, a1, b1) (c0, d0, c1, d1) = a0 < c1 && c0 < a1 && b0 < d1 &
 
 -- | @runStream config duration world rcA rcB@: the run of 'simulateWith'
 -- as a stream, one world state per time step of @config@ from time 0 to
--- @duration@ (the first sample at time step 0).
+-- @duration@ (the first sample at time step 0). A duration that is not a
+-- finite number >= 0, or a time step ('simDt') that is not a finite
+-- number > 0, is an error naming it: a stream of no sample would make
+-- every property of the run hold.
 runStream :: SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController
           -> SignalSampleStream WorldState
 runStream config duration world rcA rcB
   | isNaN duration || isInfinite duration || duration < 0 =
       error ("AFrobRobotSim.Test.runStream: the duration must be a finite number >= 0, got " ++ show duration)
+  | isNaN (simDt config) || isInfinite (simDt config) || simDt config <= 0 =
+      error ("AFrobRobotSim.Test.runStream: the time step (simDt) must be a finite number > 0, got "
+             ++ show (simDt config))
   | otherwise =
   let dt    = simDt config
       steps = floor (duration / dt + 1e-9) :: Int
@@ -184,16 +190,22 @@ robotView ty i s = case traverse pick s of
       (r : _) -> Just (dt, r)
       []      -> Nothing
 
--- | A world state in one line: the time, then each robot's type, id,
--- position and heading (and @stuck@ if it is), and the balls.
+-- | A world state in one line: the time (with at least 2 decimals, more
+-- where its time step needs them: @t=16.50@, @t=2.001@), then each
+-- robot's type, id, position and heading (and @stuck@ if it is), and the
+-- balls.
 showWorldState :: WorldState -> String
 showWorldState ws =
-  "t=" ++ fixed 2 (wsTime ws) ++ concatMap robot (wsRobots ws)
+  "t=" ++ time (wsTime ws) ++ concatMap robot (wsRobots ws)
   ++ (if null (wsBalls ws) then "" else "  balls" ++ concatMap pos (wsBalls ws))
   where
     robot r = "  " ++ robotType r ++ " " ++ show (robotId r) ++ pos (robotPos r)
               ++ " h=" ++ fixed 2 (robotHeading r) ++ (if robotStuck r then " stuck" else "")
     pos (Point2 x y) = " (" ++ fixed 3 x ++ ", " ++ fixed 3 y ++ ")"
+    -- (6 decimals, trailing zeros after the second dropped)
+    time t = let str = fixed 6 t
+                 (whole, frac) = break (== '.') str
+             in whole ++ take 3 frac ++ reverse (dropWhile (== '0') (reverse (drop 3 frac)))
     fixed :: Int -> Double -> String
     fixed k v = let m = 10 ^ k :: Integer
                     r = round (abs v * fromIntegral m) :: Integer
@@ -214,6 +226,11 @@ forAllWorlds file gen prop =
 -- time 0 of the run of @world@ ('runStream'). When it does not, the
 -- counterexample says at which instant it was decided false, with the
 -- world states around it ('showWorldState').
+--
+-- The run ends at @duration@: a deadline beyond it has not passed, so
+-- @'eventuallyWithin' 25 p@ holds of a 20 s run in which @p@ never holds
+-- (see 'eventuallyWithin'). Give a duration at least as long as the
+-- longest bound of @p@.
 runT :: SimConfig -> Time -> SimbotController -> SimbotController -> TPred WorldState
      -> WorldTemplate -> Property
 runT config duration rcA rcB p world =

@@ -137,6 +137,21 @@ spec = do
     evaluate (length (run (0 / 0))) `shouldThrow` anyErrorCall
     evaluate (length (run (1 / 0))) `shouldThrow` anyErrorCall
 
+  it "runStream refuses a time step that is 0, negative or not finite (every property would hold of no sample)" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0]
+        run dt = runStream defaultSimConfig { simDt = dt } 30 world wander wander
+        refused dt = evaluate (length (run dt)) `shouldThrow` errorCall
+          ("AFrobRobotSim.Test.runStream: the time step (simDt) must be a finite number > 0, got " ++ show dt)
+    mapM_ refused [0, -0.01, 0 / 0, 1 / 0]
+    length (run 0.5) `shouldBe` 61
+
+  it "showWorldState writes the time with the decimals its step needs (at least 2)" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0]
+        times dt = map (takeWhile (/= ' ') . showWorldState . snd)
+                       (runStream defaultSimConfig { simDt = dt } (3 * dt) world wander wander)
+    times 0.02 `shouldBe` ["t=0.00", "t=0.02", "t=0.04", "t=0.06"]
+    times 0.001 `shouldBe` ["t=0.00", "t=0.001", "t=0.002", "t=0.003"]
+
   it "robots never overlap each other (property)" $
     forAllWorlds (tmp </> "afrp-test-robots.world") (genWorld defaultWorldMix { mixRobots = (2, 8) } notesBounds) $
       runT defaultSimConfig { simDt = 0.05 } 10 wander wander

@@ -170,7 +170,7 @@ truths ending m p0 s = go p0
     windowed d vs combine unit =
       [ let elapsed = sampleTimes (sClipBeforeFrame 0 suffix)  -- times from the suffix's start
             (inWindow, after') = span ((<= d + slack) . fst) (zip elapsed vsFrom)
-            slack = 1e-9 * max 1e-3 (abs d)
+            slack = timeSlack d
             end | not (null after') = unit
                 | otherwise         = case ending of
                     Closed -> T
@@ -232,7 +232,7 @@ showExplanation e = unlines $
   ("decided false at sample " ++ show (explFrame e) ++ ", t = " ++ show (explTime e) ++ ":")
   : [ (if j == explFrame e then "  > " else "    ") ++ pad 5 (show j) ++ pad 12 (show t) ++ show a
     | (j, t, a) <- explAround e ]
-  where pad w str = str ++ replicate (w - length str) ' '
+  where pad w str = str ++ replicate (max 1 (w - length str)) ' '
 
 -- | @previously p@: @p@ held at the previous sample. False at time 0.
 previously :: SF a Bool -> SF a Bool

@@ -34,9 +34,11 @@ module AFRP.Test.QuickCheck
     -- * Shrinking and showing
   , shrinkStream
   , shrinkStreamWith
+  , shrinkStreamIn
   , showStream
   , forAllStreams
   , forAllStreamsWith
+  , forAllStreamsIn
     -- * Temporal predicates as properties
   , propT
   ) where
@@ -189,13 +191,36 @@ shrinkStream = shrinkStreamWith (Nothing, Nothing) shrink
 --
 -- The first sample always stays, at time step 0. Each candidate is smaller
 -- (fewer samples, fewer decimals, or a simpler value), so shrinking ends.
+--
+-- Every candidate keeps its time steps inside @range@: a sample is removed
+-- only where the merged time step stays inside it.
 shrinkStreamWith :: Range -> (a -> [a]) -> SignalSampleStream a -> [SignalSampleStream a]
-shrinkStreamWith range shrinkValue s = fewer ++ rounder ++ simpler
+shrinkStreamWith range = shrinkStreamIn range Nothing
+
+-- | @shrinkStreamIn range len shrinkValue s@: 'shrinkStreamWith', keeping
+-- also the length @len@ that 'generateStream' was given, so that every
+-- candidate is a stream the generator could have made: with @Left n@ no
+-- sample is removed; with @Right t@ a stream keeps reaching time @t@
+-- (samples are removed from within, their time steps merged, and the
+-- stream is cut only where it still reaches @t@). With 'Nothing', as
+-- 'shrinkStreamWith'. A counterexample is then never one that fails only
+-- because it is shorter than any generated stream.
+shrinkStreamIn :: Range -> Length -> (a -> [a]) -> SignalSampleStream a -> [SignalSampleStream a]
+shrinkStreamIn range len shrinkValue s = filter lengthKept fewer ++ filter reaches rounder ++ simpler
   where
     n = length s
     fewer =
       [take (n `div` 2) s | n >= 4] ++ [take (n - 1) s | n >= 2]
-      ++ [ removeAt k s | k <- [1 .. n - 2] ]
+      ++ [ s' | k <- [1 .. n - 2], let s' = removeAt k s, all (inRange . fst) (drop 1 s') ]
+    lengthKept s' = case len of
+      Nothing       -> True
+      Just (Left _) -> False
+      Just (Right _) -> reaches s'
+    -- (a rounded time step may end the stream short of t; sums are
+    -- compared with the slack of 'timeSlack')
+    reaches s' = case len of
+      Just (Right t) -> sum (map fst s') >= t - timeSlack t
+      _              -> True
     rounder =
       [ replaceAt k (dt', a)
       | (k, (dt, a)) <- zip [1 ..] (drop 1 s)
@@ -231,7 +256,7 @@ showStream s = unlines $
   : ("    " ++ pad 5 "#" ++ pad 12 "dt" ++ pad 12 "t" ++ "value")
   : [ "    " ++ pad 5 (show k) ++ pad 12 (show dt) ++ pad 12 (show t) ++ show a
     | (k, (dt, a), t) <- zip3 [0 :: Int ..] s (sampleTimes s) ]
-  where pad w str = str ++ replicate (w - length str) ' '
+  where pad w str = str ++ replicate (max 1 (w - length str)) ' '
 
 -- | @forAllStreams gen prop@: @prop@ for streams from @gen@, shrunk with
 -- 'shrinkStream' and printed with 'showStream' when one fails.
@@ -247,6 +272,19 @@ forAllStreamsWith :: (Show a, Testable prop)
                   -> (SignalSampleStream a -> prop) -> Property
 forAllStreamsWith range shrinkValue gen =
   forAllShrinkShow gen (shrinkStreamWith range shrinkValue) showStream
+
+-- | @forAllStreamsIn dist range len shrinkValue prop@: @prop@ for streams
+-- of @'generateStream' dist range len@, shrunk with 'shrinkStreamIn' to
+-- streams that generator could make (time steps in @range@, the length
+-- @len@), printed with 'showStream' when one fails.
+--
+-- > forAllStreamsIn DistRandom (Just 0.01, Just 0.1) (Just (Right 3)) shrink $
+-- >   propT (eventuallyWithin 2.5 (SP (arr (> 0))))
+forAllStreamsIn :: (Arbitrary a, Show a, Testable prop)
+                => Distribution -> Range -> Length -> (a -> [a])
+                -> (SignalSampleStream a -> prop) -> Property
+forAllStreamsIn dist range len shrinkValue =
+  forAllShrinkShow (generateStream dist range len) (shrinkStreamIn range len shrinkValue) showStream
 
 -- | @propT p s@: 'evalT' as a property; when it fails, 'explainT' says at
 -- which sample it was decided false and shows the samples around it.

@@ -31,6 +31,8 @@ module AFRP.Test.Stream
   , sClipAfterTime
   , sClipBeforeFrame
   , sClipBeforeTime
+  , sampleAt
+  , timeSlack
     -- * Running signal functions
   , FutureSF
   , evalSF
@@ -131,11 +133,31 @@ sClipAfterFrame :: Int -> SignalSampleStream a -> SignalSampleStream a
 sClipAfterFrame n = take (max 1 n)
 
 -- | @sClipAfterTime t s@ keeps the samples at times up to @t@ (the first
--- always).
+-- always), with the relative slack of 'timeSlack': three steps of 0.1 end
+-- at 0.30000000000000004, which is at time 0.3 here, as for
+-- 'AFRP.Test.LTL.eventuallyWithin'.
 sClipAfterTime :: DTime -> SignalSampleStream a -> SignalSampleStream a
 sClipAfterTime t s = case zip (sampleTimes s) s of
   []            -> []
-  (_, x0) : xs  -> x0 : map snd (takeWhile ((<= t) . fst) xs)
+  (_, x0) : xs  -> x0 : map snd (takeWhile ((<= t + timeSlack t) . fst) xs)
+
+-- | @sampleAt t s@: the value of the last sample at or before time @t@
+-- (with the slack of 'sClipAfterTime'), which is the value a sampled
+-- signal holds at @t@; 'Nothing' for the empty stream. A time before 0
+-- gives the first sample's value.
+--
+-- > sampleAt 0.3 (fst (evalSF (after 0.3 () >>> arr isEvent) (replicate 5 (0.1, ()))))
+-- >   == Just True
+sampleAt :: DTime -> SignalSampleStream a -> Maybe a
+sampleAt t s = case sClipAfterTime t s of
+  []   -> Nothing
+  kept -> Just (snd (last kept))
+
+-- | The rounding slack of a time @t@ in the comparisons here and in
+-- "AFRP.Test.LTL": @1e-9 * max 1e-3 |t|@, far below any time step and
+-- above the rounding of sums of them.
+timeSlack :: DTime -> DTime
+timeSlack t = 1e-9 * max 1e-3 (abs t)
 
 -- | @sClipBeforeFrame n s@ drops the first @n@ samples, keeping at least
 -- the last; the first kept sample becomes time 0.
@@ -143,9 +165,11 @@ sClipBeforeFrame :: Int -> SignalSampleStream a -> SignalSampleStream a
 sClipBeforeFrame n s = restart (drop (min (max 0 n) (length s - 1)) s)
 
 -- | @sClipBeforeTime t s@ drops the samples before time @t@, keeping at
--- least the last; the first kept sample becomes time 0.
+-- least the last; the first kept sample becomes time 0. A sample within
+-- 'timeSlack' of @t@ is at @t@ (kept), as for 'sClipAfterTime': the two
+-- agree on which sample is at @t@.
 sClipBeforeTime :: DTime -> SignalSampleStream a -> SignalSampleStream a
-sClipBeforeTime t s = sClipBeforeFrame (length (takeWhile (< t) (sampleTimes s))) s
+sClipBeforeTime t s = sClipBeforeFrame (length (takeWhile (< t - timeSlack t) (sampleTimes s))) s
 
 -- | @evalSF sf s@ runs @sf@ on the stream: its outputs, each with the time
 -- step of the input sample it answers (the first at time 0), and what @sf@

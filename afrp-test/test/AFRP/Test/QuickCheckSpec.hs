@@ -4,6 +4,7 @@ import           Control.Exception (ErrorCall (..), evaluate)
 import           Data.List        (isPrefixOf)
 import           Test.Hspec
 import           Test.QuickCheck
+import           Test.QuickCheck.Random (mkQCGen)
 
 import           AFRP             (arr)
 import           AFRP.Test.LTL
@@ -73,6 +74,35 @@ spec = do
     it "rounds time steps, never to 0 nor out of the range" $
       shrinkStreamWith (Just 0.1, Nothing) (const []) [(0, ()), (0.137, ())]
         `shouldBe` [[(0, ())], [(0, ()), (0.1, ())], [(0, ()), (0.14, ())]]
+    it "never merges two time steps into one beyond the range" $
+      shrinkStreamWith (Just 0.05, Just 0.2) (const []) [(0, 'a'), (0.15, 'b'), (0.15, 'c'), (0.15, 'd')]
+        `shouldSatisfy` all (all (\(dt, _) -> dt >= 0.05 && dt <= 0.2) . drop 1)
+    it "shrinkStreamIn offers only streams the generator could make: range and length kept" $
+      forAll (elements [Just (Left 5), Just (Right 1.5)]) $ \len ->
+        forAll (generateStream DistRandom (Just 0.05, Just 0.2) len) $ \s ->
+          let ok s' = wellFormed s' && all (\(dt, _) -> dt >= 0.05 && dt <= 0.2) (drop 1 s')
+                      && case len of
+                           Just (Left n)  -> length s' == n + 1
+                           Just (Right t) -> last (sampleTimes s') >= t - 1e-9
+                           Nothing        -> True
+              cands = shrinkStreamIn (Just 0.05, Just 0.2) len shrink (s :: SignalSampleStream Int)
+          in counterexample (show (filter (not . ok) cands)) (all ok cands)
+    it "forAllStreamsIn shrinks a failure to a stream of the generator's length (not one too short to hold)" $ do
+      -- (fails at any stream where x >= 40 after 1 s; a 1-sample stream
+      -- would fail 'eventually t >= 2' only for being short)
+      let p = forAllStreamsIn DistRandom (Just 0.05, Just 0.2) (Just (Right 3)) shrink $ \s ->
+                propT (And (Eventually (SP (arr (>= 2)))) (Always (SP (arr (< 2.5)))))
+                      (zip (map fst (s :: SignalSampleStream ())) (sampleTimes s))
+      r <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 7, 0) } p
+      isSuccess r `shouldBe` False
+      case r of
+        Failure { failingTestCase = shown : _ } -> do
+          let times = [ read (words l !! 2) :: Double | l <- drop 2 (lines shown) ]
+          last times `shouldSatisfy` (>= 3 - 1e-9)
+        _ -> expectationFailure "no counterexample shown"
+    it "showStream keeps its columns apart when a value is wider than its column" $
+      lines (showStream [(0, 'a'), (2.0321708771485576, 'b')]) !! 3
+        `shouldBe` "    1    2.0321708771485576 2.0321708771485576 'b'"
   where
     errorCall' prefix (ErrorCall m) = prefix `isPrefixOf` m
     nubDts s = foldr (\dt acc -> if dt `elem` acc then acc else dt : acc) [] (map fst (drop 1 s))

@@ -4,10 +4,10 @@ module AFRP.Test.StreamSpec (spec) where
 import           Control.Exception (evaluate)
 import           Data.List        (group)
 
-import           Test.Hspec
+import           Test.Hspec        hiding (after)
 import           Test.QuickCheck
 
-import           AFRP             (integral, embed)
+import           AFRP             (after, arr, embed, integral, isEvent, (>>>))
 import           AFRP.Test.Stream
 
 spec :: Spec
@@ -29,6 +29,18 @@ spec = do
     it "sClipAfterTime keeps the samples up to the time (fixed)" $
       sClipAfterTime 1 [(0, 'a'), (0.5, 'b'), (0.5, 'c'), (0.5, 'd')]
         `shouldBe` [(0, 'a'), (0.5, 'b'), (0.5, 'c')]
+    it "a sample whose time rounds just past t is at t, for both clips and sampleAt (fixed)" $ do
+      let s = replicate 5 (0.1, ()) `zip'` "abcde"
+          zip' ts cs = [ (dt, c) | ((dt, _), c) <- zip ts cs ]
+      sampleTimes s !! 3 `shouldSatisfy` (> 0.3)   -- (0.30000000000000004)
+      map snd (sClipAfterTime 0.3 s) `shouldBe` "abcd"
+      map snd (sClipBeforeTime 0.3 s) `shouldBe` "de"
+      sampleAt 0.3 s `shouldBe` Just 'd'
+      sampleAt 0.29 s `shouldBe` Just 'c'
+      sampleAt (-1) s `shouldBe` Just 'a'
+      sampleAt 0.3 ([] :: SignalSampleStream Char) `shouldBe` Nothing
+    it "sampleAt finds the output of an event at its instant" $
+      sampleAt 0.3 (fst (evalSF (after 0.3 () >>> arr isEvent) (replicate 5 (0.1, ())))) `shouldBe` Just True
     it "sRefine keeps the values and total time, with no step over the bound (property)" $
       property $ \(Positive maxDT) (xs :: [(Positive Double, Int)]) ->
         let s  = (0, 0) : [(d, x) | (Positive d, x) <- xs]
