@@ -89,7 +89,7 @@ instance HasTextualConsoleInput SimbotInput where
 -- | What a simbot does at one sample: how to drive, and what to print.
 data SimbotOutput = SimbotOutput
   { soDrive    :: !DriveCommand  -- ^ the wheel command
-  , soMessages :: [String]       -- ^ lines to print, in order
+  , soMessages :: [String]       -- ^ lines to print, in order (a run keeps the first 10,000 characters of each)
   } deriving (Eq, Show)
 
 -- | A wheel command, interpreted by the simulator with the robot's

@@ -82,8 +82,9 @@ module AFrobRobotSim.Simulator
   , ControllerError (..)
   ) where
 
-import           Control.Exception       (Exception (..), SomeAsyncException, SomeException, catch,
-                                          throwIO)
+import           Control.Exception       (ErrorCall (..), Exception (..), SomeAsyncException, SomeException (..),
+                                          catch, evaluate, throwIO, try)
+import           Data.Typeable           (typeOf)
 import           GHC.Arr                 (Array, listArray, (!))
 import           GHC.IO                  (IO (..), unsafeDupablePerformIO)
 import           Data.Bits               (shiftR, xor)
@@ -291,8 +292,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
       case (case a of
               AgentNew { agStart = sf } -> evalAtZero sf input
               Agent { agFut = fut }     -> evalAt fut dt input) of
-        (o, fut) -> fut `seq` finiteDrive (soDrive o) `seq` forceList (soMessages o) `seq`
-                    (o, Agent (agProps a) fut)
+        (o, fut) -> let msgs = map capMessage (soMessages o)
+                    in fut `seq` finiteDrive (soDrive o) `seq` forceList msgs `seq`
+                       (o { soMessages = msgs }, Agent (agProps a) fut)
 
     blame props t (e :: SomeException) = case fromException e of
       Just (ce :: ControllerError) -> ce
@@ -339,13 +341,64 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 -- 'unsafePerformIO''s guard against two threads evaluating @v@ at once
 -- (a walk of the stack at every step of every robot), which a pure @v@
 -- does not need.
+--
+-- The cause is kept as it was thrown when its text ('displayException')
+-- is whole and at most 'maxTextChars' characters long; otherwise it
+-- becomes an 'ErrorCall' of the text cut there, or saying that the text
+-- itself failed: a cause whose message raises another exception, or never
+-- ends, would fail (or hang) the run where its outputs are written,
+-- without naming the robot.
 blaming :: (SomeException -> ControllerError) -> a -> a
 blaming f v = unsafeDupablePerformIO (IO (\s -> case v of !r -> (# s, r #)) `catch` handler)
   where
     handler e = case fromException e of
       Just (_ :: SomeAsyncException) -> throwIO e
-      Nothing                        -> throwIO (f e)
+      Nothing                        -> tameCause e >>= throwIO . f
 {-# INLINE blaming #-}
+
+-- A controller's exception whose text can be shown: see 'blaming'.
+tameCause :: SomeException -> IO SomeException
+tameCause e = do
+  r <- try (evaluate (capText (displayException e)))
+  case r of
+    Right (_, False) -> pure e
+    Right (txt, True) -> pure (toException (ErrorCall (txt ++ cutNote)))
+    Left (e2 :: SomeException)
+      | Just (_ :: SomeAsyncException) <- fromException e2 -> throwIO e2
+      | otherwise -> pure (toException (ErrorCall ("an exception whose message itself failed ("
+                                                   ++ takeWhile (/= ' ') (show (typeOfCause e)) ++ ")")))
+  where
+    typeOfCause (SomeException x) = typeOf x
+
+-- | The longest console message, and the longest text of a controller's
+-- exception, that a run keeps: 10,000 characters. A longer one is cut
+-- there, with a note saying so (an endless one would fill the memory, the
+-- log and the page).
+maxTextChars :: Int
+maxTextChars = 10000
+
+-- A text's first 'maxTextChars' characters, every one evaluated, and
+-- whether there were more. Evaluating it raises what the text raises in
+-- those characters (or where the one after them is looked for).
+capText :: String -> (String, Bool)
+capText = go maxTextChars
+  where
+    go 0 rest     = case rest of
+      [] -> ([], False)
+      _  -> ([], True)
+    go _ []       = ([], False)
+    go k (c : cs) = case go (k - 1) cs of
+      (t, more) -> c `seq` (c : t, more)
+
+-- A console message as the run keeps it: evaluated whole, and cut after
+-- 'maxTextChars' characters with a note.
+capMessage :: String -> String
+capMessage m = case capText m of
+  (t, False) -> t
+  (t, True)  -> t ++ cutNote
+
+cutNote :: String
+cutNote = " ... (cut: longer than " ++ show maxTextChars ++ " characters)"
 
 -- | The command evaluated, or an error if one of its speeds is NaN or
 -- infinite: a controller that computes such a command (a division by

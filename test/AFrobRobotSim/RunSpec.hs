@@ -112,6 +112,7 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- for the parent to interrupt. @quick@: two simulated seconds, an SVG.
 -- @svgmany@: 100 robots turning on the spot for 2000 s, an SVG of their
 -- 2001 snapshots (the most it keeps), under the parent's heap limit.
+-- @loop@: a SimbotA whose output depends on itself with no delay.
 child :: String -> IO ()
 child arg = case break (== ':') arg of
   ("hour", _ : dir) -> runSimWith defaultSimOptions
@@ -129,7 +130,12 @@ child arg = case break (== ':') arg of
     _ <- paramOr "speed" (1 :: Double)
     runSimWith (quick dir) { optFrames = False, optSeconds = 0.1, optParams = [("sped", "2"), ("speed", "3")] }
       (Just world) drive drive
+  ("loop", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg")
+                                              , optResult = Just (dir </> "r.json") } (Just world) selfish drive
   _ -> ioError (userError ("unknown child " ++ show arg))
+  where
+    -- (an output that depends on itself with no delay: <<loop>>)
+    selfish _ = loop (arr (\(_, o) -> (o, o)))
 
 -- | The ways a run is stopped from outside: a name, how to send it to
 -- the child, the exit code expected, and the capabilities to run with.
@@ -244,6 +250,24 @@ spec = do
       err `shouldSatisfy` ("cannot write to standard output" `isInfixOf`)
       err `shouldSatisfy` ("Bad file descriptor" `isInfixOf`)
       doesFileExist (dir </> "run.svg") `shouldReturn` True
+  describe "a controller whose output depends on itself with no delay" $
+    forM_ [1, 2 :: Int] $ \caps ->
+      it ("fails the run with <<loop>>, naming the robot, its outputs written (" ++ show caps ++ " capabilities)") $
+        withTempDir $ \dir -> do
+          self <- getExecutablePath
+          environment <- getEnvironment
+          (_, _, Just herr, ph) <- createProcess (proc self ["+RTS", "-N" ++ show caps, "-RTS"])
+            { env = Just ((childVariable, "loop:" ++ dir) : environment), std_out = NoStream, std_err = CreatePipe }
+          err <- hGetContents herr
+          done <- timeout 60000000 (length err `seq` waitForProcess ph)
+          -- (a child that hangs, as it did while the handler of SIGTERM
+          -- held its thread, is stopped, not left behind)
+          _ <- maybe (terminateProcess ph >> waitForProcess ph) pure done
+          done `shouldBe` Just (ExitFailure 1)
+          err `shouldSatisfy` ("the controller of SimbotA 1 failed at t = 0.000 s: <<loop>>" `isInfixOf`)
+          doesFileExist (dir </> "run.svg") `shouldReturn` True
+          -- (in JSON, < is written \u003c)
+          readFile (dir </> "r.json") >>= (`shouldSatisfy` ("SimbotA 1 failed at t = 0.000 s: \\u003c\\u003cloop" `isInfixOf`))
   describe "a SIGTERM the program was started ignoring (nohup, a batch system)" $
     it "is still ignored: the run goes on, and Ctrl-C stops it" $ withTempDir $ \dir -> do
       self <- getExecutablePath

@@ -7,11 +7,13 @@
 module AFrobRobotSim.SimulatorSpec (spec) where
 
 import           Control.Concurrent (myThreadId)
-import           Control.Exception (AsyncException (..), ErrorCall (..), evaluate, finally, throw, try)
+import           Control.Exception (ArithException (..), AsyncException (..), ErrorCall (..), Exception (..), evaluate,
+                                    finally, throw, try)
+import           System.Exit       (ExitCode (..))
 import qualified Data.ByteString   as BS
 import qualified Data.ByteString.Char8 as BC
 import           Data.IORef        (atomicModifyIORef', newIORef, readIORef)
-import           Data.List         (isInfixOf, isPrefixOf, sort)
+import           Data.List         (isInfixOf, isPrefixOf, isSuffixOf, sort)
 import qualified Data.Set          as Set
 import           GHC.Conc          (getNumCapabilities)
 import           GHC.IO.Handle     (hDuplicate, hDuplicateTo)
@@ -83,6 +85,29 @@ spec = do
       failsWith (0 / 0)
       failsWith (1 / 0)
       failsWith (-1 / 0)
+
+  describe "what a controller's messages and exceptions hold, evaluated in its step" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0]
+        saying m _ = constant (mrFinalize (ddVelDiff 0.1 0.1 `mrMerge` tcoPrintMessage (Event m)))
+        failing x _ = constant (mrFinalize (ddVelDiff x 0.1))
+        failsWith c check = evaluate (length (show (take 3 (simulate 0.01 world c idle))))
+          `shouldThrow` (\e -> ceRobotType e == "SimbotA" && ceRobotId e == 1 && ceTime e == 0
+                               && check (displayException (ceCause e)))
+    it "a message that raises past its first character fails the robot's step, not the run's outputs" $ do
+      failsWith (saying ("hello " ++ error "lazy boom")) ("lazy boom" `isInfixOf`)
+      failsWith (saying ("bye " ++ throw ExitSuccess)) (== "ExitSuccess")
+    it "an endless message is cut after 10,000 characters, with a note" $ do
+      let m = concat (wsMessages (head (simulate 0.01 world (saying (cycle "ab")) idle)))
+      length (takeWhile (`elem` "ab") (drop (length ("[0.00] SimbotA.1: " :: String)) m)) `shouldBe` 10000
+      m `shouldSatisfy` (" ... (cut: longer than 10000 characters)" `isSuffixOf`)
+    it "an exception whose message itself raises, or never ends, is shown as far as it can be" $ do
+      failsWith (failing (error ("bad: " ++ show (head ([] :: [Int])))))
+                (== "an exception whose message itself failed (ErrorCall)")
+      failsWith (failing (error (cycle "x")))
+                (\t -> take 3 t == "xxx" && " ... (cut: longer than 10000 characters)" `isSuffixOf` t)
+      -- (a short one keeps its type: the cause is what was thrown)
+      evaluate (length (show (take 3 (simulate 0.01 world (failing (1 `div` (0 :: Int) `seq` 1)) idle))))
+        `shouldThrow` (\e -> fmap (== DivideByZero) (fromException (ceCause e)) == Just True)
 
   describe "collisions" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0, OTVWall (Point2 2 0)]

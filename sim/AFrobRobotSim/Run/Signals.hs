@@ -25,7 +25,8 @@ module AFrobRobotSim.Run.Signals
   , finishing
   ) where
 
-import           Control.Concurrent (ThreadId, myThreadId)
+import           Control.Concurrent (ThreadId, mkWeakThreadId, myThreadId)
+import           System.Mem.Weak    (Weak, deRefWeak)
 import           Data.IORef
 #if !defined(mingw32_HOST_OS)
 import           Control.Concurrent (throwTo)
@@ -41,7 +42,12 @@ foreign import ccall unsafe "afrp_signal_ignored"
 -- | What 'interruptible' gives its action: which thread a signal stops,
 -- whether the run is writing its outputs ('finishing'), and the number of
 -- the first signal received, if any.
-data Stopper = Stopper ThreadId (IORef (Bool, Maybe Int))
+--
+-- The thread is held weakly: held strongly (by the signal's handler), a
+-- thread blocked for ever (a controller whose output depends on itself
+-- with no delay, which the runtime reports as @\<\<loop\>\>@ to a thread
+-- nothing else can wake) would never be found so, and the run would hang.
+data Stopper = Stopper (Weak ThreadId) (IORef (Bool, Maybe Int))
 
 -- | @interruptible act@ runs @act@ with @SIGTERM@ throwing
 -- 'UserInterrupt' to the thread that called it (once 'finishing' has
@@ -50,7 +56,7 @@ data Stopper = Stopper ThreadId (IORef (Bool, Maybe Int))
 -- Elsewhere than on a POSIX system, @act@ runs as it is.
 interruptible :: (Stopper -> IO a) -> IO a
 interruptible act = do
-  me <- myThreadId
+  me <- myThreadId >>= mkWeakThreadId
   phase <- newIORef (False, Nothing)
   let stopper = Stopper me phase
 #if !defined(mingw32_HOST_OS)
@@ -70,7 +76,10 @@ received (Stopper t phase) k = do
   stop <- atomicModifyIORef' phase $ \(done, got) -> case got of
     Nothing -> ((done, Just k), not done)
     Just _  -> ((done, got), False)
-  if stop then throwTo t UserInterrupt else pure ()
+  target <- deRefWeak t
+  case target of
+    Just thread | stop -> throwTo thread UserInterrupt
+    _                  -> pure ()
 #endif
 
 -- | The number of the first signal received: the one that stopped the
