@@ -21,9 +21,12 @@
 -- (under any names; devices such as @\/dev\/stdout@ excepted), an output
 -- that is the world file, @--video@ without
 -- @ffmpeg@ on the PATH. A controller that throws stops the run with a message naming the
--- robot and the simulated time (exit code 1). A write that fails during
--- the run (a full disk) stops it with a message (exit code 1). Ctrl-C
--- stops the run (exit code 130). In each case the outputs are finished
+-- robot and the simulated time (exit code 1); so does one whose messages
+-- raise when printed, whose step overflows the stack (@+RTS -K@), or
+-- whose output depends on itself with no delay (@\<\<loop\>\>@). A write
+-- that fails during the run (a full disk) stops it with a message (exit
+-- code 1), and so does the heap's limit (@+RTS -M@). Ctrl-C stops the
+-- run (exit code 130), and so does @SIGTERM@ (143). In each case the outputs are finished
 -- with what was simulated (the log gets its summary, the page and the SVG
 -- are written), every frame written is complete (frames are written to a
 -- temporary file and renamed; no temporary file is left), and the summary
@@ -59,7 +62,7 @@ module AFrobRobotSim.Run
   ) where
 
 import           Control.Concurrent        (getNumCapabilities)
-import           Control.Exception         (AsyncException (UserInterrupt), Exception (..), IOException,
+import           Control.Exception         (AsyncException (HeapOverflow, UserInterrupt), Exception (..), IOException,
                                             evaluate, throwIO, try)
 import           Control.Monad             (forM, unless, when)
 import           Data.IORef
@@ -247,7 +250,7 @@ preflight bounds opts = do
             Right ()                -> []
 
 -- How a run's loop ended.
-data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOException
+data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOException | OutOfHeap
 
 -- One pass over the states: every sink takes every state; nothing else
 -- keeps a state, so the run's memory is the sinks' (constant but for the
@@ -318,6 +321,9 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
         | Just UserInterrupt <- fromException e       = pure Interrupted
         | Just ce <- fromException e                  = pure (Failed ce)
         | Just (io :: IOException) <- fromException e = pure (WriteFailed io)
+        -- (the heap limit, +RTS -M: the runtime gives a little more
+        -- room once it has said so, in which the outputs are written)
+        | Just HeapOverflow <- fromException e         = pure OutOfHeap
         | otherwise                                   = throwIO e
   caps <- getNumCapabilities
   ending <- if caps > 1 && not (null sinks)
@@ -346,20 +352,23 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
         _           -> False
       -- (what stopped the run early, for the log's summary and the result
       -- line: a controller's failure, or a write that failed)
-      failureText = case ending of
-        Failed ce     -> Just (displayException ce)
+      stoppedText = case ending of
         WriteFailed e -> Just ("the run stopped: a write failed: " ++ ioErrorText e)
+        OutOfHeap     -> Just ("the run stopped: it ran out of memory (the heap limit, +RTS -M; a controller "
+                               ++ "that keeps ever more state?)")
         _             -> Nothing
+      failureText = case ending of
+        Failed ce -> Just (displayException ce)
+        _         -> stoppedText
       summary   = LogSummary simulated steps (-1) wall interrupted failureText []
   Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
-  let runErrs = case ending of
-        WriteFailed e -> [ "the run stopped: a write failed: " ++ ioErrorText e ]
-        _             -> []
+  let runErrs = maybe [] pure stoppedText
   printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
     (case ending of
        Interrupted   -> "interrupted: "
        Failed _      -> "failed: "
        WriteFailed _ -> "stopped: "
+       OutOfHeap     -> "stopped: "
        Finished      -> "" :: String)
     simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
   unless (optQuiet opts) (mapM_ putStrLn wrote)

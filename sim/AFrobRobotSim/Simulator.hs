@@ -82,7 +82,8 @@ module AFrobRobotSim.Simulator
   , ControllerError (..)
   ) where
 
-import           Control.Exception       (ErrorCall (..), Exception (..), SomeAsyncException, SomeException (..),
+import           Control.Exception       (AsyncException (StackOverflow), ErrorCall (..), Exception (..),
+                                          SomeAsyncException, SomeException (..),
                                           catch, evaluate, throwIO, try)
 import           Data.Typeable           (typeOf)
 import           GHC.Arr                 (Array, listArray, (!))
@@ -336,7 +337,8 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 
 -- | @blaming f v@ is @v@, with an exception that its evaluation raises
 -- turned into @f e@: 'Control.Exception.mapException', but leaving
--- asynchronous exceptions (Ctrl-C, a timeout) as they are, so that an
+-- asynchronous exceptions (Ctrl-C, a timeout, the heap's limit; not a
+-- stack overflow, which is @v@'s) as they are, so that an
 -- interrupted run is not reported as a failing controller; and without
 -- 'unsafePerformIO''s guard against two threads evaluating @v@ at once
 -- (a walk of the stack at every step of every robot), which a pure @v@
@@ -352,6 +354,9 @@ blaming :: (SomeException -> ControllerError) -> a -> a
 blaming f v = unsafeDupablePerformIO (IO (\s -> case v of !r -> (# s, r #)) `catch` handler)
   where
     handler e = case fromException e of
+      -- (a stack overflow is raised where the controller's evaluation
+      -- went too deep: its failure, as with +RTS -K)
+      _ | Just StackOverflow <- fromException e -> throwIO (f e)
       Just (_ :: SomeAsyncException) -> throwIO e
       Nothing                        -> tameCause e >>= throwIO . f
 {-# INLINE blaming #-}

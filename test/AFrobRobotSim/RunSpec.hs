@@ -113,6 +113,8 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- @svgmany@: 100 robots turning on the spot for 2000 s, an SVG of their
 -- 2001 snapshots (the most it keeps), under the parent's heap limit.
 -- @loop@: a SimbotA whose output depends on itself with no delay.
+-- @deep@: a SimbotA whose step overflows a small stack (@+RTS -K1m@).
+-- @leak@: a SimbotA that keeps ever more state, for a heap limit.
 child :: String -> IO ()
 child arg = case break (== ':') arg of
   ("hour", _ : dir) -> runSimWith defaultSimOptions
@@ -132,8 +134,17 @@ child arg = case break (== ':') arg of
       (Just world) drive drive
   ("loop", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg")
                                               , optResult = Just (dir </> "r.json") } (Just world) selfish drive
+  ("deep", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg")
+                                              , optResult = Just (dir </> "r.json") } (Just world) deep drive
+  ("leak", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSeconds = 600, optSvg = Just (dir </> "run.svg")
+                                              , optResult = Just (dir </> "r.json") } (Just world) hoarder drive
   _ -> ioError (userError ("unknown child " ++ show arg))
   where
+    -- (a sum too deep for a stack of 1 MB, +RTS -K1m)
+    deep _ = constant (mrFinalize (ddVelDiff (foldr (+) 0 [1 .. 1e7 :: Double]) 0))
+    -- (keeps 10,000 more numbers at every step, all of them read)
+    hoarder _ = arr (const ()) >>> sscan (\xs _ -> let ys = [0 .. 9999 :: Int] ++ xs in sum ys `seq` ys) []
+                >>> arr (\kept -> mrFinalize (ddVelDiff (if null kept then 0 else 0.1) 0.1))
     -- (an output that depends on itself with no delay: <<loop>>)
     selfish _ = loop (arr (\(_, o) -> (o, o)))
 
@@ -268,6 +279,25 @@ spec = do
           doesFileExist (dir </> "run.svg") `shouldReturn` True
           -- (in JSON, < is written \u003c)
           readFile (dir </> "r.json") >>= (`shouldSatisfy` ("SimbotA 1 failed at t = 0.000 s: \\u003c\\u003cloop" `isInfixOf`))
+  describe "a controller that overflows the stack, or fills the heap" $ do
+    let childRun what rts dir = do
+          self <- getExecutablePath
+          environment <- getEnvironment
+          readCreateProcessWithExitCode
+            (proc self (["+RTS"] ++ rts ++ ["-RTS"])) { env = Just ((childVariable, what ++ ":" ++ dir) : environment) } ""
+    it "a stack overflow in a controller's step is its failure: named, exit 1, the outputs written" $ withTempDir $ \dir -> do
+      (code, _, err) <- childRun "deep" ["-K1m"] dir
+      (code, err) `shouldSatisfy` \(c, e) -> c == ExitFailure 1
+                                            && "the controller of SimbotA 1 failed at t = 0.000 s: stack overflow" `isInfixOf` e
+      doesFileExist (dir </> "run.svg") `shouldReturn` True
+      readFile (dir </> "r.json") >>= (`shouldSatisfy` ("stack overflow" `isInfixOf`))
+    it "a run that reaches the heap's limit stops, says so, and writes its outputs (exit 1)" $ withTempDir $ \dir -> do
+      (code, out, err) <- childRun "leak" ["-M60m"] dir
+      code `shouldBe` ExitFailure 1
+      out `shouldSatisfy` ("stopped: " `isPrefixOf`)
+      err `shouldSatisfy` ("the run stopped: it ran out of memory (the heap limit, +RTS -M" `isInfixOf`)
+      doesFileExist (dir </> "run.svg") `shouldReturn` True
+      readFile (dir </> "r.json") >>= (`shouldSatisfy` ("ran out of memory" `isInfixOf`))
   describe "a SIGTERM the program was started ignoring (nohup, a batch system)" $
     it "is still ignored: the run goes on, and Ctrl-C stops it" $ withTempDir $ \dir -> do
       self <- getExecutablePath
