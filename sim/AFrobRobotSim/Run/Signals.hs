@@ -18,6 +18,12 @@
 -- One window remains: a @SIGTERM@ that comes after a run's last step and
 -- before its outputs are begun (a few instructions), or while the run is
 -- being set up, ends the program as Ctrl-C would there.
+--
+-- A controller caught in an endless loop that never allocates (a tight
+-- loop over unboxed numbers) keeps its processor from the runtime, which
+-- then runs no handler: neither @SIGTERM@ nor a first Ctrl-C stops it (a
+-- second Ctrl-C ends the program at once, writing nothing; @SIGKILL@
+-- too). Code compiled with @-fno-omit-yields@ can be stopped.
 module AFrobRobotSim.Run.Signals
   ( Stopper
   , interruptible
