@@ -293,9 +293,10 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
       case (case a of
               AgentNew { agStart = sf } -> evalAtZero sf input
               Agent { agFut = fut }     -> evalAt fut dt input) of
-        (o, fut) -> let msgs = map capMessage (soMessages o)
-                    in fut `seq` finiteDrive (soDrive o) `seq` forceList msgs `seq`
-                       (o { soMessages = msgs }, Agent (agProps a) fut)
+        (o, fut) -> fut `seq` finiteDrive (soDrive o) `seq` case soMessages o of
+          []   -> (o, Agent (agProps a) fut)   -- (most steps: the output as it is)
+          msgs -> let kept = map capMessage msgs
+                  in forceList kept `seq` (o { soMessages = kept }, Agent (agProps a) fut)
 
     blame props t (e :: SomeException) = case fromException e of
       Just (ce :: ControllerError) -> ce
