@@ -31,8 +31,9 @@ run prog args =
     ["--help"]     -> putStrLn (helpText prog)
     flag : extra
       | flag `elem` ["--list", "--help"] -> usageError prog (flag ++ " takes nothing after it, got " ++ unwords (map show extra))
-      | "-" `isPrefixOf` flag -> usageError prog ("the flag " ++ show flag ++ " comes before an example's name: give "
-                                                  ++ "the name first (" ++ prog ++ " NAME " ++ flag ++ " ...)")
+      | "-" `isPrefixOf` flag -> usageError prog ("the flag " ++ show flag ++ " is not one of " ++ prog ++ "'s own (--list, "
+                                                  ++ "--help); a simulator flag comes after an example's name ("
+                                                  ++ prog ++ " NAME " ++ flag ++ " ...)")
     name : flags   -> case [ e | e <- allExamples, exName e == name ] of
       e : _ -> runExample prog e flags
       []    -> usageError prog ("no example named " ++ show name ++ suggestion name)

@@ -321,8 +321,9 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
         | Just UserInterrupt <- fromException e       = pure Interrupted
         | Just ce <- fromException e                  = pure (Failed ce)
         | Just (io :: IOException) <- fromException e = pure (WriteFailed io)
-        -- (the heap limit, +RTS -M: the runtime gives a little more
-        -- room once it has said so, in which the outputs are written)
+        -- (the heap limit, +RTS -M: the outputs are then written in
+        -- what the run's states held, which they no longer need; were that
+        -- too little, the runtime ends the program as before)
         | Just HeapOverflow <- fromException e         = pure OutOfHeap
         | otherwise                                   = throwIO e
   caps <- getNumCapabilities

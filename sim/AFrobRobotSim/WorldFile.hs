@@ -180,6 +180,7 @@ import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capPro
                                       notesBounds, worldProblems)
 import           AFrobRobotSim.Console          (displayPath)
 import           AFrobRobotSim.WorldFile.Grammar (Failure (..), maxHeading, parseLine)
+import           AFrobRobotSim.InputFile (readFileUpTo)
 import           AFrobRobotSim.WorldFile.Lexical
 
 ------------------------------------------------------------------------------

@@ -190,8 +190,8 @@ robotView ty i s = case traverse pick s of
       (r : _) -> Just (dt, r)
       []      -> Nothing
 
--- | A world state in one line: the time (with at least 2 decimals, more
--- where its time step needs them: @t=16.50@, @t=2.001@), then each
+-- | A world state in one line: the time (with 2 to 6 decimals, as its
+-- time step needs: @t=16.50@, @t=2.001@), then each
 -- robot's type, id, position and heading (and @stuck@ if it is), and the
 -- balls.
 showWorldState :: WorldState -> String

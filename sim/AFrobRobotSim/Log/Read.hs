@@ -25,7 +25,8 @@ import           Data.List                 (stripPrefix)
 
 import           AFrobRobotSim.Console     (displayPath)
 import           AFrobRobotSim.Log.Records
-import           AFrobRobotSim.WorldFile.Lexical (cannotRead, readFileUpTo, utf8Text)
+import           AFrobRobotSim.InputFile (readFileUpTo)
+import           AFrobRobotSim.WorldFile.Lexical (cannotRead, utf8Text)
 
 -- | A log read back.
 data RunLog = RunLog
@@ -112,7 +113,7 @@ maxLogBytes :: Int
 maxLogBytes = 256 * 1024 * 1024
 
 -- | 'readLogFile' reading at most the given number of bytes (by
--- 'AFrobRobotSim.WorldFile.Lexical.readFileUpTo', as world files are read).
+-- 'AFrobRobotSim.InputFile.readFileUpTo', as world files are read).
 readLogFileUpTo :: Int -> FilePath -> IO (Either String RunLog)
 readLogFileUpTo cap path = do
   r <- readFileUpTo cap path

@@ -30,18 +30,13 @@ module AFrobRobotSim.WorldFile.Lexical
   , quote
   , cannotRead
     -- * Files
-  , readFileUpTo
-  , openReading
   , canonicalPath
   , lower
   ) where
 
-import           Control.Concurrent      (forkIO)
-import           Control.Concurrent.MVar (newEmptyMVar, putMVar, takeMVar)
-import           Control.Exception      (IOException, bracket, onException, throwIO, try)
+import           Control.Exception      (IOException, try)
 import           Data.Bits              ((.&.), (.|.), shiftL)
 import qualified Data.ByteString        as B
-import qualified Data.ByteString.Lazy   as BL
 import qualified Data.ByteString.Unsafe as BU
 import           Data.Char              (chr, isDigit, isSpace, toLower)
 import           Data.Word              (Word8)
@@ -49,8 +44,6 @@ import           GHC.IO.Exception       (IOException (ioe_description))
 import           Numeric                (showHex)
 import           System.Directory       (canonicalizePath)
 import           System.FilePath        (normalise)
-import           GHC.IO.Handle.FD       (openFileBlocking)
-import           System.IO              (Handle, IOMode (ReadMode), hClose, hFileSize, hSetBinaryMode)
 import           System.IO.Error        (ioeGetErrorType)
 
 import           AFrobRobotSim.Console  (displayPath, quote)
@@ -157,40 +150,6 @@ cannotRead path e = displayPath path ++ ": cannot read it: " ++ show (ioeGetErro
     reason = case ioe_description e of
       "" -> ""
       d  -> " (" ++ d ++ ")"
-
--- | @readFileUpTo cap path@: the file's bytes, 'Nothing' when it is longer
--- than @cap@ bytes (or endless, such as @\/dev\/zero@), 'Left' when it
--- cannot be read ('cannotRead' words the exception). A regular file says
--- its size: one too long is refused unread, one within the limit read in
--- one piece; anything else (a pipe, a device) is read in chunks, up to one
--- byte past the limit. A named pipe (FIFO) is read from its writer, which
--- is waited for ('openReading').
-readFileUpTo :: Int -> FilePath -> IO (Either IOException (Maybe B.ByteString))
-readFileUpTo cap path = try (bracket (openReading path) hClose $ \h -> do
-  size <- either (\e -> const 0 (e :: IOException)) id <$> try (hFileSize h)
-  if size > fromIntegral cap
-    then pure Nothing
-    else do
-      s <- if size > 0 then B.hGet h (fromIntegral size) else pure B.empty
-      more <- BL.toStrict . BL.take (fromIntegral (cap + 1 - B.length s)) <$> BL.hGetContents h
-      let t = if B.null more then s else B.append s more
-      B.length t `seq` pure (if B.length t > cap then Nothing else Just t))
-
--- | A file opened for reading, in binary mode; when it is a named pipe
--- (a FIFO) with no writer yet, once a writer opens it (as @cat@ does).
--- GHC's 'System.IO.openFile' opens without waiting, and such a pipe then
--- reads as empty: a world written by another program into a FIFO would
--- have run as an empty world. The open waits on a thread of its own, so
--- that the caller stays interruptible (Ctrl-C, SIGTERM, 'throwTo') with
--- the threaded runtime; a handle opened after the caller gave up is
--- closed.
-openReading :: FilePath -> IO Handle
-openReading path = do
-  opened <- newEmptyMVar
-  _ <- forkIO (try (openFileBlocking path ReadMode) >>= putMVar opened)
-  r <- takeMVar opened `onException` forkIO (takeMVar opened >>= either (\e -> const (pure ()) (e :: IOException)) hClose)
-  h <- either throwIO pure r
-  h <$ hSetBinaryMode h True
 
 -- | A path as the file system resolves it ('canonicalizePath': links
 -- followed, @.@ and @..@ gone), or, when it cannot be, the path normalised:

@@ -192,8 +192,8 @@ shrinkStream = shrinkStreamWith (Nothing, Nothing) shrink
 -- The first sample always stays, at time step 0. Each candidate is smaller
 -- (fewer samples, fewer decimals, or a simpler value), so shrinking ends.
 --
--- Every candidate keeps its time steps inside @range@: a sample is removed
--- only where the merged time step stays inside it.
+-- A sample is removed only where the merged time step stays inside
+-- @range@, and a step is rounded only to a value inside it.
 shrinkStreamWith :: Range -> (a -> [a]) -> SignalSampleStream a -> [SignalSampleStream a]
 shrinkStreamWith range = shrinkStreamIn range Nothing
 
@@ -211,7 +211,7 @@ shrinkStreamIn range len shrinkValue s = filter lengthKept fewer ++ filter reach
     n = length s
     fewer =
       [take (n `div` 2) s | n >= 4] ++ [take (n - 1) s | n >= 2]
-      ++ [ s' | k <- [1 .. n - 2], let s' = removeAt k s, all (inRange . fst) (drop 1 s') ]
+      ++ [ removeAt k s | (k, (dt, _), (dt', _)) <- zip3 [1 .. n - 2] (drop 1 s) (drop 2 s), inRange (dt + dt') ]
     lengthKept s' = case len of
       Nothing       -> True
       Just (Left _) -> False

@@ -154,8 +154,9 @@ sampleAt t s = case sClipAfterTime t s of
   kept -> Just (snd (last kept))
 
 -- | The rounding slack of a time @t@ in the comparisons here and in
--- "AFRP.Test.LTL": @1e-9 * max 1e-3 |t|@, far below any time step and
--- above the rounding of sums of them.
+-- "AFRP.Test.LTL": @1e-9 * max 1e-3 |t|@, relative to @t@ (1 ms at
+-- t = 10^6 s), above the rounding of sums of time steps and below the
+-- time steps of a stream whose times are not beyond 10^6 of its steps.
 timeSlack :: DTime -> DTime
 timeSlack t = 1e-9 * max 1e-3 (abs t)
 

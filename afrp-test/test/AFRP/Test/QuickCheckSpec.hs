@@ -74,9 +74,12 @@ spec = do
     it "rounds time steps, never to 0 nor out of the range" $
       shrinkStreamWith (Just 0.1, Nothing) (const []) [(0, ()), (0.137, ())]
         `shouldBe` [[(0, ())], [(0, ()), (0.1, ())], [(0, ()), (0.14, ())]]
-    it "never merges two time steps into one beyond the range" $
+    it "never merges two time steps into one beyond the range, and still removes where it can" $ do
       shrinkStreamWith (Just 0.05, Just 0.2) (const []) [(0, 'a'), (0.15, 'b'), (0.15, 'c'), (0.15, 'd')]
         `shouldSatisfy` all (all (\(dt, _) -> dt >= 0.05 && dt <= 0.2) . drop 1)
+      -- (a step outside the range elsewhere does not stop a removal)
+      shrinkStreamWith (Just 0.05, Just 0.2) (const []) [(0, 'a'), (0.3, 'b'), (0.1, 'c'), (0.1, 'd'), (0.1, 'e')]
+        `shouldContain` [[(0, 'a'), (0.3, 'b'), (0.2, 'd'), (0.1, 'e')]]
     it "shrinkStreamIn offers only streams the generator could make: range and length kept" $
       forAll (elements [Just (Left 5), Just (Right 1.5)]) $ \len ->
         forAll (generateStream DistRandom (Just 0.05, Just 0.2) len) $ \s ->
@@ -88,8 +91,9 @@ spec = do
               cands = shrinkStreamIn (Just 0.05, Just 0.2) len shrink (s :: SignalSampleStream Int)
           in counterexample (show (filter (not . ok) cands)) (all ok cands)
     it "forAllStreamsIn shrinks a failure to a stream of the generator's length (not one too short to hold)" $ do
-      -- (fails at any stream where x >= 40 after 1 s; a 1-sample stream
-      -- would fail 'eventually t >= 2' only for being short)
+      -- (fails at any stream that reaches t = 2.5; a stream shorter than
+      -- 2 s, which the generator never makes, would fail 'eventually
+      -- t >= 2' only for being short)
       let p = forAllStreamsIn DistRandom (Just 0.05, Just 0.2) (Just (Right 3)) shrink $ \s ->
                 propT (And (Eventually (SP (arr (>= 2)))) (Always (SP (arr (< 2.5)))))
                       (zip (map fst (s :: SignalSampleStream ())) (sampleTimes s))

@@ -1,0 +1,132 @@
+{-# LANGUAGE BangPatterns         #-}
+{-# LANGUAGE UnboxedTuples       #-}
+{-# LANGUAGE ScopedTypeVariables #-}
+-- |
+-- Module      : AFrobRobotSim.Simulator.Failure
+-- Description : A controller's failure, found in its own step and named.
+--
+-- A controller fails when evaluating its step raises an exception (its
+-- own, or an error in a message it prints), overflows the stack, or gives
+-- a wheel command with a NaN or infinite speed. "AFrobRobotSim.Simulator"
+-- evaluates each robot's output, messages included, inside 'blaming', so
+-- that the failure names the robot and the time ('ControllerError')
+-- rather than surface later, unnamed, where the run's outputs are
+-- written. What a run keeps of a message or of an exception's text is
+-- cut at 'maxTextChars' characters.
+module AFrobRobotSim.Simulator.Failure
+  ( ControllerError (..)
+  , blaming
+  , capMessage
+  , maxTextChars
+  , finiteDrive
+  ) where
+
+import           Control.Exception       (AsyncException (StackOverflow), ErrorCall (..), Exception (..),
+                                          SomeAsyncException, SomeException (..), catch, evaluate, throwIO, try)
+import           Data.Typeable           (typeOf)
+import           GHC.IO                  (IO (..), unsafeDupablePerformIO)
+import           Text.Printf             (printf)
+
+import           AFRP                    (Time)
+import           AFrob.Dimensions        (RobotId, RobotType)
+import           AFrobRobotSim.Robot     (DriveCommand (..))
+import           AFrobRobotSim.SpatialIndex (finite)
+
+-- | A controller failed while the simulation ran: it threw an exception,
+-- or gave a wheel command with a NaN or infinite speed.
+data ControllerError = ControllerError
+  { ceRobotType :: RobotType
+  , ceRobotId   :: RobotId
+  , ceTime      :: Time
+  , ceCause     :: SomeException
+  } deriving (Show)
+
+instance Exception ControllerError where
+  displayException e = printf "the controller of %s %d failed at t = %.3f s: %s"
+    (ceRobotType e) (ceRobotId e) (ceTime e) (displayException (ceCause e))
+
+-- | @blaming f v@ is @v@, with an exception that its evaluation raises
+-- turned into @f e@: 'Control.Exception.mapException', but leaving
+-- asynchronous exceptions (Ctrl-C, a timeout, the heap's limit; not a
+-- stack overflow, which is @v@'s) as they are, so that an
+-- interrupted run is not reported as a failing controller; and without
+-- 'unsafePerformIO''s guard against two threads evaluating @v@ at once
+-- (a walk of the stack at every step of every robot), which a pure @v@
+-- does not need.
+--
+-- The cause is kept as it was thrown when its text ('displayException')
+-- is whole and at most 'maxTextChars' characters long; otherwise it
+-- becomes an 'ErrorCall' of the text cut there, or saying that the text
+-- itself failed: a cause whose message raises another exception, or never
+-- ends, would fail (or hang) the run where its outputs are written,
+-- without naming the robot.
+blaming :: (SomeException -> ControllerError) -> a -> a
+blaming f v = unsafeDupablePerformIO (IO (\s -> case v of !r -> (# s, r #)) `catch` handler)
+  where
+    handler e = case fromException e of
+      -- (a stack overflow is raised where the controller's evaluation
+      -- went too deep: its failure, as with +RTS -K)
+      _ | Just StackOverflow <- fromException e -> throwIO (f e)
+      Just (_ :: SomeAsyncException) -> throwIO e
+      Nothing                        -> tameCause e >>= throwIO . f
+{-# INLINE blaming #-}
+
+-- A controller's exception whose text can be shown: see 'blaming'.
+tameCause :: SomeException -> IO SomeException
+tameCause e = do
+  r <- try (evaluate (capText (displayException e)))
+  case r of
+    Right (_, False) -> pure e
+    Right (txt, True) -> pure (toException (ErrorCall (txt ++ cutNote)))
+    Left (e2 :: SomeException)
+      | Just (_ :: SomeAsyncException) <- fromException e2 -> throwIO e2
+      | otherwise -> pure (toException (ErrorCall ("an exception whose message itself failed ("
+                                                   ++ takeWhile (/= ' ') (show (typeOfCause e)) ++ ")")))
+  where
+    typeOfCause (SomeException x) = typeOf x
+
+-- | The longest console message, and the longest text of a controller's
+-- exception, that a run keeps: 10,000 characters. A longer one is cut
+-- there, with a note saying so (an endless one would fill the memory, the
+-- log and the page).
+maxTextChars :: Int
+maxTextChars = 10000
+
+-- A text's first 'maxTextChars' characters, every one evaluated, and
+-- whether there were more. Evaluating it raises what the text raises in
+-- those characters (or where the one after them is looked for).
+capText :: String -> (String, Bool)
+capText = go maxTextChars
+  where
+    go 0 rest     = case rest of
+      [] -> ([], False)
+      _  -> ([], True)
+    go _ []       = ([], False)
+    go k (c : cs) = case go (k - 1) cs of
+      (t, more) -> c `seq` (c : t, more)
+
+-- | A console message as the run keeps it: evaluated whole (whatever it
+-- raises is raised here), and cut after 'maxTextChars' characters with a
+-- note.
+capMessage :: String -> String
+capMessage m = case capText m of
+  (t, False) -> t
+  (t, True)  -> t ++ cutNote
+
+cutNote :: String
+cutNote = " ... (cut: longer than " ++ show maxTextChars ++ " characters)"
+
+-- | The command evaluated, or an error if one of its speeds is NaN or
+-- infinite: a controller that computes such a command (a division by
+-- zero, say) has failed, and its run stops with a 'ControllerError' naming
+-- the robot and the time, as for a controller that throws, rather than
+-- drive on with the bad number taken for 0.
+finiteDrive :: DriveCommand -> ()
+finiteDrive c = case c of
+  DriveBrake      -> ()
+  DriveWheels l r -> both "DriveWheels" l r
+  DriveTR v w     -> both "DriveTR" v w
+  where
+    both name a b
+      | finite a && finite b = ()
+      | otherwise = errorWithoutStackTrace ("its wheel command is not finite: " ++ name ++ " " ++ show a ++ " " ++ show b)
