@@ -1,3 +1,4 @@
+{-# LANGUAGE MultiWayIf #-}
 {-# LANGUAGE CPP #-}
 {-# LANGUAGE ScopedTypeVariables #-}
 -- |
@@ -23,7 +24,10 @@
 module AFrobRobotSim.OutputFile
   ( writeWhole
   , fileIdentity
+  , notAFolder
   ) where
+
+import           System.Directory  (doesDirectoryExist, doesPathExist)
 
 #if !defined(mingw32_HOST_OS)
 import           Control.Exception (IOException, catch, onException, try)
@@ -95,3 +99,14 @@ fileIdentity path = either (\(_ :: IOException) -> Nothing) (\st -> Just (key st
 #else
 fileIdentity _ = pure Nothing
 #endif
+
+-- | Why files cannot be written into a path taken as a folder, in words
+-- that follow its name: @Just \"does not exist\"@, @Just \"is not a
+-- folder\"@ (a file is there), or 'Nothing' for a folder.
+notAFolder :: FilePath -> IO (Maybe String)
+notAFolder dir = do
+  isFolder <- doesDirectoryExist dir
+  taken <- doesPathExist dir
+  pure $ if | isFolder  -> Nothing
+            | taken     -> Just "is not a folder"
+            | otherwise -> Just "does not exist"

@@ -1,4 +1,3 @@
-{-# LANGUAGE MultiWayIf #-}
 {-# LANGUAGE BangPatterns #-}
 -- |
 -- Module      : AFrobRobotSim.Replay
@@ -102,14 +101,14 @@ import qualified Data.ByteString.Unsafe    as BU (unsafeUseAsCStringLen)
 import           GHC.ByteOrder             (ByteOrder (..), targetByteOrder)
 import           Numeric                   (showHex)
 import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
-import           System.Directory          (doesDirectoryExist, doesPathExist, getTemporaryDirectory, removeFile)
+import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.FilePath           (takeDirectory)
 import           System.IO
 
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Replay.Assets
 import           AFrobRobotSim.Console     (displayPath, ioErrorText)
-import           AFrobRobotSim.OutputFile  (writeWhole)
+import           AFrobRobotSim.OutputFile  (notAFolder, writeWhole)
 import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 import           AFrobRobotSim.Simulator   (WorldState)
 
@@ -278,12 +277,11 @@ writeReplayFromLog :: FilePath -> FilePath -> IO (Either String ())
 writeReplayFromLog logPath out = do
   same <- (==) <$> canonicalPath logPath <*> canonicalPath out
   let folder = takeDirectory out
-  folderThere <- doesDirectoryExist folder
-  somethingThere <- doesPathExist folder
-  r <- if | same -> pure (Left (displayPath out ++ ": is the log being read; the page would overwrite it"))
-          | not folderThere -> pure (Left ("cannot write the page " ++ displayPath out ++ ": " ++ displayPath folder
-                                           ++ if somethingThere then " is not a folder" else " does not exist"))
-          | otherwise -> readLogFile logPath
+  why <- notAFolder folder
+  r <- case why of
+    _ | same -> pure (Left (displayPath out ++ ": is the log being read; the page would overwrite it"))
+    Just w   -> pure (Left ("cannot write the page " ++ displayPath out ++ ": " ++ displayPath folder ++ " " ++ w))
+    Nothing  -> readLogFile logPath
   case r of
     Left e  -> pure (Left e)
     Right l -> either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) Right   -- (it names the page)

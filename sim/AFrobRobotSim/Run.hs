@@ -1,4 +1,4 @@
-{-# LANGUAGE MultiWayIf           #-}
+{-# LANGUAGE MultiWayIf          #-}
 {-# LANGUAGE BangPatterns        #-}
 {-# LANGUAGE ScopedTypeVariables #-}
 -- |
@@ -83,7 +83,7 @@ import           Text.Printf               (printf)
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
-import           AFrobRobotSim.OutputFile  (fileIdentity)
+import           AFrobRobotSim.OutputFile  (fileIdentity, notAFolder)
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
@@ -221,10 +221,10 @@ preflight bounds opts = do
                 Left (_ :: IOException) -> pure (Just f)
                 Right target -> linkTarget (k - 1) (takeDirectory f </> target)
     folderWritable flag f dir = do
-      there <- doesDirectoryExist dir
-      if not there
-        then pure [ flag ++ " " ++ show f ++ ": the folder " ++ show dir ++ " does not exist" ]
-        else do
+      why <- notAFolder dir
+      case why of
+        Just w -> pure [ flag ++ " " ++ show f ++ ": the folder " ++ show dir ++ " " ++ w ]
+        Nothing -> do
           w <- writable <$> getPermissions dir
           exists <- doesFileExist f
           fw <- if exists then writable <$> getPermissions f else pure True
@@ -408,7 +408,7 @@ forceState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsB
 makeVideo :: SimOptions -> FilePath -> Int -> FilePath -> IO [String]
 makeVideo opts exe nFrames file = do
   code <- rawSystem exe [ "-y", "-loglevel", "error", "-framerate", show (optFps opts)
-                        , "-i", optOut opts </> "frame-%06d.ppm", "-frames:v", show nFrames
+                        , "-i", optOut opts </> framePattern, "-frames:v", show nFrames
                         , "-pix_fmt", "yuv420p", file ]
   case code of
     ExitSuccess   -> [] <$ putStrLn ("wrote " ++ displayPath file)

@@ -15,7 +15,14 @@ import           AFrobRobotSim.OutputFile
 import           TestUtil          (withTempDir)
 
 spec :: Spec
-spec = describe "writeWhole" $ do
+spec = do
+ describe "notAFolder" $
+  it "says whether a path can hold files: a folder, nothing there, or a file in its place" $ withTempDir $ \dir -> do
+    writeFile (dir </> "afile") ""
+    notAFolder dir `shouldReturn` Nothing
+    notAFolder (dir </> "none") `shouldReturn` Just "does not exist"
+    notAFolder (dir </> "afile") `shouldReturn` Just "is not a folder"
+ describe "writeWhole" $ do
   it "writes a new file, and replaces an old one, leaving nothing else in the folder" $ withTempDir $ \dir -> do
     let file = dir </> "run.svg"
     writeWhole file (`writeFile` "first")

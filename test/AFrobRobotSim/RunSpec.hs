@@ -553,6 +553,12 @@ spec = do
     it "an --out whose parent folder does not exist, not said to be for frames when there are none" $
       refused (\dir -> (quick (dir </> "a" </> "b")) { optFrames = False, optSvg = Just (dir </> "a" </> "b" </> "run.svg") })
               (\e -> "output folder (--out)" `isInfixOf` e && not ("frames" `isInfixOf` e))
+    it "an --svg whose folder is a file, said so" $ withTempDir $ \dir -> do
+      writeFile (dir </> "afile") ""
+      (_, err, r) <- captured (runSimWith (quick (dir </> "f")) { optFrames = False, optSvg = Just (dir </> "afile" </> "run.svg") }
+                                          (Just world) drive drive)
+      r `shouldBe` Left (ExitFailure 2)
+      err `shouldSatisfy` (("the folder " ++ show (dir </> "afile") ++ " is not a folder") `isInfixOf`)
     it "an --out that is a file, said so (not \"already exists\"), the file left as it was" $ withTempDir $ \dir -> do
       writeFile (dir </> "afile") "mine"
       (out, err, r) <- captured (runSimWith (quick (dir </> "afile")) (Just world) drive drive)

@@ -27,6 +27,7 @@ module AFrobRobotSim.Run.Sinks
   , progressSink
   , eraseProgress
   , framesSink
+  , framePattern
   , svgSink
   , logSink
   , logAndReplaySink
@@ -279,9 +280,14 @@ writeFrame dir k bytes = do
   BS.writeFile tmp bytes
   renameFile tmp (framePath dir k)
 
+-- | The name of frame number k, as a @printf@ (and ffmpeg) pattern:
+-- @frame-%06d.ppm@, numbered from 0.
+framePattern :: String
+framePattern = "frame-%06d.ppm"
+
 -- The file of frame number k.
 framePath :: FilePath -> Int -> FilePath
-framePath dir k = dir </> printf "frame-%06d.ppm" k
+framePath dir k = dir </> printf framePattern k
 
 -- What the run says when the folder holds frames after its last one (an
 -- earlier, longer run's): they are not this run's, and a video made from
@@ -294,4 +300,4 @@ staleFramesNote dir k =
 
 -- The temporary file of frame k, which an interrupted write leaves behind.
 frameTemp :: FilePath -> Int -> FilePath
-frameTemp dir k = dir </> printf "frame-%06d.ppm.tmp" k
+frameTemp dir k = framePath dir k ++ ".tmp"

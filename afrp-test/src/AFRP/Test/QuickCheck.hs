@@ -213,9 +213,8 @@ shrinkStreamIn range len shrinkValue s = filter lengthKept fewer ++ filter reach
       [take (n `div` 2) s | n >= 4] ++ [take (n - 1) s | n >= 2]
       ++ [ removeAt k s | (k, (dt, _), (dt', _)) <- zip3 [1 .. n - 2] (drop 1 s) (drop 2 s), inRange (dt + dt') ]
     lengthKept s' = case len of
-      Nothing       -> True
       Just (Left _) -> False
-      Just (Right _) -> reaches s'
+      _             -> reaches s'
     -- (a rounded time step may end the stream short of t; sums are
     -- compared with the slack of 'timeSlack')
     reaches s' = case len of
