@@ -223,7 +223,7 @@ preflight bounds opts = do
     folderWritable flag f dir = do
       why <- notAFolder dir
       case why of
-        Just w -> pure [ flag ++ " " ++ show f ++ ": the folder " ++ show dir ++ " " ++ w ]
+        Just w -> pure [ flag ++ " " ++ show f ++ ": its folder, " ++ show dir ++ ", " ++ w ]
         Nothing -> do
           w <- writable <$> getPermissions dir
           exists <- doesFileExist f

@@ -558,7 +558,7 @@ spec = do
       (_, err, r) <- captured (runSimWith (quick (dir </> "f")) { optFrames = False, optSvg = Just (dir </> "afile" </> "run.svg") }
                                           (Just world) drive drive)
       r `shouldBe` Left (ExitFailure 2)
-      err `shouldSatisfy` (("the folder " ++ show (dir </> "afile") ++ " is not a folder") `isInfixOf`)
+      err `shouldSatisfy` (("run.svg\": its folder, " ++ show (dir </> "afile") ++ ", is not a folder") `isInfixOf`)
     it "an --out that is a file, said so (not \"already exists\"), the file left as it was" $ withTempDir $ \dir -> do
       writeFile (dir </> "afile") "mine"
       (out, err, r) <- captured (runSimWith (quick (dir </> "afile")) (Just world) drive drive)
