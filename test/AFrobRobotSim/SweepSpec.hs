@@ -587,3 +587,34 @@ spec = do
       table <- merged dir [results]
       table `shouldSatisfy` ("(6 runs, 4 failed)" `isInfixOf`)
       listDirectory (dir </> "tmp") `shouldReturn` []
+
+    it "interrupted, leaves no temporary folder even of a run that GNU parallel has to kill (one slow to end on SIGTERM)" $ withTempDir $ \dir -> do
+      requireParallel
+      sweep <- script "sweep"
+      createDirectory (dir </> "tmp")
+      createDirectory (dir </> "started")
+      -- a program that says it has started, then takes 2 s to end on
+      -- SIGTERM: GNU parallel sends SIGKILL 350 ms after its SIGTERM
+      let prog = dir </> "slow"
+      writeFile prog (unlines [ "#!/bin/bash"
+                              , "trap 'sleep 2; exit 143' TERM"
+                              , ": > '" ++ dir </> "started" ++ "'/$$"
+                              , "sleep 1000 & wait" ])
+      p <- getPermissions prog
+      setPermissions prog (setOwnerExecutable True p)
+      writeFile (dir </> "jobs") "--seed 1\n--seed 2\n"
+      environment <- filter ((/= "TMPDIR") . fst) <$> getEnvironment
+      let results = dir </> "r.jsonl"
+      (_, _, _, ph) <- createProcess (proc "bash" [sweep, "-j", "2", "--jobs", dir </> "jobs", prog, results])
+        { env = Just (("TMPDIR", dir </> "tmp") : environment), create_group = True, std_err = CreatePipe }
+      let waitStarted :: Int -> IO ()
+          waitStarted k = do
+            n <- length <$> listDirectory (dir </> "started")
+            unless (n >= 2 || k <= 0) (threadDelay 100000 >> waitStarted (k - 1))
+      waitStarted 600
+      Just pid <- getPid ph
+      _ <- readProcess "kill" ["-TERM", "--", "-" ++ show pid] ""
+      code <- timeout 60000000 (waitForProcess ph)
+      code `shouldBe` Just (ExitFailure 143)
+      map (field ["seed"]) . map parsed . lines <$> readFile' results `shouldReturn` map JNumber [1, 2]
+      listDirectory (dir </> "tmp") `shouldReturn` []
