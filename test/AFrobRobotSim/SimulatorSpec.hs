@@ -85,6 +85,10 @@ spec = do
       failsWith (0 / 0)
       failsWith (1 / 0)
       failsWith (-1 / 0)
+    it "shows a controller's failure as the sentence the run prints, not as a record" $ do
+      let e = ControllerError "SimbotB" 3 2.5 (toException (ErrorCall "boom"))
+      show e `shouldBe` "the controller of SimbotB 3 failed at t = 2.500 s: boom"
+      displayException e `shouldBe` show e
 
   describe "what a controller's messages and exceptions hold, evaluated in its step" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0]

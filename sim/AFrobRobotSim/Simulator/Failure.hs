@@ -34,16 +34,29 @@ import           AFrobRobotSim.SpatialIndex (finite)
 
 -- | A controller failed while the simulation ran: it threw an exception,
 -- or gave a wheel command with a NaN or infinite speed.
+--
+-- 'show' and 'displayException' give the same sentence, which is what a
+-- test framework prints for an uncaught one:
+--
+-- > the controller of SimbotA 1 failed at t = 2.500 s: Prelude.head: empty list
 data ControllerError = ControllerError
   { ceRobotType :: RobotType
   , ceRobotId   :: RobotId
   , ceTime      :: Time
   , ceCause     :: SomeException
-  } deriving (Show)
+  }
+
+-- | The sentence of 'displayException' (not a record: an uncaught
+-- failure in a test reads as the run's message does).
+instance Show ControllerError where
+  showsPrec _ e = showString (describe e)
 
 instance Exception ControllerError where
-  displayException e = printf "the controller of %s %d failed at t = %.3f s: %s"
-    (ceRobotType e) (ceRobotId e) (ceTime e) (displayException (ceCause e))
+  displayException = describe
+
+describe :: ControllerError -> String
+describe e = printf "the controller of %s %d failed at t = %.3f s: %s"
+  (ceRobotType e) (ceRobotId e) (ceTime e) (displayException (ceCause e))
 
 -- | @blaming f v@ is @v@, with an exception that its evaluation raises
 -- turned into @f e@: 'Control.Exception.mapException', but leaving
