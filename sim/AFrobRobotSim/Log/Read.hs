@@ -39,8 +39,8 @@ data RunLog = RunLog
 -- at most one summary, last; the header's dt and fps positive, and each
 -- frame with as many robots as the header lists (the replay page pairs
 -- them by position). Errors say @line N: ...@ (or @line N,
--- column C: ...@ for a line that is not JSON). Blank lines are
--- ignored.
+-- column C: ...@ for a line that is not JSON); one about the first line
+-- asks whether the text is a run log at all. Blank lines are ignored.
 readLog :: String -> Either String RunLog
 readLog = readLogAt (\i mc -> "line " ++ show i ++ maybe "" (\c -> ", column " ++ show c) mc ++ ": ")
 
@@ -51,7 +51,7 @@ readLogAt :: (Int -> Maybe Int -> String) -> String -> Either String RunLog
 readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all (`elem` " \t\r") l) ] of
   [] -> Left (loc 1 Nothing ++ "an empty log (expected a header line)")
   (i0, l0) : rest -> do
-    h <- at i0 (decodeLogLine l0) >>= \ln -> case ln of
+    h <- either (Left . (++ notALogHint)) Right $ at i0 (decodeLogLine l0) >>= \ln -> case ln of
       LineHeader h -> Right h
       _            -> Left (loc i0 Nothing ++ "expected the header line first")
     at i0 (checkVersion h)
@@ -71,6 +71,8 @@ readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not
           Left ("the header's dt and fps must be positive numbers, found " ++ show (lhDt h) ++ " and "
                 ++ show (lhFps h))
       | otherwise = Right ()
+    -- (a first line that is no header: most often a file that is not a log)
+    notALogHint = " (is it a run log? a run writes one with --log FILE.jsonl)"
     positive x = x > 0 && not (isInfinite x)   -- (NaN, read from null, is not > 0)
     finite x = not (isNaN x || isInfinite x)
     go h acc [] = Right (RunLog h (reverse acc) Nothing)

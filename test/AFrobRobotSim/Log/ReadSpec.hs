@@ -4,7 +4,7 @@
 module AFrobRobotSim.Log.ReadSpec (spec) where
 
 import           Data.Char                (isPrint)
-import           Data.List                (isInfixOf, isPrefixOf)
+import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf)
 import           System.Directory         (getTemporaryDirectory, removeFile)
 import           System.FilePath          ((</>))
 import           System.IO                (hClose, openTempFile)
@@ -29,6 +29,14 @@ spec = do
     readLog "" `shouldSatisfy` either ("line 1" `isInfixOf`) (const False)
     readLog (unlines (take 3 (lines fixtureLogText) ++ ["{\"kind\": \"frame\""]))
       `shouldSatisfy` either ("line 4, column 17:" `isPrefixOf`) (const False)
+  it "asks whether a text is a run log when its first line is no header, and only then" $ do
+    let hint = " (is it a run log? a run writes one with --log FILE.jsonl)"
+        ls = lines fixtureLogText
+    readLog "# a README\n" `shouldBe` Left ("line 1, column 1: expected a JSON value, found '#'" ++ hint)
+    readLog "{\"a\": 1}\n" `shouldSatisfy` either (\e -> hint `isSuffixOf` e && "line 1: " `isPrefixOf` e) (const False)
+    readLog (unlines (drop 1 ls)) `shouldBe` Left ("line 1: expected the header line first" ++ hint)
+    readLog (unlines (take 3 ls ++ ["{\"kind\": \"frame\""]))
+      `shouldSatisfy` either (not . (hint `isSuffixOf`)) (const False)
   it "refuses a frame whose robots are not the header's, and a header whose dt or fps is not positive" $ do
     let ls = lines fixtureLogText
         h = rlHeader fixtureLog
