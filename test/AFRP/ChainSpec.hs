@@ -12,7 +12,7 @@ import           Test.QuickCheck       hiding (within)
 
 import           AFRP                  hiding (forAll)
 import           AFRP.Internal.SF      (Node (..), SF (..), isStepSF, stepN, stepSF)
-import           TestUtil              (genSamples, runDt, runSamples, withinTwoSeconds)
+import           TestUtil              (genSamples, runDt, runSamples, withoutHanging)
 
 -- | A stage of a random chain.
 data Stage = SIntegral | SPre Double | SArr Int | SInitIntegral Double
@@ -172,11 +172,11 @@ spec = do
       s <- evaluate (sum outs)
       (length outs, isNaN s) `shouldBe` (10, False)
     it "closes a loop whose fed-back value it does not need at the instant" $
-      withinTwoSeconds (runDt 0.1 (loop (second (foldr1 (>>>) [integral, arr (* 2), integral, iPre 1])
+      withoutHanging (runDt 0.1 (loop (second (foldr1 (>>>) [integral, arr (* 2), integral, iPre 1])
                                >>> arr (\(a, _) -> (a, a)))) inputs)
              inputs
     it "feeds back through its own delay as the nodes one by one do" $
-      withinTwoSeconds (runDt 0.1 (loop (arr (uncurry (+)) >>> foldr1 (>>>) [integral, integral, iPre 0]
+      withoutHanging (runDt 0.1 (loop (arr (uncurry (+)) >>> foldr1 (>>>) [integral, integral, iPre 0]
                                >>> arr (\y -> (y, y)))) inputs)
              (runDt 0.1 (loop (arr (uncurry (+)) >>> foldr1 (>>>) (map opaque [integral, integral, iPre 0])
                                >>> arr (\y -> (y, y)))) inputs)
@@ -190,7 +190,7 @@ spec = do
     -- (the pair is made by a function that looks at the value fed back:
     -- taking it apart at once would demand that value)
     it "does not evaluate its input pair: it closes a loop (fixed)" $
-      withinTwoSeconds (runDt 0.1 (loop (arr (\(a, c) -> (a, c)) >>> second (arr (\c -> if c > 0 then (c, c) else (c, negate c)) >>> (integral *** integral))
+      withoutHanging (runDt 0.1 (loop (arr (\(a, c) -> (a, c)) >>> second (arr (\c -> if c > 0 then (c, c) else (c, negate c)) >>> (integral *** integral))
                                >>> arr (\(a, _) -> (a, a)))) inputs)
              inputs
   describe "arr p >>> (integral *** integral) at Double, one node" $ do
@@ -234,7 +234,7 @@ spec = do
       s <- evaluate (sum outs)
       (length outs, isNaN s) `shouldBe` (10, False)
     it "closes a loop whose fed-back value it does not need at the instant (fixed)" $
-      withinTwoSeconds (runDt 0.1 (loop (second (arr (\c -> (c, c + 1)) >>> (integral *** integral)
+      withoutHanging (runDt 0.1 (loop (second (arr (\c -> (c, c + 1)) >>> (integral *** integral)
                                        >>> arr (uncurry (+)))
                                >>> arr (\(a, _) -> (a, a)))) inputs)
              inputs

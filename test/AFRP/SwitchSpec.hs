@@ -12,11 +12,12 @@ import           Test.QuickCheck
 import           AFRP hiding (forAll)
 import           TestUtil
 
--- | Fully evaluate a list of numbers within a few seconds; 'Nothing' when
+-- | Fully evaluate a list of numbers within 30 s (a guard against a hang,
+-- generous for a loaded machine); 'Nothing' when
 -- it diverges (a @<<loop>>@ also counts as a failure, through the
 -- exception it raises).
 forceWithin :: [Double] -> IO (Maybe [Double])
-forceWithin xs = timeout 5000000 (evaluate (sum xs) >> pure xs)
+forceWithin xs = timeout 30000000 (evaluate (sum xs) >> pure xs)
 
 -- | The outputs must be computed (no divergence) and equal the expected
 -- list.

@@ -198,10 +198,11 @@ spec = do
             depthsAfter  = map (maxPenetration arena) (stepBalls 0.01 arena [] bs)
         in counterexample (show (depthsBefore, depthsAfter)) $
              and (zipWith (\b a -> a <= max b 0 + 1e-9) depthsBefore depthsAfter)
-    it "simulates 1000 balls in a crowd faster than real time" $ do
-      -- 0.5 s of simulated time; it takes about 0.05 s
-      r <- timeout 500000 (evaluate (runBallBench 1000 50))
-      r `shouldSatisfy` maybe False (not . isNaN)
+    it "simulates 1000 balls in a crowd to finite positions (its speed: bench/, afrp-bench --balls)" $ do
+      -- (0.5 s of simulated time, about 0.05 s of work; the minute is a
+      -- guard against a hang on a loaded machine, not a measure of speed)
+      r <- timeout 60000000 (evaluate (runBallBench 1000 50))
+      r `shouldSatisfy` maybe False (\v -> not (isNaN v || isInfinite v))
     it "moves the balls exactly as testing every box, robot and pair of balls does" $
       property $ forAll genWorld $ \w -> forAll genDt $ \dt ->
         forAll (genRobots (halfSide w)) $ \rs -> forAll (genBalls (halfSide w)) $ \bs ->

@@ -16,6 +16,7 @@ import           AFrobRobotSim.JSON
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.LogFixture
 import           AFrobRobotSim.Replay
+import           TestUtil                 (withTMPDIR, withTempDir)
 
 occurrences :: String -> String -> Int
 occurrences needle hay = length (filter (needle `isPrefixOf`) (tails hay))
@@ -162,8 +163,10 @@ spec = do
         `shouldBe` Right runLog
 
   describe "ReplayRecorder" $
-    it "records, step by step, the same page as replayPage of the pure log, through a temporary file it removes (fixed)" $ do
-      tmp <- getTemporaryDirectory
+    it "records, step by step, the same page as replayPage of the pure log, through a temporary file it removes (fixed)" $
+     withTempDir $ \tmp -> withTMPDIR tmp $ do
+      -- (TMPDIR is a folder of this test's own: another run's spool file
+      -- in the shared one would change the counts)
       let spools = length . filter (\f -> "afrp-replay" `isPrefixOf` f && ".frames" `isSuffixOf` f) <$> listDirectory tmp
       spoolsBefore <- spools
       rec <- newReplayRecorder fixtureConfig

@@ -9,8 +9,8 @@ import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
 import           Control.Concurrent  (threadDelay)
 import           System.Process      (CreateProcess (..), ProcessHandle, StdStream (..), createProcess,
-                                      getProcessExitCode, interruptProcessGroupOf, proc,
-                                      readCreateProcessWithExitCode,
+                                      getPid, getProcessExitCode, interruptProcessGroupOf, proc,
+                                      readCreateProcessWithExitCode, readProcessWithExitCode,
                                       terminateProcess, waitForProcess)
 import           System.Posix.Files  (createLink)
 import           System.Timeout      (timeout)
@@ -156,6 +156,17 @@ stops =
   , ("Ctrl-C", interruptProcessGroupOf, 130, 2)
   , ("SIGTERM", terminateProcess, 143, 1)
   , ("SIGTERM", terminateProcess, 143, 2) ]
+
+-- A child that did not get as far as the test waits for (its frames, a
+-- minute after it started): stopped (SIGKILL, so that nothing it does on
+-- a gentler signal counts), and the test failed saying so, rather than
+-- sending the signal under test too early.
+stopAndFail :: ProcessHandle -> IO ()
+stopAndFail ph = do
+  pid <- getPid ph
+  forM_ pid $ \p -> readProcessWithExitCode "kill" ["-KILL", show p] "" >> pure ()
+  _ <- waitForProcess ph
+  expectationFailure "the child wrote fewer than 20 frames in a minute"
 
 spec :: Spec
 spec = do
@@ -307,7 +318,9 @@ spec = do
         , std_out = NoStream, std_err = Inherit }
       let waitForFrames k = do
             names <- either (\(_ :: IOError) -> []) id <$> try (listDirectory (dir </> "f"))
-            if length names >= 20 || k > (200 :: Int) then pure () else threadDelay 50000 >> waitForFrames (k + 1)
+            if length names >= 20 then pure ()
+            else if k > (1200 :: Int) then stopAndFail ph
+            else threadDelay 50000 >> waitForFrames (k + 1)
       waitForFrames 0
       terminateProcess ph
       threadDelay 500000
@@ -324,7 +337,9 @@ spec = do
         , std_out = CreatePipe, std_err = Inherit }
       let waitForFrames k = do
             names <- listDirectory (dir </> "f") `orElse` []
-            if length names >= 20 || k > (200 :: Int) then pure () else threadDelay 50000 >> waitForFrames (k + 1)
+            if length names >= 20 then pure ()
+            else if k > (1200 :: Int) then stopAndFail ph
+            else threadDelay 50000 >> waitForFrames (k + 1)
           orElse act d = either (\(_ :: IOError) -> d) id <$> try act
       waitForFrames 0
       send ph

@@ -570,7 +570,9 @@ spec = do
       let waitLines :: Int -> IO ()
           waitLines k = do
             n <- length . lines <$> (doesFileExist results >>= \e -> if e then readFile' results else pure "")
-            unless (n >= 2 || k <= 0) (threadDelay 100000 >> waitLines (k - 1))
+            unless (n >= 2) $
+              if k <= 0 then expectationFailure "the first two runs did not end within a minute"
+              else threadDelay 100000 >> waitLines (k - 1)
       waitLines 600
       Just pid <- getPid ph
       _ <- readProcess "kill" ["-TERM", "--", "-" ++ show pid] ""
@@ -605,16 +607,22 @@ spec = do
       writeFile (dir </> "jobs") "--seed 1\n--seed 2\n"
       environment <- filter ((/= "TMPDIR") . fst) <$> getEnvironment
       let results = dir </> "r.jsonl"
-      (_, _, _, ph) <- createProcess (proc "bash" [sweep, "-j", "2", "--jobs", dir </> "jobs", prog, results])
+      -- (its standard error read to the end: a pipe whose reading end was
+      -- dropped would kill the sweep's last message with SIGPIPE)
+      (_, _, Just errH, ph) <- createProcess (proc "bash" [sweep, "-j", "2", "--jobs", dir </> "jobs", prog, results])
         { env = Just (("TMPDIR", dir </> "tmp") : environment), create_group = True, std_err = CreatePipe }
       let waitStarted :: Int -> IO ()
           waitStarted k = do
             n <- length <$> listDirectory (dir </> "started")
-            unless (n >= 2 || k <= 0) (threadDelay 100000 >> waitStarted (k - 1))
+            unless (n >= 2) $
+              if k <= 0 then expectationFailure "the two runs did not start within a minute"
+              else threadDelay 100000 >> waitStarted (k - 1)
       waitStarted 600
       Just pid <- getPid ph
       _ <- readProcess "kill" ["-TERM", "--", "-" ++ show pid] ""
       code <- timeout 60000000 (waitForProcess ph)
+      err <- hGetContents errH
       code `shouldBe` Just (ExitFailure 143)
+      err `shouldSatisfy` ("interrupted (SIGTERM): 0 of 2 runs ended" `isInfixOf`)
       map (field ["seed"]) . map parsed . lines <$> readFile' results `shouldReturn` map JNumber [1, 2]
       listDirectory (dir </> "tmp") `shouldReturn` []

@@ -95,9 +95,11 @@ spec = do
       length ps `shouldBe` maxProblems + 1
       last ps `shouldBe` ("... and " ++ show (300 * 299 `div` 2 - maxProblems) ++ " more problems")
       sum (map length ps) `shouldSatisfy` (< 3000)
-    it "checks a pile of 5000 balls and one of 5000 blocks within a second (they may overlap their own kind)" $ do
+    it "checks a pile of 5000 balls and one of 5000 blocks, not pair by pair (they may overlap their own kind)" $ do
+      -- (about 0.1 s; pair by pair it took minutes: the bound is that
+      -- guard, generous for a loaded machine, not a measure of speed)
       let piles = OTSize 10 10 : replicate 5000 (OTBall (Point2 (-2) (-2))) ++ replicate 5000 (OTBlock (Point2 2 2))
-      r <- timeout 1000000 (evaluate (length (problems piles)))
+      r <- timeout 30000000 (evaluate (length (problems piles)))
       r `shouldBe` Just 0
     it "names both robots that share an id" $
       problems [OTSimbotB 2 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 0) 0]

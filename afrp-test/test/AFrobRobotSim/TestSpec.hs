@@ -4,7 +4,9 @@ module AFrobRobotSim.TestSpec (spec) where
 
 import           Control.Exception     (evaluate)
 import           Data.List             (isInfixOf, isPrefixOf, tails)
-import           System.Directory      (getTemporaryDirectory, removeFile)
+import           Control.Exception     (try)
+import           System.Directory      (createDirectory, getTemporaryDirectory, removeDirectoryRecursive, removeFile)
+import           System.IO.Error       (isAlreadyExistsError)
 import           System.FilePath       ((</>))
 import           Test.Hspec            hiding (after)
 import           Test.QuickCheck
@@ -109,7 +111,26 @@ ballsSpeedUpOnlyOnContact dt world = Always $ SP $ proc ws -> do
 
 spec :: Spec
 spec = do
-  tmp <- runIO getTemporaryDirectory
+  -- (the failing worlds and pages the properties write go into a folder
+  -- of this run's own, not under fixed names in the shared TMPDIR)
+  tmp <- runIO privateTempDir
+  afterAll_ (removeDirectoryRecursive tmp) (specIn tmp)
+
+-- A new, empty folder in the temporary directory.
+privateTempDir :: IO FilePath
+privateTempDir = do
+  tmp <- getTemporaryDirectory
+  let go k = do
+        let d = tmp </> ("afrp-test-spec-" ++ show (k :: Int))
+        r <- try (createDirectory d)
+        case r of
+          Right () -> pure d
+          Left e | isAlreadyExistsError e && k < 100000 -> go (k + 1)
+                 | otherwise -> ioError e
+  go 0
+
+specIn :: FilePath -> Spec
+specIn tmp = do
   it "random worlds are valid (property)" $
     forAll (genWorld defaultWorldMix notesBounds) $ \w ->
       counterexample (renderWorld w) (validateWorld w === Right ())
