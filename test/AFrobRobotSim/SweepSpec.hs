@@ -73,6 +73,34 @@ stopsForParam param message = withTempDir $ \dir -> do
   length (lines err) `shouldBe` 1
   line `shouldBe` ""
 
+-- @scripts/sweep -j 2 --jobs DIR/jobs PROG DIR/r.jsonl@, with @TMPDIR@
+-- set to @DIR/tmp@ (made here), sent SIGTERM to its process group (as
+-- Slurm's time limit does) once @ready@ holds: its exit code ('Nothing' if
+-- it had not ended a minute later) and its standard error, read to the
+-- end (a pipe whose reading end was dropped would kill the sweep's last
+-- message with SIGPIPE). If @ready@ does not hold within a minute, the
+-- sweep is killed and the test fails, saying @what@ within a minute.
+sweepInterrupted :: FilePath -> FilePath -> String -> IO Bool -> IO (Maybe ExitCode, String)
+sweepInterrupted dir prog what ready = do
+  sweep <- script "sweep"
+  createDirectory (dir </> "tmp")
+  environment <- filter ((/= "TMPDIR") . fst) <$> getEnvironment
+  (_, _, Just errH, ph) <- createProcess (proc "bash" [sweep, "-j", "2", "--jobs", dir </> "jobs", prog, dir </> "r.jsonl"])
+    { env = Just (("TMPDIR", dir </> "tmp") : environment), create_group = True, std_err = CreatePipe }
+  Just pid <- getPid ph
+  let signalGroup s = readProcess "kill" ["-" ++ s, "--", "-" ++ show pid] "" >> pure ()
+      waitReady :: Int -> IO ()
+      waitReady k = do
+        ok <- ready
+        unless ok $
+          if k <= 0 then signalGroup "KILL" >> expectationFailure (what ++ " within a minute")
+          else threadDelay 100000 >> waitReady (k - 1)
+  waitReady 600
+  signalGroup "TERM"
+  code <- timeout 60000000 (waitForProcess ph)
+  err <- hGetContents errH
+  length err `seq` pure (code, err)
+
 -- A script in @dir@ that starts this test binary as the given child.
 childScript :: FilePath -> String -> IO FilePath
 childScript dir what = do
@@ -558,26 +586,12 @@ spec = do
     it "interrupted (SIGTERM to its process group, as at Slurm's time limit): a line for every run, a message, no temporary file" $ withTempDir $ \dir -> do
       requireParallel
       prog <- childScript dir "program"
-      sweep <- script "sweep"
-      createDirectory (dir </> "tmp")
       -- two slots: seeds 1 and 2 end, 3 and 4 never do, 5 and 6 never start
       writeFile (dir </> "jobs") (unlines [ "--seed " ++ show k ++ " --seconds " ++ (if k `elem` [3, 4] then "100000" else "1")
                                           | k <- [1 .. 6 :: Int] ])
-      environment <- filter ((/= "TMPDIR") . fst) <$> getEnvironment
       let results = dir </> "r.jsonl"
-      (_, _, Just errH, ph) <- createProcess (proc "bash" [sweep, "-j", "2", "--jobs", dir </> "jobs", prog, results])
-        { env = Just (("TMPDIR", dir </> "tmp") : environment), create_group = True, std_err = CreatePipe }
-      let waitLines :: Int -> IO ()
-          waitLines k = do
-            n <- length . lines <$> (doesFileExist results >>= \e -> if e then readFile' results else pure "")
-            unless (n >= 2) $
-              if k <= 0 then expectationFailure "the first two runs did not end within a minute"
-              else threadDelay 100000 >> waitLines (k - 1)
-      waitLines 600
-      Just pid <- getPid ph
-      _ <- readProcess "kill" ["-TERM", "--", "-" ++ show pid] ""
-      code <- timeout 60000000 (waitForProcess ph)
-      err <- hGetContents errH
+      (code, err) <- sweepInterrupted dir prog "the first two runs did not end" $
+        (>= 2) . length . lines <$> (doesFileExist results >>= \e -> if e then readFile' results else pure "")
       code `shouldBe` Just (ExitFailure 143)
       err `shouldSatisfy` ("interrupted (SIGTERM): 2 of 6 runs ended" `isInfixOf`)
       rs <- map parsed . lines <$> readFile' results
@@ -592,12 +606,11 @@ spec = do
 
     it "interrupted, leaves no temporary folder even of a run that GNU parallel has to kill (one slow to end on SIGTERM)" $ withTempDir $ \dir -> do
       requireParallel
-      sweep <- script "sweep"
-      createDirectory (dir </> "tmp")
       createDirectory (dir </> "started")
       -- a program that says it has started, then takes 2 s to end on
       -- SIGTERM: GNU parallel sends SIGKILL 350 ms after its SIGTERM
       let prog = dir </> "slow"
+          results = dir </> "r.jsonl"
       writeFile prog (unlines [ "#!/bin/bash"
                               , "trap 'sleep 2; exit 143' TERM"
                               , ": > '" ++ dir </> "started" ++ "'/$$"
@@ -605,23 +618,8 @@ spec = do
       p <- getPermissions prog
       setPermissions prog (setOwnerExecutable True p)
       writeFile (dir </> "jobs") "--seed 1\n--seed 2\n"
-      environment <- filter ((/= "TMPDIR") . fst) <$> getEnvironment
-      let results = dir </> "r.jsonl"
-      -- (its standard error read to the end: a pipe whose reading end was
-      -- dropped would kill the sweep's last message with SIGPIPE)
-      (_, _, Just errH, ph) <- createProcess (proc "bash" [sweep, "-j", "2", "--jobs", dir </> "jobs", prog, results])
-        { env = Just (("TMPDIR", dir </> "tmp") : environment), create_group = True, std_err = CreatePipe }
-      let waitStarted :: Int -> IO ()
-          waitStarted k = do
-            n <- length <$> listDirectory (dir </> "started")
-            unless (n >= 2) $
-              if k <= 0 then expectationFailure "the two runs did not start within a minute"
-              else threadDelay 100000 >> waitStarted (k - 1)
-      waitStarted 600
-      Just pid <- getPid ph
-      _ <- readProcess "kill" ["-TERM", "--", "-" ++ show pid] ""
-      code <- timeout 60000000 (waitForProcess ph)
-      err <- hGetContents errH
+      (code, err) <- sweepInterrupted dir prog "the two runs did not start" $
+        (>= 2) . length <$> listDirectory (dir </> "started")
       code `shouldBe` Just (ExitFailure 143)
       err `shouldSatisfy` ("interrupted (SIGTERM): 0 of 2 runs ended" `isInfixOf`)
       map (field ["seed"]) . map parsed . lines <$> readFile' results `shouldReturn` map JNumber [1, 2]
