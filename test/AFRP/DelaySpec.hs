@@ -23,10 +23,11 @@ errorMentioning s (ErrorCallWithLocation msg _) = s `isInfixOf` msg
 bottomWhereNothing :: SF a b -> SF (Maybe a) b
 bottomWhereNothing sf = arr (fromMaybe (error "the current input was evaluated")) >>> sf
 
--- | The outputs, fully evaluated within 10 seconds, or 'Nothing': a
--- feedback loop that diverges fails the test instead of hanging it.
+-- | The outputs, fully evaluated within 30 seconds (a hang guard, generous
+-- for a loaded machine), or 'Nothing': a feedback loop that diverges
+-- fails the test instead of hanging it.
 finishing :: Show b => [b] -> IO (Maybe [b])
-finishing xs = timeout 10000000 (evaluate (length (show xs)) >> pure xs)
+finishing xs = timeout 30000000 (evaluate (length (show xs)) >> pure xs)
 
 -- | A counter closed through 'iPre' with 'loop': 0, 1, 2, ...
 counter :: SF () Int

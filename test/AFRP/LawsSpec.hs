@@ -55,7 +55,7 @@ instance Close a => Close [a] where
 (lhs =~= rhs) xs =
   let ys = runSamples lhs xs
       zs = runSamples rhs xs
-  in within 5000000 (counterexample ("lhs: " ++ show ys ++ "\nrhs: " ++ show zs) (close ys zs))
+  in within 30000000 (counterexample ("lhs: " ++ show ys ++ "\nrhs: " ++ show zs) (close ys zs))
 
 infix 4 =~=
 

@@ -90,11 +90,11 @@ instance Close a => Close [a] where
 agree :: (Eq b, Show b) => SF a b -> R a b -> [(DTime, a)] -> Property
 agree sf r xs = guarded (runSamples sf xs === runR r xs)
 
--- | A run that does not finish within 5 s fails instead of hanging the
+-- | A run that does not finish within 30 s fails instead of hanging the
 -- suite (a signal function stuck on its own value, @<<loop>>@, is not
 -- always detected while other threads are alive).
 guarded :: Testable p => p -> Property
-guarded = within 5000000
+guarded = within 30000000
 
 -- | The outputs agree within the tolerance of 'approx'.
 agreeApprox :: Close b => SF a b -> R a b -> [(DTime, a)] -> Property

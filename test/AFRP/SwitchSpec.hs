@@ -12,10 +12,10 @@ import           Test.QuickCheck
 import           AFRP hiding (forAll)
 import           TestUtil
 
--- | Fully evaluate a list of numbers within 30 s (a guard against a hang,
--- generous for a loaded machine); 'Nothing' when
--- it diverges (a @<<loop>>@ also counts as a failure, through the
--- exception it raises).
+-- | Fully evaluate a list of numbers; 'Nothing' when it diverges (no
+-- result within 30 s: a guard against a hang, generous for a loaded
+-- machine). A @<<loop>>@ also counts as a failure, through the exception
+-- it raises.
 forceWithin :: [Double] -> IO (Maybe [Double])
 forceWithin xs = timeout 30000000 (evaluate (sum xs) >> pure xs)
 
@@ -25,7 +25,7 @@ shouldTerminateWith :: [Double] -> [Double] -> Expectation
 shouldTerminateWith xs expected = do
   r <- forceWithin xs
   case r of
-    Nothing  -> expectationFailure "diverged (no result within 5 s)"
+    Nothing  -> expectationFailure "diverged (no result within 30 s)"
     Just ys  -> ys `shouldApproxList` expected
 
 -- | A switching event when a number reaches a threshold (rising edge).

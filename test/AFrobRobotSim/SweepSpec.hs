@@ -10,6 +10,7 @@ import           Control.Monad       (forM, forM_, unless)
 import qualified Data.ByteString     as B
 import           Data.Int            (Int8)
 import qualified Data.Map            as M
+import           Data.Maybe          (fromMaybe, isJust)
 import           Data.Ratio          (Ratio, (%))
 import qualified Data.Set            as S
 import           Data.List           (isInfixOf, isPrefixOf, sort)
@@ -76,10 +77,12 @@ stopsForParam param message = withTempDir $ \dir -> do
 -- @scripts/sweep -j 2 --jobs DIR/jobs PROG DIR/r.jsonl@, with @TMPDIR@
 -- set to @DIR/tmp@ (made here), sent SIGTERM to its process group (as
 -- Slurm's time limit does) once @ready@ holds: its exit code ('Nothing' if
--- it had not ended a minute later) and its standard error, read to the
--- end (a pipe whose reading end was dropped would kill the sweep's last
--- message with SIGPIPE). If @ready@ does not hold within a minute, the
--- sweep is killed and the test fails, saying @what@ within a minute.
+-- it had not ended a minute later; it is then killed) and its standard
+-- error, read to the end once it has ended (a pipe whose reading end was
+-- dropped would kill the sweep's last message with SIGPIPE). If @ready@
+-- does not hold within a minute, the sweep is stopped (SIGTERM, which
+-- stops its runs; SIGKILL if it has not ended ten seconds later) and the
+-- test fails, saying @what@ within a minute.
 sweepInterrupted :: FilePath -> FilePath -> String -> IO Bool -> IO (Maybe ExitCode, String)
 sweepInterrupted dir prog what ready = do
   sweep <- script "sweep"
@@ -89,17 +92,22 @@ sweepInterrupted dir prog what ready = do
     { env = Just (("TMPDIR", dir </> "tmp") : environment), create_group = True, std_err = CreatePipe }
   Just pid <- getPid ph
   let signalGroup s = readProcess "kill" ["-" ++ s, "--", "-" ++ show pid] "" >> pure ()
+      stop = do
+        signalGroup "TERM"
+        ended <- timeout 10000000 (waitForProcess ph)
+        unless (isJust ended) (signalGroup "KILL" >> () <$ waitForProcess ph)
       waitReady :: Int -> IO ()
       waitReady k = do
         ok <- ready
         unless ok $
-          if k <= 0 then signalGroup "KILL" >> expectationFailure (what ++ " within a minute")
+          if k <= 0 then stop >> expectationFailure (what ++ " within a minute")
           else threadDelay 100000 >> waitReady (k - 1)
   waitReady 600
   signalGroup "TERM"
   code <- timeout 60000000 (waitForProcess ph)
-  err <- hGetContents errH
-  length err `seq` pure (code, err)
+  unless (isJust code) (signalGroup "KILL" >> () <$ waitForProcess ph)
+  err <- fromMaybe "" <$> timeout 10000000 (hGetContents errH >>= \e -> length e `seq` pure e)
+  pure (code, err)
 
 -- A script in @dir@ that starts this test binary as the given child.
 childScript :: FilePath -> String -> IO FilePath

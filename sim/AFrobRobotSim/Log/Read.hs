@@ -39,8 +39,9 @@ data RunLog = RunLog
 -- at most one summary, last; the header's dt and fps positive, and each
 -- frame with as many robots as the header lists (the replay page pairs
 -- them by position). Errors say @line N: ...@ (or @line N,
--- column C: ...@ for a line that is not JSON); one about the first line
--- asks whether the text is a run log at all. Blank lines are ignored.
+-- column C: ...@ for a line that is not JSON); one saying that the first
+-- line is not a log header (not JSON, or another kind of line) asks
+-- whether the text is a run log at all. Blank lines are ignored.
 readLog :: String -> Either String RunLog
 readLog = readLogAt (\i mc -> "line " ++ show i ++ maybe "" (\c -> ", column " ++ show c) mc ++ ": ")
 

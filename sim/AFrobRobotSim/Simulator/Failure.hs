@@ -47,7 +47,9 @@ data ControllerError = ControllerError
   }
 
 -- | The sentence of 'displayException' (not a record: an uncaught
--- failure in a test reads as the run's message does).
+-- failure in a test reads as the run's message does), with no
+-- parentheses whatever the precedence: @show (Just e)@ is
+-- @Just the controller of ...@.
 instance Show ControllerError where
   showsPrec _ e = showString (describe e)
 
