@@ -110,12 +110,14 @@ ballsSpeedUpOnlyOnContact dt world = Always $ SP $ proc ws -> do
 
 spec :: Spec
 spec = do
+  specWithoutFiles
   -- (the failing worlds and pages the properties write go into a folder
-  -- of this run's own, not under fixed names in the shared TMPDIR; it is
-  -- removed at the end only if empty: a property that fails leaves its
-  -- shrunk world there, where its message says)
-  tmp <- runIO privateTempDir
-  afterAll_ (() <$ (try (removeDirectory tmp) :: IO (Either IOError ()))) (specIn tmp)
+  -- of this run's own, not under fixed names in the shared TMPDIR, made
+  -- only if one of these tests runs; it is removed at the end only if
+  -- empty: a property that fails leaves its shrunk world there, where its
+  -- message says)
+  beforeAll privateTempDir $ afterAll (\tmp -> () <$ (try (removeDirectory tmp) :: IO (Either IOError ())))
+    specWithFiles
 
 -- A new, empty folder in the temporary directory.
 privateTempDir :: IO FilePath
@@ -130,8 +132,9 @@ privateTempDir = do
                  | otherwise -> ioError e
   go 0
 
-specIn :: FilePath -> Spec
-specIn tmp = do
+-- The tests that write no file.
+specWithoutFiles :: Spec
+specWithoutFiles = do
   it "random worlds are valid (property)" $
     forAll (genWorld defaultWorldMix notesBounds) $ \w ->
       counterexample (renderWorld w) (validateWorld w === Right ())
@@ -174,22 +177,25 @@ specIn tmp = do
     times 0.02 `shouldBe` ["t=0.00", "t=0.02", "t=0.04", "t=0.06"]
     times 0.001 `shouldBe` ["t=0.00", "t=0.001", "t=0.002", "t=0.003"]
 
-  it "robots never overlap each other (property)" $
+-- The tests that write files, each given the run's own folder.
+specWithFiles :: SpecWith FilePath
+specWithFiles = do
+  it "robots never overlap each other (property)" $ \tmp ->
     forAllWorlds (tmp </> "afrp-test-robots.world") (genWorld defaultWorldMix { mixRobots = (2, 8) } notesBounds) $
       runT defaultSimConfig { simDt = 0.05 } 10 wander wander
            (Always (SP (arr (\ws -> robotGap ws >= -1e-9))))
 
-  it "a ball speeds up only when something touches it (property)" $
+  it "a ball speeds up only when something touches it (property)" $ \tmp ->
     forAllWorlds (tmp </> "afrp-test-balls.world")
                  (genWorld defaultWorldMix { mixBalls = (1, 4), mixRobots = (1, 5) } notesBounds) $ \w ->
       runT defaultSimConfig { simDt = 0.05 } 15 wander wander (ballsSpeedUpOnlyOnContact 0.05 w) w
 
-  it "the notes' wall follower never comes within 1 mm of a wall in random corridors (property)" $
+  it "the notes' wall follower never comes within 1 mm of a wall in random corridors (property)" $ \tmp ->
     forAllWorlds (tmp </> "afrp-test-corridor.world") genCorridor $ \w ->
       runT defaultSimConfig { simDt = 0.02 } corridorTime (rcFollowLeftWall 0.3 0.25) wander
            (keepsClear 1e-3 w) w
 
-  it "a wall follower steering the wrong way is caught, in a world of at most 3 objects (property)" $ do
+  it "a wall follower steering the wrong way is caught, in a world of at most 3 objects (property)" $ \tmp -> do
     let file = tmp </> "afrp-test-broken.world"
     result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 3, 0) } $
       forAllWorlds file genCorridor $ \w ->
@@ -204,7 +210,7 @@ specIn tmp = do
         output result `shouldSatisfy` ("decided false at t = " `isInfixOf`)
       _ -> expectationFailure ("the broken wall follower was not caught: " ++ output result)
 
-  it "forAllRuns writes the shrunk world and its run's replay page (property)" $ do
+  it "forAllRuns writes the shrunk world and its run's replay page (property)" $ \tmp -> do
     let file = tmp </> "afrp-test-broken-runs.world"
     result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 3, 0) } $
       forAllRuns file defaultSimConfig { simDt = 0.02 } corridorTime (rcFollowLeftWallBroken 0.3 0.25) wander
