@@ -10,9 +10,10 @@ import           System.Environment  (getEnvironment, getExecutablePath, lookupE
 import           Control.Concurrent  (threadDelay)
 import           System.Process      (CreateProcess (..), ProcessHandle, StdStream (..), createProcess,
                                       getPid, getProcessExitCode, interruptProcessGroupOf, proc,
-                                      readCreateProcessWithExitCode, readProcessWithExitCode,
+                                      readCreateProcessWithExitCode,
                                       terminateProcess, waitForProcess)
 import           System.Posix.Files  (createLink)
+import           System.Posix.Signals (signalProcess, sigKILL)
 import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
@@ -157,16 +158,21 @@ stops =
   , ("SIGTERM", terminateProcess, 143, 1)
   , ("SIGTERM", terminateProcess, 143, 2) ]
 
--- A child that did not get as far as the test waits for (its frames, a
--- minute after it started): stopped (SIGKILL, so that nothing it does on
--- a gentler signal counts), and the test failed saying so, rather than
--- sending the signal under test too early.
-stopAndFail :: ProcessHandle -> IO ()
-stopAndFail ph = do
-  pid <- getPid ph
-  forM_ pid $ \p -> readProcessWithExitCode "kill" ["-KILL", show p] "" >> pure ()
-  _ <- waitForProcess ph
-  expectationFailure "the child wrote fewer than 20 frames in a minute"
+-- Wait until the child has written 20 frames into @dir/f@ (polled every
+-- 50 ms). A child that has not within a minute is stopped (SIGKILL, so
+-- that nothing it does on a gentler signal counts) and the test fails
+-- saying so, rather than sending the signal under test too early.
+awaitFrames :: FilePath -> ProcessHandle -> IO ()
+awaitFrames dir ph = go (0 :: Int)
+  where
+    go k = do
+      names <- either (\(_ :: IOError) -> []) id <$> try (listDirectory (dir </> "f"))
+      if length names >= 20 then pure ()
+      else if k > 1200 then do
+        getPid ph >>= mapM_ (signalProcess sigKILL)
+        _ <- waitForProcess ph
+        expectationFailure "the child wrote fewer than 20 frames in a minute"
+      else threadDelay 50000 >> go (k + 1)
 
 spec :: Spec
 spec = do
@@ -316,12 +322,7 @@ spec = do
       (_, _, _, ph) <- createProcess (proc "sh" ["-c", "trap '' TERM; exec \"$0\"", self])
         { env = Just ((childVariable, "long:" ++ dir) : environment), create_group = True
         , std_out = NoStream, std_err = Inherit }
-      let waitForFrames k = do
-            names <- either (\(_ :: IOError) -> []) id <$> try (listDirectory (dir </> "f"))
-            if length names >= 20 then pure ()
-            else if k > (1200 :: Int) then stopAndFail ph
-            else threadDelay 50000 >> waitForFrames (k + 1)
-      waitForFrames 0
+      awaitFrames dir ph
       terminateProcess ph
       threadDelay 500000
       getProcessExitCode ph `shouldReturn` Nothing
@@ -335,13 +336,7 @@ spec = do
       (_, Just hout, _, ph) <- createProcess (proc self ["+RTS", "-N" ++ show caps, "-RTS"])
         { env = Just ((childVariable, "long:" ++ dir) : environment), create_group = True
         , std_out = CreatePipe, std_err = Inherit }
-      let waitForFrames k = do
-            names <- listDirectory (dir </> "f") `orElse` []
-            if length names >= 20 then pure ()
-            else if k > (1200 :: Int) then stopAndFail ph
-            else threadDelay 50000 >> waitForFrames (k + 1)
-          orElse act d = either (\(_ :: IOError) -> d) id <$> try act
-      waitForFrames 0
+      awaitFrames dir ph
       send ph
       code <- waitForProcess ph
       code `shouldBe` ExitFailure expected

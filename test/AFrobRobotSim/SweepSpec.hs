@@ -22,6 +22,7 @@ import           System.Environment  (getArgs, getEnvironment, getExecutablePath
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     ((</>))
 import           System.IO           (hGetContents, readFile')
+import           System.Posix.Signals (sigKILL, sigTERM, signalProcessGroup)
 import           System.Process      (CreateProcess (..), StdStream (..), createProcess, getPid, proc,
                                       readCreateProcessWithExitCode, readProcess, readProcessWithExitCode,
                                       waitForProcess)
@@ -91,11 +92,11 @@ sweepInterrupted dir prog what ready = do
   (_, _, Just errH, ph) <- createProcess (proc "bash" [sweep, "-j", "2", "--jobs", dir </> "jobs", prog, dir </> "r.jsonl"])
     { env = Just (("TMPDIR", dir </> "tmp") : environment), create_group = True, std_err = CreatePipe }
   Just pid <- getPid ph
-  let signalGroup s = readProcess "kill" ["-" ++ s, "--", "-" ++ show pid] "" >> pure ()
+  let signalGroup s = signalProcessGroup s pid
       stop = do
-        signalGroup "TERM"
+        signalGroup sigTERM
         ended <- timeout 10000000 (waitForProcess ph)
-        unless (isJust ended) (signalGroup "KILL" >> () <$ waitForProcess ph)
+        unless (isJust ended) (signalGroup sigKILL >> () <$ waitForProcess ph)
       waitReady :: Int -> IO ()
       waitReady k = do
         ok <- ready
@@ -103,9 +104,9 @@ sweepInterrupted dir prog what ready = do
           if k <= 0 then stop >> expectationFailure (what ++ " within a minute")
           else threadDelay 100000 >> waitReady (k - 1)
   waitReady 600
-  signalGroup "TERM"
+  signalGroup sigTERM
   code <- timeout 60000000 (waitForProcess ph)
-  unless (isJust code) (signalGroup "KILL" >> () <$ waitForProcess ph)
+  unless (isJust code) (signalGroup sigKILL >> () <$ waitForProcess ph)
   err <- fromMaybe "" <$> timeout 10000000 (hGetContents errH >>= \e -> length e `seq` pure e)
   pure (code, err)
 
