@@ -94,9 +94,11 @@ spec = describe "readInOrder" $ do
       writeIORef computed 0
       let ys = readInOrder 2 [ counted computed (100 * r + k) | k <- [0 .. 7] ]
       _ <- evaluate (head ys)
-      -- elements 1 to 7 are left to the worker: wait for it (at most 2 s)
+      -- elements 1 to 7 are left to the worker: wait for it (a guard
+      -- against a worker that never wakes, of at least 30 s: a loaded
+      -- machine can keep a thread from running for a while)
       let waitFor :: Int -> IO Int
           waitFor n = do
             c <- readIORef computed
             if c >= 8 || n <= 0 then pure c else threadDelay 1000 >> waitFor (n - 1)
-      waitFor 2000 `shouldReturn` 8
+      waitFor 30000 `shouldReturn` 8

@@ -73,8 +73,13 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     const swipe = async () => {
       const lay = await layout();
       await drag([lay.inner[0] + 100, lay.inner[1] + 250], 0, -25, 6);
-      let last = -1, now = await page.evaluate(() => window.scrollY);
-      while (now !== last) { last = now; await page.waitForTimeout(150); now = await page.evaluate(() => window.scrollY); }
+      // (at rest: the same scroll position over three animation frames after 150 ms, twice running)
+      const settledAt = () => page.evaluate(() => new Promise(done => {
+        const y0 = window.scrollY;
+        setTimeout(() => requestAnimationFrame(() => requestAnimationFrame(() => requestAnimationFrame(() =>
+          done(window.scrollY === y0 ? y0 : null)))), 150);
+      }));
+      for (let still = 0, k = 0; still < 2 && k < 200; k++) still = (await settledAt()) === null ? 0 : still + 1;
       await nextFrame();
     };
 
@@ -141,8 +146,12 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
     // a finger covers more than it points at: a tap up to 16 CSS pixels off SimbotB 2's disc
     // selects it, where a mouse's click selects nothing (3 canvas pixels)
     const counted = await page.evaluate(() => window.afrpReplay.selections());
+    // (the clicks the page is sent, counted before its own handlers see them)
+    await page.evaluate(() => { window.clicksSeen = 0; document.addEventListener('click', () => { window.clicksSeen++; }, true); });
     check(await fingerTap(await offDisc(12)) === 1, 'a tap 12 pixels off SimbotB 2\'s disc selects it');
-    await page.waitForTimeout(300);
+    // (the click that follows the tap, waited for, up to 30 s)
+    await page.waitForFunction(() => window.clicksSeen > 0, null, { timeout: 30000 }).catch(() => {});
+    await nextFrame();
     check(await page.evaluate(() => window.afrpReplay.selections()) === counted + 1,
           'once: the click that follows the tap is passed over');
     check(await fingerTap(await offDisc(22)) === -1, 'a tap 22 pixels off it selects nothing');
@@ -156,7 +165,7 @@ run('node replay-touch.test.js PAGE.html', async (page, errors, open) => {
       await page.evaluate(() => window.afrpReplay.selectRobot(-1));
       for (const type of ['mousePressed', 'mouseReleased'])
         await cdp.send('Input.dispatchMouseEvent', { type, x: at[0], y: at[1], button: 'left', clickCount: 1, pointerType: 'pen' });
-      await page.waitForTimeout(200);
+      await page.waitForFunction(() => window.afrpReplay.selected() !== -1, null, { timeout: 1500 }).catch(() => {});
       return selected();
     };
     check(await penClick(await offDisc(6)) === 1 && await penClick(await offDisc(12)) === -1,

@@ -222,7 +222,9 @@ run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open)
     const rough = await page.evaluate(() => window.afrpReplay.drawn().roughTrails);
     const roughRows = await trailRows();
     check(rough && roughRows.some(reddish), 'on a big page the wheel moves the trails at once, roughly (' + JSON.stringify(roughRows) + ')');
-    await page.waitForTimeout(600);
+    // (the page draws the paths afresh 250 ms after the view's last change: waited for, up to 30 s)
+    await page.waitForFunction(() => !window.afrpReplay.drawn().roughTrails, null, { timeout: 30000 }).catch(() => {});
+    await nextFrame();
     const settled = await page.evaluate(() => {
       const R = window.afrpReplay, k = R.frameCount(), c = document.getElementById('world'), g = c.getContext('2d');
       const grab = () => g.getImageData(0, 0, c.width, c.height).data;
@@ -278,7 +280,7 @@ run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open)
     await page.evaluate(() => window.afrpReplay.setFrame(0));
     await page.keyboard.press(' ');
     check(await page.evaluate(() => window.afrpReplay.playing()), 'space plays');
-    await page.waitForTimeout(300);
+    await page.waitForFunction(() => window.afrpReplay.frame() > 0, null, { timeout: 30000 }).catch(() => {});
     await page.keyboard.press(' ');
     const after = await page.evaluate(() => ({ playing: window.afrpReplay.playing(), frame: window.afrpReplay.frame() }));
     check(!after.playing && after.frame > 0, 'space pauses, after time moved on (frame ' + after.frame + ')');
