@@ -14,6 +14,7 @@ import           System.Process      (CreateProcess (..), ProcessHandle, StdStre
                                       terminateProcess, waitForProcess)
 import           System.Posix.Files  (createLink)
 import           System.Posix.Signals (signalProcess, sigKILL)
+import           System.IO.Unsafe    (unsafePerformIO)
 import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
@@ -32,6 +33,7 @@ import           AFrobRobotSim
 import           AFrobRobotSim.Log   (LogFrame (..), LogHeader (..), LogRect (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
 import           AFrobRobotSim.Replay (writeReplayFromLog)
+import           AFrobRobotSim.Run.Signals (stuckGrace)
 import           TestUtil (withCaps, withTempDir)
 
 world :: WorldTemplate
@@ -39,6 +41,17 @@ world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2
 
 drive :: SimbotController
 drive _ = constant (mrFinalize (ddVelDiff 1 1))
+
+-- | A number never computed: the file @spinning@ made in a folder, then a
+-- count up from 1 that ends only when an 'Int' overflows (centuries), in
+-- a loop that allocates nothing.
+spinning :: FilePath -> Double
+spinning dir = unsafePerformIO (writeFile (dir </> "spinning") "") `seq` fromIntegral (countUp 1)
+{-# NOINLINE spinning #-}
+
+countUp :: Int -> Int
+countUp n = if n < 0 then n else countUp (n + 1)
+{-# NOINLINE countUp #-}
 
 -- | 100 robots on a 10 by 10 lattice in the notes' world, 0.9 m apart.
 crowd :: WorldTemplate
@@ -116,6 +129,8 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- @loop@: a SimbotA whose output depends on itself with no delay.
 -- @deep@: a SimbotA whose step overflows a small stack (@+RTS -K1m@).
 -- @leak@: a SimbotA that keeps ever more state, for a heap limit.
+-- @spin@: frames and the log of a SimbotA that drives for half a second,
+-- then makes the file @spinning@ and loops for ever without allocating.
 child :: String -> IO ()
 child arg = case break (== ':') arg of
   ("hour", _ : dir) -> runSimWith defaultSimOptions
@@ -139,8 +154,15 @@ child arg = case break (== ':') arg of
                                               , optResult = Just (dir </> "r.json") } (Just world) deep drive
   ("leak", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSeconds = 600, optSvg = Just (dir </> "run.svg")
                                               , optResult = Just (dir </> "r.json") } (Just world) hoarder drive
+  ("spin", _ : dir) -> runSimWith defaultSimOptions
+    { optSeconds = 600, optQuiet = True, optFrames = True, optScale = Just 10, optOut = dir </> "f"
+    , optLog = Just (dir </> "run.jsonl"), optSvg = Just (dir </> "run.svg"), optReplay = Nothing }
+    (Just world) (spinner dir) drive
   _ -> ioError (userError ("unknown child " ++ show arg))
   where
+    -- (from 0.5 s on, its wheel speed is a loop that never ends and never
+    -- allocates: a step the runtime cannot stop)
+    spinner dir _ = localTime >>> arr (\t -> mrFinalize (ddVelDiff (if t < 0.5 then 0.5 else spinning dir) 0.5))
     -- (a sum too deep for a stack of 1 MB, +RTS -K1m)
     deep _ = constant (mrFinalize (ddVelDiff (foldr (+) 0 [1 .. 1e7 :: Double]) 0))
     -- (keeps 10,000 more numbers at every step, all of them read)
@@ -163,15 +185,22 @@ stops =
 -- that nothing it does on a gentler signal counts) and the test fails
 -- saying so, rather than sending the signal under test too early.
 awaitFrames :: FilePath -> ProcessHandle -> IO ()
-awaitFrames dir ph = go (0 :: Int)
+awaitFrames dir = awaitChild "wrote fewer than 20 frames" $
+  (>= 20) . length . either (\(_ :: IOError) -> []) id <$> try (listDirectory (dir </> "f"))
+
+-- | @awaitChild what ready child@ waits until @ready@ (polled every 50
+-- ms); if it is not within a minute, the child is stopped (SIGKILL) and
+-- the test fails: "the child @what@ in a minute".
+awaitChild :: String -> IO Bool -> ProcessHandle -> IO ()
+awaitChild what ready ph = go (0 :: Int)
   where
     go k = do
-      names <- either (\(_ :: IOError) -> []) id <$> try (listDirectory (dir </> "f"))
-      if length names >= 20 then pure ()
+      ok <- ready
+      if ok then pure ()
       else if k > 1200 then do
         getPid ph >>= mapM_ (signalProcess sigKILL)
         _ <- waitForProcess ph
-        expectationFailure "the child wrote fewer than 20 frames in a minute"
+        expectationFailure ("the child " ++ what ++ " in a minute")
       else threadDelay 50000 >> go (k + 1)
 
 spec :: Spec
@@ -315,6 +344,32 @@ spec = do
       err `shouldSatisfy` ("the run stopped: it ran out of memory (the heap limit, +RTS -M" `isInfixOf`)
       doesFileExist (dir </> "run.svg") `shouldReturn` True
       readFile (dir </> "r.json") >>= (`shouldSatisfy` ("ran out of memory" `isInfixOf`))
+  describe "a controller in a loop that never allocates (the runtime cannot stop it)" $
+    forM_ [1, 2 :: Int] $ \caps ->
+      it ("a SIGTERM ends the program after the grace, saying why, the frames already written kept (+RTS -N"
+          ++ show caps ++ ")") $ withTempDir $ \dir -> do
+        self <- getExecutablePath
+        environment <- getEnvironment
+        (_, _, Just herr, ph) <- createProcess (proc self ["+RTS", "-N" ++ show caps, "-RTS"])
+          { env = Just ((childVariable, "spin:" ++ dir) : environment), std_out = NoStream, std_err = CreatePipe }
+        awaitChild "did not begin its loop" (doesFileExist (dir </> "spinning")) ph
+        threadDelay 200000
+        terminateProcess ph
+        err <- hGetContents herr
+        -- (it hung for ever before the grace: a child that does is stopped,
+        -- not left behind)
+        done <- timeout 60000000 (length err `seq` waitForProcess ph)
+        _ <- maybe (getPid ph >>= mapM_ (signalProcess sigKILL) >> waitForProcess ph) pure done
+        -- (ended by SIGTERM after all, as without a handler: 143 in a shell)
+        done `shouldSatisfy` (`elem` [Just (ExitFailure (-15)), Just (ExitFailure 143)])
+        err `shouldSatisfy` (("SIGTERM received, but the run has not stopped within " ++ show stuckGrace ++ " s")
+                             `isInfixOf`)
+        err `shouldSatisfy` ("-fno-omit-yields" `isInfixOf`)
+        names <- listDirectory (dir </> "f")
+        frames <- framesIn (dir </> "f")
+        (length frames > 0, all ((== 15 + 3 * 120 * 120) . BS.length) frames, length (lines err))
+          `shouldBe` (True, True, 1)
+        length names `shouldSatisfy` (>= length frames)
   describe "a SIGTERM the program was started ignoring (nohup, a batch system)" $
     it "is still ignored: the run goes on, and Ctrl-C stops it" $ withTempDir $ \dir -> do
       self <- getExecutablePath

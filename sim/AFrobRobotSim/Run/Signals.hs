@@ -20,15 +20,28 @@
 -- being set up, ends the program as Ctrl-C would there.
 --
 -- A controller caught in an endless loop that never allocates (a tight
--- loop over unboxed numbers) keeps its processor from the runtime, which
--- then runs no handler: neither @SIGTERM@ nor a first Ctrl-C stops it (a
--- second Ctrl-C ends the program at once, writing nothing; @SIGKILL@
--- too). Code compiled with @-fno-omit-yields@ can be stopped.
+-- loop over unboxed numbers) keeps its capability from the runtime,
+-- which then can neither run the handler nor stop the run's thread. So
+-- a @SIGTERM@ that has not stopped the run within 'stuckGrace' (10 s)
+-- ends the program after all: it writes to standard error that the run
+-- did not stop, and why that may be, and ends by @SIGTERM@ (exit status
+-- 143 in a shell), without the run's outputs (the frames and log lines
+-- already written are kept; a temporary file of the replay page may be
+-- left in @TMPDIR@). The grace is set by the signal itself, in C, before
+-- the runtime is asked to act, and cleared as soon as the run is stopped
+-- and writing its outputs ('finishing'), so a run that writes its
+-- outputs for longer (a video's assembly) is not cut short. (The alarm
+-- is the process's @SIGALRM@: a program that sets alarms of its own
+-- should not run a simulation while they ring.) A first Ctrl-C does not
+-- stop such a loop either; a second ends the program at once, writing
+-- nothing, as the runtime does. Code compiled with @-fno-omit-yields@ can
+-- be stopped where it loops, and then writes its outputs.
 module AFrobRobotSim.Run.Signals
   ( Stopper
   , interruptible
   , signalReceived
   , finishing
+  , stuckGrace
   ) where
 
 import           Control.Concurrent (ThreadId, mkWeakThreadId, myThreadId)
@@ -36,14 +49,36 @@ import           System.Mem.Weak    (Weak, deRefWeak)
 import           Data.IORef
 #if !defined(mingw32_HOST_OS)
 import           Control.Concurrent (throwTo)
+import           Control.Monad      (when)
 import           Control.Exception  (AsyncException (UserInterrupt), finally)
+import           Foreign.C.String   (CString, withCString)
 import           Foreign.C.Types    (CInt (..))
+import           System.Environment (getProgName)
 import           System.Posix.Signals (Handler (Catch), installHandler, sigTERM)
 
 -- Whether the system ignores a signal now (cbits/signals.c).
 foreign import ccall unsafe "afrp_signal_ignored"
   signalIgnored :: CInt -> IO CInt
+
+-- The grace period in front of the SIGTERM handler installed now, with
+-- its message (cbits/signals.c): 0 when it is set.
+foreign import ccall unsafe "afrp_term_grace_arm"
+  graceArm :: CInt -> CString -> IO CInt
+
+-- The runtime has acted on the signal: the alarm cleared.
+foreign import ccall unsafe "afrp_term_grace_clear"
+  graceClear :: IO ()
+
+-- The grace period taken away, SIGTERM's handler as it was before it.
+foreign import ccall unsafe "afrp_term_grace_remove"
+  graceRemove :: IO ()
 #endif
+
+-- | How long a @SIGTERM@ may take to stop a run before the program ends
+-- without its outputs (see the module's documentation): 10 seconds. A
+-- runtime that can act stops a run in milliseconds.
+stuckGrace :: Int
+stuckGrace = 10
 
 -- | What 'interruptible' gives its action: which thread a signal stops,
 -- whether the run is writing its outputs ('finishing'), and the number of
@@ -69,7 +104,9 @@ interruptible act = do
   ignored <- (/= 0) <$> signalIgnored sigTERM
   if ignored then act stopper else do   -- (as the program was started: nohup, a batch system)
     old <- installHandler sigTERM (Catch (received stopper (fromIntegral sigTERM))) Nothing
-    act stopper `finally` installHandler sigTERM old Nothing
+    prog <- getProgName
+    _ <- withCString (stuckMessage prog) (graceArm (fromIntegral stuckGrace))
+    act stopper `finally` (graceRemove >> installHandler sigTERM old Nothing)
 #else
   act stopper
 #endif
@@ -82,10 +119,22 @@ received (Stopper t phase) k = do
   stop <- atomicModifyIORef' phase $ \(done, got) -> case got of
     Nothing -> ((done, Just k), not done)
     Just _  -> ((done, got), False)
+  -- (a signal ignored while the outputs are written: the runtime acted,
+  -- no grace runs out)
+  done <- fst <$> readIORef phase
+  when done graceClear
   target <- deRefWeak t
   case target of
     Just thread | stop -> throwTo thread UserInterrupt
     _                  -> pure ()
+
+-- What a program stuck past the grace says, @prog@ its name.
+stuckMessage :: String -> String
+stuckMessage prog =
+  prog ++ ": SIGTERM received, but the run has not stopped within " ++ show stuckGrace ++ " s: a controller's "
+  ++ "step has been computing all that time without allocating (an endless loop over unboxed numbers?), "
+  ++ "which keeps the runtime from stopping it. Ending now, without the run's outputs (the frames and log "
+  ++ "lines written so far are kept). A controller compiled with -fno-omit-yields can be stopped where it loops.\n"
 #endif
 
 -- | The number of the first signal received: the one that stopped the
@@ -97,4 +146,9 @@ signalReceived (Stopper _ phase) = snd <$> readIORef phase
 -- | From now on a signal is noted and ignored: the run is writing its
 -- outputs.
 finishing :: Stopper -> IO ()
-finishing (Stopper _ phase) = atomicModifyIORef' phase (\(_, got) -> ((True, got), ()))
+finishing (Stopper _ phase) = do
+  atomicModifyIORef' phase (\(_, got) -> ((True, got), ()))
+#if !defined(mingw32_HOST_OS)
+  -- (a signal that stopped the run has been acted on)
+  graceClear
+#endif
