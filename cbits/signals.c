@@ -1,6 +1,6 @@
 /*
  * SIGTERM as "AFrobRobotSim.Run.Signals" handles it, in C: whether the
- * signal is ignored, and a grace period for a runtime that cannot act.
+ * signal is ignored, and a watchdog for a runtime that cannot act.
  *
  * Whether a signal is ignored, as the program was started: a program
  * started by `nohup`, or by a shell or a batch system that ignores a
@@ -9,24 +9,31 @@
  * signal no Haskell code has handled), so the module asks the system
  * before it installs a handler, and leaves an ignored signal ignored.
  *
- * The grace period: the runtime runs a Haskell handler on one of its own
+ * The watchdog: the runtime runs a Haskell handler on one of its own
  * threads, and stops the run by throwing to the run's thread. A
  * controller caught in a loop that never allocates keeps its capability
- * from the runtime, and then neither happens: the program would go on
- * for ever, SIGTERM or not. So, while a run may be stopped, a SIGTERM
- * also sets an alarm, before the runtime's own handler is called; the
- * run clears it once it is stopped and writing its outputs (or when the
- * signal is ignored because it already is). Should the alarm ring, the
- * runtime is stuck: the program writes the message it was given to
- * standard error and ends by SIGTERM after all (exit status 143 in a
- * shell), as it would have without a handler. Only async-signal-safe
- * calls are made in the handlers.
+ * from the runtime (no collection can start, and with one capability no
+ * handler can run), and the program would go on for ever, SIGTERM or
+ * not. So, while a run may be stopped, the handler of SIGTERM installed
+ * here wakes a thread of its own, made once (with sem_post, which a
+ * signal handler may call), before it calls the runtime's handler. That thread waits
+ * for the Haskell side to say that the runtime is alive (after a
+ * collection has completed, which needs every capability:
+ * `afrp_term_grace_clear`); if that does not come within the grace, it
+ * writes the message it was given to standard error and ends the
+ * program by SIGTERM after all (exit status 143 in a shell), as it would
+ * have ended without a handler. No signal other than SIGTERM is touched.
  *
- * POSIX only: the package builds it on every system but Windows.
+ * One run watched at a time: `afrp_term_grace_arm` refuses while one
+ * is. POSIX only: the package builds it on every system but Windows.
  */
+#include <errno.h>
+#include <pthread.h>
+#include <semaphore.h>
 #include <signal.h>
 #include <stddef.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 int afrp_signal_ignored(int sig)
@@ -37,36 +44,49 @@ int afrp_signal_ignored(int sig)
     return old.sa_handler == SIG_IGN;
 }
 
-/* the handler of SIGTERM this one calls after setting the alarm (the
-   runtime's), the grace in seconds, whether the alarm is set, and the
-   message */
-static struct sigaction grace_next;
-static volatile sig_atomic_t grace_seconds = 0;
-static volatile sig_atomic_t grace_set = 0;
+/* The watchdog's state. `armed`: between arm and remove; `pending`: a
+   SIGTERM has come that the runtime has not yet been seen to act on;
+   `generation`: counts the arms, so that a countdown begun for one run
+   never ends another. Read and written with the compiler's atomic
+   builtins (the handler runs on any thread). The watchdog's thread is
+   made at the first arm and lives as long as the program, asleep on its
+   semaphore when there is nothing to watch. */
+static int armed = 0;
+static int pending = 0;
+static int generation = 0;
+static int grace_seconds = 0;
+static sem_t wake;
+static pthread_once_t started = PTHREAD_ONCE_INIT;
+static int start_failed = 0;
+static struct sigaction runtime_action;   /* the handler called after ours */
 static char grace_message[2048];
 static size_t grace_length = 0;
 
-static void grace_on_term(int sig, siginfo_t *info, void *context)
+#define LOAD(x)     __atomic_load_n(&(x), __ATOMIC_SEQ_CST)
+#define STORE(x, v) __atomic_store_n(&(x), (v), __ATOMIC_SEQ_CST)
+
+static void on_term(int sig, siginfo_t *info, void *context)
 {
-    if (grace_seconds > 0 && !grace_set) {
-        grace_set = 1;
-        alarm((unsigned) grace_seconds);
+    int saved = errno;
+    if (LOAD(armed) && !LOAD(pending)) {
+        STORE(pending, 1);
+        sem_post(&wake);
     }
-    if (grace_next.sa_flags & SA_SIGINFO) {
-        if (grace_next.sa_sigaction != NULL)
-            grace_next.sa_sigaction(sig, info, context);
-    } else if (grace_next.sa_handler != SIG_DFL && grace_next.sa_handler != SIG_IGN
-               && grace_next.sa_handler != NULL) {
-        grace_next.sa_handler(sig);
-    }
+    errno = saved;
+    runtime_action.sa_sigaction(sig, info, context);
 }
 
-static void grace_on_alarm(int sig)
+static double now_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double) t.tv_sec + (double) t.tv_nsec * 1e-9;
+}
+
+static void end_by_sigterm(void)
 {
     size_t done = 0;
     struct sigaction dfl;
-    sigset_t term;
-    (void) sig;
     while (done < grace_length) {
         ssize_t n = write(2, grace_message + done, grace_length - done);
         if (n <= 0) break;
@@ -76,64 +96,109 @@ static void grace_on_alarm(int sig)
     dfl.sa_handler = SIG_DFL;
     sigemptyset(&dfl.sa_mask);
     sigaction(SIGTERM, &dfl, NULL);
-    sigemptyset(&term);
-    sigaddset(&term, SIGTERM);
-    sigprocmask(SIG_UNBLOCK, &term, NULL);
-    raise(SIGTERM);
+    kill(getpid(), SIGTERM);
+    /* (a thread that does not block SIGTERM takes it; should none, in a
+       second the program ends as a shell would report it) */
+    sleep(1);
     _exit(128 + SIGTERM);
 }
 
-/* Put the grace period in front of the SIGTERM handler installed now (the
-   runtime's): seconds > 0, and the message to write should it end. 0 on
-   success, -1 if a handler could not be installed (nothing changed). */
+static void *watchdog(void *unused)
+{
+    sigset_t all;
+    (void) unused;
+    /* (no signal is delivered to this thread: the runtime's go to its own) */
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, NULL);
+    for (;;) {
+        int gen;
+        double deadline;
+        struct timespec step = { 0, 50 * 1000 * 1000 };
+        while (sem_wait(&wake) != 0 && errno == EINTR)
+            ;
+        gen = LOAD(generation);
+        if (!LOAD(armed) || !LOAD(pending))
+            continue;
+        deadline = now_seconds() + (double) grace_seconds;
+        while (LOAD(armed) && LOAD(pending) && LOAD(generation) == gen && now_seconds() < deadline)
+            nanosleep(&step, NULL);
+        if (LOAD(armed) && LOAD(pending) && LOAD(generation) == gen)
+            end_by_sigterm();
+    }
+    return NULL;
+}
+
+static void start_watchdog(void)
+{
+    pthread_t thread;
+    pthread_attr_t attr;
+    if (sem_init(&wake, 0, 0) != 0) {
+        start_failed = 1;
+        return;
+    }
+    pthread_attr_init(&attr);
+    pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
+    if (pthread_create(&thread, &attr, watchdog, NULL) != 0)
+        start_failed = 1;
+    pthread_attr_destroy(&attr);
+}
+
+/* Put the watchdog in front of the SIGTERM handler installed now (the
+   runtime's, which must be a function taking the signal's information),
+   with the grace in seconds (> 0) and the message to write should it
+   end the program. 0 when armed; -1 when nothing was changed (armed
+   already, no such handler, or no thread for the watchdog). */
 int afrp_term_grace_arm(int seconds, const char *message)
 {
-    struct sigaction current, mine, alarm_action;
+    struct sigaction current, mine;
     size_t n = strlen(message);
-    if (seconds <= 0 || sigaction(SIGTERM, NULL, &current) != 0)
+    if (seconds <= 0 || LOAD(armed) || sigaction(SIGTERM, NULL, &current) != 0
+        || !(current.sa_flags & SA_SIGINFO) || current.sa_sigaction == NULL
+        || current.sa_sigaction == on_term)
+        return -1;
+    pthread_once(&started, start_watchdog);
+    if (start_failed)
         return -1;
     if (n >= sizeof grace_message)
         n = sizeof grace_message - 1;
     memcpy(grace_message, message, n);
     grace_message[n] = '\0';
     grace_length = n;
-    memset(&alarm_action, 0, sizeof alarm_action);
-    alarm_action.sa_handler = grace_on_alarm;
-    sigemptyset(&alarm_action.sa_mask);
-    if (sigaction(SIGALRM, &alarm_action, NULL) != 0)
-        return -1;
-    grace_next = current;
-    grace_set = 0;
     grace_seconds = seconds;
+    runtime_action = current;
+    STORE(pending, 0);
+    __atomic_add_fetch(&generation, 1, __ATOMIC_SEQ_CST);
+    STORE(armed, 1);
     memset(&mine, 0, sizeof mine);
-    mine.sa_sigaction = grace_on_term;
+    mine.sa_sigaction = on_term;
     mine.sa_mask = current.sa_mask;
-    mine.sa_flags = (current.sa_flags | SA_SIGINFO) & ~SA_RESETHAND;
+    mine.sa_flags = current.sa_flags & ~SA_RESETHAND;
     if (sigaction(SIGTERM, &mine, NULL) != 0) {
-        grace_seconds = 0;
-        signal(SIGALRM, SIG_DFL);
+        STORE(armed, 0);
         return -1;
     }
     return 0;
 }
 
-/* The run is stopped, or the signal ignored: the runtime is acting. */
+/* The runtime has acted since the last SIGTERM: the watchdog waits for
+   the next one. */
 void afrp_term_grace_clear(void)
 {
-    alarm(0);
-    grace_set = 0;
+    STORE(pending, 0);
 }
 
-/* No more grace: the alarm cleared and SIGTERM's handler put back as it
-   was when the grace was armed (the caller then restores its own). */
+/* SIGTERM's handler put back as it was when the watchdog was armed (unless
+   something else has replaced ours since), then the watchdog disarmed;
+   the caller then restores its own handler. */
 void afrp_term_grace_remove(void)
 {
     struct sigaction current;
-    grace_seconds = 0;
-    alarm(0);
-    grace_set = 0;
+    if (!LOAD(armed))
+        return;
     if (sigaction(SIGTERM, NULL, &current) == 0 && (current.sa_flags & SA_SIGINFO)
-        && current.sa_sigaction == grace_on_term)
-        sigaction(SIGTERM, &grace_next, NULL);
-    signal(SIGALRM, SIG_DFL);
+        && current.sa_sigaction == on_term)
+        sigaction(SIGTERM, &runtime_action, NULL);
+    STORE(armed, 0);
+    STORE(pending, 0);
+    sem_post(&wake);
 }

@@ -4,7 +4,7 @@
 module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 
 import           Control.Exception   (finally, try)
-import           Control.Monad       (forM_)
+import           Control.Monad       (forM_, replicateM_)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
 import           Control.Concurrent  (threadDelay)
@@ -12,7 +12,7 @@ import           System.Process      (CreateProcess (..), ProcessHandle, StdStre
                                       getPid, getProcessExitCode, interruptProcessGroupOf, proc,
                                       readCreateProcessWithExitCode,
                                       terminateProcess, waitForProcess)
-import           System.Posix.Files  (createLink)
+import           System.Posix.Files  (createLink, createNamedPipe)
 import           System.Posix.Signals (signalProcess, sigKILL)
 import           System.IO.Unsafe    (unsafePerformIO)
 import           System.Timeout      (timeout)
@@ -129,6 +129,8 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- @loop@: a SimbotA whose output depends on itself with no delay.
 -- @deep@: a SimbotA whose step overflows a small stack (@+RTS -K1m@).
 -- @leak@: a SimbotA that keeps ever more state, for a heap limit.
+-- @piped@: ten simulated hours whose log goes into the named pipe
+-- @log.fifo@, for the parent to read, or not.
 -- @spin@: frames and the log of a SimbotA that drives for half a second,
 -- then makes the file @spinning@ and loops for ever without allocating.
 child :: String -> IO ()
@@ -158,6 +160,9 @@ child arg = case break (== ':') arg of
     { optSeconds = 600, optQuiet = True, optFrames = True, optScale = Just 10, optOut = dir </> "f"
     , optLog = Just (dir </> "run.jsonl"), optSvg = Just (dir </> "run.svg"), optReplay = Nothing }
     (Just world) (spinner dir) drive
+  ("piped", _ : dir) -> runSimWith defaultSimOptions
+    { optSeconds = 36000, optQuiet = True, optFrames = False, optOut = dir
+    , optLog = Just (dir </> "log.fifo"), optSvg = Just (dir </> "run.svg"), optReplay = Nothing } Nothing drive drive
   _ -> ioError (userError ("unknown child " ++ show arg))
   where
     -- (from 0.5 s on, its wheel speed is a loop that never ends and never
@@ -362,14 +367,48 @@ spec = do
         _ <- maybe (getPid ph >>= mapM_ (signalProcess sigKILL) >> waitForProcess ph) pure done
         -- (ended by SIGTERM after all, as without a handler: 143 in a shell)
         done `shouldSatisfy` (`elem` [Just (ExitFailure (-15)), Just (ExitFailure 143)])
-        err `shouldSatisfy` (("SIGTERM received, but the run has not stopped within " ++ show stuckGrace ++ " s")
-                             `isInfixOf`)
+        err `shouldSatisfy` (("SIGTERM received, but the runtime has not been able to act on it within "
+                              ++ show stuckGrace ++ " s") `isInfixOf`)
         err `shouldSatisfy` ("-fno-omit-yields" `isInfixOf`)
         names <- listDirectory (dir </> "f")
         frames <- framesIn (dir </> "f")
         (length frames > 0, all ((== 15 + 3 * 120 * 120) . BS.length) frames, length (lines err))
           `shouldBe` (True, True, 1)
         length names `shouldSatisfy` (>= length frames)
+  describe "a run slow to stop (its log written into a pipe nobody reads for a while)" $
+    forM_ [1, 2 :: Int] $ \caps ->
+      it ("is stopped by SIGTERM once the pipe is read again, after more than the grace, its outputs written (+RTS -N"
+          ++ show caps ++ ")") $ withTempDir $ \dir -> do
+        let fifo = dir </> "log.fifo"
+        createNamedPipe fifo 0o600
+        -- (opened for reading and writing, which does not wait for a
+        -- writer: the child's log, opened without waiting, needs a reader
+        -- there; the end of the log is then its summary, not end of file)
+        reader <- openFile fifo ReadWriteMode
+        self <- getExecutablePath
+        environment <- getEnvironment
+        (_, Just hout, Just herr, ph) <- createProcess (proc self ["+RTS", "-N" ++ show caps, "-RTS"])
+          { env = Just ((childVariable, "piped:" ++ dir) : environment), std_out = CreatePipe, std_err = CreatePipe }
+        -- (the run is going: some of its log read, then no more, so that
+        -- its next writes wait)
+        replicateM_ 50 (hGetLine reader)
+        threadDelay 1000000
+        terminateProcess ph
+        threadDelay ((stuckGrace + 3) * 1000000)
+        still <- getProcessExitCode ph
+        let untilSummary acc = do
+              l <- hGetLine reader
+              if "\"kind\":\"summary\"" `isInfixOf` l then pure (reverse (l : acc)) else untilSummary (l : acc)
+        rest <- timeout 60000000 (untilSummary [])
+        done <- timeout 60000000 (waitForProcess ph)
+        _ <- maybe (getPid ph >>= mapM_ (signalProcess sigKILL) >> waitForProcess ph) pure done
+        out <- hGetContents hout
+        err <- hGetContents herr
+        (still, done) `shouldBe` (Nothing, Just (ExitFailure 143))
+        out `shouldSatisfy` ("interrupted: " `isPrefixOf`)
+        err `shouldBe` ""
+        fmap (any ("\"interrupted\":true" `isInfixOf`)) rest `shouldBe` Just True
+        doesFileExist (dir </> "run.svg") `shouldReturn` True
   describe "a SIGTERM the program was started ignoring (nohup, a batch system)" $
     it "is still ignored: the run goes on, and Ctrl-C stops it" $ withTempDir $ \dir -> do
       self <- getExecutablePath

@@ -20,22 +20,28 @@
 -- being set up, ends the program as Ctrl-C would there.
 --
 -- A controller caught in an endless loop that never allocates (a tight
--- loop over unboxed numbers) keeps its capability from the runtime,
--- which then can neither run the handler nor stop the run's thread. So
--- a @SIGTERM@ that has not stopped the run within 'stuckGrace' (10 s)
--- ends the program after all: it writes to standard error that the run
--- did not stop, and why that may be, and ends by @SIGTERM@ (exit status
--- 143 in a shell), without the run's outputs (the frames and log lines
--- already written are kept; a temporary file of the replay page may be
--- left in @TMPDIR@). The grace is set by the signal itself, in C, before
--- the runtime is asked to act, and cleared as soon as the run is stopped
--- and writing its outputs ('finishing'), so a run that writes its
--- outputs for longer (a video's assembly) is not cut short. (The alarm
--- is the process's @SIGALRM@: a program that sets alarms of its own
--- should not run a simulation while they ring.) A first Ctrl-C does not
--- stop such a loop either; a second ends the program at once, writing
--- nothing, as the runtime does. Code compiled with @-fno-omit-yields@ can
--- be stopped where it loops, and then writes its outputs.
+-- loop over unboxed numbers) keeps its capability from the runtime: no
+-- collection can start, and with one capability no handler can run, so
+-- the run could not be stopped. In a program built @-threaded@ (the
+-- project's are), a watchdog thread in C (@cbits/signals.c@) is woken by
+-- each @SIGTERM@, before the runtime is asked to act, and waits for the
+-- runtime to show that it can: the Haskell handler completes a
+-- collection, which needs every capability, before it stops the run. A
+-- runtime that has not within 'stuckGrace' (10 s) is stuck: the program
+-- then writes to standard error that it is, and why that may be, and
+-- ends by @SIGTERM@ (exit status 143 in a shell), without the run's
+-- outputs (the frames and log lines already written are kept; a
+-- temporary file of the replay page may be left in @TMPDIR@). A run that
+-- is merely slow to stop (its log written into a pipe nobody reads for a
+-- while, a video being assembled) has a runtime that acts, and is not cut
+-- short. No other signal is used, and one run is watched at a time (a
+-- second run at once in the same program gets no watchdog). A program
+-- built without @-threaded@ gets none either: its runtime waits, whole,
+-- for a blocking call such as the video's assembly, and could not be
+-- told from a stuck one. A first Ctrl-C does not stop such a loop either;
+-- a second ends the program at once, writing nothing, as the runtime
+-- does. Code compiled with @-fno-omit-yields@ can be stopped where it
+-- loops, and then writes its outputs.
 module AFrobRobotSim.Run.Signals
   ( Stopper
   , interruptible
@@ -48,35 +54,36 @@ import           Control.Concurrent (ThreadId, mkWeakThreadId, myThreadId)
 import           System.Mem.Weak    (Weak, deRefWeak)
 import           Data.IORef
 #if !defined(mingw32_HOST_OS)
-import           Control.Concurrent (throwTo)
+import           Control.Concurrent (rtsSupportsBoundThreads, throwTo)
 import           Control.Monad      (when)
 import           Control.Exception  (AsyncException (UserInterrupt), finally)
 import           Foreign.C.String   (CString, withCString)
 import           Foreign.C.Types    (CInt (..))
 import           System.Environment (getProgName)
+import           System.Mem         (performMinorGC)
 import           System.Posix.Signals (Handler (Catch), installHandler, sigTERM)
 
 -- Whether the system ignores a signal now (cbits/signals.c).
 foreign import ccall unsafe "afrp_signal_ignored"
   signalIgnored :: CInt -> IO CInt
 
--- The grace period in front of the SIGTERM handler installed now, with
--- its message (cbits/signals.c): 0 when it is set.
+-- The watchdog in front of the SIGTERM handler installed now, with its
+-- grace and message (cbits/signals.c): 0 when it is armed.
 foreign import ccall unsafe "afrp_term_grace_arm"
   graceArm :: CInt -> CString -> IO CInt
 
--- The runtime has acted on the signal: the alarm cleared.
+-- The runtime has acted on the signal: the watchdog waits for the next.
 foreign import ccall unsafe "afrp_term_grace_clear"
   graceClear :: IO ()
 
--- The grace period taken away, SIGTERM's handler as it was before it.
+-- The watchdog disarmed, SIGTERM's handler as it was before it.
 foreign import ccall unsafe "afrp_term_grace_remove"
   graceRemove :: IO ()
 #endif
 
--- | How long a @SIGTERM@ may take to stop a run before the program ends
--- without its outputs (see the module's documentation): 10 seconds. A
--- runtime that can act stops a run in milliseconds.
+-- | How long the runtime may take to act on a @SIGTERM@ before the
+-- program ends without its outputs (see the module's documentation): 10
+-- seconds. A runtime that can act does in milliseconds.
 stuckGrace :: Int
 stuckGrace = 10
 
@@ -105,8 +112,11 @@ interruptible act = do
   if ignored then act stopper else do   -- (as the program was started: nohup, a batch system)
     old <- installHandler sigTERM (Catch (received stopper (fromIntegral sigTERM))) Nothing
     prog <- getProgName
-    _ <- withCString (stuckMessage prog) (graceArm (fromIntegral stuckGrace))
-    act stopper `finally` (graceRemove >> installHandler sigTERM old Nothing)
+    -- (no watchdog without -threaded, or while another run has it: the
+    -- run is then stopped as before)
+    watched <- if not rtsSupportsBoundThreads then pure False
+               else (== 0) <$> withCString (stuckMessage prog) (graceArm (fromIntegral stuckGrace))
+    act stopper `finally` (when watched graceRemove >> installHandler sigTERM old Nothing)
 #else
   act stopper
 #endif
@@ -116,13 +126,13 @@ interruptible act = do
 -- is writing its outputs or a signal has stopped it already.
 received :: Stopper -> Int -> IO ()
 received (Stopper t phase) k = do
+  -- (the runtime can act: a collection has stopped every capability, so
+  -- none is held by a loop; the watchdog waits for the next signal)
+  performMinorGC
+  graceClear
   stop <- atomicModifyIORef' phase $ \(done, got) -> case got of
     Nothing -> ((done, Just k), not done)
     Just _  -> ((done, got), False)
-  -- (a signal ignored while the outputs are written: the runtime acted,
-  -- no grace runs out)
-  done <- fst <$> readIORef phase
-  when done graceClear
   target <- deRefWeak t
   case target of
     Just thread | stop -> throwTo thread UserInterrupt
@@ -131,10 +141,11 @@ received (Stopper t phase) k = do
 -- What a program stuck past the grace says, @prog@ its name.
 stuckMessage :: String -> String
 stuckMessage prog =
-  prog ++ ": SIGTERM received, but the run has not stopped within " ++ show stuckGrace ++ " s: a controller's "
-  ++ "step has been computing all that time without allocating (an endless loop over unboxed numbers?), "
-  ++ "which keeps the runtime from stopping it. Ending now, without the run's outputs (the frames and log "
-  ++ "lines written so far are kept). A controller compiled with -fno-omit-yields can be stopped where it loops.\n"
+  prog ++ ": SIGTERM received, but the runtime has not been able to act on it within " ++ show stuckGrace
+  ++ " s: a thread, most likely a controller's step, has been computing all that time without allocating "
+  ++ "(an endless loop over unboxed numbers?), which keeps the runtime from stopping the run. Ending now, "
+  ++ "without the run's outputs (the frames and log lines written so far are kept). A controller compiled "
+  ++ "with -fno-omit-yields can be stopped where it loops.\n"
 #endif
 
 -- | The number of the first signal received: the one that stopped the
@@ -146,9 +157,4 @@ signalReceived (Stopper _ phase) = snd <$> readIORef phase
 -- | From now on a signal is noted and ignored: the run is writing its
 -- outputs.
 finishing :: Stopper -> IO ()
-finishing (Stopper _ phase) = do
-  atomicModifyIORef' phase (\(_, got) -> ((True, got), ()))
-#if !defined(mingw32_HOST_OS)
-  -- (a signal that stopped the run has been acted on)
-  graceClear
-#endif
+finishing (Stopper _ phase) = atomicModifyIORef' phase (\(_, got) -> ((True, got), ()))
