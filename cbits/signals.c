@@ -25,7 +25,9 @@
  * have ended without a handler. No signal other than SIGTERM is touched.
  *
  * One run watched at a time: `afrp_term_grace_arm` refuses while one
- * is. POSIX only: the package builds it on every system but Windows.
+ * is, and a second run's handler (installed while the first is watched)
+ * is wrapped again by `afrp_term_grace_rewrap`, so that the first stays
+ * watched. POSIX only: the package builds it on every system but Windows.
  */
 #include <errno.h>
 #include <pthread.h>
@@ -54,6 +56,7 @@ int afrp_signal_ignored(int sig)
 static int armed = 0;
 static int pending = 0;
 static int generation = 0;
+static int clears = 0;     /* counts the clears, so that a countdown ends at one */
 static int grace_seconds = 0;
 static sem_t wake;
 static pthread_once_t started = PTHREAD_ONCE_INIT;
@@ -68,10 +71,8 @@ static size_t grace_length = 0;
 static void on_term(int sig, siginfo_t *info, void *context)
 {
     int saved = errno;
-    if (LOAD(armed) && !LOAD(pending)) {
-        STORE(pending, 1);
+    if (LOAD(armed) && __atomic_exchange_n(&pending, 1, __ATOMIC_SEQ_CST) == 0)
         sem_post(&wake);
-    }
     errno = saved;
     runtime_action.sa_sigaction(sig, info, context);
 }
@@ -111,19 +112,23 @@ static void *watchdog(void *unused)
     sigfillset(&all);
     pthread_sigmask(SIG_BLOCK, &all, NULL);
     for (;;) {
-        int gen;
+        int gen, cleared;
         double deadline;
         struct timespec step = { 0, 50 * 1000 * 1000 };
         while (sem_wait(&wake) != 0 && errno == EINTR)
             ;
         gen = LOAD(generation);
+        cleared = LOAD(clears);
         if (!LOAD(armed) || !LOAD(pending))
             continue;
         deadline = now_seconds() + (double) grace_seconds;
-        while (LOAD(armed) && LOAD(pending) && LOAD(generation) == gen && now_seconds() < deadline)
+        while (LOAD(armed) && LOAD(pending) && LOAD(generation) == gen && LOAD(clears) == cleared
+               && now_seconds() < deadline)
             nanosleep(&step, NULL);
-        if (LOAD(armed) && LOAD(pending) && LOAD(generation) == gen)
+        if (LOAD(armed) && LOAD(pending) && LOAD(generation) == gen && LOAD(clears) == cleared)
             end_by_sigterm();
+        if (LOAD(pending))
+            sem_post(&wake);   /* (a signal that came after a clear: its own countdown) */
     }
     return NULL;
 }
@@ -184,7 +189,26 @@ int afrp_term_grace_arm(int seconds, const char *message)
    the next one. */
 void afrp_term_grace_clear(void)
 {
+    __atomic_add_fetch(&clears, 1, __ATOMIC_SEQ_CST);
     STORE(pending, 0);
+}
+
+/* After the runtime's handler of SIGTERM has been installed again (by
+   another run's `installHandler`, or as it ends), while a watchdog is
+   armed: ours put back in front of it. */
+void afrp_term_grace_rewrap(void)
+{
+    struct sigaction current, mine;
+    if (!LOAD(armed) || sigaction(SIGTERM, NULL, &current) != 0
+        || !(current.sa_flags & SA_SIGINFO) || current.sa_sigaction == NULL
+        || current.sa_sigaction == on_term)
+        return;
+    runtime_action = current;
+    memset(&mine, 0, sizeof mine);
+    mine.sa_sigaction = on_term;
+    mine.sa_mask = current.sa_mask;
+    mine.sa_flags = current.sa_flags & ~SA_RESETHAND;
+    sigaction(SIGTERM, &mine, NULL);
 }
 
 /* SIGTERM's handler put back as it was when the watchdog was armed (unless

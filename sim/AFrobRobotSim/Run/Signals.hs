@@ -35,7 +35,11 @@
 -- is merely slow to stop (its log written into a pipe nobody reads for a
 -- while, a video being assembled) has a runtime that acts, and is not cut
 -- short. No other signal is used, and one run is watched at a time (a
--- second run at once in the same program gets no watchdog). A program
+-- second run at once in the same program gets no watchdog of its own,
+-- and keeps the first's in front of its handler). One window remains: the
+-- runtime is seen to act once per signal, before the run is stopped, so a
+-- loop entered after that (in the few instructions before the stop
+-- reaches the run's thread) is not watched until the next @SIGTERM@. A program
 -- built without @-threaded@ gets none either: its runtime waits, whole,
 -- for a blocking call such as the video's assembly, and could not be
 -- told from a stuck one. A first Ctrl-C does not stop such a loop either;
@@ -55,7 +59,7 @@ import           System.Mem.Weak    (Weak, deRefWeak)
 import           Data.IORef
 #if !defined(mingw32_HOST_OS)
 import           Control.Concurrent (rtsSupportsBoundThreads, throwTo)
-import           Control.Monad      (when)
+import           Control.Monad      (unless)
 import           Control.Exception  (AsyncException (UserInterrupt), finally)
 import           Foreign.C.String   (CString, withCString)
 import           Foreign.C.Types    (CInt (..))
@@ -75,6 +79,11 @@ foreign import ccall unsafe "afrp_term_grace_arm"
 -- The runtime has acted on the signal: the watchdog waits for the next.
 foreign import ccall unsafe "afrp_term_grace_clear"
   graceClear :: IO ()
+
+-- The watchdog put back in front of the runtime's handler, if it is
+-- armed and that handler was installed again since.
+foreign import ccall unsafe "afrp_term_grace_rewrap"
+  graceRewrap :: IO ()
 
 -- The watchdog disarmed, SIGTERM's handler as it was before it.
 foreign import ccall unsafe "afrp_term_grace_remove"
@@ -116,7 +125,11 @@ interruptible act = do
     -- run is then stopped as before)
     watched <- if not rtsSupportsBoundThreads then pure False
                else (== 0) <$> withCString (stuckMessage prog) (graceArm (fromIntegral stuckGrace))
-    act stopper `finally` (when watched graceRemove >> installHandler sigTERM old Nothing)
+    -- (a run not watched, another being so, keeps the other's watchdog
+    -- in front of the handlers it installs)
+    unless watched graceRewrap
+    act stopper `finally` (if watched then graceRemove >> () <$ installHandler sigTERM old Nothing
+                           else installHandler sigTERM old Nothing >> graceRewrap)
 #else
   act stopper
 #endif
