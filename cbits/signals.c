@@ -148,6 +148,20 @@ static void start_watchdog(void)
     pthread_attr_destroy(&attr);
 }
 
+/* Ours installed in front of the runtime's handler `current` (which it
+   calls after waking the watchdog), with its mask and flags: 0 when
+   installed. */
+static int wrap(const struct sigaction *current)
+{
+    struct sigaction mine;
+    runtime_action = *current;
+    memset(&mine, 0, sizeof mine);
+    mine.sa_sigaction = on_term;
+    mine.sa_mask = current->sa_mask;
+    mine.sa_flags = current->sa_flags & ~SA_RESETHAND;
+    return sigaction(SIGTERM, &mine, NULL);
+}
+
 /* Put the watchdog in front of the SIGTERM handler installed now (the
    runtime's, which must be a function taking the signal's information),
    with the grace in seconds (> 0) and the message to write should it
@@ -155,7 +169,7 @@ static void start_watchdog(void)
    already, no such handler, or no thread for the watchdog). */
 int afrp_term_grace_arm(int seconds, const char *message)
 {
-    struct sigaction current, mine;
+    struct sigaction current;
     size_t n = strlen(message);
     if (seconds <= 0 || LOAD(armed) || sigaction(SIGTERM, NULL, &current) != 0
         || !(current.sa_flags & SA_SIGINFO) || current.sa_sigaction == NULL
@@ -170,15 +184,10 @@ int afrp_term_grace_arm(int seconds, const char *message)
     grace_message[n] = '\0';
     grace_length = n;
     grace_seconds = seconds;
-    runtime_action = current;
     STORE(pending, 0);
     __atomic_add_fetch(&generation, 1, __ATOMIC_SEQ_CST);
     STORE(armed, 1);
-    memset(&mine, 0, sizeof mine);
-    mine.sa_sigaction = on_term;
-    mine.sa_mask = current.sa_mask;
-    mine.sa_flags = current.sa_flags & ~SA_RESETHAND;
-    if (sigaction(SIGTERM, &mine, NULL) != 0) {
+    if (wrap(&current) != 0) {
         STORE(armed, 0);
         return -1;
     }
@@ -198,17 +207,12 @@ void afrp_term_grace_clear(void)
    armed: ours put back in front of it. */
 void afrp_term_grace_rewrap(void)
 {
-    struct sigaction current, mine;
+    struct sigaction current;
     if (!LOAD(armed) || sigaction(SIGTERM, NULL, &current) != 0
         || !(current.sa_flags & SA_SIGINFO) || current.sa_sigaction == NULL
         || current.sa_sigaction == on_term)
         return;
-    runtime_action = current;
-    memset(&mine, 0, sizeof mine);
-    mine.sa_sigaction = on_term;
-    mine.sa_mask = current.sa_mask;
-    mine.sa_flags = current.sa_flags & ~SA_RESETHAND;
-    sigaction(SIGTERM, &mine, NULL);
+    wrap(&current);
 }
 
 /* SIGTERM's handler put back as it was when the watchdog was armed (unless
