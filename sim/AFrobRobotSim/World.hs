@@ -69,6 +69,7 @@ module AFrobRobotSim.World
 
 import qualified Data.Map.Strict as M
 import qualified Data.Set        as S
+import           Numeric         (showFFloat)
 
 import           AFRP.Geometry
 import           AFrob.Dimensions
@@ -226,10 +227,14 @@ notesBounds = Bounds worldXMin worldYMin worldXMax worldYMax
 -- share an id; nothing overlaps at time 0 where the physics could not
 -- untangle it: a robot with a wall, block, ball or another robot, a ball
 -- with a wall or block (touching is allowed, to within a nanometre for
--- rounding; walls and blocks may overlap
--- each other, and balls each other). Returns the problems, each naming the
--- object(s), in the order of the objects (a problem between two objects
--- comes with the later one), or @Right ()@. At most 'maxProblems' are
+-- rounding; walls and blocks may overlap each other, and balls each
+-- other); and the balls' discs cover no more than the floor that the
+-- robots leave (the world's area less the robots' discs: more balls could
+-- never all lie apart, and the physics would push at their pile at every
+-- step, for ever; reported at the first ball past that area, with the
+-- figures). Returns the problems, each naming the object(s), in the order
+-- of the objects (a problem between two objects comes with the later
+-- one), or @Right ()@. At most 'maxProblems' are
 -- listed, then one line saying how many more there are.
 validateWorld :: WorldTemplate -> Either [String] ()
 validateWorld = validateWorldIn notesBounds
@@ -293,6 +298,7 @@ worldProblems bounds labelled = concatMap problemsOf indexed
           [ (i, name lo ++ " has the same id as " ++ name (labelledAt j))
           | Just k <- [robotKindOf o], Just j <- [M.lookup (k, otRId o) firstWithId], j < i ]
           ++ [ (i, name lo ++ " overlaps " ++ name (labelledAt j)) | j <- overlapsBefore i o ]
+          ++ [ (i, name lo ++ ": " ++ overfullMessage n) | Just (j, n) <- [overfull], j == i ]
     coords o = let Point2 x y = otPos o
                in x : y : maybe [] (const [otHdng o]) (robotKindOf o)
     isFinite v = not (isNaN v || isInfinite v)
@@ -305,6 +311,26 @@ worldProblems bounds labelled = concatMap problemsOf indexed
       OTSize {} -> False
       _         -> True
     arr = M.fromList [ (i, lo) | (i, lo) <- indexed ]
+    -- The balls cannot all lie apart once their discs' area exceeds the
+    -- floor's less the robots' (robots overlap nothing, so theirs is a
+    -- plain sum): the first placed ball past that point, and how many
+    -- balls that makes. (A pile that can never spread keeps nearly every
+    -- pair in contact at every step: 10,000 balls in the notes' world took
+    -- about 18 minutes a simulated second.)
+    floorArea  = (x1 - x0) * (y1 - y0)
+    robotsArea = fromIntegral (length [ () | (_, o) <- placed, robotKindOf o /= Nothing ])
+                 * discArea simbotDiameter
+    overfull   = case [ (i, n) | (n, i) <- zip [1 :: Int ..] [ i | (i, OTBall {}) <- placed ]
+                               , fromIntegral n * discArea ballDiameter > floorArea - robotsArea ] of
+                   first : _ -> Just first
+                   []        -> Nothing
+    overfullMessage n =
+      "the " ++ show n ++ " balls up to this one cover " ++ squareMetres (fromIntegral n * discArea ballDiameter)
+      ++ ", more than the " ++ squareMetres (floorArea - robotsArea) ++ " of floor "
+      ++ (if robotsArea > 0 then "that the robots leave (the world's " ++ squareMetres floorArea
+                                 ++ " less the robots' " ++ squareMetres robotsArea ++ ")"
+                            else "the world has")
+      ++ ": they can never all lie apart, and a pile that cannot spread stalls the simulation"
     labelledAt j = arr M.! j
     firstWithId = M.fromListWith min [ ((k, otRId o), i) | (i, o) <- placed, Just k <- [robotKindOf o] ]
     -- The placed objects on a grid of 1 m cells (no object is larger), each
@@ -330,6 +356,14 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     overlapsBefore i o =
       S.toAscList (S.fromList [ j | c <- cellsOf o, k <- against (classOf o), (j, p) <- M.findWithDefault [] (k, c) grid
                                   , j < i, overlapAtStart o p ])
+
+-- | The area of a disc of the given diameter, in square metres.
+discArea :: Length -> Double
+discArea d = pi * (d / 2) * (d / 2)
+
+-- | An area for a message: @"100.02 m^2"@.
+squareMetres :: Double -> String
+squareMetres a = showFFloat (Just 2) a " m^2"
 
 -- | Do two objects overlap (more than touch) where the physics could not
 -- separate them: a robot and anything, or a ball and a wall or block?

@@ -98,9 +98,37 @@ spec = do
     it "checks a pile of 5000 balls and one of 5000 blocks, not pair by pair (they may overlap their own kind)" $ do
       -- (about 0.1 s; pair by pair it took minutes: the bound is that
       -- guard, generous for a loaded machine, not a measure of speed)
-      let piles = OTSize 10 10 : replicate 5000 (OTBall (Point2 (-2) (-2))) ++ replicate 5000 (OTBlock (Point2 2 2))
+      let piles = OTSize 30 30 : replicate 5000 (OTBall (Point2 (-2) (-2))) ++ replicate 5000 (OTBlock (Point2 2 2))
       r <- timeout 30000000 (evaluate (length (problems piles)))
       r `shouldBe` Just 0
+  describe "validateWorld: no more balls than the floor holds" $ do
+    let ball  = OTBall (Point2 0 0)
+        robot = OTSimbotA 1 (Point2 3 3) 0
+    it "accepts 1414 balls piled in the notes' 100 m^2 (99.95 m^2 of discs) and refuses the 1415th" $ do
+      problems (replicate 1414 ball) `shouldBe` []
+      problems (replicate 1415 ball)
+        `shouldBe` [ "ball at (0.0, 0.0): the 1415 balls up to this one cover 100.02 m^2, more than the "
+                     ++ "100.00 m^2 of floor the world has: they can never all lie apart, and a pile "
+                     ++ "that cannot spread stalls the simulation" ]
+    it "reports the first ball past the area, once, however many follow" $
+      map fst (worldProblems notesBounds (map ((,) "") (OTBlock (Point2 4 4) : replicate 3000 ball)))
+        `shouldBe` [1415]
+    it "takes the robots' discs off the floor, wherever they stand in the list" $ do
+      -- one robot: 0.20 m^2, so 99.80 m^2 for the balls: 1411 (99.74) fit, 1412 (99.81) do not
+      problems (replicate 1411 ball ++ [robot]) `shouldBe` []
+      map fst (worldProblems notesBounds (map ((,) "") (replicate 1412 ball ++ [robot])))
+        `shouldBe` [1411]
+      problems (robot : replicate 1412 ball)
+        `shouldSatisfy` (\ps -> case ps of
+                           [p] -> "the 1412 balls up to this one cover 99.81 m^2, more than the 99.80 m^2 of floor that the robots leave (the world's 100.00 m^2 less the robots' 0.20 m^2)" `isInfixOf` p
+                           _   -> False)
+    it "measures the floor by the world's size" $ do
+      problems (OTSize 20 10 : replicate 2800 ball) `shouldBe` []
+      problems (OTSize 20 10 : replicate 2830 ball) `shouldSatisfy` ((== 1) . length)
+    it "counts only the balls inside the world" $
+      problems (replicate 1414 ball ++ [OTBall (Point2 20 0)])
+        `shouldBe` ["ball at (20.0, 0.0): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"]
+  describe "validateWorld: ids" $
     it "names both robots that share an id" $
       problems [OTSimbotB 2 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 0) 0]
         `shouldBe` ["SimbotB 2 at (2.0, 0.0) has the same id as SimbotB 2 at (0.0, 0.0)"]
