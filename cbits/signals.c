@@ -15,8 +15,11 @@
  * from the runtime (no collection can start, and with one capability no
  * handler can run), and the program would go on for ever, SIGTERM or
  * not. So, while a run may be stopped, the handler of SIGTERM installed
- * here wakes a thread of its own, made once (with sem_post, which a
- * signal handler may call), before it calls the runtime's handler. That thread waits
+ * here wakes a thread of its own, made once, before it calls the
+ * runtime's handler: it writes a byte into a pipe that the thread reads
+ * (write is safe in a signal handler; a pipe, rather than a semaphore,
+ * because unnamed semaphores do not exist on every POSIX system, macOS's
+ * among them, where the watchdog would silently be missing). That thread waits
  * for the Haskell side to say that the runtime is alive (after a
  * collection has completed, which needs every capability:
  * `afrp_term_grace_clear`); if that does not come within the grace, it
@@ -30,8 +33,8 @@
  * watched. POSIX only: the package builds it on every system but Windows.
  */
 #include <errno.h>
+#include <fcntl.h>
 #include <pthread.h>
-#include <semaphore.h>
 #include <signal.h>
 #include <stddef.h>
 #include <string.h>
@@ -51,14 +54,15 @@ int afrp_signal_ignored(int sig)
    `generation`: counts the arms, so that a countdown begun for one run
    never ends another. Read and written with the compiler's atomic
    builtins (the handler runs on any thread). The watchdog's thread is
-   made at the first arm and lives as long as the program, asleep on its
-   semaphore when there is nothing to watch. */
+   made at the first arm and lives as long as the program, asleep reading
+   its pipe when there is nothing to watch (each byte written is one
+   wake-up). */
 static int armed = 0;
 static int pending = 0;
 static int generation = 0;
 static int clears = 0;     /* counts the clears, so that a countdown ends at one */
 static int grace_seconds = 0;
-static sem_t wake;
+static int wake_read = -1, wake_write = -1;   /* the pipe's ends */
 static pthread_once_t started = PTHREAD_ONCE_INIT;
 static int start_failed = 0;
 static struct sigaction runtime_action;   /* the handler called after ours */
@@ -68,11 +72,34 @@ static size_t grace_length = 0;
 #define LOAD(x)     __atomic_load_n(&(x), __ATOMIC_SEQ_CST)
 #define STORE(x, v) __atomic_store_n(&(x), (v), __ATOMIC_SEQ_CST)
 
+/* The watchdog woken (once for each call). The write end does not block:
+   should the pipe ever be full, the watchdog has wake-ups waiting anyway. */
+static void wake(void)
+{
+    char byte = 0;
+    ssize_t n;
+    do
+        n = write(wake_write, &byte, 1);
+    while (n < 0 && errno == EINTR);
+}
+
+/* The next wake-up waited for; 0 when one came, -1 should the pipe fail
+   (it never closes: both ends live as long as the program). */
+static int wait_for_wake(void)
+{
+    char byte;
+    ssize_t n;
+    do
+        n = read(wake_read, &byte, 1);
+    while (n < 0 && errno == EINTR);
+    return n == 1 ? 0 : -1;
+}
+
 static void on_term(int sig, siginfo_t *info, void *context)
 {
     int saved = errno;
     if (LOAD(armed) && __atomic_exchange_n(&pending, 1, __ATOMIC_SEQ_CST) == 0)
-        sem_post(&wake);
+        wake();
     errno = saved;
     runtime_action.sa_sigaction(sig, info, context);
 }
@@ -115,8 +142,8 @@ static void *watchdog(void *unused)
         int gen, cleared;
         double deadline;
         struct timespec step = { 0, 50 * 1000 * 1000 };
-        while (sem_wait(&wake) != 0 && errno == EINTR)
-            ;
+        if (wait_for_wake() != 0)
+            return NULL;   /* (no pipe: unreachable, as arm refuses without one) */
         gen = LOAD(generation);
         cleared = LOAD(clears);
         if (!LOAD(armed) || !LOAD(pending))
@@ -128,7 +155,7 @@ static void *watchdog(void *unused)
         if (LOAD(armed) && LOAD(pending) && LOAD(generation) == gen && LOAD(clears) == cleared)
             end_by_sigterm();
         if (LOAD(pending))
-            sem_post(&wake);   /* (a signal that came after a clear: its own countdown) */
+            wake();   /* (a signal that came after a clear: its own countdown) */
     }
     return NULL;
 }
@@ -137,10 +164,22 @@ static void start_watchdog(void)
 {
     pthread_t thread;
     pthread_attr_t attr;
-    if (sem_init(&wake, 0, 0) != 0) {
+    int ends[2];
+    /* (closed in the programs the run starts, ffmpeg's say; the write end
+       never blocks the signal handler) */
+    if (pipe(ends) != 0) {
         start_failed = 1;
         return;
     }
+    if (fcntl(ends[0], F_SETFD, FD_CLOEXEC) != 0 || fcntl(ends[1], F_SETFD, FD_CLOEXEC) != 0
+        || fcntl(ends[1], F_SETFL, fcntl(ends[1], F_GETFL) | O_NONBLOCK) != 0) {
+        close(ends[0]);
+        close(ends[1]);
+        start_failed = 1;
+        return;
+    }
+    wake_read = ends[0];
+    wake_write = ends[1];
     pthread_attr_init(&attr);
     pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
     if (pthread_create(&thread, &attr, watchdog, NULL) != 0)
@@ -228,5 +267,5 @@ void afrp_term_grace_remove(void)
         sigaction(SIGTERM, &runtime_action, NULL);
     STORE(armed, 0);
     STORE(pending, 0);
-    sem_post(&wake);
+    wake();
 }
