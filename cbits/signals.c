@@ -241,6 +241,20 @@ void afrp_term_grace_clear(void)
     STORE(pending, 0);
 }
 
+/* The runtime has acted, and is now asked to act again: a countdown of
+   its own (any running is ended), which the next clear or expect ends.
+   For the stop of a run, from the moment it is decided until it has
+   reached the run's thread, with an expect after each collection the
+   Haskell side completes meanwhile. Nothing when not armed. */
+void afrp_term_grace_expect(void)
+{
+    if (!LOAD(armed))
+        return;
+    __atomic_add_fetch(&clears, 1, __ATOMIC_SEQ_CST);
+    if (__atomic_exchange_n(&pending, 1, __ATOMIC_SEQ_CST) == 0)
+        wake();
+}
+
 /* After the runtime's handler of SIGTERM has been installed again (by
    another run's `installHandler`, or as it ends), while a watchdog is
    armed: ours put back in front of it. */

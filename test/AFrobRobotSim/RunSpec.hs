@@ -3,7 +3,7 @@
 -- file round trip, every reported fault, determinism.
 module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 
-import           Control.Exception   (finally, try)
+import           Control.Exception   (AsyncException (UserInterrupt), evaluate, finally, try, uninterruptibleMask_)
 import           Control.Monad       (forM_, replicateM_)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
@@ -33,7 +33,7 @@ import           AFrobRobotSim
 import           AFrobRobotSim.Log   (LogFrame (..), LogHeader (..), LogRect (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
 import           AFrobRobotSim.Replay (writeReplayFromLog)
-import           AFrobRobotSim.Run.Signals (stuckGrace)
+import           AFrobRobotSim.Run.Signals (Stopper, interruptible, signalReceived, stuckGrace)
 import           TestUtil (withCaps, withTempDir)
 
 world :: WorldTemplate
@@ -133,6 +133,12 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- @log.fifo@, for the parent to read, or not.
 -- @spin@: frames and the log of a SimbotA that drives for half a second,
 -- then makes the file @spinning@ and loops for ever without allocating.
+-- @held@: 'interruptible' around a thread that holds stops off (an
+-- uninterruptible mask), makes the file @ready@, waits for a signal, then
+-- makes the file @spinning@ and loops for ever without allocating.
+-- @holdoff@: the same, but after the signal it waits 'stuckGrace' + 3
+-- seconds, then takes the stop: prints @stopped@ and ends with exit code
+-- 0.
 child :: String -> IO ()
 child arg = case break (== ':') arg of
   ("hour", _ : dir) -> runSimWith defaultSimOptions
@@ -163,8 +169,23 @@ child arg = case break (== ':') arg of
   ("piped", _ : dir) -> runSimWith defaultSimOptions
     { optSeconds = 36000, optQuiet = True, optFrames = False, optOut = dir
     , optLog = Just (dir </> "log.fifo"), optSvg = Just (dir </> "run.svg"), optReplay = Nothing } Nothing drive drive
+  ("held", _ : dir) -> interruptible $ \stopper -> uninterruptibleMask_ $ do
+    writeFile (dir </> "ready") ""
+    awaitSignal stopper
+    () <$ evaluate (spinning dir)
+  ("holdoff", _ : dir) -> do
+    r <- try (interruptible $ \stopper -> uninterruptibleMask_ $ do
+                writeFile (dir </> "ready") ""
+                awaitSignal stopper
+                threadDelay ((stuckGrace + 3) * 1000000))
+    putStrLn (case r of
+                Left UserInterrupt -> "stopped"
+                Left e             -> "stopped by " ++ show e
+                Right ()           -> "not stopped")
   _ -> ioError (userError ("unknown child " ++ show arg))
   where
+    awaitSignal :: Stopper -> IO ()
+    awaitSignal stopper = signalReceived stopper >>= maybe (threadDelay 1000 >> awaitSignal stopper) (const (pure ()))
     -- (from 0.5 s on, its wheel speed is a loop that never ends and never
     -- allocates: a step the runtime cannot stop)
     spinner dir _ = localTime >>> arr (\t -> mrFinalize (ddVelDiff (if t < 0.5 then 0.5 else spinning dir) 0.5))
@@ -381,6 +402,34 @@ spec = do
         frames <- framesIn (dir </> "f")
         (length frames > 0, all ((== 15 + 3 * 120 * 120) . BS.length) frames, length (lines err))
           `shouldBe` (True, True, 1)
+  describe "a run's thread that holds the stop off (masked) once the signal has been taken" $
+    forM_ [1, 2 :: Int] $ \caps -> do
+      it ("and then loops without allocating: ended after the grace, saying why (+RTS -N" ++ show caps ++ ")") $
+        withTempDir $ \dir -> do
+          held <- childOn "held" dir caps
+          (_, _, Just herr, ph) <- createProcess held { std_out = NoStream, std_err = CreatePipe }
+          awaitChild "did not begin" (doesFileExist (dir </> "ready")) ph
+          terminateProcess ph
+          err <- hGetContents herr
+          -- (it hung for ever: the runtime had acted once, before the stop
+          -- reached the thread, and was not watched after)
+          done <- timeout 60000000 (length err `seq` waitForProcess ph)
+          _ <- maybe (killChild ph) pure done
+          looped <- doesFileExist (dir </> "spinning")
+          (done `elem` [Just (ExitFailure (-15)), Just (ExitFailure 143)], looped) `shouldBe` (True, True)
+          err `shouldSatisfy` (("SIGTERM received, but the runtime has not been able to act on it within "
+                                ++ show stuckGrace ++ " s") `isInfixOf`)
+      it ("and takes it after more than the grace, the runtime acting all along: not cut short (+RTS -N"
+          ++ show caps ++ ")") $ withTempDir $ \dir -> do
+        holdoff <- childOn "holdoff" dir caps
+        (_, Just hout, Just herr, ph) <- createProcess holdoff { std_out = CreatePipe, std_err = CreatePipe }
+        awaitChild "did not begin" (doesFileExist (dir </> "ready")) ph
+        terminateProcess ph
+        out <- hGetContents hout
+        err <- hGetContents herr
+        done <- timeout 60000000 (length out `seq` length err `seq` waitForProcess ph)
+        _ <- maybe (killChild ph) pure done
+        (done, out, err) `shouldBe` (Just ExitSuccess, "stopped\n", "")
   describe "a run slow to stop (its log written into a pipe nobody reads for a while)" $
     forM_ [1, 2 :: Int] $ \caps ->
       it ("is stopped by SIGTERM once the pipe is read again, after more than the grace, its outputs written (+RTS -N"

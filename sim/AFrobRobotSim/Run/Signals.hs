@@ -36,11 +36,11 @@
 -- while, a video being assembled) has a runtime that acts, and is not cut
 -- short. No other signal is used, and one run is watched at a time (a
 -- second run at once in the same program gets no watchdog of its own,
--- and keeps the first's in front of its handler). One window remains: the
--- runtime is seen to act once per signal, before the run is stopped, so a
--- loop entered after that (in the few instructions before the stop
--- reaches the run's thread) is not watched until the next @SIGTERM@. A program
--- built without @-threaded@ gets none either: its runtime waits, whole,
+-- and keeps the first's in front of its handler). The runtime is watched
+-- until the stop has reached the run's thread, so a loop entered after
+-- the signal has been taken (before the stop arrives, or while the run's
+-- thread holds it off) ends the same way. A program built without
+-- @-threaded@ gets no watchdog: its runtime waits, whole,
 -- for a blocking call such as the video's assembly, and could not be
 -- told from a stuck one. A first Ctrl-C does not stop such a loop either;
 -- a second ends the program at once, writing nothing, as the runtime
@@ -58,7 +58,8 @@ import           Control.Concurrent (ThreadId, mkWeakThreadId, myThreadId)
 import           System.Mem.Weak    (Weak, deRefWeak)
 import           Data.IORef
 #if !defined(mingw32_HOST_OS)
-import           Control.Concurrent (rtsSupportsBoundThreads, throwTo)
+import           Control.Concurrent (forkIO, rtsSupportsBoundThreads, throwTo)
+import           Control.Concurrent.MVar (newEmptyMVar, putMVar, readMVar, takeMVar)
 import           Control.Monad      (unless)
 import           Control.Exception  (AsyncException (UserInterrupt), finally)
 import           Foreign.C.String   (CString, withCString)
@@ -66,6 +67,7 @@ import           Foreign.C.Types    (CInt (..))
 import           System.Environment (getProgName)
 import           System.Mem         (performMinorGC)
 import           System.Posix.Signals (Handler (Catch), installHandler, sigTERM)
+import           System.Timeout     (timeout)
 
 -- Whether the system ignores a signal now (cbits/signals.c).
 foreign import ccall unsafe "afrp_signal_ignored"
@@ -79,6 +81,11 @@ foreign import ccall unsafe "afrp_term_grace_arm"
 -- The runtime has acted on the signal: the watchdog waits for the next.
 foreign import ccall unsafe "afrp_term_grace_clear"
   graceClear :: IO ()
+
+-- The runtime is asked to act again: a countdown of the watchdog's own,
+-- ended by the next clear or expect.
+foreign import ccall unsafe "afrp_term_grace_expect"
+  graceExpect :: IO ()
 
 -- The watchdog put back in front of the runtime's handler, if it is
 -- armed and that handler was installed again since.
@@ -137,19 +144,39 @@ interruptible act = do
 #if !defined(mingw32_HOST_OS)
 -- A signal received: noted (the first one), and the run stopped unless it
 -- is writing its outputs or a signal has stopped it already.
+--
+-- The watchdog is told that the runtime has acted once a collection has
+-- completed: it has stopped every capability, so none is held by a loop.
+-- A stop is then watched until it has reached the run's thread: a loop
+-- entered after that collection (or a thread that takes the stop only
+-- once it unmasks, and loops) would keep 'throwTo' waiting for ever. So
+-- the watchdog expects the runtime to act again, from before the stop is
+-- decided (the run's thread may see it decided at once), and a heartbeat
+-- renews that expectation after each collection it completes, every
+-- second, until the stop has been delivered; a runtime held by a loop
+-- completes none, and the grace runs out.
 received :: Stopper -> Int -> IO ()
 received (Stopper t phase) k = do
-  -- (the runtime can act: a collection has stopped every capability, so
-  -- none is held by a loop; the watchdog waits for the next signal)
   performMinorGC
-  graceClear
+  graceExpect
   stop <- atomicModifyIORef' phase $ \(done, got) -> case got of
     Nothing -> ((done, Just k), not done)
     Just _  -> ((done, got), False)
   target <- deRefWeak t
   case target of
-    Just thread | stop -> throwTo thread UserInterrupt
-    _                  -> pure ()
+    Just thread | stop -> do
+      delivered <- newEmptyMVar
+      beaten <- newEmptyMVar
+      _ <- forkIO (heartbeat delivered `finally` putMVar beaten ())
+      throwTo thread UserInterrupt
+        `finally` (putMVar delivered () >> takeMVar beaten >> graceClear)
+    _ -> graceClear
+  where
+    heartbeat delivered = do
+      done <- timeout 1000000 (readMVar delivered)
+      case done of
+        Just () -> pure ()
+        Nothing -> performMinorGC >> graceExpect >> heartbeat delivered
 
 -- What a program stuck past the grace says, @prog@ its name.
 stuckMessage :: String -> String
