@@ -19,11 +19,15 @@
  * runtime's handler: it writes a byte into a pipe that the thread reads
  * (write is safe in a signal handler; a pipe, rather than a semaphore,
  * because unnamed semaphores do not exist on every POSIX system, macOS's
- * among them, where the watchdog would silently be missing). That thread waits
- * for the Haskell side to say that the runtime is alive (after a
- * collection has completed, which needs every capability:
- * `afrp_term_grace_clear`); if that does not come within the grace, it
- * writes the message it was given to standard error and ends the
+ * among them, where the watchdog would silently be missing). That thread
+ * counts the grace down, and the Haskell side says when the runtime has
+ * acted: each time one of its collections completes (which needs every
+ * capability), from the signal's handler and, while a stop is on its way
+ * to the run's thread, from a heartbeat every second
+ * (`afrp_term_grace_begin`, `afrp_term_grace_renew`: a countdown begins
+ * anew), and once no handler is at work any more (`afrp_term_grace_end`:
+ * nothing to count until the next signal). If a countdown runs out, the
+ * thread writes the message it was given to standard error and ends the
  * program by SIGTERM after all (exit status 143 in a shell), as it would
  * have ended without a handler. No signal other than SIGTERM is touched.
  *
@@ -32,6 +36,9 @@
  * is wrapped again by `afrp_term_grace_rewrap`, so that the first stays
  * watched. POSIX only: the package builds it on every system but Windows.
  */
+#if defined(__linux__)
+#define _GNU_SOURCE   /* pipe2 */
+#endif
 #include <errno.h>
 #include <fcntl.h>
 #include <pthread.h>
@@ -49,8 +56,11 @@ int afrp_signal_ignored(int sig)
     return old.sa_handler == SIG_IGN;
 }
 
-/* The watchdog's state. `armed`: between arm and remove; `pending`: a
-   SIGTERM has come that the runtime has not yet been seen to act on;
+/* The watchdog's state. `armed`: between arm and remove; `pending`: the
+   runtime is expected to act (a SIGTERM has come, or a stop is on its
+   way) and a countdown runs; `holders`: the Haskell handlers at work
+   (each between a begin and its end; while any is, the runtime stays
+   expected to act);
    `generation`: counts the arms, so that a countdown begun for one run
    never ends another. Read and written with the compiler's atomic
    builtins (the handler runs on any thread). The watchdog's thread is
@@ -60,7 +70,8 @@ int afrp_signal_ignored(int sig)
 static int armed = 0;
 static int pending = 0;
 static int generation = 0;
-static int clears = 0;     /* counts the clears, so that a countdown ends at one */
+static int clears = 0;     /* counts the runtime's acts, so that a countdown ends at one */
+static int holders = 0;
 static int grace_seconds = 0;
 static int wake_read = -1, wake_write = -1;   /* the pipe's ends */
 static pthread_once_t started = PTHREAD_ONCE_INIT;
@@ -155,7 +166,7 @@ static void *watchdog(void *unused)
         if (LOAD(armed) && LOAD(pending) && LOAD(generation) == gen && LOAD(clears) == cleared)
             end_by_sigterm();
         if (LOAD(pending))
-            wake();   /* (a signal that came after a clear: its own countdown) */
+            wake();   /* (still expected, after a renewal: a countdown of its own) */
     }
     return NULL;
 }
@@ -165,14 +176,29 @@ static void start_watchdog(void)
     pthread_t thread;
     pthread_attr_t attr;
     int ends[2];
-    /* (closed in the programs the run starts, ffmpeg's say; the write end
-       never blocks the signal handler) */
+    int flags;
+    /* (closed in the programs the run starts, ffmpeg's say, from the
+       start where the system can: pipe2; the write end never blocks the
+       signal handler) */
+#if defined(__linux__)
+    if (pipe2(ends, O_CLOEXEC) != 0) {
+        start_failed = 1;
+        return;
+    }
+#else
     if (pipe(ends) != 0) {
         start_failed = 1;
         return;
     }
-    if (fcntl(ends[0], F_SETFD, FD_CLOEXEC) != 0 || fcntl(ends[1], F_SETFD, FD_CLOEXEC) != 0
-        || fcntl(ends[1], F_SETFL, fcntl(ends[1], F_GETFL) | O_NONBLOCK) != 0) {
+    if (fcntl(ends[0], F_SETFD, FD_CLOEXEC) != 0 || fcntl(ends[1], F_SETFD, FD_CLOEXEC) != 0) {
+        close(ends[0]);
+        close(ends[1]);
+        start_failed = 1;
+        return;
+    }
+#endif
+    flags = fcntl(ends[1], F_GETFL);
+    if (flags < 0 || fcntl(ends[1], F_SETFL, flags | O_NONBLOCK) != 0) {
         close(ends[0]);
         close(ends[1]);
         start_failed = 1;
@@ -182,8 +208,12 @@ static void start_watchdog(void)
     wake_write = ends[1];
     pthread_attr_init(&attr);
     pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
-    if (pthread_create(&thread, &attr, watchdog, NULL) != 0)
+    if (pthread_create(&thread, &attr, watchdog, NULL) != 0) {
+        close(wake_read);
+        close(wake_write);
+        wake_read = wake_write = -1;
         start_failed = 1;
+    }
     pthread_attr_destroy(&attr);
 }
 
@@ -233,26 +263,39 @@ int afrp_term_grace_arm(int seconds, const char *message)
     return 0;
 }
 
-/* The runtime has acted since the last SIGTERM: the watchdog waits for
-   the next one. */
-void afrp_term_grace_clear(void)
-{
-    __atomic_add_fetch(&clears, 1, __ATOMIC_SEQ_CST);
-    STORE(pending, 0);
-}
-
-/* The runtime has acted, and is now asked to act again: a countdown of
-   its own (any running is ended), which the next clear or expect ends.
-   For the stop of a run, from the moment it is decided until it has
-   reached the run's thread, with an expect after each collection the
-   Haskell side completes meanwhile. Nothing when not armed. */
-void afrp_term_grace_expect(void)
+/* The runtime has acted (a collection has completed), and is expected to
+   act again: the running countdown ended, a new one begun. Nothing when
+   not armed. */
+void afrp_term_grace_renew(void)
 {
     if (!LOAD(armed))
         return;
     __atomic_add_fetch(&clears, 1, __ATOMIC_SEQ_CST);
     if (__atomic_exchange_n(&pending, 1, __ATOMIC_SEQ_CST) == 0)
         wake();
+}
+
+/* A Haskell handler of SIGTERM at work, its collection completed: a
+   renewal, and the runtime stays expected to act until the handler's
+   end (so that another handler, ending first, does not end the watch of
+   a stop still on its way). */
+void afrp_term_grace_begin(void)
+{
+    __atomic_add_fetch(&holders, 1, __ATOMIC_SEQ_CST);
+    afrp_term_grace_renew();
+}
+
+/* A handler's work done (its stop delivered, or none to deliver): when it
+   was the last at work, the runtime has acted on every signal so far, and
+   the watchdog waits for the next one. (Only the first signal's handler
+   delivers a stop, and the others decide after it has begun, so the count
+   reaches 0 only once its stop has been delivered.) */
+void afrp_term_grace_end(void)
+{
+    if (__atomic_sub_fetch(&holders, 1, __ATOMIC_SEQ_CST) == 0) {
+        __atomic_add_fetch(&clears, 1, __ATOMIC_SEQ_CST);
+        STORE(pending, 0);
+    }
 }
 
 /* After the runtime's handler of SIGTERM has been installed again (by

@@ -313,20 +313,26 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     arr = M.fromList [ (i, lo) | (i, lo) <- indexed ]
     -- The balls cannot all lie apart once their discs' area exceeds the
     -- floor's less the robots' (robots overlap nothing, so theirs is a
-    -- plain sum): the first placed ball past that point, and how many
-    -- balls that makes. (A pile that can never spread keeps nearly every
-    -- pair in contact at every step: 10,000 balls in the notes' world took
-    -- about 18 minutes a simulated second.)
+    -- plain sum; robots that do overlap are reported, and the floor they
+    -- leave is then taken as no less than 0): the first placed ball past
+    -- that point, and how many balls that makes. (A pile that can never
+    -- spread keeps nearly every pair in contact at every step: 10,000
+    -- balls on one spot of the notes' world took 8.5 minutes a simulated
+    -- second.) Discs never cover a floor whole, so this is a bound that
+    -- a world can pass and still not hold its balls apart (their densest
+    -- packing covers about 91%).
     floorArea  = (x1 - x0) * (y1 - y0)
     robotsArea = fromIntegral (length [ () | (_, o) <- placed, robotKindOf o /= Nothing ])
                  * discArea simbotDiameter
+    floorLeft  = max 0 (floorArea - robotsArea)
     overfull   = case [ (i, n) | (n, i) <- zip [1 :: Int ..] [ i | (i, OTBall {}) <- placed ]
-                               , fromIntegral n * discArea ballDiameter > floorArea - robotsArea ] of
+                               , fromIntegral n * discArea ballDiameter > floorLeft ] of
                    first : _ -> Just first
                    []        -> Nothing
     overfullMessage n =
-      "the " ++ show n ++ " balls up to this one cover " ++ squareMetres (fromIntegral n * discArea ballDiameter)
-      ++ ", more than the " ++ squareMetres (floorArea - robotsArea) ++ " of floor "
+      (if n == 1 then "this ball covers " else "the " ++ show n ++ " balls up to this one cover ")
+      ++ squareMetres (fromIntegral n * discArea ballDiameter)
+      ++ ", more than the " ++ squareMetres floorLeft ++ " of floor "
       ++ (if robotsArea > 0 then "that the robots leave (the world's " ++ squareMetres floorArea
                                  ++ " less the robots' " ++ squareMetres robotsArea ++ ")"
                             else "the world has")
@@ -356,7 +362,6 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     overlapsBefore i o =
       S.toAscList (S.fromList [ j | c <- cellsOf o, k <- against (classOf o), (j, p) <- M.findWithDefault [] (k, c) grid
                                   , j < i, overlapAtStart o p ])
-
 -- | The area of a disc of the given diameter, in square metres.
 discArea :: Length -> Double
 discArea d = pi * (d / 2) * (d / 2)

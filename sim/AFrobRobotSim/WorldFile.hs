@@ -146,8 +146,8 @@
 -- 'parseWorld' checks the syntax only. 'readWorldFile' and
 -- 'readWorldBytes' also check the world with
 -- 'AFrobRobotSim.World.validateWorld' (objects inside the world, ids
--- unique, nothing overlapping at time 0, no more balls than the floor
--- holds), each problem reported as
+-- unique, nothing overlapping at time 0, the balls' discs no larger in
+-- all than the floor the robots leave), each problem reported as
 -- @FILE:LINE: ...@ with the lines of the objects involved.
 --
 -- = Printing

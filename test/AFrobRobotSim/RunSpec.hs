@@ -13,7 +13,7 @@ import           System.Process      (CreateProcess (..), ProcessHandle, StdStre
                                       readCreateProcessWithExitCode,
                                       terminateProcess, waitForProcess)
 import           System.Posix.Files  (createLink, createNamedPipe)
-import           System.Posix.Signals (signalProcess, sigKILL)
+import           System.Posix.Signals (raiseSignal, signalProcess, sigKILL, sigTERM)
 import           System.IO.Unsafe    (unsafePerformIO)
 import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
@@ -136,6 +136,8 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- @held@: 'interruptible' around a thread that holds stops off (an
 -- uninterruptible mask), makes the file @ready@, waits for a signal, then
 -- makes the file @spinning@ and loops for ever without allocating.
+-- @heldtwice@: the same, with a second @SIGTERM@ sent to itself (after
+-- 300 ms) before the loop (200 ms after that).
 -- @holdoff@: the same, but after the signal it waits 'stuckGrace' + 3
 -- seconds, then takes the stop: prints @stopped@ and ends with exit code
 -- 0.
@@ -172,6 +174,13 @@ child arg = case break (== ':') arg of
   ("held", _ : dir) -> interruptible $ \stopper -> uninterruptibleMask_ $ do
     writeFile (dir </> "ready") ""
     awaitSignal stopper
+    () <$ evaluate (spinning dir)
+  ("heldtwice", _ : dir) -> interruptible $ \stopper -> uninterruptibleMask_ $ do
+    writeFile (dir </> "ready") ""
+    awaitSignal stopper
+    threadDelay 300000
+    raiseSignal sigTERM
+    threadDelay 200000
     () <$ evaluate (spinning dir)
   ("holdoff", _ : dir) -> do
     r <- try (interruptible $ \stopper -> uninterruptibleMask_ $ do
@@ -404,15 +413,17 @@ spec = do
           `shouldBe` (True, True, 1)
   describe "a run's thread that holds the stop off (masked) once the signal has been taken" $
     forM_ [1, 2 :: Int] $ \caps -> do
-      it ("and then loops without allocating: ended after the grace, saying why (+RTS -N" ++ show caps ++ ")") $
-        withTempDir $ \dir -> do
-          held <- childOn "held" dir caps
+      forM_ [("held", ""), ("heldtwice", ", a second SIGTERM come meanwhile")] $ \(what, how) ->
+        it ("and then loops without allocating" ++ how ++ ": ended after the grace, saying why (+RTS -N"
+            ++ show caps ++ ")") $ withTempDir $ \dir -> do
+          held <- childOn what dir caps
           (_, _, Just herr, ph) <- createProcess held { std_out = NoStream, std_err = CreatePipe }
           awaitChild "did not begin" (doesFileExist (dir </> "ready")) ph
           terminateProcess ph
           err <- hGetContents herr
           -- (it hung for ever: the runtime had acted once, before the stop
-          -- reached the thread, and was not watched after)
+          -- reached the thread, and was not watched after; with a second
+          -- signal, that signal's handler ended the watch)
           done <- timeout 60000000 (length err `seq` waitForProcess ph)
           _ <- maybe (killChild ph) pure done
           looped <- doesFileExist (dir </> "spinning")

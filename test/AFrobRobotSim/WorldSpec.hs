@@ -101,7 +101,7 @@ spec = do
       let piles = OTSize 30 30 : replicate 5000 (OTBall (Point2 (-2) (-2))) ++ replicate 5000 (OTBlock (Point2 2 2))
       r <- timeout 30000000 (evaluate (length (problems piles)))
       r `shouldBe` Just 0
-  describe "validateWorld: no more balls than the floor holds" $ do
+  describe "validateWorld: the balls' discs no larger in all than the floor the robots leave" $ do
     let ball  = OTBall (Point2 0 0)
         robot = OTSimbotA 1 (Point2 3 3) 0
     it "accepts 1414 balls piled in the notes' 100 m^2 (99.95 m^2 of discs) and refuses the 1415th" $ do
@@ -123,8 +123,13 @@ spec = do
                            [p] -> "the 1412 balls up to this one cover 99.81 m^2, more than the 99.80 m^2 of floor that the robots leave (the world's 100.00 m^2 less the robots' 0.20 m^2)" `isInfixOf` p
                            _   -> False)
     it "measures the floor by the world's size" $ do
-      problems (OTSize 20 10 : replicate 2800 ball) `shouldBe` []
-      problems (OTSize 20 10 : replicate 2830 ball) `shouldSatisfy` ((== 1) . length)
+      -- (200 m^2: 2829 balls cover 199.97, 2830 cover 200.04)
+      problems (OTSize 20 10 : replicate 2829 ball) `shouldBe` []
+      map fst (worldProblems notesBounds (map ((,) "") (OTSize 20 10 : replicate 2830 ball)))
+        `shouldBe` [2830]
+    it "takes robots that overlap (reported) as leaving no floor, and says one ball in the singular" $
+      map snd (worldProblems notesBounds (map ((,) "") (replicate 600 (OTSimbotA 1 (Point2 0 0) 0) ++ [ball])))
+        `shouldSatisfy` (any ("ball at (0.0, 0.0): this ball covers 0.07 m^2, more than the 0.00 m^2 of floor that the robots leave (the world's 100.00 m^2 less the robots' 117.81 m^2)" `isInfixOf`))
     it "counts only the balls inside the world" $
       problems (replicate 1414 ball ++ [OTBall (Point2 20 0)])
         `shouldBe` ["ball at (20.0, 0.0): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"]

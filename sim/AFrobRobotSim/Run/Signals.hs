@@ -78,14 +78,21 @@ foreign import ccall unsafe "afrp_signal_ignored"
 foreign import ccall unsafe "afrp_term_grace_arm"
   graceArm :: CInt -> CString -> IO CInt
 
--- The runtime has acted on the signal: the watchdog waits for the next.
-foreign import ccall unsafe "afrp_term_grace_clear"
-  graceClear :: IO ()
+-- A handler at work, the runtime seen to act (a collection completed):
+-- the watchdog's countdown begins anew, and the runtime stays expected to
+-- act until the handler's 'graceEnd'.
+foreign import ccall unsafe "afrp_term_grace_begin"
+  graceBegin :: IO ()
 
--- The runtime is asked to act again: a countdown of the watchdog's own,
--- ended by the next clear or expect.
-foreign import ccall unsafe "afrp_term_grace_expect"
-  graceExpect :: IO ()
+-- The runtime seen to act again (the heartbeat's collection): the
+-- countdown begins anew.
+foreign import ccall unsafe "afrp_term_grace_renew"
+  graceRenew :: IO ()
+
+-- A handler's work done: when no other is at work, the watchdog waits for
+-- the next signal.
+foreign import ccall unsafe "afrp_term_grace_end"
+  graceEnd :: IO ()
 
 -- The watchdog put back in front of the runtime's handler, if it is
 -- armed and that handler was installed again since.
@@ -145,20 +152,22 @@ interruptible act = do
 -- A signal received: noted (the first one), and the run stopped unless it
 -- is writing its outputs or a signal has stopped it already.
 --
+--
 -- The watchdog is told that the runtime has acted once a collection has
 -- completed: it has stopped every capability, so none is held by a loop.
 -- A stop is then watched until it has reached the run's thread: a loop
 -- entered after that collection (or a thread that takes the stop only
 -- once it unmasks, and loops) would keep 'throwTo' waiting for ever. So
--- the watchdog expects the runtime to act again, from before the stop is
--- decided (the run's thread may see it decided at once), and a heartbeat
--- renews that expectation after each collection it completes, every
--- second, until the stop has been delivered; a runtime held by a loop
--- completes none, and the grace runs out.
+-- the runtime stays expected to act from before the stop is decided (the
+-- run's thread may see it decided at once) until it has been delivered,
+-- with a heartbeat that renews the countdown after each collection it
+-- completes, every second; a runtime held by a loop completes none, and
+-- the grace runs out. A later signal's handler, which stops nothing, does
+-- not end that watch ('graceEnd' ends it when no handler is at work).
 received :: Stopper -> Int -> IO ()
 received (Stopper t phase) k = do
   performMinorGC
-  graceExpect
+  graceBegin
   stop <- atomicModifyIORef' phase $ \(done, got) -> case got of
     Nothing -> ((done, Just k), not done)
     Just _  -> ((done, got), False)
@@ -169,14 +178,14 @@ received (Stopper t phase) k = do
       beaten <- newEmptyMVar
       _ <- forkIO (heartbeat delivered `finally` putMVar beaten ())
       throwTo thread UserInterrupt
-        `finally` (putMVar delivered () >> takeMVar beaten >> graceClear)
-    _ -> graceClear
+        `finally` (putMVar delivered () >> takeMVar beaten >> graceEnd)
+    _ -> graceEnd
   where
     heartbeat delivered = do
       done <- timeout 1000000 (readMVar delivered)
       case done of
         Just () -> pure ()
-        Nothing -> performMinorGC >> graceExpect >> heartbeat delivered
+        Nothing -> performMinorGC >> graceRenew >> heartbeat delivered
 
 -- What a program stuck past the grace says, @prog@ its name.
 stuckMessage :: String -> String
