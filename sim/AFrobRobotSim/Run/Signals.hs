@@ -152,7 +152,6 @@ interruptible act = do
 -- A signal received: noted (the first one), and the run stopped unless it
 -- is writing its outputs or a signal has stopped it already.
 --
---
 -- The watchdog is told that the runtime has acted once a collection has
 -- completed: it has stopped every capability, so none is held by a loop.
 -- A stop is then watched until it has reached the run's thread: a loop
