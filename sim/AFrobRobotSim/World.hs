@@ -362,6 +362,7 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     overlapsBefore i o =
       S.toAscList (S.fromList [ j | c <- cellsOf o, k <- against (classOf o), (j, p) <- M.findWithDefault [] (k, c) grid
                                   , j < i, overlapAtStart o p ])
+
 -- | The area of a disc of the given diameter, in square metres.
 discArea :: Length -> Double
 discArea d = pi * (d / 2) * (d / 2)

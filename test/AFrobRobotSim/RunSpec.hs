@@ -171,17 +171,8 @@ child arg = case break (== ':') arg of
   ("piped", _ : dir) -> runSimWith defaultSimOptions
     { optSeconds = 36000, optQuiet = True, optFrames = False, optOut = dir
     , optLog = Just (dir </> "log.fifo"), optSvg = Just (dir </> "run.svg"), optReplay = Nothing } Nothing drive drive
-  ("held", _ : dir) -> interruptible $ \stopper -> uninterruptibleMask_ $ do
-    writeFile (dir </> "ready") ""
-    awaitSignal stopper
-    () <$ evaluate (spinning dir)
-  ("heldtwice", _ : dir) -> interruptible $ \stopper -> uninterruptibleMask_ $ do
-    writeFile (dir </> "ready") ""
-    awaitSignal stopper
-    threadDelay 300000
-    raiseSignal sigTERM
-    threadDelay 200000
-    () <$ evaluate (spinning dir)
+  ("held", _ : dir) -> heldThenSpin dir (pure ())
+  ("heldtwice", _ : dir) -> heldThenSpin dir (threadDelay 300000 >> raiseSignal sigTERM >> threadDelay 200000)
   ("holdoff", _ : dir) -> do
     r <- try (interruptible $ \stopper -> uninterruptibleMask_ $ do
                 writeFile (dir </> "ready") ""
@@ -195,6 +186,14 @@ child arg = case break (== ':') arg of
   where
     awaitSignal :: Stopper -> IO ()
     awaitSignal stopper = signalReceived stopper >>= maybe (threadDelay 1000 >> awaitSignal stopper) (const (pure ()))
+    -- (holds stops off; once the signal is taken, @meanwhile@, then the
+    -- loop that never allocates)
+    heldThenSpin :: FilePath -> IO () -> IO ()
+    heldThenSpin dir meanwhile = interruptible $ \stopper -> uninterruptibleMask_ $ do
+      writeFile (dir </> "ready") ""
+      awaitSignal stopper
+      meanwhile
+      () <$ evaluate (spinning dir)
     -- (from 0.5 s on, its wheel speed is a loop that never ends and never
     -- allocates: a step the runtime cannot stop)
     spinner dir _ = localTime >>> arr (\t -> mrFinalize (ddVelDiff (if t < 0.5 then 0.5 else spinning dir) 0.5))
@@ -241,6 +240,16 @@ awaitChild what ready ph = go (0 :: Int)
 -- reaped: for a test that gives up on it, leaving nothing behind.
 killChild :: ProcessHandle -> IO ExitCode
 killChild ph = getPid ph >>= mapM_ (signalProcess sigKILL) >> waitForProcess ph
+
+-- | A child ended by the watchdog: by SIGTERM after all, as without a
+-- handler (143 in a shell), within the test's wait (@done@), saying why
+-- on standard error (@err@).
+endedStuck :: Maybe ExitCode -> String -> Expectation
+endedStuck done err = do
+  done `shouldSatisfy` (`elem` [Just (ExitFailure (-15)), Just (ExitFailure 143)])
+  err `shouldSatisfy` (("SIGTERM received, but the runtime has not been able to act on it within "
+                        ++ show stuckGrace ++ " s") `isInfixOf`)
+  err `shouldSatisfy` ("-fno-omit-yields" `isInfixOf`)
 
 -- | The test binary started as the child @what@ (see 'child') on a folder,
 -- with @+RTS -N@ the capabilities given.
@@ -403,11 +412,7 @@ spec = do
         -- not left behind)
         done <- timeout 60000000 (length err `seq` waitForProcess ph)
         _ <- maybe (killChild ph) pure done
-        -- (ended by SIGTERM after all, as without a handler: 143 in a shell)
-        done `shouldSatisfy` (`elem` [Just (ExitFailure (-15)), Just (ExitFailure 143)])
-        err `shouldSatisfy` (("SIGTERM received, but the runtime has not been able to act on it within "
-                              ++ show stuckGrace ++ " s") `isInfixOf`)
-        err `shouldSatisfy` ("-fno-omit-yields" `isInfixOf`)
+        endedStuck done err
         frames <- framesIn (dir </> "f")
         (length frames > 0, all ((== 15 + 3 * 120 * 120) . BS.length) frames, length (lines err))
           `shouldBe` (True, True, 1)
@@ -426,10 +431,8 @@ spec = do
           -- signal, that signal's handler ended the watch)
           done <- timeout 60000000 (length err `seq` waitForProcess ph)
           _ <- maybe (killChild ph) pure done
-          looped <- doesFileExist (dir </> "spinning")
-          (done `elem` [Just (ExitFailure (-15)), Just (ExitFailure 143)], looped) `shouldBe` (True, True)
-          err `shouldSatisfy` (("SIGTERM received, but the runtime has not been able to act on it within "
-                                ++ show stuckGrace ++ " s") `isInfixOf`)
+          doesFileExist (dir </> "spinning") `shouldReturn` True
+          endedStuck done err
       it ("and takes it after more than the grace, the runtime acting all along: not cut short (+RTS -N"
           ++ show caps ++ ")") $ withTempDir $ \dir -> do
         holdoff <- childOn "holdoff" dir caps
