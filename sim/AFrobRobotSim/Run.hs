@@ -74,9 +74,9 @@ import           System.Directory          (createDirectory, doesDirectoryExist,
                                             pathIsSymbolicLink, removeFile, writable)
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
-import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, (</>))
-import           System.IO                 (BufferMode (..), hFlush, hIsTerminalDevice, hPutStr,
-                                            hSetBuffering, stderr)
+import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, takeFileName, (</>))
+import           System.IO                 (BufferMode (..), hClose, hFlush, hIsTerminalDevice, hPutStr,
+                                            hSetBuffering, openTempFile, stderr)
 import           System.Process            (rawSystem)
 import           Text.Printf               (printf)
 
@@ -171,6 +171,9 @@ preflight bounds opts = do
   canon <- forM [ tf | tf@(_, f, _) <- targets, not (device f) ] $ \(flag, f, t) ->
              (,,) flag f <$> fileKey (maybe f id t)
   world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> fileKey w
+  -- (where the frames go, as a canonical path: a file there named as a
+  -- frame is replaced by one)
+  outCanon <- canonicalPath out
   -- a file is written in its folder, or through a link in its target's:
   -- the output folder is created by the run, any other must exist
   let checkIn flag f dir
@@ -195,6 +198,11 @@ preflight bounds opts = do
                , i < j, sameFile c1 c2 ]
             ++ [ flag ++ " " ++ show f ++ " would overwrite the world file " ++ show w
                | (w, cw) <- world, (flag, f, c) <- canon, sameFile c cw ]
+            ++ [ what ++ " " ++ show f ++ " would be overwritten by a frame: --frames writes "
+                 ++ show (out </> framePattern) ++ " (choose another name or folder)"
+               | optFrames opts, (what, f, (c, _)) <- [ (flag, f, c) | (flag, f, c) <- canon ]
+                                                     ++ [ ("--world", w, cw) | (w, cw) <- world ]
+               , takeDirectory c == outCanon, isFrameName (takeFileName c) ]
             ++ concat fileErrs
   -- the output folder is created only when nothing else is wrong
   errs <- if inOut && null pre then checkFolder out else pure pre
@@ -241,9 +249,10 @@ preflight bounds opts = do
          | not there && not parentThere ->
              pure [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir) ++ " does not exist" ]
          | otherwise -> do
+          -- (a file of a new name, so that no file already there is touched)
           r <- try (do unless there (createDirectory dir)
-                       let probe = dir </> ".afrp-write-test"
-                       writeFile probe "ok"
+                       (probe, h) <- openTempFile dir ".afrp-write-test"
+                       hPutStr h "ok" >> hClose h
                        removeFile probe)
           pure $ case r of
             Left (e :: IOException) -> [ writeTo ++ show dir ++ ": " ++ ioErrorText e ]

@@ -692,6 +692,41 @@ spec = do
       out `shouldBe` ""
       err `shouldSatisfy` (("--result " ++ show (dir </> "r.json") ++ " would overwrite the world file") `isInfixOf`)
       readFile wf `shouldReturn` "ball at 0 0\n"
+    it "a world file or an output named as a frame in the frames' folder (a frame would replace it)" $
+      withTempDir $ \dir -> do
+        let fw = dir </> "f"
+            wf = fw </> "frame-000001.ppm"
+        createDirectory fw
+        writeFile wf "ball at 0 0\n"
+        -- the world file itself, and through a link
+        createFileLink wf (dir </> "w.world")
+        forM_ [wf, dir </> "w.world"] $ \w -> do
+          (out, err, r) <- captured (runSimWith (quick fw) { optWorldFile = Just w, optSeconds = 0.2 } Nothing drive drive)
+          r `shouldBe` Left (ExitFailure 2)
+          out `shouldBe` ""
+          err `shouldSatisfy` (("--world " ++ show w ++ " would be overwritten by a frame") `isInfixOf`)
+        -- an output by a frame's name, or its temporary file's, under
+        -- another spelling of the folder
+        forM_ [ (quick (fw ++ "/")) { optSvg = Just (dir </> "." </> "f" </> "frame-000003.ppm.tmp") }
+              , (quick fw) { optResult = Just (fw </> "frame-1000000.ppm") } ] $ \o -> do
+          (_, err, r) <- captured (runSimWith o { optSeconds = 0.2 } (Just world) drive drive)
+          r `shouldBe` Left (ExitFailure 2)
+          err `shouldSatisfy` ("would be overwritten by a frame" `isInfixOf`)
+        readFile wf `shouldReturn` "ball at 0 0\n"
+        -- without --frames nothing is written there: the world is read
+        (_, err, r) <- captured (runSimWith (quick fw) { optWorldFile = Just wf, optFrames = False, optSeconds = 0.2 }
+                                            Nothing drive drive)
+        r `shouldBe` Right ()
+        err `shouldSatisfy` ("has no robots" `isInfixOf`)
+        -- and names that are no frame's are free (the run writes its frames beside them)
+        writeFile (fw </> "frame-1.ppm") "keep"
+        writeFile (fw </> ".afrp-write-test") "keep too"
+        (_, err', r') <- captured (runSimWith (quick fw) { optSeconds = 0.2 } (Just world) drive drive)
+        r' `shouldBe` Right ()
+        err' `shouldBe` ""
+        readFile (fw </> "frame-1.ppm") `shouldReturn` "keep"
+        readFile (fw </> ".afrp-write-test") `shouldReturn` "keep too"
+        doesFileExist (fw </> "frame-000005.ppm") `shouldReturn` True
     it "a world file with no robots (empty, or a generator's output that never came) runs, with a warning" $
       withTempDir $ \dir -> do
         let wf = dir </> "w.world"

@@ -28,6 +28,7 @@ module AFrobRobotSim.Run.Sinks
   , eraseProgress
   , framesSink
   , framePattern
+  , isFrameName
   , svgSink
   , logSink
   , logAndReplaySink
@@ -40,7 +41,8 @@ import           Control.Monad             (unless, when)
 import           Control.Monad.ST          (runST)
 import qualified Data.ByteString           as BS
 import           Data.IORef
-import           Data.List                 (foldl')
+import           Data.Char                 (isDigit)
+import           Data.List                 (foldl', stripPrefix)
 import           System.Directory          (doesFileExist, removeFile, renameFile)
 import           System.FilePath           (takeFileName, (</>))
 import           System.IO                 (hFlush, hPutStr, stderr, stdout)
@@ -284,6 +286,16 @@ writeFrame dir k bytes = do
 -- @frame-%06d.ppm@, numbered from 0.
 framePattern :: String
 framePattern = "frame-%06d.ppm"
+
+-- | Whether a file name is one the frames take in their folder: a
+-- frame's (@frame-@, six digits or more, @.ppm@, as 'framePattern'
+-- writes them) or the temporary file a frame is written to before it is
+-- renamed (the same, then @.tmp@). The run refuses to read or write any
+-- other file by such a name in that folder.
+isFrameName :: String -> Bool
+isFrameName name = case stripPrefix "frame-" name of
+  Just rest | (ds, ext) <- span isDigit rest -> length ds >= 6 && ext `elem` [".ppm", ".ppm.tmp"]
+  _                                          -> False
 
 -- The file of frame number k.
 framePath :: FilePath -> Int -> FilePath
