@@ -166,6 +166,8 @@ readSimParam name v = case readMaybe v of
   Nothing -> Left (flag ++ ": cannot read the value " ++ show v
                    ++ " (write it as Haskell's read reads it: 0.5, 3, True, \"quoted text\")")
   Just x
+    | NotANumber `elem` numerals (show x) ->
+        Left (flag ++ ": the value " ++ show v ++ " is not a number (NaN), which no parameter may be")
     | not (numeralsHeld (numerals v) (numerals (show x))) ->
         Left (flag ++ ": the value " ++ show v ++ " is out of range for this parameter (it would read as "
               ++ show x ++ ")")
@@ -175,9 +177,15 @@ readSimParam name v = case readMaybe v of
 
 -- A number in a text, as Haskell's lexer reads it: an integer (decimal,
 -- hexadecimal or octal, with a minus sign before it), a ratio @a % b@,
--- infinity, or any other floating-point number.
-data Numeral = Whole Integer | Ratio Rational | Infinite | Floating
+-- infinity, NaN, or any other floating-point number (whether it is
+-- zero).
+data Numeral = Whole Integer | Ratio Rational | Infinite | NotANumber | Floating Zero
             | PercentSign   -- (while lexing: the @%@ of a ratio)
+  deriving (Eq)
+
+-- Whether a floating-point number is zero (as written: no digit but 0
+-- before its exponent).
+newtype Zero = Zero Bool
   deriving (Eq)
 
 -- The numbers of a text, in order (nothing inside a quoted string or
@@ -194,7 +202,9 @@ numerals = ratios . numbersIn . tokens
     numbersIn (tok : toks)
       | Just n <- readMaybe tok :: Maybe Integer = Whole n : numbersIn toks
       | tok == "Infinity"                        = Infinite : numbersIn toks
-      | Just _ <- readMaybe tok :: Maybe Double  = Floating : numbersIn toks
+      | tok == "NaN"                             = NotANumber : numbersIn toks
+      | Just _ <- readMaybe tok :: Maybe Double  = Floating (Zero (all (`elem` "0.") (takeWhile (`notElem` "eE") tok)))
+                                                   : numbersIn toks
       | tok == "%"                               = PercentSign : numbersIn toks
       | otherwise                                = numbersIn toks
     numbersIn [] = []
@@ -207,19 +217,24 @@ numerals = ratios . numbersIn . tokens
 -- Whether the numbers written back ('show') hold those written: when
 -- there are as many, every integer or ratio written back must be one
 -- written (as a multiset: a 'Data.Set.Set' or a 'Data.Map.Map' writes
--- its elements back in order, not as given), and infinity only from
--- infinity. A number written back as a floating-point one (a 'Double'
--- written as @3@) is not compared.
+-- its elements back in order, not as given), infinity only from
+-- infinity, and zero only from zero (@1e-400@, which a 'Double' reads as
+-- @0.0@, is not held). A number written back as a floating-point one (a
+-- 'Double' written as @3@) is not otherwise compared.
 numeralsHeld :: [Numeral] -> [Numeral] -> Bool
 numeralsHeld written shown
   | length written /= length shown = True
-  | otherwise = null (exact shown \\ exact written) && count Infinite shown <= count Infinite written
+  | otherwise = null (exact shown \\ exact written) && count (== Infinite) shown <= count (== Infinite) written
+                && count isZero shown <= count isZero written
   where
     exact ns = [ r | n <- ns, Just r <- [asRational n] ]
     asRational (Whole a) = Just (fromInteger a)
     asRational (Ratio a) = Just a
     asRational _         = Nothing
-    count n = length . filter (== n)
+    count p = length . filter p
+    isZero n = case n of
+      Floating (Zero z) -> z
+      _                 -> asRational n == Just 0
 
 -- | What the result line keeps of one robot while the run goes: strict,
 -- so its memory is constant however long the run.

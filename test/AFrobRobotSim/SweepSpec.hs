@@ -323,6 +323,22 @@ spec = do
       (readSimParam "s" "\"text\"" :: Either String String) `shouldBe` Right "text"
       (readSimParam "b" "True" :: Either String Bool) `shouldBe` Right True
       (readSimParam "n" "fast" :: Either String Int) `shouldSatisfy` either ("cannot read the value \"fast\"" `isInfixOf`) (const False)
+    it "readSimParam: NaN is refused, and so is a number that a Double or a Float reads as zero" $ do
+      let refusedAs :: String -> Either String b -> Bool
+          refusedAs what = either (what `isInfixOf`) (const False)
+      (readSimParam "x" "NaN" :: Either String Double)
+        `shouldSatisfy` refusedAs "--param x=NaN: the value \"NaN\" is not a number (NaN), which no parameter may be"
+      (readSimParam "p" "[1, NaN]" :: Either String [Float]) `shouldSatisfy` refusedAs "is not a number (NaN)"
+      (readSimParam "x" "1e-400" :: Either String Double)
+        `shouldSatisfy` refusedAs "the value \"1e-400\" is out of range for this parameter (it would read as 0.0)"
+      (readSimParam "x" "-0.0000000000000000000000000000000000000000000000001" :: Either String Float)
+        `shouldSatisfy` refusedAs "out of range"
+      (readSimParam "p" "Just [2, 5e-324, 1e-330]" :: Either String (Maybe [Double])) `shouldSatisfy` refusedAs "out of range"
+      -- zero written as zero, and the smallest numbers a Double holds, are read
+      (readSimParam "x" "0.0e-400" :: Either String Double) `shouldBe` Right 0
+      (readSimParam "p" "[0, -0.0, 00.000e5]" :: Either String [Double]) `shouldBe` Right [0, 0, 0]
+      (readSimParam "x" "5e-324" :: Either String Double) `shouldBe` Right 5e-324
+      (readSimParam "x" "-Infinity" :: Either String Double) `shouldBe` Right (-1 / 0)
     it "readSimParam: a number the type cannot hold is refused wherever it is in the value" $ do
       let refused :: Either String b -> Bool
           refused = either ("out of range" `isInfixOf`) (const False)
