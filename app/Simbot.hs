@@ -11,12 +11,11 @@ module Main (main) where
 
 import           System.Environment (getArgs, getProgName)
 import           System.Exit        (exitWith, ExitCode (..))
-import           System.IO          (hPutStr, stderr)
 
 import           AFrob
 import           AFrobRobotSim
 import           AFrobRobotSim.Replay (writeReplayFromLog)
-import           AFrobRobotSim.Console (displayPath, endOutput)
+import           AFrobRobotSim.Console (displayPath, endOutput, putErr)
 import           Paper.Section3     (rcAlign, rcFollowLeftWall, rcMoveTo, rcReverse)
 
 main :: IO ()
@@ -32,7 +31,7 @@ main = do
 replayFrom :: [String] -> IO ()
 replayFrom args = do
   prog <- getProgName
-  let failWith msg = hPutStr stderr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure 2)
+  let failWith msg = putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure 2)
   case args of
     ["--replay-from", f, "--replay", o] -> go failWith f o
     ["--replay", o, "--replay-from", f] -> go failWith f o

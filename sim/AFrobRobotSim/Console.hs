@@ -25,6 +25,7 @@ module AFrobRobotSim.Console
   , closedAtStart
   , flushStdout
   , endOutput
+  , putErr
   ) where
 
 import           Control.Exception (IOException, catch, try)
@@ -33,7 +34,8 @@ import           Data.Bits         (testBit)
 import           Data.List         (isInfixOf)
 import           Foreign.C.Types   (CInt (..))
 import           System.Exit       (ExitCode (ExitFailure), exitWith)
-import           System.IO         (hFlush, hGetEncoding, hPutStrLn, hSetEncoding, mkTextEncoding, stderr, stdout)
+import           System.IO         (BufferMode (..), hFlush, hGetEncoding, hPutStr, hSetBuffering, hSetEncoding,
+                                    mkTextEncoding, stderr, stdout)
 
 -- | Text in quotes (a world file's token, a file name), the quote, the
 -- backslash and every character that does not print escaped as a
@@ -142,4 +144,19 @@ printableLine = foldr esc ""
 -- | @endOutput prog@: 'flushStdout', and on failure the message on
 -- standard error, after the program's name, and exit code 1.
 endOutput :: String -> IO ()
-endOutput prog = flushStdout >>= maybe (pure ()) (\m -> hPutStrLn stderr (prog ++ ": " ++ m) >> exitWith (ExitFailure 1))
+endOutput prog = flushStdout >>= maybe (pure ()) (\m -> putErr (prog ++ ": " ++ m ++ "\n") >> exitWith (ExitFailure 1))
+
+-- | Write a message to standard error, in one piece (standard error is
+-- unbuffered, which would write it a character at a time). A failure to
+-- write it is ignored: there is no other place to report it, and what
+-- the program does, its outputs and its exit code, must not hang on it
+-- (standard error closed, @prog 2>&-@, or a full disk behind it: the
+-- message is lost, the run goes on, a fault still exits with its code).
+putErr :: String -> IO ()
+putErr msg = do
+  attempt (hSetBuffering stderr (BlockBuffering Nothing) >> hPutStr stderr msg >> hFlush stderr)
+  -- (a write that failed leaves its bytes in the buffer: unbuffering
+  -- tries them once more, and then they are dropped)
+  attempt (hSetBuffering stderr NoBuffering)
+  where
+    attempt act = act `catch` \(_ :: IOException) -> pure ()

@@ -57,10 +57,10 @@ import           Data.List            (foldl', nub, (\\))
 import           System.IO.Unsafe     (unsafePerformIO)
 import           System.Environment   (getArgs, getProgName)
 import           System.Exit          (ExitCode (..), exitWith)
-import           System.IO            (hPutStrLn, stderr)
 import           Text.Read            (readMaybe)
 
 import           AFRP.Geometry        (norm, point2X, point2Y, (.-.))
+import           AFrobRobotSim.Console (putErr)
 import           AFrobRobotSim.JSON
 import           AFrobRobotSim.Log.Records (LogSummary (..))
 import           AFrobRobotSim.Options
@@ -134,7 +134,7 @@ paramOr name def = do
   where
     refuse msg = do
       prog <- getProgName
-      hPutStrLn stderr (prog ++ ": " ++ msg)
+      putErr (prog ++ ": " ++ msg ++ "\n")
       exitWith (ExitFailure 2)
 
 -- | @readSimParam name text@: a @--param name=text@'s value, as

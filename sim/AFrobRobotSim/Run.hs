@@ -75,8 +75,8 @@ import           System.Directory          (createDirectory, doesDirectoryExist,
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
 import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, takeFileName, (</>))
-import           System.IO                 (BufferMode (..), hClose, hFlush, hIsTerminalDevice, hPutStr,
-                                            hSetBuffering, openTempFile, stderr)
+import           System.IO                 (hClose, hIsTerminalDevice, hPutStr,
+                                            openTempFile, stderr)
 import           System.Process            (rawSystem)
 import           Text.Printf               (printf)
 
@@ -94,7 +94,7 @@ import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
 import           AFrobRobotSim.WorldFile
-import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, ioErrorText, quote,
+import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, ioErrorText, putErr, quote,
                                             tolerantOutput)
 import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 
@@ -422,15 +422,6 @@ makeVideo opts exe nFrames file = do
   case code of
     ExitSuccess   -> [] <$ putStrLn ("wrote " ++ displayPath file)
     ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
-
--- Write a message to standard error in one piece (stderr is unbuffered,
--- which would write it a character at a time).
-putErr :: String -> IO ()
-putErr msg = do
-  hSetBuffering stderr (BlockBuffering Nothing)
-  hPutStr stderr msg
-  hFlush stderr
-  hSetBuffering stderr NoBuffering
 
 failWith :: Int -> String -> IO a
 failWith code msg = putErr (if null msg || last msg /= '\n' then msg ++ "\n" else msg) >> exitWith (ExitFailure code)

@@ -126,6 +126,8 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- for the parent to interrupt. @quick@: two simulated seconds, an SVG.
 -- @svgmany@: 100 robots turning on the spot for 2000 s, an SVG of their
 -- 2001 snapshots (the most it keeps), under the parent's heap limit.
+-- @params@: 0.1 s with a @--param@ it asks for and one it does not (a
+-- warning). @noworld@: a world file that is not there (exit code 2).
 -- @loop@: a SimbotA whose output depends on itself with no delay.
 -- @deep@: a SimbotA whose step overflows a small stack (@+RTS -K1m@).
 -- @leak@: a SimbotA that keeps ever more state, for a heap limit.
@@ -158,6 +160,7 @@ child arg = case break (== ':') arg of
     _ <- paramOr "speed" (1 :: Double)
     runSimWith (quick dir) { optFrames = False, optSeconds = 0.1, optParams = [("sped", "2"), ("speed", "3")] }
       (Just world) drive drive
+  ("noworld", _ : dir) -> runSimWith (quick dir) { optWorldFile = Just (dir </> "missing.world") } Nothing drive drive
   ("loop", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg")
                                               , optResult = Just (dir </> "r.json") } (Just world) selfish drive
   ("deep", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg")
@@ -329,6 +332,27 @@ spec = do
       code `shouldBe` ExitSuccess
       lines err `shouldBe`
         [ takeWhile (/= '.') (takeFileName self) ++ ": warning: --param sped=2: this program has asked for no parameter named \"sped\" (it reads \"speed\")" ]
+  describe "standard error closed (2>&-) or full (/dev/full): its messages are lost, nothing else" $ do
+    let withErr what dir stream = do
+          self <- getExecutablePath
+          environment <- getEnvironment
+          (_, Just out, _, ph) <- createProcess (proc self [])
+            { env = Just ((childVariable, what ++ ":" ++ dir) : environment), std_out = CreatePipe, std_err = stream }
+          o <- hGetContents out
+          _ <- evaluate (length o)
+          (,) o <$> waitForProcess ph
+    it "a run with a warning runs, and exits 0" $ withTempDir $ \dir -> do
+      (o, code) <- withErr "params" dir NoStream
+      (code, take 25 o) `shouldBe` (ExitSuccess, "0.10 s simulated in 11 st")
+      full <- openFile "/dev/full" WriteMode
+      (o', code') <- withErr "params" dir (UseHandle full)
+      (code', take 25 o') `shouldBe` (ExitSuccess, "0.10 s simulated in 11 st")
+    it "a world file that is not there still exits with code 2" $ withTempDir $ \dir -> do
+      (o, code) <- withErr "noworld" dir NoStream
+      (code, o) `shouldBe` (ExitFailure 2, "")
+      full <- openFile "/dev/full" WriteMode
+      (o', code') <- withErr "noworld" dir (UseHandle full)
+      (code', o') `shouldBe` (ExitFailure 2, "")
   describe "memory" $ do
     -- a child run (see 'child') under a heap limit: it ends well, having
     -- simulated what it should
