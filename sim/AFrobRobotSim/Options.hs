@@ -26,7 +26,8 @@
 -- --replay FILE      write the HTML replay page              (default simbot-out/replay.html)
 -- --no-replay        write no replay page
 -- --log FILE.jsonl   write the JSON-lines run log (docs/LOG.md)
--- --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames)
+-- --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames;
+--                    also .m4v .mkv .webm .mov .avi .gif)
 -- --result FILE      write the run's settings and outcome as one JSON line
 -- --param NAME=VALUE a parameter for the controllers (repeatable; see
 --                    'AFrobRobotSim.Result.getSimParams')
@@ -38,7 +39,8 @@
 -- 'maxSteps' (a run takes the whole number of steps nearest to it, so
 -- @--seconds@ greater than 0 must be at least half of @--dt@), the frame period @1 / fps@ is a whole number of steps;
 -- 'validateOptionsIn', once the world is known, also that the frame is at
--- most 'maxFrameSide' pixels wide and tall.
+-- most 'maxFrameSide' pixels wide and tall. A @--video@'s name must end
+-- in one of 'videoExtensions'.
 --
 -- = Scale
 --
@@ -56,6 +58,7 @@ module AFrobRobotSim.Options
   , parseParam
   , validateOptions
   , validateOptionsIn
+  , videoExtensions
   , scaleFor
   , fitScale
   , fitPixels
@@ -67,7 +70,7 @@ module AFrobRobotSim.Options
 import           Data.Char       (isSpace, toLower)
 import           Data.List       (intercalate, isSuffixOf)
 import           Numeric         (showFFloat)
-import           System.FilePath ((</>))
+import           System.FilePath (takeExtension, (</>))
 import           Text.Printf     (printf)
 
 import           AFrobRobotSim.Simulator (maxOdometryNoise, maxTimeStep)
@@ -272,6 +275,9 @@ validateOptions o =
   ++ [ flag ++ " must not be empty (a file name)"
      | (flag, Just "") <- [ ("--svg", optSvg o), ("--replay", optReplay o), ("--log", optLog o)
                           , ("--result", optResult o), ("--video", optVideo o) ] ]
+  ++ [ "--video " ++ show v ++ ": a video's name ends in " ++ intercalate ", " (map ('.' :) videoExtensions)
+       ++ " (ffmpeg picks the format by it; an image's, such as .ppm or .png, would write frames)"
+     | Just v@(_ : _) <- [optVideo o], map toLower (takeExtension v) `notElem` map ('.' :) videoExtensions ]
   where
     secs = optSeconds o; dt = optDt o; fps = optFps o; scale = maybe 1 id (optScale o)
     steps = secs / dt
@@ -288,6 +294,15 @@ validateOptions o =
                  in good k ++ " or " ++ good (k + 1)
     decimals d f = let w = showFFloat (Just d) f ""
                    in if '.' `elem` w then reverse (dropWhile (== '.') (dropWhile (== '0') (reverse w))) else w
+
+-- | The extensions (in any case) that @--video@ takes, each a video
+-- format that Debian's ffmpeg writes from the frames: @mp4@, @m4v@,
+-- @mkv@, @webm@, @mov@, @avi@ and @gif@. Any other is refused before the
+-- run: ffmpeg chooses the format by the extension, and would fail after
+-- the run on one it does not know, or take an image's (@.ppm@) as a
+-- pattern of numbered files and write frames over the run's own.
+videoExtensions :: [String]
+videoExtensions = ["mp4", "m4v", "mkv", "webm", "mov", "avi", "gif"]
 
 -- | 'validateOptions' and the faults that depend on the world, of this
 -- extent: a frame (world and margin) at the scale in effect ('scaleFor')
@@ -370,7 +385,8 @@ usage prog = intercalate "\n"
   , "  --replay FILE      write the HTML replay page              (default simbot-out/replay.html)"
   , "  --no-replay        write no replay page"
   , "  --log FILE.jsonl   write the JSON-lines run log (see docs/LOG.md)"
-  , "  --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames)"
+  , "  --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames;"
+  , "                     also .m4v .mkv .webm .mov .avi .gif)"
   , "  --result FILE      write the run's settings and outcome as one JSON line"
   , "  --param NAME=VALUE a parameter the controllers read (repeatable)"
   , "  --help             print this usage and exit"

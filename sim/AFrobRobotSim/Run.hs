@@ -74,7 +74,8 @@ import           System.Directory          (createDirectory, doesDirectoryExist,
                                             pathIsSymbolicLink, removeFile, writable)
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
-import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, takeFileName, (</>))
+import           System.FilePath           (dropTrailingPathSeparator, isAbsolute, normalise, takeDirectory, takeFileName,
+                                            (</>))
 import           System.IO                 (hClose, hIsTerminalDevice, hPutStr,
                                             openTempFile, stderr)
 import           System.Process            (rawSystem)
@@ -413,15 +414,21 @@ forceState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsB
 -- Assemble this run's frames with ffmpeg (the executable found on the PATH
 -- before the run); the errors, if any. Only the run's own frames go in:
 -- ffmpeg reads numbered files until a gap, and a longer earlier run's
--- frames may follow this run's in the folder.
+-- frames may follow this run's in the folder. The names are given so
+-- that ffmpeg takes them as they are: the video's as a file (not an
+-- option, for a name that starts with @-@, nor another protocol, for
+-- @http:@), the folder's with any @%@ doubled (the pattern's own is the
+-- frame number) and as a path (@./@ before a relative one).
 makeVideo :: SimOptions -> FilePath -> Int -> FilePath -> IO [String]
 makeVideo opts exe nFrames file = do
-  code <- rawSystem exe [ "-y", "-loglevel", "error", "-framerate", show (optFps opts)
-                        , "-i", optOut opts </> framePattern, "-frames:v", show nFrames
-                        , "-pix_fmt", "yuv420p", file ]
+  code <- rawSystem exe [ "-y", "-loglevel", "error", "-f", "image2", "-framerate", show (optFps opts)
+                        , "-i", inFolder (optOut opts) </> framePattern, "-frames:v", show nFrames
+                        , "-pix_fmt", "yuv420p", "file:" ++ file ]
   case code of
     ExitSuccess   -> [] <$ putStrLn ("wrote " ++ displayPath file)
     ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
+  where
+    inFolder dir = concatMap (\c -> if c == '%' then "%%" else [c]) (if isAbsolute dir then dir else "." </> dir)
 
 failWith :: Int -> String -> IO a
 failWith code msg = putErr (if null msg || last msg /= '\n' then msg ++ "\n" else msg) >> exitWith (ExitFailure code)

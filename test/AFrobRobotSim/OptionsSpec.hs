@@ -41,6 +41,14 @@ spec = do
       [ m | m <- validateOptions d, "must not be empty" `isInfixOf` m ] `shouldBe` []
     it "refuses an empty --world when parsing (it is read before the other checks)" $
       parseSimArgs defaultSimOptions ["--world", ""] `shouldBe` Left "--world must not be empty (a world file's name)"
+    it "refuses a --video whose name is no video format's (an image's would write frames), before the run" $ do
+      let video v = [ m | m <- validateOptions defaultSimOptions { optVideo = Just v }, "--video" `isPrefixOf` m ]
+      video "out/frame-%06d.ppm" `shouldBe`
+        [ "--video \"out/frame-%06d.ppm\": a video's name ends in .mp4, .m4v, .mkv, .webm, .mov, .avi, .gif"
+          ++ " (ffmpeg picks the format by it; an image's, such as .ppm or .png, would write frames)" ]
+      map (length . video) ["run.png", "run.xyz", "run", "mp4", "run.mp4.ppm"] `shouldBe` [1, 1, 1, 1, 1]
+      map video ["run.mp4", "RUN.MP4", "a/b.c/run.webm", "x%d.mkv", "-v.gif", "v.m4v", "v.mov", "v.avi"]
+        `shouldSatisfy` all null
   describe "parseSimArgs" $ do
     it "moves the default SVG and page into the folder --out names" $
       outputs ["--out", "x"] `shouldBe` Right (Just "x/run.svg", Just "x/replay.html", "x")

@@ -583,6 +583,16 @@ spec = do
       args <- lines <$> readFile (dir </> "args")
       take 2 (dropWhile (/= "-frames:v") args) `shouldBe` ["-frames:v", "26"]
       take 2 (dropWhile (/= "-i") args) `shouldBe` ["-i", out </> "frame-%06d.ppm"]
+      -- (the names as they are: a % of the folder's is no pattern, the video is a file)
+      (do setEnv "PATH" bin
+          (_, _, r) <- captured (runSimWith (quick (dir </> "f%d")) { optSeconds = 0.2, optVideo = Just (dir </> "-v.mp4") }
+                                            (Just world) drive drive)
+          r `shouldBe` Right ())
+        `finally` maybe (pure ()) (setEnv "PATH") saved
+      args' <- lines <$> readFile (dir </> "args")
+      take 2 (dropWhile (/= "-i") args') `shouldBe` ["-i", dir </> "f%%d" </> "frame-%06d.ppm"]
+      take 2 (dropWhile (/= "-f") args') `shouldBe` ["-f", "image2"]
+      drop (length args' - 1) args' `shouldBe` ["file:" ++ dir </> "-v.mp4"]
     it "writes an SVG of the run" $ withTempDir $ \dir -> do
       _ <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg") }
                                 (Just world) drive drive)
