@@ -1,3 +1,5 @@
+{-# LANGUAGE BangPatterns #-}
+{-# LANGUAGE MultiWayIf   #-}
 -- |
 -- Module      : AFrobRobotSim.JSON
 -- Description : A small JSON value type, its encoder and its parser.
@@ -30,6 +32,7 @@ module AFrobRobotSim.JSON
   ) where
 
 import           Data.Char                  (chr, isDigit, isHexDigit, ord, digitToInt)
+import           Data.List                  (foldl')
 
 import           AFrobRobotSim.JSON.Encode
 
@@ -157,16 +160,18 @@ number = do
   case int of
     '0' : _ : _ -> P (\_ -> Left (start, "a number may not have a leading zero"))
     _           -> pure ()
-  frac <- peek >>= \m -> if m == Just '.' then next *> (('.' :) <$> digits1 "a digit after '.'") else pure ""
+  frac <- peek >>= \m -> if m == Just '.' then next *> digits1 "a digit after '.'" else pure ""
   ex   <- peek >>= \m -> if m == Just 'e' || m == Just 'E'
             then do
               _ <- next
               s <- peek >>= \q -> if q == Just '+' || q == Just '-' then (: []) <$> next else pure ""
               ds <- digits1 "a digit in the exponent"
-              pure ('e' : filter (/= '+') s ++ ds)
-            else pure ""
-  let frac' = if null frac then ".0" else frac
-  pure (read (sign ++ int ++ frac' ++ clampExp ex))
+              pure (exponentOf (s == "-") ds)
+            else pure 0
+  -- (made now: a number left to make later holds its digits, several
+  -- times the Double's size)
+  let !x = decimal (not (null sign)) int frac ex
+  pure x
   where
     optionalChar c = peek >>= \m -> if m == Just c then (: []) <$> next else pure ""
     digits1 what = do
@@ -174,26 +179,61 @@ number = do
       case m of
         Just c | isDigit c -> manyDigits
         _ -> failHere ("expected " ++ what ++ ", found " ++ describeNext m)
-    manyDigits = peek >>= \m -> case m of
-      Just c | isDigit c -> (:) <$> next <*> manyDigits
-      _                  -> pure ""
-    -- 'read' of an exponent of millions of digits would take that long:
-    -- any exponent beyond +-9999 is an overflow or underflow anyway.
-    clampExp ""        = ""
-    clampExp ('e' : r) = let (s, ds) = span (== '-') r
-                             ds' = dropWhile (== '0') ds
-                         in 'e' : s ++ (if length ds' > 4 then "9999" else if null ds' then "0" else ds')
-    clampExp r         = r
+    -- (a run of digits, taken in one step: no line break is among them)
+    manyDigits = P (\(Input (Pos l c) s) -> case span isDigit s of
+                     (ds, rest) -> let !n = length ds in Right (ds, Input (Pos l (c + n)) rest))
+    -- (an exponent of more than 15 digits, beyond the count of digits
+    -- any text holds, is taken as 10^15: the number is an infinity or
+    -- zero all the same)
+    exponentOf negative ds = let ds' = dropWhile (== '0') ds
+                                 e = if length ds' > 15 then 10 ^ (15 :: Int) else if null ds' then 0 else read ds'
+                             in if negative then negate e else e :: Int
+
+-- | @decimal negative int frac e@: the number @int.frac@ times @10^e@
+-- (digits, as JSON writes them), negated if @negative@, rounded to the
+-- nearest 'Double' as 'read' rounds it. A number of at most 15
+-- significant digits and an exponent within 22 of them is made in one
+-- division or product, which is exact then (both operands are); any
+-- other is given to 'read' with at most 'significantDigits' digits:
+-- 'read' of a million digits takes half a minute, and the rest cannot
+-- change how it rounds. Digits beyond those are dropped; if one of them
+-- was not zero, a 1 stands for them after the last one kept (so a number
+-- just above a point halfway between two 'Double's stays above it).
+decimal :: Bool -> String -> String -> Int -> Double
+decimal negative int frac e = signed $ case dropWhile (== '0') (int ++ frac) of
+  []     -> 0
+  digits ->
+    let (kept, dropped) = splitAt significantDigits digits
+        sticky = any (/= '0') dropped
+        -- the exponent of the digits kept, as a whole number: a value
+        -- beyond 10^(+-99999) is an infinity or zero, however written
+        ex = max (-99999) (min 99999 (e - length frac + length dropped - (if sticky then 1 else 0)))
+        whole = foldl' (\a d -> a * 10 + fromIntegral (digitToInt d)) 0 kept :: Int
+    in if | null dropped, length kept <= 15, ex >= 0, ex <= 22 -> fromIntegral whole * 10 ^ ex
+          | null dropped, length kept <= 15, ex < 0, ex >= -22 -> fromIntegral whole / 10 ^ negate ex
+          | otherwise -> read (kept ++ (if sticky then "1" else "") ++ "e" ++ show ex)
+  where
+    signed x = if negative then negate x else x
+
+-- The most significant digits 'decimal' keeps: 800. The exact decimal
+-- value of a point halfway between two 'Double's has at most 767.
+significantDigits :: Int
+significantDigits = 800
 
 stringLit :: P String
-stringLit = expect '"' *> go
+stringLit = expect '"' *> P (scan [])
   where
-    go = next >>= \c -> case c of
-      '"'  -> pure ""
-      '\\' -> escape >>= \e -> (e :) <$> go
-      _ | ord c < 0x20 -> backOne ("a control character (code " ++ show (ord c)
-                                   ++ ") must be escaped in a string")
-        | otherwise    -> (c :) <$> go
+    -- (the characters so far, last first: a loop that does not deepen
+    -- the stack with the string's length)
+    scan !acc (Input pos s) = case s of
+      '"' : rest  -> Right (reverse acc, Input (advance pos '"') rest)
+      '\\' : rest -> case runP escape (Input (advance pos '\\') rest) of
+        Left err      -> Left err
+        Right (c, i') -> scan (c : acc) i'
+      c : rest
+        | ord c < 0x20 -> Left (pos, "a control character (code " ++ show (ord c) ++ ") must be escaped in a string")
+        | otherwise    -> scan (c : acc) (Input (advance pos c) rest)
+      []          -> Left (pos, "unexpected end of input")
     -- report a character just consumed at its own column
     backOne msg = P (\(Input (Pos l col) _) -> Left (Pos l (col - 1), msg))
     escape = next >>= \c -> case c of

@@ -45,6 +45,46 @@ spec = do
       parseJSON (replicate maxDepth '[' ++ replicate maxDepth ']') `shouldSatisfy` either (const False) (const True)
       parseJSON (replicate (maxDepth + 1) '[' ++ replicate (maxDepth + 1) ']')
         `shouldSatisfy` either ("deep" `isInfixOf`) (const False)
+    it "reads any number as read reads it, rounded alike (property)" $
+      forAll numberText $ \txt -> parseJSON txt === Right (JNumber (read txt))
+    it "reads a number of many digits as read would, the digits past 800 kept by their trace (fixed)" $ do
+      -- the point halfway between 1 and the next Double: even rounds down,
+      -- a 1 far past the 800th digit rounds up
+      let halfway = "1.00000000000000011102230246251565404236316680908203125"
+      parseJSON halfway `shouldBe` Right (JNumber 1)
+      parseJSON (halfway ++ replicate 2000 '0' ++ "1") `shouldBe` Right (JNumber (1 + 2 ^^ (-52 :: Int)))
+      parseJSON (halfway ++ replicate 2000 '0') `shouldBe` Right (JNumber 1)
+      -- long integers and fractions, and leading zeros of a fraction
+      let long = "123456789" ++ concat (replicate 150 "9876543210")
+      parseJSON long `shouldBe` Right (JNumber (read long))
+      parseJSON ("-0." ++ long) `shouldBe` Right (JNumber (read ("-0." ++ long)))
+      parseJSON ("0." ++ replicate 1200 '0' ++ long ++ "e1300") `shouldBe` Right (JNumber (read ("0." ++ long ++ "e100")))
+      parseJSON ("0." ++ replicate 1000000 '0' ++ "1") `shouldBe` Right (JNumber 0)
+      parseJSON ("1." ++ replicate 1000000 '7') `shouldBe` Right (JNumber (read ("1." ++ replicate 30 '7')))
+      -- an exponent of more digits than any count of digits
+      parseJSON ("0." ++ replicate 100 '0' ++ "1e" ++ replicate 20 '9') `shouldBe` Right (JNumber (1 / 0))
+      parseJSON ("-0.0e-" ++ replicate 20 '9') `shouldSatisfy` either (const False) (\v -> v == JNumber 0 && isNegativeZeroOf v)
     it "reads a huge exponent quickly, as an infinity or zero (fixed)" $ do
       parseJSON ("1e" ++ replicate 100000 '9') `shouldSatisfy` either (const False) (== JNumber (1 / 0))
       parseJSON ("1e-" ++ replicate 100000 '9') `shouldBe` Right (JNumber 0)
+
+-- A JSON number's text, which is also one that 'read' reads as a
+-- 'Double': a sign, digits (often many, some with leading zeros in the
+-- fraction), a fraction, an exponent (the sign of both kinds), from the
+-- small to beyond the Double's range.
+numberText :: Gen String
+numberText = do
+  neg  <- elements ["", "-"]
+  int  <- oneof [pure "0", (:) <$> elements ['1' .. '9'] <*> digitsUpTo 25]
+  frac <- oneof [pure "", ('.' :) <$> ((++) <$> (flip replicate '0' <$> choose (0, 30)) <*> digits1UpTo 25)]
+  ex   <- oneof [ pure "", (\e k -> e ++ show (k :: Int)) <$> elements ["e", "e-", "E", "E-"] <*> choose (0, 400)
+                , (\e k -> e ++ show (k :: Int)) <$> elements ["e", "e-"] <*> choose (0, 25) ]
+  pure (neg ++ int ++ frac ++ ex)
+  where
+    digitsUpTo n = choose (0, n) >>= \k -> vectorOf k (elements ['0' .. '9'])
+    digits1UpTo n = (:) <$> elements ['0' .. '9'] <*> digitsUpTo (n - 1)
+
+-- Whether a value is the number -0.
+isNegativeZeroOf :: JSON -> Bool
+isNegativeZeroOf (JNumber x) = isNegativeZero x
+isNegativeZeroOf _           = False
