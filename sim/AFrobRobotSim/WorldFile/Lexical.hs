@@ -15,6 +15,7 @@
 module AFrobRobotSim.WorldFile.Lexical
   ( -- * UTF-8
     utf8Text
+  , utf8TextFrom
     -- * Tokens
   , Tok (..)
   , tokenize
@@ -88,8 +89,16 @@ utf8Error bs = go 0 1 1
 -- >>> utf8Text "w.world" (B.pack [0x61, 0x0a, 0x62, 0xff])
 -- Left "w.world:2:2: invalid UTF-8 (byte 0xff)"
 utf8Text :: String -> B.ByteString -> Either String String
-utf8Text name bytes = case utf8Error bytes of
-  Just (l, c, b) -> Left (name ++ ":" ++ show l ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
+utf8Text name = utf8TextFrom name 1
+
+-- | 'utf8Text' of bytes that begin a file's line @n@ (from 1), such as
+-- one line of it: the message counts the lines from there.
+--
+-- >>> utf8TextFrom "run.jsonl" 7 (B.pack [0x61, 0xff])
+-- Left "run.jsonl:7:2: invalid UTF-8 (byte 0xff)"
+utf8TextFrom :: String -> Int -> B.ByteString -> Either String String
+utf8TextFrom name n bytes = case utf8Error bytes of
+  Just (l, c, b) -> Left (name ++ ":" ++ show (l + n - 1) ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
                           ++ (if b < 16 then "0" else "") ++ showHex b ")")
   Nothing        -> Right (decodeUtf8 bytes)
 

@@ -92,11 +92,31 @@ spec = do
     r `shouldSatisfy` either ((path ++ ": more than 200 bytes") `isPrefixOf`) (const False)
     z <- readLogFileUpTo 1000 "/dev/zero"
     z `shouldSatisfy` either ("/dev/zero: more than 1000 bytes" `isPrefixOf`) (const False)
+    -- an endless line is refused at its limit, not read to the file's
+    z' <- readLogFile "/dev/zero"
+    fmap (const ()) z' `shouldBe` Left ("/dev/zero:1: a line of more than " ++ show maxLogLineBytes
+                                        ++ " bytes, more than this reader takes (a frame of 10,000 robots is about 4 MB; is it a run log?)")
     -- within the limit, the file is read as a log (here: not one)
     s <- readLogFileUpTo 400 path
     s `shouldSatisfy` either (not . ("more than" `isInfixOf`)) (const False)
   it "readLogFile says which file it cannot read and why, not which Haskell function failed" $ do
     r <- readLogFile "no-such-dir/run.jsonl"
     fmap (const ()) r `shouldBe` Left "no-such-dir/run.jsonl: cannot read it: does not exist (No such file or directory)"
+  it "foldLogFile gives the header, then each frame in order, and returns the summary; a line of more than 32 MiB is refused" $
+    withTempDir $ \dir -> do
+      let path = dir </> "run.jsonl"
+      writeFile path fixtureLogText
+      r <- foldLogFile path (\h -> pure (h, [])) (\(h, ts) f -> pure (h, lfTime f : ts))
+      fmap (\((h, ts), s) -> (h, reverse ts, s)) r
+        `shouldBe` Right (rlHeader fixtureLog, map lfTime (rlFrames fixtureLog), rlSummary fixtureLog)
+      -- a frame line just over the limit, after the header
+      writeFile path (head (lines fixtureLogText) ++ "\n" ++ replicate (maxLogLineBytes + 1) ' ' ++ "\n")
+      r' <- foldLogFile path (const (pure ())) (\_ _ -> pure ())
+      fmap (const ()) r' `shouldBe` Left (path ++ ":2: a line of more than 33554432 bytes, more than this reader takes"
+                                          ++ " (a frame of 10,000 robots is about 4 MB; is it a run log?)")
+      -- and one at the limit is read (here: blank, so skipped)
+      writeFile path (head (lines fixtureLogText) ++ "\n" ++ replicate maxLogLineBytes ' ' ++ "\n")
+      r'' <- foldLogFile path (const (pure ())) (\_ _ -> pure ())
+      fmap (const ()) r'' `shouldBe` Right ()
   it "reads a log cut short (no summary) (fixed)" $
     fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
