@@ -13,7 +13,8 @@
 -- --frames           also write PPM frames into the output folder
 -- --no-frames        write no frames (the default)
 -- --scale PX         pixels per metre  (default: the world's long side 600 px, 'fitScale')
--- --keys "1.5:a,3:b" scripted key presses (time:key, ...; 2:space and 4:comma name those keys)
+-- --keys "1.5:a,3:b" scripted key presses (time:key, ...; 2:space and 4:comma name those keys;
+--                    repeatable)
 -- --seed N           seed of the random parts, |N| <= 2^53 (default 0)
 -- --odometry-noise X relative odometry error per step, 0-1 (default 0 = exact)
 -- --quiet            print only the summary line
@@ -64,6 +65,7 @@ module AFrobRobotSim.Options
   , fitPixels
   , maxSteps
   , maxFrameSide
+  , minWorldPixels
   , usage
   ) where
 
@@ -167,7 +169,7 @@ parseSimArgs o0 = go o0 False False
       , ("--out",     \v -> if null v then Left "--out expects a folder name, got \"\""
                              else Right o { optOut = v })
       , ("--scale",   \v -> (\x -> o { optScale = Just x }) <$> number "--scale" (> 0) v)
-      , ("--keys",    \v -> (\ks -> o { optKeys = ks }) <$> parseKeys v)
+      , ("--keys",    \v -> (\ks -> o { optKeys = optKeys o ++ ks }) <$> parseKeys v)
       , ("--seed",    \v -> case integerLit (trim v) of
                              -- (read as an Int, 2^64 + 1 wrapped round to 1; beyond 2^53 the
                              -- result line and the log, JSON numbers, could not record it exactly)
@@ -256,8 +258,9 @@ scaleFor b o = maybe (fitScale b) id (optScale o)
 validateOptions :: SimOptions -> [String]
 validateOptions o =
   [ "--seconds and --dt must be finite numbers, --dt positive" | not (all finite [secs, dt, fps, scale]) || dt <= 0 || fps <= 0 ]
-  ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is " ++ num steps
-       ++ " steps, more than the " ++ num maxSteps ++ " allowed"
+  ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is "
+       ++ (if isInfinite steps then "more steps than a number holds" else num steps ++ " steps")
+       ++ ", more than the " ++ num maxSteps ++ " allowed"
      | all finite [secs, dt], dt > 0, tooMany ]
   ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is less than half a step, so nothing would be"
        ++ " simulated after time 0 (a run takes the whole number of steps nearest seconds / dt); give"
@@ -304,9 +307,15 @@ validateOptions o =
 videoExtensions :: [String]
 videoExtensions = ["mp4", "m4v", "mkv", "webm", "mov", "avi", "gif"]
 
+-- | The fewest pixels a frame may give its world's long side: 10. A
+-- @--scale@ that gives fewer draws nothing that can be seen.
+minWorldPixels :: Double
+minWorldPixels = 10
+
 -- | 'validateOptions' and the faults that depend on the world, of this
 -- extent: a frame (world and margin) at the scale in effect ('scaleFor')
--- more than 'maxFrameSide' pixels wide or tall. Checked by
+-- more than 'maxFrameSide' pixels wide or tall, or a world less than
+-- 'minWorldPixels' across on its long side. Checked by
 -- 'AFrobRobotSim.runSimWith' before simulating.
 validateOptionsIn :: Bounds -> SimOptions -> [String]
 validateOptionsIn b@(Bounds x0 y0 x1 y1) o =
@@ -314,6 +323,10 @@ validateOptionsIn b@(Bounds x0 y0 x1 y1) o =
   ++ [ "--scale " ++ num scale ++ " makes the frame of this " ++ num w ++ " by " ++ num h
        ++ " m world " ++ num side ++ " pixels on its long side, more than " ++ num maxFrameSide
      | finite scale, side > maxFrameSide ]
+  ++ [ "--scale " ++ num scale ++ " draws this " ++ num w ++ " by " ++ num h ++ " m world " ++ num (side - 20)
+       ++ " pixels across, too small to show it (at least " ++ num minWorldPixels ++ "; without --scale it is "
+       ++ num fitPixels ++ ")"
+     | finite scale, side - 20 < minWorldPixels ]
   where
     scale = scaleFor b o
     w = x1 - x0
@@ -329,7 +342,8 @@ num x
                 in reverse (dropWhile (== '.') (dropWhile (== '0') (reverse s)))
 
 -- | Parse scripted key presses: @"1.5:a,3:b"@ is @a@ at 1.5 s and @b@ at
--- 3 s. Times must be finite and non-negative; a key is one character, or
+-- 3 s (@--keys@ may be given more than once: the presses of all are
+-- taken). Times must be finite and non-negative; a key is one character, or
 -- one of the names @space@ and @comma@ for the two characters the list
 -- itself cannot hold (@"2:space,4:comma"@).
 parseKeys :: String -> Either String [(Double, Char)]
@@ -372,7 +386,8 @@ usage prog = intercalate "\n"
   , "  --frames           also write PPM frames (1.15 MB each: 866 MB for 30 s at 25 fps)"
   , "  --no-frames        write no frames (the default)"
   , "  --scale PX         pixels per metre   (default: the world's long side is 600 px)"
-  , "  --keys \"1.5:a,3:b\" scripted key presses (time:key, ...; 2:space and 4:comma name those keys)"
+  , "  --keys \"1.5:a,3:b\" scripted key presses (time:key, ...; 2:space and 4:comma name those keys;"
+  , "                     repeatable)"
   , "  --seed N           seed of the random parts              (default 0)"
   , "  --odometry-noise X relative odometry error per step, 0-1 (default 0 = exact)"
   , "  --quiet            print only the summary line"

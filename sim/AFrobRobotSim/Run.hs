@@ -138,6 +138,14 @@ runSimWith opts mworld rcA rcB = do
       unless (null unread) $ putErr $ unlines
         [ prog ++ ": warning: --param " ++ k ++ "=" ++ v ++ ": this program has asked for no parameter named "
           ++ quote k ++ " (" ++ readsText ++ ")" | (k, v) <- unread ]
+      -- (a key pressed after the last step: a typo in its time, or a run
+      -- shorter than meant)
+      let lastStep = fromIntegral (max 0 (round (optSeconds opts / optDt opts)) :: Int) * optDt opts
+          keyName c = case c of { ' ' -> "space"; ',' -> "comma"; _ -> [c] }
+      unless (null [ () | (t, _) <- optKeys opts, t > lastStep * (1 + 1e-9) ]) $ putErr $ unlines
+        [ prog ++ ": warning: --keys " ++ show t ++ ":" ++ keyName c ++ ": after the run's last step, at "
+          ++ show lastStep ++ " s: it is never pressed"
+        | (t, c) <- optKeys opts, t > lastStep * (1 + 1e-9) ]
       -- (an empty world file, or a generator's output that never came,
       -- runs: it is a world, but one the controllers take no part in)
       when (all (isNothing . robotKindOf) world) $ putErr $

@@ -7,6 +7,7 @@ import           Test.Hspec
 import           Test.QuickCheck  (conjoin, counterexample, elements, forAll, property, (===))
 
 import           AFrobRobotSim.Options
+import           AFrobRobotSim.World (Bounds (..))
 
 -- The SVG, the page and the output folder a command line gives.
 outputs :: [String] -> Either String (Maybe FilePath, Maybe FilePath, FilePath)
@@ -117,6 +118,25 @@ spec = do
       parseKeys "1.5:a,3:b" `shouldBe` Right [(1.5, 'a'), (3, 'b')]
       mapM_ (\k -> parseKeys k `shouldSatisfy` either ("--keys" `isInfixOf`) (const False))
             ["Infinity:a", "1e400:a", "1:a,NaN:b"]
+    it "takes the presses of every --keys given, not only the last one's" $
+      fmap (\c -> case c of { RunWith o -> optKeys o; ShowHelp -> [] })
+           (parseSimArgs defaultSimOptions ["--keys", "3:b", "--seed", "1", "--keys", "1:a,2:space"])
+        `shouldBe` Right [(3, 'b'), (1, 'a'), (2, ' ')]
+    it "says a step count too large for a number as that, not as Infinity steps" $
+      validateOptions defaultSimOptions { optSeconds = 1e300, optDt = 1e-300 }
+        `shouldSatisfy` any ("--seconds 1.000e300 with --dt 1.000e-300 is more steps than a number holds, more than the" `isPrefixOf`)
+    it "refuses a --scale that draws the world less than minWorldPixels across, and takes one just enough" $ do
+      let notes = Bounds (-5) (-5) 5 5
+          small o = [ m | m <- validateOptionsIn notes o, "too small" `isInfixOf` m ]
+      small defaultSimOptions { optScale = Just 0.001 } `shouldBe`
+        [ "--scale 0.001 draws this 10 by 10 m world 0.01 pixels across, too small to show it (at least 10;"
+          ++ " without --scale it is 600)" ]
+      small defaultSimOptions { optScale = Just 0.999 } `shouldSatisfy` ((== 1) . length)
+      small defaultSimOptions { optScale = Just 1 } `shouldBe` []
+      small defaultSimOptions `shouldBe` []
+      -- (the long side counts: a world 100 m by 1 m at 0.1 pixels a metre is 10 pixels wide)
+      [ m | m <- validateOptionsIn (Bounds 0 0 100 1) defaultSimOptions { optScale = Just 0.1 }, "too small" `isInfixOf` m ]
+        `shouldBe` []
     it "scripts the space and comma keys by name (the list cannot hold them), any other key as one character" $ do
       parseKeys "1:space, 2:COMMA,3::,4:s" `shouldBe` Right [(1, ' '), (2, ','), (3, ':'), (4, 's')]
       mapM_ (\k -> parseKeys k `shouldSatisfy` either ("a KEY is one character, or space or comma" `isInfixOf`) (const False))

@@ -323,6 +323,12 @@ spec = do
       a <- framesIn (dir </> "a")
       b <- framesIn (dir </> "b")
       (length a, a == b) `shouldBe` (51, True)
+  describe "scripted keys" $
+    it "warns of a key pressed after the run's last step (never pressed), and of no other" $ withTempDir $ \dir -> do
+      (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 1
+                                                      , optKeys = [(0.5, 'a'), (1, 'b'), (5, ' ')] } (Just world) drive drive)
+      r `shouldBe` Right ()
+      lines err `shouldSatisfy` \ls -> length ls == 1 && all ("warning: --keys 5.0:space: after the run's last step, at 1.0 s: it is never pressed" `isInfixOf`) ls
   describe "parameters" $
     it "warns of a --param the program never asked for (a misspelled name), naming those it did" $ withTempDir $ \dir -> do
       self <- getExecutablePath
