@@ -1,0 +1,149 @@
+{-# LANGUAGE MultiWayIf          #-}
+{-# LANGUAGE ScopedTypeVariables #-}
+-- |
+-- Module      : AFrobRobotSim.Run.Preflight
+-- Description : What a run checks of its options and the file system
+--               before it simulates.
+--
+-- 'AFrobRobotSim.runSim' simulates only when 'preflight' finds nothing
+-- wrong: the options together ('validateOptionsIn'), every output's folder
+-- (it exists and may be written; through a symbolic link, the target's),
+-- two outputs that are one file under two names (a path, a link, a hard
+-- link), an output that is the world file or that a frame would replace
+-- (a name like @frame-000001.ppm@ in the frames' folder), @--video@
+-- without ffmpeg, and the output folder, which it creates, proving it
+-- writable with a file of a new name that it removes.
+module AFrobRobotSim.Run.Preflight
+  ( preflight
+  ) where
+
+import           Control.Exception         (IOException, try)
+import           Control.Monad             (forM, unless)
+import           Data.List                 (isPrefixOf)
+import           Data.Maybe                (catMaybes, isJust)
+import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist, doesPathExist,
+                                            findExecutable, getPermissions, getSymbolicLinkTarget,
+                                            pathIsSymbolicLink, removeFile, writable)
+import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, takeFileName, (</>))
+import           System.IO                 (hClose, hPutStr, openTempFile)
+
+import           AFrobRobotSim.Console     (ioErrorText)
+import           AFrobRobotSim.Options
+import           AFrobRobotSim.OutputFile  (fileIdentity, notAFolder)
+import           AFrobRobotSim.Run.Sinks   (framePattern, isFrameName)
+import           AFrobRobotSim.World       (Bounds)
+import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
+
+-- | Every check of the options and the file system that can be made before
+-- simulating, in a world of the given extent; creates the output folder
+-- when something goes there (and nothing is wrong). With the faults, one
+-- message each, ffmpeg's path when @--video@ asks for it.
+preflight :: Bounds -> SimOptions -> IO ([String], Maybe FilePath)
+preflight bounds opts = do
+  let out   = folder (optOut opts)
+      files = catMaybes [ (,) "--svg" <$> optSvg opts, (,) "--log" <$> optLog opts
+                        , (,) "--replay" <$> optReplay opts, (,) "--video" <$> optVideo opts
+                        , (,) "--result" <$> optResult opts ]
+  -- where each file is written: through a symbolic link, its target
+  -- (Nothing: a loop of links, or too long a chain)
+  targets <- forM files $ \(flag, f) ->
+    (,,) flag f <$> if device f then pure (Just f) else linkTarget (40 :: Int) f
+  let inOut = optFrames opts
+              || any ((== out) . folder . takeDirectory)
+                     (concat [ f : maybe [] pure t | (_, f, t) <- targets ])
+  ffmpeg <- maybe (pure Nothing) (const (findExecutable "ffmpeg")) (optVideo opts)
+  -- the same file under two names (a.svg and ./a.svg, or a link) is caught
+  -- by comparing the canonical paths of where the files are written;
+  -- devices are not files to keep (--log /dev/stdout --result /dev/stderr
+  -- may be one terminal)
+  -- (and a file already there by its device and number, which a hard
+  -- link shares)
+  canon <- forM [ tf | tf@(_, f, _) <- targets, not (device f) ] $ \(flag, f, t) ->
+             (,,) flag f <$> fileKey (maybe f id t)
+  world <- forM (filter (not . device) (maybe [] pure (optWorldFile opts))) $ \w -> (,) w <$> fileKey w
+  -- (where the frames go, as a canonical path: a file there named as a
+  -- frame is replaced by one)
+  outCanon <- canonicalPath out
+  -- a file is written in its folder, or through a link in its target's:
+  -- the output folder is created by the run, any other must exist
+  let checkIn flag f dir
+        | folder dir == out && inOut = pure []
+        | otherwise                  = folderWritable flag f dir
+  fileErrs <- forM targets $ \(flag, f, t) -> do
+    isDir <- doesDirectoryExist f
+    dirErr <- checkIn flag f (takeDirectory f)
+    linkErr <- case t of
+      _ | isDir              -> pure []
+      Nothing                -> pure [ flag ++ " " ++ show f ++ ": a loop of symbolic links (or a chain of more than 40)" ]
+      Just target
+        | target /= f        -> checkIn flag f (takeDirectory target)
+        | otherwise          -> pure []
+    pure ([ flag ++ " " ++ show f ++ " is a folder" | isDir ] ++ dirErr ++ linkErr)
+  let pre = validateOptionsIn bounds opts
+            ++ [ "--video needs the frames (add --frames)" | optVideo opts /= Nothing, not (optFrames opts) ]
+            ++ [ "--video needs ffmpeg on the PATH (on Debian: apt-get install ffmpeg)"
+               | optVideo opts /= Nothing, ffmpeg == Nothing ]
+            ++ [ "two outputs go to the same file: " ++ flag1 ++ " " ++ show f1 ++ " and " ++ flag2 ++ " " ++ show f2
+               | ((flag1, f1, c1), i) <- zip canon [0 :: Int ..], ((flag2, f2, c2), j) <- zip canon [0 ..]
+               , i < j, sameFile c1 c2 ]
+            ++ [ flag ++ " " ++ show f ++ " would overwrite the world file " ++ show w
+               | (w, cw) <- world, (flag, f, c) <- canon, sameFile c cw ]
+            ++ [ what ++ " " ++ show f ++ " would be overwritten by a frame: --frames writes "
+                 ++ show (out </> framePattern) ++ " (choose another name or folder)"
+               | optFrames opts, (what, f, (c, _)) <- [ (flag, f, c) | (flag, f, c) <- canon ]
+                                                     ++ [ ("--world", w, cw) | (w, cw) <- world ]
+               , takeDirectory c == outCanon, isFrameName (takeFileName c) ]
+            ++ concat fileErrs
+  -- the output folder is created only when nothing else is wrong
+  errs <- if inOut && null pre then checkFolder out else pure pre
+  pure (errs, ffmpeg)
+  where
+    device f = any (`isPrefixOf` normalise f) ["/dev/", "/proc/"]
+    fileKey f = (,) <$> canonicalPath f <*> fileIdentity f
+    sameFile (c1, i1) (c2, i2) = c1 == c2 || (isJust i1 && i1 == i2)
+    -- a folder as one name (--out x/ and --out ./x are the folder x, which
+    -- the run creates; with the slash its parent was taken to be x itself)
+    folder = dropTrailingPathSeparator . normalise
+    -- where a file that is a symbolic link (perhaps to a file not there
+    -- yet) is written: the run writes through it, into the folder of the
+    -- link's target, which must exist too (Nothing: a loop of links)
+    linkTarget k f
+      | k <= 0    = pure Nothing
+      | otherwise = do
+          isLink <- either (\(_ :: IOException) -> False) id <$> try (pathIsSymbolicLink f)
+          if not isLink
+            then pure (Just f)
+            else do
+              t <- try (getSymbolicLinkTarget f)
+              case t of
+                Left (_ :: IOException) -> pure (Just f)
+                Right target -> linkTarget (k - 1) (takeDirectory f </> target)
+    folderWritable flag f dir = do
+      why <- notAFolder dir
+      case why of
+        Just w -> pure [ flag ++ " " ++ show f ++ ": its folder, " ++ show dir ++ ", " ++ w ]
+        Nothing -> do
+          w <- writable <$> getPermissions dir
+          exists <- doesFileExist f
+          fw <- if exists then writable <$> getPermissions f else pure True
+          pure [ flag ++ " " ++ show f ++ ": cannot write there" | not (w || (exists && fw)) ]
+    -- the output folder: created if its parent exists, then proven writable
+    -- (without --frames only the SVG, page, log or result go there)
+    writeTo | optFrames opts = "cannot write frames to "
+            | otherwise      = "cannot write to the output folder (--out) "
+    checkFolder dir = do
+      there <- doesDirectoryExist dir
+      parentThere <- doesDirectoryExist (takeDirectory dir)
+      taken <- doesPathExist dir
+      if | not there && taken -> pure [ writeTo ++ show dir ++ ": it is a file, not a folder" ]
+         | not there && not parentThere ->
+             pure [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir) ++ " does not exist" ]
+         | otherwise -> do
+          -- (a file of a new name, so that no file already there is touched)
+          r <- try (do unless there (createDirectory dir)
+                       (probe, h) <- openTempFile dir ".afrp-write-test"
+                       hPutStr h "ok" >> hClose h
+                       removeFile probe)
+          pure $ case r of
+            Left (e :: IOException) -> [ writeTo ++ show dir ++ ": " ++ ioErrorText e ]
+            Right ()                -> []
