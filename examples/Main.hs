@@ -13,7 +13,7 @@ import           System.IO          (hPutStrLn, stderr)
 
 import           AFrobRobotSim
 import           AFrobRobotSim.Console (endOutput)
-import           Examples.Registry  (allExamples, exampleListing)
+import           Examples.Registry  (allExamples, exampleCommand, exampleListing)
 import           Examples.Types
 
 main :: IO ()
@@ -39,17 +39,13 @@ run prog args =
       []    -> usageError prog ("no example named " ++ show name ++ suggestion name)
 
 runExample :: String -> Example -> [String] -> IO ()
-runExample prog e flags = case e of
-  SignalExample {} -> case flags of
-    [] -> putStr (exReport e)
-    _  -> usageError prog (exName e ++ " is a signal-function example; it takes no flags")
-  RobotExample {} ->
-    case parseSimArgs defaults flags of
-      Left err            -> usageError prog err
-      Right ShowHelp      -> putStrLn (usage (prog ++ " " ++ exName e))
-      Right (RunWith opt) -> runSimWith opt (Just (exWorld e)) (exControllerA e) (exControllerB e)
-  where
-    defaults = defaultSimOptions { optSeconds = exSeconds e, optKeys = exKeys e }
+runExample prog e flags = case (e, flags) of
+  (SignalExample {}, []) -> putStr (exReport e)
+  -- (a signal-function example with flags is a Left)
+  _ -> case exampleCommand e flags of
+    Left err            -> usageError prog err
+    Right ShowHelp      -> putStrLn (usage (prog ++ " " ++ exName e))
+    Right (RunWith opt) -> runSimWith opt (Just (exWorld e)) (exControllerA e) (exControllerB e)
 
 suggestion :: String -> String
 suggestion name = case sortOn length [ exName e | e <- allExamples, lower name `isPrefixOf` lower (exName e) ] of

@@ -62,6 +62,7 @@ import qualified Examples.Exercises14and15Spec
 import qualified Examples.Exercises1to6Spec
 import qualified Examples.Exercises7to13Spec
 import qualified Examples.Section2Spec
+import qualified Examples.RegistrySpec
 import qualified Examples.Section3Spec
 import qualified AFrobRobotSim.SimulatorSpec
 import qualified AFrobRobotSim.SpatialIndexSpec
@@ -149,6 +150,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Sweep"     AFrobRobotSim.SweepSpec.spec
   describe "examples: section 2"     Examples.Section2Spec.spec
   describe "examples: section 3"     Examples.Section3Spec.spec
+  describe "examples: the registry"  Examples.RegistrySpec.spec
   describe "exercises 1-6"           Examples.Exercises1to6Spec.spec
   describe "exercises 7-13"          Examples.Exercises7to13Spec.spec
   describe "exercises 14 and 15"     Examples.Exercises14and15Spec.spec

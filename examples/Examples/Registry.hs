@@ -2,10 +2,13 @@
 module Examples.Registry
   ( allExamples
   , exampleListing
+  , exampleCommand
   ) where
 
 import           Data.List      (intercalate)
 import           Text.Printf    (printf)
+
+import           AFrobRobotSim  (Command (..), SimOptions (..), defaultSimOptions, parseSimArgs)
 
 import           Examples.Types
 import qualified Exercises.Ex01 as Ex01
@@ -56,3 +59,17 @@ exampleListing es = unlines $
         | otherwise       -> "flags, keys " ++ intercalate "," [ showKey k | k <- exKeys e ]
     showKey (t, c) = (if t == fromIntegral (round t :: Integer) then show (round t :: Integer) else show t)
                      ++ [':', c]
+
+-- | A robot example's command line ('parseSimArgs'), with the example's
+-- defaults: its @--seconds@, and its scripted keys ('exKeys') when the
+-- command line gives no @--keys@ (every @--keys@ adds its presses, so the
+-- example's script is not one to add to: @--keys 1:+@ presses + once).
+-- A signal-function example takes no flags: a 'Left' saying so.
+exampleCommand :: Example -> [String] -> Either String Command
+exampleCommand e flags = case e of
+  SignalExample {} -> Left (exName e ++ " is a signal-function example; it takes no flags")
+  RobotExample {}  -> fmap scripted (parseSimArgs defaultSimOptions { optSeconds = exSeconds e } flags)
+  where
+    scripted (RunWith opt) | "--keys" `notElem` flags = RunWith opt { optKeys = exKeys e }
+    scripted c = c
+

@@ -1,0 +1,28 @@
+-- | The examples' registry: a robot example's command line, with the
+-- example's own defaults.
+module Examples.RegistrySpec (spec) where
+
+import           Test.Hspec
+
+import           AFrobRobotSim     (Command (..), SimOptions (..))
+import           Examples.Registry (allExamples, exampleCommand)
+import           Examples.Types
+
+spec :: Spec
+spec =
+  describe "exampleCommand" $ do
+    let named n = head [ e | e <- allExamples, exName e == n ]
+        keysOf flags = case exampleCommand (named "ex6-robot") flags of
+          Right (RunWith o) -> Right (optKeys o, optSeconds o)
+          Right ShowHelp    -> Left "help"
+          Left err          -> Left err
+    it "scripts the example's own keys, and its seconds, when the command line gives none" $
+      keysOf [] `shouldBe` Right (exKeys (named "ex6-robot"), exSeconds (named "ex6-robot"))
+    it "takes the command line's --keys instead of the example's script, all of them, and its --seconds" $ do
+      keysOf ["--keys", "1:+"] `shouldBe` Right ([(1, '+')], exSeconds (named "ex6-robot"))
+      keysOf ["--keys", "1:+", "--seconds", "4", "--keys", "2:x"] `shouldBe` Right ([(1, '+'), (2, 'x')], 4)
+      keysOf ["--keys", ""] `shouldBe` Right ([], exSeconds (named "ex6-robot"))
+    it "refuses flags for a signal-function example, and passes a malformed command line's fault on" $ do
+      fmap (const ()) (exampleCommand (named "xSF") ["--seconds", "3"])
+        `shouldBe` Left "xSF is a signal-function example; it takes no flags"
+      fmap (const ()) (exampleCommand (named "ex6-robot") ["--frobnicate"]) `shouldSatisfy` either (const True) (const False)
