@@ -132,6 +132,10 @@ data Command
 -- @--out@ into the new folder; the ones it names stay where it says,
 -- whatever the order of the flags (@--svg a.svg --out x@ and
 -- @--out x --svg a.svg@ both write @a.svg@).
+--
+-- A flag given twice takes its last value, but for the two that add:
+-- each @--keys@ adds its presses to the settings' ('optKeys', those given
+-- included), each @--param@ sets its name's value.
 parseSimArgs :: SimOptions -> [String] -> Either String Command
 parseSimArgs o0 = go o0 False False
   where
