@@ -15,7 +15,7 @@ import           Data.Ratio          (Ratio, (%))
 import qualified Data.Set            as S
 import           Data.List           (isInfixOf, isPrefixOf, sort)
 import           Data.Word           (Word8)
-import           System.Directory    (createDirectory, createFileLink, doesFileExist, findExecutable,
+import           System.Directory    (canonicalizePath, createDirectory, createFileLink, doesFileExist, findExecutable,
                                       getPermissions, listDirectory, makeAbsolute, setOwnerExecutable,
                                       setPermissions)
 import           System.Environment  (getArgs, getEnvironment, getExecutablePath)
@@ -575,6 +575,87 @@ spec = do
       _ <- runScript [] sweep args
       mapM (doesFileExist . (dir </>)) ["a.jsonl", "b.jsonl"] `shouldReturn` [True, True]
       length . lines <$> readFile results `shouldReturn` 2
+
+    it "refuses, before any run, a job's output that is the jobs file, the program, or a world or run log a job reads (under any name)" $ withTempDir $ \dir -> do
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      (dumped, worldText, _) <- readProcessWithExitCode prog ["--dump-world"] ""
+      dumped `shouldBe` ExitSuccess
+      let results = dir </> "r.jsonl"
+          jobs = dir </> "jobs"
+          keep = [("w1.world", worldText), ("w2.world", worldText), ("run.jsonl", "a run log\n")]
+      forM_ keep $ \(f, t) -> writeFile (dir </> f) t
+      createFileLink (dir </> "w2.world") (dir </> "link.jsonl")
+      let refused ls what = do
+            writeFile jobs (unlines ls)
+            (code, _, err) <- runScriptCode [] sweep ["--jobs", jobs, prog, results, "--", "--seconds", "1"]
+            (code, what `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
+            readFile' jobs `shouldReturn` unlines ls
+            forM_ keep $ \(f, t) -> readFile' (dir </> f) `shouldReturn` t
+            doesFileExist results `shouldReturn` False
+      refused ["--seed 1", "--seed 2 --svg " ++ jobs] (jobs ++ ": line 2: --svg " ++ jobs ++ " would overwrite the jobs file " ++ jobs)
+      refused ["--seed 1 --world " ++ dir </> "w1.world", "--seed 2 --svg " ++ dir </> "w1.world"]
+              (jobs ++ ": line 2: --svg " ++ dir </> "w1.world would overwrite the world file " ++ dir </> "w1.world (read by " ++ jobs ++ ": line 1)")
+      refused ["--seed 1 --world " ++ dir </> "w2.world", "--seed 2 --log " ++ dir </> "link.jsonl"]
+              (jobs ++ ": line 2: --log " ++ dir </> "link.jsonl would overwrite the world file " ++ dir </> "w2.world")
+      refused ["--seed 1 --replay-from " ++ dir </> "run.jsonl --replay " ++ dir </> "p.html"
+              , "--seed 2 --frames --out " ++ dir </> "f2 --video " ++ dir </> "." </> "run.jsonl"]
+              (jobs ++ ": line 2: --video " ++ dir </> "./run.jsonl would overwrite the run log " ++ dir </> "run.jsonl")
+      refused ["--seed 1 --log " ++ prog] (jobs ++ ": line 1: --log " ++ prog ++ " would overwrite the program " ++ prog)
+
+    it "refuses a file two job lines write under two spellings (a and ./a, a folder with and without /, a hard link); not a device" $ withTempDir $ \dir -> do
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      writeFile (dir </> "old.jsonl") "an old log\n"
+      _ <- readProcess "ln" [dir </> "old.jsonl", dir </> "hard.jsonl"] ""
+      let results = dir </> "r.jsonl"
+          jobs = dir </> "jobs"
+          sweepIn ls args = do
+            writeFile jobs (unlines ls)
+            readCreateProcessWithExitCode (proc "bash" ([sweep, "--jobs", jobs] ++ args)) { cwd = Just dir } ""
+          refused ls what = do
+            (code, _, err) <- sweepIn ls [prog, results, "--", "--seconds", "1"]
+            (code, what `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
+            doesFileExist results `shouldReturn` False
+      refused ["--seed 1 --log L.jsonl", "--seed 2 --log ./L.jsonl"] (jobs ++ ": line 2: --log ./L.jsonl: " ++ jobs ++ ": line 1 writes it too")
+      refused ["--seed 1 --frames --out od2", "--seed 2 --frames --out od2/"]
+              (jobs ++ ": line 2: --frames into od2/: " ++ jobs ++ ": line 1 writes its frames there too")
+      refused ["--seed 1 --log old.jsonl", "--seed 2 --svg hard.jsonl"] (jobs ++ ": line 2: --svg hard.jsonl: " ++ jobs ++ ": line 1 writes it too")
+      refused ["--seed 1 --log L.jsonl --svg " ++ dir </> "L.jsonl"] (jobs ++ ": line 1: --log L.jsonl and --svg " ++ dir </> "L.jsonl are the same file")
+      readFile' (dir </> "old.jsonl") `shouldReturn` "an old log\n"
+      -- a device is not a file to keep: /dev/null on every line is no clash
+      (code, out, err) <- sweepIn ["--seed 1 --log /dev/null", "--seed 2 --log /dev/null"] ["--list"]
+      (code, lines out, err) `shouldBe` (ExitSuccess, ["--seed 1 --log /dev/null", "--seed 2 --log /dev/null"], "")
+
+    it "refuses, before any run, what each run would stop at: an input not there, an output in no folder, a flag with no value" $ withTempDir $ \dir -> do
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      real <- canonicalizePath dir
+      createDirectory (dir </> "adir")
+      writeFile (dir </> "jobs") (unlines
+        [ "--seed 1 --world " ++ dir </> "none.world"
+        , "--seed 2 --log " ++ dir </> "no" </> "run.jsonl"
+        , "--seed 3 --svg " ++ dir </> "adir"
+        , "--seed 4 --log"
+        , "--seed 5 --log --seed 6"
+        , "--seed 6 --video " ++ dir </> "v.mp4"
+        , "--seed 7 --replay-from " ++ dir </> "none.jsonl --replay " ++ dir </> "p.html"
+        , "--seed 8 --frames --out " ++ dir </> "no" </> "frames"
+          -- (the run makes its own --out folder: no fault)
+        , "--seed 9 --log " ++ dir </> "new" </> "run.jsonl --out " ++ dir </> "new" ])
+      (code, _, err) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "1"]
+      code `shouldBe` ExitFailure 2
+      let faults = [ (1, "--world " ++ dir </> "none.world: no such file")
+                   , (2, "--log " ++ dir </> "no" </> "run.jsonl: no folder " ++ real </> "no")
+                   , (3, "--svg " ++ dir </> "adir: it is a folder")
+                   , (4, "--log needs a value")
+                   , (5, "--log needs a value, found the flag --seed")
+                   , (6, "--video needs the frames (add --frames)")
+                   , (7, "--replay-from " ++ dir </> "none.jsonl: no such file")
+                   , (8, "--frames into " ++ dir </> "no" </> "frames: no folder " ++ real </> "no") ]
+      [ k | (k, what) <- faults, not ((dir </> "jobs: line " ++ show (k :: Int) ++ ": " ++ what) `isInfixOf` err) ] `shouldBe` []
+      err `shouldNotSatisfy` ("line 9" `isInfixOf`)
+      doesFileExist (dir </> "r.jsonl") `shouldReturn` False
 
     it "checks --jobs, --seeds and --worlds up front, and runs worlds and parameters with spaces" $ withTempDir $ \dir -> do
       sweep <- script "sweep"
