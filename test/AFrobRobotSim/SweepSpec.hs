@@ -33,7 +33,7 @@ import           Test.QuickCheck     (forAll, shuffle)
 import           AFrob               hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.JSON
-import           AFrobRobotSim.Sweep (mergeResults, sweepMergeMain)
+import           AFrobRobotSim.Sweep (maxLineBytes, mergeResults, sweepMergeMain)
 import           TestUtil (withTempDir)
 
 -- | The environment variable that makes the test binary run 'child'.
@@ -238,11 +238,31 @@ spec = do
       forAll (shuffle sampleLines) $ \ls -> mergeResults (unlines ls) == mergeResults (unlines sampleLines)
     it "reports a line that is not JSON with its number" $
       mergeResults (unlines [head sampleLines, "not json"]) `shouldSatisfy` either ("line 2" `isInfixOf`) (const False)
-    it "says when result lines repeat a run (a file merged twice), and counts each" $ do
-      let single = mergeResults (unlines sampleLines)
-          twice = mergeResults (unlines (sampleLines ++ take 2 sampleLines))
-      single `shouldSatisfy` either (const False) (not . ("repeat" `isInfixOf`))
-      twice `shouldSatisfy` either (const False) ("== note: 2 result lines repeat runs" `isInfixOf`)
+    it "refuses a line that repeats a run (the same setting and seed: a file merged twice), naming it" $ do
+      let twice = mergeResults (unlines (sampleLines ++ take 2 sampleLines))
+      twice `shouldSatisfy` either ("line 6: the run world=default speed=0.1 seed 1 (dt 0.01, seconds 1) is on an earlier line too" `isPrefixOf`)
+                                   (const False)
+      -- runs told apart by their time step or duration are two runs
+      mergeResults (unlines (sampleLines ++ [replace "\"seconds\":1," "\"seconds\":2," (head sampleLines)]))
+        `shouldSatisfy` either (const False) ("== note: 1 setting mixes runs of different dt or seconds" `isInfixOf`)
+    it "takes a null outcome (a number that was not finite) as no value, never as NaN" $ do
+      let nullDistance = replace "\"distance\":6," "\"distance\":null," (sampleLines !! 2)
+          rows t = [ words l | l <- lines t, "SimbotA 1 distance" `isInfixOf` l ]
+      nullDistance `shouldSatisfy` ("\"distance\":null" `isInfixOf`)
+      table <- either (\e -> expectationFailure e >> pure "") pure
+                 (mergeResults (unlines (nullDistance : drop 3 sampleLines ++ take 2 sampleLines)))
+      table `shouldNotSatisfy` ("NaN" `isInfixOf`)
+      rows table `shouldSatisfy` elem ["SimbotA", "1", "distance", "1.5000", "1.0000", "2.0000", "(2", "runs;", "1", "not", "a", "finite", "number)"]
+      -- no finite value at all
+      let allNull = mergeResults (replace "\"distance\":1," "\"distance\":null," (head sampleLines))
+      allNull `shouldSatisfy` either (const False) (\t -> elem ["SimbotA", "1", "distance", "n/a", "n/a", "n/a", "(0", "runs;", "1", "not", "a", "finite", "number)"] (rows t))
+    it "says there are no result lines when there are none" $ do
+      mergeResults "" `shouldBe` Left "no result lines"
+      mergeResults "\n  \n" `shouldBe` Left "no result lines"
+    it "gives the same means in any order, where floating-point sums would not" $
+      forAll (shuffle [1e16, 1, -1e16, 1, 3e-5, 2.5]) $ \ds ->
+        mergeResults (unlines [ resultLine k [] d Nothing | (k, d) <- zip [1 ..] ds ])
+          `shouldSatisfy` either (const False) (elem ["SimbotA", "1", "distance", "0.7500", "-1.0000e16", "1.0000e16"] . map words . lines)
     it "prints a setting or a failure with control characters escaped" $ do
       let evil = resultLine 1 [("speed", "0.1\ESC[2J")] 1 (Just "bad\nFAILED seed 9: forged")
       mergeResults evil `shouldSatisfy` either (const False)
@@ -291,6 +311,61 @@ spec = do
       (code, out, err) <- readProcessWithExitCode merger [dir </> "r.jsonl"] ""
       (code, out) `shouldBe` (ExitFailure 1, "")
       err `shouldBe` ("afrp-sweep-merge: " ++ dir </> "r.jsonl" ++ ":2:2: invalid UTF-8 (byte 0xff)\n")
+
+    it "afrp-sweep-merge: a line longer than maxLineBytes (an endless /dev/zero) is refused at once, with its file and line (exit 2)" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      let file = dir </> "long.jsonl"
+          tooLong name k = "afrp-sweep-merge: " ++ name ++ ": line " ++ show (k :: Int) ++ ": longer than 16777216 bytes"
+      B.writeFile file (B.concat [ B.pack (map (fromIntegral . fromEnum) (head sampleLines ++ "\n"))
+                                 , B.replicate (maxLineBytes + 1) 0x61, B.pack [10] ])
+      -- (in a heap of 512 MB, which the whole input read at once overflows)
+      forM_ [(file, 2), ("/dev/zero", 1)] $ \(input, k) -> do
+        r <- timeout 60000000 (readProcessWithExitCode merger ["+RTS", "-M512m", "-RTS", input] "")
+        fmap (\(code, out, err) -> (code, out, tooLong input k `isPrefixOf` err)) r `shouldBe` Just (ExitFailure 2, "", True)
+      -- a line just at the limit is read (and here refused for what it is)
+      B.writeFile file (B.replicate maxLineBytes 0x61)
+      (code, _, err) <- readProcessWithExitCode merger [file] ""
+      (code, "line 1: not a result line of a sweep" `isInfixOf` err) `shouldBe` (ExitFailure 1, True)
+
+    it "afrp-sweep-merge: its memory does not grow with the lines (10,000 lines in a heap of 32 MB)" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      let file = dir </> "many.jsonl"
+      writeFile file (unlines [ resultLine s [("speed", show (s `mod` 4))] (fromIntegral s) Nothing | s <- [1 .. 10000] ])
+      (code, out, err) <- readProcessWithExitCode merger ["+RTS", "-M32m", "-RTS", file] ""
+      (code, err) `shouldBe` (ExitSuccess, "")
+      lines out `shouldSatisfy` elem "== world=default speed=0  (2500 runs, 0 failed)"
+      map words (lines out) `shouldSatisfy` elem ["SimbotA", "1", "distance", "5002.0000", "4.0000", "10000.0000"]
+
+    it "afrp-sweep-merge: no result line at all (empty files, empty standard input) is refused (exit 1)" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      writeFile (dir </> "a.jsonl") ""
+      writeFile (dir </> "b.jsonl") "\n"
+      readProcessWithExitCode merger [dir </> "a.jsonl", dir </> "b.jsonl"] "" `shouldReturn`
+        (ExitFailure 1, "", "afrp-sweep-merge: no result lines in " ++ dir </> "a.jsonl, " ++ dir </> "b.jsonl\n")
+      readProcessWithExitCode merger [] "" `shouldReturn` (ExitFailure 1, "", "afrp-sweep-merge: no result lines in standard input\n")
+      -- an empty shard among others is no fault
+      writeFile (dir </> "c.jsonl") (unlines (take 2 sampleLines))
+      (code, out, _) <- readProcessWithExitCode merger [dir </> "a.jsonl", dir </> "c.jsonl"] ""
+      (code, "(2 runs, 0 failed)" `isInfixOf` out) `shouldBe` (ExitSuccess, True)
+
+    it "afrp-sweep-merge: a file given twice, under any name, or a run in two files is refused" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      let r = dir </> "r.jsonl"
+      writeFile r (unlines (take 2 sampleLines))
+      _ <- readProcess "ln" [r, dir </> "hard.jsonl"] ""
+      createFileLink r (dir </> "soft.jsonl")
+      forM_ [[r, r], [r, dir </> "." </> "r.jsonl"], [r, dir </> "hard.jsonl"], [dir </> "soft.jsonl", r]] $ \args -> do
+        (code, out, err) <- readProcessWithExitCode merger args ""
+        (code, out, "its runs would be counted twice" `isInfixOf` err) `shouldBe` (ExitFailure 2, "", True)
+      writeFile (dir </> "s.jsonl") (unlines (drop 1 sampleLines))
+      (code, out, err) <- readProcessWithExitCode merger [r, dir </> "s.jsonl"] ""
+      (code, out) `shouldBe` (ExitFailure 1, "")
+      err `shouldSatisfy` ((dir </> "s.jsonl: line 1: the run world=default speed=0.1 seed 2") `isInfixOf`)
+
+    it "afrp-sweep-merge: a file that cannot be read is named once (exit 2)" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      readProcessWithExitCode merger [dir </> "none.jsonl"] "" `shouldReturn`
+        (ExitFailure 2, "", "afrp-sweep-merge: " ++ dir </> "none.jsonl: cannot read it: does not exist (No such file or directory)\n")
 
   describe "--param" $ do
     it "collects NAME=VALUE pairs in order, a repeated name keeping its last value" $
