@@ -1,15 +1,22 @@
+{-# LANGUAGE MultiWayIf #-}
 -- |
 -- Module      : AFrobRobotSim.InputFile
 -- Description : Reading a file the user names: bounded, and a named pipe
 --               waited for.
 --
--- World files and run logs are read whole, but a path may name something
--- endless (@\/dev\/zero@), huge, or a named pipe another program has not
--- yet opened. 'readFileUpTo' reads at most a given number of bytes;
+-- World files are read whole, run logs and result files a line at a
+-- time, but a path may name something endless (@\/dev\/zero@), huge, or
+-- a named pipe another program has not yet opened. 'readFileUpTo' reads
+-- at most a given number of bytes; 'nextLine' a line of at most so many;
 -- 'openReading' waits for a FIFO's writer instead of reading it as empty.
 module AFrobRobotSim.InputFile
   ( readFileUpTo
   , openReading
+    -- * Lines, bounded
+  , LineReader
+  , LineFault (..)
+  , newLineReader
+  , nextLine
   ) where
 
 import           Control.Concurrent      (forkIO)
@@ -17,6 +24,7 @@ import           Control.Concurrent.MVar (newEmptyMVar, putMVar, takeMVar)
 import           Control.Exception       (IOException, bracket, onException, throwIO, try)
 import qualified Data.ByteString         as B
 import qualified Data.ByteString.Lazy    as BL
+import           Data.IORef
 import           GHC.IO.Handle.FD        (openFileBlocking)
 import           System.IO               (Handle, IOMode (ReadMode), hClose, hFileSize, hSetBinaryMode)
 
@@ -60,3 +68,53 @@ openReading path = do
   r <- takeMVar opened `onException` forkIO (takeMVar opened >>= either (\e -> const (pure ()) (e :: IOException)) hClose)
   h <- either throwIO pure r
   h <$ hSetBinaryMode h True
+
+-- | A file's lines, read in chunks, with limits: at most so many bytes in
+-- all, and in a line ('newLineReader', 'nextLine'). Only the line being
+-- read is held, however long the file: a reader of logs and result files
+-- that takes a line at a time needs no more.
+data LineReader = LineReader Handle (IORef B.ByteString) (IORef Int) (IORef Int) Int Int
+
+-- | Why 'nextLine' gives no line: more than the limit of bytes in all
+-- ('TooManyBytes'), more than the limit in the line of this number
+-- ('LongLine', from 1), or a read that failed ('Unreadable').
+data LineFault = TooManyBytes | LongLine Int | Unreadable IOException
+
+-- | @newLineReader h cap lineCap@ reads the lines of @h@ (opened in binary
+-- mode), at most @cap@ bytes in all (@maxBound@: no limit) and
+-- @lineCap@ in a line (its newline not counted).
+newLineReader :: Handle -> Int -> Int -> IO LineReader
+newLineReader h cap lineCap =
+  LineReader h <$> newIORef B.empty <*> newIORef 0 <*> newIORef 1 <*> pure cap <*> pure lineCap
+
+-- | The next line (without its newline) and its number, from 1;
+-- 'Nothing' at the end of the file (a last line without a newline is a
+-- line). Reading stops at the first fault: a line longer than the limit
+-- is not read to its end (an endless one, @\/dev\/zero@'s, ends at the
+-- limit).
+nextLine :: LineReader -> IO (Either LineFault (Maybe (Int, B.ByteString)))
+nextLine (LineReader h restRef totalRef numRef cap lineCap) = do
+  n <- readIORef numRef
+  rest <- readIORef restRef
+  let done line left = do
+        writeIORef restRef left
+        writeIORef numRef (n + 1)
+        pure (Right (Just (n, line)))
+      -- the line's chunks so far (last first) and their length, then the
+      -- bytes still to look at
+      go acc len buf = case B.elemIndex 10 buf of
+        Just k | len + k > lineCap -> pure (Left (LongLine n))
+               | otherwise         -> done (B.concat (reverse (B.take k buf : acc))) (B.drop (k + 1) buf)
+        Nothing
+          | len + B.length buf > lineCap -> pure (Left (LongLine n))
+          | otherwise -> do
+              got <- try (B.hGetSome h 65536)
+              let chunk = either (const B.empty) id got
+              total <- (+ B.length chunk) <$> readIORef totalRef
+              writeIORef totalRef total
+              if | Left e <- got -> pure (Left (Unreadable e))
+                 | total > cap   -> pure (Left TooManyBytes)
+                 | B.null chunk  -> if len + B.length buf == 0 then pure (Right Nothing)
+                                    else done (B.concat (reverse (buf : acc))) B.empty
+                 | otherwise     -> go (buf : acc) (len + B.length buf) chunk
+  go [] 0 rest

@@ -1,4 +1,3 @@
-{-# LANGUAGE MultiWayIf #-}
 {-# LANGUAGE ScopedTypeVariables #-}
 -- |
 -- Module      : AFrobRobotSim.Log.Read
@@ -25,15 +24,13 @@ module AFrobRobotSim.Log.Read
   ) where
 
 import           Control.Exception         (IOException, finally, try)
-import qualified Data.ByteString           as B
 import           Data.Char                 (isDigit)
-import           Data.IORef
 import           Data.List                 (stripPrefix)
-import           System.IO                 (Handle, hClose, hFileSize)
+import           System.IO                 (hClose, hFileSize)
 
 import           AFrobRobotSim.Console     (displayPath)
 import           AFrobRobotSim.Log.Records
-import           AFrobRobotSim.InputFile   (openReading)
+import           AFrobRobotSim.InputFile   (LineFault (..), newLineReader, nextLine, openReading)
 import           AFrobRobotSim.WorldFile.Lexical (cannotRead, utf8TextFrom)
 
 -- | A log read back.
@@ -188,37 +185,38 @@ foldLogFileUpTo cap lineCap path start step = do
   -- (only reading the file is caught: what @start@ and @step@ throw is
   -- theirs, thrown on)
   case opened of
-   Left e    -> pure (Left (cannotRead path e))
-   Right hdl -> flip finally (hClose hdl) $ do
-    size <- either (\e -> const 0 (e :: IOException)) id <$> try (hFileSize hdl)
-    if size > fromIntegral cap then pure (Left tooLong) else do
-      src <- newLineSource hdl cap lineCap
-      let -- the next line that is not blank, with its number
-          nextText = nextLine src >>= \r -> case r of
-            Left fault            -> pure (Left (faultText fault))
-            Right Nothing         -> pure (Right Nothing)
-            Right (Just (i, bs))  -> case utf8TextFrom name i bs of
-              Left e              -> pure (Left e)
-              Right l | blank l   -> nextText
-                      | otherwise -> pure (Right (Just (i, l)))
-          body h s = nextText >>= \r -> case r of
-            Left e              -> pure (Left e)
-            Right Nothing       -> pure (Right (s, Nothing))
-            Right (Just (i, l)) -> case bodyLine loc h i l of
-              Left e          -> pure (Left e)
-              Right (Left f)  -> step s f >>= body h
-              Right (Right m) -> nextText >>= \after -> pure $ case after of
-                Left e             -> Left e
-                Right Nothing      -> Right (s, Just m)
-                Right (Just (j, _)) -> Left (loc j Nothing ++ afterSummary)
-      first <- nextText
-      case first of
-        Left e               -> pure (Left e)
-        Right Nothing        -> pure (Left (loc 1 Nothing ++ emptyLog))
-        Right (Just (i, l))  -> case headerLine loc i l of
-          Left e  -> pure (Left e)
-          Right h -> start h >>= body h
+    Left e    -> pure (Left (cannotRead path e))
+    Right hdl -> readFrom hdl `finally` hClose hdl
   where
+    readFrom hdl = do
+      size <- either (\e -> const 0 (e :: IOException)) id <$> try (hFileSize hdl)
+      if size > fromIntegral cap then pure (Left tooLong) else do
+        src <- newLineReader hdl cap lineCap
+        let -- the next line that is not blank, with its number
+            nextText = nextLine src >>= \r -> case r of
+              Left fault            -> pure (Left (faultText fault))
+              Right Nothing         -> pure (Right Nothing)
+              Right (Just (i, bs))  -> case utf8TextFrom name i bs of
+                Left e              -> pure (Left e)
+                Right l | blank l   -> nextText
+                        | otherwise -> pure (Right (Just (i, l)))
+            body h s = nextText >>= \r -> case r of
+              Left e              -> pure (Left e)
+              Right Nothing       -> pure (Right (s, Nothing))
+              Right (Just (i, l)) -> case bodyLine loc h i l of
+                Left e          -> pure (Left e)
+                Right (Left f)  -> step s f >>= body h
+                Right (Right m) -> nextText >>= \after -> pure $ case after of
+                  Left e             -> Left e
+                  Right Nothing      -> Right (s, Just m)
+                  Right (Just (j, _)) -> Left (loc j Nothing ++ afterSummary)
+        first <- nextText
+        case first of
+          Left e               -> pure (Left e)
+          Right Nothing        -> pure (Left (loc 1 Nothing ++ emptyLog))
+          Right (Just (i, l))  -> case headerLine loc i l of
+            Left e  -> pure (Left e)
+            Right h -> start h >>= body h
     name = displayPath path   -- (a name with control characters escaped)
     loc :: Locate
     loc i mc = name ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": "
@@ -226,50 +224,6 @@ foldLogFileUpTo cap lineCap path start step = do
               ++ " shorter run, or fewer frames with --fps)"
     faultText fault = case fault of
       Unreadable e -> cannotRead path e
-      OverCap    -> tooLong
+      TooManyBytes -> tooLong
       LongLine i -> loc i Nothing ++ "a line of more than " ++ show lineCap ++ " bytes, more than this reader"
                     ++ " takes (a frame of 10,000 robots is about 4 MB; is it a run log?)"
-
-------------------------------------------------------------------------------
--- Lines of a file, bounded
-
--- A file's lines read in chunks: the bytes after the last line taken,
--- the bytes read so far, the number of the next line, and the limits.
-data LineSource = LineSource Handle (IORef B.ByteString) (IORef Int) (IORef Int) Int Int
-
--- Why no more lines come: more than so many bytes in all, or in line N,
--- or a read that failed.
-data LineFault = OverCap | LongLine Int | Unreadable IOException
-
-newLineSource :: Handle -> Int -> Int -> IO LineSource
-newLineSource h cap lineCap =
-  LineSource h <$> newIORef B.empty <*> newIORef 0 <*> newIORef 1 <*> pure cap <*> pure lineCap
-
--- The next line (without its newline) and its number, 'Nothing' at the
--- end of the file; a last line without a newline counts.
-nextLine :: LineSource -> IO (Either LineFault (Maybe (Int, B.ByteString)))
-nextLine (LineSource h restRef totalRef numRef cap lineCap) = do
-  n <- readIORef numRef
-  rest <- readIORef restRef
-  let done line left = do
-        writeIORef restRef left
-        writeIORef numRef (n + 1)
-        pure (Right (Just (n, line)))
-      -- the line's chunks so far (last first) and their length, then the
-      -- bytes still to look at
-      go acc len buf = case B.elemIndex 10 buf of
-        Just k | len + k > lineCap -> pure (Left (LongLine n))
-               | otherwise         -> done (B.concat (reverse (B.take k buf : acc))) (B.drop (k + 1) buf)
-        Nothing
-          | len + B.length buf > lineCap -> pure (Left (LongLine n))
-          | otherwise -> do
-              got <- try (B.hGetSome h 65536)
-              let chunk = either (const B.empty) id got
-              total <- (+ B.length chunk) <$> readIORef totalRef
-              writeIORef totalRef total
-              if | Left e <- got -> pure (Left (Unreadable e))
-                 | total > cap  -> pure (Left OverCap)
-                 | B.null chunk -> if len + B.length buf == 0 then pure (Right Nothing)
-                                   else done (B.concat (reverse (buf : acc))) B.empty
-                 | otherwise    -> go (buf : acc) (len + B.length buf) chunk
-  go [] 0 rest
