@@ -264,12 +264,13 @@ pSwitch = pSwitchWith stepperFor
 pSwitchWith :: Functor col => Stepper col
             -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
             -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-pSwitchWith stepper rf sfs (SF e0) k = SF (lazyN (go (fmap sfNode sfs) e0))
+pSwitchWith stepper rf sfs (SF e0) k = SF (lazyHandoverN (go (fmap sfNode sfs) e0))
   where
-    go ns ne = NStep (\dt a -> case stepper dt (rf a ns) of
+    go ns ne = HandoverStep (\dt a -> case stepper dt (rf a ns) of
       (# ns', cs #) -> case stepN ne dt (a, cs) of
-        (# ne', NoEvent #) -> case go ns' ne' of !n -> (# n, cs #)
-        (# _, Event d #)   -> stepN (sfNode (k (freezeCol ns dt) d)) dt a)
+        (# ne', NoEvent #) -> (# Stay (go ns' ne'), cs #)
+        (# _, Event d #)   -> case stepN (sfNode (k (freezeCol ns dt) d)) dt a of
+          (# m, cs' #) -> (# Leave m, cs' #))
 
 -- | Delayed 'pSwitch': at the switching instant the output is still the
 -- old collection's; @k sfs' d@ starts at that instant (its first output
@@ -283,17 +284,17 @@ dpSwitch = dpSwitchWith stepperFor
 dpSwitchWith :: Functor col => Stepper col
              -> (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
              -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
-dpSwitchWith stepper rf sfs (SF e0) k = SF (lazyN (go (fmap sfNode sfs) e0))
+dpSwitchWith stepper rf sfs (SF e0) k = SF (lazyHandoverN (go (fmap sfNode sfs) e0))
   where
-    go ns ne = NStep (\dt a -> case stepper dt (rf a ns) of
+    go ns ne = HandoverStep (\dt a -> case stepper dt (rf a ns) of
       (# ns', cs #) ->
         -- Decoupled: the detector is stepped, and its event examined, only
         -- when the successor next steps, so it may read (through a loop)
         -- the output this step is producing.
         let next = case boxStep ne dt (a, cs) of
-              Boxed ne' NoEvent -> go ns' ne'
-              Boxed _ (Event d) -> case stepN (sfNode (k (freezeCol ns dt) d)) dt a of (# m, _ #) -> m
-        in (# deferN next, cs #))
+              Boxed ne' NoEvent -> Stay (go ns' ne')
+              Boxed _ (Event d) -> case stepN (sfNode (k (freezeCol ns dt) d)) dt a of (# m, _ #) -> Leave m
+        in (# next, cs #))
 
 -- | 'pSwitch' with the input broadcast to every member.
 pSwitchB :: Functor col

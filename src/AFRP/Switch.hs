@@ -260,22 +260,24 @@ drSwitch (SF n0) = SF (lazyN (go n0))
 -- new signal function's first output. An event at time 0 passes the
 -- original, unstarted @sf@.
 kSwitch :: SF a b -> SF (a, b) (Event c) -> (SF a b -> c -> SF a b) -> SF a b
-kSwitch (SF n0) (SF e0) k = SF (lazyN (go n0 e0))
+kSwitch (SF n0) (SF e0) k = SF (lazyHandoverN (go n0 e0))
   where
-    go n ne = NStep (\dt a -> case stepN n dt a of
+    go n ne = HandoverStep (\dt a -> case stepN n dt a of
       (# n', b #) -> case stepN ne dt (a, b) of
-        (# ne', NoEvent #) -> case go n' ne' of !m -> (# m, b #)
-        (# _, Event c #)   -> stepN (sfNode (k (SF (freezeN n dt)) c)) dt a)
+        (# ne', NoEvent #) -> (# Stay (go n' ne'), b #)
+        (# _, Event c #)   -> case stepN (sfNode (k (SF (freezeN n dt)) c)) dt a of
+          (# m, b' #) -> (# Leave m, b' #))
 
 -- | Delayed 'kSwitch': at the switching instant the output is still
 -- @sf@'s; @k sf' c@ starts there (first output discarded).
 dkSwitch :: SF a b -> SF (a, b) (Event c) -> (SF a b -> c -> SF a b) -> SF a b
-dkSwitch (SF n0) (SF e0) k = SF (lazyN (go n0 e0))
+dkSwitch (SF n0) (SF e0) k = SF (lazyHandoverN (go n0 e0))
   where
-    go n ne = NStep (\dt a -> case stepN n dt a of
+    -- (what follows is decided at the next step: decoupled)
+    go n ne = HandoverStep (\dt a -> case stepN n dt a of
       (# n', b #) ->
         let next = case boxStep ne dt (a, b) of
-              Boxed ne' NoEvent -> go n' ne'
+              Boxed ne' NoEvent -> Stay (go n' ne')
               Boxed _ (Event c) -> case stepN (sfNode (k (SF (freezeN n dt)) c)) dt a of
-                (# m, _ #) -> m
-        in (# deferN next, b #))
+                (# m, _ #) -> Leave m
+        in (# next, b #))

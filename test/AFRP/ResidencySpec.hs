@@ -16,9 +16,15 @@
 -- those types by rewrite rules); a member left to be stepped on demand
 -- would pile up one suspended step per sample.
 --
+-- /A switch that calls itself again./ 'kSwitch', 'dkSwitch' and the
+-- collection switches are lazy ('AFRP.Internal.Node.lazyN'); their
+-- continuation, a lazy switch again, was wrapped once more at every
+-- switch, so that each step cost one more layer.
+--
 -- Each case runs a child process (this test binary, started again with
 -- 'childVariable' set) for 10^6 samples under a 16 MB heap limit
--- (@+RTS -M16m@); a leak ends it with a heap overflow.
+-- (@+RTS -M16m@), or 10^5 switches under 2 MB; a leak ends it with a
+-- heap overflow.
 module AFRP.ResidencySpec
   ( spec
   , childVariable
@@ -32,7 +38,7 @@ import qualified Data.Sequence      as Seq
 import           System.Environment (getEnvironment, getExecutablePath)
 import           System.Exit        (ExitCode (..))
 import           System.Process     (env, proc, readCreateProcessWithExitCode)
-import           Test.Hspec
+import           Test.Hspec          hiding (after)
 
 import           AFRP
 
@@ -85,12 +91,37 @@ collectionNetwork sf = (identity &&& sf) >>> arr (uncurry (+))
 samples :: Int
 samples = 1000000
 
+-- Switches whose continuation calls the same switch again, the usual way
+-- of writing a switch that recurs: each switches at every sample (dt = 1,
+-- an event after 0.5 s), resuming the signal function it froze, so the
+-- output is the time, 0, 1, 2, ... A wrapper added at every switch made
+-- each later step cost one layer more: quadratic time, and 56 bytes a
+-- switch kept.
+selfSwitching :: [(String, SF () Double)]
+selfSwitching =
+  [ ("kSwitch",   ks localTime)
+  , ("dkSwitch",  dks localTime)
+  , ("pSwitchB",  psw [localTime] >>> arr sum)
+  , ("dpSwitchB", dpsw [localTime] >>> arr sum)
+  ]
+  where
+    ks sf = kSwitch sf (arr fst >>> after 0.5 ()) (\sf' _ -> ks sf')
+    dks sf = dkSwitch sf (arr fst >>> after 0.5 ()) (\sf' _ -> dks sf')
+    psw sfs = pSwitchB sfs (arr fst >>> after 0.5 ()) (\sfs' _ -> psw sfs')
+    dpsw sfs = dpSwitchB sfs (arr fst >>> after 0.5 ()) (\sfs' _ -> dpsw sfs')
+
+-- How many samples (and switches) the self-switching cases run.
+switchSamples :: Int
+switchSamples = 100000
+
 -- | Runs the named case's network for 10^6 samples at dt = 0.01 on the
 -- inputs 0, 1, 2, ... and prints the sum of its outputs.
+-- A self-switching case (named @self NAME@) runs 10^5 samples at dt = 1.
 child :: String -> IO ()
-child name = case lookup name cases of
-  Just sf -> print (foldl' (+) 0 (embed sf (0, [ (0.01, Just (fromIntegral i)) | i <- [1 .. samples - 1] ])))
-  Nothing -> ioError (userError ("unknown child " ++ show name))
+child name = case (lookup name cases, lookup name [ ("self " ++ n, sf) | (n, sf) <- selfSwitching ]) of
+  (Just sf, _) -> print (foldl' (+) 0 (embed sf (0, [ (0.01, Just (fromIntegral i)) | i <- [1 .. samples - 1] ])))
+  (_, Just sf) -> print (foldl' (+) 0 (embed sf ((), replicate (switchSamples - 1) (1, Nothing))))
+  _            -> ioError (userError ("unknown child " ++ show name))
 
 cases :: [(String, SF Double Double)]
 cases = [ (n, delayNetwork sf) | (n, sf) <- delays ] ++ [ (n, collectionNetwork sf) | (n, sf) <- collections ]
@@ -101,12 +132,21 @@ spec = do
     mapM_ (\(name, _) -> it (name ++ " runs in 16 MB of heap (+RTS -M16m)") (bounded name)) delays
   describe "a collection with a member nobody reads, for 10^6 samples" $
     mapM_ (\(name, _) -> it (name ++ " runs in 16 MB of heap (+RTS -M16m)") (bounded name)) collections
+  describe "a switch whose continuation calls it again, switching at each of 10^5 samples" $
+    mapM_ (\(name, _) -> it (name ++ " runs in 2 MB of heap (+RTS -M2m)") (selfBounded name)) selfSwitching
   where
-    bounded name = do
+    run limit name = do
       self <- getExecutablePath
       environment <- getEnvironment
-      (code, out, err) <- readCreateProcessWithExitCode
-        (proc self ["+RTS", "-M16m", "-RTS"]) { env = Just ((childVariable, name) : environment) } ""
+      readCreateProcessWithExitCode
+        (proc self ["+RTS", "-M" ++ limit, "-RTS"]) { env = Just ((childVariable, name) : environment) } ""
+    bounded name = do
+      (code, out, err) <- run "16m" name
       (code, err) `shouldBe` (ExitSuccess, "")
       -- every network outputs its input: 0 + 1 + ... + (10^6 - 1)
       read out `shouldBe` (fromIntegral (samples * (samples - 1) `div` 2) :: Double)
+    selfBounded name = do
+      (code, out, err) <- run "2m" ("self " ++ name)
+      (code, err) `shouldBe` (ExitSuccess, "")
+      -- the time at each sample: 0 + 1 + ... + (10^5 - 1)
+      read out `shouldBe` (fromIntegral (switchSamples * (switchSamples - 1) `div` 2) :: Double)

@@ -140,6 +140,9 @@ module AFRP.Internal.Node
   , initN
   , mealyN
   , lazyN
+  , HandoverStep (..)
+  , Next (..)
+  , lazyHandoverN
   ) where
 
 import           AFRP.Internal.Chain
@@ -152,8 +155,9 @@ import           AFRP.Internal.Chain
 type Time = Double
 
 -- | A time step in seconds: the time between two consecutive samples.
--- Time steps are expected to be positive; the first sample of any signal
--- function has no time step at all.
+-- A time step is a number, 0 or more, infinity included (the runners of
+-- "AFRP.Run" refuse a NaN or negative one); the first sample of any
+-- signal function has no time step at all.
 type DTime = Double
 
 ------------------------------------------------------------------------------
@@ -692,3 +696,40 @@ resumeLazyN :: Boxed a b -> DTime -> a -> (# Node a b, b #)
 resumeLazyN (Boxed n _) dt a = case n of
   NPure _ -> stepN n dt a
   _       -> stepLazyN n dt a
+
+-- | The step of a switch that runs lazily until it hands over for good
+-- ('lazyHandoverN'): its output and what follows, 'Stay' (its own next
+-- step) or 'Leave' (the node it hands over to, already started).
+newtype HandoverStep a b = HandoverStep (DTime -> a -> (# Next a b, b #))
+
+-- | What follows a step of a 'lazyHandoverN' switch. It may be left
+-- unevaluated until the next step (a decoupled switch decides there
+-- whether it switched).
+data Next a b
+  = Stay (HandoverStep a b)  -- ^ the switch's own next step, lazy as this one
+  | Leave (Node a b)         -- ^ the node handed over to, stepped as it is from now on
+
+-- A 'HandoverStep' result in a box (both parts lazy).
+data BoxedNext a b = BoxedNext (Next a b) b
+
+-- | @lazyHandoverN s@: a switch whose steps are performed as 'lazyN'
+-- performs them (when the output is demanded, or at the latest at the
+-- start of the next step) for as long as it stays, and which, once a step
+-- has left for a node, is that node: stepped as it is, not wrapped.
+-- A switch whose continuation is a lazy switch again (a 'AFRP.Switch.kSwitch'
+-- or a 'AFRP.Parallel.pSwitch' calling itself, the usual way of writing
+-- one that recurs) would otherwise be wrapped once more at every switch,
+-- each later step costing one more layer (quadratic time, and the layers
+-- kept).
+lazyHandoverN :: HandoverStep a b -> Node a b
+lazyHandoverN h = NStep (stepHandover h)
+
+stepHandover :: HandoverStep a b -> DTime -> a -> (# Node a b, b #)
+stepHandover (HandoverStep f) dt a =
+  let r = case f dt a of (# nx, b #) -> BoxedNext nx b
+  in (# NStep (resumeHandover r), case r of BoxedNext _ b -> b #)
+
+resumeHandover :: BoxedNext a b -> DTime -> a -> (# Node a b, b #)
+resumeHandover (BoxedNext nx _) dt a = case nx of
+  Stay h  -> stepHandover h dt a
+  Leave n -> stepN n dt a
