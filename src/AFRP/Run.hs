@@ -38,6 +38,18 @@
 -- where Yampa's does not, so that a long run of unchanged samples builds
 -- no chain of thunks: @react h (dt, error "no sample")@ raises.
 -- 'evalAtZero' and 'evalAt' evaluate nothing.
+--
+-- = Time steps
+--
+-- A time step must be a number, 0 or more: every runner ('embed',
+-- 'reactimate', 'react', 'evalAt', 'evalFuture', 'deltaEncode') refuses
+-- a NaN or negative one with an error naming the runner and the step,
+-- when it takes that step. (Yampa checks nothing here. A NaN step made
+-- the time and every integral NaN from then on, and a delay keep every
+-- later input; a negative one ran time backwards; both silently.) A step
+-- of 0 is a sample at the same time as the one before; an infinite one
+-- passes every finite time (every 'AFRP.EventSource.after' fires, the
+-- time is infinite from then on).
 module AFRP.Run
   ( -- * Running in a monad
     reactimate
@@ -89,7 +101,7 @@ reactimate initialise sense actuate (SF n0) = do
       if a `seq` b `seq` stop then pure () else do
         (dt, ma) <- sense False
         let a' = fromMaybe a ma
-        case stepN n dt a' of
+        case stepN n (checkDt "reactimate" dt) a' of
           (# n', b' #) -> loop n' a' b'
 
 -- | The state of a signal function being driven sample by sample from the
@@ -125,7 +137,7 @@ react h (dt, ma) = do
   a' <- case ma of
     Nothing -> pure a
     Just x  -> pure x
-  case stepN n dt a' of
+  case stepN n (checkDt "react" dt) a' of
     (# n', b #) -> do
       writeIORef (rhState h) (ReactState n' a')
       rhActuate h h True b
@@ -145,14 +157,14 @@ evalAtZero (SF n) a = case stepN n 0 a of (# n', b #) -> (b, FutureSF n')
 -- given input, and what the signal function has become. Its state is
 -- evaluated when the result pair is.
 evalAt :: FutureSF a b -> DTime -> a -> (b, FutureSF a b)
-evalAt (FutureSF n) dt a = case stepN n dt a of (# n', b #) -> (b, FutureSF n')
+evalAt (FutureSF n) dt a = case stepN n (checkDt "evalAt" dt) a of (# n', b #) -> (b, FutureSF n')
 
 -- | @evalFuture sf a dt@ runs the first sample (local time 0) of @sf@ on
 -- input @a@ and returns its output and the rest of @sf@ as a signal
 -- function whose first sample comes @dt@ after that one (whatever time step
 -- it is later run with). For tests and debugging, as 'evalAt'.
 evalFuture :: SF a b -> a -> DTime -> (b, SF a b)
-evalFuture (SF n) a dt = case stepN n 0 a of (# n', b #) -> (b, SF (freezeN n' dt))
+evalFuture (SF n) a dt = case stepN n 0 a of (# n', b #) -> (b, SF (freezeN n' (checkDt "evalFuture" dt)))
 
 -- | @embed sf (a0, samples)@ runs @sf@ purely: @a0@ is the input at local
 -- time 0, each @(dt, ma)@ a later sample. The result has one output per
@@ -184,16 +196,30 @@ embedFB cons nil (SF n0) (a0, samples) = case stepN n0 0 a0 of
 embedStep :: (b -> r -> r) -> (DTime, Maybe a) -> (Node a b -> a -> r) -> Node a b -> a -> r
 embedStep cons (dt, ma) k = oneShot (\n a ->
   let a' = fromMaybe a ma
-  in case stepN n dt a' of (# n', b #) -> b `cons` (a' `seq` k n' a'))
+  in case stepN n (checkDt "embed" dt) a' of (# n', b #) -> b `cons` (a' `seq` k n' a'))
 {-# INLINE embedStep #-}
+
+-- A time step as a runner takes it: the step itself when it is 0 or more
+-- (infinity included), an error naming the runner when it is NaN or
+-- negative (see "Time steps" above).
+checkDt :: String -> DTime -> DTime
+checkDt runner dt
+  | dt >= 0   = dt
+  | otherwise = badDt runner dt
+{-# INLINE checkDt #-}
+
+badDt :: String -> DTime -> a
+badDt runner dt = error ("AFRP.Run." ++ runner ++ ": a time step of " ++ show dt
+                         ++ " (a time step must be a number, 0 or more)")
+{-# NOINLINE badDt #-}
 
 -- | @embedSynch sf (a0, samples)@ is a signal function that replays the
 -- run of @sf@ on the given samples at a controllable speed. Its input is
 -- the speed ratio (0 pauses, 1 is real time, 2 is twice as fast); the
 -- embedded run's clock advances by @ratio * dt@ at each step, and the
 -- output is the embedded output of the latest embedded sample at or before
--- that clock (the last one once the samples run out). A negative ratio is
--- an error.
+-- that clock (the last one once the samples run out). A negative or NaN
+-- ratio is an error.
 embedSynch :: SF a b -> (a, [(DTime, Maybe a)]) -> SF Double b
 embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
   where
@@ -206,7 +232,7 @@ embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
     go :: Double -> b -> [(Double, b)] -> Node Double b
     go !clock bLast rest = NStep (\dt ratio ->
       if not (ratio >= 0)
-        then error ("AFRP.Run.embedSynch: negative speed ratio " ++ show ratio)
+        then error ("AFRP.Run.embedSynch: a speed ratio of " ++ show ratio ++ " (it must be a number, 0 or more)")
         else
           let !clock'       = clock + ratio * dt
               (done, later) = span ((<= clock') . fst) rest
@@ -216,7 +242,8 @@ embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
 
 -- | @deltaEncode dt xs@ turns a list of samples taken every @dt@ seconds
 -- into the input of 'embed', writing 'Nothing' for a sample equal to the
--- previous one. The list must not be empty.
+-- previous one. The list must not be empty, and @dt@ must be a number, 0
+-- or more (see "Time steps" above).
 deltaEncode :: Eq a => DTime -> [a] -> (a, [(DTime, Maybe a)])
 deltaEncode = deltaEncodeBy (==)
 
@@ -229,6 +256,8 @@ deltaEncode = deltaEncodeBy (==)
 -- >   ==  (1, [(0.5, Nothing), (0.5, Nothing), (0.5, Nothing), (0.5, Just 8), (0.5, Nothing)])
 deltaEncodeBy :: (a -> a -> Bool) -> DTime -> [a] -> (a, [(DTime, Maybe a)])
 deltaEncodeBy _  _  []       = error "AFRP.Run.deltaEncodeBy: empty list of samples"
-deltaEncodeBy eq dt (x : xs) = (x, zipWith step (x : xs) xs)
+deltaEncodeBy eq dt0 (x : xs) = (x, zipWith step (x : xs) xs)
   where
+    -- (checked once, when the first step is looked at)
+    dt = checkDt "deltaEncode" dt0
     step prev y = (dt, if eq y prev then Nothing else Just y)

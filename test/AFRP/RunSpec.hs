@@ -1,6 +1,6 @@
 module AFRP.RunSpec (spec) where
 
-import           Control.Exception (evaluate)
+import           Control.Exception (ErrorCall (..), evaluate)
 import           Data.IORef
 import           Test.Hspec
 
@@ -93,6 +93,40 @@ spec = do
       evaluate (last (runDt 1 (embedSynch identity ('a', [])) [1, 0 / 0]))
         `shouldThrow` anyErrorCall
 
+  describe "time steps" $ do
+    -- (a NaN step made the time NaN for ever, silently; a negative one ran
+    -- time backwards)
+    let refused runner dt = \(ErrorCall msg) ->
+          msg == "AFRP.Run." ++ runner ++ ": a time step of " ++ show (dt :: Double)
+                 ++ " (a time step must be a number, 0 or more)"
+        bad = [0 / 0, -1, -1e-300, -(1 / 0)]
+    it "embed refuses a time step that is NaN or negative, at that step" $
+      mapM_ (\dt -> do
+               let out = embed time ((), [(1, Nothing), (dt, Nothing), (1, Nothing)])
+               take 2 out `shouldBe` [0, 1]
+               evaluate (out !! 2) `shouldThrow` refused "embed" dt)
+            bad
+    it "embed takes a step of 0, the smallest and largest finite steps, and an infinite one" $ do
+      embed time ((), [(0, Nothing), (0, Nothing), (1, Nothing)]) `shouldBe` [0, 0, 0, 1]
+      embed time ((), [(5e-324, Nothing), (1.7976931348623157e308, Nothing), (1 / 0, Nothing)])
+        `shouldBe` [0, 5e-324, 1.7976931348623157e308, 1 / 0]
+    it "reactimate, react, evalAt, evalFuture and deltaEncode refuse one too" $
+      mapM_ (\dt -> do
+               steps <- newIORef [(1, Nothing), (dt, Nothing)]
+               let sense _ = atomicModifyIORef' steps (\ss -> case ss of
+                               s : rest -> (rest, s)
+                               []       -> ([], (1, Nothing)))
+               reactimate (pure ()) sense (\_ _ -> pure False) time `shouldThrow` refused "reactimate" dt
+               h <- reactInit (pure ()) (\_ _ _ -> pure False) time
+               _ <- react h (1, Nothing)
+               react h (dt, Nothing) `shouldThrow` refused "react" dt
+               let (_, future) = evalAtZero time ()
+               evaluate (fst (evalAt future dt ())) `shouldThrow` refused "evalAt" dt
+               evaluate (fst (embedFirst (snd (evalFuture time () dt))))
+                 `shouldThrow` refused "evalFuture" dt
+               evaluate (fst (head (snd (deltaEncode dt "ab")))) `shouldThrow` refused "deltaEncode" dt)
+            bad
+
   describe "deltaEncode" $ do
     it "writes Nothing for repeated samples" $
       deltaEncode 0.1 "aabca" `shouldBe` ('a', [(0.1, Nothing), (0.1, Just 'b'), (0.1, Just 'c'), (0.1, Just 'a')])
@@ -108,3 +142,9 @@ spec = do
         `shouldBe` [(1, Nothing), (1, Just 3)]
     it "rejects an empty list" $
       evaluate (deltaEncode 0.1 ([] :: [Int])) `shouldThrow` anyErrorCall
+
+-- The first output of a signal function on unit input, and the rest.
+embedFirst :: SF () b -> (b, [b])
+embedFirst sf = case embed sf ((), []) of
+  b : bs -> (b, bs)
+  []     -> error "embed gave no output"
