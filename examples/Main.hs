@@ -9,10 +9,9 @@ import           Data.Char          (toLower)
 import           Data.List          (isPrefixOf, sortOn)
 import           System.Environment (getArgs, getProgName)
 import           System.Exit        (ExitCode (..), exitWith)
-import           System.IO          (hPutStrLn, stderr)
 
 import           AFrobRobotSim
-import           AFrobRobotSim.Console (endOutput)
+import           AFrobRobotSim.Console (endOutput, putErr)
 import           Examples.Registry  (allExamples, exampleCommand, exampleListing)
 import           Examples.Types
 
@@ -66,4 +65,4 @@ helpText prog = unlines
   ]
 
 usageError :: String -> String -> IO a
-usageError prog msg = hPutStrLn stderr (prog ++ ": " ++ msg) >> exitWith (ExitFailure 2)
+usageError prog msg = putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure 2)

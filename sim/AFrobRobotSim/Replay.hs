@@ -100,7 +100,7 @@ import qualified Data.ByteString.Internal  as BU (accursedUnutterablePerformIO)
 import qualified Data.ByteString.Unsafe    as BU (unsafeUseAsCStringLen)
 import           GHC.ByteOrder             (ByteOrder (..), targetByteOrder)
 import           Numeric                   (showHex)
-import           Control.Exception         (IOException, bracket, catch, evaluate, finally, try, uninterruptibleMask_)
+import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
 import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.FilePath           (takeDirectory)
 import           System.IO
@@ -291,22 +291,30 @@ writeReplayFromLog logPath out = do
     Just w   -> pure (Left ("cannot write the page " ++ displayPath out ++ ": " ++ displayPath folder ++ " " ++ w))
     Nothing  -> do
       tmp <- getTemporaryDirectory
-      bracket (openBinaryTempFile tmp "afrp-replay.frames") (\(path, h) -> hClose h >> removeIfExists path) $
-        \(path, h) -> do
+      -- (the frames' temporary file: a fault there, a missing or full
+      -- temporary folder, is said as such, and the file is removed
+      -- whatever happens)
+      let spoolFault e = "cannot make the page: its temporary file in " ++ displayPath tmp ++ ": " ++ ioErrorText e
+      opened <- try (openBinaryTempFile tmp "afrp-replay.frames")
+      case opened of
+        Left e          -> pure (Left (spoolFault e))
+        Right (path, h) -> flip finally (quietly (hClose h) >> removeIfExists path) $ do
           hSetBuffering h (BlockBuffering Nothing)
           let start hd = let line = encodeLogLineBytes (LineHeader hd) in pure (line, fnvBytes fnvBasis line)
               step (header, !hash) f = do
                 let !line = encodeLogLineBytes (LineFrame f)
                 BC.hPutStrLn h line
                 pure (header, fnvBytes hash line)
-          r <- foldLogFile logPath start step
-          case r of
-            Left e -> pure (Left e)
-            Right ((header, hash), msummary) -> do
-              hClose h
+          spooled <- try (foldLogFile logPath start step <* hClose h)
+          case spooled of
+            Left e                                  -> pure (Left (spoolFault e))
+            Right (Left e)                          -> pure (Left e)
+            Right (Right ((header, hash), msummary)) -> do
               let summary = encodeLogLineBytes . LineSummary <$> msummary
               either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) Right   -- (it names the page)
                 <$> try (writePage replayChunkChars header path summary (maybe hash (fnvBytes hash) summary) out)
+  where
+    quietly act = act `catch` \e -> const (pure ()) (e :: IOException)
 
 -- | A page being recorded as a run goes. Each frame's line is encoded at
 -- once and appended to a temporary file (in the system's temporary

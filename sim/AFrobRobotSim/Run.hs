@@ -66,7 +66,7 @@ import           Control.Exception         (AsyncException (HeapOverflow, UserIn
                                             evaluate, throwIO, try)
 import           Control.Monad             (forM, unless, when)
 import           Data.IORef
-import           Data.List                 (foldl', intercalate)
+import           Data.List                 (foldl', intercalate, sortOn)
 import           Data.Maybe                (catMaybes, isNothing)
 import           GHC.Clock                 (getMonotonicTime)
 import           System.Environment        (getArgs, getProgName)
@@ -134,12 +134,15 @@ runSimWith opts mworld rcA rcB = do
           ++ quote k ++ " (" ++ readsText ++ ")" | (k, v) <- unread ]
       -- (a key pressed after the last step: a typo in its time, or a run
       -- shorter than meant)
-      let lastStep = fromIntegral (max 0 (round (optSeconds opts / optDt opts)) :: Int) * optDt opts
+      let nSteps = max 0 (round (optSeconds opts / optDt opts)) :: Int
           keyName c = case c of { ' ' -> "space"; ',' -> "comma"; _ -> [c] }
-      unless (null [ () | (t, _) <- optKeys opts, t > lastStep * (1 + 1e-9) ]) $ putErr $ unlines
-        [ prog ++ ": warning: --keys " ++ show t ++ ":" ++ keyName c ++ ": after the run's last step, at "
-          ++ show lastStep ++ " s: it is never pressed"
-        | (t, c) <- optKeys opts, t > lastStep * (1 + 1e-9) ]
+          late = keysNeverPressed (optDt opts) nSteps (optKeys opts)
+          -- (a time to the microsecond: 3.0, not 3.0000000000000004)
+          micro x = show (fromIntegral (round (x * 1e6) :: Integer) / 1e6 :: Double)
+      unless (null late) $ putErr $ unlines
+        [ prog ++ ": warning: the key press " ++ keyName c ++ " at " ++ micro t ++ " s comes after the run's last step"
+          ++ " (at " ++ micro (fromIntegral nSteps * optDt opts) ++ " s, one key a step): it is never pressed"
+        | (t, c) <- late ]
       -- (an empty world file, or a generator's output that never came,
       -- runs: it is a world, but one the controllers take no part in)
       when (all (isNothing . robotKindOf) world) $ putErr $
@@ -294,6 +297,21 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
     _ | Just k <- signal -> exitWith (ExitFailure (128 + k))
     _ | not (null allErrs) -> exitWith (ExitFailure 1)
       | otherwise          -> pure ()
+
+-- | The scripted key presses that a run of @n@ steps of @dt@ (and its
+-- time-0 sample) never makes, in time order: the simulator presses the
+-- earliest key left at the first step whose time is at or after the
+-- key's (to a millionth of a step), one key a step
+-- ("AFrobRobotSim.Simulator").
+keysNeverPressed :: Double -> Int -> [(Double, Char)] -> [(Double, Char)]
+keysNeverPressed dt n = go 0 . sortOn fst
+  where
+    go _ [] = []
+    go k ks@((tk, _) : rest)
+      | k > n                                 = ks
+      | tk <= fromIntegral k * dt + dt * 1e-6 = go (k + 1) rest
+      -- (on to the step it falls due, near enough; the test above decides)
+      | otherwise = go (max (k + 1) (min (n + 1) (floor ((tk - dt * 1e-6) / dt)))) ks
 
 forceState :: WorldState -> ()
 forceState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsBalls s)

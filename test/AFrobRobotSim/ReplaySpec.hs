@@ -5,7 +5,7 @@ import qualified Data.ByteString          as BS
 import qualified Data.ByteString.Char8    as BC
 import           Control.Monad            (forM_)
 import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf, sort, tails)
-import           System.Directory         (getTemporaryDirectory, listDirectory, removeFile)
+import           System.Directory         (createDirectory, getTemporaryDirectory, listDirectory, removeFile)
 import           System.FilePath          (splitFileName, (</>))
 import           System.IO                (hClose, hPutStr, openBinaryTempFile, openTempFile)
 import           Test.Hspec
@@ -290,3 +290,16 @@ spec = do
         writeReplayFromLog logPath out `shouldReturn` Left (logPath ++ ":11:17: expected ',' or '}', found end of input")
         readFile out `shouldReturn` written
         listDirectory dir >>= (`shouldBe` ["cut.html", "cut.jsonl"]) . sort
+    it "says a temporary folder it cannot use (TMPDIR), writing no page, and leaves no temporary file" $
+      withTempDir $ \dir -> do
+        let logPath = dir </> "run.jsonl"
+            out = dir </> "run.html"
+        writeFile logPath fixtureLogText
+        r <- withTMPDIR (dir </> "no-such-folder") (writeReplayFromLog logPath out)
+        r `shouldSatisfy` either (("cannot make the page: its temporary file in " ++ (dir </> "no-such-folder")) `isPrefixOf`)
+                                 (const False)
+        -- (and with a usable one, the frames' file is gone after the page is written)
+        createDirectory (dir </> "tmp")
+        withTMPDIR (dir </> "tmp") (writeReplayFromLog logPath out) `shouldReturn` Right ()
+        listDirectory (dir </> "tmp") `shouldReturn` []
+        listDirectory dir >>= (`shouldBe` ["run.html", "run.jsonl", "tmp"]) . sort

@@ -328,7 +328,16 @@ spec = do
       (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 1
                                                       , optKeys = [(0.5, 'a'), (1, 'b'), (5, ' ')] } (Just world) drive drive)
       r `shouldBe` Right ()
-      lines err `shouldSatisfy` \ls -> length ls == 1 && all ("warning: --keys 5.0:space: after the run's last step, at 1.0 s: it is never pressed" `isInfixOf`) ls
+      lines err `shouldSatisfy` \ls -> length ls == 1
+        && all ("warning: the key press space at 5.0 s comes after the run's last step (at 1.0 s, one key a step): it is never pressed" `isInfixOf`) ls
+      -- by the simulator's rule: one key a step, a key due a millionth of
+      -- a step after the last one pressed there
+      (_, err', _) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 1
+                                                       , optKeys = [(1, 'a'), (1, 'b'), (0.3000001, 'c')] } (Just world) drive drive)
+      lines err' `shouldSatisfy` \ls -> length ls == 1 && all ("the key press b at 1.0 s comes after" `isInfixOf`) ls
+      (_, err'', _) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 0.3, optDt = 0.1, optFps = 10
+                                                        , optKeys = [(0.3000001, 'c')] } (Just world) drive drive)
+      err'' `shouldBe` ""
   describe "parameters" $
     it "warns of a --param the program never asked for (a misspelled name), naming those it did" $ withTempDir $ \dir -> do
       self <- getExecutablePath

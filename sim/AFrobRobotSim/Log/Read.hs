@@ -135,10 +135,10 @@ located loc i = either (\e -> Left (at e)) Right
 -- 'Left' too. The file is read a line at a time ('foldLogFile'); its
 -- frames are all kept, in the 'RunLog'.
 --
--- At most 'maxLogBytes' are read, and a line of at most
--- 'maxLogLineBytes': a longer file (or an endless one, such as
--- @\/dev\/zero@) gives @FILE: more than N bytes@ and how to make a
--- shorter log.
+-- At most 'maxLogBytes' are read: a longer file gives @FILE: more than N
+-- bytes@ and how to make a shorter log. A line longer than
+-- 'maxLogLineBytes' (an endless one, such as @\/dev\/zero@'s, included)
+-- gives @FILE:LINE: a line of more than N bytes@.
 readLogFile :: FilePath -> IO (Either String RunLog)
 readLogFile = readLogFileUpTo maxLogBytes
 

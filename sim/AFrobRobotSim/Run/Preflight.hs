@@ -17,7 +17,7 @@ module AFrobRobotSim.Run.Preflight
   ( preflight
   ) where
 
-import           Control.Exception         (IOException, try)
+import           Control.Exception         (IOException, catch, finally, try)
 import           Control.Monad             (forM, unless)
 import           Data.List                 (isPrefixOf)
 import           Data.Maybe                (catMaybes, isJust)
@@ -127,6 +127,7 @@ preflight bounds opts = do
           exists <- doesFileExist f
           fw <- if exists then writable <$> getPermissions f else pure True
           pure [ flag ++ " " ++ show f ++ ": cannot write there" | not (w || (exists && fw)) ]
+    quietly act = act `catch` \(_ :: IOException) -> pure ()
     -- the output folder: created if its parent exists, then proven writable
     -- (without --frames only the SVG, page, log or result go there)
     writeTo | optFrames opts = "cannot write frames to "
@@ -139,11 +140,12 @@ preflight bounds opts = do
          | not there && not parentThere ->
              pure [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir) ++ " does not exist" ]
          | otherwise -> do
-          -- (a file of a new name, so that no file already there is touched)
+          -- (a hidden file of a new name, so that no file already there is
+          -- touched, removed whatever happens)
           r <- try (do unless there (createDirectory dir)
-                       (probe, h) <- openTempFile dir ".afrp-write-test"
-                       hPutStr h "ok" >> hClose h
-                       removeFile probe)
+                       (probe, h) <- openTempFile dir ".afrp-write-test.tmp"
+                       (hPutStr h "ok" >> hClose h)
+                         `finally` (quietly (hClose h) >> removeFile probe))
           pure $ case r of
             Left (e :: IOException) -> [ writeTo ++ show dir ++ ": " ++ ioErrorText e ]
             Right ()                -> []

@@ -224,10 +224,11 @@ listAdd key (Listed n m)
 listedRuns :: Listed -> [(String, String)]
 listedRuns (Listed _ m) = [ key | (key, k) <- M.toList m, _ <- [1 .. k] ]
 
--- The merged lines so far: the numbers of the outcomes' names, each
+-- | The merged lines so far: the numbers of the outcomes' names, each
 -- group's tallies, and the runs counted.
 data Merge = Merge !(M.Map String Int) !(M.Map Setting Group) !Int
 
+-- | No line merged yet.
 emptyMerge :: Merge
 emptyMerge = Merge M.empty M.empty 0
 
@@ -236,8 +237,10 @@ emptyMerge = Merge M.empty M.empty 0
 addRun :: Merge -> Run -> Either String Merge
 addRun (Merge names groups n) run
   | repeated  = Left ("the run " ++ showSetting (runSetting run) ++ " seed " ++ seedText ++ steps
-                      ++ " is on an earlier line too (a result file merged twice, or a run merged with"
-                      ++ " its rerun?): each run may be merged once")
+                      ++ " is on an earlier line too (a result file merged twice, a run merged with its"
+                      ++ " rerun, or runs told apart only by flags a result line does not record, such as"
+                      ++ " --odometry-noise or --keys: give each such run a --param that names its setting):"
+                      ++ " each run may be merged once")
   | otherwise = Right (Merge names' (M.insert (runSetting run) g' groups) (n + 1))
   where
     seed@(Seed seedText _) = runSeed run
@@ -265,7 +268,10 @@ addRun (Merge names groups n) run
       (short, [])   -> short
       (short, _)    -> short ++ " (cut)"
 
--- Merge one line of text (a blank one is skipped).
+-- | Merge one line of text (a blank one is skipped): a result line of a
+-- sweep, or the sweep's line for a run that wrote none; any other line,
+-- or one that repeats a run (the same setting and seed, and for two
+-- result lines the same @dt@ and @seconds@), is a 'Left' saying why.
 addLine :: Merge -> String -> Either String Merge
 addLine m l
   | all isSpace l = Right m
@@ -287,7 +293,10 @@ mergeResults text = do
              emptyMerge (zip [1 :: Int ..] (lines text))
   renderMerge m
 
--- The table of the merged lines ('Left' when there were none).
+-- | The table of the merged lines: per setting, the mean, least and
+-- greatest of every outcome and the failed runs, then (when two or more
+-- settings vary) the same per value of each ('Left' when no line was
+-- merged).
 renderMerge :: Merge -> Either String String
 renderMerge (Merge names groups n)
   | n == 0    = Left "no result lines"
