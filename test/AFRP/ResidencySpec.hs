@@ -121,6 +121,9 @@ child :: String -> IO ()
 child name = case (lookup name cases, lookup name [ ("self " ++ n, sf) | (n, sf) <- selfSwitching ]) of
   (Just sf, _) -> print (foldl' (+) 0 (embed sf (0, [ (0.01, Just (fromIntegral i)) | i <- [1 .. samples - 1] ])))
   (_, Just sf) -> print (foldl' (+) 0 (embed sf ((), replicate (switchSamples - 1) (1, Nothing))))
+  _ | name == "afterEach over one long step" ->
+        -- (10^7 occurrences of 1 ms passed in one step of 10^4 s)
+        print (map (event 0 id) (embed (afterEach (repeat (0.001, 1 :: Double))) ((), [(1e4, Nothing), (0.001, Nothing)])))
   _            -> ioError (userError ("unknown child " ++ show name))
 
 cases :: [(String, SF Double Double)]
@@ -132,6 +135,10 @@ spec = do
     mapM_ (\(name, _) -> it (name ++ " runs in 16 MB of heap (+RTS -M16m)") (bounded name)) delays
   describe "a collection with a member nobody reads, for 10^6 samples" $
     mapM_ (\(name, _) -> it (name ++ " runs in 16 MB of heap (+RTS -M16m)") (bounded name)) collections
+  describe "afterEach, a step that passes 10^7 occurrences" $
+    it "passes them in 2 MB of heap (+RTS -M2m; gathered, they took 240 MB)" $ do
+      (code, out, err) <- run "2m" "afterEach over one long step"
+      (code, err, out) `shouldBe` (ExitSuccess, "", "[0.0,1.0,1.0]\n")
   describe "a switch whose continuation calls it again, switching at each of 10^5 samples" $
     mapM_ (\(name, _) -> it (name ++ " runs in 2 MB of heap (+RTS -M2m)") (selfBounded name)) selfSwitching
   where
