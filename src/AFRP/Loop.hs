@@ -25,6 +25,15 @@
 -- ('AFRP.Delay.iPre', 'loopPre'). Since each sample forces what the
 -- previous one left, no thunk outlives one sample: a network runs in
 -- constant space (bench/residency.sh measures it for each combinator).
+--
+-- One known exception: a 'AFRP.Delay.delay' (or another delay that
+-- keeps several samples, not 'AFRP.Delay.iPre') fed back through a loop
+-- whose output is read only now and then (@sample 1 >>> hold 0@ after
+-- it, or @length@ of an 'AFRP.Run.embed'): the values it keeps refer to
+-- the samples before them until someone reads them, so memory grows with
+-- the samples not read (31 MB at 10^5 samples read once a second). Read
+-- the loop's output at every sample (a strict fold, an actuation), or
+-- feed back through 'AFRP.Delay.iPre', and it is constant again.
 module AFRP.Loop
   ( loopPre
   , loopIntegral

@@ -120,7 +120,10 @@ abortWhen t sfe = mkTask ((taskToSF t &&& sfe) >>> arr pick)
     pick ((b, ec), ed) = (b, fmap Left ec `lMerge` fmap Right ed)
 
 -- | @repeatUntil m p@ runs @m@ again and again until its result satisfies
--- @p@, and returns that result.
+-- @p@, and returns that result. A task that ends at the instant it starts
+-- (@pure x@, a 'AFRP.Task.sleepT' of 0) and never satisfies @p@ repeats
+-- at that instant for ever: the sample never finishes (as in Yampa).
+-- Some time must pass in each round.
 repeatUntil :: Monad m => m a -> (a -> Bool) -> m a
 repeatUntil m p = go
   where
@@ -130,6 +133,7 @@ repeatUntil m p = go
 forAll :: Monad m => [a] -> (a -> m b) -> m ()
 forAll xs f = mapM_ f xs
 
--- | Run an action forever.
+-- | Run an action forever. As for 'repeatUntil', a task that ends at the
+-- instant it starts (@forEver (pure ())@) never lets the sample finish.
 forEver :: Monad m => m a -> m b
 forEver m = m >> forEver m
