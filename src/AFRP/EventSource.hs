@@ -95,7 +95,10 @@ after t x
 -- each at the first sample whose local time has reached it. No backlog: if a time
 -- step spans several periods, one occurrence is produced and the schedule
 -- moves on to the first period boundary after the current time. There is
--- no occurrence at time 0. A non-positive period is an error.
+-- no occurrence at time 0. A non-positive period is an error. A period
+-- too small for the local time to count its boundaries (below about
+-- 5.6e-309 of the time: a subnormal period after some seconds) gives an
+-- occurrence at every sample that moves the time on.
 repeatedly :: Time -> b -> SF a (Event b)
 repeatedly p x
   | p <= 0 || isNaN p = error ("AFRP.EventSource.repeatedly: the period must be positive, got "
@@ -106,8 +109,19 @@ repeatedly p x
       let !clock' = tick clock dt
           !t      = clockTime clock'
       in if reached (fromIntegral n * p) t
-           then (# go clock' (nextIndex t (n + 1)), Event x #)
+           then (# after' clock' t n, Event x #)
            else (# go clock' n, NoEvent #))
+    -- (what follows an occurrence: the next boundary, or, once the
+    -- period is too small for the local time to count its boundaries in
+    -- a 'Double' (t / p infinite: a period below some 5.6e-309 of the
+    -- time), an occurrence at every sample that moves the time on, as
+    -- each such sample passes at least one boundary)
+    after' clock' t n
+      | isInfinite (t / p) && not (isInfinite t) = fine clock'
+      | otherwise                                = go clock' (nextIndex t (n + 1))
+    fine !clock = NStep (\dt _ ->
+      let !clock' = tick clock dt
+      in if clockTime clock' > clockTime clock then (# fine clock', Event x #) else (# fine clock', NoEvent #))
     -- The first period boundary that t has not reached, starting the
     -- search at floor (t / p) so that even a huge step costs O(1).
     nextIndex :: Time -> Integer -> Integer

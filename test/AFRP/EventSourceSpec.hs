@@ -52,6 +52,13 @@ spec = do
       embed (repeatedly 1 ()) ((), [(1, Nothing), (1e30, Nothing), (1, Nothing)])
         `withoutHanging` [NoEvent, Event (), Event (), Event ()]
       length (embed (repeatedly 1e-300 ()) ((), replicate 3 (1, Nothing))) `shouldBe` 4
+    it "repeatedly with a period too small for the time to count its boundaries occurs at every sample that moves on" $ do
+      -- (t / p overflowed: the next boundary became infinite, and it never occurred again)
+      embed (repeatedly 1e-310 'x') ((), replicate 4 (1, Nothing)) `withoutHanging` (NoEvent : replicate 4 (Event 'x'))
+      embed (repeatedly 5e-324 'x') ((), [(1, Nothing), (0, Nothing), (2, Nothing)])
+        `withoutHanging` [NoEvent, Event 'x', NoEvent, Event 'x']
+      -- (a small normal period goes on counting)
+      embed (repeatedly 1e-300 'x') ((), replicate 3 (1, Nothing)) `withoutHanging` (NoEvent : replicate 3 (Event 'x'))
     it "after NaN is an error naming after" $
       evaluate (after (0 / 0) ()) `shouldThrow` (\(ErrorCall m) -> "after" `isInfixOf` m && not ("afterEach" `isInfixOf` m))
     it "delayEvent and delayEventCat by infinity never occur" $ do
