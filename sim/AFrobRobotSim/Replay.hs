@@ -100,7 +100,7 @@ import qualified Data.ByteString.Internal  as BU (accursedUnutterablePerformIO)
 import qualified Data.ByteString.Unsafe    as BU (unsafeUseAsCStringLen)
 import           GHC.ByteOrder             (ByteOrder (..), targetByteOrder)
 import           Numeric                   (showHex)
-import           Control.Exception         (IOException, catch, evaluate, finally, try, uninterruptibleMask_)
+import           Control.Exception         (IOException, catch, evaluate, finally, mask, try, uninterruptibleMask_)
 import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.FilePath           (takeDirectory)
 import           System.IO
@@ -295,10 +295,13 @@ writeReplayFromLog logPath out = do
       -- temporary folder, is said as such, and the file is removed
       -- whatever happens)
       let spoolFault e = "cannot make the page: its temporary file in " ++ displayPath tmp ++ ": " ++ ioErrorText e
-      opened <- try (openBinaryTempFile tmp "afrp-replay.frames")
-      case opened of
+      -- (masked from the open to the cleanup's installing: a Ctrl-C
+      -- between them would leave the file)
+      mask $ \restore -> do
+       opened <- try (openBinaryTempFile tmp "afrp-replay.frames")
+       case opened of
         Left e          -> pure (Left (spoolFault e))
-        Right (path, h) -> flip finally (quietly (hClose h) >> removeIfExists path) $ do
+        Right (path, h) -> flip finally (quietly (hClose h) >> removeIfExists path) $ restore $ do
           hSetBuffering h (BlockBuffering Nothing)
           let start hd = let line = encodeLogLineBytes (LineHeader hd) in pure (line, fnvBytes fnvBasis line)
               step (header, !hash) f = do

@@ -140,8 +140,8 @@ runSimWith opts mworld rcA rcB = do
           -- (a time to the microsecond: 3.0, not 3.0000000000000004)
           micro x = show (fromIntegral (round (x * 1e6) :: Integer) / 1e6 :: Double)
       unless (null late) $ putErr $ unlines
-        [ prog ++ ": warning: the key press " ++ keyName c ++ " at " ++ micro t ++ " s comes after the run's last step"
-          ++ " (at " ++ micro (fromIntegral nSteps * optDt opts) ++ " s, one key a step): it is never pressed"
+        [ prog ++ ": warning: the key press " ++ keyName c ++ " at " ++ micro t ++ " s is never pressed: the run's last"
+          ++ " step is at " ++ micro (fromIntegral nSteps * optDt opts) ++ " s, and a step presses at most one key"
         | (t, c) <- late ]
       -- (an empty world file, or a generator's output that never came,
       -- runs: it is a world, but one the controllers take no part in)

@@ -150,7 +150,7 @@ afterEach = afterEachBy (\x first -> case first of { Nothing -> Just x; Just _ -
 -- > embed (afterEachCat [(0.5, 'a'), (0.1, 'b'), (1, 'c')]) ((), replicate 3 (1, Nothing))
 -- >   ==  [NoEvent, Event "ab", Event "c", NoEvent]
 afterEachCat :: [(Time, b)] -> SF a (Event [b])
-afterEachCat = afterEachBy (\x acc -> Just (x : maybe [] id acc)) reverse
+afterEachCat = afterEachBy (\x acc -> case acc of { Nothing -> Just [x]; Just xs -> Just (x : xs) }) reverse
 
 -- The schedule of 'afterEach' and 'afterEachCat': the occurrences due at a
 -- sample, in schedule order, gathered by @keep@ as they are passed (from

@@ -49,7 +49,9 @@
 -- later input; a negative one ran time backwards; both silently.) A step
 -- of 0 is a sample at the same time as the one before; an infinite one
 -- passes every finite time (every 'AFRP.EventSource.after' fires, the
--- time is infinite from then on).
+-- time is infinite from then on, and an integral of 0 over it is NaN:
+-- @0 * Infinity@). The step is checked before it is taken, whether the
+-- signal function reads it or not.
 module AFRP.Run
   ( -- * Running in a monad
     reactimate
@@ -101,8 +103,11 @@ reactimate initialise sense actuate (SF n0) = do
       if a `seq` b `seq` stop then pure () else do
         (dt, ma) <- sense False
         let a' = fromMaybe a ma
-        case stepN n (checkDt "reactimate" dt) a' of
-          (# n', b' #) -> loop n' a' b'
+        -- (the step checked before it is taken, whether or not the
+        -- network reads it)
+        case checkDt "reactimate" dt of
+          !dt' -> case stepN n dt' a' of
+            (# n', b' #) -> loop n' a' b'
 
 -- | The state of a signal function being driven sample by sample from the
 -- outside ('reactInit', 'react'): for event loops owned by another library
@@ -137,7 +142,8 @@ react h (dt, ma) = do
   a' <- case ma of
     Nothing -> pure a
     Just x  -> pure x
-  case stepN n (checkDt "react" dt) a' of
+  case checkDt "react" dt of
+   !dt' -> case stepN n dt' a' of
     (# n', b #) -> do
       writeIORef (rhState h) (ReactState n' a')
       rhActuate h h True b
@@ -157,14 +163,16 @@ evalAtZero (SF n) a = case stepN n 0 a of (# n', b #) -> (b, FutureSF n')
 -- given input, and what the signal function has become. Its state is
 -- evaluated when the result pair is.
 evalAt :: FutureSF a b -> DTime -> a -> (b, FutureSF a b)
-evalAt (FutureSF n) dt a = case stepN n (checkDt "evalAt" dt) a of (# n', b #) -> (b, FutureSF n')
+evalAt (FutureSF n) dt a = case checkDt "evalAt" dt of
+  !dt' -> case stepN n dt' a of (# n', b #) -> (b, FutureSF n')
 
 -- | @evalFuture sf a dt@ runs the first sample (local time 0) of @sf@ on
 -- input @a@ and returns its output and the rest of @sf@ as a signal
 -- function whose first sample comes @dt@ after that one (whatever time step
 -- it is later run with). For tests and debugging, as 'evalAt'.
 evalFuture :: SF a b -> a -> DTime -> (b, SF a b)
-evalFuture (SF n) a dt = case stepN n 0 a of (# n', b #) -> (b, SF (freezeN n' (checkDt "evalFuture" dt)))
+evalFuture (SF n) a dt = case checkDt "evalFuture" dt of
+  !dt' -> case stepN n 0 a of (# n', b #) -> (b, SF (freezeN n' dt'))
 
 -- | @embed sf (a0, samples)@ runs @sf@ purely: @a0@ is the input at local
 -- time 0, each @(dt, ma)@ a later sample. The result has one output per
@@ -196,7 +204,8 @@ embedFB cons nil (SF n0) (a0, samples) = case stepN n0 0 a0 of
 embedStep :: (b -> r -> r) -> (DTime, Maybe a) -> (Node a b -> a -> r) -> Node a b -> a -> r
 embedStep cons (dt, ma) k = oneShot (\n a ->
   let a' = fromMaybe a ma
-  in case stepN n (checkDt "embed" dt) a' of (# n', b #) -> b `cons` (a' `seq` k n' a'))
+  in case checkDt "embed" dt of
+       !dt' -> case stepN n dt' a' of (# n', b #) -> b `cons` (a' `seq` k n' a'))
 {-# INLINE embedStep #-}
 
 -- A time step as a runner takes it: the step itself when it is 0 or more

@@ -32,12 +32,14 @@
 -- that same switch)@, or 'after' 0) never finishes its sample, and runs
 -- until memory runs out, as in Yampa. The event has to wait for time to
 -- pass ('after' with a positive time, or an event that is not there at
--- the new signal function's first sample). A delayed switch does not
--- help when its event, too, is there at every first sample: @dSwitch (sf
--- &&& now ()) (\_ -> that same switch)@ gives its first output, then
--- switches again at once at the next sample's start, for ever (as in
--- Yampa); and so do 'AFRP.Parallel.pSwitch' and
--- 'AFRP.Parallel.dpSwitch' into themselves on such an event.
+-- the new signal function's first sample). 'kSwitch' and
+-- 'AFRP.Parallel.pSwitch' into themselves on such an event never finish
+-- their sample either. A delayed switch does not help when its event,
+-- too, is there at every first sample: @dSwitch (sf &&& now ()) (\_ ->
+-- that same switch)@ gives its first output, then switches again at once
+-- at the next sample's start, for ever (as in Yampa); and so do
+-- 'dkSwitch' and 'AFRP.Parallel.dpSwitch' into themselves on such an
+-- event.
 --
 -- The delayed switches are /decoupled/: their output at an instant never
 -- depends on whether their event occurs at that instant. They decide

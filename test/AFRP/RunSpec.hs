@@ -106,6 +106,14 @@ spec = do
                take 2 out `shouldBe` [0, 1]
                evaluate (out !! 2) `shouldThrow` refused "embed" dt)
             bad
+    it "the runners check the step even when the signal function does not read it" $
+      mapM_ (\dt -> do
+               evaluate (embed identity (0 :: Int, [(1, Just 1), (dt, Just 2), (1, Just 3)]) !! 2)
+                 `shouldThrow` refused "embed" dt
+               let (_, future) = evalAtZero identity (1 :: Int)
+               evaluate (fst (evalAt future dt 2)) `shouldThrow` refused "evalAt" dt
+               evaluate (snd (evalFuture (constant 'c') () dt)) `shouldThrow` refused "evalFuture" dt)
+            bad
     it "embed takes a step of 0, the smallest and largest finite steps, and an infinite one" $ do
       embed time ((), [(0, Nothing), (0, Nothing), (1, Nothing)]) `shouldBe` [0, 0, 0, 1]
       embed time ((), [(5e-324, Nothing), (1.7976931348623157e308, Nothing), (1 / 0, Nothing)])

@@ -17,7 +17,7 @@ module AFrobRobotSim.Run.Preflight
   ( preflight
   ) where
 
-import           Control.Exception         (IOException, catch, finally, try)
+import           Control.Exception         (IOException, catch, finally, mask, try)
 import           Control.Monad             (forM, unless)
 import           Data.List                 (isPrefixOf)
 import           Data.Maybe                (catMaybes, isJust)
@@ -143,9 +143,10 @@ preflight bounds opts = do
           -- (a hidden file of a new name, so that no file already there is
           -- touched, removed whatever happens)
           r <- try (do unless there (createDirectory dir)
-                       (probe, h) <- openTempFile dir ".afrp-write-test.tmp"
-                       (hPutStr h "ok" >> hClose h)
-                         `finally` (quietly (hClose h) >> removeFile probe))
+                       mask $ \restore -> do
+                         (probe, h) <- openTempFile dir ".afrp-write-test.tmp"
+                         restore (hPutStr h "ok" >> hClose h)
+                           `finally` (quietly (hClose h) >> removeFile probe))
           pure $ case r of
             Left (e :: IOException) -> [ writeTo ++ show dir ++ ": " ++ ioErrorText e ]
             Right ()                -> []
