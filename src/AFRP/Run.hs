@@ -143,10 +143,10 @@ react h (dt, ma) = do
     Nothing -> pure a
     Just x  -> pure x
   case checkDt "react" dt of
-   !dt' -> case stepN n dt' a' of
-    (# n', b #) -> do
-      writeIORef (rhState h) (ReactState n' a')
-      rhActuate h h True b
+    !dt' -> case stepN n dt' a' of
+      (# n', b #) -> do
+        writeIORef (rhState h) (ReactState n' a')
+        rhActuate h h True b
 
 -- | A signal function that has been started: it has seen its first sample
 -- and expects each later one with its time step. Produced and consumed by
