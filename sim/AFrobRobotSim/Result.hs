@@ -12,7 +12,7 @@
 --
 -- @
 -- {"program":"simbot","world":"default","seed":3,"dt":0.01,"seconds":30,
---  "params":{"speed":"0.5"},
+--  "odometryNoise":0,"params":{"speed":"0.5"},
 --  "outcome":{"simulated":30,"steps":3001,"interrupted":false,"failure":null,
 --             "robots":[{"type":"SimbotA","id":1,"x":..,"y":..,"heading":..,
 --                        "distance":..,"bumps":2,"stuckTime":1.25,"battery":0.98}],
@@ -20,7 +20,8 @@
 -- @
 --
 -- (on one line). @world@ is the @--world@ file, or @"default"@ for the
--- program's own world. Per robot: the final true pose, the distance its
+-- program's own world; @odometryNoise@ is @--odometry-noise@ (so that
+-- runs of a sweep over it are told apart). Per robot: the final true pose, the distance its
 -- centre travelled (the sum of the steps' displacements), @bumps@ the
 -- number of times it became stuck against something (a robot stuck at
 -- time 0 counts one), @stuckTime@ the simulated seconds it spent stuck,
@@ -272,6 +273,7 @@ resultJSON prog o summary tallies = JObject
   , ("seed", JNumber (fromIntegral (optSeed o)))
   , ("dt", JNumber (optDt o))
   , ("seconds", JNumber (optSeconds o))
+  , ("odometryNoise", JNumber (optOdometryNoise o))
   , ("params", JObject [ (k, JString v) | (k, v) <- optParams o ])
   , ("outcome", JObject
       [ ("simulated", JNumber (lsSimulated summary))

@@ -242,9 +242,19 @@ spec = do
       let twice = mergeResults (unlines (sampleLines ++ take 2 sampleLines))
       twice `shouldSatisfy` either ("line 6: the run world=default speed=0.1 seed 1 (dt 0.01, seconds 1) is on an earlier line too" `isPrefixOf`)
                                    (const False)
-      -- runs told apart by their time step or duration are two runs
+      -- runs told apart by their time step, duration or odometry noise
+      -- are two runs (a line written before the noise was recorded has none)
       mergeResults (unlines (sampleLines ++ [replace "\"seconds\":1," "\"seconds\":2," (head sampleLines)]))
-        `shouldSatisfy` either (const False) ("== note: 1 setting mixes runs of different dt or seconds" `isInfixOf`)
+        `shouldSatisfy` either (const False) ("== note: 1 setting mixes runs of different dt, seconds or odometry noise" `isInfixOf`)
+      let noisy x = replace "\"seconds\":1," ("\"seconds\":1,\"odometryNoise\":" ++ x ++ ",") (head sampleLines)
+      mergeResults (unlines (sampleLines ++ [noisy "0.1", noisy "0.2"]))
+        `shouldSatisfy` either (const False) ("== note: 1 setting mixes runs of different dt, seconds or odometry noise" `isInfixOf`)
+      mergeResults (unlines (sampleLines ++ [noisy "0"]))
+        `shouldSatisfy` either ("the run world=default speed=0.1 seed 1 (dt 0.01, seconds 1) is on an earlier line too" `isInfixOf`)
+                               (const False)
+      mergeResults (unlines (sampleLines ++ [noisy "0.1", noisy "0.1"]))
+        `shouldSatisfy` either ("seed 1 (dt 0.01, seconds 1, odometry noise 0.1) is on an earlier line too" `isInfixOf`)
+                               (const False)
     it "takes a null outcome (a number that was not finite) as no value, never as NaN" $ do
       let nullDistance = replace "\"distance\":6," "\"distance\":null," (sampleLines !! 2)
           rows t = [ words l | l <- lines t, "SimbotA 1 distance" `isInfixOf` l ]
@@ -455,6 +465,7 @@ spec = do
         field ["seed"] r `shouldBe` JNumber 3
         field ["dt"] r `shouldBe` JNumber 0.01
         field ["seconds"] r `shouldBe` JNumber 2
+        field ["odometryNoise"] r `shouldBe` JNumber 0
         field ["outcome", "simulated"] r `shouldBe` JNumber 2
         field ["outcome", "steps"] r `shouldBe` JNumber 201
         field ["outcome", "interrupted"] r `shouldBe` JBool False

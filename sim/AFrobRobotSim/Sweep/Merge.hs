@@ -57,7 +57,7 @@ data Seed = Seed !String !(Either String Int)
 data Run = Run
   { runSetting :: Setting
   , runSeed    :: Seed
-  , runSteps   :: Maybe (String, String)
+  , runSteps   :: Maybe (String, String, String)
   , runFailure :: Maybe String
   , runValues  :: [(String, Maybe Double)]
   }
@@ -100,6 +100,8 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
         _         -> Left "\"seed\" is not a number"
       dt      <- member "dt" v >>= numberText
       seconds <- member "seconds" v >>= numberText
+      -- (a result line written before it was recorded: no noise, the default)
+      noise   <- maybe (Right "0") numberText (lookup "odometryNoise" fields)
       outFailure  <- member "failure" out >>= \f -> case f of
         JNull -> Right Nothing
         _     -> Just <$> asString f
@@ -115,7 +117,7 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
             (Just f, _)   -> Just f
             (_, True)     -> Just "interrupted"
             _             -> Nothing
-      pure (Run setting (seed key) (Just (dt, seconds)) fault
+      pure (Run setting (seed key) (Just (dt, seconds, noise)) fault
                 ([("simulated", simulated), ("steps", steps)] ++ perRobot ++ scores))
   where
     -- (a seed is a whole number of at most 2^53, as --seed takes it)
@@ -202,7 +204,7 @@ data Group = Group
   , gStats   :: !(IM.IntMap Stat)
   , gNoRes   :: !Seeds
   , gResults :: !Seeds
-  , gBySteps :: !(M.Map (String, String) Seeds)
+  , gBySteps :: !(M.Map (String, String, String) Seeds)
   }
 
 emptyGroup :: Group
@@ -239,7 +241,7 @@ addRun (Merge names groups n) run
   | repeated  = Left ("the run " ++ showSetting (runSetting run) ++ " seed " ++ seedText ++ steps
                       ++ " is on an earlier line too (a result file merged twice, a run merged with its"
                       ++ " rerun, or runs told apart only by flags a result line does not record, such as"
-                      ++ " --odometry-noise or --keys: give each such run a --param that names its setting):"
+                      ++ " --keys: give each such run a --param that names its setting):"
                       ++ " each run may be merged once")
   | otherwise = Right (Merge names' (M.insert (runSetting run) g' groups) (n + 1))
   where
@@ -248,7 +250,9 @@ addRun (Merge names groups n) run
     repeated = hasSeed seed (gNoRes g) || case runSteps run of
       Nothing -> hasSeed seed (gResults g)
       Just ds -> hasSeed seed (M.findWithDefault noSeeds ds (gBySteps g))
-    steps = maybe "" (\(dt, s) -> " (dt " ++ dt ++ ", seconds " ++ s ++ ")") (runSteps run)
+    steps = maybe "" (\(dt, s, noise) -> " (dt " ++ dt ++ ", seconds " ++ s
+                                         ++ (if noise == "0" then "" else ", odometry noise " ++ noise) ++ ")")
+                  (runSteps run)
     (names', numbered) = foldr number (names, []) (runValues run)
     number (k, x) (ns, acc) = case M.lookup k ns of
       Just i  -> (ns, (i, x) : acc)
@@ -315,7 +319,8 @@ renderMerge (Merge names groups n)
       | otherwise = []
     nMixed = length [ () | g <- M.elems groups, M.size (gBySteps g) > 1 ]
     mixed = [ "== note: " ++ show nMixed ++ (if nMixed == 1 then " setting mixes" else " settings mix")
-              ++ " runs of different dt or seconds, which the table does not tell apart" | nMixed > 0 ]
+              ++ " runs of different dt, seconds or odometry noise, which the table does not tell apart (give"
+              ++ " each a --param to tell them apart)" | nMixed > 0 ]
     mergeGroups a b = Group (gRuns a + gRuns b) (gFailed a + gFailed b) (foldr listAdd (gListed a) (listedRuns (gListed b)))
                             (IM.unionWith addStat (gStats a) (gStats b)) noSeeds noSeeds M.empty
 
