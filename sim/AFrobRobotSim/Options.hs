@@ -60,6 +60,7 @@ module AFrobRobotSim.Options
   , validateOptions
   , validateOptionsIn
   , videoExtensions
+  , runSteps
   , scaleFor
   , fitScale
   , fitPixels
@@ -301,6 +302,11 @@ validateOptions o =
                  in good k ++ " or " ++ good (k + 1)
     decimals d f = let w = showFFloat (Just d) f ""
                    in if '.' `elem` w then reverse (dropWhile (== '.') (dropWhile (== '0') (reverse w))) else w
+
+-- | The steps a run of these options takes after its time-0 sample: the
+-- whole number nearest @seconds / dt@ (0 at least).
+runSteps :: SimOptions -> Int
+runSteps o = max 0 (round (optSeconds o / optDt o))
 
 -- | The extensions (in any case) that @--video@ takes, each a video
 -- format that Debian's ffmpeg writes from the frames: @mp4@, @m4v@,

@@ -66,7 +66,7 @@ import           Control.Exception         (AsyncException (HeapOverflow, UserIn
                                             evaluate, throwIO, try)
 import           Control.Monad             (forM, unless, when)
 import           Data.IORef
-import           Data.List                 (foldl', intercalate, sortOn)
+import           Data.List                 (foldl', intercalate)
 import           Data.Maybe                (catMaybes, isNothing)
 import           GHC.Clock                 (getMonotonicTime)
 import           System.Environment        (getArgs, getProgName)
@@ -134,7 +134,7 @@ runSimWith opts mworld rcA rcB = do
           ++ quote k ++ " (" ++ readsText ++ ")" | (k, v) <- unread ]
       -- (a key pressed after the last step: a typo in its time, or a run
       -- shorter than meant)
-      let nSteps = max 0 (round (optSeconds opts / optDt opts)) :: Int
+      let nSteps = runSteps opts
           keyName c = case c of { ' ' -> "space"; ',' -> "comma"; _ -> [c] }
           late = keysNeverPressed (optDt opts) nSteps (optKeys opts)
           -- (a time to the microsecond: 3.0, not 3.0000000000000004)
@@ -167,7 +167,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
       scale    = scaleFor bounds opts
       cfg      = defaultSimConfig { simDt = dt, simKeys = optKeys opts, simSeed = optSeed opts
                                   , simOdometryNoise = optOdometryNoise opts, simBounds = bounds }
-      nSteps   = max 0 (round (optSeconds opts / dt)) :: Int
+      nSteps   = runSteps opts
       scene    = Scene bounds world
       style    = RenderStyle scale (optRays opts) (optTrails opts)
       logCfg   = defaultLogConfig { lcBounds = bounds, lcWorld = world, lcDt = dt
@@ -297,21 +297,6 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
     _ | Just k <- signal -> exitWith (ExitFailure (128 + k))
     _ | not (null allErrs) -> exitWith (ExitFailure 1)
       | otherwise          -> pure ()
-
--- | The scripted key presses that a run of @n@ steps of @dt@ (and its
--- time-0 sample) never makes, in time order: the simulator presses the
--- earliest key left at the first step whose time is at or after the
--- key's (to a millionth of a step), one key a step
--- ("AFrobRobotSim.Simulator").
-keysNeverPressed :: Double -> Int -> [(Double, Char)] -> [(Double, Char)]
-keysNeverPressed dt n = go 0 . sortOn fst
-  where
-    go _ [] = []
-    go k ks@((tk, _) : rest)
-      | k > n                                 = ks
-      | tk <= fromIntegral k * dt + dt * 1e-6 = go (k + 1) rest
-      -- (on to the step it falls due, near enough; the test above decides)
-      | otherwise = go (max (k + 1) (min (n + 1) (floor ((tk - dt * 1e-6) / dt)))) ks
 
 forceState :: WorldState -> ()
 forceState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsBalls s)

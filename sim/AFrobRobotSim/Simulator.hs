@@ -74,6 +74,8 @@ module AFrobRobotSim.Simulator
   , defaultSimConfig
   , maxTimeStep
   , maxOdometryNoise
+  , keyDue
+  , keysNeverPressed
     -- * Snapshots
   , WorldState (..)
   , RobotState (..)
@@ -229,8 +231,8 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         t      = fromIntegral n * dt
         ctx    = SenseContext arena (enRobots en) (enBalls en)
         (key, keys') = case enKeys en of
-          (tk, c) : rest | tk <= t + dt * 1e-6 -> (Just c, rest)
-          ks                                    -> (Nothing, ks)
+          (tk, c) : rest | keyDue dt tk n -> (Just c, rest)
+          ks                              -> (Nothing, ks)
         -- noisy odometry, by robot number (only made when noisy, before
         -- the parallel work, as the sensors' indexes are)
         odoArr = listArray (0, length (enOdo en) - 1) (enOdo en) :: Array Int Odometry
@@ -332,3 +334,26 @@ uniform s =
       z2 = (z1 `xor` (z1 `shiftR` 27)) * 0x94D049BB133111EB
       z3 = z2 `xor` (z2 `shiftR` 31)
   in (fromIntegral (z3 `shiftR` 11) / 4503599627370496 - 1, s')
+
+-- | @keyDue dt tk n@: whether a scripted key press at time @tk@ is due at
+-- step @n@ of a run of step @dt@ (the step's time @n * dt@, with a
+-- millionth of a step's slack for times written in decimals). The
+-- simulator presses the earliest key left at each step where it is due,
+-- one key a step.
+keyDue :: Time -> Time -> Int -> Bool
+keyDue dt tk n = tk <= fromIntegral n * dt + dt * 1e-6
+{-# INLINE keyDue #-}
+
+-- | The scripted key presses ('simKeys') that a run of @n@ steps of @dt@
+-- (after its time-0 sample) never makes, in time order, by the
+-- simulator's own rule ('keyDue', one key a step): a press after the last
+-- step, or one left waiting behind others due at the same steps.
+keysNeverPressed :: Time -> Int -> [(Time, Char)] -> [(Time, Char)]
+keysNeverPressed dt n = go 0 . sortOn fst
+  where
+    go _ [] = []
+    go k ks@((tk, _) : rest)
+      | k > n         = ks
+      | keyDue dt tk k = go (k + 1) rest
+      -- (on to the step it falls due, near enough; 'keyDue' decides)
+      | otherwise     = go (max (k + 1) (min (n + 1) (floor ((tk - dt * 1e-6) / dt)))) ks
