@@ -228,7 +228,11 @@ badDt runner dt = error ("AFRP.Run." ++ runner ++ ": a time step of " ++ show dt
 -- embedded run's clock advances by @ratio * dt@ at each step, and the
 -- output is the embedded output of the latest embedded sample at or before
 -- that clock (the last one once the samples run out). A negative or NaN
--- ratio is an error.
+-- ratio is an error. A ratio of 0 pauses even over an infinite step, and
+-- a step of 0 advances nothing even at an infinite ratio (the clock moves
+-- by @ratio * dt@ only when both are nonzero, so it never becomes NaN); a
+-- step that moves the clock to infinity gives the last sample's output,
+-- which for an infinite list of samples never comes.
 embedSynch :: SF a b -> (a, [(DTime, Maybe a)]) -> SF Double b
 embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
   where
@@ -243,7 +247,7 @@ embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
       if not (ratio >= 0)
         then error ("AFRP.Run.embedSynch: a speed ratio of " ++ show ratio ++ " (it must be a number, 0 or more)")
         else
-          let !clock'       = clock + ratio * dt
+          let !clock'       = if ratio == 0 || dt == 0 then clock else clock + ratio * dt
               (done, later) = span ((<= clock') . fst) rest
           in case done of
                [] -> (# go clock' bLast later, bLast #)

@@ -92,6 +92,14 @@ spec = do
     it "rejects a NaN ratio (it froze the replay silently)" $
       evaluate (last (runDt 1 (embedSynch identity ('a', [])) [1, 0 / 0]))
         `shouldThrow` anyErrorCall
+    it "pauses at ratio 0 over an infinite step, and resumes (0 * Infinity froze it for good)" $
+      embed (embedSynch localTime ((), replicate 10 (0.5, Nothing)))
+            (1, [(1, Just 1), (1 / 0, Just 0), (1, Just 1), (1, Just 1)])
+        `shouldBe` [0, 1, 1, 2, 3]
+    it "advances nothing over a step of 0 at an infinite ratio, then jumps to the end" $
+      embed (embedSynch localTime ((), replicate 10 (0.5, Nothing)))
+            (1, [(1, Just 1), (0, Just (1 / 0)), (1, Just 1), (1, Just (1 / 0))])
+        `shouldBe` [0, 1, 1, 2, 5]
 
   describe "time steps" $ do
     -- (a NaN step made the time NaN for ever, silently; a negative one ran
