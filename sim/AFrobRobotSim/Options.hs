@@ -15,7 +15,7 @@
 -- --scale PX         pixels per metre  (default: the world's long side 600 px, 'fitScale')
 -- --keys "1.5:a,3:b" scripted key presses (time:key, ...; 2:space and 4:comma name those keys;
 --                    repeatable)
--- --seed N           seed of the random parts, |N| <= 2^53 (default 0)
+-- --seed N           seed of the odometry noise, |N| <= 2^53 (default 0)
 -- --odometry-noise X relative odometry error per step, 0-1 (default 0 = exact)
 -- --quiet            print only the summary line
 -- --world FILE       load the world from FILE instead of the program's
@@ -89,7 +89,7 @@ data SimOptions = SimOptions
   , optFrames        :: !Bool              -- ^ write frames at all
   , optScale         :: !(Maybe Double)    -- ^ pixels per metre; 'Nothing' fits the world ('scaleFor')
   , optKeys          :: [(Double, Char)]   -- ^ scripted key presses
-  , optSeed          :: !Int               -- ^ seed of the random parts
+  , optSeed          :: !Int               -- ^ seed of the odometry noise
   , optOdometryNoise :: !Double            -- ^ relative odometry error per step
   , optQuiet         :: !Bool              -- ^ print only the summary
   , optWorldFile     :: Maybe FilePath     -- ^ load the world from this file
@@ -398,7 +398,7 @@ usage prog = intercalate "\n"
   , "  --scale PX         pixels per metre   (default: the world's long side is 600 px)"
   , "  --keys \"1.5:a,3:b\" scripted key presses (time:key, ...; 2:space and 4:comma name those keys;"
   , "                     repeatable)"
-  , "  --seed N           seed of the random parts              (default 0)"
+  , "  --seed N           seed of the odometry noise            (default 0)"
   , "  --odometry-noise X relative odometry error per step, 0-1 (default 0 = exact)"
   , "  --quiet            print only the summary line"
   , "  --world FILE       load the world from FILE instead of the program's"

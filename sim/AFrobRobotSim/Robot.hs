@@ -82,7 +82,11 @@ instance HasAnimateObjectTracker SimbotInput where
   aotOtherRobots = siRobots
   aotBalls       = siBalls
 
--- | The scripted keyboard: a key is down for one sample per press.
+-- | The scripted keyboard: a key is down for one sample per press, one
+-- key a sample; a key pressed again straight after itself is released
+-- for a sample between, so that each press changes 'tciKey' and
+-- 'AFrob.RobotIO.tciKeyDown' fires once per press
+-- ('AFrobRobotSim.Simulator.keyAtStep').
 instance HasTextualConsoleInput SimbotInput where
   tciKey = siKey
 

@@ -141,7 +141,8 @@ runSimWith opts mworld rcA rcB = do
           micro x = show (fromIntegral (round (x * 1e6) :: Integer) / 1e6 :: Double)
       unless (null late) $ putErr $ unlines
         [ prog ++ ": warning: the key press " ++ keyName c ++ " at " ++ micro t ++ " s is never pressed: the run's last"
-          ++ " step is at " ++ micro (fromIntegral nSteps * optDt opts) ++ " s, and a step presses at most one key"
+          ++ " step is at " ++ micro (fromIntegral nSteps * optDt opts) ++ " s, a step presses at most one key,"
+          ++ " and a key pressed again straight after itself waits a step (released between)"
         | (t, c) <- late ]
       -- (an empty world file, or a generator's output that never came,
       -- runs: it is a world, but one the controllers take no part in)

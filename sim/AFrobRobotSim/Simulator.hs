@@ -75,6 +75,7 @@ module AFrobRobotSim.Simulator
   , maxTimeStep
   , maxOdometryNoise
   , keyDue
+  , keyAtStep
   , keysNeverPressed
     -- * Snapshots
   , WorldState (..)
@@ -106,7 +107,7 @@ import           AFrobRobotSim.World
 -- | Settings of a simulation run.
 data SimConfig = SimConfig
   { simDt             :: !DTime         -- ^ the fixed time step (s), positive and at most 'maxTimeStep'
-  , simKeys           :: [(Time, Char)] -- ^ scripted key presses: each is down for the first sample at or after its time
+  , simKeys           :: [(Time, Char)] -- ^ scripted key presses: each is down for one sample, the first at or after its time that is free ('keyAtStep': one key a sample, and a key pressed again straight after itself is released for a sample first)
   , simSeed           :: !Int           -- ^ seed of the odometry noise
   , simOdometryNoise  :: !Double        -- ^ relative odometry error per step (0 = exact odometry), at most 'maxOdometryNoise'
   , simBounds         :: !Bounds        -- ^ the world's extent, unless the template has an 'OTSize' (which wins)
@@ -195,6 +196,7 @@ data Engine = Engine
   , enAgents :: [Agent]
   , enOdo    :: [Odometry]   -- ^ noisy odometry, in template order; [] when exact
   , enKeys   :: [(Time, Char)]
+  , enKey    :: !(Maybe Char) -- ^ the key down at the previous step
   , enRng    :: !Word64
   }
 
@@ -220,7 +222,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
     odo0    | noise == 0 = []
             | otherwise  = [ Odometry (rPos r) (rHeading r) | r <- robots0 ]
     balls0  = [ Ball (otPos o) zeroVector | o@OTBall {} <- world ]
-    engine0 = Engine 0 robots0 balls0 agents0 odo0 (sortOn fst (simKeys cfg)) (fromIntegral (simSeed cfg))
+    engine0 = Engine 0 robots0 balls0 agents0 odo0 (sortOn fst (simKeys cfg)) Nothing (fromIntegral (simSeed cfg))
 
     -- (on several capabilities, the workers are given the step's chunks
     -- before the snapshot is: they compute while the snapshot's reader,
@@ -230,9 +232,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         n      = enStep en
         t      = fromIntegral n * dt
         ctx    = SenseContext arena (enRobots en) (enBalls en)
-        (key, keys') = case enKeys en of
-          (tk, c) : rest | keyDue dt tk n -> (Just c, rest)
-          ks                              -> (Nothing, ks)
+        (key, keys') = keyAtStep dt n (enKey en) (enKeys en)
         -- noisy odometry, by robot number (only made when noisy, before
         -- the parallel work, as the sensors' indexes are)
         odoArr = listArray (0, length (enOdo en) - 1) (enOdo en) :: Array Int Odometry
@@ -267,7 +267,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq`
               forceList odo' `seq` keys' `seq`
               en { enStep = n + 1, enRobots = robots', enBalls = balls', enAgents = agents'
-                 , enOdo = odo', enKeys = keys', enRng = rng' }
+                 , enOdo = odo', enKeys = keys', enKey = key, enRng = rng' }
 
     -- (the input is made with the bound on the robot's distance to the
     -- others that its move's plan takes, from one gathering of the robots
@@ -339,21 +339,42 @@ uniform s =
 -- step @n@ of a run of step @dt@ (the step's time @n * dt@, with a
 -- millionth of a step's slack for times written in decimals). The
 -- simulator presses the earliest key left at each step where it is due,
--- one key a step.
+-- one key a step ('keyAtStep').
 keyDue :: Time -> Time -> Int -> Bool
 keyDue dt tk n = tk <= fromIntegral n * dt + dt * 1e-6
 {-# INLINE keyDue #-}
 
+-- | @keyAtStep dt n previous presses@: the key down at step @n@ of a run
+-- of step @dt@, given the key down at the step before and the scripted
+-- presses not yet made (in time order), and the presses left after it.
+-- The earliest press left is made at this step if it is due ('keyDue'),
+-- one key a step; but a press of the key that was down at the step before
+-- waits one step, with no key down, so that the controller sees the key
+-- released and pressed again ('AFrob.RobotIO.tciKeyDown' fires once a
+-- press, not once for two presses run together).
+--
+-- > keyAtStep 0.1 0 Nothing [(0, 'a'), (0, 'a')]   == (Just 'a', [(0, 'a')])
+-- > keyAtStep 0.1 1 (Just 'a') [(0, 'a')]          == (Nothing, [(0, 'a')])
+-- > keyAtStep 0.1 2 Nothing [(0, 'a')]             == (Just 'a', [])
+keyAtStep :: Time -> Int -> Maybe Char -> [(Time, Char)] -> (Maybe Char, [(Time, Char)])
+keyAtStep dt n previous presses = case presses of
+  (tk, c) : rest | keyDue dt tk n, previous /= Just c -> (Just c, rest)
+  _                                                   -> (Nothing, presses)
+{-# INLINE keyAtStep #-}
+
 -- | The scripted key presses ('simKeys') that a run of @n@ steps of @dt@
 -- (after its time-0 sample) never makes, in time order, by the
--- simulator's own rule ('keyDue', one key a step): a press after the last
--- step, or one left waiting behind others due at the same steps.
+-- simulator's own rule ('keyAtStep', one key a step, a repeated key
+-- released for a step between): a press after the last step, or one left
+-- waiting behind others due at the same steps.
 keysNeverPressed :: Time -> Int -> [(Time, Char)] -> [(Time, Char)]
-keysNeverPressed dt n = go 0 . sortOn fst
+keysNeverPressed dt n = go 0 Nothing . sortOn fst
   where
-    go _ [] = []
-    go k ks@((tk, _) : rest)
-      | k > n         = ks
-      | keyDue dt tk k = go (k + 1) rest
-      -- (on to the step it falls due, near enough; 'keyDue' decides)
-      | otherwise     = go (max (k + 1) (min (n + 1) (floor ((tk - dt * 1e-6) / dt)))) ks
+    go _ _ [] = []
+    go k previous ks@((tk, _) : _)
+      | k > n          = ks
+      | keyDue dt tk k = case keyAtStep dt k previous ks of
+          (pressed, rest) -> go (k + 1) pressed rest
+      -- (on to the step it falls due, near enough; 'keyDue' decides; no
+      -- key is down at the steps skipped)
+      | otherwise      = go (max (k + 1) (min (n + 1) (floor ((tk - dt * 1e-6) / dt)))) Nothing ks

@@ -329,7 +329,7 @@ spec = do
                                                       , optKeys = [(0.5, 'a'), (1, 'b'), (5, ' ')] } (Just world) drive drive)
       r `shouldBe` Right ()
       lines err `shouldSatisfy` \ls -> length ls == 1
-        && all ("warning: the key press space at 5.0 s is never pressed: the run's last step is at 1.0 s, and a step presses at most one key" `isInfixOf`) ls
+        && all ("warning: the key press space at 5.0 s is never pressed: the run's last step is at 1.0 s, a step presses at most one key, and a key pressed again straight after itself waits a step" `isInfixOf`) ls
       -- by the simulator's rule: one key a step, a key due a millionth of
       -- a step after the last one pressed there
       (_, err', _) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 1
@@ -338,6 +338,14 @@ spec = do
       (_, err'', _) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 0.3, optDt = 0.1, optFps = 10
                                                         , optKeys = [(0.3000001, 'c')] } (Just world) drive drive)
       err'' `shouldBe` ""
+      -- (a key pressed twice in a row is released for a step between:
+      -- the second press of a at 0 s is made at 0.2 s, after the run)
+      (_, err3, _) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 0.1, optDt = 0.1, optFps = 10
+                                                       , optKeys = [(0, 'a'), (0, 'a')] } (Just world) drive drive)
+      lines err3 `shouldSatisfy` \ls -> length ls == 1 && all ("the key press a at 0.0 s is never pressed" `isInfixOf`) ls
+      (_, err4, _) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 0.2, optDt = 0.1, optFps = 10
+                                                       , optKeys = [(0, 'a'), (0, 'a')] } (Just world) drive drive)
+      err4 `shouldBe` ""
   describe "parameters" $
     it "warns of a --param the program never asked for (a misspelled name), naming those it did" $ withTempDir $ \dir -> do
       self <- getExecutablePath

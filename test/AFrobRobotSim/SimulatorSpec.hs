@@ -25,6 +25,7 @@ import           Test.Hspec        hiding (after)
 
 import           AFrob             hiding (forAll)
 import           AFrobRobotSim
+import           AFrobRobotSim.Simulator (keyAtStep)
 import           TestUtil (withCaps, withTempDir)
 
 -- | The snapshot at (about) time t of a run with step dt.
@@ -220,6 +221,22 @@ spec = do
                             [OTSimbotA 1 (Point2 0 0) 0] keys idle)
       [ (wsTime s, m) | s <- run, m <- wsMessages s ] `shouldBe`
         [(0.5, "[0.50] SimbotA.1: a"), (1.0, "[1.00] SimbotA.1: b")]
+    it "releases a key for a sample between two presses of it in a row, so that each press is an event" $ do
+      -- (pressed on two samples running, the two presses read as one key
+      -- held: tciKeyDown fired once)
+      let keys _ = proc sbi -> do
+            k <- tciKeyDown -< sbi
+            returnA -< mrFinalize (tcoPrintMessage (fmap (: []) k))
+          run = take 10 (simulateWith defaultSimConfig { simDt = 0.1, simKeys = [(0, 'a'), (0, 'a'), (0.1, 'b'), (0.1, 'b')] }
+                            [OTSimbotA 1 (Point2 0 0) 0] keys idle)
+      [ m | s <- run, m <- wsMessages s ] `shouldBe`
+        ["[0.00] SimbotA.1: a", "[0.20] SimbotA.1: a", "[0.30] SimbotA.1: b", "[0.50] SimbotA.1: b"]
+    it "keyAtStep presses the earliest due key, one a step, a repeated key after a step released" $ do
+      keyAtStep 0.1 0 Nothing [(0, 'a'), (0, 'a')] `shouldBe` (Just 'a', [(0, 'a')])
+      keyAtStep 0.1 1 (Just 'a') [(0, 'a')] `shouldBe` (Nothing, [(0, 'a')])
+      keyAtStep 0.1 2 Nothing [(0, 'a')] `shouldBe` (Just 'a', [])
+      keyAtStep 0.1 1 (Just 'a') [(0, 'b')] `shouldBe` (Just 'b', [])
+      keyAtStep 0.1 1 Nothing [(0.2, 'b')] `shouldBe` (Nothing, [(0.2, 'b')])
 
   describe "odometry" $ do
     let world = [OTSimbotA 1 (Point2 (-3) 0) 0]
