@@ -37,8 +37,9 @@
 --
 -- 'validateOptions' checks the numbers together before anything is
 -- simulated: the step count @seconds / dt@ is finite and at most
--- 'maxSteps' (a run takes the whole number of steps nearest to it, so
--- @--seconds@ greater than 0 must be at least half of @--dt@), the frame period @1 / fps@ is a whole number of steps;
+-- 'maxSteps' (a run takes the whole number of steps nearest to it, a half
+-- rounded up, so @--seconds@ greater than 0 must be at least half of
+-- @--dt@), the frame period @1 / fps@ is a whole number of steps;
 -- 'validateOptionsIn', once the world is known, also that the frame is at
 -- most 'maxFrameSide' pixels wide and tall. A @--video@'s name must end
 -- in one of 'videoExtensions'.
@@ -269,8 +270,8 @@ validateOptions o =
      | all finite [secs, dt], dt > 0, tooMany ]
   ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is less than half a step, so nothing would be"
        ++ " simulated after time 0 (a run takes the whole number of steps nearest seconds / dt); give"
-       ++ " --seconds " ++ num dt ++ " or more, or 0 for the time-0 sample alone"
-     | all finite [secs, dt], dt > 0, secs > 0, (round steps :: Integer) == 0 ]
+       ++ " --seconds " ++ num (dt / 2) ++ " or more, or 0 for the time-0 sample alone"
+     | all finite [secs, dt], dt > 0, secs > 0, steps < 0.5 ]
   ++ [ "--fps times --dt must not exceed 1 (at most one frame per time step)"
      | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
   ++ [ "--dt " ++ num dt ++ " does not divide the frame period 1/" ++ num fps ++ " s; --fps "
@@ -304,9 +305,12 @@ validateOptions o =
                    in if '.' `elem` w then reverse (dropWhile (== '.') (dropWhile (== '0') (reverse w))) else w
 
 -- | The steps a run of these options takes after its time-0 sample: the
--- whole number nearest @seconds / dt@ (0 at least).
+-- whole number nearest @seconds / dt@, a half rounded up (0 at least):
+-- @--seconds 0.25 --dt 0.1@ is 3 steps, @--seconds 0.005@ at the default
+-- step 1 (a tie went to the even number before: 2 and 0, the second
+-- refused).
 runSteps :: SimOptions -> Int
-runSteps o = max 0 (round (optSeconds o / optDt o))
+runSteps o = max 0 (floor (optSeconds o / optDt o + 0.5))
 
 -- | The extensions (in any case) that @--video@ takes, each a video
 -- format that Debian's ffmpeg writes from the frames: @mp4@, @m4v@,

@@ -104,9 +104,15 @@ spec = do
     it "refuses --seconds greater than 0 that is less than half a step: a run of no step after time 0" $ do
       let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
       run ["--seconds", "0.004", "--dt", "0.01"] `shouldSatisfy` either ("less than half a step" `isInfixOf`) (const False)
-      run ["--seconds", "0.005", "--dt", "0.01"] `shouldSatisfy` either ("less than half a step" `isInfixOf`) (const False)
+      run ["--seconds", "0.0049", "--dt", "0.01"] `shouldSatisfy` either ("give --seconds 0.005 or more" `isInfixOf`) (const False)
+      -- (exactly half a step was refused: a tie rounded to the even 0)
+      run ["--seconds", "0.005", "--dt", "0.01"] `shouldBe` Right ()
       run ["--seconds", "0.006", "--dt", "0.01"] `shouldBe` Right ()
       run ["--seconds", "0", "--dt", "0.01"] `shouldBe` Right ()
+    it "runSteps takes the whole number of steps nearest seconds / dt, a half rounded up" $ do
+      let steps secs dt = runSteps defaultSimOptions { optSeconds = secs, optDt = dt }
+      map (uncurry steps) [(0.005, 0.01), (0.25, 0.1), (0.35, 0.1), (0.0049, 0.01), (30, 0.01), (0, 0.01)]
+        `shouldBe` [1, 3, 3, 0, 3000, 0]
     it "refuses a --dt beyond maxTimeStep and an --odometry-noise beyond maxOdometryNoise (a robot's pose became NaN)" $ do
       let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
       run ["--dt", "1e6", "--fps", "1e-6", "--seconds", "1e7"] `shouldBe` Right ()
