@@ -95,14 +95,16 @@ headingToBearing h = normalizeBearing (90 - radToDeg (normalizeHeading h))
 
 -- | Degrees to radians, without normalising: @degToRad d = d \/ 180 * pi@.
 -- Dividing first keeps the common angles exact (@degToRad 90 == pi \/ 2@,
--- @degToRad 180 == pi@) and cannot overflow.
+-- @degToRad 180 == pi@) and cannot overflow (a finite argument gives a
+-- finite result).
 degToRad :: Double -> Double
 degToRad d = d / 180 * pi
 {-# INLINE degToRad #-}
 
 -- | Radians to degrees, without normalising: @radToDeg r = r \/ pi * 180@.
--- Exact for the common angles (@radToDeg (pi \/ 2) == 90@) and cannot
--- overflow.
+-- Exact for the common angles (@radToDeg (pi \/ 2) == 90@). Finite for
+-- any angle up to about 3e306 radians in magnitude; beyond, the product
+-- overflows to an infinity (normalise first: 'normalizeAngle').
 radToDeg :: Double -> Double
 radToDeg r = r / pi * 180
 {-# INLINE radToDeg #-}

@@ -135,7 +135,10 @@ class HasRangeFinder i where
   -- positive) and interpreted modulo 2*pi (so @pi@ and @-pi@ both mean
   -- straight back). At most 'rfMaxRange' (the reading when nothing is in
   -- range). A robot may only support some directions (the simbots have
-  -- sensors at 0, pi\/2, pi and -pi\/2); see its documentation.
+  -- sensors at 0, pi\/2, pi and -pi\/2); see its documentation. An angle
+  -- that is NaN or infinite names no direction: the simbots read
+  -- 'rfMaxRange' for it, as for nothing in range (so do angles so large
+  -- that the float no longer holds their fraction of a turn).
   rfRange :: i -> Angle -> Distance
   -- | The largest distance the range finder reports, in metres.
   rfMaxRange :: i -> Distance
@@ -206,7 +209,9 @@ tciKeyDown = tciNewKeyDown Nothing
 -- convention an output in which no drive method was used brakes (the
 -- output type's @mrDefault@ sets the drive as 'ddBrake' does). The robot
 -- limits the wheel speeds to its 'rpWSMax' and their changes to its
--- 'rpAccMax'.
+-- 'rpAccMax'; a robot may limit them further (a simbot whose battery is
+-- critical, 'BSCritical', drives at half its 'rpWSMax': see
+-- "AFrobRobotSim.Physics").
 class MergeableRecord o => HasDiffDrive o where
   -- | Brake both wheels: decelerate them towards standstill at the
   -- maximal acceleration ('rpAccMax').

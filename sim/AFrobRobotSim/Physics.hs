@@ -58,7 +58,8 @@
 -- (0 at rest, 1 at full speed). The status is 'BSHigh' above 0.3, 'BSLow'
 -- above 0.1, and 'BSCritical' below, where the maximum wheel speed halves.
 -- At full effort a fresh battery is low after 200 s and critical after
--- about 257 s.
+-- about 257 s (a robot that accelerates from rest to full speed spends a
+-- little less effort at first: about 202 s and 259 s).
 module AFrobRobotSim.Physics
   ( -- * State
     Robot (..)

@@ -54,7 +54,8 @@ module AFrobRobotSim.Result
 
 import           Control.Exception    (SomeException, displayException, evaluate, try)
 import           Data.IORef           (IORef, atomicModifyIORef', newIORef, readIORef)
-import           Data.List            (foldl', nub, (\\))
+import           Data.List            (foldl', nub)
+import qualified Data.Map.Strict      as M
 import           System.IO.Unsafe     (unsafePerformIO)
 import           System.Environment   (getArgs, getProgName)
 import           System.Exit          (ExitCode (..), exitWith)
@@ -149,14 +150,19 @@ paramOr name def = do
 -- @Just 300@, a record's field): the numbers the value's 'Show' writes
 -- are compared with those of the text: every integer (or ratio @a % b@)
 -- written back must be one of the text (in any order: a set writes its
--- elements back sorted), infinity only where the text has it. (A value
--- that 'Show' writes with another count of numbers than the text has is
--- not checked.) A fraction that a 'Double' rounds is not refused.
+-- elements back sorted), infinity only where the text has it, zero only
+-- where the text has it (@1e-400@, which a 'Double' reads as @0.0@, is
+-- refused). Where 'Show' writes fewer or more numbers than the text has
+-- (a 'Data.Set.Set' drops the duplicates), every integer or ratio written
+-- back must still be one of the text's, any number of times. A fraction
+-- that a 'Double' rounds to another nonzero number is not refused.
 -- Reading never wraps silently:
 --
 -- >>> readSimParam "n" "300" :: Either String Int
 -- Right 300
 -- >>> either (const "refused") show (readSimParam "n" "[1,2,300]" :: Either String [Word8])
+-- "refused"
+-- >>> either (const "refused") show (readSimParam "n" "fromList [1,1,300]" :: Either String (Set Word8))
 -- "refused"
 --
 -- The result is evaluated as far as that check needs: a value whose
@@ -220,14 +226,25 @@ numerals = ratios . numbersIn . tokens
 -- written (as a multiset: a 'Data.Set.Set' or a 'Data.Map.Map' writes
 -- its elements back in order, not as given), infinity only from
 -- infinity, and zero only from zero (@1e-400@, which a 'Double' reads as
--- @0.0@, is not held). A number written back as a floating-point one (a
+-- @0.0@, is not held). When there are fewer or more (a set drops its
+-- duplicates: @fromList [1,1,300]@ as a set of 'Data.Word.Word8' is
+-- written back @fromList [1,44]@), every integer or ratio written back
+-- must still be one written, and infinity and zero written back must be
+-- written somewhere. A number written back as a floating-point one (a
 -- 'Double' written as @3@) is not otherwise compared.
 numeralsHeld :: [Numeral] -> [Numeral] -> Bool
 numeralsHeld written shown
-  | length written /= length shown = True
-  | otherwise = null (exact shown \\ exact written) && count (== Infinite) shown <= count (== Infinite) written
+  | length written /= length shown =
+      all (`M.member` tally written) (exact shown)
+        && (Infinite `notElem` shown || Infinite `elem` written)
+        && (not (any isZero shown) || any isZero written)
+  | otherwise = M.isSubmapOfBy (<=) (tally shown) (tally written)
+                && count (== Infinite) shown <= count (== Infinite) written
                 && count isZero shown <= count isZero written
   where
+    -- (each exact number with the times it is there; a parameter's text
+    -- may hold tens of thousands)
+    tally ns = M.fromListWith (+) [ (r, 1 :: Int) | r <- exact ns ]
     exact ns = [ r | n <- ns, Just r <- [asRational n] ]
     asRational (Whole a) = Just (fromInteger a)
     asRational (Ratio a) = Just a

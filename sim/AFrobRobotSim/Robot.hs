@@ -75,9 +75,11 @@ instance HasRangeFinder SimbotInput where
   rfRange    = siRange
   rfMaxRange = siMaxRange
 
--- | Other robots and balls within the tracking range, with their bearing
--- relative to the own heading (normalised to [-pi, pi)) and their
--- centre-to-centre distance, nearest first.
+-- | Other robots and balls within the tracking range, with their angle
+-- relative to the own heading (an 'AFrob.Dimensions.Angle' in radians,
+-- counter-clockwise positive, normalised to [-pi, pi); not a compass
+-- 'AFrob.Dimensions.Bearing') and their centre-to-centre distance,
+-- nearest first.
 instance HasAnimateObjectTracker SimbotInput where
   aotOtherRobots = siRobots
   aotBalls       = siBalls

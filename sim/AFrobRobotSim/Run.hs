@@ -317,7 +317,7 @@ makeVideo opts exe nFrames file = do
                         , "-i", inFolder (optOut opts) </> framePattern, "-frames:v", show nFrames
                         , "-pix_fmt", "yuv420p", "file:" ++ file ]
   case code of
-    ExitSuccess   -> [] <$ putStrLn ("wrote " ++ displayPath file)
+    ExitSuccess   -> [] <$ unless (optQuiet opts) (putStrLn ("wrote " ++ displayPath file))
     ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
   where
     inFolder dir = concatMap (\c -> if c == '%' then "%%" else [c]) (if isAbsolute dir then dir else "." </> dir)

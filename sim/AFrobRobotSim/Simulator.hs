@@ -160,7 +160,7 @@ data RobotState = RobotState
   , robotId       :: !RobotId
   , robotPos      :: {-# UNPACK #-} !Position2  -- ^ true position of its centre
   , robotHeading  :: !Heading        -- ^ true heading
-  , robotSpeed    :: !Speed          -- ^ translational speed
+  , robotSpeed    :: !Velocity       -- ^ translational velocity along the heading (m/s): negative when the robot backs
   , robotStuck    :: !Bool
   , robotBattery  :: !BatteryStatus
   , robotCharge   :: !Double         -- ^ battery charge, 1 = full
@@ -170,7 +170,8 @@ data RobotState = RobotState
 -- | @simulate dt world rcA rcB@: the run of @world@ with controller @rcA@
 -- for every SimbotA and @rcB@ for every SimbotB, at the fixed time step
 -- @dt@, with the defaults of 'defaultSimConfig' otherwise. An invalid
--- world (see 'validateWorld') is an error listing every problem.
+-- world (see 'validateWorld') is an error listing its problems (the
+-- first 20, and how many more).
 simulate :: DTime -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
 simulate dt = simulateWith defaultSimConfig { simDt = dt }
 

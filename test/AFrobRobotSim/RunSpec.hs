@@ -599,9 +599,14 @@ spec = do
       saved <- lookupEnv "PATH"
       setEnv "PATH" bin
       (do _ <- captured (runSimWith (quick out) (Just world) drive drive)
-          (_, _, r) <- captured (runSimWith (quick out) { optSeconds = 1, optVideo = Just (dir </> "run.mp4") }
+          (o, _, r) <- captured (runSimWith (quick out) { optSeconds = 1, optVideo = Just (dir </> "run.mp4") }
                                             (Just world) drive drive)
-          r `shouldBe` Right ())
+          r `shouldBe` Right ()
+          -- (--quiet: only the summary, not the video's line)
+          filter ("wrote" `isPrefixOf`) (lines o) `shouldBe` []
+          (o', _, _) <- captured (runSimWith (quick out) { optSeconds = 1, optQuiet = False, optVideo = Just (dir </> "run.mp4") }
+                                             (Just world) drive drive)
+          filter (("wrote " ++ (dir </> "run.mp4")) `isPrefixOf`) (lines o') `shouldBe` ["wrote " ++ (dir </> "run.mp4")])
         `finally` maybe (pure ()) (setEnv "PATH") saved
       args <- lines <$> readFile (dir </> "args")
       take 2 (dropWhile (/= "-frames:v") args) `shouldBe` ["-frames:v", "26"]

@@ -428,6 +428,13 @@ spec = do
       let refused :: Either String b -> Bool
           refused = either ("out of range" `isInfixOf`) (const False)
       (readSimParam "p" "[1,2,300]" :: Either String [Word8]) `shouldSatisfy` refused
+      -- (a set drops duplicates, so it writes back fewer numbers than the
+      -- text: 300 wrapped to 44 was taken)
+      (readSimParam "p" "fromList [1,1,300]" :: Either String (S.Set Word8)) `shouldSatisfy` refused
+      (readSimParam "p" "fromList [1,1,3]" :: Either String (S.Set Word8)) `shouldBe` Right (S.fromList [1, 3])
+      (readSimParam "p" "fromList [1,1,1e-400]" :: Either String (S.Set Double)) `shouldSatisfy` refused
+      (readSimParam "p" "fromList [1,1,1e400]" :: Either String (S.Set Double)) `shouldSatisfy` refused
+      (readSimParam "p" (show [1 .. 20000 :: Int]) :: Either String [Int]) `shouldBe` Right [1 .. 20000]
       (readSimParam "p" "(300,1)" :: Either String (Word8, Int)) `shouldSatisfy` refused
       (readSimParam "p" "Just 99999999999999999999" :: Either String (Maybe Int)) `shouldSatisfy` refused
       (readSimParam "p" "300 % 1" :: Either String (Ratio Word8)) `shouldSatisfy` refused

@@ -143,7 +143,7 @@ data LogEvent = LogEvent
 -- | The last line: the same facts as the summary the runner prints.
 data LogSummary = LogSummary
   { lsSimulated   :: !Double       -- ^ simulated time (s)
-  , lsSteps       :: !Int          -- ^ steps taken
+  , lsSteps       :: !Int          -- ^ samples stepped, the one at time 0 included (the steps after time 0, plus one)
   , lsFrames      :: !Int          -- ^ frame lines written
   , lsWallTime    :: !Double       -- ^ wall-clock time of the run (s)
   , lsInterrupted :: !Bool         -- ^ stopped by Ctrl-C
