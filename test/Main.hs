@@ -6,6 +6,7 @@ import           Test.Hspec
 import qualified AFRP.BasicSpec
 import qualified AFRP.ChainSpec
 import qualified AFRP.ConditionalSpec
+import qualified AFRP.DeferredSpec
 import qualified AFRP.DelaySpec
 import qualified AFRP.EventSourceSpec
 import qualified AFRP.EventSpec
@@ -87,6 +88,7 @@ specs = hspec $ do
   describe "AFRP.Basic"       AFRP.BasicSpec.spec
   describe "AFRP.Internal.Chain" AFRP.ChainSpec.spec
   describe "AFRP.Conditional" AFRP.ConditionalSpec.spec
+  describe "AFRP.Internal.Deferred" AFRP.DeferredSpec.spec
   describe "AFRP.Event"       AFRP.EventSpec.spec
   describe "AFRP.EventSource" AFRP.EventSourceSpec.spec
   describe "AFRP.Hybrid"      AFRP.HybridSpec.spec

@@ -31,7 +31,7 @@
 -- been stepped ignores the time step it is given/. A freshly built 'AFRP.Internal.SF.SF' is
 -- always such an initial node, so starting a signal function (at time 0, or
 -- at a switch) is just stepping it. The one exception is the node built by
--- 'freezeN', which replays a step that was interrupted by a switch and so
+-- 'AFRP.Internal.Deferred.freezeN', which replays a step that was interrupted by a switch and so
 -- deliberately uses the time step it captured.
 --
 -- A step returns an unboxed pair of the next node and the output. The next
@@ -46,7 +46,7 @@
 -- depends on its input (an edge, a hold, an accumulator, a switch)
 -- keeps that dependency unevaluated in its successor and evaluates it at
 -- the start of its /next/ step, when every value of the previous sample
--- is available: 'mealyN' and 'lazyN' are the two general forms, and the
+-- is available: 'AFRP.Internal.Deferred.mealyN' and 'AFRP.Internal.Deferred.lazyN' are the two general forms, and the
 -- edges, 'AFRP.Hybrid.hold' and 'AFRP.Integration.derivative' do the same
 -- by hand. So a stateful node inside a 'loop' whose output nobody needs
 -- never demands the value fed back, as in Yampa; and since each step
@@ -126,8 +126,6 @@ module AFRP.Internal.Node
   , stepN
   , stepInline
   , boxStep
-  , freezeN
-  , deferN
     -- * Smart constructors
   , constN
   , arrN
@@ -137,12 +135,6 @@ module AFRP.Internal.Node
   , secondN
   , parN
   , fanN
-  , initN
-  , mealyN
-  , lazyN
-  , HandoverStep (..)
-  , Next (..)
-  , lazyHandoverN
   ) where
 
 import           AFRP.Internal.Chain
@@ -319,7 +311,7 @@ stepN n dt a = case n of
 -- takes the pair apart: the same values, evaluated at the same step, with
 -- the same sums @y_n = y_(n-1) + dt_n * a_(n-1)@, without the three
 -- thunks (and without the pair's two nodes, rebuilt at every step). A
--- step that is replayed ('freezeN') applies @p@ again: the same value,
+-- step that is replayed ('AFRP.Internal.Deferred.freezeN') applies @p@ again: the same value,
 -- computed twice, on that one step.
 int2On :: (c -> (Double, Double)) -> Double -> Double -> c -> Node c (Double, Double)
 int2On p !s1 !s2 prev = NStep (\dt a -> case p prev of
@@ -517,21 +509,6 @@ boxStep :: Node a b -> DTime -> a -> Boxed a b
 boxStep n dt a = case stepN n dt a of (# n', b #) -> Boxed n' b
 {-# INLINE boxStep #-}
 
--- | @freezeN n dt@ is a node that, on its first step, performs the step of
--- @n@ by @dt@ (whatever time step it is given), and then continues as @n@
--- would. This is how a continuation receives a signal function that was
--- interrupted by a switch without losing or repeating any time: the step
--- that the switch pre-empted is replayed exactly once.
-freezeN :: Node a b -> DTime -> Node a b
-freezeN n@(NPure _) _ = n
-freezeN n dt          = NStep (\_ a -> stepN n dt a)
-
--- | @deferN n@ takes @n@ unevaluated and evaluates it only when it is next
--- stepped. The decoupled (delayed) switches return their successor this
--- way, so that whether they switch (which may depend, through a loop, on
--- their own output at this instant) is decided after the instant is over.
-deferN :: Node a b -> Node a b
-deferN n = NStep (\dt a -> stepN n dt a)
 
 ------------------------------------------------------------------------------
 -- Stateless functions
@@ -658,78 +635,3 @@ fanFD f g             =
   let f' = fdFun f
       g' = fdFun g
   in FDG (\a -> (f' a, g' a))
-
--- | A node from its first step (which has no time step).
-initN :: (a -> (# Node a b, b #)) -> Node a b
-initN f = NStep (\_ a -> f a)
-{-# INLINE initN #-}
-
--- | A time-independent state machine: state, output function and
--- transition. The step does not evaluate its input: the transition is
--- applied lazily, and its new state is forced at the start of the next
--- step (so a state never holds more than one step's thunk).
-mealyN :: (s -> a -> (s, b)) -> s -> Node a b
-mealyN f s0 = NStep (\_ a -> let r = f s0 a in (# pending r, snd r #))
-  where
-    pending r = NStep (\_ a -> case r of
-      (!s, _) -> let r' = f s a in (# pending r', snd r' #))
-{-# INLINE mealyN #-}
-
--- | @lazyN n@ behaves as @n@, but each of its steps is performed only
--- when its output is demanded or, at the latest, at the start of the next
--- step. For primitives whose step evaluates their input (a switch
--- deciding whether its event occurred, a collection routing its input):
--- wrapped, they no longer demand their input before someone downstream
--- demands their output. A successor that has become pure is returned as
--- it is, and so stops paying for the wrapper.
-lazyN :: Node a b -> Node a b
-lazyN n = case n of
-  NPure _ -> n
-  _       -> NStep (stepLazyN n)
-
-stepLazyN :: Node a b -> DTime -> a -> (# Node a b, b #)
-stepLazyN n dt a =
-  let r = boxStep n dt a
-  in (# NStep (resumeLazyN r), case r of Boxed _ b -> b #)
-
-resumeLazyN :: Boxed a b -> DTime -> a -> (# Node a b, b #)
-resumeLazyN (Boxed n _) dt a = case n of
-  NPure _ -> stepN n dt a
-  _       -> stepLazyN n dt a
-
--- | The step of a switch that runs lazily until it hands over for good
--- ('lazyHandoverN'): its output and what follows, 'Stay' (its own next
--- step) or 'Leave' (the node it hands over to, already started).
-newtype HandoverStep a b = HandoverStep (DTime -> a -> (# Next a b, b #))
-
--- | What follows a step of a 'lazyHandoverN' switch. It may be left
--- unevaluated until the next step (a decoupled switch decides there
--- whether it switched).
-data Next a b
-  = Stay (HandoverStep a b)  -- ^ the switch's own next step, lazy as this one
-  | Leave (Node a b)         -- ^ the node handed over to, stepped as it is from now on
-
--- A 'HandoverStep' result in a box (both parts lazy).
-data BoxedNext a b = BoxedNext (Next a b) b
-
--- | @lazyHandoverN s@: a switch whose steps are performed as 'lazyN'
--- performs them (when the output is demanded, or at the latest at the
--- start of the next step) for as long as it stays, and which, once a step
--- has left for a node, is that node: stepped as it is, not wrapped.
--- A switch whose continuation is a lazy switch again (a 'AFRP.Switch.kSwitch'
--- or a 'AFRP.Parallel.pSwitch' calling itself, the usual way of writing
--- one that recurs) would otherwise be wrapped once more at every switch,
--- each later step costing one more layer (quadratic time, and the layers
--- kept).
-lazyHandoverN :: HandoverStep a b -> Node a b
-lazyHandoverN h = NStep (stepHandover h)
-
-stepHandover :: HandoverStep a b -> DTime -> a -> (# Node a b, b #)
-stepHandover (HandoverStep f) dt a =
-  let r = case f dt a of (# nx, b #) -> BoxedNext nx b
-  in (# NStep (resumeHandover r), case r of BoxedNext _ b -> b #)
-
-resumeHandover :: BoxedNext a b -> DTime -> a -> (# Node a b, b #)
-resumeHandover (BoxedNext nx _) dt a = case nx of
-  Stay h  -> stepHandover h dt a
-  Leave n -> stepN n dt a

@@ -12,11 +12,13 @@
 -- design notes explain the representation and what keeps it fast); this
 -- module wraps a node as an 'SF', closes loops over nodes, and gives 'SF'
 -- its instances, with the rewrite rules that fuse lifted functions
--- composed where GHC can see them. It re-exports "AFRP.Internal.Node".
+-- composed where GHC can see them. It re-exports "AFRP.Internal.Node"
+-- and "AFRP.Internal.Deferred".
 module AFRP.Internal.SF
   ( -- * Signal functions
     SF (..)
   , module AFRP.Internal.Node
+  , module AFRP.Internal.Deferred
     -- * The instances' composition and lifting (for rewrite rules)
   , compSF
   , arrSF
@@ -38,6 +40,7 @@ import           Control.Arrow
 import           Control.Category (Category (..))
 import           Prelude          hiding (id, (.))
 
+import           AFRP.Internal.Deferred
 import           AFRP.Internal.Node
 
 ------------------------------------------------------------------------------
