@@ -44,6 +44,10 @@ run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open)
     const greenish = c => c[1] > c[0] + 40 && c[1] > c[2] + 40;
     const rayRows = async () => [await pixelAt(0, 0, 0, -1), await pixelAt(0, 0, 0, 0)];
     check((await rayRows()).some(greenish), 'range rays are drawn (front ray of SimbotA 1 at (0, 0))');
+    // a reading is from the robot's edge: the front ray of 3 m from x = -2 ends at x = 1.25, not 1
+    const rayAt = async x => [await pixelAt(x, 0, 0, -1), await pixelAt(x, 0, 0, 0)];
+    check((await rayAt(1.15)).some(greenish), 'a range ray runs from the robot\'s edge (drawn at x = 1.15)');
+    check((await rayAt(1.4)).every(c => !greenish(c)), 'a range ray ends at its reading (none at x = 1.4)');
     await page.uncheck('#rays');
     check((await rayRows()).every(c => near(c, background, 0)), 'unticking "range rays" hides them');
     await page.check('#rays');

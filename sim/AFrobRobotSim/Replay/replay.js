@@ -226,16 +226,23 @@
     f.robots.forEach(function (r, i) {
       var here = toCanvas(r.x, r.y);
       if (!nearCanvas(here, reach)) return;
-      var ray = function (path, a, d) {
-        var end = toCanvas(r.x + d * Math.cos(r.heading + a), r.y + d * Math.sin(r.heading + a));
-        path.moveTo(here[0], here[1]); path.lineTo(end[0], end[1]);
-      };
-      if (rays) header.rangeAngles.forEach(function (a, k) { if (r.range[k] !== null) ray(rays, a, r.range[k]); });
-      if (seen) {
-        r.seenRobots.forEach(function (s) { ray(seen.robots, s[2], s[3]); });
-        r.seenBalls.forEach(function (s) { ray(seen.balls, s[0], s[1]); });
-      }
       var info = header.robots[i], radius = info.radius * scale;
+      // a line in direction a (relative to the heading) from `from` to
+      // `to` metres off the robot's centre
+      var ray = function (path, a, from, to) {
+        var c = Math.cos(r.heading + a), s = Math.sin(r.heading + a);
+        var start = toCanvas(r.x + from * c, r.y + from * s), end = toCanvas(r.x + to * c, r.y + to * s);
+        path.moveTo(start[0], start[1]); path.lineTo(end[0], end[1]);
+      };
+      // (a range reading is measured from the robot's edge; a sighting's
+      // distance is between centres)
+      if (rays) header.rangeAngles.forEach(function (a, k) {
+        if (r.range[k] !== null) ray(rays, a, info.radius, info.radius + r.range[k]);
+      });
+      if (seen) {
+        r.seenRobots.forEach(function (s) { ray(seen.robots, s[2], 0, s[3]); });
+        r.seenBalls.forEach(function (s) { ray(seen.balls, s[0], 0, s[1]); });
+      }
       if (!nearCanvas(here, radius + 40)) return;
       var col = colours[i], selected = i === state.selected;
       var fill = rgb(r.bumper ? darken(0.6, col) : col), rim = r.bumper ? 'rgb(0,0,0)' : rgb(darken(0.5, col));
