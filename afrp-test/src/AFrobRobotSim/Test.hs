@@ -1,3 +1,4 @@
+{-# LANGUAGE ScopedTypeVariables #-}
 -- |
 -- Module      : AFrobRobotSim.Test
 -- Description : Properties of whole simbot runs: random valid worlds that
@@ -39,11 +40,14 @@ module AFrobRobotSim.Test
   , runT
   , forAllRuns
   , runReplayPage
+  , writeRunReplayPage
+  , worldFileText
     -- * Distances, for predicates
   , robotClearance
   , robotGap
   ) where
 
+import           Control.Exception    (displayException, evaluate, try)
 import           Data.List            (intercalate, tails)
 import           Test.QuickCheck
 
@@ -133,12 +137,20 @@ genRobotIn bounds world = do
 
 -- | The worlds QuickCheck tries in place of a failing one: the world
 -- without one of its objects, each in turn (the first half of its objects
--- first, when it has more than 8). Removing objects keeps a world valid.
+-- first, when it has more than 8). The world's size ('OTSize') is kept:
+-- it is no object, and without it the world would be the notes' 10 by 10,
+-- in which its objects may not fit. So removing objects keeps a world
+-- valid.
 shrinkWorld :: WorldTemplate -> [WorldTemplate]
 shrinkWorld w =
-  [ take (n `div` 2) w | n > 8 ] ++ [ drop (n `div` 2) w | n > 8 ]
-  ++ [ take k w ++ drop (k + 1) w | k <- [0 .. n - 1] ]
-  where n = length w
+  map (sizes ++)
+    ([ take (n `div` 2) objs | n > 8 ] ++ [ drop (n `div` 2) objs | n > 8 ]
+     ++ [ take k objs ++ drop (k + 1) objs | k <- [0 .. n - 1] ])
+  where
+    (sizes, objs) = (filter isSize w, filter (not . isSize) w)
+    n = length objs
+    isSize OTSize {} = True
+    isSize _         = False
 
 -- | An object's bounding box, @(xMin, yMin, xMax, yMax)@ in metres, from
 -- its centre and the sizes of "AFrobRobotSim.World".
@@ -196,22 +208,28 @@ robotView ty i s = case traverse pick s of
 -- balls.
 showWorldState :: WorldState -> String
 showWorldState ws =
-  "t=" ++ time (wsTime ws) ++ concatMap robot (wsRobots ws)
+  "t=" ++ showTime (wsTime ws) ++ concatMap robot (wsRobots ws)
   ++ (if null (wsBalls ws) then "" else "  balls" ++ concatMap pos (wsBalls ws))
   where
     robot r = "  " ++ robotType r ++ " " ++ show (robotId r) ++ pos (robotPos r)
               ++ " h=" ++ fixed 2 (robotHeading r) ++ (if robotStuck r then " stuck" else "")
     pos (Point2 x y) = " (" ++ fixed 3 x ++ ", " ++ fixed 3 y ++ ")"
-    -- (6 decimals, trailing zeros after the second dropped)
-    time t = let str = fixed 6 t
-                 (whole, frac) = break (== '.') str
-             in whole ++ take 3 frac ++ reverse (dropWhile (== '0') (reverse (drop 3 frac)))
-    fixed :: Int -> Double -> String
-    fixed k v = let m = 10 ^ k :: Integer
-                    r = round (abs v * fromIntegral m) :: Integer
-                    (q, f) = r `divMod` m
-                    fs = show f
-                in (if v < 0 && r /= 0 then "-" else "") ++ show q ++ "." ++ replicate (k - length fs) '0' ++ fs
+
+-- A time with 2 to 6 decimals (6, trailing zeros after the second
+-- dropped): @16.50@, @2.001@.
+showTime :: Time -> String
+showTime t =
+  let str = fixed 6 t
+      (whole, frac) = break (== '.') str
+  in whole ++ take 3 frac ++ reverse (dropWhile (== '0') (reverse (drop 3 frac)))
+
+-- A number with @k@ decimals, rounded (no @-0.00@).
+fixed :: Int -> Double -> String
+fixed k v = let m = 10 ^ k :: Integer
+                r = round (abs v * fromIntegral m) :: Integer
+                (q, f) = r `divMod` m
+                fs = show f
+            in (if v < 0 && r /= 0 then "-" else "") ++ show q ++ "." ++ replicate (k - length fs) '0' ++ fs
 
 -- | @forAllWorlds file gen prop@: @prop@ for worlds from @gen@, shrunk
 -- with 'shrinkWorld'. A failing world is printed in the world-file format
@@ -241,14 +259,15 @@ runT config duration rcA rcB p world =
     Just e  -> counterexample (explanation e) False
   where
     explanation e = unlines $
-      ("decided false at t = " ++ show (explTime e) ++ " (step " ++ show (explFrame e) ++ "):")
+      ("decided false at t = " ++ showTime (explTime e) ++ " (step " ++ show (explFrame e) ++ "):")
       : [ (if j == explFrame e then "  > " else "    ") ++ showWorldState ws | (j, _, ws) <- explAround e ]
 
 -- | @forAllRuns file config duration rcA rcB gen p@: the predicate @p w@
 -- ('runT') holds for the run of every world @w@ from @gen@. A failing world is
 -- shrunk ('shrinkWorld'); the smallest is printed, written to @file@ in the
--- world-file format and its run's replay page ('runReplayPage') to
--- @file ++ \".html\"@.
+-- world-file format with the size the run gave it ('worldFileText') and
+-- its run's replay page ('writeRunReplayPage': up to a controller's
+-- failure, if one failed) to @file ++ \".html\"@.
 --
 -- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB
 -- >   (genWorld defaultWorldMix notesBounds)
@@ -256,29 +275,78 @@ runT config duration rcA rcB p world =
 forAllRuns :: FilePath -> SimConfig -> Time -> SimbotController -> SimbotController
            -> Gen WorldTemplate -> (WorldTemplate -> TPred WorldState) -> Property
 forAllRuns file config duration rcA rcB gen p =
-  forAllShrinkShow gen shrinkWorld renderWorld $ \w ->
-    whenFail (do writeFile file (renderWorld w)
-                 writeFile page (runReplayPage config duration w rcA rcB))
+  forAllShrinkShow gen shrinkWorld (worldFileText config) $ \w ->
+    whenFail (do writeFile file (worldFileText config w)
+                 writeRunReplayPage page config duration w rcA rcB)
              (counterexample ("(the world is written to " ++ file ++ ", its run's replay page to " ++ page ++ ")")
                              (runT config duration rcA rcB (p w) w))
   where
     page = file ++ ".html"
 
+-- | @worldFileText config world@: @world@ in the world-file format
+-- ('renderWorld'), as the run of @config@ saw it: a world without an
+-- 'OTSize' is run in the config's 'simBounds', so when those are not the
+-- notes' 10 by 10 the text gets the @size@ line that says them, and the
+-- file runs again as it ran (@simbot --world@). A world file's size is
+-- centred on the origin; bounds that are not get a comment that says
+-- them instead.
+worldFileText :: SimConfig -> WorldTemplate -> String
+worldFileText config world
+  | any isSize world || bounds == notesBounds = renderWorld world
+  | x0 == -x1 && y0 == -y1                   = renderWorld (OTSize (x1 - x0) (y1 - y0) : world)
+  | otherwise = "# the run's world was [" ++ show x0 ++ ", " ++ show x1 ++ "] x [" ++ show y0 ++ ", " ++ show y1
+                ++ "] (simBounds), which a size line (centred) cannot say\n" ++ renderWorld world
+  where
+    bounds@(Bounds x0 y0 x1 y1) = simBounds config
+    isSize OTSize {} = True
+    isSize _         = False
+
 -- | @runReplayPage config duration world rcA rcB@: the self-contained
 -- HTML replay page ("AFrobRobotSim.Replay") of the run of 'runStream',
 -- frames at 25 per simulated second, as @simbot --replay@ writes it. The
--- page is ASCII text.
+-- page is ASCII text. A controller that fails (throws, or drives with a
+-- NaN) raises its 'ControllerError' when the page is evaluated: for such
+-- a run, 'writeRunReplayPage' writes the page up to the failure.
 runReplayPage :: SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController -> String
 runReplayPage config duration world rcA rcB =
+  pageOf config world (map snd (runStream config duration world rcA rcB)) Nothing
+
+-- | @writeRunReplayPage file config duration world rcA rcB@ writes the
+-- run's replay page ('runReplayPage') to @file@; when a controller fails,
+-- the page holds the run up to the step before the failure, and its
+-- summary says the failure ("FAILED: ..." on the page), as @simbot@'s page
+-- of a failed run does.
+writeRunReplayPage :: FilePath -> SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController
+                   -> IO ()
+writeRunReplayPage file config duration world rcA rcB = do
+  (states, failure) <- upToFailure [] (map snd (runStream config duration world rcA rcB))
+  writeFile file (pageOf config world states failure)
+  where
+    -- (each state evaluated as simbot evaluates it before writing it:
+    -- the robots, the balls and the messages)
+    upToFailure acc xs = do
+      r <- try (evaluate xs >>= \ys -> case ys of
+                  []    -> pure Nothing
+                  y : _ -> Just y <$ evaluate (forceWorldState y))
+      case r of
+        Left (e :: ControllerError) -> pure (reverse acc, Just (displayException e))
+        Right Nothing               -> pure (reverse acc, Nothing)
+        Right (Just y)              -> upToFailure (y : acc) (drop 1 xs)
+    forceWorldState ws = foldr seq () (wsRobots ws) `seq` foldr seq () (wsBalls ws)
+                         `seq` foldr (seq . length) () (wsMessages ws)
+
+-- The page of a run's states, with its failure if it had one.
+pageOf :: SimConfig -> WorldTemplate -> [WorldState] -> Maybe String -> String
+pageOf config world states failure =
   replayPage (RunLog (logHeader cfg) frames (Just summary))
   where
     cfg     = defaultLogConfig { lcBounds = simBounds config, lcWorld = world, lcDt = simDt config
                                , lcSeed = simSeed config, lcCommandLine = ["afrp-test"] }
-    states  = map snd (runStream config duration world rcA rcB)
     frames  = logFrames cfg states
+    -- (steps: the samples, the one at time 0 included, as the log counts them)
     summary = LogSummary { lsSimulated = if null states then 0 else wsTime (last states)
-                         , lsSteps = max 0 (length states - 1), lsFrames = length frames
-                         , lsWallTime = 0, lsInterrupted = False, lsFailure = Nothing, lsScores = [] }
+                         , lsSteps = length states, lsFrames = length frames
+                         , lsWallTime = 0, lsInterrupted = False, lsFailure = failure, lsScores = [] }
 
 -- | @robotClearance world r@: the distance from the edge of robot @r@'s
 -- disc to the nearest wall segment or block of @world@ (negative if they

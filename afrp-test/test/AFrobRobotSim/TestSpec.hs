@@ -154,6 +154,10 @@ specWithoutFiles = do
       `shouldThrow` errorCall "AFrobRobotSim.Test.robotView: no SimbotA 2 in the run (its robots: SimbotA 1, SimbotB 1)"
     evaluate (length (robotView "SimbotC" 1 run)) `shouldThrow` anyErrorCall
 
+  it "runReplayPage counts the samples as the log does, the one at time 0 included" $ do
+    let page = runReplayPage defaultSimConfig { simDt = 0.1 } 1 [OTSimbotA 1 (Point2 0 0) 0] wander wander
+    pageSummary page `shouldSatisfy` ("\"steps\":11," `isInfixOf`)
+
   it "runStream refuses a duration that is negative or not finite; 0 is the sample at time 0" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0]
         run d = runStream defaultSimConfig { simDt = 0.1 } d world wander wander
@@ -169,6 +173,26 @@ specWithoutFiles = do
           ("AFrobRobotSim.Test.runStream: the time step (simDt) must be a finite number > 0, got " ++ show dt)
     mapM_ refused [0, -0.01, 0 / 0, 1 / 0]
     length (run 0.5) `shouldBe` 61
+
+  it "shrinkWorld removes objects, never the world's size (without it the objects may not fit)" $ do
+    let w = [OTSize 20 20, OTSimbotB 1 (Point2 7 0) 0, OTBlock (Point2 (-8) (-8))]
+        isSize o = case o of { OTSize {} -> True; _ -> False }
+    shrinkWorld w `shouldBe` [[OTSize 20 20, OTBlock (Point2 (-8) (-8))], [OTSize 20 20, OTSimbotB 1 (Point2 7 0) 0]]
+    all (\c -> validateWorld c == Right ()) (shrinkWorld w) `shouldBe` True
+    let big = OTSize 30 30 : [ OTBall (Point2 (fromIntegral k) 0) | k <- [-6 .. 6 :: Int] ]
+    shrinkWorld big `shouldSatisfy` all (\c -> length (filter isSize c) == 1 && head c == OTSize 30 30)
+    length (shrinkWorld big) `shouldBe` 2 + 13
+
+  it "worldFileText gives a world run in other bounds the size line that says them" $ do
+    let w = [OTSimbotB 1 (Point2 7 0) 0]
+        wide = defaultSimConfig { simBounds = Bounds (-10) (-10) 10 10 }
+    parseWorld "w" (worldFileText wide w) `shouldBe` Right (OTSize 20 20 : w)
+    worldFileText defaultSimConfig w `shouldBe` renderWorld w
+    worldFileText wide (OTSize 30 30 : w) `shouldBe` renderWorld (OTSize 30 30 : w)
+    -- (bounds not centred: said in a comment, the objects as they are)
+    let offset = defaultSimConfig { simBounds = Bounds 0 0 20 20 }
+    worldFileText offset w `shouldSatisfy` ("# the run's world was [0.0, 20.0] x [0.0, 20.0]" `isPrefixOf`)
+    parseWorld "w" (worldFileText offset w) `shouldBe` Right w
 
   it "showWorldState writes the time with the decimals its step needs (at least 2)" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0]
@@ -228,6 +252,79 @@ specWithFiles = do
         fmap renderWorld written `shouldBe` Right shown
         output result `shouldSatisfy` ("decided false at t = " `isInfixOf`)
       _ -> expectationFailure ("the broken wall follower was not caught: " ++ output result)
+
+  it "forAllRuns keeps a world's size while shrinking: the failure found is the one shrunk, in a world file that runs again" $ \tmp -> do
+    -- (the size was shrunk away like an object: the robot then ran into
+    -- the edge of a 10 m world, or the world became invalid)
+    let file = tmp </> "afrp-test-sized.world"
+        gen = do x <- choose (6, 8)
+                 pure [OTSize 20 20, OTSimbotB 1 (Point2 x 0) 0, OTBlock (Point2 (-8) (-8))]
+    result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 5, 0) } $
+      forAllRuns file defaultSimConfig { simDt = 0.05 } 10 straight straight gen (const neverStuck)
+    case result of
+      Failure {} -> do
+        written <- readWorldFile file
+        page <- readFile (file ++ ".html")
+        length page `seq` removeFile (file ++ ".html")
+        removeFile file
+        fmap (filter (\o -> case o of { OTSize {} -> True; _ -> False })) written `shouldBe` Right [OTSize 20 20]
+        fmap length written `shouldBe` Right 2
+        fmap validateWorld written `shouldBe` Right (Right ())
+        output result `shouldSatisfy` ("decided false at t = " `isInfixOf`)
+        occurrences "\"frame\"" page `shouldSatisfy` (> 1)
+      _ -> expectationFailure ("the robot at the edge was not caught: " ++ output result)
+
+  it "forAllRuns writes a world run in a config's bounds with its size line" $ \tmp -> do
+    let file = tmp </> "afrp-test-bounds.world"
+        gen = do x <- choose (6, 8)
+                 pure [OTSimbotB 1 (Point2 x 0) 0]
+        config = defaultSimConfig { simDt = 0.05, simBounds = Bounds (-10) (-10) 10 10 }
+    result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 5, 0) } $
+      forAllRuns file config 10 straight straight gen (const neverStuck)
+    case result of
+      Failure {} -> do
+        written <- readWorldFile file
+        removeFile (file ++ ".html")
+        removeFile file
+        fmap head written `shouldBe` Right (OTSize 20 20)
+        fmap validateWorld written `shouldBe` Right (Right ())
+      _ -> expectationFailure ("the robot at the edge was not caught: " ++ output result)
+
+  it "forAllRuns writes the page of a run whose controller fails, up to the failure" $ \tmp -> do
+    let file = tmp </> "afrp-test-throws.world"
+        throwsAt3 _ = proc _ -> do
+          t <- localTime -< ()
+          returnA -< if t >= 3 then error "gave up" else mrFinalize (ddVelTR 0.2 0)
+        nanDrive _ = constant (mrFinalize (ddVelTR (0 / 0) 0))
+    mapM_ (\(rc, what) -> do
+            result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 5, 0) } $
+              forAllRuns file defaultSimConfig { simDt = 0.05 } 10 rc rc
+                (pure [OTSimbotA 1 (Point2 0 0) 0]) (const neverStuck)
+            case result of
+              Failure {} -> do
+                page <- readFile (file ++ ".html")
+                length page `seq` removeFile (file ++ ".html")
+                removeFile file
+                pageSummary page `shouldSatisfy` (what `isInfixOf`)
+                occurrences "\"frame\"" page `shouldSatisfy` (if what == "gave up" then (> 50) else (>= 0))
+                output result `shouldSatisfy` (not . ("Exception running callback" `isInfixOf`))
+              _ -> expectationFailure ("the failing controller passed: " ++ output result))
+          [(throwsAt3, "gave up"), (nanDrive, "NaN")]
+
+-- A robot that drives straight at full speed: in a world without walls it
+-- ends up against the world's edge, stuck.
+straight :: SimbotController
+straight _ = constant (mrFinalize (ddVelTR 1 0))
+
+-- Nobody is ever stuck.
+neverStuck :: TPred WorldState
+neverStuck = Always (SP (arr (not . any robotStuck . wsRobots)))
+
+-- The run's summary as the page holds it: its JSON object's text.
+pageSummary :: String -> String
+pageSummary page = case [ rest | rest <- tails page, "\"kind\":\"summary\"" `isPrefixOf` rest ] of
+  (rest : _) -> takeWhile (/= '}') rest
+  []         -> ""
 
 -- How many times a text occurs in another.
 occurrences :: String -> String -> Int
