@@ -34,10 +34,13 @@ spec = do
     mapM_ (runPageTest "replay-size.test.js" . pageOf)
       [ [OTSize 30 10, OTSimbotA 1 (Point2 (-14.5) 4.5) 0, OTSimbotB 2 (Point2 14.5 (-4.5)) pi]
       , [OTSize 100 100, OTSimbotA 1 (Point2 (-49) 49) 0, OTSimbotB 2 (Point2 49 (-49)) pi] ]
-  it "draws a crowd of 300 small robots in a 300 m world: every robot shows, ids only when readable, zoomed in only those in view (fixed)" $ do
+  it "draws a crowd of 300 small robots in a 300 m world: every robot, wall and block shows, ids only when readable, zoomed in only those in view (fixed)" $ do
     let crowd = OTSize 300 300 : [ (if even (i + j) then OTSimbotA else OTSimbotB) (20 * i + j)
                                      (Point2 (-140 + 20 * fromIntegral i) (-140 + 15 * fromIntegral j)) 0
                                  | i <- [0 .. 14 :: Int], j <- [0 .. 19] ]
+                              ++ [ OTHWall (Point2 (-130 + 20 * fromIntegral k) (-147)) | k <- [0 .. 4 :: Int] ]
+                              ++ [ OTVWall (Point2 147 (-130 + 20 * fromIntegral k)) | k <- [0 .. 4 :: Int] ]
+                              ++ [ OTBlock (Point2 (-130 + 20 * fromIntegral k) 147.5) | k <- [0 .. 2 :: Int] ]
     runPageTest "replay-crowd.test.js" (pageOf crowd)
   it "takes a touch screen's gestures: a pinch zooms about the fingers' midpoint and moves with it, a drag moves, a tap selects, and a phone's narrow screen shows the canvas scaled (fixed)" $
     runPageTest "replay-touch.test.js"

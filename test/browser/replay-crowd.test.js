@@ -2,7 +2,8 @@
 // and checks how it draws many small robots:
 //   node replay-crowd.test.js PAGE.html
 // The page must hold more than 200 robots, each under 1.5 pixels in radius
-// when the whole world is in view. Then every robot is drawn (at least 1.5
+// when the whole world is in view, and some walls and blocks (shown at
+// least a pixel wide and tall). Then every robot is drawn (at least 1.5
 // pixels in radius, so that it shows) and no id but the selected robot's;
 // zoomed in until the robots are 8 pixels across, the robots in view are
 // drawn, each with its id, and those out of view are skipped.
@@ -35,6 +36,19 @@ run('node replay-crowd.test.js PAGE.html', async (page, errors, open) => {
     check(n > 200 && radius * fit.scale < 1.5, 'the page is a crowd of ' + n + ' robots, ' + (radius * fit.scale).toFixed(2) +
           ' pixels in radius in the whole world\'s view');
     check(fit.drawn.robots === n && fit.drawn.labels === 0, 'the whole world\'s view draws every robot and no id (' + JSON.stringify(fit.drawn) + ')');
+    // walls (0.1 m thick, a fifth of a pixel here) and blocks are drawn at least a pixel wide and tall:
+    // the darkest pixel around each one's centre is well darker than the floor
+    const still = await page.evaluate(() => {
+      const R = window.afrpReplay, g = document.getElementById('world').getContext('2d');
+      return R.header.walls.concat(R.header.blocks).map(o => {
+        const p = R.worldToCanvas(o.x, o.y), d = g.getImageData(Math.floor(p[0]) - 1, Math.floor(p[1]) - 1, 3, 3).data;
+        let darkest = 255;
+        for (let k = 0; k < 9; k++) darkest = Math.min(darkest, d[4 * k + 1]);
+        return darkest;
+      });
+    });
+    check(still.length >= 10 && still.every(g => g <= background[1] - 50),
+          'every wall and block shows in the whole world\'s view (darkest pixels ' + still.join(' ') + ')');
     const blank = fit.robots.filter(r => near(r.pixel, background, 30)).length;
     check(blank === 0, 'every robot shows (' + blank + ' look like the floor)');
     await page.evaluate(() => window.afrpReplay.selectRobot(7));

@@ -113,14 +113,18 @@
       var c0 = toCanvas(x0, y1);
       g.lineWidth = 2; g.strokeStyle = 'rgb(45,45,45)';
       g.strokeRect(c0[0], c0[1], b.width * scale, b.height * scale);
-      var rect = function (r, fill) {
-        var p = toCanvas(r.x - r.width / 2, r.y + r.height / 2);
+      // (walls and blocks at least a pixel wide and tall, about their
+      // centre, so that a big world's thin walls still show, as its
+      // robots do)
+      var rect = function (r, fill, least) {
+        var w = Math.max(r.width * scale, least), h = Math.max(r.height * scale, least);
+        var c = toCanvas(r.x, r.y);
         g.fillStyle = fill;
-        g.fillRect(p[0], p[1], r.width * scale, r.height * scale);
+        g.fillRect(c[0] - w / 2, c[1] - h / 2, w, h);
       };
-      header.goals.forEach(function (k) { rect(k, 'rgba(60,170,60,0.25)'); });
-      header.walls.forEach(function (w) { rect(w, 'rgb(90,90,90)'); });
-      header.blocks.forEach(function (k) { rect(k, 'rgb(139,90,43)'); });
+      header.goals.forEach(function (k) { rect(k, 'rgba(60,170,60,0.25)', 0); });
+      header.walls.forEach(function (w) { rect(w, 'rgb(90,90,90)', 1); });
+      header.blocks.forEach(function (k) { rect(k, 'rgb(139,90,43)', 1); });
       g.restore();
       still.view = viewKey;
     }
