@@ -5,8 +5,10 @@
 --               holds ('provided'), again after each event ('recur'), one
 --               after another ('andThen'). Yampa's names.
 --
--- All three are built from 'switch' and 'dSwitch', so every signal function
--- they switch in starts afresh (local time 0) at the switching instant.
+-- 'provided', 'recur' and 'andThen' are built from 'switch' and 'dSwitch',
+-- so every signal function they switch in starts afresh (local time 0) at
+-- the switching instant; 'pause' keeps one signal function and only stops
+-- its time.
 module AFRP.Conditional
   ( provided
   , pause
@@ -21,6 +23,8 @@ import           AFRP.Event
 import           AFRP.EventSource (edge, snap)
 import           AFRP.Internal.SF
 import           AFRP.Switch      (dSwitch, switch)
+
+infixr 5 `andThen`
 
 -- | @provided p sfT sfF@ runs @sfT@ while the input satisfies @p@ and
 -- @sfF@ while it does not. At local time 0 the first input decides which
@@ -79,9 +83,13 @@ recur sfe = go sfe
 -- its first event (which may come at local time 0), then those of @sfe2@,
 -- started at the instant of that first event. @sfe2@'s output at that
 -- instant is not seen (the switch is delayed), so the two never give
--- simultaneous events.
+-- simultaneous events. As infix, @infixr 5@ (Yampa's): a chain
+-- @a \`andThen\` b \`andThen\` c@ is @a \`andThen\` (b \`andThen\` c)@, each
+-- in turn.
 --
 -- > embed (now 'a' `andThen` after 1 'b') ((), replicate 2 (1, Nothing))
 -- >   ==  [Event 'a', Event 'b', NoEvent]
+-- > embed (after 1 'a' `andThen` after 1 'b' `andThen` after 1 'c') ((), replicate 4 (1, Nothing))
+-- >   ==  [NoEvent, Event 'a', Event 'b', Event 'c', NoEvent]
 andThen :: SF a (Event b) -> SF a (Event b) -> SF a (Event b)
 andThen sfe1 sfe2 = dSwitch (sfe1 >>> arr dup) (const sfe2)

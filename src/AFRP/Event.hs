@@ -5,7 +5,11 @@
 --
 -- A signal of type @Event a@ is an /event stream/: at each sample it either
 -- carries an occurrence ('Event' @x@) or nothing ('NoEvent'). 'Event' is
--- isomorphic to 'Maybe', and has the same instances. The constructors are
+-- isomorphic to 'Maybe', and has the instances of 'Maybe' that signal code
+-- uses ('Eq', 'Ord', 'Show', 'Functor', 'Foldable', 'Traversable',
+-- 'Applicative', 'Monad', 'MonadFail', 'Alternative', 'MonadPlus',
+-- 'Semigroup', 'Monoid' and 'Control.DeepSeq.NFData'; not 'Read' nor the
+-- lifted classes). The constructors are
 -- exported, as Yampa does, for scalar code (collision detection, say) that
 -- builds events directly; signal-function code should prefer the
 -- functions here.

@@ -338,9 +338,12 @@ snapAfter t
   | otherwise        = SF (compN (fanN (sfNode (after t ())) idN) (arrN (\(e, a) -> e `tag` a)))
 
 -- | @sample p@ occurs at local times @p, 2p, ...@ (as 'repeatedly')
--- carrying the input sample at that instant. No occurrence at time 0.
+-- carrying the input sample at that instant. No occurrence at time 0. A
+-- period that is not positive (or NaN) is an error.
 sample :: Time -> SF a (Event a)
-sample p = SF (compN (fanN (sfNode (repeatedly p ())) idN) (arrN (\(e, a) -> e `tag` a)))
+sample p
+  | p <= 0 || isNaN p = error ("AFRP.EventSource.sample: the period must be positive, got " ++ show p)
+  | otherwise = SF (compN (fanN (sfNode (repeatedly p ())) idN) (arrN (\(e, a) -> e `tag` a)))
 
 -- | @sampleWindow w p@ takes a sample of the input every @p@ seconds (as
 -- 'sample', but one sample per period even when a time step spans several

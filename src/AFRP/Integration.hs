@@ -41,7 +41,7 @@ import           AFRP.VectorSpace
 -- 0 at time 0; at each later sample the previous output plus the time
 -- step times the /previous/ input.
 --
--- > embed integral (1, [(0.5, Just 2), (0.5, Just 3)])  ==  [0, 0.5, 1.5]
+-- > embed integral (1 :: Double, [(0.5, Just 2), (0.5, Just 3)])  ==  [0, 0.5, 1.5]
 integral :: VectorSpace a s => SF a a
 integral = SF (initN (\a0 -> case go zeroVector a0 of !n -> (# n, zeroVector #)))
   where
@@ -187,7 +187,7 @@ joinMidsRec fs m gs = case fs of
 -- rectangle rule: @y0@ at time 0; at each later sample the previous output
 -- plus the time step times the /current/ input.
 --
--- > embed (imIntegral 10) (1, [(0.5, Just 2), (0.5, Just 3)])  ==  [10, 11, 12.5]
+-- > embed (imIntegral 10) (1 :: Double, [(0.5, Just 2), (0.5, Just 3)])  ==  [10, 11, 12.5]
 imIntegral :: VectorSpace a s => a -> SF a a
 imIntegral y0 = SF (initN (\_ -> (# go y0, y0 #)))
   where
@@ -224,7 +224,7 @@ count = accumBy (\n _ -> n + 1) 0
 -- difference quotient of the current and previous samples. A zero time
 -- step gives infinite or NaN components, as the arithmetic does.
 --
--- > embed derivative (1, [(0.5, Just 2), (0.5, Just 2)])  ==  [0, 2, 0]
+-- > embed derivative (1 :: Double, [(0.5, Just 2), (0.5, Just 2)])  ==  [0, 2, 0]
 derivative :: VectorSpace a s => SF a a
 derivative = SF (initN (\a0 -> (# go a0, zeroVector #)))
   where

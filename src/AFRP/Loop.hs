@@ -24,7 +24,10 @@
 -- and a stateful signal function's output may be fed back through a delay
 -- ('AFRP.Delay.iPre', 'loopPre'). Since each sample forces what the
 -- previous one left, no thunk outlives one sample: a network runs in
--- constant space (bench/residency.sh measures it for each combinator).
+-- constant space (bench/residency.sh measures it for each combinator;
+-- for a collection of signal functions whose outputs are not all read,
+-- in optimised code where the collection's type is known: see
+-- "AFRP.Parallel").
 --
 -- One known exception: a 'AFRP.Delay.delay' (or another delay that
 -- keeps several samples, not 'AFRP.Delay.iPre') fed back through a loop

@@ -19,6 +19,15 @@
 -- output or its successor is demanded, and a member whose output is never
 -- demanded builds up one suspended step per sample.
 --
+-- The rules fire only where GHC optimises the call (@-O@; not at @-O0@,
+-- not in GHCi) and sees the collection's type there (not in code generic
+-- over the collection, such as a function of any @Functor col@ that calls
+-- 'parB'). Elsewhere a list, a map or a sequence is stepped on demand too,
+-- like any other collection: a member whose output nobody reads then keeps
+-- one suspended step per sample (about 14 MB at 10^5 samples for two
+-- members at @-O0@). Read every member's output, or call the combinators
+-- where the collection's type is known, in optimised code.
+--
 -- Naming, as in Yampa: no suffix takes a /routing function/
 -- @forall sf. a -> col sf -> col (b, sf)@ that decides what input each
 -- member sees (the @forall@ guarantees it can only route, never invent or

@@ -121,7 +121,8 @@ data ReactState a b = ReactState !(Node a b) a
 
 -- | @reactInit initialise actuate sf@ takes the first input sample, runs
 -- the first step, passes its output to @actuate@ and returns a handle for
--- 'react'.
+-- 'react'. What that first @actuate@ returns is ignored (as in Yampa);
+-- 'react' returns what each later one returns.
 reactInit :: IO a -> (ReactHandle a b -> Bool -> b -> IO Bool) -> SF a b -> IO (ReactHandle a b)
 reactInit initialise actuate (SF n0) = do
   a0 <- initialise
@@ -181,7 +182,7 @@ evalFuture (SF n) a dt = case checkDt "evalFuture" dt of
 -- the list goes past it; no output is evaluated (see "What the runners
 -- evaluate" above).
 --
--- > embed integral (1, [(0.5, Just 2), (0.5, Nothing)])  ==  [0, 0.5, 1.5]
+-- > embed integral (1 :: Double, [(0.5, Just 2), (0.5, Nothing)])  ==  [0, 0.5, 1.5]
 embed :: SF a b -> (a, [(DTime, Maybe a)]) -> [b]
 embed sf input = build (\cons nil -> embedFB cons nil sf input)
 {-# INLINE embed #-}
@@ -228,13 +229,17 @@ badDt runner dt = error ("AFRP.Run." ++ runner ++ ": a time step of " ++ show dt
 -- embedded run's clock advances by @ratio * dt@ at each step, and the
 -- output is the embedded output of the latest embedded sample at or before
 -- that clock (the last one once the samples run out). A negative or NaN
--- ratio is an error. A ratio of 0 pauses even over an infinite step, and
+-- ratio is an error. The ratio at local time 0 is not read (the output
+-- there is the embedded output at time 0 whatever it is), as in Yampa;
+-- nor is the ratio of a later sample read before the output is demanded
+-- (or the next step starts), so the ratio may come through a 'loop'.
+-- A ratio of 0 pauses even over an infinite step, and
 -- a step of 0 advances nothing even at an infinite ratio (the clock moves
 -- by @ratio * dt@ only when both are nonzero, so it never becomes NaN); a
 -- step that moves the clock to infinity gives the last sample's output,
 -- which for an infinite list of samples never comes.
 embedSynch :: SF a b -> (a, [(DTime, Maybe a)]) -> SF Double b
-embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
+embedSynch sf input@(_, samples) = SF (lazyN (initN (\_ -> start)))
   where
     outputs = embed sf input
     times   = scanl (+) 0 (map fst samples)
@@ -258,7 +263,7 @@ embedSynch sf input@(_, samples) = SF (initN (\_ -> start))
 -- previous one. The list must not be empty, and @dt@ must be a number, 0
 -- or more (see "Time steps" above).
 deltaEncode :: Eq a => DTime -> [a] -> (a, [(DTime, Maybe a)])
-deltaEncode = deltaEncodeBy (==)
+deltaEncode = deltaEncodeNamed "deltaEncode" (==)
 
 -- | 'deltaEncode' with a custom equality: a sample is written 'Nothing'
 -- when it is equal to the sample before it (not to the last one written),
@@ -268,9 +273,13 @@ deltaEncode = deltaEncodeBy (==)
 -- > deltaEncodeBy (\a b -> abs (a - b) < 2) 0.5 [1, 2, 3, 4, 8, 9 :: Double]
 -- >   ==  (1, [(0.5, Nothing), (0.5, Nothing), (0.5, Nothing), (0.5, Just 8), (0.5, Nothing)])
 deltaEncodeBy :: (a -> a -> Bool) -> DTime -> [a] -> (a, [(DTime, Maybe a)])
-deltaEncodeBy _  _  []       = error "AFRP.Run.deltaEncodeBy: empty list of samples"
-deltaEncodeBy eq dt0 (x : xs) = (x, zipWith step (x : xs) xs)
+deltaEncodeBy = deltaEncodeNamed "deltaEncodeBy"
+
+-- 'deltaEncodeBy', its errors naming the function the user called.
+deltaEncodeNamed :: String -> (a -> a -> Bool) -> DTime -> [a] -> (a, [(DTime, Maybe a)])
+deltaEncodeNamed name _  _  []       = error ("AFRP.Run." ++ name ++ ": empty list of samples")
+deltaEncodeNamed name eq dt0 (x : xs) = (x, zipWith step (x : xs) xs)
   where
     -- (checked once, when the first step is looked at)
-    dt = checkDt "deltaEncode" dt0
+    dt = checkDt name dt0
     step prev y = (dt, if eq y prev then Nothing else Just y)

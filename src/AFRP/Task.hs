@@ -95,9 +95,12 @@ constT b = mkTask (constant b &&& never)
 -- | @sleepT t b@ outputs @b@ and ends, with @()@, at the first sample at or
 -- after local time @t@, within the rounding of the time accounting (as
 -- 'AFRP.EventSource.after', which it uses: six steps of 0.15 end
--- @sleepT 0.9@, at a local time of 0.8999999999999999).
+-- @sleepT 0.9@, at a local time of 0.8999999999999999). A negative or NaN
+-- time is an error.
 sleepT :: Time -> b -> Task a b ()
-sleepT t b = mkTask (constant b &&& after t ())
+sleepT t b
+  | t < 0 || isNaN t = error ("AFRP.Task.sleepT: negative or NaN time, got " ++ show t)
+  | otherwise        = mkTask (constant b &&& after t ())
 
 -- | A task that ends at once, with the input sample of that instant.
 snapT :: Task a b a
@@ -105,9 +108,11 @@ snapT = mkTask (constant (error "AFRP.Task.snapT: no output (it ends at once)") 
 
 -- | @t \`timeOut\` d@ runs @t@ for at most @d@ seconds: it ends with
 -- @Just c@ if @t@ ends with @c@ first (or at the same instant), and with
--- 'Nothing' at the timeout.
+-- 'Nothing' at the timeout. A negative or NaN @d@ is an error.
 timeOut :: Task a b c -> Time -> Task a b (Maybe c)
-timeOut t d = mkTask ((taskToSF t &&& after d ()) >>> arr pick)
+timeOut t d
+  | d < 0 || isNaN d = error ("AFRP.Task.timeOut: negative or NaN time, got " ++ show d)
+  | otherwise = mkTask ((taskToSF t &&& after d ()) >>> arr pick)
   where
     pick ((b, ec), et) = (b, fmap Just ec `lMerge` tag et Nothing)
 

@@ -50,9 +50,11 @@ infixl 6 ^+^, ^-^
 -- * @a *^ (u ^+^ v) == a *^ u ^+^ a *^ v@ and @(a + b) *^ v == a *^ v ^+^ b *^ v@
 -- * @dot u v == dot v u@, @dot@ is bilinear and @dot v v >= 0@
 -- * @v ^/ a == (1 / a) *^ v@, @u ^-^ v == u ^+^ negateVector v@
--- * @norm v == sqrt (dot v v)@ (where @dot v v@ does not overflow: at
---   'Double' and 'Float', 'norm' is 'abs') and @norm (normalize v) == 1@
---   for @v /= zeroVector@
+-- * @norm v == sqrt (dot v v)@ and @norm (normalize v) == 1@ for @v /=
+--   zeroVector@, where @dot v v@ neither overflows nor underflows to 0
+--   (at 'Double' and 'Float', where 'norm' is 'abs', always; for the
+--   vectors of "AFRP.Geometry", components from about 1e-154 to 1e154 in
+--   magnitude)
 class (Eq a, Floating a) => VectorSpace v a | v -> a where
   -- | The additive identity.
   --
@@ -115,7 +117,11 @@ class (Eq a, Floating a) => VectorSpace v a | v -> a where
   -- | The unit vector pointing in the same direction: @v ^/ norm v@.
   --
   -- Calls 'error' (with a message mentioning @normalize@) when the norm of
-  -- the argument is zero, since the zero vector has no direction.
+  -- the argument is zero, since the zero vector has no direction. With the
+  -- default 'norm', a vector so small that @dot v v@ underflows to 0
+  -- (every component below about 1e-154, at 'Double') is such an error
+  -- too, and one so large that it overflows (a component above about
+  -- 1e154) normalises to the zero vector: scale it first.
   --
   -- >>> normalize (3, 4 :: Double)
   -- (0.6,0.8)

@@ -53,3 +53,6 @@ spec = do
     it "the first source's later events are not seen" $
       runDt 1 (repeatedly 1 'a' `andThen` never) (replicate 4 ())
         `shouldBe` [NoEvent, Event 'a', NoEvent, NoEvent]
+    it "chains to the right, as Yampa's infixr 5: each source in turn (left-nested, b was lost)" $
+      runDt 1 (after 1 'a' `andThen` after 1 'b' `andThen` after 1 'c') (replicate 5 ())
+        `shouldBe` [NoEvent, Event 'a', Event 'b', Event 'c', NoEvent]

@@ -3,7 +3,7 @@
 module AFRP.EventSourceSpec (spec) where
 
 import           Control.Exception (ErrorCall (..), evaluate)
-import           Data.List         (findIndices, isInfixOf)
+import           Data.List         (findIndices, isInfixOf, isPrefixOf)
 import           Data.Maybe        (fromMaybe)
 import           Test.Hspec        hiding (after)
 
@@ -264,6 +264,10 @@ spec = do
       evaluate (length (runDt 1 (snapAfter (-2)) "ab")) `shouldThrow` anyErrorCall
 
   describe "sample" $ do
+    it "refuses a period that is not positive, naming itself (it named repeatedly)" $
+      mapM_ (\p -> evaluate (sample p :: SF () (Event ()))
+                     `shouldThrow` (\(ErrorCall m) -> "AFRP.EventSource.sample: the period must be positive" `isPrefixOf` m))
+            [0, -1, 0 / 0]
     it "occurs every p seconds (not at 0) with the input at that instant" $
       runDt 0.25 (sample 0.5) [0 .. 6 :: Int] `shouldBe` [n, n, e 2, n, e 4, n, e 6]
     it "produces one occurrence when a step spans several periods" $

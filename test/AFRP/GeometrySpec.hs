@@ -156,6 +156,12 @@ vector2Spec = describe "Vector2" $ do
   it "vector2Theta is in (-pi, pi], also for a y component of -0.0" $ do
     vector2Theta (v2 (-1) (-0.0)) `shouldBe` pi
     vector2Theta (v2 0 0) `shouldBe` 0
+    -- (the zero vector's angle is 0 whatever the signs of its zeros: a
+    -- rotated or negated zero vector gave pi)
+    vector2Theta (v2 (-0.0) 0) `shouldBe` 0
+    vector2Theta (v2 (-0.0) (-0.0)) `shouldBe` 0
+    vector2Theta (vector2Rotate pi zeroVector) `shouldBe` 0
+    vector3Theta (Vector3 (-0.0) 0 5 :: Vector3 Double) `shouldBe` 0
 
   it "vector2Rotate rotates counter-clockwise" $ do
     vector2Rotate (pi / 2) (v2 1 0) `shouldBeNear` v2 0 1

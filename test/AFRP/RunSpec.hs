@@ -2,6 +2,7 @@ module AFRP.RunSpec (spec) where
 
 import           Control.Exception (ErrorCall (..), evaluate)
 import           Data.IORef
+import           Data.List         (isPrefixOf)
 import           Test.Hspec
 
 import           AFRP
@@ -92,6 +93,12 @@ spec = do
     it "rejects a NaN ratio (it froze the replay silently)" $
       evaluate (last (runDt 1 (embedSynch identity ('a', [])) [1, 0 / 0]))
         `shouldThrow` anyErrorCall
+    it "does not read its ratio before its output is demanded: the ratio may come through a loop (it was <<loop>>)" $
+      withoutHanging (embed (loop (second (embedSynch localTime ((), replicate 4 (0.5, Nothing))) >>> arr (\(a, _) -> (a, a))))
+                            (1 :: Double, [(0.5, Just 2), (0.5, Just 2)]))
+                     [1, 2, 2]
+    it "does not read its ratio at local time 0 (as Yampa)" $
+      embed (embedSynch localTime ((), [(1, Nothing)])) (-1, [(1, Just 1)]) `shouldBe` [0, 1]
     it "pauses at ratio 0 over an infinite step, and resumes (0 * Infinity froze it for good)" $
       embed (embedSynch localTime ((), replicate 10 (0.5, Nothing)))
             (1, [(1, Just 1), (1 / 0, Just 0), (1, Just 1), (1, Just 1)])
@@ -148,6 +155,11 @@ spec = do
       deltaEncode 0.1 "aabca" `shouldBe` ('a', [(0.1, Nothing), (0.1, Just 'b'), (0.1, Just 'c'), (0.1, Just 'a')])
     it "round-trips through embed" $
       embed identity (deltaEncode 0.1 "aabca") `shouldBe` "aabca"
+    it "names the function called in its errors (deltaEncodeBy's named deltaEncode, and the other way round)" $ do
+      evaluate (deltaEncode 0.5 "") `shouldThrow` errorCall "AFRP.Run.deltaEncode: empty list of samples"
+      evaluate (deltaEncodeBy (==) 0.5 "") `shouldThrow` errorCall "AFRP.Run.deltaEncodeBy: empty list of samples"
+      evaluate (fst (head (snd (deltaEncodeBy (==) (-1) "ab"))))
+        `shouldThrow` (\(ErrorCall m) -> "AFRP.Run.deltaEncodeBy: a time step of -1.0" `isPrefixOf` m)
     it "deltaEncodeBy compares each sample with the one before it, as Yampa does (not with the last written)" $
       deltaEncodeBy (\a b -> abs (a - b) < 2) 0.5 [1, 2, 3, 4, 8, 9 :: Double]
         `shouldBe` (1, [(0.5, Nothing), (0.5, Nothing), (0.5, Nothing), (0.5, Just 8), (0.5, Nothing)])

@@ -104,6 +104,11 @@ basicsSpec = do
 sleepSnapSpec :: Spec
 sleepSnapSpec = do
   describe "sleepT" $ do
+    it "refuses a negative or NaN time, naming itself (it named after)" $ do
+      let ran t = evaluate (foldr seq () (embed (runTask_ t) ((), [(1, Nothing)])))
+      ran (sleepT (-1) 'a' :: Task () Char ()) `shouldThrow` errorCall "AFRP.Task.sleepT: negative or NaN time, got -1.0"
+      ran (sleepT 1 'a' `timeOut` (0 / 0) :: Task () Char (Maybe ()))
+        `shouldThrow` errorCall "AFRP.Task.timeOut: negative or NaN time, got NaN"
     it "ends at the first sample at or after t (exact hit)" $
       runDt 0.25 (runTask_ (sleepT 1 'a' >> constT 'b' :: Task () Char ())) (units 6) `shouldBe` "aaaabb"
 

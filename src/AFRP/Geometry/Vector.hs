@@ -150,8 +150,9 @@ vector2Rotate alpha (Vector2 x y) = Vector2 (x * c - y * s) (x * s + y * c)
 -- | @atan2@ mapped into @(-pi, pi]@.
 angle :: RealFloat a => a -> a -> a
 angle y x
-  | t == negate pi = pi
-  | otherwise      = t
+  | x == 0 && y == 0 = 0   -- (atan2 gives pi for a zero whose x is -0.0)
+  | t == negate pi   = pi
+  | otherwise        = t
   where
     t = atan2 y x
 {-# INLINE angle #-}
