@@ -38,7 +38,8 @@
 -- 'validateOptions' checks the numbers together before anything is
 -- simulated: the step count @seconds / dt@ is finite and at most
 -- 'maxSteps' (a run takes the whole number of steps nearest to it, a half
--- rounded up, so @--seconds@ greater than 0 must be at least half of
+-- rounded up, with a millionth of a step's slack for times written in
+-- decimals, so @--seconds@ greater than 0 must be at least half of
 -- @--dt@), the frame period @1 / fps@ is a whole number of steps;
 -- 'validateOptionsIn', once the world is known, also that the frame is at
 -- most 'maxFrameSide' pixels wide and tall. A @--video@'s name must end
@@ -270,8 +271,8 @@ validateOptions o =
      | all finite [secs, dt], dt > 0, tooMany ]
   ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is less than half a step, so nothing would be"
        ++ " simulated after time 0 (a run takes the whole number of steps nearest seconds / dt); give"
-       ++ " --seconds " ++ num (dt / 2) ++ " or more, or 0 for the time-0 sample alone"
-     | all finite [secs, dt], dt > 0, secs > 0, steps < 0.5 ]
+       ++ " --seconds " ++ showFFloat Nothing (dt / 2) "" ++ " or more, or 0 for the time-0 sample alone"
+     | all finite [secs, dt], dt > 0, secs > 0, steps + 0.5 + 1e-6 < 1 ]   -- (runSteps' rounding)
   ++ [ "--fps times --dt must not exceed 1 (at most one frame per time step)"
      | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
   ++ [ "--dt " ++ num dt ++ " does not divide the frame period 1/" ++ num fps ++ " s; --fps "
@@ -305,12 +306,15 @@ validateOptions o =
                    in if '.' `elem` w then reverse (dropWhile (== '.') (dropWhile (== '0') (reverse w))) else w
 
 -- | The steps a run of these options takes after its time-0 sample: the
--- whole number nearest @seconds / dt@, a half rounded up (0 at least):
--- @--seconds 0.25 --dt 0.1@ is 3 steps, @--seconds 0.005@ at the default
--- step 1 (a tie went to the even number before: 2 and 0, the second
--- refused).
+-- whole number nearest @seconds / dt@, a half rounded up (0 at least),
+-- with a millionth of a step's slack, as for the key presses
+-- ('AFrobRobotSim.Simulator.keyDue'), so that a half written in decimals
+-- counts as one whatever its rounding (0.15 / 0.1 is a little under 1.5):
+-- @--seconds 0.25 --dt 0.1@ is 3 steps, @--seconds 0.15 --dt 0.1@ 2,
+-- @--seconds 0.005@ at the default step 1 (a tie went to the even number
+-- before: 2, 2 and 0, the last refused).
 runSteps :: SimOptions -> Int
-runSteps o = max 0 (floor (optSeconds o / optDt o + 0.5))
+runSteps o = max 0 (floor (optSeconds o / optDt o + 0.5 + 1e-6))
 
 -- | The extensions (in any case) that @--video@ takes, each a video
 -- format that Debian's ffmpeg writes from the frames: @mp4@, @m4v@,

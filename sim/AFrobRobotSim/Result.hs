@@ -153,16 +153,21 @@ paramOr name def = do
 -- elements back sorted), infinity only where the text has it, zero only
 -- where the text has it (@1e-400@, which a 'Double' reads as @0.0@, is
 -- refused). Where 'Show' writes fewer or more numbers than the text has
--- (a 'Data.Set.Set' drops the duplicates), every integer or ratio written
--- back must still be one of the text's, any number of times. A fraction
--- that a 'Double' rounds to another nonzero number is not refused.
--- Reading never wraps silently:
+-- (a 'Data.Set.Set' drops the duplicates, a 'Data.Map.Map' the entries
+-- of a repeated key), every integer or ratio written back must still be
+-- one of the text's, any number of times, so a number wrapped onto
+-- another that the text also holds is not seen (@fromList [44,300]@ as a
+-- set of 'Data.Word.Word8' reads as @fromList [44]@), nor is a zero read
+-- from a number that a 'Double' cannot hold beside a zero written. A
+-- fraction that a 'Double' rounds to another nonzero number is not
+-- refused. Reading never wraps silently where the value writes back as
+-- many numbers as its text has:
 --
 -- >>> readSimParam "n" "300" :: Either String Int
 -- Right 300
 -- >>> either (const "refused") show (readSimParam "n" "[1,2,300]" :: Either String [Word8])
 -- "refused"
--- >>> either (const "refused") show (readSimParam "n" "fromList [1,1,300]" :: Either String (Set Word8))
+-- >>> either (const "refused") show (readSimParam "n" "fromList [1,1,300]" :: Either String (Data.Set.Set Word8))
 -- "refused"
 --
 -- The result is evaluated as far as that check needs: a value whose

@@ -139,10 +139,15 @@ runSimWith opts mworld rcA rcB = do
           late = keysNeverPressed (optDt opts) nSteps (optKeys opts)
           -- (a time to the microsecond: 3.0, not 3.0000000000000004)
           micro x = show (fromIntegral (round (x * 1e6) :: Integer) / 1e6 :: Double)
+          lastStep = micro (fromIntegral nSteps * optDt opts)
+          -- (after the last step, or due by then but left waiting its turn)
+          why t | keyDue (optDt opts) t nSteps =
+                    "it waits behind the presses due before it (a step presses at most one key, and a key"
+                    ++ " pressed again straight after itself waits a step, released between) until after the"
+                    ++ " run's last step, at " ++ lastStep ++ " s"
+                | otherwise = "the run's last step is at " ++ lastStep ++ " s"
       unless (null late) $ putErr $ unlines
-        [ prog ++ ": warning: the key press " ++ keyName c ++ " at " ++ micro t ++ " s is never pressed: the run's last"
-          ++ " step is at " ++ micro (fromIntegral nSteps * optDt opts) ++ " s, a step presses at most one key,"
-          ++ " and a key pressed again straight after itself waits a step (released between)"
+        [ prog ++ ": warning: the key press " ++ keyName c ++ " at " ++ micro t ++ " s is never pressed: " ++ why t
         | (t, c) <- late ]
       -- (an empty world file, or a generator's output that never came,
       -- runs: it is a world, but one the controllers take no part in)

@@ -109,10 +109,20 @@ spec = do
       run ["--seconds", "0.005", "--dt", "0.01"] `shouldBe` Right ()
       run ["--seconds", "0.006", "--dt", "0.01"] `shouldBe` Right ()
       run ["--seconds", "0", "--dt", "0.01"] `shouldBe` Right ()
-    it "runSteps takes the whole number of steps nearest seconds / dt, a half rounded up" $ do
+    it "runSteps takes the whole number of steps nearest seconds / dt, a half rounded up, written in decimals too" $ do
       let steps secs dt = runSteps defaultSimOptions { optSeconds = secs, optDt = dt }
-      map (uncurry steps) [(0.005, 0.01), (0.25, 0.1), (0.35, 0.1), (0.0049, 0.01), (30, 0.01), (0, 0.01)]
-        `shouldBe` [1, 3, 3, 0, 3000, 0]
+      -- (0.15 / 0.1 and 0.35 / 0.1 are a little under 1.5 and 3.5 as computed)
+      map (uncurry steps) [(0.005, 0.01), (0.25, 0.1), (0.15, 0.1), (0.35, 0.1), (0.95, 0.1), (1.45, 0.1), (0.145, 0.01)]
+        `shouldBe` [1, 3, 2, 4, 10, 15, 15]
+      map (uncurry steps) [(0.0049, 0.01), (0.14, 0.1), (30, 0.01), (0, 0.01), (0.3, 0.1)]
+        `shouldBe` [0, 1, 3000, 0, 3]
+      -- (every half of a step written in decimals, from 0.05 to 99.95 at dt 0.1)
+      [ k | k <- [0 .. 999 :: Int], steps (read (show k ++ ".5") / 10) 0.1 /= k + 1 ] `shouldBe` []
+    it "suggests a --seconds it takes, written in full" $ do
+      let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
+      run ["--seconds", "0.001", "--dt", "0.0025", "--fps", "400"]
+        `shouldSatisfy` either ("give --seconds 0.00125 or more" `isInfixOf`) (const False)
+      run ["--seconds", "0.00125", "--dt", "0.0025", "--fps", "400"] `shouldBe` Right ()
     it "refuses a --dt beyond maxTimeStep and an --odometry-noise beyond maxOdometryNoise (a robot's pose became NaN)" $ do
       let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
       run ["--dt", "1e6", "--fps", "1e-6", "--seconds", "1e7"] `shouldBe` Right ()

@@ -303,7 +303,8 @@ worldFileText config world
 
 -- | @runReplayPage config duration world rcA rcB@: the self-contained
 -- HTML replay page ("AFrobRobotSim.Replay") of the run of 'runStream',
--- frames at 25 per simulated second, as @simbot --replay@ writes it. The
+-- frames at 25 per simulated second (at every step, for a time step
+-- longer than a 25th of a second), as @simbot --replay@ writes it. The
 -- page is ASCII text. A controller that fails (throws, or drives with a
 -- NaN) raises its 'ControllerError' when the page is evaluated: for such
 -- a run, 'writeRunReplayPage' writes the page up to the failure.
