@@ -160,7 +160,7 @@ vector2Spec = describe "Vector2" $ do
     -- rotated or negated zero vector gave pi)
     vector2Theta (v2 (-0.0) 0) `shouldBe` 0
     vector2Theta (v2 (-0.0) (-0.0)) `shouldBe` 0
-    vector2Theta (vector2Rotate pi zeroVector) `shouldBe` 0
+    vector2Theta (vector2Rotate pi (zeroVector :: Vector2 Double)) `shouldBe` 0
     vector3Theta (Vector3 (-0.0) 0 5 :: Vector3 Double) `shouldBe` 0
 
   it "vector2Rotate rotates counter-clockwise" $ do
