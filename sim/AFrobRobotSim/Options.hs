@@ -269,9 +269,9 @@ validateOptions o =
        ++ (if isInfinite steps then "more steps than a number holds" else num steps ++ " steps")
        ++ ", more than the " ++ num maxSteps ++ " allowed"
      | all finite [secs, dt], dt > 0, tooMany ]
-  ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is less than half a step, so nothing would be"
+  ++ [ "--seconds " ++ full secs ++ " with --dt " ++ full dt ++ " is less than half a step, so nothing would be"
        ++ " simulated after time 0 (a run takes the whole number of steps nearest seconds / dt); give"
-       ++ " --seconds " ++ showFFloat Nothing (dt / 2) "" ++ " or more, or 0 for the time-0 sample alone"
+       ++ " --seconds " ++ full (dt / 2) ++ " or more, or 0 for the time-0 sample alone"
      | all finite [secs, dt], dt > 0, secs > 0, steps + 0.5 + 1e-6 < 1 ]   -- (runSteps' rounding)
   ++ [ "--fps times --dt must not exceed 1 (at most one frame per time step)"
      | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
@@ -291,7 +291,11 @@ validateOptions o =
   where
     secs = optSeconds o; dt = optDt o; fps = optFps o; scale = maybe 1 id (optScale o)
     steps = secs / dt
-    tooMany = isNaN steps || steps > maxSteps
+    -- (more than maxSteps as runSteps counts them, with its slack)
+    tooMany = isNaN steps || steps + 0.5 + 1e-6 >= maxSteps + 1
+    -- a number as it is, without rounding (0.0025, 1.25e-301)
+    full x | x /= 0 && (abs x < 1e-4 || abs x >= 1e9) = show x
+           | otherwise                               = showFFloat Nothing x ""
     finite x = not (isNaN x || isInfinite x)
     -- whether dt divides the frame period 1/f (to a relative 1e-4)
     divides f = let k = 1 / (f * dt) in abs (k - fromIntegral (round k :: Int)) <= 1e-4 * k
@@ -312,7 +316,7 @@ validateOptions o =
 -- counts as one whatever its rounding (0.15 / 0.1 is a little under 1.5):
 -- @--seconds 0.25 --dt 0.1@ is 3 steps, @--seconds 0.15 --dt 0.1@ 2,
 -- @--seconds 0.005@ at the default step 1 (a tie went to the even number
--- before: 2, 2 and 0, the last refused).
+-- before: 2, 1 and 0, the last refused).
 runSteps :: SimOptions -> Int
 runSteps o = max 0 (floor (optSeconds o / optDt o + 0.5 + 1e-6))
 

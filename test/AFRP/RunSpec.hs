@@ -94,9 +94,10 @@ spec = do
       evaluate (last (runDt 1 (embedSynch identity ('a', [])) [1, 0 / 0]))
         `shouldThrow` anyErrorCall
     it "does not read its ratio before its output is demanded: the ratio may come through a loop (it was <<loop>>)" $
-      withoutHanging (embed (loop (second (embedSynch localTime ((), replicate 4 (0.5, Nothing))) >>> arr (\(a, _) -> (a, a))))
+      withoutHanging (embed (loop (second (embedSynch localTime ((), replicate 4 (0.5, Nothing)))
+                                   >>> arr (\(a, b) -> ((a, b), a))))
                             (1 :: Double, [(0.5, Just 2), (0.5, Just 2)]))
-                     [1, 2, 2]
+                     [(1, 0), (2, 1), (2, 2)]
     it "does not read its ratio at local time 0 (as Yampa)" $
       embed (embedSynch localTime ((), [(1, Nothing)])) (-1, [(1, Just 1)]) `shouldBe` [0, 1]
     it "pauses at ratio 0 over an infinite step, and resumes (0 * Infinity froze it for good)" $

@@ -121,7 +121,16 @@ spec = do
     it "suggests a --seconds it takes, written in full" $ do
       let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
       run ["--seconds", "0.001", "--dt", "0.0025", "--fps", "400"]
+        `shouldSatisfy` either ("--seconds 0.001 with --dt 0.0025 is less than half a step" `isInfixOf`) (const False)
+      run ["--seconds", "0.001", "--dt", "0.0025", "--fps", "400"]
         `shouldSatisfy` either ("give --seconds 0.00125 or more" `isInfixOf`) (const False)
+      run ["--seconds", "1e-301", "--dt", "1e-300", "--fps", "1e299"]
+        `shouldSatisfy` either ("give --seconds 5.0e-301 or more" `isInfixOf`) (const False)
+    it "takes a run of exactly maxSteps steps however its quotient rounds (900000 s at dt 0.009)" $ do
+      let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
+      run ["--seconds", "900000", "--dt", "0.009", "--fps", "111.111"] `shouldBe` Right ()
+      run ["--seconds", "900010", "--dt", "0.009", "--fps", "111.111"]
+        `shouldSatisfy` either ("more than the" `isInfixOf`) (const False)
       run ["--seconds", "0.00125", "--dt", "0.0025", "--fps", "400"] `shouldBe` Right ()
     it "refuses a --dt beyond maxTimeStep and an --odometry-noise beyond maxOdometryNoise (a robot's pose became NaN)" $ do
       let run args = fmap (const ()) (parseSimArgs defaultSimOptions args)
