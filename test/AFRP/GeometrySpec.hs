@@ -162,6 +162,10 @@ vector2Spec = describe "Vector2" $ do
     vector2Theta (v2 (-0.0) (-0.0)) `shouldBe` 0
     vector2Theta (vector2Rotate pi (zeroVector :: Vector2 Double)) `shouldBe` 0
     vector3Theta (Vector3 (-0.0) 0 5 :: Vector3 Double) `shouldBe` 0
+    -- (both components infinite: the diagonal, not NaN)
+    let inf = 1 / 0
+    map vector2Theta [v2 inf inf, v2 (-inf) inf, v2 (-inf) (-inf), v2 inf (-inf)]
+      `shouldBe` [pi / 4, 3 * pi / 4, -3 * pi / 4, -pi / 4]
 
   it "vector2Rotate rotates counter-clockwise" $ do
     vector2Rotate (pi / 2) (v2 1 0) `shouldBeNear` v2 0 1

@@ -151,6 +151,8 @@ vector2Rotate alpha (Vector2 x y) = Vector2 (x * c - y * s) (x * s + y * c)
 angle :: RealFloat a => a -> a -> a
 angle y x
   | x == 0 && y == 0 = 0   -- (atan2 gives pi for a zero whose x is -0.0)
+  -- (the Report's atan2 gives NaN when both are infinite: the diagonal)
+  | isInfinite x && isInfinite y = angle (signum y) (signum x)
   | t == negate pi   = pi
   | otherwise        = t
   where
