@@ -38,7 +38,7 @@
 -- at a switching instant the collection is /frozen/ just before the
 -- current step, so members carried over into the new collection resume
 -- without losing or repeating time, and new members start at that instant.
--- Every collection steps lazily ('AFRP.Internal.Node.lazyN'): its input
+-- Every collection steps lazily ('AFRP.Internal.Deferred.lazyN'): its input
 -- is routed, and its switching event looked at, only when its output is
 -- demanded or at the next sample, so a collection may watch a signal fed
 -- back through a 'Control.Arrow.loop' that does not use its output at

@@ -17,7 +17,7 @@
 -- would pile up one suspended step per sample.
 --
 -- /A switch that calls itself again./ 'kSwitch', 'dkSwitch' and the
--- collection switches are lazy ('AFRP.Internal.Node.lazyN'); their
+-- collection switches are lazy ('AFRP.Internal.Deferred.lazyN'); their
 -- continuation, a lazy switch again, was wrapped once more at every
 -- switch, so that each step cost one more layer.
 --
