@@ -272,7 +272,7 @@ validateOptions o =
   ++ [ "--seconds " ++ full secs ++ " with --dt " ++ full dt ++ " is less than half a step, so nothing would be"
        ++ " simulated after time 0 (a run takes the whole number of steps nearest seconds / dt); give"
        ++ " --seconds " ++ full (dt / 2) ++ " or more, or 0 for the time-0 sample alone"
-     | all finite [secs, dt], dt > 0, secs > 0, steps + 0.5 + 1e-6 < 1 ]   -- (runSteps' rounding)
+     | all finite [secs, dt], dt > 0, secs > 0, stepsBeforeFloor secs dt < 1 ]
   ++ [ "--fps times --dt must not exceed 1 (at most one frame per time step)"
      | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
   ++ [ "--dt " ++ num dt ++ " does not divide the frame period 1/" ++ num fps ++ " s; --fps "
@@ -292,7 +292,7 @@ validateOptions o =
     secs = optSeconds o; dt = optDt o; fps = optFps o; scale = maybe 1 id (optScale o)
     steps = secs / dt
     -- (more than maxSteps as runSteps counts them, with its slack)
-    tooMany = isNaN steps || steps + 0.5 + 1e-6 >= maxSteps + 1
+    tooMany = isNaN steps || stepsBeforeFloor secs dt >= maxSteps + 1
     -- a number as it is, without rounding (0.0025, 1.25e-301)
     full x | x /= 0 && (abs x < 1e-4 || abs x >= 1e9) = show x
            | otherwise                               = showFFloat Nothing x ""
@@ -318,7 +318,13 @@ validateOptions o =
 -- @--seconds 0.005@ at the default step 1 (a tie went to the even number
 -- before: 2, 1 and 0, the last refused).
 runSteps :: SimOptions -> Int
-runSteps o = max 0 (floor (optSeconds o / optDt o + 0.5 + 1e-6))
+runSteps o = max 0 (floor (stepsBeforeFloor (optSeconds o) (optDt o)))
+
+-- @seconds / dt@ with a half and the slack added: 'runSteps' is its whole
+-- part (the checks before a run compare it, not the rounded count, so
+-- that an infinite or huge quotient is not taken whole).
+stepsBeforeFloor :: Double -> Double -> Double
+stepsBeforeFloor secs dt = secs / dt + 0.5 + 1e-6
 
 -- | The extensions (in any case) that @--video@ takes, each a video
 -- format that Debian's ffmpeg writes from the frames: @mp4@, @m4v@,

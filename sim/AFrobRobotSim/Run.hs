@@ -66,7 +66,7 @@ import           Control.Exception         (AsyncException (HeapOverflow, UserIn
                                             evaluate, throwIO, try)
 import           Control.Monad             (forM, unless, when)
 import           Data.IORef
-import           Data.List                 (foldl', intercalate)
+import           Data.List                 (intercalate)
 import           Data.Maybe                (catMaybes, isNothing)
 import           GHC.Clock                 (getMonotonicTime)
 import           System.Environment        (getArgs, getProgName)
@@ -220,7 +220,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
         writeIORef stepsRef $! n + 1
       loop !_ [] = pure Finished
       loop !n (s : rest) = do
-        _ <- evaluate (forceState s)
+        _ <- evaluate (forceWorldState s)
         sinkAll n s
         loop (n + 1) rest
       -- how an exception ends the run (any other is thrown on)
@@ -240,7 +240,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
     -- same order: the same outputs); a sink's failure comes first (it
     -- stopped at an earlier state than the stepping thread)
     then do
-      (produced, stopped) <- pipeline (batchFor nRobots) (\s -> () <$ evaluate (forceState s)) sinkAll states
+      (produced, stopped) <- pipeline (batchFor nRobots) (\s -> () <$ evaluate (forceWorldState s)) sinkAll states
       maybe (either endedBy (const (pure Finished)) produced) endedBy stopped
     else try (loop 0 states) >>= either endedBy pure
   -- (from here a SIGTERM no longer stops the run: it is writing its
@@ -303,10 +303,6 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
     _ | Just k <- signal -> exitWith (ExitFailure (128 + k))
     _ | not (null allErrs) -> exitWith (ExitFailure 1)
       | otherwise          -> pure ()
-
-forceState :: WorldState -> ()
-forceState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsBalls s)
-               `seq` foldl' (flip seq) () (map length (wsMessages s))
 
 -- Assemble this run's frames with ffmpeg (the executable found on the PATH
 -- before the run); the errors, if any. Only the run's own frames go in:

@@ -79,6 +79,7 @@ module AFrobRobotSim.Simulator
   , keysNeverPressed
     -- * Snapshots
   , WorldState (..)
+  , forceWorldState
   , RobotState (..)
     -- * Failures
   , ControllerError (..)
@@ -87,7 +88,7 @@ module AFrobRobotSim.Simulator
 import           Control.Exception       (Exception (..), SomeException)
 import           GHC.Arr                 (Array, listArray, (!))
 import           Data.Bits               (shiftR, xor)
-import           Data.List               (sortOn)
+import           Data.List               (foldl', sortOn)
 import           Data.Word               (Word64)
 import           Text.Printf             (printf)
 
@@ -153,6 +154,14 @@ data WorldState = WorldState
   , wsBalls    :: [Position2]    -- ^ every ball's centre, in template order
   , wsMessages :: [String]       -- ^ the console lines printed at this step
   } deriving (Eq, Show)
+
+-- | Evaluate a snapshot as 'AFrobRobotSim.runSim' does before it writes
+-- it: every robot's and ball's record, and every message whole (a
+-- controller's failure at that step, a 'ControllerError', is raised
+-- here).
+forceWorldState :: WorldState -> ()
+forceWorldState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsBalls s)
+                    `seq` foldl' (flip seq) () (map length (wsMessages s))
 
 -- | The state of one robot at one instant.
 data RobotState = RobotState

@@ -101,8 +101,7 @@ after t x
 -- occurrence at every sample that moves the time on.
 repeatedly :: Time -> b -> SF a (Event b)
 repeatedly p x
-  | p <= 0 || isNaN p = error ("AFRP.EventSource.repeatedly: the period must be positive, got "
-                              ++ show p)
+  | p <= 0 || isNaN p = errPeriod "repeatedly" p
   | otherwise         = SF (initN (\_ -> (# go clockZero 1, NoEvent #)))
   where
     go !clock !n = NStep (\dt _ ->
@@ -342,7 +341,7 @@ snapAfter t
 -- period that is not positive (or NaN) is an error.
 sample :: Time -> SF a (Event a)
 sample p
-  | p <= 0 || isNaN p = error ("AFRP.EventSource.sample: the period must be positive, got " ++ show p)
+  | p <= 0 || isNaN p = errPeriod "sample" p
   | otherwise = SF (compN (fanN (sfNode (repeatedly p ())) idN) (arrN (\(e, a) -> e `tag` a)))
 
 -- | @sampleWindow w p@ takes a sample of the input every @p@ seconds (as
@@ -368,8 +367,7 @@ sampleWindow :: Int -> Time -> SF a (Event [a])
 sampleWindow w p
   | w < 1     = error ("AFRP.EventSource.sampleWindow: window size must be at least 1, got "
                        ++ show w)
-  | p <= 0 || isNaN p = error ("AFRP.EventSource.sampleWindow: the period must be positive, got "
-                               ++ show p)
+  | p <= 0 || isNaN p = errPeriod "sampleWindow" p
   | otherwise = SF (initN (\_ -> (# go clockZero clockZero Seq.empty, NoEvent #)))
   where
     -- clock: local time now; due: the last sampling instant so far.
@@ -408,3 +406,6 @@ sampleWindow w p
 
 errNeg :: forall (r :: RuntimeRep) (x :: TYPE r). String -> Double -> x
 errNeg f q = error ("AFRP.EventSource." ++ f ++ ": negative or NaN time, got " ++ show q)
+
+errPeriod :: String -> Double -> x
+errPeriod f p = error ("AFRP.EventSource." ++ f ++ ": the period must be positive, got " ++ show p)

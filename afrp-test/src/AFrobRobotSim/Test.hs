@@ -49,12 +49,14 @@ module AFrobRobotSim.Test
 
 import           Control.Exception    (displayException, evaluate, try)
 import           Data.List            (intercalate, tails)
+import           Data.Maybe           (isJust)
 import           Test.QuickCheck
 
 import           AFRP                 (Time)
 import           AFRP.Geometry        (Point2 (..))
 import           AFrob.Dimensions     (RobotId, RobotType)
 import           AFrobRobotSim
+import           AFrobRobotSim.Simulator (forceWorldState)
 import           AFrobRobotSim.World  (objectHalfSize)
 import           AFrobRobotSim.Log    (LogConfig (..), LogSummary (..), RunLog (..), defaultLogConfig,
                                        logFrames, logHeader)
@@ -292,14 +294,13 @@ forAllRuns file config duration rcA rcB gen p =
 -- them instead.
 worldFileText :: SimConfig -> WorldTemplate -> String
 worldFileText config world
-  | any isSize world || bounds == notesBounds = renderWorld world
-  | x0 == -x1 && y0 == -y1                   = renderWorld (OTSize (x1 - x0) (y1 - y0) : world)
+  | isJust (worldSize world) || bounds == notesBounds = renderWorld world
+  | bounds == sizeBounds w h = renderWorld (OTSize w h : world)
   | otherwise = "# the run's world was [" ++ show x0 ++ ", " ++ show x1 ++ "] x [" ++ show y0 ++ ", " ++ show y1
                 ++ "] (simBounds), which a size line (centred) cannot say\n" ++ renderWorld world
   where
     bounds@(Bounds x0 y0 x1 y1) = simBounds config
-    isSize OTSize {} = True
-    isSize _         = False
+    (w, h) = (x1 - x0, y1 - y0)
 
 -- | @runReplayPage config duration world rcA rcB@: the self-contained
 -- HTML replay page ("AFrobRobotSim.Replay") of the run of 'runStream',
@@ -323,8 +324,7 @@ writeRunReplayPage file config duration world rcA rcB = do
   (states, failure) <- upToFailure [] (map snd (runStream config duration world rcA rcB))
   writeFile file (pageOf config world states failure)
   where
-    -- (each state evaluated as simbot evaluates it before writing it:
-    -- the robots, the balls and the messages)
+    -- (each state evaluated as simbot evaluates it before writing it)
     upToFailure acc xs = do
       r <- try (evaluate xs >>= \ys -> case ys of
                   []    -> pure Nothing
@@ -333,8 +333,6 @@ writeRunReplayPage file config duration world rcA rcB = do
         Left (e :: ControllerError) -> pure (reverse acc, Just (displayException e))
         Right Nothing               -> pure (reverse acc, Nothing)
         Right (Just y)              -> upToFailure (y : acc) (drop 1 xs)
-    forceWorldState ws = foldr seq () (wsRobots ws) `seq` foldr seq () (wsBalls ws)
-                         `seq` foldr (seq . length) () (wsMessages ws)
 
 -- The page of a run's states, with its failure if it had one.
 pageOf :: SimConfig -> WorldTemplate -> [WorldState] -> Maybe String -> String
