@@ -29,14 +29,20 @@
 -- in optimised code where the collection's type is known: see
 -- "AFRP.Parallel").
 --
--- One known exception: a 'AFRP.Delay.delay' (or another delay that
--- keeps several samples, not 'AFRP.Delay.iPre') fed back through a loop
--- whose output is read only now and then (@sample 1 >>> hold 0@ after
--- it, or @length@ of an 'AFRP.Run.embed'): the values it keeps refer to
--- the samples before them until someone reads them, so memory grows with
--- the samples not read (31 MB at 10^5 samples read once a second). Read
--- the loop's output at every sample (a strict fold, an actuation), or
--- feed back through 'AFRP.Delay.iPre', and it is constant again.
+-- A loop closed through a stateful signal function other than
+-- 'AFRP.Delay.iPre' (a 'AFRP.Delay.delay', an integral, a switch, ...)
+-- is itself such a node: at the start of each sample it evaluates the
+-- pair its body output at the sample before, to the pair (not its
+-- components), and the value it fed back then refers to itself alone,
+-- not to the rest of that sample. So a 'AFRP.Delay.delay' that keeps
+-- many samples of the fed-back signal runs in constant space whether or
+-- not anybody reads the loop's output, or reads it now and then
+-- ("AFRP.ResidencySpec"). What this asks of a network: the body's output
+-- pair must exist at every sample, also at one whose output nobody reads
+-- (a pair written as a tuple, @arr (\(a, c) -> (e1, e2))@, always does).
+-- Yampa never evaluates it; a body whose very pair is undefined at some
+-- sample (not merely one of its components) goes on there in Yampa, and
+-- fails at the next sample here.
 module AFRP.Loop
   ( loopPre
   , loopIntegral

@@ -70,12 +70,17 @@ loopN n = loopK idN n
 -- @loop (second d >>> f)@, simplified: pure if both parts are, without a
 -- knot if @d@ is a delay, and otherwise the general knot.
 loopN2 :: Node c d -> Node (a, d) (b, c) -> Node a b
-loopN2 d f = case d of
+loopN2 = loopN2After ()
+
+-- 'loopN2' for the successor of a knot's step, which holds the pair the
+-- step produced, to be evaluated at the next step ('loopKAfter').
+loopN2After :: x -> Node c d -> Node (a, d) (b, c) -> Node a b
+loopN2After prev d f = case d of
   NPre c  -> loopPreN c f
   NPure _ -> case f of
     NPure _ -> loopN (compN (secondN d) f)
-    _       -> loopK d f
-  _       -> loopK d f
+    _       -> loopKAfter prev d f
+  _       -> loopKAfter prev d f
 
 -- | @loopPreN c f = loop (second (iPre c) >>> f)@, stepped without a knot.
 -- It relies on the delay's output at this step being @c@ whatever its
@@ -112,35 +117,46 @@ loopPreG g = go
 -- very step (through a lazy reference to the step's result); @f@ sees the
 -- input and @d@'s output.
 loopK :: Node c d -> Node (a, d) (b, c) -> Node a b
-loopK d f = NStep (\dt a ->
+loopK = loopKAfter ()
+
+-- | @loopKAfter prev d f@ is @loopK d f@ that first evaluates @prev@, the
+-- pair @f@ output at the previous step (to weak head normal form: the
+-- pair, not its components), as every stateful node evaluates what the
+-- previous sample left at the start of its next step. See 'loopOut' for
+-- why.
+loopKAfter :: x -> Node c d -> Node (a, d) (b, c) -> Node a b
+loopKAfter prev d f = NStep (\dt a -> prev `seq`
   let r = case stepN d dt c of
         (# d', y #) -> case stepN f dt (a, y) of
           (# f', out #) -> Loop d' f' out
       bc = loopOut r
-      c  = loopFed bc
-  in case r of Loop d' f' _ -> case loopN2 d' f' of !m -> (# m, fst bc #))
+      c  = case bc of (_, x) -> x
+  in case r of Loop d' f' _ -> case loopN2After bc d' f' of !m -> (# m, case bc of (b, _) -> b #))
 
 -- The result of a loop's step, in a box (the knot needs a lifted value).
 data Loop c d a b x = Loop !(Node c d) !(Node (a, d) x) x
 
--- The fed-back value is taken in two steps: @bc = loopOut r@, the pair @f@
--- produced, then @c = loopFed bc@. The loop's output is @fst bc@, so when
--- it is demanded @bc@ is evaluated and overwritten by that pair, and from
--- then on the fed-back value refers to the pair alone. Taken from the step
--- in one pattern, @case r of Loop _ _ (_, c') -> c'@, it referred to the
--- whole step, successor nodes included, for as long as it stayed
--- unevaluated: a delay whose output nobody reads stores its input
--- unevaluated, so each stored value kept the step before it, and that
--- step the value stored before, and so on (307 MB at 10^6 samples for
--- @delay@, tested by "AFRP.ResidencySpec"). Both are NOINLINE: inlined,
--- GHC merges the two selections back into one pattern on the step.
+-- The pair @f@ produced is taken as @bc = loopOut r@, and the fed-back
+-- value and the output are each a selection from @bc@ alone, of the form
+-- @case bc of (_, x) -> x@, which GHC compiles as a selector thunk: once
+-- @bc@ is evaluated, the garbage collector replaces the selection by the
+-- component itself. The next step evaluates @bc@ ('loopKAfter'). So a
+-- fed-back value nobody reads refers, after that, to its own value
+-- alone, not to the pair (whose other component is the loop's output),
+-- the step, its successor nodes or the values they hold.
+--
+-- Without it, a value fed back into a node that keeps it for several
+-- samples ('AFRP.Delay.delay') referred to the step that produced it,
+-- whose successor held the values fed back before, and so on: memory grew
+-- with every sample at which nobody read the loop's output (307 MB at
+-- 10^6 samples with the output never read, 300 MB read once a second;
+-- tested by "AFRP.ResidencySpec"). Taken from the step in one pattern,
+-- @case r of Loop _ _ (_, c') -> c'@, the selection is not a selector
+-- thunk. 'loopOut' is NOINLINE: inlined, GHC merges the selections from
+-- it into one pattern on the step.
 loopOut :: Loop c d a b x -> x
 loopOut (Loop _ _ x) = x
 {-# NOINLINE loopOut #-}
-
-loopFed :: (b, c) -> c
-loopFed (_, c) = c
-{-# NOINLINE loopFed #-}
 
 ------------------------------------------------------------------------------
 -- Introspection
