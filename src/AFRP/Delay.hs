@@ -91,7 +91,12 @@ delay q a0
     -- its due time, and joins the buffer at the next step: it is never
     -- released at the step it came in, whatever q (with a q below the
     -- rounding of the local time, its due time would count as reached at
-    -- once, and the delay would pass its input through).
+    -- once, and the delay would pass its input through). A held sample
+    -- whose due time is the new one's (the time did not move: dt 0, or a
+    -- step below the rounding) is superseded by it and never joins the
+    -- buffer, unless that due time is reached already (at an infinite
+    -- time, or with a q below the rounding): then it is the latest sample
+    -- due, and comes out now.
     step :: Clock -> Seq (Time, a) -> Time -> a -> (# Node a a, a #)
     step clock buf due a =
       let !now = clockTime clock
@@ -103,7 +108,7 @@ delay q a0
     go !clock !buf !dueNew aNew = NStep (\dt a ->
       let !clock' = tick clock dt
           !due    = clockTime clock' + q
-      in if dueNew == due
+      in if dueNew == due && not (reached due (clockTime clock'))
            then step clock' buf due a                      -- superseded (dt 0)
            else step clock' (buf |> (dueNew, aNew)) due a)
     -- Drop every sample that a later sample, itself due, supersedes.

@@ -43,6 +43,13 @@ spec = do
       -- from time 1 on, the last of time 1 at time 2
       embed (delay 1 (0 :: Int)) (1, [(0, Just 2), (0, Just 3), (1, Just 4), (0, Just 5), (1, Just 6)])
         `withoutHanging` [0, 0, 0, 3, 3, 5]
+    it "after an infinite step: the sample of the infinite time comes out at the next one" $
+      -- times 0, inf, inf: at the second infinite sample the one of the
+      -- first has been due since inf + 1 = inf
+      embed (delay 1 (0 :: Int)) (1, [(1 / 0, Just 2), (1, Just 3), (0, Just 4)]) `withoutHanging` [0, 1, 2, 3]
+    it "by less than the clock's rounding, with samples at one instant: still one sample late" $
+      -- times 0, 1, 1, 1: 1 + 1e-16 is 1, so every earlier sample is due
+      embed (delay 1e-16 (0 :: Int)) (1, [(1, Just 2), (0, Just 3), (0, Just 4)]) `withoutHanging` [0, 1, 2, 3]
   describe "pre" $ do
     it "outputs the previous input from the second sample on" $
       drop 1 (runDt 1 pre [1, 2, 3, 4 :: Int]) `shouldBe` [1, 2, 3]
