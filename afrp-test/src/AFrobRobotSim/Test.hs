@@ -206,15 +206,19 @@ robotView ty i s = case traverse pick s of
 
 -- | A world state in one line: the time (with 2 to 6 decimals, as its
 -- time step needs: @t=16.50@, @t=2.001@), then each
--- robot's type, id, position and heading (and @stuck@ if it is), and the
--- balls.
+-- robot's type, id, position, heading (@h=@, radians) and signed speed
+-- along it (@v=@, m/s, negative when it backs; 'robotSpeed'), and
+-- @stuck@ if it is, and the balls' positions.
+--
+-- > t=10.90  SimbotB 1 (-0.930, -1.813) h=0.78 v=0.00 stuck
 showWorldState :: WorldState -> String
 showWorldState ws =
   "t=" ++ showTime (wsTime ws) ++ concatMap robot (wsRobots ws)
   ++ (if null (wsBalls ws) then "" else "  balls" ++ concatMap pos (wsBalls ws))
   where
     robot r = "  " ++ robotType r ++ " " ++ show (robotId r) ++ pos (robotPos r)
-              ++ " h=" ++ fixed 2 (robotHeading r) ++ (if robotStuck r then " stuck" else "")
+              ++ " h=" ++ fixed 2 (robotHeading r) ++ " v=" ++ fixed 2 (robotSpeed r)
+              ++ (if robotStuck r then " stuck" else "")
     pos (Point2 x y) = " (" ++ fixed 3 x ++ ", " ++ fixed 3 y ++ ")"
 
 -- A time with 2 to 6 decimals (6, trailing zeros after the second

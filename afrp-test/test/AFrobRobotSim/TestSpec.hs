@@ -4,6 +4,7 @@ module AFrobRobotSim.TestSpec (spec) where
 
 import           Control.Exception     (evaluate, try)
 import           Data.List             (isInfixOf, isPrefixOf, tails)
+import           Numeric               (showFFloat)
 import           System.Directory      (createDirectory, getTemporaryDirectory, removeDirectory, removeFile)
 import           System.IO.Error       (isAlreadyExistsError)
 import           System.FilePath       ((</>))
@@ -200,6 +201,14 @@ specWithoutFiles = do
                        (runStream defaultSimConfig { simDt = dt } (3 * dt) world wander wander)
     times 0.02 `shouldBe` ["t=0.00", "t=0.02", "t=0.04", "t=0.06"]
     times 0.001 `shouldBe` ["t=0.00", "t=0.001", "t=0.002", "t=0.003"]
+
+  it "showWorldState writes each robot's signed speed (v=, negative when it backs)" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0]
+        backs = const (arr (const (mrFinalize (ddVelTR (-0.3) 0))))
+        (_, final) = last (runStream defaultSimConfig 1 world backs backs)
+        v = robotSpeed (head (wsRobots final))
+    v `shouldSatisfy` (< -0.05)
+    showWorldState final `shouldSatisfy` ((" h=0.00 v=" ++ showFFloat (Just 2) v "") `isInfixOf`)
 
 -- The tests that write files, each given the run's own folder.
 specWithFiles :: SpecWith FilePath
