@@ -56,6 +56,7 @@ module AFrobRobotSim
   , WorldTemplate
   , ObjectTemplate (..)
   , worldSize
+  , isWorldSize
   , worldBounds
   , worldBoundsOr
   , sizeBounds

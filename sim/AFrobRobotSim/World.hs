@@ -33,6 +33,7 @@ module AFrobRobotSim.World
   , ObjectTemplate (..)
     -- * The world's extent
   , worldSize
+  , isWorldSize
   , worldBounds
   , worldBoundsOr
   , sizeBounds
@@ -101,6 +102,12 @@ worldSize :: WorldTemplate -> Maybe (Length, Length)
 worldSize objs = case [ (w, h) | OTSize w h <- objs ] of
   wh : _ -> Just wh
   []     -> Nothing
+
+-- | Is this entry of a template the world's size ('OTSize'), not an
+-- object?
+isWorldSize :: ObjectTemplate -> Bool
+isWorldSize OTSize {} = True
+isWorldSize _         = False
 
 -- | The extent of a template's world: @'sizeBounds' w h@ for its
 -- 'worldSize', the notes' 'notesBounds' without one.
@@ -306,10 +313,7 @@ worldProblems bounds labelled = concatMap problemsOf indexed
       let Point2 x y = otPos o
           (hw, hh)   = objectHalfSize o
       in not (x - hw < x0 || x + hw > x1 || y - hh < y0 || y + hh > y1)
-    placed = [ (i, o) | (i, (_, o)) <- indexed, notSize o, all isFinite (coords o), insideWorld o ]
-    notSize o = case o of
-      OTSize {} -> False
-      _         -> True
+    placed = [ (i, o) | (i, (_, o)) <- indexed, not (isWorldSize o), all isFinite (coords o), insideWorld o ]
     arr = M.fromList [ (i, lo) | (i, lo) <- indexed ]
     -- The balls cannot all lie apart once their discs' area exceeds the
     -- floor's less the robots' (robots overlap nothing, so theirs is a

@@ -177,7 +177,7 @@ import           Data.List         (intercalate)
 import qualified Data.Map.Strict   as M
 
 import           AFRP.Geometry     (Point2 (..))
-import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems,
+import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems, isWorldSize,
                                       notesBounds, worldProblems)
 import           AFrobRobotSim.Console          (displayPath)
 import           AFrobRobotSim.WorldFile.Grammar (Failure (..), maxHeading, parseLine)
@@ -322,10 +322,7 @@ maxFileBytes = 16 * 1024 * 1024
 renderWorld :: WorldTemplate -> String
 renderWorld w = unlines (header : map renderObject w)
   where
-    k = length [ () | o <- w, not (isSize o) ]
-    isSize o = case o of
-      OTSize {} -> True
-      _         -> False
+    k = length [ () | o <- w, not (isWorldSize o) ]
     header = "# afrp world file: " ++ show k ++ " object"
              ++ (if k == 1 then "" else "s")
              ++ " (positions in metres, headings in radians)"

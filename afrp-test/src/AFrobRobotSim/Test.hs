@@ -149,10 +149,8 @@ shrinkWorld w =
     ([ take (n `div` 2) objs | n > 8 ] ++ [ drop (n `div` 2) objs | n > 8 ]
      ++ [ take k objs ++ drop (k + 1) objs | k <- [0 .. n - 1] ])
   where
-    (sizes, objs) = (filter isSize w, filter (not . isSize) w)
+    (sizes, objs) = (filter isWorldSize w, filter (not . isWorldSize) w)
     n = length objs
-    isSize OTSize {} = True
-    isSize _         = False
 
 -- | An object's bounding box, @(xMin, yMin, xMax, yMax)@ in metres, from
 -- its centre and the sizes of "AFrobRobotSim.World".
