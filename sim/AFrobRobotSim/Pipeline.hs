@@ -37,6 +37,7 @@ import           Control.Exception      (SomeAsyncException, SomeException, mask
 import           Control.Monad          (unless, when)
 import           Data.IORef
 import           Data.Maybe             (isJust)
+import           Foreign.StablePtr      (freeStablePtr, newStablePtr)
 
 -- | @pipeline batch produce consume xs@: for each element of @xs@ in
 -- turn, @produce@ it on the calling thread (forcing what its consumer
@@ -103,9 +104,20 @@ pipeline batch produce consume xs = do
           Left (e :: SomeAsyncException) -> do
             writeIORef skip True
             finish (either Left (const (Left (toException e))) ended)
+  -- The queue is kept reachable from outside both threads while they run.
+  -- When the producer falls into a loop that the runtime detects as
+  -- @<<loop>>@ (a value that depends on itself), the collection that
+  -- finds it also finds every thread blocked on what only that one
+  -- refers to, and wakes each with an exception: the consumer, waiting
+  -- for the next batch, would end at once with
+  -- 'Control.Exception.BlockedIndefinitelyOnMVar', before the producer
+  -- hands over the batch it was filling, and those elements would be lost
+  -- (on several capabilities, where the consumer waits more often).
+  anchor <- newStablePtr queue
   _ <- forkFinally consumer (\_ -> putMVar done ())
   ended <- try (producer 0 xs)
   ended' <- finish ended
+  freeStablePtr anchor
   stopped <- readIORef failed
   pure (ended', stopped)
 

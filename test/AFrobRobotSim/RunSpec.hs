@@ -4,7 +4,7 @@
 module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 
 import           Control.Exception   (AsyncException (UserInterrupt), evaluate, finally, try, uninterruptibleMask_)
-import           Control.Monad       (forM_, replicateM_)
+import           Control.Monad       (forM, forM_, replicateM_)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
 import           Control.Concurrent  (threadDelay)
@@ -163,6 +163,8 @@ child arg = case break (== ':') arg of
   ("noworld", _ : dir) -> runSimWith (quick dir) { optWorldFile = Just (dir </> "missing.world") } Nothing drive drive
   ("loop", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg")
                                               , optResult = Just (dir </> "r.json") } (Just world) selfish drive
+  ("lateloop", _ : dir) -> runSimWith (quick dir) { optFrames = False, optLog = Just (dir </> "run.jsonl")
+                                                  , optResult = Just (dir </> "r.json") } (Just world) lateSelfish drive
   ("deep", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg")
                                               , optResult = Just (dir </> "r.json") } (Just world) deep drive
   ("leak", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSeconds = 600, optSvg = Just (dir </> "run.svg")
@@ -207,6 +209,8 @@ child arg = case break (== ':') arg of
                 >>> arr (\kept -> mrFinalize (ddVelDiff (if null kept then 0 else 0.1) 0.1))
     -- (an output that depends on itself with no delay: <<loop>>)
     selfish _ = loop (arr (\(_, o) -> (o, o)))
+    -- (the same from 0.3 s on, after 30 steps that run)
+    lateSelfish _ = localTime >>> arr (\t -> if t < 0.3 then mrFinalize (ddVelDiff 0.5 0.5) else let o = o in o)
 
 -- | The ways a run is stopped from outside: a name, how to send it to
 -- the child, the exit code expected, and the capabilities to run with.
@@ -412,7 +416,7 @@ spec = do
       err `shouldSatisfy` ("cannot write to standard output" `isInfixOf`)
       err `shouldSatisfy` ("Bad file descriptor" `isInfixOf`)
       doesFileExist (dir </> "run.svg") `shouldReturn` True
-  describe "a controller whose output depends on itself with no delay" $
+  describe "a controller whose output depends on itself with no delay" $ do
     forM_ [1, 2 :: Int] $ \caps ->
       it ("fails the run with <<loop>>, naming the robot, its outputs written (" ++ show caps ++ " capabilities)") $
         withTempDir $ \dir -> do
@@ -428,6 +432,26 @@ spec = do
           doesFileExist (dir </> "run.svg") `shouldReturn` True
           -- (in JSON, < is written \u003c)
           readFile (dir </> "r.json") >>= (`shouldSatisfy` ("SimbotA 1 failed at t = 0.000 s: \\u003c\\u003cloop" `isInfixOf`))
+    it "fails the run at the same step on 1 and 2 capabilities when the <<loop>> comes after 30 steps" $
+      withTempDir $ \dir -> do
+        outcomes <- forM [1, 2 :: Int] $ \caps -> do
+          let sub = dir </> show caps
+          createDirectory sub
+          late <- childOn "lateloop" sub caps
+          (_, _, Just herr, ph) <- createProcess late { std_out = NoStream, std_err = CreatePipe }
+          err <- hGetContents herr
+          done <- timeout 60000000 (length err `seq` waitForProcess ph)
+          _ <- maybe (terminateProcess ph >> waitForProcess ph) pure done
+          done `shouldBe` Just (ExitFailure 1)
+          err `shouldSatisfy` ("the controller of SimbotA 1 failed at t = 0.300 s: <<loop>>" `isInfixOf`)
+          logText <- readFile (sub </> "run.jsonl")
+          -- (every step before the failure: 0 to 0.29 s)
+          logText `shouldSatisfy` ("\"simulated\":0.29,\"steps\":30," `isInfixOf`)
+          -- (the log less its summary, which has the wall time)
+          length logText `seq` pure (filter (not . ("\"kind\":\"summary\"" `isInfixOf`)) (lines logText))
+        case outcomes of
+          [one, two] -> two `shouldBe` one
+          _          -> expectationFailure "two runs"
   describe "a controller that overflows the stack, or fills the heap" $ do
     let childRun what rts dir = do
           self <- getExecutablePath
