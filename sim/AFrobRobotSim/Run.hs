@@ -63,7 +63,7 @@ module AFrobRobotSim.Run
 
 import           Control.Concurrent        (getNumCapabilities)
 import           Control.Exception         (AsyncException (HeapOverflow, UserInterrupt), Exception (..), IOException,
-                                            evaluate, throwIO, try)
+                                            evaluate, mask_, throwIO, try)
 import           Control.Monad             (forM, unless, when)
 import           Data.IORef
 import           Data.List                 (intercalate)
@@ -207,21 +207,35 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
   -- (the progress line last: it counts the frames written up to and
   -- including this step's)
   let progress = tty && not (optQuiet opts)
-      sinks = [ messagesSink progress | not (optQuiet opts) ]
-              ++ catMaybes (logAndReplay ++ [ frames, svg, result ])
-              ++ [ progressSink nSteps framesRef | progress ]
+      -- (finished in this order: the lines saying what was written)
+      sinks = messages ++ catMaybes (logAndReplay ++ [ frames ]) ++ inMemory ++ progressLine
+      messages = [ messagesSink progress | not (optQuiet opts) ]
+      progressLine = [ progressSink nSteps framesRef | progress ]
       -- the log and the page, which share each frame's line when the page
       -- keeps every frame period (the same frames)
       logAndReplay = case (mlog, (,) <$> mrec <*> optReplay opts) of
         (Just w, Just (r, file)) | replayThin == 1 -> [ Just (logAndReplaySink w thinNote r file) ]
         (ml, mr) -> [ logSink <$> ml, uncurry (replaySink thinNote) <$> mr ]
+      -- A step counts as simulated once the sinks that only keep it in
+      -- memory (the SVG's track, the result line's tallies, which cannot
+      -- fail) have taken it, before those that write it (the messages,
+      -- the log, the page, the frames, the progress line): a write that
+      -- fails, at this step, leaves the outputs before it in the list
+      -- with this step, and the summary says it was simulated, so that no
+      -- output holds a step past the summary's.
+      inMemory = catMaybes [ svg, result ]
+      writing  = messages ++ catMaybes (logAndReplay ++ [ frames ]) ++ progressLine
       sinkAll n s = do
-        mapM_ (\k -> sinkStep k n s) sinks
+        mapM_ (\k -> sinkStep k n s) inMemory
         writeIORef stepsRef $! n + 1
+        mapM_ (\k -> sinkStep k n s) writing
+      -- (on one capability, Ctrl-C and SIGTERM come between two steps'
+      -- outputs, not in the middle of one's: every output then ends at
+      -- the same step)
       loop !_ [] = pure Finished
       loop !n (s : rest) = do
         _ <- evaluate (forceWorldState s)
-        sinkAll n s
+        mask_ (sinkAll n s)
         loop (n + 1) rest
       -- how an exception ends the run (any other is thrown on)
       endedBy e

@@ -579,6 +579,13 @@ spec = do
       all ((== 15 + 3 * 120 * 120) . BS.length) frames `shouldBe` True
       logRead <- readLogFile (dir </> "run.jsonl")
       fmap (fmap lsInterrupted . rlSummary) logRead `shouldBe` Right (Just True)
+      -- every output ends at the same step: as many frames in the log as
+      -- in the folder, none past the summary's time (on one capability
+      -- the signal came in the middle of a step's outputs, between the
+      -- log's and the frame's, in most runs)
+      fmap (length . rlFrames) logRead `shouldBe` Right (length frames)
+      fmap (\rl -> (\sm -> all ((<= lsSimulated sm + 1e-9) . lfTime) (rlFrames rl)) <$> rlSummary rl) logRead
+        `shouldBe` Right (Just True)
       page <- readFile (dir </> "run.html")
       "<!DOCTYPE html>" `isPrefixOf` page `shouldBe` True
   describe "frames" $ do
@@ -929,7 +936,9 @@ spec = do
       (o, err, r) <- captured (runSimWith (quick out) { optLog = Just (dir </> "run.jsonl")
                                                       , optResult = Just (dir </> "r.json") } (Just world) drive drive)
       r `shouldBe` Left (ExitFailure 1)
-      o `shouldSatisfy` ("stopped: 0.11 s simulated in 12 steps, 3 frames" `isInfixOf`)
+      -- (the step of the fourth frame, 0.12 s, counts: the log took it,
+      -- before the frames did)
+      o `shouldSatisfy` ("stopped: 0.12 s simulated in 13 steps, 3 frames" `isInfixOf`)
       err `shouldSatisfy` ("a write failed" `isInfixOf`)
       names <- listDirectory out
       filter (".tmp" `isInfixOf`) names `shouldBe` []
@@ -939,8 +948,13 @@ spec = do
       fmap (fmap (\sm -> (lsInterrupted sm, fmap ("the run stopped: a write failed: " `isPrefixOf`) (lsFailure sm)))
               . rlSummary) logRead
         `shouldBe` Right (Just (False, Just True))
+      -- no output holds a step past the summary's: the log's last frame
+      -- is the step it says was simulated last, and so is the result's
+      fmap (\rl -> (map lfTime (rlFrames rl), fmap (\sm -> (lsSimulated sm, lsSteps sm)) (rlSummary rl))) logRead
+        `shouldBe` Right ([0, 0.04, 0.08, 0.12], Just (0.12, 13))
       result <- readFile (dir </> "r.json")
       result `shouldSatisfy` ("\"failure\":\"the run stopped: a write failed: " `isInfixOf`)
+      result `shouldSatisfy` ("\"simulated\":0.12,\"steps\":13," `isInfixOf`)
 
   describe "every core: the outputs written by a thread of their own (two capabilities)" $ do
     let talk _ = localTime >>> arr (\t -> mrFinalize (ddVelDiff 0.7 0.9 `mrMerge` tcoPrintMessage
