@@ -42,10 +42,12 @@
 -- thread holds it off) ends the same way. A program built without
 -- @-threaded@ gets no watchdog: its runtime waits, whole,
 -- for a blocking call such as the video's assembly, and could not be
--- told from a stuck one. A first Ctrl-C does not stop such a loop either;
--- a second ends the program at once, writing nothing, as the runtime
--- does. Code compiled with @-fno-omit-yields@ can be stopped where it
--- loops, and then writes its outputs.
+-- told from a stuck one. Ctrl-C (@SIGINT@) has no watchdog, in any
+-- program: a first Ctrl-C does not stop such a loop; a second ends the
+-- program at once, writing nothing, as the runtime does (use @SIGTERM@,
+-- @kill@, to get the message and exit status 143). Code compiled with
+-- @-fno-omit-yields@ can be stopped where it loops, and then writes its
+-- outputs.
 module AFrobRobotSim.Run.Signals
   ( Stopper
   , interruptible
