@@ -298,24 +298,23 @@ writeReplayFromLog logPath out = do
       -- (masked from the open to the cleanup's installing: a Ctrl-C
       -- between them would leave the file)
       mask $ \restore -> do
-       opened <- try (openBinaryTempFile tmp "afrp-replay.frames")
+       opened <- try (openSpool tmp)
        case opened of
         Left e          -> pure (Left (spoolFault e))
-        Right (path, h) -> flip finally (quietly (hClose h) >> removeIfExists path) $ restore $ do
-          hSetBuffering h (BlockBuffering Nothing)
+        Right (left, h) -> flip finally (quietly (hClose h) >> mapM_ removeIfExists left) $ restore $ do
           let start hd = let line = encodeLogLineBytes (LineHeader hd) in pure (line, fnvBytes fnvBasis line)
               step (header, !hash) f = do
                 let !line = encodeLogLineBytes (LineFrame f)
                 BC.hPutStrLn h line
                 pure (header, fnvBytes hash line)
-          spooled <- try (foldLogFile logPath start step <* hClose h)
+          spooled <- try (foldLogFile logPath start step <* rewind h)
           case spooled of
             Left e                                  -> pure (Left (spoolFault e))
             Right (Left e)                          -> pure (Left e)
             Right (Right ((header, hash), msummary)) -> do
               let summary = encodeLogLineBytes . LineSummary <$> msummary
               either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) Right   -- (it names the page)
-                <$> try (writePage replayChunkChars header path summary (maybe hash (fnvBytes hash) summary) out)
+                <$> try (writePage replayChunkChars header h summary (maybe hash (fnvBytes hash) summary) out)
   where
     quietly act = act `catch` \e -> const (pure ()) (e :: IOException)
 
@@ -323,8 +322,12 @@ writeReplayFromLog logPath out = do
 -- once and appended to a temporary file (in the system's temporary
 -- folder), so recording holds neither the simulation's states nor the
 -- frames: memory stays constant however long the run. 'writeReplay'
--- streams that file into the page and removes it.
-data ReplayRecorder = ReplayRecorder LogConfig FilePath Handle (IORef Recording)
+-- streams that file into the page. The file is removed from its folder
+-- as soon as it is made (it lives on through the recorder's handle), so
+-- that a run that is killed (@SIGKILL@) leaves nothing in the temporary
+-- folder; where a file cannot be removed while open, 'writeReplay'
+-- removes it.
+data ReplayRecorder = ReplayRecorder LogConfig (Maybe FilePath) Handle (IORef Recording)
 
 -- What the recorder carries from frame to frame: the log's state, the
 -- number of frames written and the page's nonce hash so far.
@@ -334,10 +337,24 @@ data Recording = Recording !LogState !Int !Word64
 newReplayRecorder :: LogConfig -> IO ReplayRecorder
 newReplayRecorder cfg = do
   tmp <- getTemporaryDirectory
+  (left, h) <- openSpool tmp
+  let h0 = fnv fnvBasis (encodeLogLine (LineHeader (logHeader cfg)))
+  ReplayRecorder cfg left h <$> newIORef (Recording (logStart cfg) 0 h0)
+
+-- The frames' temporary file, made in the folder given, open for
+-- writing and then reading back ('rewind'), block-buffered, and removed
+-- from the folder at once: the path still to remove at the end, if the
+-- system would not remove an open file.
+openSpool :: FilePath -> IO (Maybe FilePath, Handle)
+openSpool tmp = do
   (path, h) <- openBinaryTempFile tmp "afrp-replay.frames"
   hSetBuffering h (BlockBuffering Nothing)
-  let h0 = fnv fnvBasis (encodeLogLine (LineHeader (logHeader cfg)))
-  ReplayRecorder cfg path h <$> newIORef (Recording (logStart cfg) 0 h0)
+  removed <- try (removeFile path)
+  pure (either (\e -> const (Just path) (e :: IOException)) (const Nothing) removed, h)
+
+-- The spool written: read it from its start.
+rewind :: Handle -> IO ()
+rewind h = hFlush h >> hSeek h AbsoluteSeek 0
 
 -- | Give the recorder the next step's state (every step, the first at
 -- time 0).
@@ -373,23 +390,22 @@ writeReplay = writeReplayChunked replayChunkChars
 -- | 'writeReplay' with the log's lines in data elements of at most @n@
 -- characters each, as 'replayPageChunked' writes them.
 writeReplayChunked :: Int -> ReplayRecorder -> LogSummary -> FilePath -> IO ()
-writeReplayChunked chunk (ReplayRecorder cfg path h ref) s out =
-  (do hClose h
+writeReplayChunked chunk (ReplayRecorder cfg left h ref) s out =
+  (do rewind h
       Recording _ n hash <- readIORef ref
       let s'      = if lsFrames s < 0 then s { lsFrames = n } else s
           summary = encodeLogLineBytes (LineSummary s')
-      writePage chunk (encodeLogLineBytes (LineHeader (logHeader cfg))) path (Just summary) (fnvBytes hash summary) out)
-  `finally` removeIfExists path
+      writePage chunk (encodeLogLineBytes (LineHeader (logHeader cfg))) h (Just summary) (fnvBytes hash summary) out)
+  `finally` ((hClose h `catch` \e -> const (pure ()) (e :: IOException)) >> mapM_ removeIfExists left)
 
 -- @writePage chunk header frames summary hash out@ writes the page of a
--- log whose header line is @header@, whose frames' lines are those of the
--- file @frames@ and whose summary line, if any, is @summary@, with the
+-- log whose header line is @header@, whose frames' lines are what is left
+-- to read of the handle @frames@ and whose summary line, if any, is @summary@, with the
 -- nonce of @hash@ (all its lines' 'fnvBytes'), the lines in data elements
 -- of at most @chunk@ characters (as 'joinChunked' joins them): the page of
 -- 'replayPageChunked', streamed (whole or not at all: 'writeWhole').
-writePage :: Int -> BC.ByteString -> FilePath -> Maybe BC.ByteString -> Word64 -> FilePath -> IO ()
-writePage chunk header frames summary hash out =
-  withBinaryFile frames ReadMode $ \fh ->
+writePage :: Int -> BC.ByteString -> Handle -> Maybe BC.ByteString -> Word64 -> FilePath -> IO ()
+writePage chunk header fh summary hash out =
     writeWhole out $ \whole -> withBinaryFile whole WriteMode $ \oh -> do
       hSetBuffering oh (BlockBuffering Nothing)
       let (pre, post) = replayPageParts (showHex hash "")
