@@ -43,6 +43,7 @@ module AFrobRobotSim.Log
   , linesByRobot
     -- * The values' rounding
   , roundHalfEven
+  , roundTo
     -- * Writing a file as the run goes
   , LogWriter
   , openLogWriter
@@ -268,9 +269,11 @@ frameOf cfg st s scores events lines' = LogFrame
 r6 :: Double -> Double
 r6 = roundTo 1e6
 
--- Rounded to a multiple of @1 / k@ (non-finite numbers and numbers too
--- large for the multiple to be exact stay as they are: NaN fails the
--- comparison). The multiple's count is at most 10^15, so an 'Int' holds
+-- | @roundTo k x@: @x@ rounded to a multiple of @1 / k@, a tie to the
+-- even multiple (non-finite numbers and numbers too large for the
+-- multiple to be exact stay as they are: NaN fails the comparison). The
+-- log writes its frames' times @roundTo 1e9@ (531 steps of 0.01 s are
+-- 5.31 s, not 5.3100000000000005) and their other values @roundTo 1e6@. The multiple's count is at most 10^15, so an 'Int' holds
 -- it exactly and converts back exactly. (An 'Integer' and the foreign
 -- calls of 'isNaN' and 'isInfinite' cost 2,500 instructions a
 -- robot-frame in a replay page of 1000 robots.)

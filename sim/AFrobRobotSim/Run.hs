@@ -138,7 +138,8 @@ runSimWith opts mworld rcA rcB = do
           keyName c = case c of { ' ' -> "space"; ',' -> "comma"; _ -> [c] }
           late = keysNeverPressed (optDt opts) nSteps (optKeys opts)
           -- (a time to the microsecond: 3.0, not 3.0000000000000004)
-          micro x = show (fromIntegral (round (x * 1e6) :: Integer) / 1e6 :: Double)
+          -- (too large for a millionth to count, as it is: 1.0e308, not Infinity)
+          micro x = show (roundTo 1e6 x)
           lastStep = micro (fromIntegral nSteps * optDt opts)
           -- (after the last step, or due by then but left waiting its turn)
           why t | keyDue (optDt opts) t nSteps =
@@ -264,7 +265,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
   steps <- readIORef stepsRef
   nFrames <- readIORef framesRef
   end <- getMonotonicTime
-  let simulated = fromIntegral (max 0 (steps - 1)) * dt
+  let simulated = roundTo 1e9 (fromIntegral (max 0 (steps - 1)) * dt)   -- (as the log's frames' times)
       wall      = end - start
       failure   = case ending of
         Failed ce -> Just ce

@@ -327,6 +327,14 @@ spec = do
       a <- framesIn (dir </> "a")
       b <- framesIn (dir </> "b")
       (length a, a == b) `shouldBe` (51, True)
+  describe "the summary's simulated time" $
+    it "is the steps' time rounded as the frames' times are (5.31, not 5.3100000000000005)" $ withTempDir $ \dir -> do
+      _ <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 5.31, optLog = Just (dir </> "run.jsonl")
+                                            , optResult = Just (dir </> "r.json") } (Just world) drive drive)
+      logRead <- readLogFile (dir </> "run.jsonl")
+      fmap (fmap (\sm -> (lsSimulated sm, lsSteps sm)) . rlSummary) logRead `shouldBe` Right (Just (5.31, 532))
+      readFile (dir </> "run.jsonl") >>= (`shouldSatisfy` ("\"simulated\":5.31," `isInfixOf`))
+      readFile (dir </> "r.json") >>= (`shouldSatisfy` ("\"simulated\":5.31," `isInfixOf`))
   describe "scripted keys" $
     it "warns of a key pressed after the run's last step (never pressed), and of no other" $ withTempDir $ \dir -> do
       (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 1
@@ -352,6 +360,11 @@ spec = do
       (_, err4, _) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 0.2, optDt = 0.1, optFps = 10
                                                        , optKeys = [(0, 'a'), (0, 'a')] } (Just world) drive drive)
       err4 `shouldBe` ""
+      -- (a time too large for a millionth to count is said as it is: it
+      -- was "at Infinity s")
+      (_, err5, _) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 0.1
+                                                       , optKeys = [(1e308, 'a')] } (Just world) drive drive)
+      err5 `shouldSatisfy` ("the key press a at 1.0e308 s is never pressed" `isInfixOf`)
   describe "parameters" $
     it "warns of a --param the program never asked for (a misspelled name), naming those it did" $ withTempDir $ \dir -> do
       self <- getExecutablePath
