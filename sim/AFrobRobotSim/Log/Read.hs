@@ -62,11 +62,18 @@ readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not
   (i0, l0) : rest -> headerLine loc i0 l0 >>= \h -> go h [] rest
   where
     go h acc [] = Right (RunLog h (reverse acc) Nothing)
-    go h acc ((i, l) : rest) = bodyLine loc h i l >>= \ln -> case ln of
+    go h acc ((i, l) : rest) = bodyLine loc h (lastTime acc) i l >>= \ln -> case ln of
       Left f  -> go h (f : acc) rest
       Right s -> case rest of
         []         -> Right (RunLog h (reverse acc) (Just s))
         (j, _) : _ -> Left (loc j Nothing ++ afterSummary)
+
+-- The time of the newest frame read, of frames newest first (0 before
+-- the first: a frame's time is not negative).
+lastTime :: [LogFrame] -> Double
+lastTime fs = case fs of
+  f : _ -> lfTime f
+  []    -> 0
 
 -- Whether a line is blank (such lines are skipped).
 blank :: String -> Bool
@@ -94,22 +101,40 @@ headerLine loc i l = do
       | not (all positive [lhDt h, lhFps h]) =
           Left ("the header's dt and fps must be positive numbers, found " ++ show (lhDt h) ++ " and "
                 ++ show (lhFps h))
+      | LogRect x y w ht <- lhBounds h, not (all finite [x, y] && all positive [w, ht]) =
+          Left ("the header's bounds must be numbers, with a positive width and height, found x " ++ show x
+                ++ ", y " ++ show y ++ ", width " ++ show w ++ " and height " ++ show ht)
       | otherwise = Right ()
     -- (a first line that is no header: most often a file that is not a log)
     notALogHint = " (is it a run log? a run writes one with --log FILE.jsonl)"
     positive x = x > 0 && not (isInfinite x)   -- (NaN, read from null, is not > 0)
+    finite x = not (isNaN x || isInfinite x)
 
--- A line after the header, line @i@, not blank: a frame (with a time, and
--- the header's robots) or the summary (with its times).
-bodyLine :: Locate -> LogHeader -> Int -> String -> Either String (Either LogFrame LogSummary)
-bodyLine loc h i l = located loc i (decodeLogLine l) >>= \ln -> case ln of
+-- A line after the header, line @i@, not blank, the frame before it at
+-- time @prev@ (0 for none): a frame (with a time, not before @prev@, the
+-- header's robots, and robots and balls at places that are numbers) or
+-- the summary (with its times).
+bodyLine :: Locate -> LogHeader -> Double -> Int -> String -> Either String (Either LogFrame LogSummary)
+bodyLine loc h prev i l = located loc i (decodeLogLine l) >>= \ln -> case ln of
   LineFrame f
     | not (finite (lfTime f)) ->
         Left (loc i Nothing ++ "a frame's time must be a number, found " ++ show (lfTime f)
               ++ " (null is not a time)")
+    | lfTime f < 0 ->
+        Left (loc i Nothing ++ "a frame's time must not be negative, found " ++ show (lfTime f))
+    | lfTime f < prev ->
+        Left (loc i Nothing ++ "a frame at t = " ++ show (lfTime f) ++ " s, before the one above it ("
+              ++ show prev ++ " s): frames come in time order")
     | length (lfRobots f) /= length (lhRobots h) ->
         Left (loc i Nothing ++ "a frame of " ++ show (length (lfRobots f)) ++ " robots; the header lists "
               ++ show (length (lhRobots h)))
+    | (k, r) : _ <- [ kr | kr@(_, r) <- zip [1 :: Int ..] (lfRobots f), not (all finite [lrX r, lrY r, lrHeading r]) ] ->
+        Left (loc i Nothing ++ "robot " ++ show k ++ " of the frame at t = " ++ show (lfTime f)
+              ++ " s: its x, y and heading must be numbers, found " ++ show (lrX r) ++ ", " ++ show (lrY r)
+              ++ " and " ++ show (lrHeading r))
+    | (k, (x, y)) : _ <- [ kb | kb@(_, (x, y)) <- zip [1 :: Int ..] (lfBalls f), not (all finite [x, y]) ] ->
+        Left (loc i Nothing ++ "ball " ++ show k ++ " of the frame at t = " ++ show (lfTime f)
+              ++ " s: its x and y must be numbers, found " ++ show x ++ " and " ++ show y)
     | otherwise -> Right (Left f)
   LineSummary s
     | not (all finite [lsSimulated s, lsWallTime s]) ->
@@ -200,12 +225,12 @@ foldLogFileUpTo cap lineCap path start step = do
                 Left e              -> pure (Left e)
                 Right l | blank l   -> nextText
                         | otherwise -> pure (Right (Just (i, l)))
-            body h s = nextText >>= \r -> case r of
+            body h prev s = nextText >>= \r -> case r of
               Left e              -> pure (Left e)
               Right Nothing       -> pure (Right (s, Nothing))
-              Right (Just (i, l)) -> case bodyLine loc h i l of
+              Right (Just (i, l)) -> case bodyLine loc h prev i l of
                 Left e          -> pure (Left e)
-                Right (Left f)  -> step s f >>= body h
+                Right (Left f)  -> step s f >>= body h (lfTime f)
                 Right (Right m) -> nextText >>= \after -> pure $ case after of
                   Left e             -> Left e
                   Right Nothing      -> Right (s, Just m)
@@ -216,7 +241,7 @@ foldLogFileUpTo cap lineCap path start step = do
           Right Nothing        -> pure (Left (loc 1 Nothing ++ emptyLog))
           Right (Just (i, l))  -> case headerLine loc i l of
             Left e  -> pure (Left e)
-            Right h -> start h >>= body h
+            Right h -> start h >>= body h 0
     name = displayPath path   -- (a name with control characters escaped)
     loc :: Locate
     loc i mc = name ++ ":" ++ show i ++ maybe "" (\c -> ":" ++ show c) mc ++ ": "

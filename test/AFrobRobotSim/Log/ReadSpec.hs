@@ -51,6 +51,29 @@ spec = do
     readLog (withHeader h { lhFps = 0 }) `shouldSatisfy` either ("fps" `isInfixOf`) (const False)
     readLog (withHeader h { lhDt = -1 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
     readLog (withHeader h { lhDt = 0 / 0 }) `shouldSatisfy` either ("dt" `isInfixOf`) (const False)
+  it "refuses frames out of time order, a negative time, a robot or ball at no number, and bounds of no area" $ do
+    let ls = lines fixtureLogText
+        h = rlHeader fixtureLog
+        f = head (rlFrames fixtureLog)
+        r = head (lfRobots f)
+        withFrame f' = unlines (take 2 ls ++ [encodeLogLine (LineFrame f')] ++ drop 2 ls)
+        withHeader h' = unlines (encodeLogLine (LineHeader h') : drop 1 ls)
+        refused what = either (what `isInfixOf`) (const False)
+    length (rlFrames fixtureLog) `shouldSatisfy` (> 2)
+    -- (a copy of the first frame, at 1000 s, before the second)
+    readLog (withFrame f { lfTime = 1000 })
+      `shouldSatisfy` refused "line 4: a frame at t = 4.0e-2 s, before the one above it (1000.0 s)"
+    readLog (withFrame f { lfTime = -5 }) `shouldSatisfy` refused "line 3: a frame's time must not be negative"
+    -- (frames at one time, as after a step of 0, are in order)
+    readLog (withFrame f) `shouldSatisfy` either (const False) (const True)
+    -- (1e999 is read as infinity)
+    readLog (unlines (take 2 ls ++ [setFirst "\"x\":" "1e999" (ls !! 1)] ++ drop 2 ls))
+      `shouldSatisfy` refused "robot 1 of the frame at t = 0.0 s: its x, y and heading must be numbers"
+    readLog (withFrame f { lfRobots = r { lrHeading = 0 / 0 } : drop 1 (lfRobots f) })
+      `shouldSatisfy` refused "robot 1 of the frame at t = 0.0 s"
+    readLog (withFrame f { lfBalls = [(0, 1 / 0)] }) `shouldSatisfy` refused "ball 1 of the frame at t = 0.0 s"
+    readLog (withHeader h { lhBounds = (lhBounds h) { rectWidth = 0 } }) `shouldSatisfy` refused "positive width and height"
+    readLog (withHeader h { lhBounds = (lhBounds h) { rectHeight = -3 } }) `shouldSatisfy` refused "positive width and height"
   it "refuses a frame time or a summary time written as null (the page could not draw it)" $ do
     let ls = lines fixtureLogText
         f = head (rlFrames fixtureLog)
@@ -120,3 +143,11 @@ spec = do
       fmap (const ()) r'' `shouldBe` Right ()
   it "reads a log cut short (no summary) (fixed)" $
     fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
+
+-- @setFirst key v line@: the number after the first @key@ in @line@
+-- written @v@ instead.
+setFirst :: String -> String -> String -> String
+setFirst key v txt = case txt of
+  _ | key `isPrefixOf` txt -> key ++ v ++ dropWhile (`elem` "-+.0123456789eE") (drop (length key) txt)
+  c : rest                 -> c : setFirst key v rest
+  []                       -> []
