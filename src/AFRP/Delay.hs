@@ -74,7 +74,9 @@ b0 `fby` SF n = SF (compN n (sfNode (iPre b0)))
 -- at dt 0.05, @delay 1.1@ releases the sample of time 0 at exactly t = 1.1
 -- (Yampa, summing floats, may be one sample late), and at dt 0.1 @delay
 -- 0.3@ releases every sample exactly three samples later. @delay 0@ is the
--- identity; a negative delay is an error.
+-- identity; a negative delay is an error. An infinite delay outputs @a0@
+-- for ever, at an infinite local time too (where, by the rule above, the
+-- time would have reached @s + q@: the one exception to it).
 --
 -- > embed (delay 1 0) (1, [(0.5, Just 2), (0.5, Just 3), (0.5, Just 4)])  ==  [0, 0, 1, 2]
 delay :: forall a. Time -> a -> SF a a

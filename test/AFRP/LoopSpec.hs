@@ -1,6 +1,7 @@
 {-# LANGUAGE Arrows #-}
 module AFRP.LoopSpec (spec) where
 
+import           Control.Exception (ErrorCall (..), evaluate)
 import           Test.Hspec
 
 import           AFRP
@@ -17,6 +18,24 @@ spec = do
         (replicate 5 ()) `shouldBe` [0, 1, 2, 3, 4]
     it "rec in arrow notation with an integral solves x' = 1 - x" $
       shouldApproxList (runDt 0.5 relax (replicate 4 ())) [0, 0.5, 0.75, 0.875]
+
+  describe "what a loop evaluates (AFRP.Loop: the body's pair, at the next sample)" $ do
+    -- (a rec whose variables come from pre: its pair does not exist at
+    -- time 0, and the loop evaluates it at the second sample, read or not;
+    -- Yampa, which never does, gives the later outputs)
+    let strictRec, lazyRec :: SF Double Double
+        strictRec = proc a -> do
+          rec (x, y) <- pre -< (a, y)
+          returnA -< x
+        lazyRec = proc a -> do
+          rec ~(x, y) <- pre -< (a, y)
+          returnA -< x
+        later sf = drop 1 (embed sf (1, [ (1, Just v) | v <- [2, 3, 4] ]))
+    it "fails at the second sample when the pair of a rec's strict pattern is undefined at time 0, unread" $
+      evaluate (sum (later strictRec)) `shouldThrow` errorCall'
+        "AFRP.Delay.pre: pre has no output at local time 0 (use iPre for one)"
+    it "goes on with a lazy pattern (~(x, y)), as Yampa does with either" $
+      later lazyRec `shouldBe` [1, 2, 3]
 
   describe "loopPre" $ do
     it "feeds back through a one-sample delay" $
@@ -40,3 +59,7 @@ spec = do
     relax = proc () -> do
       rec x <- integral -< 1 - x
       returnA -< x
+
+-- | An error call with exactly this message (its location aside).
+errorCall' :: String -> Selector ErrorCall
+errorCall' m (ErrorCallWithLocation msg _) = msg == m

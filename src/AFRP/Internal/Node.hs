@@ -50,8 +50,9 @@
 -- edges, 'AFRP.Hybrid.hold' and 'AFRP.Integration.derivative' do the same
 -- by hand. So a stateful node inside a 'loop' whose output nobody needs
 -- never demands the value fed back, as in Yampa; and since each step
--- forces what the previous one left, a thunk never outlives one step and
--- a network runs in constant space however long it runs.
+-- forces what the previous one left, the library's own state keeps no
+-- chain of thunks from step to step, however long a network runs (the
+-- values a network computes lazily itself may: see "AFRP.Loop").
 --
 -- = Performance
 --
