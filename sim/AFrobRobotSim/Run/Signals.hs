@@ -30,9 +30,11 @@
 -- runtime that has not within 'stuckGrace' (10 s) is stuck: the program
 -- then writes to standard error that it is, and why that may be, and
 -- ends by @SIGTERM@ (exit status 143 in a shell), without the run's
--- outputs (the frames and log lines already written are kept; the
--- replay page's temporary file is gone with the program: it is removed
--- from @TMPDIR@ as soon as it is made). A run that
+-- outputs (the frames and log lines already written are kept; on several
+-- capabilities the frame being written then, held up by the collection
+-- the loop keeps from starting, is left as its temporary file,
+-- @frame-NNNNNN.ppm.tmp@; the replay page's temporary file is gone with
+-- the program: it is removed from @TMPDIR@ as soon as it is made). A run that
 -- is merely slow to stop (its log written into a pipe nobody reads for a
 -- while, a video being assembled) has a runtime that acts, and is not cut
 -- short. No other signal is used, and one run is watched at a time (a
