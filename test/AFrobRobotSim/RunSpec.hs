@@ -266,6 +266,19 @@ childOn what dir caps = do
   environment <- getEnvironment
   pure (proc self ["+RTS", "-N" ++ show caps, "-RTS"]) { env = Just ((childVariable, what ++ ":" ++ dir) : environment) }
 
+-- | The child @what@ run to its end on a folder with the capabilities
+-- given: how it exited (Nothing if it had not within a minute) and its
+-- standard error. A child that hangs, as one did while the handler of
+-- SIGTERM held its thread, is stopped, not left behind.
+failingChild :: String -> FilePath -> Int -> IO (Maybe ExitCode, String)
+failingChild what dir caps = do
+  child' <- childOn what dir caps
+  (_, _, Just herr, ph) <- createProcess child' { std_out = NoStream, std_err = CreatePipe }
+  err <- hGetContents herr
+  done <- timeout 60000000 (length err `seq` waitForProcess ph)
+  _ <- maybe (terminateProcess ph >> waitForProcess ph) pure done
+  pure (done, err)
+
 spec :: Spec
 spec = do
   describe "worlds of any size" $ do
@@ -433,13 +446,7 @@ spec = do
     forM_ [1, 2 :: Int] $ \caps ->
       it ("fails the run with <<loop>>, naming the robot, its outputs written (" ++ show caps ++ " capabilities)") $
         withTempDir $ \dir -> do
-          selfish <- childOn "loop" dir caps
-          (_, _, Just herr, ph) <- createProcess selfish { std_out = NoStream, std_err = CreatePipe }
-          err <- hGetContents herr
-          done <- timeout 60000000 (length err `seq` waitForProcess ph)
-          -- (a child that hangs, as it did while the handler of SIGTERM
-          -- held its thread, is stopped, not left behind)
-          _ <- maybe (terminateProcess ph >> waitForProcess ph) pure done
+          (done, err) <- failingChild "loop" dir caps
           done `shouldBe` Just (ExitFailure 1)
           err `shouldSatisfy` ("the controller of SimbotA 1 failed at t = 0.000 s: <<loop>>" `isInfixOf`)
           doesFileExist (dir </> "run.svg") `shouldReturn` True
@@ -450,11 +457,7 @@ spec = do
         outcomes <- forM [1, 2 :: Int] $ \caps -> do
           let sub = dir </> show caps
           createDirectory sub
-          late <- childOn "lateloop" sub caps
-          (_, _, Just herr, ph) <- createProcess late { std_out = NoStream, std_err = CreatePipe }
-          err <- hGetContents herr
-          done <- timeout 60000000 (length err `seq` waitForProcess ph)
-          _ <- maybe (terminateProcess ph >> waitForProcess ph) pure done
+          (done, err) <- failingChild "lateloop" sub caps
           done `shouldBe` Just (ExitFailure 1)
           err `shouldSatisfy` ("the controller of SimbotA 1 failed at t = 0.300 s: <<loop>>" `isInfixOf`)
           logText <- readFile (sub </> "run.jsonl")
