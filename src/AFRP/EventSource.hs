@@ -57,6 +57,7 @@ module AFRP.EventSource
   , sampleWindow
   ) where
 
+import           Data.Maybe           (isJust)
 import qualified Data.Sequence        as Seq
 import           GHC.Exts             (RuntimeRep, TYPE)
 import           Data.Sequence        (Seq, (|>))
@@ -281,13 +282,20 @@ edgeTag x = SF (compN (sfNode edge) (arrN (`tag` x)))
 -- | An occurrence, carrying the value, whenever the input changes from
 -- 'Nothing' to 'Just'. At time 0 the previous value is taken to be a
 -- 'Just', so a 'Just' there produces no event.
+--
+-- As in Yampa, an input that follows a 'Just' is not looked at until the
+-- next sample: the output is then 'NoEvent' whatever the input, and the
+-- input is evaluated (to tell 'Just' from 'Nothing') at the next sample.
+-- So an input that is an error at time 0 gives 'NoEvent' there and
+-- raises at the next sample.
 edgeJust :: SF (Maybe a) (Event a)
 edgeJust = SF (mealyN step True)
   where
-    step wasJust m = case m of
-      Just x | not wasJust -> (True, Event x)
-      Just _               -> (True, NoEvent)
-      Nothing              -> (False, NoEvent)
+    step wasJust m
+      | wasJust   = (isJust m, NoEvent)
+      | otherwise = case m of
+          Just x  -> (True, Event x)
+          Nothing -> (False, NoEvent)
 
 -- | The general edge detector: @edgeBy f a0@ applies @f@ to the previous
 -- and the current input sample and produces an occurrence whenever it

@@ -213,6 +213,11 @@ spec = do
         `shouldBe` [n, n, e 2, n, n, n, e 4]
     it "occurs right after a Nothing at time 0" $
       runDt 1 edgeJust [Nothing, Just 'v', Just 'w'] `shouldBe` [n, e 'v', n]
+    it "does not look at an input that follows a Just until the next sample (as Yampa)" $ do
+      let bad = error "input" :: Maybe Int
+      take 1 (runDt 1 edgeJust [bad, Just 1]) `shouldBe` [n]
+      take 2 (runDt 1 edgeJust [Just 1, bad, Nothing]) `shouldBe` [n, n]
+      forceEvents (runDt 1 edgeJust [bad, Just 1]) `shouldThrow` errorCall "input"
 
   describe "edgeBy" $ do
     let rise prev cur = if cur > prev then Just (cur - prev) else Nothing
