@@ -20,8 +20,10 @@
 --
 -- = Lines, tokens and comments
 --
--- * A file is split into lines (@\\n@; a @\\r@ before it is whitespace and
---   so ignored, which accepts CRLF line ends). Lines are numbered from 1.
+-- * A file is split into lines at each @\\n@, @\\r\\n@ or lone @\\r@, so
+--   Unix, Windows (CRLF) and classic Mac line ends are all read. Lines are
+--   numbered from 1. (Only the position of an invalid UTF-8 byte is
+--   counted in @\\n@ lines, as in every other file the simulator reads.)
 --   A UTF-8 byte order mark at the start of the file is ignored.
 --
 -- * Limits, so that any file is read in time linear in its size: a line
@@ -205,8 +207,14 @@ parseWorld file = fmap (map snd) . parseNumbered file
 
 -- | 'parseWorld', each object with its line number.
 parseNumbered :: FilePath -> String -> Either String [(Int, ObjectTemplate)]
-parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . lines . dropBom
+parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . textLines . dropBom
   where
+    -- lines ended by \n, \r\n or a lone \r (a file with no line end at
+    -- all is one line; a final line end does not start another)
+    textLines t = case break (\ch -> ch == '\n' || ch == '\r') t of
+      (l, [])                 -> [l | not (null l)]
+      (l, '\r' : '\n' : rest) -> l : textLines rest
+      (l, _ : rest)           -> l : textLines rest
     file = displayPath name   -- (control characters escaped in messages)
     dropBom ('\xFEFF' : r) = r
     dropBom r              = r

@@ -253,6 +253,11 @@ spec = do
     it "accepts a UTF-8 byte order mark, CRLF line ends and trailing whitespace" $
       parseB (B.concat [B.pack [0xef, 0xbb, 0xbf], BC.pack "ball at 1 2 \t \r\nblock at -1 -2\r\n\r\n"])
         `shouldBe` Right [OTBall (Point2 1 2), OTBlock (Point2 (-1) (-2))]
+    it "reads classic Mac line ends (a lone CR), and counts its lines" $ do
+      parseB (BC.pack "# a comment\rball at 1 2\rblock at -1 -2\r")
+        `shouldBe` Right [OTBall (Point2 1 2), OTBlock (Point2 (-1) (-2))]
+      parseB (BC.pack "ball at 1 2\r\r\nwall v at x1 2\r")
+        `shouldBe` Left "h.world:3:11: expected a number after \"at\", found \"x1\""
     it "reports a NUL byte with its position" $
       parseB (BC.pack "ball at 0 0\nblock at 1\NUL 2\n")
         `shouldBe` Left "h.world:2:11: found a NUL character (is this a text file?)"
