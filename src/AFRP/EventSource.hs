@@ -314,7 +314,8 @@ once :: SF (Event a) (Event a)
 once = takeEvents 1
 
 -- | Let the first @n@ occurrences through, then none (the source then
--- becomes 'never' and can disappear from the network).
+-- becomes 'never' and can disappear from the network). For @n <= 0@ it is
+-- 'never' from the start, as in Yampa.
 takeEvents :: Int -> SF (Event a) (Event a)
 takeEvents n0 = SF (lazyN (go n0))
   where
@@ -323,7 +324,8 @@ takeEvents n0 = SF (lazyN (go n0))
              NoEvent -> (# go n, NoEvent #)
              Event _ -> (# go (n - 1), e #))
 
--- | Suppress the first @n@ occurrences, then let all through.
+-- | Suppress the first @n@ occurrences, then let all through. For
+-- @n <= 0@ it lets every occurrence through, as in Yampa.
 dropEvents :: Int -> SF (Event a) (Event a)
 dropEvents n0 = SF (lazyN (go n0))
   where

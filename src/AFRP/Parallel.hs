@@ -30,8 +30,12 @@
 --
 -- Naming, as in Yampa: no suffix takes a /routing function/
 -- @forall sf. a -> col sf -> col (b, sf)@ that decides what input each
--- member sees (the @forall@ guarantees it can only route, never invent or
--- drop members it does not know); @B@ /broadcasts/ the same input to every
+-- member sees (the @forall@ guarantees it can pair inputs only with the
+-- members it is given, never with signal functions of its own making; it
+-- may still leave members out or use one twice, and the collection then
+-- goes on with the members it returned, each copy stepped on its own, as
+-- in Yampa: return each member once to keep the collection as it is);
+-- @B@ /broadcasts/ the same input to every
 -- member; @Z@ /zips/ a list of inputs with a list of members. The @p@
 -- switches and their @d@ / @r@ forms mirror 'AFRP.Switch.kSwitch',
 -- 'AFRP.Switch.dkSwitch', 'AFRP.Switch.rSwitch' and 'AFRP.Switch.drSwitch':

@@ -82,9 +82,28 @@ defaultWorldMix = WorldMix (0, 12) (0, 4) (0, 3) (1, 5)
 -- bounding box ('objectBox') overlaps no other object's and lies inside
 -- the world, so that robots start overlapping nothing. Robots get ids
 -- 1, 2, ... per type and random headings. An object that finds no free
--- spot in 20 tries is left out.
+-- spot in 20 tries is left out. Bounds that are not finite numbers with
+-- @x0 < x1@ and @y0 < y1@, or a range of the mix whose low end is above
+-- its high end, are an error naming them (such a world could hold
+-- nothing, and properties of its runs would hold of no robot).
 genWorld :: WorldMix -> Bounds -> Gen WorldTemplate
-genWorld mix bounds = do
+genWorld mix bounds = case problems of
+  p : _ -> error ("AFrobRobotSim.Test.genWorld: " ++ p)
+  []    -> generate'
+  where
+    Bounds bx0 by0 bx1 by1 = bounds
+    problems =
+      [ "the bounds " ++ show bounds ++ " are no extent (finite, x0 < x1, y0 < y1)"
+      | not (all (\v -> not (isNaN v || isInfinite v)) [bx0, by0, bx1, by1] && bx0 < bx1 && by0 < by1) ]
+      ++ [ "the range " ++ show r ++ " of " ++ name ++ " is empty"
+         | (name, r@(lo, hi)) <- [ ("mixWalls", mixWalls mix), ("mixBlocks", mixBlocks mix)
+                                 , ("mixBalls", mixBalls mix), ("mixRobots", mixRobots mix) ]
+         , lo > hi ]
+    generate' = generateIn mix bounds
+
+-- 'genWorld' once its parameters are checked.
+generateIn :: WorldMix -> Bounds -> Gen WorldTemplate
+generateIn mix bounds = do
   let count (lo, hi) = chooseInt (max 0 lo, max 0 hi)
   nWalls  <- count (mixWalls mix)
   nBlocks <- count (mixBlocks mix)
@@ -169,7 +188,9 @@ boxesOverlap (a0, b0, a1, b1) (c0, d0, c1, d1) = a0 < c1 && c0 < a1 && b0 < d1 &
 -- @duration@ (the first sample at time step 0). A duration that is not a
 -- finite number >= 0, or a time step ('simDt') that is not a finite
 -- number > 0, is an error naming it: a stream of no sample would make
--- every property of the run hold.
+-- every property of the run hold. So is a duration of more than 2^53
+-- time steps (which no run reaches; its count of steps would not be
+-- exact).
 runStream :: SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController
           -> SignalSampleStream WorldState
 runStream config duration world rcA rcB
@@ -178,6 +199,9 @@ runStream config duration world rcA rcB
   | isNaN (simDt config) || isInfinite (simDt config) || simDt config <= 0 =
       error ("AFrobRobotSim.Test.runStream: the time step (simDt) must be a finite number > 0, got "
              ++ show (simDt config))
+  | duration / simDt config > 2 ^ (53 :: Int) =
+      error ("AFrobRobotSim.Test.runStream: a duration of " ++ show duration ++ " s is more than 2^53 time steps of "
+             ++ show (simDt config) ++ " s")
   | otherwise =
   let dt    = simDt config
       steps = floor (duration / dt + 1e-9) :: Int
@@ -206,7 +230,8 @@ robotView ty i s = case traverse pick s of
 -- time step needs: @t=16.50@, @t=2.001@), then each
 -- robot's type, id, position, heading (@h=@, radians) and signed speed
 -- along it (@v=@, m/s, negative when it backs; 'robotSpeed'), and
--- @stuck@ if it is, and the balls' positions.
+-- @stuck@ if it is, and the balls' positions. A value that is not a
+-- finite number is written @NaN@, @Infinity@ or @-Infinity@.
 --
 -- > t=10.90  SimbotB 1 (-0.930, -1.813) h=0.78 v=0.00 stuck
 showWorldState :: WorldState -> String
@@ -229,6 +254,8 @@ showTime t =
 
 -- A number with @k@ decimals, rounded (no @-0.00@).
 fixed :: Int -> Double -> String
+fixed _ v | isNaN v      = "NaN"
+          | isInfinite v = if v > 0 then "Infinity" else "-Infinity"
 fixed k v = let m = 10 ^ k :: Integer
                 r = round (abs v * fromIntegral m) :: Integer
                 (q, f) = r `divMod` m

@@ -166,6 +166,10 @@ specWithoutFiles = do
     evaluate (length (run (-1))) `shouldThrow` anyErrorCall
     evaluate (length (run (0 / 0))) `shouldThrow` anyErrorCall
     evaluate (length (run (1 / 0))) `shouldThrow` anyErrorCall
+    -- a count of steps past an Int's range made an empty stream
+    evaluate (length (run 1e20)) `shouldThrow`
+      errorCall "AFrobRobotSim.Test.runStream: a duration of 1.0e20 s is more than 2^53 time steps of 0.1 s"
+    take 2 (map fst (run 9e14)) `shouldBe` [0, 0.1]
 
   it "runStream refuses a time step that is 0, negative or not finite (every property would hold of no sample)" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0]
@@ -209,6 +213,22 @@ specWithoutFiles = do
         v = robotSpeed (head (wsRobots final))
     v `shouldSatisfy` (< -0.05)
     showWorldState final `shouldSatisfy` ((" h=0.00 v=" ++ showFFloat (Just 2) v "") `isInfixOf`)
+
+  it "genWorld refuses bounds that are no extent and an empty range of the mix (it gave an empty world)" $ do
+    let gen m b = generate (genWorld m b) >>= evaluate . length
+    gen defaultWorldMix (Bounds 5 5 (-5) (-5)) `shouldThrow`
+      errorCall "AFrobRobotSim.Test.genWorld: the bounds Bounds 5.0 5.0 (-5.0) (-5.0) are no extent (finite, x0 < x1, y0 < y1)"
+    gen defaultWorldMix (Bounds (0 / 0) 0 1 1) `shouldThrow` anyErrorCall
+    gen defaultWorldMix { mixRobots = (5, 1) } notesBounds `shouldThrow`
+      errorCall "AFrobRobotSim.Test.genWorld: the range (5,1) of mixRobots is empty"
+    gen defaultWorldMix { mixRobots = (1, 1) } notesBounds `shouldNotReturn` 0
+
+  it "showWorldState writes a value that is not a finite number as such (it wrote hundreds of digits)" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0]
+        (_, ws) = head (runStream defaultSimConfig 0 world wander wander)
+        r = head (wsRobots ws)
+        odd' = ws { wsTime = 0 / 0, wsRobots = [r { robotHeading = 1 / 0, robotPos = Point2 (-1 / 0) 0 }] }
+    showWorldState odd' `shouldBe` "t=NaN  SimbotA 1 (-Infinity, 0.000) h=Infinity v=0.00"
 
 -- The tests that write files, each given the run's own folder.
 specWithFiles :: SpecWith FilePath

@@ -97,16 +97,27 @@ data TPred a where
 -- sample and @p@ has not held, true (the deadline has not passed; as for
 -- 'Next', the missing future does not count against it). So a 'False' is a
 -- real miss of the deadline.
+--
+-- A bound that is negative or NaN is an error naming it (an infinite one
+-- is the rest of the stream).
 eventuallyWithin :: DTime -> TPred a -> TPred a
-eventuallyWithin = EventuallyWithin
+eventuallyWithin d = EventuallyWithin (checkBound "eventuallyWithin" d)
 
 -- | @alwaysFor d p@: @p@ holds at this sample and at every sample no more
 -- than @d@ seconds after it (with the slack of 'eventuallyWithin').
 --
 -- At the end of the stream: the samples there are must hold (the missing
--- ones do not count against it).
+-- ones do not count against it). A bound that is negative or NaN is an
+-- error naming it, as for 'eventuallyWithin'.
 alwaysFor :: DTime -> TPred a -> TPred a
-alwaysFor = AlwaysFor
+alwaysFor d = AlwaysFor (checkBound "alwaysFor" d)
+
+-- A time bound, or the error of one that is negative or NaN (when the
+-- predicate is evaluated).
+checkBound :: String -> DTime -> DTime
+checkBound name d
+  | isNaN d || d < 0 = error ("AFRP.Test.LTL." ++ name ++ ": the time bound must be a number >= 0, got " ++ show d)
+  | otherwise        = d
 
 -- | Whether the predicate holds at time 0 of the stream, with the meaning
 -- at the end of the stream given for each constructor. The empty stream
@@ -168,7 +179,7 @@ truths ending m p0 s = go p0
     -- complete, otherwise the samples beyond decide (unknown while the
     -- stream is open; at the end of a closed stream the value given).
     windowed d vs combine unit =
-      [ let elapsed = sampleTimes (sClipBeforeFrame 0 suffix)  -- times from the suffix's start
+      [ let elapsed = sampleTimes (fromItsStart suffix)  -- times from the suffix's start
             (inWindow, after') = span ((<= d + slack) . fst) (zip elapsed vsFrom)
             slack = timeSlack d
             end | not (null after') = unit
@@ -177,6 +188,14 @@ truths ending m p0 s = go p0
                     Open   -> U
         in foldr (combine . snd) end inWindow
       | (suffix, vsFrom) <- zip (suffixes (take m s)) (suffixes vs) ]
+
+-- A suffix of a stream as a stream of its own: its first sample becomes
+-- time 0 (as 'sClipBeforeFrame' does, without counting the samples: the
+-- window reads only the times it needs, so a predicate costs time linear
+-- in the stream times the window).
+fromItsStart :: SignalSampleStream a -> SignalSampleStream a
+fromItsStart []            = []
+fromItsStart ((_, a) : ss) = (0, a) : ss
 
 suffixes :: [x] -> [[x]]
 suffixes [] = []

@@ -26,6 +26,7 @@ module AFRP.Test.QuickCheck
   , Distribution (..)
   , Range
   , Length
+  , maxStreamSteps
     -- ** Helpers for common cases
   , uniDistStream
   , uniDistStreamMaxDT
@@ -53,7 +54,9 @@ import           AFRP.Test.Stream
 -- | How the time steps of a generated stream are distributed.
 data Distribution
   = DistConstant
-    -- ^ one time step, drawn from the range, for the whole stream
+    -- ^ one time step, drawn from the range, for the whole stream (every
+    -- generated time step is positive: a lower bound of 0 means steps
+    -- just above 0)
   | DistNormal (DTime, DTime)
     -- ^ each time step drawn from a normal distribution with this mean and
     -- standard deviation, kept inside the range and positive
@@ -76,7 +79,10 @@ type Length = Maybe (Either Int DTime)
 -- 'error' with a message naming the parameter), rather than a generator
 -- that never ends or a stream that is not what was asked for: a bound of
 -- the range that is negative or not finite, a lower bound above the upper
--- one, a length in time that is negative or not finite, a normal
+-- one, an upper bound of 0 (no positive time step), a length in time that
+-- is negative or not finite or that the time steps cannot reach in
+-- 'maxStreamSteps' steps (or at all: a step lost in the rounding of the
+-- time so far), a normal
 -- distribution whose mean or deviation is not finite or whose deviation
 -- is negative, or one that almost never (not once in 1000 draws) gives a
 -- time step inside the range.
@@ -106,6 +112,7 @@ generateStreamWith value dist range len = checked `seq` do
       [ "the range's bound " ++ show b ++ " is not a finite number >= 0"
       | Just b <- [fst range, snd range], not (finiteD b && b >= 0) ]
       ++ [ "the range " ++ show range ++ " is empty" | (Just lo, Just hi) <- [range], lo > hi ]
+      ++ [ "the range " ++ show range ++ " holds no positive time step" | Just 0 <- [snd range] ]
       ++ [ "the length in time " ++ show t ++ " is not a finite number >= 0"
          | Just (Right t) <- [len], not (finiteD t && t >= 0) ]
       ++ [ "the normal distribution " ++ show md ++ " needs a finite mean and a finite deviation >= 0"
@@ -116,28 +123,47 @@ generateStreamWith value dist range len = checked `seq` do
     deltas gen = case len of
       Just (Right t) -> untilTime gen t
       _              -> stepCount >>= (`vectorOf` gen)
-    stepsToReach dt t = max 0 (ceiling (t / dt))
+    stepsToReach dt t
+      | t / dt > fromIntegral maxStreamSteps = tooLong dt t
+      | otherwise                            = max 0 (ceiling (t / dt))
 
--- Time steps until their sum reaches t (the last one may pass it).
+-- | The most time steps a generator makes to reach a length in time: 10^8
+-- (more than memory holds as a list). Asking for more is an error.
+maxStreamSteps :: Int
+maxStreamSteps = 100000000
+
+-- The error of a length in time the steps cannot reach.
+tooLong :: DTime -> DTime -> x
+tooLong dt t = error ("AFRP.Test.QuickCheck.generateStream: time steps like " ++ show dt ++ " cannot reach the length "
+                      ++ show t ++ " in " ++ show maxStreamSteps ++ " steps")
+
+-- Time steps until their sum reaches t (the last one may pass it); an
+-- error after 'maxStreamSteps' steps, or at a step that the sum so far
+-- loses in its rounding (which would never reach t).
 untilTime :: Gen DTime -> DTime -> Gen [DTime]
-untilTime gen t
-  | t <= 0    = pure []
-  | otherwise = do
-      dt <- gen
-      (dt :) <$> untilTime gen (t - dt)
+untilTime gen t = go (0 :: Int) 0
+  where
+    go k elapsed
+      | elapsed >= t         = pure []
+      | k >= maxStreamSteps  = tooLong (elapsed / fromIntegral k) t
+      | otherwise = do
+          dt <- gen
+          if elapsed + dt == elapsed then tooLong dt t else (dt :) <$> go (k + 1) (elapsed + dt)
 
 -- Neither NaN nor infinite.
 finiteD :: Double -> Bool
 finiteD x = not (isNaN x || isInfinite x)
 
--- A positive time step inside the range, uniformly.
+-- A positive time step inside the range, uniformly (a draw of 0, from a
+-- lower bound of 0, is drawn again).
 deltaIn :: Range -> Gen DTime
 deltaIn range = case range of
-  (Just lo, Just hi) -> choose (max tiny lo, max tiny hi)
-  (Just lo, Nothing) -> (max tiny lo +) . getNonNegative <$> arbitrary
-  (Nothing, Just hi) -> choose (tiny, max tiny hi)
+  (Just lo, Just hi) -> choose (lo, hi) `suchThat` (> 0)
+  (Just lo, Nothing)
+    | lo > 0         -> (lo +) . getNonNegative <$> arbitrary
+    | otherwise      -> getPositive <$> arbitrary
+  (Nothing, Just hi) -> choose (0, hi) `suchThat` (> 0)
   (Nothing, Nothing) -> getPositive <$> arbitrary
-  where tiny = 1e-6
 
 -- A normally distributed time step, redrawn until positive and inside the
 -- range (Box-Muller).
@@ -248,14 +274,20 @@ roundings dt = nub [ r | k <- [0 .. decimals dt - 1], let r = roundTo k dt, r > 
     decimals x = head ([k | k <- [0 .. 8], roundTo k x == x] ++ [9])
 
 -- | A stream as a table, one sample a line: number, time step, time since
--- the start, value; headed by its number of samples.
+-- the start, value; headed by its number of samples. From a time step
+-- that no run can take (negative or NaN) on, the time is shown as @-@, so
+-- that such a stream (written by hand) is still printed, not an error.
 showStream :: Show a => SignalSampleStream a -> String
 showStream s = unlines $
   ("stream of " ++ show (length s) ++ " samples:")
   : ("    " ++ pad 5 "#" ++ pad 12 "dt" ++ pad 12 "t" ++ "value")
-  : [ "    " ++ pad 5 (show k) ++ pad 12 (show dt) ++ pad 12 (show t) ++ show a
-    | (k, (dt, a), t) <- zip3 [0 :: Int ..] s (sampleTimes s) ]
-  where pad w str = str ++ replicate (max 1 (w - length str)) ' '
+  : [ "    " ++ pad 5 (show k) ++ pad 12 (show dt) ++ pad 12 t ++ show a
+    | (k, (dt, a), t) <- zip3 [0 :: Int ..] s (map show (sampleTimes runnable) ++ repeat "-") ]
+  where
+    pad w str = str ++ replicate (max 1 (w - length str)) ' '
+    runnable = case s of
+      []         -> []
+      first : ss -> first : takeWhile (\(dt, _) -> not (isNaN dt) && dt >= 0) ss
 
 -- | @forAllStreams gen prop@: @prop@ for streams from @gen@, shrunk with
 -- 'shrinkStream' and printed with 'showStream' when one fails.

@@ -91,15 +91,19 @@ sMerge f s1 s2 = fromTimed (mergeTimed (toTimed s1) (toTimed s2))
       | otherwise = (t2, y) : mergeTimed xs ys'
 
 -- | @sConcat s1 dt s2@: @s1@, then @s2@ starting @dt@ after @s1@'s last
--- sample.
+-- sample. A @dt@ that is negative or NaN (no run takes such a step) is an
+-- error naming it.
 sConcat :: SignalSampleStream a -> DTime -> SignalSampleStream a -> SignalSampleStream a
+sConcat _  dt _ | isNaN dt || dt < 0 =
+  error ("AFRP.Test.Stream.sConcat: the time step must be a number >= 0, got " ++ show dt)
 sConcat s1 _  []             = s1
 sConcat s1 dt ((_, a) : s2') = s1 ++ ((dt, a) : s2')
 
 -- | @sRefine maxDT s@ splits every time step longer than @maxDT@ into
 -- equal steps no longer than @maxDT@, repeating the later sample's value
 -- (a zero-order hold looking forward: the new samples already see the
--- value the step leads to). The original sample times are kept.
+-- value the step leads to). The original sample times are kept. A
+-- @maxDT@ that is not a positive number is an error naming it.
 sRefine :: DTime -> SignalSampleStream a -> SignalSampleStream a
 sRefine = sRefineWith (\_ new -> new)
 
@@ -107,12 +111,16 @@ sRefine = sRefineWith (\_ new -> new)
 -- sample's value @interpolate previous next@ (the original samples keep
 -- their own values).
 sRefineWith :: (a -> a -> a) -> DTime -> SignalSampleStream a -> SignalSampleStream a
-sRefineWith _ _ [] = []
-sRefineWith interpolate maxDT (s0 : ss) = s0 : go (snd s0) ss
+sRefineWith interpolate maxDT s0
+  | isNaN maxDT || maxDT <= 0 =
+      error ("AFRP.Test.Stream.sRefine: the longest time step must be a number > 0, got " ++ show maxDT)
+  | otherwise = case s0 of
+      []         -> []
+      first : ss -> first : go (snd first) ss
   where
     go _ [] = []
     go prev ((dt, a) : rest)
-      | maxDT > 0 && dt > maxDT =
+      | dt > maxDT =
           let ratio  = dt / maxDT
               pieces | ratio <= fromIntegral maxPieces = ceiling ratio :: Int
                      | otherwise = error ("AFRP.Test.Stream.sRefine: a time step of " ++ show dt
@@ -135,8 +143,9 @@ sClipAfterFrame n = take (max 1 n)
 -- | @sClipAfterTime t s@ keeps the samples at times up to @t@ (the first
 -- always), with the relative slack of 'timeSlack': three steps of 0.1 end
 -- at 0.30000000000000004, which is at time 0.3 here, as for
--- 'AFRP.Test.LTL.eventuallyWithin'.
+-- 'AFRP.Test.LTL.eventuallyWithin'. A NaN time is an error naming it.
 sClipAfterTime :: DTime -> SignalSampleStream a -> SignalSampleStream a
+sClipAfterTime t _ | isNaN t = error "AFRP.Test.Stream.sClipAfterTime: the time is NaN"
 sClipAfterTime t s = case zip (sampleTimes s) s of
   []            -> []
   (_, x0) : xs  -> x0 : map snd (takeWhile ((<= t + timeSlack t) . fst) xs)
@@ -168,8 +177,9 @@ sClipBeforeFrame n s = restart (drop (min (max 0 n) (length s - 1)) s)
 -- | @sClipBeforeTime t s@ drops the samples before time @t@, keeping at
 -- least the last; the first kept sample becomes time 0. A sample within
 -- 'timeSlack' of @t@ is at @t@ (kept), as for 'sClipAfterTime': the two
--- agree on which sample is at @t@.
+-- agree on which sample is at @t@. A NaN time is an error naming it.
 sClipBeforeTime :: DTime -> SignalSampleStream a -> SignalSampleStream a
+sClipBeforeTime t _ | isNaN t = error "AFRP.Test.Stream.sClipBeforeTime: the time is NaN"
 sClipBeforeTime t s = sClipBeforeFrame (length (takeWhile (< t - timeSlack t) (sampleTimes s))) s
 
 -- | @evalSF sf s@ runs @sf@ on the stream: its outputs, each with the time

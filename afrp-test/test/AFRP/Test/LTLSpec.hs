@@ -1,5 +1,7 @@
 module AFRP.Test.LTLSpec (spec) where
 
+import           Control.Exception (evaluate)
+import           System.Timeout   (timeout)
 import           Test.Hspec
 import           Test.QuickCheck
 
@@ -103,6 +105,16 @@ spec = do
       evalT (eventuallyWithin 0.25 (is (== 3))) count `shouldBe` False
     it "eventuallyWithin is true when the stream ends before the deadline" $
       evalT (Always (Implies (is (== 8)) (eventuallyWithin 1 (is (== 20))))) count `shouldBe` True
+    it "eventuallyWithin and alwaysFor refuse a negative or NaN bound" $ do
+      evaluate (evalT (eventuallyWithin (-1) (is (== 3))) count) `shouldThrow`
+        errorCall "AFRP.Test.LTL.eventuallyWithin: the time bound must be a number >= 0, got -1.0"
+      evaluate (evalT (alwaysFor (0 / 0) (is (< 5))) count) `shouldThrow`
+        errorCall "AFRP.Test.LTL.alwaysFor: the time bound must be a number >= 0, got NaN"
+      evalT (alwaysFor (1 / 0) (is (< 10))) count `shouldBe` True
+    it "a window reads only its own samples: 200,000 samples are no hang (each window counted the whole rest)" $ do
+      let long = (0, 0) : [ (0.01, k) | k <- [1 .. 200000 :: Int] ]
+      r <- timeout (120 * 1000000) (evaluate (evalT (Always (eventuallyWithin 0.05 (SP (arr (>= 0))))) long))
+      r `shouldBe` Just True
     it "alwaysFor looks only inside its window" $ do
       evalT (alwaysFor 0.45 (is (< 5))) count `shouldBe` True
       evalT (alwaysFor 0.5 (is (< 5))) count `shouldBe` False

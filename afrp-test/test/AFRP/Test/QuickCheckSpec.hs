@@ -34,6 +34,14 @@ spec = do
     it "fixedDelayStreamWith gives each sample the value at its time" $
       forAll (fixedDelayStreamWith (* 2) 0.25) $ \s ->
         all (\(t, x) -> abs (x - 2 * t) < 1e-9) (zip (sampleTimes s) (samples (s :: SignalSampleStream Double)))
+    it "a bound of the range below a millionth is kept (steps were raised to 1e-6)" $
+      conjoin
+        [ forAll (uniDistStreamMaxDT 1e-9) $ \s ->
+            wellFormed (s :: SignalSampleStream ()) && all ((<= 1e-9) . fst) s
+        , forAll (generateStream DistRandom (Just 0, Just 1e-9) (Just (Left 20))) $ \s ->
+            wellFormed (s :: SignalSampleStream ()) && all ((<= 1e-9) . fst) s
+        , forAll (fixedDelayStream 1e-7) $ \s ->
+            all ((== 1e-7) . fst) (drop 1 (s :: SignalSampleStream ())) ]
     it "uniDistStreamMaxDT streams are well formed" $
       forAll (uniDistStreamMaxDT 0.5) $ \s ->
         wellFormed (s :: SignalSampleStream ()) && all ((<= 0.5) . fst) s
@@ -49,6 +57,11 @@ spec = do
       fails (refused DistRandom (Nothing, Nothing) (Just (Right (1 / 0))))
       fails (refused DistConstant (Nothing, Nothing) (Just (Right (0 / 0))))
       fails (refused DistRandom (Nothing, Nothing) (Just (Right (-1))))
+    it "a range with no positive step; a length in time the steps cannot reach (it hung or came out short)" $ do
+      fails (refused DistConstant (Just 0, Just 0) (Just (Left 3)))
+      fails (refused DistRandom (Nothing, Just 0) Nothing)
+      fails (refused DistConstant (Just 1, Just 1) (Just (Right 1e300)))
+      fails (refused DistRandom (Just 0.5, Just 1) (Just (Right 1e17)))
     it "a normal distribution that is not one, or that misses the range (instead of drawing forever)" $ do
       fails (refused (DistNormal (1, 0)) (Just 2, Nothing) (Just (Left 3)))
       fails (refused (DistNormal (0.1, -1)) (Nothing, Nothing) (Just (Left 3)))
@@ -104,6 +117,10 @@ spec = do
           let times = [ read (words l !! 2) :: Double | l <- drop 2 (lines shown) ]
           last times `shouldSatisfy` (>= 3 - 1e-9)
         _ -> expectationFailure "no counterexample shown"
+    it "showStream prints a stream with a step no run takes (it raised the runner's error)" $
+      drop 2 (lines (showStream [(0, 'a'), (0.5, 'b'), (-1, 'c'), (0 / 0, 'd')]))
+        `shouldBe` [ "    0    0.0         0.0         'a'", "    1    0.5         0.5         'b'"
+                   , "    2    -1.0        -           'c'", "    3    NaN         -           'd'" ]
     it "showStream keeps its columns apart when a value is wider than its column" $
       lines (showStream [(0, 'a'), (2.0321708771485576, 'b')]) !! 3
         `shouldBe` "    1    2.0321708771485576 2.0321708771485576 'b'"

@@ -53,6 +53,18 @@ spec = do
     it "sRefine refuses to cut one step into more samples than memory holds (fixed)" $ do
       evaluate (length (sRefine 1e-300 [(0, 'a'), (1e300, 'b')])) `shouldThrow` anyErrorCall
       length (sRefine 0.25 [(0, 'a'), (1, 'b')]) `shouldBe` 5
+    it "sRefine refuses a longest step that is not a positive number (it left the stream as it was)" $
+      mapM_ (\m -> evaluate (length (sRefine m [(0, 'a'), (1, 'b')])) `shouldThrow`
+                     errorCall ("AFRP.Test.Stream.sRefine: the longest time step must be a number > 0, got " ++ show m))
+            [0, -1, 0 / 0]
+    it "sConcat, sClipAfterTime and sClipBeforeTime refuse a step or time no run has (NaN, a negative step)" $ do
+      let s = [(0, 'a'), (1, 'b')]
+      evaluate (length (sConcat s (-1) s)) `shouldThrow`
+        errorCall "AFRP.Test.Stream.sConcat: the time step must be a number >= 0, got -1.0"
+      evaluate (length (sConcat s (0 / 0) s)) `shouldThrow` anyErrorCall
+      evaluate (length (sClipAfterTime (0 / 0) s)) `shouldThrow` errorCall "AFRP.Test.Stream.sClipAfterTime: the time is NaN"
+      evaluate (length (sClipBeforeTime (0 / 0) s)) `shouldThrow` errorCall "AFRP.Test.Stream.sClipBeforeTime: the time is NaN"
+      map fst (sConcat s 0 s) `shouldBe` [0, 1, 0, 1]
     it "sMerge samples at every time of either stream (fixed)" $
       sMerge (+) [(0, 1), (1, 2)] [(0, 10), (0.5, 20), (0.5, 30 :: Int)]
         `shouldBe` [(0, 11), (0.5, 20), (0.5, 32)]
