@@ -96,13 +96,21 @@ after t x
 -- each at the first sample whose local time has reached it. No backlog: if a time
 -- step spans several periods, one occurrence is produced and the schedule
 -- moves on to the first period boundary after the current time. There is
--- no occurrence at time 0. A non-positive period is an error. A period
--- too small for the local time to count its boundaries (below about
--- 5.6e-309 of the time: a subnormal period after some seconds) gives an
--- occurrence at every sample that moves the time on.
+-- no occurrence at time 0. A non-positive period is an error; an
+-- infinite one never occurs, as @'after' (1/0)@.
+--
+-- Where the boundaries cannot be told apart: once an occurrence comes at
+-- a local time @t@ with @p <= 2^-48 * t@ (the period no longer than the
+-- 'reached' tolerance at that time, so that several boundaries count as
+-- reached at once: @p = 1e-13@ after 1000 s, a subnormal period after a
+-- second), every later sample that moves the local time on (as the clock
+-- reads it) has an occurrence, and a sample that does not move it has
+-- none. An occurrence at an infinite local time is the last: no boundary
+-- lies after it.
 repeatedly :: Time -> b -> SF a (Event b)
 repeatedly p x
   | p <= 0 || isNaN p = errPeriod "repeatedly" p
+  | isInfinite p      = never
   | otherwise         = SF (initN (\_ -> (# go clockZero 1, NoEvent #)))
   where
     go !clock !n = NStep (\dt _ ->
@@ -111,19 +119,22 @@ repeatedly p x
       in if reached (fromIntegral n * p) t
            then (# after' clock' t n, Event x #)
            else (# go clock' n, NoEvent #))
-    -- (what follows an occurrence: the next boundary, or, once the
-    -- period is too small for the local time to count its boundaries in
-    -- a 'Double' (t / p infinite: a period below some 5.6e-309 of the
-    -- time), an occurrence at every sample that moves the time on, as
-    -- each such sample passes at least one boundary)
+    -- (what follows an occurrence: the next boundary not reached; once
+    -- the period is within the tolerance of 'reached' at the local time,
+    -- an occurrence at every sample that moves the time on; after an
+    -- infinite time, none)
     after' clock' t n
-      | isInfinite (t / p) && not (isInfinite t) = fine clock'
-      | otherwise                                = go clock' (nextIndex t (n + 1))
+      | isInfinite t              = neverN
+      | p <= timeTolerance * t    = fine clock'
+      | otherwise                 = go clock' (nextIndex t (n + 1))
     fine !clock = NStep (\dt _ ->
       let !clock' = tick clock dt
       in if clockTime clock' > clockTime clock then (# fine clock', Event x #) else (# fine clock', NoEvent #))
     -- The first period boundary that t has not reached, starting the
-    -- search at floor (t / p) so that even a huge step costs O(1).
+    -- search at floor (t / p) so that even a huge step costs O(1). (With
+    -- p above the tolerance of 'reached' at t, at most one boundary past
+    -- t / p counts as reached, and floor (t / p) is off by at most one:
+    -- four looks ahead find it.)
     nextIndex :: Time -> Integer -> Integer
     nextIndex t n0 = firstAbove (4 :: Int) (max n0 (floor (t / p)))
       where firstAbove k n | k > 0, reached (fromIntegral n * p) t = firstAbove (k - 1) (n + 1)
@@ -372,7 +383,10 @@ sample p
 -- rounding. Where the periods cannot be counted (a step that lands more
 -- than @2^53@ periods beyond, an infinite time, or a period too small to
 -- move a clock showing that time), the current time is taken as the last
--- instant, and the window is filled with the input.
+-- instant, and the window is filled with the input. A sample whose time
+-- step is 0 passes no instant (elsewhere this is what the count gives; in
+-- those cases, where every instant counts as reached, it kept filling
+-- the window at samples where no time passed).
 sampleWindow :: Int -> Time -> SF a (Event [a])
 sampleWindow w p
   | w < 1     = error ("AFRP.EventSource.sampleWindow: window size must be at least 1, got "
@@ -383,7 +397,7 @@ sampleWindow w p
     -- clock: local time now; due: the last sampling instant so far.
     go !clock !due !win = NStep (\dt a ->
       let !clock' = tick clock dt
-      in case crossings clock' due of
+      in if dt == 0 then (# go clock due win, NoEvent #) else case crossings clock' due of
         (# due', k #)
           | k == 0    -> (# go clock' due' win, NoEvent #)
           | otherwise ->

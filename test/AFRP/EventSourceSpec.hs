@@ -49,8 +49,10 @@ spec = do
       embed (after 1.5e308 ()) ((), [(1e308, Nothing), (1e308, Nothing)]) `withoutHanging` [NoEvent, NoEvent, Event ()]
       embed (after (1 / 0) ()) ((), [(1e308, Nothing), (1e308, Nothing)]) `withoutHanging` [NoEvent, NoEvent, NoEvent]
     it "repeatedly over a step of more periods than a Double counts ends (it hung): one occurrence a sample" $ do
-      embed (repeatedly 1 ()) ((), [(1, Nothing), (1e30, Nothing), (1, Nothing)])
-        `withoutHanging` [NoEvent, Event (), Event (), Event ()]
+      -- (after 1e30 s a period of 1 is within the time's tolerance: a
+      -- sample that does not move the clock's reading has none)
+      embed (repeatedly 1 ()) ((), [(1, Nothing), (1e30, Nothing), (1, Nothing), (1e15, Nothing)])
+        `withoutHanging` [NoEvent, Event (), Event (), NoEvent, Event ()]
       length (embed (repeatedly 1e-300 ()) ((), replicate 3 (1, Nothing))) `shouldBe` 4
     it "repeatedly with a period too small for the time to count its boundaries occurs at every sample that moves on" $ do
       -- (t / p overflowed: the next boundary became infinite, and it never occurred again)
@@ -59,6 +61,19 @@ spec = do
         `withoutHanging` [NoEvent, Event 'x', NoEvent, Event 'x']
       -- (a small normal period goes on counting)
       embed (repeatedly 1e-300 'x') ((), replicate 3 (1, Nothing)) `withoutHanging` (NoEvent : replicate 3 (Event 'x'))
+    it "repeatedly has no occurrence at a sample where no time passes, whatever the period (it had, below 1e-16 of the time)" $ do
+      let zeros = replicate 3 (0, Nothing)
+      embed (repeatedly 1e-13 ()) ((), (1000, Nothing) : zeros ++ [(1, Nothing)])
+        `withoutHanging` [NoEvent, Event (), NoEvent, NoEvent, NoEvent, Event ()]
+      embed (repeatedly 1e-12 ()) ((), (1e4, Nothing) : zeros) `withoutHanging` [NoEvent, Event (), NoEvent, NoEvent, NoEvent]
+      -- (a period just above the tolerance still counts its boundaries)
+      embed (repeatedly 1e-11 ()) ((), [(1000, Nothing), (0, Nothing), (5e-12, Nothing), (1e-11, Nothing)])
+        `withoutHanging` [NoEvent, Event (), NoEvent, NoEvent, Event ()]
+    it "repeatedly occurs once at an infinite time, then never; an infinite period never" $ do
+      embed (repeatedly 1 ()) ((), [(1, Nothing), (1 / 0, Nothing), (0, Nothing), (1, Nothing)])
+        `withoutHanging` [NoEvent, Event (), Event (), NoEvent, NoEvent]
+      embed (repeatedly (1 / 0) ()) ((), [(1e308, Nothing), (1 / 0, Nothing), (1, Nothing)])
+        `withoutHanging` [NoEvent, NoEvent, NoEvent, NoEvent]
     it "after NaN is an error naming after" $
       evaluate (after (0 / 0) ()) `shouldThrow` (\(ErrorCall m) -> "after" `isInfixOf` m && not ("afterEach" `isInfixOf` m))
     it "delayEvent and delayEventCat by infinity never occur" $ do
@@ -301,6 +316,13 @@ spec = do
         `withoutHanging` [n, e "bb", e "cc"]
       runSamples (sampleWindow 2 1) [(0, 'a'), (1 / 0, 'b'), (1, 'c')]
         `withoutHanging` [n, e "bb", e "cc"]
+    it "has no instant at a sample where no time passes (it filled the window where every instant counts as reached)" $ do
+      runSamples (sampleWindow 2 1e-13) [(0, 'a'), (1000, 'b'), (0, 'c'), (0, 'd'), (1, 'e')]
+        `withoutHanging` [n, e "bb", n, n, e "ee"]
+      runSamples (sampleWindow 2 1) [(0, 'a'), (1 / 0, 'b'), (0, 'c'), (1, 'd')]
+        `withoutHanging` [n, e "bb", n, e "dd"]
+      runSamples (sampleWindow 2 0.5) [(0, 'a'), (0.5, 'b'), (0, 'c'), (0.5, 'd')]
+        `shouldBe` [n, e "b", n, e "bd"]
     it "after a step spanning many periods, the instants stay on the multiples of the period" $
       -- 20,000 periods of 0.5 in one step (counted at once), then steps of 0.25
       runSamples (sampleWindow 2 0.5) ((0, 0) : (10000.25, 1) : [ (0.25, k) | k <- [2 .. 6 :: Int] ])
