@@ -33,7 +33,7 @@ import           Control.Concurrent     (forkFinally)
 import           Control.Concurrent.Chan
 import           Control.Concurrent.MVar
 import           Control.Concurrent.QSem
-import           Control.Exception      (SomeAsyncException, SomeException, mask_, toException, try)
+import           Control.Exception      (SomeAsyncException, SomeException, bracket, mask_, toException, try)
 import           Control.Monad          (unless, when)
 import           Data.IORef
 import           Data.Maybe             (isJust)
@@ -113,11 +113,11 @@ pipeline batch produce consume xs = do
   -- 'Control.Exception.BlockedIndefinitelyOnMVar', before the producer
   -- hands over the batch it was filling, and those elements would be lost
   -- (on several capabilities, where the consumer waits more often).
-  anchor <- newStablePtr queue
-  _ <- forkFinally consumer (\_ -> putMVar done ())
-  ended <- try (producer 0 xs)
-  ended' <- finish ended
-  freeStablePtr anchor
+  -- (the pointer freed whatever ends the run)
+  ended' <- bracket (newStablePtr queue) freeStablePtr $ \_ -> do
+    _ <- forkFinally consumer (\_ -> putMVar done ())
+    ended <- try (producer 0 xs)
+    finish ended
   stopped <- readIORef failed
   pure (ended', stopped)
 

@@ -100,7 +100,7 @@ import qualified Data.ByteString.Internal  as BU (accursedUnutterablePerformIO)
 import qualified Data.ByteString.Unsafe    as BU (unsafeUseAsCStringLen)
 import           GHC.ByteOrder             (ByteOrder (..), targetByteOrder)
 import           Numeric                   (showHex)
-import           Control.Exception         (IOException, catch, evaluate, finally, mask, try, uninterruptibleMask_)
+import           Control.Exception         (IOException, catch, evaluate, finally, mask, mask_, try, uninterruptibleMask_)
 import           System.Directory          (getTemporaryDirectory, removeFile)
 import           System.FilePath           (takeDirectory)
 import           System.IO
@@ -277,7 +277,8 @@ fnvBasis = 14695981039346656037
 -- The page is 'replayPage' of the log ('readLogFile'), made as a run's
 -- page is: the log is read a line at a time ('foldLogFile'), each frame's
 -- line written to a temporary file (in the system's temporary folder,
--- removed after) and streamed into the page. Its memory is one line's,
+-- removed from it as soon as it is made, and read back through its open
+-- handle) and streamed into the page. Its memory is one line's,
 -- however long the log: the page of a 37 MB log (ten minutes of the
 -- default world) took 16 MB and 2.8 s; read whole, it took 410 MB and
 -- 15 s (and a one-hour log 2.5 GB).
@@ -344,9 +345,10 @@ newReplayRecorder cfg = do
 -- The frames' temporary file, made in the folder given, open for
 -- writing and then reading back ('rewind'), block-buffered, and removed
 -- from the folder at once: the path still to remove at the end, if the
--- system would not remove an open file.
+-- system would not remove an open file. (Masked: a signal cannot come
+-- between making the file and removing it, and leave it behind.)
 openSpool :: FilePath -> IO (Maybe FilePath, Handle)
-openSpool tmp = do
+openSpool tmp = mask_ $ do
   (path, h) <- openBinaryTempFile tmp "afrp-replay.frames"
   hSetBuffering h (BlockBuffering Nothing)
   removed <- try (removeFile path)

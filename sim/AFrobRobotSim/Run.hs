@@ -219,20 +219,25 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
         (ml, mr) -> [ logSink <$> ml, uncurry (replaySink thinNote) <$> mr ]
       -- A step counts as simulated once the sinks that only keep it in
       -- memory (the SVG's track, the result line's tallies, which cannot
-      -- fail) have taken it, before those that write it (the messages,
-      -- the log, the page, the frames, the progress line): a write that
-      -- fails, at this step, leaves the outputs before it in the list
-      -- with this step, and the summary says it was simulated, so that no
-      -- output holds a step past the summary's.
+      -- fail) have taken it, before those that write it (the log, the
+      -- page, the frames, then the messages and the progress line): a
+      -- write that fails, at this step, leaves the outputs before it in
+      -- the list with this step, and the summary says it was simulated,
+      -- so that no output holds a step past the summary's. The files come
+      -- before the terminal's lines, which may fail (a closed pipe) or
+      -- wait (a pipe nobody reads, where a signal can come in the middle
+      -- of the step: 'mask_' holds a signal off only until a write
+      -- waits), so that the files have every step the summary counts.
       inMemory = catMaybes [ svg, result ]
-      writing  = messages ++ catMaybes (logAndReplay ++ [ frames ]) ++ progressLine
+      writing  = catMaybes (logAndReplay ++ [ frames ]) ++ messages ++ progressLine
       sinkAll n s = do
         mapM_ (\k -> sinkStep k n s) inMemory
         writeIORef stepsRef $! n + 1
         mapM_ (\k -> sinkStep k n s) writing
       -- (on one capability, Ctrl-C and SIGTERM come between two steps'
-      -- outputs, not in the middle of one's: every output then ends at
-      -- the same step)
+      -- outputs, not in the middle of one's, unless a write waits: then
+      -- on the terminal's lines, after the files have the step; every
+      -- file then ends at the same step)
       loop !_ [] = pure Finished
       loop !n (s : rest) = do
         _ <- evaluate (forceWorldState s)

@@ -140,6 +140,9 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- makes the file @spinning@ and loops for ever without allocating.
 -- @heldtwice@: the same, with a second @SIGTERM@ sent to itself (after
 -- 300 ms) before the loop (200 ms after that).
+-- @talker@: ten simulated hours, the log and the page, a SimbotA that
+-- prints a line at every step that has a frame (the log's), for the
+-- parent to close its standard output.
 -- @holdoff@: the same, but after the signal it waits 'stuckGrace' + 3
 -- seconds, then takes the stop: prints @stopped@ and ends with exit code
 -- 0.
@@ -176,6 +179,9 @@ child arg = case break (== ':') arg of
   ("piped", _ : dir) -> runSimWith defaultSimOptions
     { optSeconds = 36000, optQuiet = True, optFrames = False, optOut = dir
     , optLog = Just (dir </> "log.fifo"), optSvg = Just (dir </> "run.svg"), optReplay = Nothing } Nothing drive drive
+  ("talker", _ : dir) -> runSimWith defaultSimOptions
+    { optSeconds = 36000, optQuiet = False, optFrames = False, optOut = dir, optSvg = Nothing
+    , optLog = Just (dir </> "run.jsonl"), optReplay = Just (dir </> "run.html") } (Just world) talker drive
   ("held", _ : dir) -> heldThenSpin dir (pure ())
   ("heldtwice", _ : dir) -> heldThenSpin dir (threadDelay 300000 >> raiseSignal sigTERM >> threadDelay 200000)
   ("holdoff", _ : dir) -> do
@@ -207,10 +213,20 @@ child arg = case break (== ':') arg of
     -- (keeps 10,000 more numbers at every step, all of them read)
     hoarder _ = arr (const ()) >>> sscan (\xs _ -> let ys = [0 .. 9999 :: Int] ++ xs in sum ys `seq` ys) []
                 >>> arr (\kept -> mrFinalize (ddVelDiff (if null kept then 0 else 0.1) 0.1))
+    -- (a line at steps 0, 4, 8, ...: those with a frame, at 25 frames a
+    -- second and steps of 0.01 s)
+    talker _ = sscan (\k _ -> k + 1) (0 :: Int)
+               >>> arr (\k -> mrFinalize (ddVelDiff 0.5 0.5 `mrMerge`
+                                         tcoPrintMessage (if k `mod` 4 == 1 then Event "a frame" else NoEvent)))
     -- (an output that depends on itself with no delay: <<loop>>)
     selfish _ = loop (arr (\(_, o) -> (o, o)))
     -- (the same from 0.3 s on, after 30 steps that run)
     lateSelfish _ = localTime >>> arr (\t -> if t < 0.3 then mrFinalize (ddVelDiff 0.5 0.5) else let o = o in o)
+
+-- The last element, if any.
+lastMaybe :: [x] -> Maybe x
+lastMaybe [] = Nothing
+lastMaybe xs = Just (last xs)
 
 -- | The ways a run is stopped from outside: a name, how to send it to
 -- the child, the exit code expected, and the capabilities to run with.
@@ -583,6 +599,28 @@ spec = do
       getProcessExitCode ph `shouldReturn` Nothing
       interruptProcessGroupOf ph
       waitForProcess ph `shouldReturn` ExitFailure 130
+  describe "a closed standard output (simbot | head)" $ forM_ [1, 2] $ \caps ->
+    it ("stops the run, the log and the page holding every step the summary counts (+RTS -N" ++ show caps ++ ")") $
+      withTempDir $ \dir -> do
+        talking <- childOn "talker" dir caps
+        (_, Just hout, _, ph) <- createProcess talking { std_out = CreatePipe, std_err = CreatePipe }
+        _ <- hGetLine hout
+        hClose hout
+        done <- timeout 60000000 (waitForProcess ph)
+        _ <- maybe (killChild ph) pure done
+        done `shouldBe` Just (ExitFailure 1)
+        logRead <- readLogFile (dir </> "run.jsonl")
+        -- (each line came at a step with a frame, so the write that
+        -- failed was at one: the summary counts that step, and so must
+        -- the log; the messages were written before the log's line)
+        case logRead of
+          Left err -> expectationFailure err
+          Right rl -> case rlSummary rl of
+            Nothing -> expectationFailure "no summary"
+            Just sm -> do
+              fmap ("the run stopped: a write failed: " `isPrefixOf`) (lsFailure sm) `shouldBe` Just True
+              map lfTime (rlFrames rl) `shouldBe` [ fromIntegral k * 0.04 | k <- [0 .. (lsSteps sm - 1) `div` 4] ]
+              fmap lfTime (lastMaybe (rlFrames rl)) `shouldBe` Just (lsSimulated sm)
   describe "Ctrl-C and SIGTERM" $ forM_ stops $ \(name, send, expected, caps) ->
     it ("stop with exit code " ++ show expected ++ " (" ++ name ++ "), the summary, whole frames, a log with its summary and the page (+RTS -N"
         ++ show caps ++ ")") $ withTempDir $ \dir -> do
