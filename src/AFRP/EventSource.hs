@@ -377,10 +377,10 @@ sample p
 -- Memory and time stay bounded whatever one step spans: the samples of one
 -- step are all the same input, so a step that spans more periods than the
 -- window holds fills the window with that input and no more. When a step
--- spans more than @max w 4096@ periods, the rest of them are counted at
--- once (a multiple of @p@ added to the clock in one sum), so that the
--- following instants may differ from the period-by-period sum by its
--- rounding. Where the periods cannot be counted (a step that lands more
+-- spans more than 4096 periods, the rest of them are counted at once (a
+-- multiple of @p@ added to the clock in one sum), so that the following
+-- instants may differ from the period-by-period sum by its rounding; a
+-- window of any size (@maxBound@ included) costs no more. Where the periods cannot be counted (a step that lands more
 -- than @2^53@ periods beyond, an infinite time, or a period too small to
 -- move a clock showing that time), the current time is taken as the last
 -- instant, and the window is filled with the input. A sample whose time
@@ -402,12 +402,15 @@ sampleWindow w p
           | k == 0    -> (# go clock' due' win, NoEvent #)
           | otherwise ->
               let n     = min k w
-                  !win' = Seq.drop (Seq.length win + n - w) (win Seq.>< Seq.replicate n a)
+                  -- (the old samples that stay, then the new: no size
+                  -- beyond the window's, even at maxBound)
+                  old   = Seq.length win - min (Seq.length win) (w - n)
+                  !win' = Seq.drop old win Seq.>< Seq.replicate n a
               in (# go clock' due' win', Event (foldr (:) [] win') #))
     -- The instants after @due@ up to the clock's time: the last of them,
-    -- and how many there are (exact up to 'jumpAt'; beyond, a count of at
-    -- least 'jumpAt', which is at least the window's size: all the window
-    -- needs).
+    -- and how many there are (one by one up to 'jumpAt', then the rest at
+    -- once; where they cannot be counted, at least the window's size: all
+    -- the window needs).
     crossings :: Clock -> Clock -> (# Clock, Int #)
     crossings clock = count 0
       where
@@ -418,15 +421,16 @@ sampleWindow w p
           | k < jumpAt              = count (k + 1) d'
           -- beyond the window: the periods but the last one or two at once
           | r > 2 && r < 9007199254740992 =
-              count k (tick d (fromIntegral (floor r - 1 :: Int) * p))
+              let skipped = floor r - 1 :: Int
+              in count (k + skipped) (tick d (fromIntegral skipped * p))
           -- the last one or two, while each is a visible step
-          | r <= 2 && clockTime d' > clockTime d = count k d'
+          | r <= 2 && clockTime d' > clockTime d = count (k + 1) d'
           -- further than a Double counts, or no visible step: caught up
-          | otherwise               = (# clock, k #)
+          | otherwise               = (# clock, max k w #)
           where
             d' = tick d p
             r  = (t - clockTime d) / p
-    jumpAt = max w 4096
+    jumpAt = 4096 :: Int
 
 errNeg :: forall (r :: RuntimeRep) (x :: TYPE r). String -> Double -> x
 errNeg f q = error ("AFRP.EventSource." ++ f ++ ": negative or NaN time, got " ++ show q)

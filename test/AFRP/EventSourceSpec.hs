@@ -323,6 +323,13 @@ spec = do
         `withoutHanging` [n, e "bb", n, e "dd"]
       runSamples (sampleWindow 2 0.5) [(0, 'a'), (0.5, 'b'), (0, 'c'), (0.5, 'd')]
         `shouldBe` [n, e "b", n, e "bd"]
+    it "a huge window costs no more than a small one (it counted the periods one by one up to its size)" $ do
+      let lens = map (fmap length) . drop 1
+      lens (runSamples (sampleWindow 5000 1) [(0, 'a'), (4500.5, 'b'), (2, 'c')]) `shouldBe` [e 4500, e 4502]
+      fmap (fmap (take 2)) (runSamples (sampleWindow maxBound 1) [(0, 'a'), (1e12, 'b'), (1e300, 'c')])
+        `withoutHanging` [n, e "bb", e "cc"]
+      fmap (fmap (take 2)) (runSamples (sampleWindow maxBound 1e-300) [(0, 'a'), (1, 'b')])
+        `withoutHanging` [n, e "bb"]
     it "after a step spanning many periods, the instants stay on the multiples of the period" $
       -- 20,000 periods of 0.5 in one step (counted at once), then steps of 0.25
       runSamples (sampleWindow 2 0.5) ((0, 0) : (10000.25, 1) : [ (0.25, k) | k <- [2 .. 6 :: Int] ])
