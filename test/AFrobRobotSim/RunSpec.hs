@@ -619,7 +619,7 @@ spec = do
             Nothing -> expectationFailure "no summary"
             Just sm -> do
               fmap ("the run stopped: a write failed: " `isPrefixOf`) (lsFailure sm) `shouldBe` Just True
-              map lfTime (rlFrames rl) `shouldBe` [ fromIntegral k * 0.04 | k <- [0 .. (lsSteps sm - 1) `div` 4] ]
+              map lfTime (rlFrames rl) `shouldBe` [ fromIntegral k / 25 | k <- [0 .. (lsSteps sm - 1) `div` 4] ]
               fmap lfTime (lastMaybe (rlFrames rl)) `shouldBe` Just (lsSimulated sm)
   describe "Ctrl-C and SIGTERM" $ forM_ stops $ \(name, send, expected, caps) ->
     it ("stop with exit code " ++ show expected ++ " (" ++ name ++ "), the summary, whole frames, a log with its summary and the page (+RTS -N"
