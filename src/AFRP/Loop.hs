@@ -50,7 +50,7 @@
 -- binding them is matched strictly: after @rec (x, y) <- sf -< e@ the
 -- pair exists only where @sf@'s output pair does, so a 'AFRP.Delay.pre'
 -- there (no output at time 0) fails the run at the second sample, and an
--- @sf@ whose output is undefined at some sample fails it at the next,
+-- @sf@ whose output is an error (bottom) at some sample fails it at the next,
 -- whether or not that output is read. Yampa never evaluates the pair, and
 -- goes on where nobody reads it. Use 'AFRP.Delay.iPre', or a lazy pattern
 -- (@~(x, y) <- sf -< e@).

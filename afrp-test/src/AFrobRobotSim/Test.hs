@@ -89,7 +89,7 @@ defaultWorldMix = WorldMix (0, 12) (0, 4) (0, 3) (1, 5)
 genWorld :: WorldMix -> Bounds -> Gen WorldTemplate
 genWorld mix bounds = case problems of
   p : _ -> error ("AFrobRobotSim.Test.genWorld: " ++ p)
-  []    -> generate'
+  []    -> generateIn mix bounds
   where
     Bounds bx0 by0 bx1 by1 = bounds
     problems =
@@ -99,7 +99,6 @@ genWorld mix bounds = case problems of
          | (name, r@(lo, hi)) <- [ ("mixWalls", mixWalls mix), ("mixBlocks", mixBlocks mix)
                                  , ("mixBalls", mixBalls mix), ("mixRobots", mixRobots mix) ]
          , lo > hi ]
-    generate' = generateIn mix bounds
 
 -- 'genWorld' once its parameters are checked.
 generateIn :: WorldMix -> Bounds -> Gen WorldTemplate
