@@ -100,13 +100,17 @@ after t x
 -- infinite one never occurs, as @'after' (1/0)@.
 --
 -- Where the boundaries cannot be told apart: once an occurrence comes at
--- a local time @t@ with @p <= 2^-48 * t@ (the period no longer than the
--- 'reached' tolerance at that time, so that several boundaries count as
--- reached at once: @p = 1e-13@ after 1000 s, a subnormal period after a
--- second), every later sample that moves the local time on (as the clock
--- reads it) has an occurrence, and a sample that does not move it has
--- none. An occurrence at an infinite local time is the last: no boundary
--- lies after it.
+-- a local time @t@ with @p <= 2^-53 * t@ (the period no longer than one
+-- unit in the last place of @t@: any move of the clock's reading is a
+-- period or more; @p = 1e-14@ after 1000 s, a subnormal period after a
+-- second), every later sample that moves the local time on (as the
+-- clock reads it) has an occurrence, and a sample that does not move it
+-- has none. Above that, the boundaries are counted exactly, even where
+-- several of them count as 'reached' at once (a period within the
+-- tolerance of 'reached', @2^-48 * t@): @repeatedly 1e-12@ after 1000 s,
+-- sampled every 1e-13 s, occurs about once every ten samples. An
+-- occurrence at an infinite local time is the last: no boundary lies
+-- after it.
 repeatedly :: Time -> b -> SF a (Event b)
 repeatedly p x
   | p <= 0 || isNaN p = errPeriod "repeatedly" p
@@ -120,25 +124,35 @@ repeatedly p x
            then (# after' clock' t n, Event x #)
            else (# go clock' n, NoEvent #))
     -- (what follows an occurrence: the next boundary not reached; once
-    -- the period is within the tolerance of 'reached' at the local time,
-    -- an occurrence at every sample that moves the time on; after an
-    -- infinite time, none)
+    -- the period is no longer than one unit in the last place of the
+    -- local time, an occurrence at every sample that moves the time on;
+    -- after an infinite time, none)
     after' clock' t n
-      | isInfinite t              = neverN
-      | p <= timeTolerance * t    = fine clock'
-      | otherwise                 = go clock' (nextIndex t (n + 1))
+      | isInfinite t       = neverN
+      | p <= ulpFloor * t  = fine clock'
+      | otherwise          = go clock' (nextIndex t (n + 1))
     fine !clock = NStep (\dt _ ->
       let !clock' = tick clock dt
       in if clockTime clock' > clockTime clock then (# fine clock', Event x #) else (# fine clock', NoEvent #))
-    -- The first period boundary that t has not reached, starting the
-    -- search at floor (t / p) so that even a huge step costs O(1). (With
-    -- p above the tolerance of 'reached' at t, at most one boundary past
-    -- t / p counts as reached, and floor (t / p) is off by at most one:
-    -- four looks ahead find it.)
+    -- The first period boundary from n0 on that t has not reached. The
+    -- boundaries reached are those up to about (t + tolerance) / p, so the
+    -- search starts there and walks, down or up, to the first one not
+    -- reached ('reached' of n * p falls as n grows): a few steps, even
+    -- after a huge time step, since t / p < 2^53 here.
     nextIndex :: Time -> Integer -> Integer
-    nextIndex t n0 = firstAbove (4 :: Int) (max n0 (floor (t / p)))
-      where firstAbove k n | k > 0, reached (fromIntegral n * p) t = firstAbove (k - 1) (n + 1)
-                           | otherwise                      = n
+    nextIndex t n0
+      | beyond start = down start
+      | otherwise    = up start
+      where
+        start = max n0 (floor ((t + timeTolerance * t) / p))
+        beyond n = not (reached (fromIntegral n * p) t)
+        down n | n > n0, beyond (n - 1) = down (n - 1)
+               | otherwise               = n
+        up n | beyond n  = n
+             | otherwise = up (n + 1)
+    -- 2^-53: a period no longer than this fraction of t is at most one
+    -- unit in the last place of t
+    ulpFloor = 1.1102230246251565e-16 :: Double
 
 -- | @afterEach [(q1, x1), (q2, x2), ...]@ occurs with @x1@ at local time
 -- @q1@, with @x2@ at @q1 + q2@, and so on: each delay is measured from the

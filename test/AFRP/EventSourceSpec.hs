@@ -7,7 +7,10 @@ import           Data.List         (findIndices, isInfixOf, isPrefixOf)
 import           Data.Maybe        (fromMaybe)
 import           Test.Hspec        hiding (after)
 
-import           AFRP
+import           Test.QuickCheck   (Gen, choose, counterexample, elements, forAll, oneof, vectorOf,
+                                    withMaxSuccess)
+
+import           AFRP              hiding (forAll)
 import           TestUtil
 
 -- | An error call whose message (not its location) mentions the text.
@@ -69,6 +72,23 @@ spec = do
       -- (a period just above the tolerance still counts its boundaries)
       embed (repeatedly 1e-11 ()) ((), [(1000, Nothing), (0, Nothing), (5e-12, Nothing), (1e-11, Nothing)])
         `withoutHanging` [NoEvent, Event (), NoEvent, NoEvent, Event ()]
+    it "repeatedly with a period within the tolerance of the time counts its boundaries exactly (it occurred at nearly every sample)" $ do
+      -- (after 1000 s, 1e-12 is about 2^-50 of the time: 'reached' takes
+      -- about four boundaries at once, so the next occurrence waits for
+      -- the clock to pass them; the clock moves in units of about 1.1e-13)
+      let pattern = map (\e -> if isEvent e then '1' else '0') . drop 1
+      pattern (embed (repeatedly 1e-12 ()) ((), (1000, Nothing) : replicate 20 (1e-13, Nothing)))
+        `shouldBe` "100010000000000100000"
+      -- (at one unit in the last place of the time or less, every sample that moves the clock)
+      pattern (embed (repeatedly 1e-14 ()) ((), (1000, Nothing) : replicate 4 (1e-13, Nothing) ++ [(0, Nothing)]))
+        `shouldBe` "111110"
+    it "repeatedly with periods near the tolerance of the time follows the rule: occur when the next boundary is reached, then wait for the first not reached" $
+      withMaxSuccess 2000 $ forAll genNearTolerance $ \(p, dts) ->
+        let samples = [(d, Nothing) | d <- dts]
+            times = drop 1 (embed localTime ((), samples))
+            got = map isEvent (drop 1 (embed (repeatedly p ()) ((), samples)))
+            want = repeatedlyRule p times
+        in counterexample (show (p, dts, got, want)) (take (length want) got == want)
     it "repeatedly occurs once at an infinite time, then never; an infinite period never" $ do
       embed (repeatedly 1 ()) ((), [(1, Nothing), (1 / 0, Nothing), (0, Nothing), (1, Nothing)])
         `withoutHanging` [NoEvent, Event (), Event (), NoEvent, NoEvent]
@@ -342,3 +362,41 @@ spec = do
       forceEvents (runDt 1 (sampleWindow 2 0) [(), ()]) `shouldThrow` anyErrorCall
     it "with a negative period is an error" $
       forceEvents (runDt 1 (sampleWindow 2 (-1)) [(), ()]) `shouldThrow` anyErrorCall
+
+-- | The rule 'repeatedly' documents, written directly: at each sample time
+-- t, an occurrence when boundary n (at n * p) is 'reached'; then n becomes
+-- the first boundary after it that t has not reached, found by doubling
+-- and bisection ('reached' of n * p falls as n grows). The rule is
+-- compared only up to an occurrence at a time where the period is at
+-- most 2^-53 of it (from there on, the documented regime is an
+-- occurrence at every sample that moves the clock).
+repeatedlyRule :: Time -> [Time] -> [Bool]
+repeatedlyRule p = go 1
+  where
+    hit n t = t >= due || due - t <= 3.552713678800501e-15 * abs t
+      where due = fromIntegral n * p
+    go :: Integer -> [Time] -> [Bool]
+    go _ [] = []
+    go n (t : ts)
+      | hit n t   = True : (if p <= 2 ^^ (-53 :: Int) * t then [] else go (firstNotHit t (n + 1)) ts)
+      | otherwise = False : go n ts
+    firstNotHit t lo = bisect lo (grow 1)
+      where
+        grow k = if hit (lo + k) t then grow (2 * k) else lo + k
+        bisect a b
+          | a >= b    = a
+          | otherwise = let m = (a + b) `div` 2 in if hit m t then bisect (m + 1) b else bisect a m
+
+-- | A first step to a time t0, then steps of 0, of about a period, and of
+-- a few units in the last place of t0, with the period from 2^-36 to
+-- 2^-56 of t0: around the tolerance of 'reached' (2^-48) and the unit in
+-- the last place (2^-52).
+genNearTolerance :: Gen (Time, [DTime])
+genNearTolerance = do
+  t0 <- elements [0.3, 1, 10, 1000, 12345.678, 1e6]
+  k <- choose (36, 56 :: Int)
+  frac <- choose (0.5, 2)
+  let p = t0 * frac * 2 ^^ negate k
+  n <- choose (1, 60)
+  steps <- vectorOf n (oneof [pure 0, pure p, pure (p / 10), (* p) <$> choose (0, 50), (* (t0 * 2 ^^ (-52 :: Int))) <$> choose (0, 40)])
+  pure (p, t0 : steps)
