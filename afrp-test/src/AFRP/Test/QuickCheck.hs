@@ -45,6 +45,7 @@ module AFRP.Test.QuickCheck
   ) where
 
 import           Data.List        (nub)
+import           Data.Maybe       (fromMaybe)
 import           Test.QuickCheck
 
 import           AFRP             (DTime)
@@ -56,7 +57,8 @@ data Distribution
   = DistConstant
     -- ^ one time step, drawn from the range, for the whole stream (every
     -- generated time step is positive: a lower bound of 0 means steps
-    -- just above 0)
+    -- just above 0; with a length in time, it is drawn among the steps
+    -- that reach it in 'maxStreamSteps' steps or fewer)
   | DistNormal (DTime, DTime)
     -- ^ each time step drawn from a normal distribution with this mean and
     -- standard deviation, kept inside the range and positive
@@ -96,7 +98,7 @@ generateStreamWith :: (Int -> DTime -> Gen a) -> Distribution -> Range -> Length
 generateStreamWith value dist range len = checked `seq` do
   dts <- case dist of
     DistConstant -> do
-      dt <- deltaIn range
+      dt <- deltaIn reachable
       case len of
         Just (Right t) -> pure (replicate (stepsToReach dt t) dt)
         _              -> (`replicate` dt) <$> stepCount
@@ -117,6 +119,17 @@ generateStreamWith value dist range len = checked `seq` do
          | Just (Right t) <- [len], not (finiteD t && t >= 0) ]
       ++ [ "the normal distribution " ++ show md ++ " needs a finite mean and a finite deviation >= 0"
          | DistNormal md@(mean, dev) <- [dist], not (finiteD mean && finiteD dev && dev >= 0) ]
+      ++ [ "time steps of at most " ++ show hi ++ " cannot reach the length " ++ show t ++ " in "
+           ++ show maxStreamSteps ++ " steps"
+         | Just (Right t) <- [len], Just hi <- [snd range], hi > 0, t / hi > fromIntegral maxStreamSteps ]
+    -- (one step for the whole stream: drawn among those that reach a
+    -- length in time within 'maxStreamSteps' steps, so that a draw near a
+    -- lower bound of 0 is not an error)
+    reachable = case len of
+      Just (Right t) | t > 0 ->
+        let least = t / fromIntegral (maxStreamSteps - 1)
+        in (Just (maybe least (min least) (snd range) `max` fromMaybe 0 (fst range)), snd range)
+      _                      -> range
     stepCount = case len of
       Just (Left n) -> pure (max 0 n)
       _             -> sized (\n -> choose (0, n))
@@ -138,17 +151,20 @@ tooLong dt t = error ("AFRP.Test.QuickCheck.generateStream: time steps like " ++
                       ++ show t ++ " in " ++ show maxStreamSteps ++ " steps")
 
 -- Time steps until their sum reaches t (the last one may pass it); an
--- error after 'maxStreamSteps' steps, or at a step that the sum so far
--- loses in its rounding (which would never reach t).
+-- error after 'maxStreamSteps' steps, or after 1000 steps in a row that
+-- the sum so far loses in its rounding (steps that would never reach t;
+-- one such step now and then, a draw near a lower bound of 0, is kept).
 untilTime :: Gen DTime -> DTime -> Gen [DTime]
-untilTime gen t = go (0 :: Int) 0
+untilTime gen t = go (0 :: Int) (0 :: Int) 0
   where
-    go k elapsed
+    go k lost elapsed
       | elapsed >= t         = pure []
       | k >= maxStreamSteps  = tooLong (elapsed / fromIntegral k) t
       | otherwise = do
           dt <- gen
-          if elapsed + dt == elapsed then tooLong dt t else (dt :) <$> go (k + 1) (elapsed + dt)
+          let elapsed' = elapsed + dt
+              lost' = if elapsed' == elapsed then lost + 1 else 0
+          if lost' >= 1000 then tooLong dt t else (dt :) <$> go (k + 1) lost' elapsed'
 
 -- Neither NaN nor infinite.
 finiteD :: Double -> Bool

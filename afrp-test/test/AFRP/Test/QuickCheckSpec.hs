@@ -42,6 +42,12 @@ spec = do
             wellFormed (s :: SignalSampleStream ()) && all ((<= 1e-9) . fst) s
         , forAll (fixedDelayStream 1e-7) $ \s ->
             all ((== 1e-7) . fst) (drop 1 (s :: SignalSampleStream ())) ]
+    it "DistConstant with a length in time draws a step that reaches it (a draw near a lower bound of 0 was an error)" $
+      -- (steps below 1e-8 take more than 10^8 to reach 1 s: half the range)
+      forAll (generateStream DistConstant (Just 0, Just 2e-8) (Just (Right 1))) $ \s ->
+        case take 2 (s :: SignalSampleStream ()) of
+          [_, (dt, _)] -> dt >= 1 / fromIntegral (maxStreamSteps - 1) && dt <= 2e-8
+          _            -> False
     it "uniDistStreamMaxDT streams are well formed" $
       forAll (uniDistStreamMaxDT 0.5) $ \s ->
         wellFormed (s :: SignalSampleStream ()) && all ((<= 0.5) . fst) s
@@ -62,6 +68,8 @@ spec = do
       fails (refused DistRandom (Nothing, Just 0) Nothing)
       fails (refused DistConstant (Just 1, Just 1) (Just (Right 1e300)))
       fails (refused DistRandom (Just 0.5, Just 1) (Just (Right 1e17)))
+      -- (at once, from the upper bound: it made 10^8 steps first)
+      fails (refused DistRandom (Nothing, Just 1e-9) (Just (Right 1)))
     it "a normal distribution that is not one, or that misses the range (instead of drawing forever)" $ do
       fails (refused (DistNormal (1, 0)) (Just 2, Nothing) (Just (Left 3)))
       fails (refused (DistNormal (0.1, -1)) (Nothing, Nothing) (Just (Left 3)))
