@@ -179,7 +179,8 @@ truths ending m p0 s = go p0
     -- complete, otherwise the samples beyond decide (unknown while the
     -- stream is open; at the end of a closed stream the value given).
     windowed d vs combine unit =
-      [ let elapsed = sampleTimes (fromItsStart suffix)  -- times from the suffix's start
+      [ let elapsed = sampleTimes (sRestart suffix)  -- times from the suffix's start (read lazily: a
+                                                      -- predicate costs time linear in the stream times the window)
             (inWindow, after') = span ((<= d + slack) . fst) (zip elapsed vsFrom)
             slack = timeSlack d
             end | not (null after') = unit
@@ -188,14 +189,6 @@ truths ending m p0 s = go p0
                     Open   -> U
         in foldr (combine . snd) end inWindow
       | (suffix, vsFrom) <- zip (suffixes (take m s)) (suffixes vs) ]
-
--- A suffix of a stream as a stream of its own: its first sample becomes
--- time 0 (as 'sClipBeforeFrame' does, without counting the samples: the
--- window reads only the times it needs, so a predicate costs time linear
--- in the stream times the window).
-fromItsStart :: SignalSampleStream a -> SignalSampleStream a
-fromItsStart []            = []
-fromItsStart ((_, a) : ss) = (0, a) : ss
 
 suffixes :: [x] -> [[x]]
 suffixes [] = []

@@ -31,6 +31,7 @@ module AFRP.Test.Stream
   , sClipAfterTime
   , sClipBeforeFrame
   , sClipBeforeTime
+  , sRestart
   , sampleAt
   , timeSlack
     -- * Running signal functions
@@ -172,7 +173,7 @@ timeSlack t = 1e-9 * max 1e-3 (abs t)
 -- | @sClipBeforeFrame n s@ drops the first @n@ samples, keeping at least
 -- the last; the first kept sample becomes time 0.
 sClipBeforeFrame :: Int -> SignalSampleStream a -> SignalSampleStream a
-sClipBeforeFrame n s = restart (drop (min (max 0 n) (length s - 1)) s)
+sClipBeforeFrame n s = sRestart (drop (min (max 0 n) (length s - 1)) s)
 
 -- | @sClipBeforeTime t s@ drops the samples before time @t@, keeping at
 -- least the last; the first kept sample becomes time 0. A sample within
@@ -181,6 +182,16 @@ sClipBeforeFrame n s = restart (drop (min (max 0 n) (length s - 1)) s)
 sClipBeforeTime :: DTime -> SignalSampleStream a -> SignalSampleStream a
 sClipBeforeTime t _ | isNaN t = error "AFRP.Test.Stream.sClipBeforeTime: the time is NaN"
 sClipBeforeTime t s = sClipBeforeFrame (length (takeWhile (< t - timeSlack t) (sampleTimes s))) s
+
+-- | The stream timed from its own first sample: that sample's time step
+-- becomes 0, the others are kept. A suffix of a stream (@drop n s@) is a
+-- stream of its own this way; it reads only the first sample, so it is
+-- lazy in the rest.
+--
+-- > sRestart [(0.5, 'a'), (0.25, 'b')]  ==  [(0, 'a'), (0.25, 'b')]
+sRestart :: SignalSampleStream a -> SignalSampleStream a
+sRestart []            = []
+sRestart ((_, a) : ss) = (0, a) : ss
 
 -- | @evalSF sf s@ runs @sf@ on the stream: its outputs, each with the time
 -- step of the input sample it answers (the first at time 0), and what @sf@
@@ -210,8 +221,3 @@ toTimed s = zip (sampleTimes s) (samples s)
 
 fromTimed :: [(DTime, a)] -> SignalSampleStream a
 fromTimed xs = zipWith (\tPrev (t, a) -> (t - tPrev, a)) (0 : map fst xs) xs
-
--- A stream cut before its first sample: the new first sample is time 0.
-restart :: SignalSampleStream a -> SignalSampleStream a
-restart []            = []
-restart ((_, a) : ss) = (0, a) : ss

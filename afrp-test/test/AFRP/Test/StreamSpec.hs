@@ -26,6 +26,10 @@ spec = do
     it "sClipBeforeTime restarts the stream at time 0 (fixed)" $
       sClipBeforeTime 1 [(0, 'a'), (0.5, 'b'), (0.5, 'c'), (0.5, 'd')]
         `shouldBe` [(0, 'c'), (0.5, 'd')]
+    it "sRestart times a suffix from its first sample, reading no further (fixed)" $ do
+      sRestart (drop 1 [(0, 'a'), (0.5, 'b'), (0.25, 'c')]) `shouldBe` [(0, 'b'), (0.25, 'c')]
+      sRestart ([] :: SignalSampleStream ()) `shouldBe` []
+      take 1 (sRestart ((2, 'x') : error "the rest is not read")) `shouldBe` [(0, 'x')]
     it "sClipAfterTime keeps the samples up to the time (fixed)" $
       sClipAfterTime 1 [(0, 'a'), (0.5, 'b'), (0.5, 'c'), (0.5, 'd')]
         `shouldBe` [(0, 'a'), (0.5, 'b'), (0.5, 'c')]
