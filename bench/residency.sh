@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Runs the long-running networks for N and 10 N samples, the simulator
 # (10 simbots, the benchmark world, dt = 0.01) for N/10 and N steps, and
-# each stateful combinator inside a loop, and prints the maximum residency
-# that the GHC runtime reports (+RTS -s).
+# each stateful combinator inside a loop, and the testing kit's evalT, and
+# prints the maximum residency that the GHC runtime reports (+RTS -s).
 # Constant space means the two figures of a row agree (within GC sampling
 # noise).
 #   bench/residency.sh [N]      (default N = 1000000: 10^7 samples of each
@@ -41,5 +41,17 @@ for key in edge iEdge edgeJust edgeBy once takeEvents hold accumHold accumBy del
     for m in "$n" "$((n * 10))"; do
       printf '%-14s %12s %22s\n' "loop $v" "$m" "$(residency --loop "$v" "$m")"
     done
+  done
+done
+# The testing kit's evalT on a stream made lazily (afrp-test/bench/LTLResidency.hs):
+# the predicates whose outermost Always/Eventually/Until look a bounded way
+# ahead. (A future operator nested in another, its "nested" kind, is
+# linear in the stream by design and is left out: 10^7 samples take GBs.)
+cabal build -v0 --enable-benchmarks afrp-test:bench:afrp-test-residency
+kit=$(cabal list-bin -v0 --enable-benchmarks afrp-test-residency)
+for key in always implies eventually until window; do
+  for m in "$n" "$((n * 10))"; do
+    printf '%-14s %12s %22s\n' "evalT $key" "$m" \
+      "$("$kit" "$key" "$m" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}')"
   done
 done

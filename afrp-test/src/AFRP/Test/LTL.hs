@@ -1,4 +1,5 @@
-{-# LANGUAGE GADTs #-}
+{-# LANGUAGE BangPatterns #-}
+{-# LANGUAGE GADTs        #-}
 -- |
 -- Module      : AFRP.Test.LTL
 -- Description : Linear temporal logic over signal functions on finite
@@ -123,10 +124,45 @@ checkBound name d
 -- at the end of the stream given for each constructor. The empty stream
 -- has no time 0: every predicate is true on it (so there @Not p@ is not
 -- the complement of @p@); the generators never produce it.
+--
+-- Memory: the outermost 'Always', 'Eventually' and 'Until' (and the
+-- connectives above them) are folded from time 0 on, stopping as soon as
+-- the answer is known, so a predicate whose operators under them look at
+-- most a bounded way ahead ('SP', the connectives, 'Next', the time-bounded
+-- forms) runs in memory bounded by that look-ahead on a stream made
+-- lazily (the stream itself is kept only by whoever else holds it). A
+-- future operator nested inside another ('Always' (... 'Eventually' ...))
+-- needs the truths of the whole stream at once: memory linear in it.
 evalT :: TPred a -> SignalSampleStream a -> Bool
-evalT p s = case truths Closed (length s) p s of
-  []      -> True
-  (v : _) -> v == T
+evalT _ [] = True
+evalT p0 s = atStart p0 == T
+  where
+    -- (the truth at time 0; every truth list is as long as the stream,
+    -- which is not empty)
+    atStart p = case p of
+      And a b      -> min (atStart a) (atStart b)
+      Or a b       -> max (atStart a) (atStart b)
+      Not a        -> notTri (atStart a)
+      Implies a b  -> max (notTri (atStart a)) (atStart b)
+      -- (at the end of the closed stream: 'Always' meets true, 'Eventually' false)
+      Always a     -> foldStoppingAt F min T (everywhere a)
+      Eventually a -> foldStoppingAt T max F (everywhere a)
+      Until a b    -> untilFromStart T F (zip (everywhere a) (everywhere b))
+      _            -> case everywhere p of
+        v : _ -> v
+        []    -> T
+    everywhere p = truths Closed maxBound p s
+    foldStoppingAt stop op = go
+      where go !acc (v : vs) | acc /= stop = go (op acc v) vs
+            go acc _                       = acc
+    -- @a `Until` b@ at time 0 is the disjunction, over the samples i, of
+    -- b at i with a at every sample before i, and of a everywhere with
+    -- the end's true: left to right, with @before@ the conjunction of a
+    -- so far and @acc@ the disjunction so far.
+    untilFromStart !before !acc vs = case vs of
+      _ | acc == T || before == F -> acc
+      []                          -> max acc before
+      (va, vb) : rest             -> untilFromStart (min before va) (max acc (min before vb)) rest
 
 -- Three truth values: false, unknown (decided by samples not yet seen),
 -- true; 'min' is conjunction and 'max' disjunction (Kleene's logic).

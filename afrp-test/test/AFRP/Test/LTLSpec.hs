@@ -115,6 +115,14 @@ spec = do
       let long = (0, 0) : [ (0.01, k) | k <- [1 .. 200000 :: Int] ]
       r <- timeout (120 * 1000000) (evaluate (evalT (Always (eventuallyWithin 0.05 (SP (arr (>= 0))))) long))
       r `shouldBe` Just True
+    it "the outermost Always, Eventually and Until stop at the sample that decides (it read the whole stream first: an infinite one hung)" $ do
+      let endless = groupDeltas [0 :: Int ..] (repeat 0.01)
+          decided p = timeout (60 * 1000000) (evaluate (evalT p endless))
+      decided (Always (Implies (is (> 5)) (Next (is (< 1000))))) `shouldReturn` Just False
+      decided (Eventually (And (is (> 500)) (eventuallyWithin 0.05 (is even)))) `shouldReturn` Just True
+      decided (Until (is (< 300)) (is (== 200))) `shouldReturn` Just True
+      decided (Until (is (< 300)) (is (== 400))) `shouldReturn` Just False
+      decided (Not (Always (is (/= 77)))) `shouldReturn` Just True
     it "alwaysFor looks only inside its window" $ do
       evalT (alwaysFor 0.45 (is (< 5))) count `shouldBe` True
       evalT (alwaysFor 0.5 (is (< 5))) count `shouldBe` False
