@@ -15,14 +15,14 @@ bin=$(cabal list-bin -v0 --enable-benchmarks afrp-bench)
 residency() {
   "$bin" "$@" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}'
 }
-printf '%-14s %12s %22s\n' run length "max residency (bytes)"
+printf '%-17s %12s %22s\n' run length "max residency (bytes)"
 for key in b d "d'" f g; do
   for m in "$n" "$((n * 10))"; do
-    printf '%-14s %12s %22s\n' "network $key" "$m" "$(residency --run "$key" "$m")"
+    printf '%-17s %12s %22s\n' "network $key" "$m" "$(residency --run "$key" "$m")"
   done
 done
 for m in "$((n / 10))" "$n"; do
-  printf '%-14s %12s %22s\n' "10 simbots" "$m" "$(residency --sim 10 "$m")"
+  printf '%-17s %12s %22s\n' "10 simbots" "$m" "$(residency --sim 10 "$m")"
 done
 # Every stateful combinator watching a signal fed back through a loop
 # (bench/Residency.hs): its output discarded, and used (NAME+). loopPre's
@@ -39,7 +39,7 @@ for key in edge iEdge edgeJust edgeBy once takeEvents hold accumHold accumBy del
   esac
   for v in $variants; do
     for m in "$n" "$((n * 10))"; do
-      printf '%-14s %12s %22s\n' "loop $v" "$m" "$(residency --loop "$v" "$m")"
+      printf '%-17s %12s %22s\n' "loop $v" "$m" "$(residency --loop "$v" "$m")"
     done
   done
 done
@@ -51,7 +51,13 @@ cabal build -v0 --enable-benchmarks afrp-test:bench:afrp-test-residency
 kit=$(cabal list-bin -v0 --enable-benchmarks afrp-test-residency)
 for key in always implies eventually until window; do
   for m in "$n" "$((n * 10))"; do
-    printf '%-14s %12s %22s\n' "evalT $key" "$m" \
+    printf '%-17s %12s %22s\n' "evalT $key" "$m" \
       "$("$kit" "$key" "$m" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}')"
   done
+done
+# runT on a run of three simbots (the predicate holds: the run is decided,
+# never explained), N/10 and N steps of 0.01 s
+for m in "$((n / 10))" "$n"; do
+  printf '%-17s %12s %22s\n' "runT" "$m" \
+    "$("$kit" runT "$m" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}')"
 done

@@ -1,14 +1,22 @@
 -- | The memory 'evalT' takes on long streams, for bench/residency.sh:
 -- @afrp-test-residency KIND N@ evaluates one predicate on a stream of
 -- @N + 1@ samples made lazily (0.01 s apart, the values 0..N) and prints
--- the answer; run it with @+RTS -s@ and read the maximum residency. With
--- no arguments, every kind on 10^5 samples (what @cabal bench@ runs).
+-- the answer; run it with @+RTS -s@ and read the maximum residency. The
+-- kind @runT@ checks a predicate on every world state of a run of three
+-- simbots for N steps of 0.01 s with 'runT'. With no arguments, every
+-- kind on 10^5 samples, the run on 10^4 steps (what @cabal bench@ runs).
 module Main (main) where
 
 import           System.Environment (getArgs)
 import           System.Exit        (die)
 
+import           Test.QuickCheck    (chatty, isSuccess, maxSuccess, quickCheckWithResult, stdArgs)
+
 import           AFRP               (arr)
+import           AFRP.Geometry      (Point2 (..))
+import           AFrob              (constant, ddVelTR, mrFinalize, rpId)
+import           AFrobRobotSim      (ObjectTemplate (..), SimbotController, WorldState (..), defaultSimConfig)
+import           AFrobRobotSim.Test (runT)
 import           AFRP.Test.LTL
 import           AFRP.Test.Stream   (SignalSampleStream, groupDeltas)
 
@@ -28,11 +36,24 @@ predicates =
 stream :: Int -> SignalSampleStream Double
 stream n = groupDeltas (map fromIntegral [0 .. n]) (repeat 0.01)
 
+-- | 'runT' of "every world state has its three robots" on a run of @n@
+-- steps of three wandering simbots: whether it held.
+runOf :: Int -> IO Bool
+runOf n = isSuccess <$> quickCheckWithResult stdArgs { maxSuccess = 1, chatty = False }
+  (runT defaultSimConfig (fromIntegral n / 100) wander wander (Always (SP (arr ((== 3) . length . wsRobots)))) world)
+  where
+    world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotA 2 (Point2 2 2) 1, OTSimbotB 3 (Point2 (-2) (-2)) 2]
+    wander :: SimbotController
+    wander props = constant (mrFinalize (ddVelTR 2 (fromIntegral (rpId props `mod` 5 - 2) * 0.6)))
+
 main :: IO ()
 main = do
   args <- getArgs
   case args of
-    [] -> mapM_ (\(name, p) -> putStrLn (name ++ " " ++ show (evalT p (stream 100000)))) predicates
+    [] -> do
+      mapM_ (\(name, p) -> putStrLn (name ++ " " ++ show (evalT p (stream 100000)))) predicates
+      runOf 10000 >>= putStrLn . ("runT " ++) . show
+    ["runT", n] | [(k, "")] <- reads n, k >= 0 -> runOf k >>= print
     [name, n] | Just p <- lookup name predicates, [(k, "")] <- reads n, k >= 0 ->
       print (evalT p (stream k))
-    _ -> die ("usage: afrp-test-residency [KIND N], KIND one of " ++ unwords (map fst predicates))
+    _ -> die ("usage: afrp-test-residency [KIND N], KIND one of runT " ++ unwords (map fst predicates))

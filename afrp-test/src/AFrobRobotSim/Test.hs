@@ -1,4 +1,7 @@
 {-# LANGUAGE ScopedTypeVariables #-}
+-- (runT runs a failing world twice, so that the first run, which only
+-- decides, is not kept: GHC must not share the two runs)
+{-# OPTIONS_GHC -fno-full-laziness -fno-cse #-}
 -- |
 -- Module      : AFrobRobotSim.Test
 -- Description : Properties of whole simbot runs: random valid worlds that
@@ -210,20 +213,23 @@ runStream config duration world rcA rcB
 -- type (@\"SimbotA\"@ or @\"SimbotB\"@) and id. A robot that is not in
 -- the run (a misspelt type, a wrong id) is an error naming it and the
 -- robots there are: an empty view would make every property of it hold.
+-- Lazy: each sample is looked at when the view's list gets to it (so a
+-- predicate on the view of a long run keeps no more of it than it looks
+-- ahead), and a sample without the robot is the error there (a run's
+-- robots are the same at every sample; a stream made by hand may lose
+-- one).
 robotView :: RobotType -> RobotId -> SignalSampleStream WorldState -> SignalSampleStream RobotState
-robotView ty i s = case traverse pick s of
-  Just rs -> rs
-  Nothing -> error ("AFrobRobotSim.Test.robotView: no " ++ ty ++ " " ++ show i ++ " in the run (its robots: "
-                    ++ robotsOf s ++ ")")
+robotView ty i = go (0 :: Int)
   where
-    -- (the first sample's robots: a stream with none has no missing robot)
-    robotsOf ((_, ws) : _) = case [ robotType r ++ " " ++ show (robotId r) | r <- wsRobots ws ] of
+    go _ [] = []
+    go k ((dt, ws) : rest) = case [ r | r <- wsRobots ws, robotType r == ty, robotId r == i ] of
+      (r : _) -> (dt, r) : go (k + 1) rest
+      []      -> error ("AFrobRobotSim.Test.robotView: no " ++ ty ++ " " ++ show i ++ " in the run"
+                        ++ (if k == 0 then "" else " at sample " ++ show k)
+                        ++ " (its robots" ++ (if k == 0 then "" else " there") ++ ": " ++ robotsOf ws ++ ")")
+    robotsOf ws = case [ robotType r ++ " " ++ show (robotId r) | r <- wsRobots ws ] of
       [] -> "none"
       ns -> intercalate ", " ns
-    robotsOf []            = "none"
-    pick (dt, ws) = case [ r | r <- wsRobots ws, robotType r == ty, robotId r == i ] of
-      (r : _) -> Just (dt, r)
-      []      -> Nothing
 
 -- | A world state in one line: the time (with 2 to 6 decimals, as its
 -- time step needs: @t=16.50@, @t=2.001@), then each
@@ -275,19 +281,28 @@ forAllWorlds file gen prop =
 -- counterexample says at which instant it was decided false, with the
 -- world states around it ('showWorldState').
 --
+-- Memory: deciding keeps no more of the run than the predicate looks
+-- ahead ('evalT': a predicate like @Always (SP ...)@ holds one world state
+-- at a time, so an hour's run costs no more than a minute's); a failing
+-- world is run a second time to be explained, and that run is kept whole.
+--
 -- The run ends at @duration@: a deadline beyond it has not passed, so
 -- @'eventuallyWithin' 25 p@ holds of a 20 s run in which @p@ never holds
 -- (see 'eventuallyWithin'). Give a duration at least as long as the
 -- longest bound of @p@.
 runT :: SimConfig -> Time -> SimbotController -> SimbotController -> TPred WorldState
      -> WorldTemplate -> Property
-runT config duration rcA rcB p world =
+runT config duration rcA rcB p world
   -- (a run has a sample at time 0 at least: never the empty stream that
-  -- 'propT' refuses)
-  case explainT p (runStream config duration world rcA rcB) of
-    Nothing -> property True
-    Just e  -> counterexample (explanation e) False
+  -- 'propT' refuses. The run is made anew to explain a failure, since
+  -- explaining keeps the whole run: deciding alone keeps only what the
+  -- predicate looks ahead, see 'evalT')
+  | evalT p (run ()) = property True
+  | otherwise = case explainT p (run ()) of
+      Nothing -> property True
+      Just e  -> counterexample (explanation e) False
   where
+    run () = runStream config duration world rcA rcB
     explanation e = unlines $
       ("decided false at t = " ++ showTime (explTime e) ++ " (step " ++ show (explFrame e) ++ "):")
       : [ (if j == explFrame e then "  > " else "    ") ++ showWorldState ws | (j, _, ws) <- explAround e ]

@@ -7,6 +7,7 @@ import           Data.List             (isInfixOf, isPrefixOf, tails)
 import           Numeric               (showFFloat)
 import           System.Directory      (createDirectory, getTemporaryDirectory, removeDirectory, removeFile)
 import           System.IO.Error       (isAlreadyExistsError)
+import           System.Timeout        (timeout)
 import           System.FilePath       ((</>))
 import           Test.Hspec            hiding (after)
 import           Test.QuickCheck
@@ -154,6 +155,15 @@ specWithoutFiles = do
     evaluate (length (robotView "SimbotA" 2 run))
       `shouldThrow` errorCall "AFrobRobotSim.Test.robotView: no SimbotA 2 in the run (its robots: SimbotA 1, SimbotB 1)"
     evaluate (length (robotView "SimbotC" 1 run)) `shouldThrow` anyErrorCall
+    -- lazy: the view of a run of 10^6 s starts at once (it looked at every
+    -- sample first), and a hand-made stream that loses the robot is the
+    -- error where it does
+    let long = runStream defaultSimConfig 1e6 world wander rcBrake
+    r <- timeout (60 * 1000000) (evaluate (length (take 3 (robotView "SimbotA" 1 long))))
+    r `shouldBe` Just 3
+    let emptied = [ (dt, ws { wsRobots = [] }) | (dt, ws) <- take 1 (drop 2 run) ]
+    evaluate (length (robotView "SimbotB" 1 (take 2 run ++ emptied)))
+      `shouldThrow` errorCall "AFrobRobotSim.Test.robotView: no SimbotB 1 in the run at sample 2 (its robots there: none)"
 
   it "runReplayPage counts the samples as the log does, the one at time 0 included" $ do
     let page = runReplayPage defaultSimConfig { simDt = 0.1 } 1 [OTSimbotA 1 (Point2 0 0) 0] wander wander
