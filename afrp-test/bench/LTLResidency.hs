@@ -20,8 +20,9 @@ import           AFrobRobotSim.Test (runT)
 import           AFRP.Test.LTL
 import           AFRP.Test.Stream   (SignalSampleStream, groupDeltas)
 
--- | The predicates, by name: the first five look a bounded way ahead
--- under their outermost operator; the last nests a future operator.
+-- | The predicates, by name: each looks a bounded way ahead under its
+-- outermost operator (the last nests an 'Eventually' whose argument holds
+-- at every sample, so that each sample decides it).
 predicates :: [(String, TPred Double)]
 predicates =
   [ ("always",     Always (is (>= 0)))

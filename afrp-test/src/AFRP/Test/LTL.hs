@@ -127,12 +127,15 @@ checkBound name d
 --
 -- Memory: the outermost 'Always', 'Eventually' and 'Until' (and the
 -- connectives above them) are folded from time 0 on, stopping as soon as
--- the answer is known, so a predicate whose operators under them look at
--- most a bounded way ahead ('SP', the connectives, 'Next', the time-bounded
--- forms) runs in memory bounded by that look-ahead on a stream made
--- lazily (the stream itself is kept only by whoever else holds it). A
--- future operator nested inside another ('Always' (... 'Eventually' ...))
--- needs the truths of the whole stream at once: memory linear in it.
+-- the answer is known. Under them, what a predicate keeps of a stream
+-- made lazily is what it must look ahead: 'Next' one sample, a
+-- time-bounded form its window, and a nested 'Always', 'Eventually' or
+-- 'Until' the samples up to the next one that decides it whatever
+-- follows ('Always' a false, 'Eventually' a true, 'Until' its second
+-- argument true or its first false). So @Always (Implies p (Eventually
+-- q))@ keeps the samples between two where @q@ holds: constant memory
+-- when @q@ holds now and then, the whole stream when it never does. (The
+-- stream itself is kept only by whoever else holds it.)
 evalT :: TPred a -> SignalSampleStream a -> Bool
 evalT _ [] = True
 evalT p0 s = atStart p0 == T
@@ -197,9 +200,10 @@ truths ending m p0 s = go p0
       Not a            -> map notTri (go a)
       Implies a b      -> zipWith max (map notTri (go a)) (go b)
       Next a           -> drop 1 (go a) ++ [beyond | m > 0]
-      Always a         -> fromEnd (\v next -> min v next) beyond (go a)
-      Eventually a     -> fromEnd (\v next -> max v next) endEventually (go a)
-      Until a b        -> fromEnd (\(va, vb) next -> max vb (min va next)) beyond (zip (go a) (go b))
+      Always a         -> fromEnd (\v -> if v == F then Just F else Nothing) min beyond (go a)
+      Eventually a     -> fromEnd (\v -> if v == T then Just T else Nothing) max endEventually (go a)
+      Until a b        -> fromEnd (\(va, vb) -> if vb == T then Just T else if va == F then Just vb else Nothing)
+                                  (\(va, vb) next -> max vb (min va next)) beyond (zip (go a) (go b))
       EventuallyWithin d a -> windowed d (go a) max F
       AlwaysFor d a    -> windowed d (go a) min T
     -- 'Eventually' at the last sample of a closed stream is its argument
@@ -208,8 +212,22 @@ truths ending m p0 s = go p0
       Closed -> F
       Open   -> U
     -- Each value combined with the one at the next sample, from the end;
-    -- the last sample combines with the value beyond the end.
-    fromEnd f end vs = init (scanr f end vs)
+    -- the last sample combines with the value beyond the end. A sample
+    -- whose value the next cannot change (@decided@: 'Always' at a false,
+    -- 'Eventually' at a true) ends a stretch: the stretch before it is
+    -- combined from it, without looking further, so the list comes out
+    -- lazily, holding one stretch at a time (memory bounded by the
+    -- distance between two such samples, not by the stream).
+    fromEnd :: (x -> Maybe Tri) -> (x -> Tri -> Tri) -> Tri -> [x] -> [Tri]
+    fromEnd decided f end = stretches
+      where
+        stretches vs = case untilDecided vs of
+          (before, Just (d, rest)) -> init (scanr f d before) ++ d : stretches rest
+          (before, Nothing)        -> init (scanr f end before)
+        untilDecided [] = ([], Nothing)
+        untilDecided (v : rest) = case decided v of
+          Just d  -> ([], Just (d, rest))
+          Nothing -> let (before, after') = untilDecided rest in (v : before, after')
     -- The window of samples from each one to d seconds after it, folded;
     -- if the stream seen so far reaches past the window, the window is
     -- complete, otherwise the samples beyond decide (unknown while the
