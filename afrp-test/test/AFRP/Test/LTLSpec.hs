@@ -115,7 +115,7 @@ spec = do
       let long = (0, 0) : [ (0.01, k) | k <- [1 .. 200000 :: Int] ]
       r <- timeout (120 * 1000000) (evaluate (evalT (Always (eventuallyWithin 0.05 (SP (arr (>= 0))))) long))
       r `shouldBe` Just True
-    it "the outermost Always, Eventually and Until stop at the sample that decides (it read the whole stream first: an infinite one hung)" $ do
+    it "Always, Eventually and Until stop at the sample that decides, outermost or nested (the whole stream was read first: an infinite one hung)" $ do
       let endless = groupDeltas [0 :: Int ..] (repeat 0.01)
           decided p = timeout (60 * 1000000) (evaluate (evalT p endless))
       decided (Always (Implies (is (> 5)) (Next (is (< 1000))))) `shouldReturn` Just False
@@ -123,6 +123,11 @@ spec = do
       decided (Until (is (< 300)) (is (== 200))) `shouldReturn` Just True
       decided (Until (is (< 300)) (is (== 400))) `shouldReturn` Just False
       decided (Not (Always (is (/= 77)))) `shouldReturn` Just True
+      -- (nested: each decided at the sample that decides it, 700 and 900,
+      -- without the end of the stream)
+      decided (Always (Implies (is (> 500)) (Not (Eventually (is (== 700)))))) `shouldReturn` Just False
+      decided (Eventually (And (is (== 1)) (Until (is (> 0)) (is (== 900))))) `shouldReturn` Just True
+      decided (Eventually (And (is (== 1)) (Not (Always (is (< 950)))))) `shouldReturn` Just True
     it "alwaysFor looks only inside its window" $ do
       evalT (alwaysFor 0.45 (is (< 5))) count `shouldBe` True
       evalT (alwaysFor 0.5 (is (< 5))) count `shouldBe` False
