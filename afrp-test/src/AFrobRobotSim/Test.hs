@@ -284,7 +284,8 @@ forAllWorlds file gen prop =
 -- Memory: deciding keeps no more of the run than the predicate looks
 -- ahead ('evalT': a predicate like @Always (SP ...)@ holds one world state
 -- at a time, so an hour's run costs no more than a minute's); a failing
--- world is run a second time to be explained, and that run is kept whole.
+-- world is run a second time to be explained, and that run is kept up to
+-- about twice the instant that decided ('explainT').
 --
 -- The run ends at @duration@: a deadline beyond it has not passed, so
 -- @'eventuallyWithin' 25 p@ holds of a 20 s run in which @p@ never holds

@@ -273,6 +273,17 @@ specWithFiles = do
         output result `shouldSatisfy` ("decided false at t = " `isInfixOf`)
       _ -> expectationFailure ("the broken wall follower was not caught: " ++ output result)
 
+  it "runT of a failure early in a very long run runs and explains only the start of it (it ran the whole run)" $ \_ -> do
+    -- (a robot that drives off at 2 m/s leaves its place within the first
+    -- second of a run of 10^6 s)
+    let world = [OTSimbotA 1 (Point2 0 0) 0]
+    r <- timeout (60 * 1000000) $ quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+      runT defaultSimConfig 1e6 wander wander (Always (SP (arr (all ((== Point2 0 0) . robotPos) . wsRobots)))) world
+    case r of
+      Just result@Failure {} -> output result `shouldSatisfy` ("decided false at t = 0.01 (step 1)" `isInfixOf`)
+      Just result            -> expectationFailure ("the run was not found to fail: " ++ output result)
+      Nothing                -> expectationFailure "runT did not end within 60 s"
+
   it "forAllRuns writes the shrunk world and its run's replay page (property)" $ \tmp -> do
     let file = tmp </> "afrp-test-broken-runs.world"
     result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 3, 0) } $

@@ -264,20 +264,30 @@ data Explanation a = Explanation
 -- | @explainT p s@ is 'Nothing' when @'evalT' p s@ holds, and otherwise
 -- the first sample at which the predicate was decided false: the shortest
 -- prefix of the stream that falsifies it whatever samples followed (the
--- whole stream, when only its end decides, as for 'Eventually').
+-- whole stream, when only its end decides, as for 'Eventually'). It reads
+-- the stream up to about twice that prefix (and what 'evalT' reads), so
+-- a failure early in a long stream made lazily is explained without the
+-- rest.
 explainT :: TPred a -> SignalSampleStream a -> Maybe (Explanation a)
 explainT p s
   | evalT p s = Nothing
-  | otherwise = Just (explanationAt (search 1 n))
+  | otherwise = Just (explanationAt (grow 1))
   where
-    n  = length s
     ts = sampleTimes s
     falseOpen k = case truths Open k p s of
       (F : _) -> True
       _       -> False
     -- More samples only resolve unknowns (Kleene's logic is monotone), so
-    -- the prefixes that falsify are all those from some length on; binary
-    -- search for it, with the closed stream as the last resort.
+    -- the prefixes that falsify are all those from some length on. The
+    -- lengths 1, 2, 4 ... are tried until one falsifies (or the stream
+    -- ends: the closed stream is the last resort), then a binary search
+    -- between the last two: only the samples up to twice the answer are
+    -- read, so a failure early in a long stream made lazily (a long run)
+    -- is explained without the rest.
+    grow k
+      | longerThan k = if falseOpen k then search (k `div` 2 + 1) k else grow (2 * k)
+      | otherwise    = search (k `div` 2 + 1) (length s)
+    longerThan k = not (null (drop k s))
     search lo hi
       | lo >= hi  = lo
       | falseOpen mid = search lo mid
@@ -288,7 +298,8 @@ explainT p s
       in Explanation
            { explFrame  = i
            , explTime   = ts !! i
-           , explAround = [ (j, t, a) | (j, t, a) <- zip3 [0 ..] ts (samples s), j >= i - 3, j <= i + 2 ]
+           , explAround = [ (j, t, a) | (j, t, a) <- takeWhile (\(j, _, _) -> j <= i + 2) (zip3 [0 ..] ts (samples s))
+                                      , j >= i - 3 ]
            }
 
 -- | The explanation as a small table: index, time, value, with the sample

@@ -158,3 +158,9 @@ spec = do
       fmap explFrame (explainT (eventuallyWithin 0.25 (is (== 3))) count) `shouldBe` Just 3
     it "gives the last sample when only the end decides" $
       fmap explFrame (explainT (Eventually (is (== 10))) count) `shouldBe` Just 9
+    it "reads the stream only up to about twice the sample that decides (it counted it whole: an endless one hung)" $ do
+      let endless = groupDeltas [0 :: Int ..] (repeat 0.01)
+      r <- timeout (60 * 1000000) (evaluate (fmap explFrame (explainT (Always (Implies (is (> 5)) (Next (is (< 1234))))) endless)))
+      r `shouldBe` Just (Just 1234)   -- (false at 1233, decided when 1234 is seen)
+      fmap (map (\(j, _, a) -> (j, a)) . explAround) (explainT (Always (is (< 70))) endless)
+        `shouldBe` Just [(j, j) | j <- [67 .. 72]]
