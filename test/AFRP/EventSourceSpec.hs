@@ -76,7 +76,7 @@ spec = do
       -- (after 1000 s, 1e-12 is about 2^-50 of the time: 'reached' takes
       -- about four boundaries at once, so the next occurrence waits for
       -- the clock to pass them; the clock moves in units of about 1.1e-13)
-      let pattern = map (\e -> if isEvent e then '1' else '0') . drop 1
+      let pattern = map (\ev -> if isEvent ev then '1' else '0') . drop 1
       pattern (embed (repeatedly 1e-12 ()) ((), (1000, Nothing) : replicate 20 (1e-13, Nothing)))
         `shouldBe` "100010000000000100000"
       -- (at one unit in the last place of the time or less, every sample that moves the clock)
@@ -373,13 +373,13 @@ spec = do
 repeatedlyRule :: Time -> [Time] -> [Bool]
 repeatedlyRule p = go 1
   where
-    hit n t = t >= due || due - t <= 3.552713678800501e-15 * abs t
-      where due = fromIntegral n * p
+    hit k t = t >= due || due - t <= 3.552713678800501e-15 * abs t
+      where due = fromIntegral k * p
     go :: Integer -> [Time] -> [Bool]
     go _ [] = []
-    go n (t : ts)
-      | hit n t   = True : (if p <= 2 ^^ (-53 :: Int) * t then [] else go (firstNotHit t (n + 1)) ts)
-      | otherwise = False : go n ts
+    go k (t : ts)
+      | hit k t   = True : (if p <= 2 ^^ (-53 :: Int) * t then [] else go (firstNotHit t (k + 1)) ts)
+      | otherwise = False : go k ts
     firstNotHit t lo = bisect lo (grow 1)
       where
         grow k = if hit (lo + k) t then grow (2 * k) else lo + k
@@ -397,6 +397,6 @@ genNearTolerance = do
   k <- choose (36, 56 :: Int)
   frac <- choose (0.5, 2)
   let p = t0 * frac * 2 ^^ negate k
-  n <- choose (1, 60)
-  steps <- vectorOf n (oneof [pure 0, pure p, pure (p / 10), (* p) <$> choose (0, 50), (* (t0 * 2 ^^ (-52 :: Int))) <$> choose (0, 40)])
+  size <- choose (1, 60)
+  steps <- vectorOf size (oneof [pure 0, pure p, pure (p / 10), (* p) <$> choose (0, 50), (* (t0 * 2 ^^ (-52 :: Int))) <$> choose (0, 40)])
   pure (p, t0 : steps)
