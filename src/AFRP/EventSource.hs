@@ -101,11 +101,13 @@ after t x
 --
 -- Where the boundaries cannot be told apart: once an occurrence comes at
 -- a local time @t@ with @p <= 2^-53 * t@ (the period no longer than one
--- unit in the last place of @t@: any move of the clock's reading is a
--- period or more; @p = 1e-14@ after 1000 s, a subnormal period after a
--- second), every later sample that moves the local time on (as the
+-- unit in the last place of @t@, so that any move of the clock's reading
+-- is a period or more; @p = 1e-14@ after 1000 s, a subnormal period after
+-- a second), every later sample that moves the local time on (as the
 -- clock reads it) has an occurrence, and a sample that does not move it
--- has none. Above that, the boundaries are counted exactly, even where
+-- has none. (Counting the boundaries there could still skip a move now
+-- and then, where the tolerance of 'reached' covers it: this regime is
+-- the rule's approximation, not the rule.) Above that, the boundaries are counted exactly, even where
 -- several of them count as 'reached' at once (a period within the
 -- tolerance of 'reached', @2^-48 * t@): @repeatedly 1e-12@ after 1000 s,
 -- sampled every 1e-13 s, occurs about once every ten samples. An
@@ -129,13 +131,13 @@ repeatedly p x
     -- after an infinite time, none)
     after' clock' t n
       | isInfinite t       = neverN
-      | p <= ulpFloor * t  = fine clock'
+      | p * twoTo53 <= t   = fine clock'
       | otherwise          = go clock' (nextIndex t (n + 1))
     fine !clock = NStep (\dt _ ->
       let !clock' = tick clock dt
       in if clockTime clock' > clockTime clock then (# fine clock', Event x #) else (# fine clock', NoEvent #))
     -- The first period boundary from n0 on that t has not reached. The
-    -- boundaries reached are those up to about (t + tolerance) / p, so the
+    -- boundaries reached are those up to about (t + tolerance * t) / p, so the
     -- search starts there and walks, down or up, to the first one not
     -- reached ('reached' of n * p falls as n grows): a few steps, even
     -- after a huge time step, since t / p < 2^53 here.
@@ -144,15 +146,17 @@ repeatedly p x
       | beyond start = down start
       | otherwise    = up start
       where
-        start = max n0 (floor ((t + timeTolerance * t) / p))
+        start = max n0 (let q = t / p in floor (q + timeTolerance * q))
         beyond n = not (reached (fromIntegral n * p) t)
         down n | n > n0, beyond (n - 1) = down (n - 1)
                | otherwise               = n
         up n | beyond n  = n
              | otherwise = up (n + 1)
-    -- 2^-53: a period no longer than this fraction of t is at most one
-    -- unit in the last place of t
-    ulpFloor = 1.1102230246251565e-16 :: Double
+    -- p <= 2^-53 t, tested as p * 2^53 <= t: exact (a power of two), even
+    -- where 2^-53 t would be subnormal and rounded; then p is at most one
+    -- unit in the last place of t. (Below that test t / p < 2^53, so the
+    -- search's q + tolerance * q cannot overflow.)
+    twoTo53 = 9007199254740992 :: Double
 
 -- | @afterEach [(q1, x1), (q2, x2), ...]@ occurs with @x1@ at local time
 -- @q1@, with @x2@ at @q1 + q2@, and so on: each delay is measured from the

@@ -89,6 +89,13 @@ spec = do
             got = map isEvent (drop 1 (embed (repeatedly p ()) ((), samples)))
             want = repeatedlyRule p times
         in counterexample (show (p, dts, got, want)) (take (length want) got == want)
+    it "repeatedly at the top of the Double range and with subnormal periods (it hung at 1.8e308; at 2^-1020 it fired at every move)" $ do
+      let pattern = map (\ev -> if isEvent ev then '1' else '0') . drop 1
+      embed (repeatedly 1e300 ()) ((), [(1.7976931348623157e308, Nothing), (0, Nothing)])
+        `withoutHanging` [NoEvent, Event (), NoEvent]
+      let u = encodeFloat 1 (-1073) :: Double
+      pattern (embed (repeatedly u ()) ((), [ (d, Nothing) | d <- 2 ^^ (-1020 :: Int) - 4 * u : replicate 4 u ]))
+        `shouldBe` "10101"
     it "repeatedly occurs once at an infinite time, then never; an infinite period never" $ do
       embed (repeatedly 1 ()) ((), [(1, Nothing), (1 / 0, Nothing), (0, Nothing), (1, Nothing)])
         `withoutHanging` [NoEvent, Event (), Event (), NoEvent, NoEvent]
@@ -378,7 +385,7 @@ repeatedlyRule p = go 1
     go :: Integer -> [Time] -> [Bool]
     go _ [] = []
     go k (t : ts)
-      | hit k t   = True : (if p <= 2 ^^ (-53 :: Int) * t then [] else go (firstNotHit t (k + 1)) ts)
+      | hit k t   = True : (if p * 2 ^ (53 :: Int) <= t then [] else go (firstNotHit t (k + 1)) ts)
       | otherwise = False : go k ts
     firstNotHit t lo = bisect lo (grow 1)
       where
@@ -393,7 +400,7 @@ repeatedlyRule p = go 1
 -- the last place (2^-52).
 genNearTolerance :: Gen (Time, [DTime])
 genNearTolerance = do
-  t0 <- elements [0.3, 1, 10, 1000, 12345.678, 1e6]
+  t0 <- elements [0.3, 1, 10, 1000, 12345.678, 1e6, 1 - 3 * 2 ^^ (-53 :: Int), 1024 - 2 ^^ (-40 :: Int), 2 ^^ (-1000 :: Int)]
   k <- choose (36, 56 :: Int)
   frac <- choose (0.5, 2)
   let p = t0 * frac * 2 ^^ negate k

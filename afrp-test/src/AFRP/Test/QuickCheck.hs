@@ -57,8 +57,8 @@ data Distribution
   = DistConstant
     -- ^ one time step, drawn from the range, for the whole stream (every
     -- generated time step is positive: a lower bound of 0 means steps
-    -- just above 0; with a length in time, it is drawn among the steps
-    -- that reach it in 'maxStreamSteps' steps or fewer)
+    -- just above 0; with a length in time, it is one that reaches it in
+    -- fewer than 'maxStreamSteps' steps)
   | DistNormal (DTime, DTime)
     -- ^ each time step drawn from a normal distribution with this mean and
     -- standard deviation, kept inside the range and positive
@@ -83,8 +83,9 @@ type Length = Maybe (Either Int DTime)
 -- the range that is negative or not finite, a lower bound above the upper
 -- one, an upper bound of 0 (no positive time step), a length in time that
 -- is negative or not finite or that the time steps cannot reach in
--- 'maxStreamSteps' steps (or at all: a step lost in the rounding of the
--- time so far), a normal
+-- 'maxStreamSteps' steps (steps of the upper bound, at once; random steps,
+-- after that many, or after 1000 steps in a row lost in the rounding of
+-- the time so far), a normal
 -- distribution whose mean or deviation is not finite or whose deviation
 -- is negative, or one that almost never (not once in 1000 draws) gives a
 -- time step inside the range.
@@ -98,7 +99,7 @@ generateStreamWith :: (Int -> DTime -> Gen a) -> Distribution -> Range -> Length
 generateStreamWith value dist range len = checked `seq` do
   dts <- case dist of
     DistConstant -> do
-      dt <- deltaIn reachable
+      dt <- constantStep
       case len of
         Just (Right t) -> pure (replicate (stepsToReach dt t) dt)
         _              -> (`replicate` dt) <$> stepCount
@@ -122,14 +123,19 @@ generateStreamWith value dist range len = checked `seq` do
       ++ [ "time steps of at most " ++ show hi ++ " cannot reach the length " ++ show t ++ " in "
            ++ show maxStreamSteps ++ " steps"
          | Just (Right t) <- [len], Just hi <- [snd range], hi > 0, t / hi > fromIntegral maxStreamSteps ]
-    -- (one step for the whole stream: drawn among those that reach a
-    -- length in time within 'maxStreamSteps' steps, so that a draw near a
-    -- lower bound of 0 is not an error)
-    reachable = case len of
+    -- (one step for the whole stream; with a length in time, one that
+    -- reaches it in fewer than 'maxStreamSteps' steps, so that a draw near
+    -- a lower bound of 0 is not an error: with an upper bound, drawn from
+    -- the range above that least step; without one, drawn as for any
+    -- length, and a draw below the least step drawn again uniformly
+    -- between it and the length)
+    constantStep = case len of
       Just (Right t) | t > 0 ->
         let least = t / fromIntegral (maxStreamSteps - 1)
-        in (Just (maybe least (min least) (snd range) `max` fromMaybe 0 (fst range)), snd range)
-      _                      -> range
+        in case range of
+             (lo, Just hi) -> deltaIn (Just (min hi least `max` fromMaybe 0 lo), Just hi)
+             (_, Nothing)  -> deltaIn range >>= \dt -> if dt >= least then pure dt else choose (least, t)
+      _ -> deltaIn range
     stepCount = case len of
       Just (Left n) -> pure (max 0 n)
       _             -> sized (\n -> choose (0, n))

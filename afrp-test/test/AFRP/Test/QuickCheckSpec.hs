@@ -44,10 +44,20 @@ spec = do
             all ((== 1e-7) . fst) (drop 1 (s :: SignalSampleStream ())) ]
     it "DistConstant with a length in time draws a step that reaches it (a draw near a lower bound of 0 was an error)" $
       -- (steps below 1e-8 take more than 10^8 to reach 1 s: half the range)
-      forAll (generateStream DistConstant (Just 0, Just 2e-8) (Just (Right 1))) $ \s ->
-        case take 2 (s :: SignalSampleStream ()) of
-          [_, (dt, _)] -> dt >= 1 / fromIntegral (maxStreamSteps - 1) && dt <= 2e-8
-          _            -> False
+      -- (only the first two samples shown on a failure: the stream is long)
+      conjoin
+        [ forAll (take 2 <$> generateStream DistConstant (Just 0, Just 2e-8) (Just (Right 1))) $ \s ->
+            case s :: SignalSampleStream () of
+              [_, (dt, _)] -> dt >= 1 / fromIntegral (maxStreamSteps - 1) && dt <= 2e-8
+              _            -> False
+          -- (without an upper bound: the draw as for any length, short
+          -- streams even at size 0, where the least step was the draw)
+        , forAll (take 3 <$> resize 0 (generateStream DistConstant (Just 0, Nothing) (Just (Right 1)))) $ \s ->
+            case s :: SignalSampleStream () of
+              [_, (dt, _), _] -> dt > 2 / fromIntegral (maxStreamSteps - 1)
+              _               -> True
+        , forAll (generateStream DistConstant (Nothing, Nothing) (Just (Right 1e300))) $ \s ->
+            length (s :: SignalSampleStream ()) < 1000 ]
     it "uniDistStreamMaxDT streams are well formed" $
       forAll (uniDistStreamMaxDT 0.5) $ \s ->
         wellFormed (s :: SignalSampleStream ()) && all ((<= 0.5) . fst) s
