@@ -69,9 +69,10 @@ import           Data.IORef
 import           Data.List                 (intercalate)
 import           Data.Maybe                (catMaybes, isNothing)
 import           GHC.Clock                 (getMonotonicTime)
+import           System.Directory          (removeFile, renameFile)
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
-import           System.FilePath           (isAbsolute, (</>))
+import           System.FilePath           (isAbsolute, takeBaseName, takeDirectory, takeExtension, (</>))
 import           System.IO                 (hIsTerminalDevice, hPutStr, stderr)
 import           System.Process            (rawSystem)
 import           Text.Printf               (printf)
@@ -193,9 +194,6 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
       svgEvery = max 1 (nSteps `div` svgMaxPoints)
       nRobots  = length [ () | o <- world, Just _ <- [robotKindOf o] ]
       states   = take (nSteps + 1) (simulateWith cfg world rcA rcB)
-  mlog <- forM (optLog opts) $ \file -> do
-    r <- try (openLogWriter logCfg file)
-    either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ ioErrorText e)) pure r
   mrec <- forM (optReplay opts) $ \file -> do
     r <- try (newReplayRecorder replayCfg)
     either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r
@@ -205,6 +203,12 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
                               else pure Nothing
   svg <- forM (optSvg opts) (svgSink svgEvery (style, scene))
   result <- forM (optResult opts) (resultSink prog opts)
+  -- (the log last: opening it replaces the file, so it is opened only once
+  -- nothing else can stop the run before its first step; a run refused
+  -- here leaves an existing log as it was)
+  mlog <- forM (optLog opts) $ \file -> do
+    r <- try (openLogWriter logCfg file)
+    either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ ioErrorText e)) pure r
   -- (the progress line last: it counts the frames written up to and
   -- including this step's)
   let progress = tty && not (optQuiet opts)
@@ -331,15 +335,25 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
 -- that ffmpeg takes them as they are: the video's as a file (not an
 -- option, for a name that starts with @-@, nor another protocol, for
 -- @http:@), the folder's with any @%@ doubled (the pattern's own is the
--- frame number) and as a path (@./@ before a relative one).
+-- frame number) and as a path (@./@ before a relative one). A frame side
+-- of an odd number of pixels is padded by one (the common encoders, H.264
+-- in .mp4, take even sides only). The video is written beside its place
+-- under a name of its own (with the same extension, by which ffmpeg picks
+-- the format) and renamed there: a failure leaves an earlier video of
+-- that name as it was.
 makeVideo :: SimOptions -> FilePath -> Int -> FilePath -> IO [String]
 makeVideo opts exe nFrames file = do
+  let partial = takeDirectory file </> ("." ++ takeBaseName file ++ ".partial" ++ takeExtension file)
   code <- rawSystem exe [ "-y", "-loglevel", "error", "-f", "image2", "-framerate", show (optFps opts)
                         , "-i", inFolder (optOut opts) </> framePattern, "-frames:v", show nFrames
-                        , "-pix_fmt", "yuv420p", "file:" ++ file ]
-  case code of
-    ExitSuccess   -> [] <$ unless (optQuiet opts) (putStrLn ("wrote " ++ displayPath file))
-    ExitFailure c -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
+                        , "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "file:" ++ partial ]
+  moved <- case code of
+    ExitSuccess   -> either (Just . ioErrorText) (const Nothing) <$> try (renameFile partial file)
+    ExitFailure _ -> Nothing <$ (try (removeFile partial) :: IO (Either IOException ()))
+  case (code, moved) of
+    (ExitSuccess, Nothing) -> [] <$ unless (optQuiet opts) (putStrLn ("wrote " ++ displayPath file))
+    (ExitSuccess, Just e)  -> pure ["cannot write " ++ displayPath file ++ ": " ++ e]
+    (ExitFailure c, _)     -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
   where
     inFolder dir = concatMap (\c -> if c == '%' then "%%" else [c]) (if isAbsolute dir then dir else "." </> dir)
 

@@ -6,7 +6,7 @@ module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 import           Control.Exception   (AsyncException (UserInterrupt), evaluate, finally, try, uninterruptibleMask_)
 import           Control.Monad       (forM, forM_, replicateM_)
 import           Data.Maybe          (isJust)
-import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv)
+import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv, unsetEnv)
 import           Control.Concurrent  (threadDelay)
 import           System.Process      (CreateProcess (..), ProcessHandle, StdStream (..), createProcess,
                                       getPid, getProcessExitCode, interruptProcessGroupOf, proc,
@@ -34,7 +34,7 @@ import           AFrobRobotSim.Log   (LogFrame (..), LogHeader (..), LogRect (..
                                       RunLog (..), readLogFile)
 import           AFrobRobotSim.Replay (writeReplayFromLog)
 import           AFrobRobotSim.Run.Signals (Stopper, interruptible, signalReceived, stuckGrace)
-import           TestUtil (withCaps, withTempDir)
+import           TestUtil (withCaps, withTMPDIR, withTempDir)
 
 world :: WorldTemplate
 world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2)]
@@ -685,7 +685,10 @@ spec = do
       let bin = dir </> "bin"
           out = dir </> "f"
       createDirectory bin
-      writeFile (bin </> "ffmpeg") ("#!/bin/sh\nprintf '%s\\n' \"$@\" > " ++ (dir </> "args") ++ "\n")
+      -- (it makes the file named last, as ffmpeg would; FAIL in the
+      -- environment: it then exits 1)
+      writeFile (bin </> "ffmpeg") ("#!/bin/sh\nprintf '%s\\n' \"$@\" > " ++ (dir </> "args")
+                                   ++ "\nfor a; do last=$a; done\n: > \"${last#file:}\"\n[ -z \"$FAIL\" ]\n")
       p <- getPermissions (bin </> "ffmpeg")
       setPermissions (bin </> "ffmpeg") (setOwnerExecutable True p)
       saved <- lookupEnv "PATH"
@@ -712,7 +715,22 @@ spec = do
       args' <- lines <$> readFile (dir </> "args")
       take 2 (dropWhile (/= "-i") args') `shouldBe` ["-i", dir </> "f%%d" </> "frame-%06d.ppm"]
       take 2 (dropWhile (/= "-f") args') `shouldBe` ["-f", "image2"]
-      drop (length args' - 1) args' `shouldBe` ["file:" ++ dir </> "-v.mp4"]
+      -- (written beside its place, then renamed; odd sides padded)
+      drop (length args' - 1) args' `shouldBe` ["file:" ++ dir </> ".-v.partial.mp4"]
+      take 2 (dropWhile (/= "-vf") args') `shouldBe` ["-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"]
+      doesFileExist (dir </> "-v.mp4") `shouldReturn` True
+      doesFileExist (dir </> ".-v.partial.mp4") `shouldReturn` False
+      -- (ffmpeg fails: an earlier video of that name is left as it was)
+      writeFile (dir </> "old.mp4") "old"
+      (do setEnv "PATH" bin
+          setEnv "FAIL" "1"
+          (_, err, r) <- captured (runSimWith (quick out) { optSeconds = 0.2, optVideo = Just (dir </> "old.mp4") }
+                                              (Just world) drive drive)
+          r `shouldBe` Left (ExitFailure 1)
+          err `shouldSatisfy` ("ffmpeg failed" `isInfixOf`))
+        `finally` (unsetEnv "FAIL" >> maybe (pure ()) (setEnv "PATH") saved)
+      readFile (dir </> "old.mp4") `shouldReturn` "old"
+      doesFileExist (dir </> ".old.partial.mp4") `shouldReturn` False
     it "writes an SVG of the run" $ withTempDir $ \dir -> do
       _ <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg") }
                                 (Just world) drive drive)
@@ -789,6 +807,20 @@ spec = do
                                             , optReplay = Just (dir </> "nopage" </> "r.html") })
               (\e -> all (`isInfixOf` e) ["--svg", "--log", "--replay", "does not exist"]
                      && length (filter ("cannot run" `isInfixOf`) (lines e)) == 1)
+    it "a run refused before its first step leaves an existing log as it was (it replaced it with an empty log)" $
+      withTempDir $ \dir -> do
+        let logFile = dir </> "run.jsonl"
+            keeps around opts = do
+              writeFile logFile "old\n"
+              (_, err, r) <- captured (around (runSimWith opts { optLog = Just logFile } (Just world) drive drive))
+              r `shouldBe` Left (ExitFailure 2)
+              readFile logFile `shouldReturn` "old\n"
+              pure err
+        -- the page's temporary file cannot be made (TMPDIR), the frames' folder cannot be
+        err1 <- keeps (withTMPDIR (dir </> "no-such-folder")) (quick (dir </> "f")) { optReplay = Just (dir </> "r.html") }
+        err1 `shouldSatisfy` ("its temporary file" `isInfixOf`)
+        err2 <- keeps id (quick (logFile </> "frames"))
+        err2 `shouldSatisfy` ("cannot write frames" `isInfixOf`)
     it "an output that is a link to a file in a folder that does not exist" $ withTempDir $ \dir -> do
       createFileLink (dir </> "gone" </> "run.svg") (dir </> "link.svg")
       (out, err, r) <- captured (runSimWith (quick (dir </> "f")) { optFrames = False, optSvg = Just (dir </> "link.svg") }

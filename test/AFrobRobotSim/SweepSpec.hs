@@ -561,6 +561,22 @@ spec = do
       table `shouldSatisfy` ("FAILED seed 3: exit code 2, no result" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 4: exit code 1: " `isInfixOf`)
 
+    it "a run that writes no result is filed under the world and parameters it got after --, the job line's winning (it was filed under the job line's alone)" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      let world = dir </> "w.world"
+      writeFile world "simbotA 1 at 0 0 heading 0 deg\n"
+      (code, _, _) <- runScriptCode [] sweep [ "--seeds", "1", "--param", "speed=2", prog, dir </> "r.jsonl"
+                                             , "--", "--seconds", "1", "--world", world, "--param", "speed=3"
+                                             , "--param", "k=a", "--no-such-flag" ]
+      code `shouldBe` ExitFailure 1
+      [line] <- lines <$> readFile (dir </> "r.jsonl")
+      field ["world"] (parsed line) `shouldBe` JString world
+      field ["params"] (parsed line) `shouldBe` JObject [("speed", JString "2"), ("k", JString "a")]
+      table <- merged dir [dir </> "r.jsonl"]
+      table `shouldSatisfy` ("k=a speed=2  (1 runs, 1 failed)" `isInfixOf`)
+
     it "reads --shard and --seeds in decimal (010 is ten), and refuses what would run the wrong jobs" $ withTempDir $ \dir -> do
       sweep <- script "sweep"
       sbatch <- script "sweep.sbatch"
