@@ -810,9 +810,9 @@ spec = do
     it "a run refused before its first step leaves an existing log as it was (it replaced it with an empty log)" $
       withTempDir $ \dir -> do
         let logFile = dir </> "run.jsonl"
-            keeps around opts = do
+            keeps wrap opts = do
               writeFile logFile "old\n"
-              (_, err, r) <- captured (around (runSimWith opts { optLog = Just logFile } (Just world) drive drive))
+              (_, err, r) <- captured (wrap (runSimWith opts { optLog = Just logFile } (Just world) drive drive))
               r `shouldBe` Left (ExitFailure 2)
               readFile logFile `shouldReturn` "old\n"
               pure err
