@@ -125,9 +125,13 @@ checkBound name d
 -- has no time 0: every predicate is true on it (so there @Not p@ is not
 -- the complement of @p@); the generators never produce it.
 --
--- Memory: the outermost 'Always', 'Eventually' and 'Until' (and the
--- connectives above them) are folded from time 0 on, stopping as soon as
--- the answer is known. Under them, what a predicate keeps of a stream
+-- Memory: the outermost 'Always', 'Eventually' and 'Until' are folded
+-- from time 0 on, stopping as soon as the answer is known. Connectives
+-- above them ('And', 'Or', 'Implies') decide their operands one after the
+-- other, the second only when the first does not decide: the stream is
+-- kept while the first is decided, as far as it reads (so @And (Always
+-- p) (Eventually q)@ keeps what @Always p@ reads; give two such
+-- properties as two checks to keep memory bounded). Under them, what a predicate keeps of a stream
 -- made lazily is what it must look ahead: 'Next' one sample, a
 -- time-bounded form its window, and a nested 'Always', 'Eventually' or
 -- 'Until' the samples up to the next one that decides it whatever
@@ -143,10 +147,11 @@ evalT p0 s = atStart p0 == T
     -- (the truth at time 0; every truth list is as long as the stream,
     -- which is not empty)
     atStart p = case p of
-      And a b      -> min (atStart a) (atStart b)
-      Or a b       -> max (atStart a) (atStart b)
+      -- (the second operand only when the first does not decide)
+      And a b      -> case atStart a of { F -> F; va -> min va (atStart b) }
+      Or a b       -> case atStart a of { T -> T; va -> max va (atStart b) }
       Not a        -> notTri (atStart a)
-      Implies a b  -> max (notTri (atStart a)) (atStart b)
+      Implies a b  -> case atStart a of { F -> T; va -> max (notTri va) (atStart b) }
       -- (at the end of the closed stream: 'Always' meets true, 'Eventually' false)
       Always a     -> foldStoppingAt F min T (everywhere a)
       Eventually a -> foldStoppingAt T max F (everywhere a)

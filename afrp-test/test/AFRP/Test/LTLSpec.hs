@@ -63,6 +63,10 @@ reference f0 s = at f0 0
 is :: (a -> Bool) -> TPred a
 is f = SP (arr f)
 
+-- The first n samples of a stream, and an error past them.
+readNoFurther :: Int -> SignalSampleStream a -> SignalSampleStream a
+readNoFurther n s = take n s ++ error ("the stream was read past sample " ++ show n)
+
 -- Ten samples 0.1 s apart with the values 0..9.
 count :: SignalSampleStream Int
 count = groupDeltas [0 .. 9] (repeat 0.1)
@@ -116,13 +120,16 @@ spec = do
       r <- timeout (120 * 1000000) (evaluate (evalT (Always (eventuallyWithin 0.05 (SP (arr (>= 0))))) long))
       r `shouldBe` Just True
     it "Always, Eventually and Until stop at the sample that decides, outermost or nested (the whole stream was read first: an infinite one hung)" $ do
-      let endless = groupDeltas [0 :: Int ..] (repeat 0.01)
+      -- (a stream that is an error past sample 5000: reading on fails at once)
+      let endless = readNoFurther 5000 (groupDeltas [0 :: Int ..] (repeat 0.01))
           decided p = timeout (60 * 1000000) (evaluate (evalT p endless))
       decided (Always (Implies (is (> 5)) (Next (is (< 1000))))) `shouldReturn` Just False
       decided (Eventually (And (is (> 500)) (eventuallyWithin 0.05 (is even)))) `shouldReturn` Just True
       decided (Until (is (< 300)) (is (== 200))) `shouldReturn` Just True
       decided (Until (is (< 300)) (is (== 400))) `shouldReturn` Just False
       decided (Not (Always (is (/= 77)))) `shouldReturn` Just True
+      -- (a connective decides its second operand only if the first does not)
+      decided (And (Always (is (< 10))) (Eventually (is (< 0)))) `shouldReturn` Just False
       -- (nested: each decided at the sample that decides it, 700 and 900,
       -- without the end of the stream)
       decided (Always (Implies (is (> 500)) (Not (Eventually (is (== 700)))))) `shouldReturn` Just False
@@ -159,7 +166,7 @@ spec = do
     it "gives the last sample when only the end decides" $
       fmap explFrame (explainT (Eventually (is (== 10))) count) `shouldBe` Just 9
     it "reads the stream only up to about twice the sample that decides (it counted it whole: an endless one hung)" $ do
-      let endless = groupDeltas [0 :: Int ..] (repeat 0.01)
+      let endless = readNoFurther 5000 (groupDeltas [0 :: Int ..] (repeat 0.01))
       r <- timeout (60 * 1000000) (evaluate (fmap explFrame (explainT (Always (Implies (is (> 5)) (Next (is (< 1234))))) endless)))
       r `shouldBe` Just (Just 1234)   -- (false at 1233, decided when 1234 is seen)
       fmap (map (\(j, _, a) -> (j, a)) . explAround) (explainT (Always (is (< 70))) endless)
