@@ -166,6 +166,9 @@ repeatedly p x
 -- when reached (the list may be infinite). A sample reaches every
 -- occurrence due by its time: an infinite run of delays summing to no
 -- more than that (@repeat (0, x)@) never finishes the sample, as in Yampa.
+-- Delays of 0 at the head of the list occur at local time 0:
+-- @afterEach [(0, 'a'), (0, 'b'), (1, 'c')]@ gives @Event 'a'@ at time 0
+-- and @Event 'c'@ at 1 ('afterEachCat': @Event "ab"@ at 0), as in Yampa.
 --
 -- A sample that passes many occurrences takes time in their number, but
 -- no memory: the occurrences after the first are passed over, not
@@ -212,7 +215,9 @@ afterEachBy keep done qxs0 = SF (initN (\_ -> emit clockZero clockZero qxs0))
 -- give the samples decimal arithmetic gives). When several delayed
 -- occurrences fall due at one sample only the first (earliest) is
 -- produced ('delayEventCat' gives them all). @delayEvent 0@ is the
--- identity; a negative delay is an error.
+-- identity; a negative delay is an error. For @q > 0@ the output at time
+-- 0 is 'NoEvent', and an occurrence at time 0 is kept and comes out at
+-- @q@, as in Yampa.
 delayEvent :: Time -> SF (Event a) (Event a)
 delayEvent q
   | q < 0 || isNaN q = errNeg "delayEvent" q
@@ -338,13 +343,15 @@ edgeBy f a0 = SF (mealyN (\prev a -> (a, maybeToEvent (f prev a))) a0)
 notYet :: SF (Event a) (Event a)
 notYet = SF (initN (\_ -> (# idN, NoEvent #)))
 
--- | Only the first occurrence passes: @once = takeEvents 1@.
+-- | Only the first occurrence passes: @once = takeEvents 1@. An
+-- occurrence at time 0 is the first (it passes), as in Yampa.
 once :: SF (Event a) (Event a)
 once = takeEvents 1
 
 -- | Let the first @n@ occurrences through, then none (the source then
--- becomes 'never' and can disappear from the network). For @n <= 0@ it is
--- 'never' from the start, as in Yampa.
+-- becomes 'never' and can disappear from the network); an occurrence at
+-- time 0 counts as the first. For @n <= 0@ it is 'never' from the start,
+-- as in Yampa.
 takeEvents :: Int -> SF (Event a) (Event a)
 takeEvents n0 = SF (lazyN (go n0))
   where
@@ -353,8 +360,9 @@ takeEvents n0 = SF (lazyN (go n0))
              NoEvent -> (# go n, NoEvent #)
              Event _ -> (# go (n - 1), e #))
 
--- | Suppress the first @n@ occurrences, then let all through. For
--- @n <= 0@ it lets every occurrence through, as in Yampa.
+-- | Suppress the first @n@ occurrences, then let all through; an
+-- occurrence at time 0 is the first suppressed. For @n <= 0@ it lets
+-- every occurrence through, as in Yampa.
 dropEvents :: Int -> SF (Event a) (Event a)
 dropEvents n0 = SF (lazyN (go n0))
   where

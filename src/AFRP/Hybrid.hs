@@ -46,7 +46,7 @@ import           AFRP.Internal.SF
 
 -- | @hold a0@ outputs @a0@ until the first event, then the value of the
 -- most recent event. At the instant of an event it already outputs the
--- new value.
+-- new value; an event at time 0 is output at time 0 (as in Yampa).
 --
 -- > embed (hold 0) (NoEvent, [(1, Just (Event 5)), (1, Just NoEvent)])  ==  [0, 5, 5]
 hold :: a -> SF (Event a) a
@@ -67,11 +67,14 @@ dHold :: a -> SF (Event a) a
 dHold a0 = delayed NoEvent (hold a0)
 
 -- | @trackAndHold a0@ follows the input while it is 'Just', and holds the
--- last 'Just' value while it is 'Nothing' (@a0@ before any 'Just').
+-- last 'Just' value while it is 'Nothing' (@a0@ before any 'Just'; a
+-- 'Just' at time 0 is output at time 0).
 trackAndHold :: a -> SF (Maybe a) a
 trackAndHold a0 = SF (compN (arrN maybeToEvent) (sfNode (hold a0)))
 
--- | Delayed 'trackAndHold'.
+-- | Delayed 'trackAndHold': @a0@ at time 0, then at each sample what
+-- 'trackAndHold' output at the previous one (Yampa's definition,
+-- @trackAndHold a0 >>> iPre a0@).
 dTrackAndHold :: a -> SF (Maybe a) a
 dTrackAndHold a0 = delayed Nothing (trackAndHold a0)
 
@@ -85,18 +88,20 @@ accum :: a -> SF (Event (a -> a)) (Event a)
 accum = accumBy (\a f -> f a)
 
 -- | @accumHold a0 = accum a0 >>> hold a0@: the accumulated value, updated
--- at the instant of each event.
+-- at the instant of each event (an event at time 0 is folded in at time
+-- 0).
 accumHold :: a -> SF (Event (a -> a)) a
 accumHold = accumHoldBy (\a f -> f a)
 {-# INLINE accumHold #-}
 
 -- | Delayed 'accumHold': the accumulated value excluding the current
--- sample's event.
+-- sample's event; @a0@ at time 0 (Yampa: @accumHold a0 >>> iPre a0@).
 dAccumHold :: a -> SF (Event (a -> a)) a
 dAccumHold a0 = delayed NoEvent (accumHold a0)
 
 -- | @accumBy f b0@: each event @a@ updates the accumulator @b := f b a@ and
--- produces an event carrying the new @b@.
+-- produces an event carrying the new @b@, at the event's instant (time 0
+-- included).
 accumBy :: (b -> a -> b) -> b -> SF (Event a) (Event b)
 accumBy f = accumFilter (\b a -> let b' = f b a in (b', Just b'))
 

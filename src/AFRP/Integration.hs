@@ -210,13 +210,15 @@ trapezoidIntegral = SF (initN (\a0 -> case go zeroVector a0 of !n -> (# n, zeroV
 
 -- | The 'integral' of the first input plus the sum of the values of the
 -- events of the second: a continuous flow with discrete impulses. An
--- impulse is added at the instant of its event.
+-- impulse is added at the instant of its event: at time 0 the output is
+-- the value of an impulse there (otherwise 'zeroVector').
 impulseIntegral :: VectorSpace a k => SF (a, Event a) a
 impulseIntegral = SF (compN (sfNode (integral *** accumHoldBy (^+^) zeroVector))
                             (arrN (uncurry (^+^))))
 
 -- | Count events: the n-th occurrence of the input produces an occurrence
--- carrying @n@ (1 for the first).
+-- carrying @n@ (1 for the first; an occurrence at time 0 is counted
+-- there).
 count :: Integral b => SF (Event a) (Event b)
 count = accumBy (\n _ -> n + 1) 0
 
