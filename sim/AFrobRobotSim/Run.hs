@@ -347,13 +347,13 @@ makeVideo opts exe nFrames file = do
   code <- rawSystem exe [ "-y", "-loglevel", "error", "-f", "image2", "-framerate", show (optFps opts)
                         , "-i", inFolder (optOut opts) </> framePattern, "-frames:v", show nFrames
                         , "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "file:" ++ partial ]
-  moved <- case code of
-    ExitSuccess   -> either (Just . ioErrorText) (const Nothing) <$> try (renameFile partial file)
-    ExitFailure _ -> Nothing <$ (try (removeFile partial) :: IO (Either IOException ()))
-  case (code, moved) of
-    (ExitSuccess, Nothing) -> [] <$ unless (optQuiet opts) (putStrLn ("wrote " ++ displayPath file))
-    (ExitSuccess, Just e)  -> pure ["cannot write " ++ displayPath file ++ ": " ++ e]
-    (ExitFailure c, _)     -> pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
+  case code of
+    ExitFailure c -> do
+      _ <- try (removeFile partial) :: IO (Either IOException ())
+      pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
+    ExitSuccess -> try (renameFile partial file) >>= \r -> case r of
+      Left e   -> pure ["cannot write " ++ displayPath file ++ ": " ++ ioErrorText e]
+      Right () -> [] <$ unless (optQuiet opts) (putStrLn ("wrote " ++ displayPath file))
   where
     inFolder dir = concatMap (\c -> if c == '%' then "%%" else [c]) (if isAbsolute dir then dir else "." </> dir)
 

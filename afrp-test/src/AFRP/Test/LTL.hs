@@ -131,8 +131,8 @@ checkBound name d
 -- other, the second only when the first does not decide: the stream is
 -- kept while the first is decided, as far as it reads (so @And (Always
 -- p) (Eventually q)@ keeps what @Always p@ reads; give two such
--- properties as two checks to keep memory bounded). Under them, what a predicate keeps of a stream
--- made lazily is what it must look ahead: 'Next' one sample, a
+-- properties as two checks to keep memory bounded). Under them, what a
+-- predicate keeps of a stream made lazily is what it must look ahead: 'Next' one sample, a
 -- time-bounded form its window, and a nested 'Always', 'Eventually' or
 -- 'Until' the samples up to the next one that decides it whatever
 -- follows ('Always' a false, 'Eventually' a true, 'Until' its second

@@ -133,7 +133,7 @@ generateStreamWith value dist range len = checked `seq` do
       Just (Right t) | t > 0 ->
         let least = t / fromIntegral (maxStreamSteps - 1)
         in case range of
-             (lo, Just hi) -> deltaIn (Just (min hi least `max` fromMaybe 0 lo), Just hi)
+             (lo, Just hi) -> deltaIn (Just (max (fromMaybe 0 lo) (min hi least)), Just hi)
              (_, Nothing)  -> deltaIn range >>= \dt -> if dt >= least then pure dt else choose (least, t)
       _ -> deltaIn range
     stepCount = case len of
