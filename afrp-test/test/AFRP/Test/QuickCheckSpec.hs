@@ -56,8 +56,16 @@ spec = do
             case s :: SignalSampleStream () of
               [_, (dt, _), _] -> dt > 2 / fromIntegral (maxStreamSteps - 1)
               _               -> True
+          -- (and far above: a step at least the least one, at most the
+          -- length; as many steps as reach the length, counted up to 1000
+          -- only, since a step drawn uniformly is below 10^-3 of the
+          -- length once in a thousand draws)
         , forAll (generateStream DistConstant (Nothing, Nothing) (Just (Right 1e300))) $ \s ->
-            length (s :: SignalSampleStream ()) < 1000 ]
+            case s :: SignalSampleStream () of
+              _ : (dt, _) : _ ->
+                dt >= 1e300 / fromIntegral (maxStreamSteps - 1) && dt <= 1e300
+                  && length (take 1001 s) == min 1001 (1 + ceiling (1e300 / dt))
+              _ -> False ]
     it "uniDistStreamMaxDT streams are well formed" $
       forAll (uniDistStreamMaxDT 0.5) $ \s ->
         wellFormed (s :: SignalSampleStream ()) && all ((<= 0.5) . fst) s
