@@ -70,6 +70,7 @@ module AFrobRobotSim
   , notesBounds
   , validateWorld
   , validateWorldIn
+  , maxRobotId
     -- * Dimensions and robot types
   , wallLength
   , wallThickness

@@ -15,9 +15,12 @@ module TestUtil
   , withTempDir
   , withTMPDIR
   , withCaps
+  , cLocale
   ) where
 
 import           Control.Exception (NonTermination (..), bracket, evaluate, try)
+import qualified Data.ByteString.Builder as B
+import qualified Data.ByteString.Lazy as BL
 import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
 import           System.Directory  (createDirectory, getTemporaryDirectory, removeDirectoryRecursive)
 import           System.Environment (lookupEnv, setEnv, unsetEnv)
@@ -120,3 +123,11 @@ withTMPDIR dir act = bracket (lookupEnv "TMPDIR") (maybe (unsetEnv "TMPDIR") (se
 -- afterwards).
 withCaps :: Int -> IO a -> IO a
 withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapabilities k >> act)
+
+-- | Text as GHC decodes it from a command line (or a file's name) in the
+-- C locale: each UTF-8 byte above 127 as the stand-in character
+-- U+DC00 + the byte. Passed to a child process or to a file operation, it
+-- gives those very bytes in any locale.
+cLocale :: String -> String
+cLocale = map (\b -> if b < 0x80 then toEnum (fromIntegral b) else toEnum (0xDC00 + fromIntegral b))
+          . BL.unpack . B.toLazyByteString . B.stringUtf8

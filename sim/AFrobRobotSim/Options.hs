@@ -59,6 +59,7 @@ module AFrobRobotSim.Options
   , parseSimArgs
   , parseKeys
   , parseParam
+  , argText
   , validateOptions
   , validateOptionsIn
   , videoExtensions
@@ -190,7 +191,7 @@ parseSimArgs o0 = go o0 False False
       , ("--log",     \v -> Right o { optLog = Just v })
       , ("--replay",  \v -> Right o { optReplay = Just v })
       , ("--result",  \v -> Right o { optResult = Just v })
-      , ("--param",   \v -> (\p -> o { optParams = setParam p (optParams o) }) <$> parseParam v)
+      , ("--param",   \v -> (\p -> o { optParams = setParam p (optParams o) }) <$> parseParam (argText v))
       ]
   -- the default files that were not named follow the output folder
   relocated o svgNamed pageNamed = o
@@ -217,6 +218,45 @@ parseParam :: String -> Either String (String, String)
 parseParam v = case break (== '=') v of
   (name, '=' : value) | not (null name) -> Right (name, value)
   _ -> Left ("--param expects NAME=VALUE, got " ++ show v)
+
+-- | A command-line argument (or the program's name) as text. GHC
+-- decodes the arguments in the locale's encoding; in one that is not
+-- UTF-8 (the C locale of many batch jobs and containers) each byte above
+-- 127 comes as a stand-in character, U+DC80 to U+DCFF, which is how a
+-- file of that name is opened again. As text, @--param naïve=1@ then did
+-- not name the parameter @"naïve"@ that a controller asks for, and a
+-- result line wrote the world @wé.world@ as two replacement characters.
+-- 'argText' decodes each run of stand-ins that is UTF-8 as the
+-- characters it spells, and leaves any other stand-in (a byte that is no
+-- UTF-8) as it is. An argument without stand-ins is returned unchanged.
+-- A @--param@'s name and value are read through it; a file's name is
+-- kept as given for opening, and written through it in a result line or
+-- a log.
+--
+-- >>> argText "w\56515\56489.world"   -- "wé.world" in the C locale
+-- "w\233.world"
+-- >>> argText "a\56575b"              -- the byte 0xFF: no UTF-8
+-- "a\56575b"
+argText :: String -> String
+argText s = case break standIn s of
+  (plain, [])   -> plain
+  (plain, rest) -> let (run, rest') = span standIn rest
+                   in plain ++ utf8 [ fromEnum c - 0xDC00 | c <- run ] ++ argText rest'
+  where
+    standIn c = c >= '\xDC80' && c <= '\xDCFF'
+    -- (the bytes of a run, all above 127: a well-formed UTF-8 sequence
+    -- becomes its character; any other byte stays a stand-in)
+    utf8 :: [Int] -> String
+    utf8 [] = []
+    utf8 (b : bs)
+      | b >= 0xC2, b <= 0xDF, c1 : r <- bs, cont c1 = toEnum (bits b 0x1F [c1]) : utf8 r
+      | b >= 0xE0, b <= 0xEF, c1 : c2 : r <- bs, cont c1, cont c2
+      , let v = bits b 0x0F [c1, c2], v >= 0x800, v < 0xD800 || v > 0xDFFF = toEnum v : utf8 r
+      | b >= 0xF0, b <= 0xF4, c1 : c2 : c3 : r <- bs, cont c1, cont c2, cont c3
+      , let v = bits b 0x07 [c1, c2, c3], v >= 0x10000, v <= 0x10FFFF = toEnum v : utf8 r
+      | otherwise = toEnum (0xDC00 + b) : utf8 bs
+    cont c = c >= 0x80 && c <= 0xBF
+    bits b mask cs = foldl (\acc c -> acc * 64 + (c - 0x80)) (b `mod` (mask + 1)) cs
 
 -- | Set a parameter: a later @--param@ of the same name replaces the
 -- earlier one where it stood.

@@ -290,8 +290,8 @@ stepTallies dt s ts = forceAll (zipWith one ts (wsRobots s))
 -- last state simulated). See the module documentation for the fields.
 resultJSON :: String -> SimOptions -> LogSummary -> [RobotTally] -> JSON
 resultJSON prog o summary tallies = JObject
-  [ ("program", JString prog)
-  , ("world", JString (maybe "default" id (optWorldFile o)))
+  [ ("program", JString (argText prog))
+  , ("world", JString (maybe "default" argText (optWorldFile o)))
   , ("seed", JNumber (fromIntegral (optSeed o)))
   , ("dt", JNumber (optDt o))
   , ("seconds", JNumber (optSeconds o))

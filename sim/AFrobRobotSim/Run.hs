@@ -131,7 +131,7 @@ runSimWith opts mworld rcA rcB = do
       let readsText | null asked = "it reads none"
                     | otherwise  = "it reads " ++ intercalate ", " (map quote asked)
       unless (null unread) $ putErr $ unlines
-        [ prog ++ ": warning: --param " ++ k ++ "=" ++ v ++ ": this program has asked for no parameter named "
+        [ prog ++ ": warning: --param " ++ displayPath (k ++ "=" ++ v) ++ ": this program has asked for no parameter named "
           ++ quote k ++ " (" ++ readsText ++ ")" | (k, v) <- unread ]
       -- (a key pressed after the last step: a typo in its time, or a run
       -- shorter than meant)
@@ -180,7 +180,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
       style    = RenderStyle scale (optRays opts) (optTrails opts)
       logCfg   = defaultLogConfig { lcBounds = bounds, lcWorld = world, lcDt = dt
                                   , lcFps = optFps opts, lcSeed = optSeed opts
-                                  , lcCommandLine = prog : args }
+                                  , lcCommandLine = map argText (prog : args) }
       -- frame f is taken at the step nearest to simulated time f / fps
       -- (the same steps as the log's frames)
       frameAt  = isFrameStep dt (optFps opts)

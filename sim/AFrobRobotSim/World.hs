@@ -61,6 +61,7 @@ module AFrobRobotSim.World
   , notesBounds
   , validateWorld
   , validateWorldIn
+  , maxRobotId
   , maxProblems
   , capProblems
   , worldProblems
@@ -219,6 +220,14 @@ objectName o = what o ++ " at " ++ showPos (otPos o)
     what OTSize {}    = "world size"
     showPos (Point2 x y) = "(" ++ show x ++ ", " ++ show y ++ ")"
 
+-- | The largest magnitude of a robot id in a world that runs: 2^53, the
+-- largest up to which every whole number is a 'Double'. The log, the
+-- result line and the replay page write ids as JSON numbers, which most
+-- readers (JavaScript's among them) take as 'Double's: two larger ids
+-- could be read as one.
+maxRobotId :: Integer
+maxRobotId = 2 ^ (53 :: Int)
+
 -- | The extent of a world: @Bounds xMin yMin xMax yMax@, in metres.
 data Bounds = Bounds !Double !Double !Double !Double
   deriving (Eq, Show)
@@ -230,8 +239,9 @@ notesBounds = Bounds worldXMin worldYMin worldXMax worldYMax
 -- | Check a world template: it has at most one 'OTSize', whose sides are
 -- finite and between 'minWorldSide' and 'maxWorldSide'; every coordinate
 -- and heading is a finite number; every object lies inside the world
--- (of the template's size, else the notes' 10 m); no two robots of one type
--- share an id; nothing overlaps at time 0 where the physics could not
+-- (of the template's size, else the notes' 10 m); every robot id is
+-- within 'maxRobotId' of 0, and no two robots of one type share an id;
+-- nothing overlaps at time 0 where the physics could not
 -- untangle it: a robot with a wall, block, ball or another robot, a ball
 -- with a wall or block (touching is allowed, to within a nanometre for
 -- rounding; walls and blocks may overlap each other, and balls each
@@ -302,7 +312,10 @@ worldProblems bounds labelled = concatMap problemsOf indexed
           [(i, name lo ++ ": lies (partly) outside the world [" ++ show x0 ++ ", " ++ show x1
                  ++ "] x [" ++ show y0 ++ ", " ++ show y1 ++ "]")]
       | otherwise =
-          [ (i, name lo ++ " has the same id as " ++ name (labelledAt j))
+          [ (i, name lo ++ ": a robot id must be from -2^53 to 2^53 (a JSON reader, the replay page's among them, "
+                  ++ "reads a larger one as a nearby number)")
+          | Just _ <- [robotKindOf o], abs (toInteger (otRId o)) > maxRobotId ]
+          ++ [ (i, name lo ++ " has the same id as " ++ name (labelledAt j))
           | Just k <- [robotKindOf o], Just j <- [M.lookup (k, otRId o) firstWithId], j < i ]
           ++ [ (i, name lo ++ " overlaps " ++ name (labelledAt j)) | j <- overlapsBefore i o ]
           ++ [ (i, name lo ++ ": " ++ overfullMessage n) | Just (j, n) <- [overfull], j == i ]

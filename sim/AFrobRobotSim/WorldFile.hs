@@ -61,7 +61,7 @@
 -- ball    ::= \"ball\" \"at\" NUMBER NUMBER
 -- comment ::= \"#\" any characters up to the end of the line
 --
--- ID      ::= [ \"+\" | \"-\" ] DIGITS                           (must fit in an Int)
+-- ID      ::= [ \"+\" | \"-\" ] DIGITS    (must fit in an Int; a world runs with ids from -2^53 to 2^53)
 -- NUMBER  ::= [ \"+\" | \"-\" ] DIGITS [ \".\" DIGITS ] [ ( \"e\" | \"E\" ) [ \"+\" | \"-\" ] DIGITS ]
 -- DIGITS  ::= one or more of 0-9
 -- @

@@ -8,6 +8,7 @@ import           Test.QuickCheck  (conjoin, counterexample, elements, forAll, pr
 
 import           AFrobRobotSim.Options
 import           AFrobRobotSim.World (Bounds (..))
+import           TestUtil         (cLocale)
 
 -- The SVG, the page and the output folder a command line gives.
 outputs :: [String] -> Either String (Maybe FilePath, Maybe FilePath, FilePath)
@@ -162,10 +163,40 @@ spec = do
       -- (the long side counts: a world 100 m by 1 m at 0.1 pixels a metre is 10 pixels wide)
       [ m | m <- validateOptionsIn (Bounds 0 0 100 1) defaultSimOptions { optScale = Just 0.1 }, "too small" `isInfixOf` m ]
         `shouldBe` []
+    it "reads a --param given in a locale that is not UTF-8 as the text it spells (it was no parameter the controller asks for)" $
+      fmap' optParams (parseSimArgs defaultSimOptions ["--param", cLocale "naïve=∑ 1", "--param", "a\56575=b"])
+        `shouldBe` Right [("naïve", "∑ 1"), ("a\56575", "b")]
+  describe "argText" $ do
+    it "decodes the stand-ins of UTF-8 bytes (the C locale's) as the characters they spell" $ do
+      argText (cLocale "wé.world") `shouldBe` "wé.world"
+      argText (cLocale "€ and 𝄞, plain ASCII") `shouldBe` "€ and 𝄞, plain ASCII"
+    it "leaves text without stand-ins as it is" $
+      property $ \t -> let s = filter (not . standIn) t in argText s === s
+    it "round-trips any text through its UTF-8 bytes as stand-ins" $
+      property $ \t -> let s = filter (\c -> not (standIn c) && (c < '\xD800' || c > '\xDFFF')) t
+                      in argText (cLocale s) === s
+    it "keeps a stand-in that is no UTF-8: a lone continuation byte, an overlong form, a surrogate, a cut sequence" $
+      mapM_ (\bytes -> let s = map (toEnum . (0xDC00 +)) bytes in argText ("x" ++ s ++ "y") `shouldBe` "x" ++ s ++ "y")
+        [ [0x80], [0xFF], [0xC0, 0x80], [0xC1, 0xBF], [0xE0, 0x80, 0x80], [0xED, 0xA0, 0x80]
+        , [0xF4, 0x90, 0x80, 0x80], [0xF0, 0x9D, 0x84], [0xC3] ]
+    it "decodes the well-formed part of a run and keeps the rest" $
+      argText ("a" ++ cLocale "é" ++ "\56575" ++ cLocale "ü") `shouldBe` "aé\56575ü"
+  describe "parseKeys" $
     it "scripts the space and comma keys by name (the list cannot hold them), any other key as one character" $ do
       parseKeys "1:space, 2:COMMA,3::,4:s" `shouldBe` Right [(1, ' '), (2, ','), (3, ':'), (4, 's')]
       mapM_ (\k -> parseKeys k `shouldSatisfy` either ("a KEY is one character, or space or comma" `isInfixOf`) (const False))
             ["1:", "1:ab", "1:spacebar", "1: "]
+
+-- | A stand-in of a byte (U+DC80 to U+DCFF).
+standIn :: Char -> Bool
+standIn c = c >= '\xDC80' && c <= '\xDCFF'
+
+-- | 'fmap' on the options a command line runs with.
+fmap' :: (SimOptions -> a) -> Either String Command -> Either String a
+fmap' f r = case r of
+  Right (RunWith o) -> Right (f o)
+  Right ShowHelp    -> Left "help"
+  Left err          -> Left err
 
 -- | The text from the last occurrence of a pattern on (and what is before
 -- it), or the whole text and nothing when it does not occur.

@@ -21,7 +21,7 @@ import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, isSuffixOf, sort, stripPrefix, tails)
 import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
 import           Data.Char           (isPrint)
-import           System.Directory    (createDirectory, createFileLink, doesFileExist, getPermissions, listDirectory,
+import           System.Directory    (createDirectory, createFileLink, doesFileExist, doesPathExist, getPermissions, listDirectory,
                                       setOwnerExecutable, setPermissions)
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     (takeFileName, (</>))
@@ -867,6 +867,21 @@ spec = do
       err `shouldSatisfy` ("--log" `isInfixOf`)
       err `shouldSatisfy` ("would overwrite the world file" `isInfixOf`)
       readFile wf `shouldReturn` "ball at 0 0\n"
+    it "an output named as the output folder, refused before anything is made (it failed after the run, the folder made)" $
+      withTempDir $ \dir -> do
+        let fw = dir </> "f"
+        -- with the frames; without them, where the page goes by default;
+        -- through another spelling and through a link
+        createFileLink "f" (dir </> "l")
+        forM_ [ (quick fw) { optSvg = Just fw }
+              , (quick fw) { optFrames = False, optLog = Just fw, optReplay = Just (fw </> "replay.html") }
+              , (quick fw) { optResult = Just (dir </> "." </> "f" ++ "/") }
+              , (quick fw) { optLog = Just (dir </> "l") } ] $ \o -> do
+          (out, err, r) <- captured (runSimWith o { optSeconds = 0.2 } (Just world) drive drive)
+          r `shouldBe` Left (ExitFailure 2)
+          out `shouldBe` ""
+          err `shouldSatisfy` (("is the output folder (--out " ++ show fw ++ ")") `isInfixOf`)
+          doesPathExist fw `shouldReturn` False
     it "an output that is a hard link to the world file (one file under two names no path shows)" $ withTempDir $ \dir -> do
       let wf = dir </> "w.world"
       writeFile wf "ball at 0 0\n"

@@ -34,7 +34,7 @@ import           AFrob               hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.JSON
 import           AFrobRobotSim.Sweep (maxLineBytes, mergeResults, sweepMergeMain)
-import           TestUtil (withTempDir)
+import           TestUtil (cLocale, withTempDir)
 
 -- | The environment variable that makes the test binary run 'child'.
 childVariable :: String
@@ -52,6 +52,7 @@ child "program" = do
   failAt <- paramOr "failAt" (1 / 0 :: Double)
   _      <- paramOr "ratio" (0 :: Rational)   -- read, for the test of a value that cannot be made
   _      <- lookupSimParam "tag"               -- asked for, so that runSim does not warn of it
+  _      <- lookupSimParam "größe"             -- (a name beyond ASCII, read in the C locale)
   let seed = case parseSimArgs defaultSimOptions args of
         Right (RunWith o) -> optSeed o
         _                 -> 0
@@ -494,6 +495,19 @@ spec = do
       map (number "distance") results `shouldSatisfy` (\ds -> case ds of
         [slow, fast] -> slow > 0.05 && fast > 1.5 * slow
         _            -> False)
+    it "in the C locale, a parameter and a world file named beyond ASCII are read and written as spelt (the parameter was not found, the names were U+FFFD)" $
+      withTempDir $ \dir -> do
+        prog <- childScript dir "program"
+        let wf = dir </> cLocale "wé.world"
+            file = dir </> "result.json"
+        writeFile wf "simbotA 1 at 0 0\n"
+        (code, _, err) <- runScriptCode [("LC_ALL", "C")] prog
+          [ "--quiet", "--no-svg", "--no-replay", "--seconds", "0.1", "--world", wf
+          , "--param", cLocale "größe=ü", "--result", file ]
+        (code, err) `shouldBe` (ExitSuccess, "")
+        r <- parsed <$> readFile' file
+        field ["world"] r `shouldBe` JString (dir </> "wé.world")
+        field ["params"] r `shouldBe` JObject [("größe", JString "ü")]
     it "counts the bumps and the time stuck against a wall" $ withTempDir $ \dir -> do
       (code, err, line) <- runOnce dir ["--seconds", "10", "--seed", "7", "--param", "speed=1"]
       (code, err) `shouldBe` (ExitSuccess, "")

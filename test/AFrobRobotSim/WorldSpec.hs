@@ -133,10 +133,19 @@ spec = do
     it "counts only the balls inside the world" $
       problems (replicate 1414 ball ++ [OTBall (Point2 20 0)])
         `shouldBe` ["ball at (20.0, 0.0): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"]
-  describe "validateWorld: ids" $
+  describe "validateWorld: ids" $ do
     it "names both robots that share an id" $
       problems [OTSimbotB 2 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 0) 0]
         `shouldBe` ["SimbotB 2 at (2.0, 0.0) has the same id as SimbotB 2 at (0.0, 0.0)"]
+    it "takes ids from -2^53 to 2^53, and refuses larger ones (JSON readers took 2^53 + 1 as 2^53)" $ do
+      let big = fromInteger maxRobotId :: Int
+      problems [OTSimbotA big (Point2 0 0) 0, OTSimbotB (negate big) (Point2 2 0) 0] `shouldBe` []
+      map (takeWhile (/= ':')) (problems [ OTSimbotA (big + 1) (Point2 0 0) 0, OTSimbotB maxBound (Point2 2 0) 0
+                                         , OTSimbotA (negate big - 1) (Point2 (-2) 0) 0, OTSimbotB minBound (Point2 0 2) 0 ])
+        `shouldBe` [ "SimbotA 9007199254740993 at (0.0, 0.0)", "SimbotB 9223372036854775807 at (2.0, 0.0)"
+                   , "SimbotA -9007199254740993 at (-2.0, 0.0)", "SimbotB -9223372036854775808 at (0.0, 2.0)" ]
+      problems [OTSimbotA (big + 1) (Point2 0 0) 0]
+        `shouldSatisfy` all ("a robot id must be from -2^53 to 2^53" `isInfixOf`)
 
   describe "robots and blocks" $ do
     it "never starts a robot inside a block: the simulation refuses the world" $

@@ -9,8 +9,9 @@
 -- wrong: the options together ('validateOptionsIn'), every output's folder
 -- (it exists and may be written; through a symbolic link, the target's),
 -- two outputs that are one file under two names (a path, a link, a hard
--- link), an output that is the world file or that a frame would replace
--- (a name like @frame-000001.ppm@ in the frames' folder), @--video@
+-- link), an output named as the output folder that the run makes, an
+-- output that is the world file or that a frame would replace (a name
+-- like @frame-000001.ppm@ in the frames' folder), @--video@
 -- without ffmpeg, and the output folder, which it creates, proving it
 -- writable with a file of a new name that it removes.
 module AFrobRobotSim.Run.Preflight
@@ -86,6 +87,12 @@ preflight bounds opts = do
             ++ [ "two outputs go to the same file: " ++ flag1 ++ " " ++ show f1 ++ " and " ++ flag2 ++ " " ++ show f2
                | ((flag1, f1, c1), i) <- zip canon [0 :: Int ..], ((flag2, f2, c2), j) <- zip canon [0 ..]
                , i < j, sameFile c1 c2 ]
+            -- (a file named as the output folder that the run is to make:
+            -- it failed only after the run, with the folder made)
+            ++ [ flag ++ " " ++ show f ++ " is the output folder (--out " ++ show (optOut opts)
+                 ++ "), where the run writes " ++ (if optFrames opts then "the frames" else "its files")
+                 ++ ": choose another name"
+               | inOut, (flag, f, (c, _)) <- canon, folder c == folder outCanon ]
             ++ [ flag ++ " " ++ show f ++ " would overwrite the world file " ++ show w
                | (w, cw) <- world, (flag, f, c) <- canon, sameFile c cw ]
             ++ [ what ++ " " ++ show f ++ " would be overwritten by a frame: --frames writes "
