@@ -101,7 +101,7 @@ import qualified Data.ByteString.Unsafe    as BU (unsafeUseAsCStringLen)
 import           GHC.ByteOrder             (ByteOrder (..), targetByteOrder)
 import           Numeric                   (showHex)
 import           Control.Exception         (IOException, catch, evaluate, finally, mask, mask_, try, uninterruptibleMask_)
-import           System.Directory          (getTemporaryDirectory, removeFile)
+import           System.Directory          (doesDirectoryExist, getTemporaryDirectory, removeFile)
 import           System.FilePath           (takeDirectory)
 import           System.IO
 
@@ -271,8 +271,9 @@ fnvBasis = 14695981039346656037
 -- FILE.jsonl --replay OUT.html@ does. A log that does not read is a
 -- 'Left' with the reader's message (nothing is written then); a page that
 -- cannot be written is a 'Left' naming it, and so is a page that is the
--- log itself (under any name: the log is kept), or in a folder that does
--- not exist (said before the log is read).
+-- log itself (under any name: the log is kept), an empty name, a
+-- folder, or in a folder that does not exist (said before the log is
+-- read).
 --
 -- The page is 'replayPage' of the log ('readLogFile'), made as a run's
 -- page is: the log is read a line at a time ('foldLogFile'), each frame's
@@ -285,10 +286,14 @@ fnvBasis = 14695981039346656037
 writeReplayFromLog :: FilePath -> FilePath -> IO (Either String ())
 writeReplayFromLog logPath out = do
   same <- (==) <$> canonicalPath logPath <*> canonicalPath out
+  isFolder <- doesDirectoryExist out
   let folder = takeDirectory out
   why <- notAFolder folder
   case why of
-    _ | same -> pure (Left (displayPath out ++ ": is the log being read; the page would overwrite it"))
+    _ | null logPath -> pure (Left "the log's name (--replay-from) is empty")
+      | null out -> pure (Left "the page's name (--replay) is empty")
+      | isFolder -> pure (Left ("cannot write the page " ++ displayPath out ++ ": it is a folder"))
+      | same     -> pure (Left (displayPath out ++ ": is the log being read; the page would overwrite it"))
     Just w   -> pure (Left ("cannot write the page " ++ displayPath out ++ ": " ++ displayPath folder ++ " " ++ w))
     Nothing  -> do
       tmp <- getTemporaryDirectory

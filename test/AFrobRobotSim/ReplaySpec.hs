@@ -255,6 +255,17 @@ spec = do
       r <- writeReplayFromLog missing (logPath </> "page.html")
       removeFile logPath
       r `shouldBe` Left ("cannot write the page " ++ (logPath </> "page.html") ++ ": " ++ logPath ++ " is not a folder")
+    it "says an empty name of the log or the page, and a page that is a folder, as such (it was a bare renameFile error)" $ do
+      tmp <- getTemporaryDirectory
+      (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
+      hClose h
+      writeFile logPath fixtureLogText
+      r1 <- writeReplayFromLog logPath ""
+      r2 <- writeReplayFromLog "" (logPath ++ ".html")
+      r3 <- writeReplayFromLog logPath tmp
+      removeFile logPath
+      (r1, r2) `shouldBe` (Left "the page's name (--replay) is empty", Left "the log's name (--replay-from) is empty")
+      r3 `shouldBe` Left ("cannot write the page " ++ tmp ++ ": it is a folder")
     it "refuses a page that is the log itself under another name, keeping the log" $ do
       tmp <- getTemporaryDirectory
       (logPath, h) <- openTempFile tmp "afrp-log.jsonl"

@@ -620,6 +620,34 @@ spec = do
                                       sbatch [dir </> "out", prog, "--seeds", "0..7"]
       (code, "not contiguous" `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
 
+    it "refuses a run listed twice, a --param given twice or with an empty value, an empty --shard; reads CR LF lines (all were taken)" $
+      withTempDir $ \dir -> do
+        sweep <- script "sweep"
+        let refused args what = do
+              (code, _, err) <- runScriptCode [] sweep ("--list" : args)
+              (code, what `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
+            listed args = do
+              (code, out, _) <- runScriptCode [] sweep ("--list" : args)
+              pure (code, lines out)
+        -- (sweep-merge refuses a run merged twice, after the whole sweep)
+        refused ["--seeds", "1,2,01"] "names the seed 1 twice"
+        refused ["--seeds", "1", "--worlds", "a.world,b.world,a.world"] "names the world a.world twice"
+        refused ["--param", "speed=0.5,1,0.5"] "names the value 0.5 twice"
+        refused ["--param", "speed=0.5", "--param", "speed=1"] "--param speed is given twice"
+        forM_ ["speed=,0.5", "speed=0.5,", "speed=", "speed=1,,2"] $ \p -> refused ["--param", p] "a value is empty"
+        refused ["--seeds", "1..3", "--shard", ""] "--shard expects I/N"
+        writeFile (dir </> "jobs") (unlines ["--seed 1 --param a=1", "--seed 2", "--seed  1\t--param a=1 ", "--seed 'x y'", "--seed 'x y'"])
+        (code, _, err) <- runScriptCode [] sweep ["--list", "--jobs", dir </> "jobs"]
+        code `shouldBe` ExitFailure 2
+        lines err `shouldBe` map (\(k, j) -> "sweep: " ++ dir </> "jobs" ++ ": line " ++ show k ++ " is line " ++ show j
+                                          ++ " again: each run may be in the list once (scripts/sweep-merge refuses a run merged twice)")
+                                 [(3 :: Int, 1 :: Int), (5, 4)]
+        -- lines ending in CR LF (a jobs file written on Windows)
+        writeFile (dir </> "crlf") "--seed 1 --param a=1\r\n# a comment\r\n\r\n--seed 2\r\n"
+        listed ["--jobs", dir </> "crlf"] `shouldReturn` (ExitSuccess, ["--seed 1 --param a=1", "--seed 2"])
+        -- what stays accepted: one parameter's values, two parameters
+        listed ["--seeds", "1", "--param", "a=1,2", "--param", "b=x"]
+          `shouldReturn` (ExitSuccess, ["--seed 1 --param a=1 --param b=x", "--seed 1 --param a=2 --param b=x"])
     it "counts as failed only the runs that failed, keeps job lines unexpanded, writes valid lines for odd seeds" $ withTempDir $ \dir -> do
       requireParallel
       prog <- childScript dir "program"
