@@ -50,7 +50,7 @@ module AFrobRobotSim.Test
   , robotGap
   ) where
 
-import           Control.Exception    (displayException, evaluate, try)
+import           Control.Exception    (SomeException, displayException, evaluate, try)
 import           Data.List            (intercalate, tails)
 import           Data.Maybe           (isJust)
 import           Test.QuickCheck
@@ -312,8 +312,12 @@ runT config duration rcA rcB p world
 -- ('runT') holds for the run of every world @w@ from @gen@. A failing world is
 -- shrunk ('shrinkWorld'); the smallest is printed, written to @file@ in the
 -- world-file format with the size the run gave it ('worldFileText') and
--- its run's replay page ('writeRunReplayPage': up to a controller's
--- failure, if one failed) to @file ++ \".html\"@.
+-- its run's replay page ('writeRunReplayPage') to @file ++ \".html\"@.
+-- The page shows the run up to 5 simulated seconds past the instant that
+-- decided @p@ false (what 'runT' prints), or up to a controller's
+-- failure, if one failed; the whole run when neither ends it sooner. (A
+-- failure early in a long run makes a short page: the page of the whole
+-- run, kept in memory, could take longer than the test.)
 --
 -- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB
 -- >   (genWorld defaultWorldMix notesBounds)
@@ -323,11 +327,22 @@ forAllRuns :: FilePath -> SimConfig -> Time -> SimbotController -> SimbotControl
 forAllRuns file config duration rcA rcB gen p =
   forAllShrinkShow gen shrinkWorld (worldFileText config) $ \w ->
     whenFail (do writeFile file (worldFileText config w)
-                 writeRunReplayPage page config duration w rcA rcB)
+                 upTo <- pageEnd w
+                 writeRunReplayPage page config upTo w rcA rcB)
              (counterexample ("(the world is written to " ++ file ++ ", its run's replay page to " ++ page ++ ")")
                              (runT config duration rcA rcB (p w) w))
   where
     page = file ++ ".html"
+    -- (the instant that decided, found as runT finds it: a third run, up
+    -- to about twice that instant; a controller's failure or a predicate
+    -- that throws leaves the whole duration, the page then ending at the
+    -- failure)
+    pageEnd w = do
+      decided <- try (evaluate (fmap explTime (explainT (p w) (runStream config duration w rcA rcB))))
+      pure $ case decided of
+        Right (Just t) -> min duration (t + 5)
+        Left (_ :: SomeException) -> duration
+        Right Nothing  -> duration
 
 -- | @worldFileText config world@: @world@ in the world-file format
 -- ('renderWorld'), as the run of @config@ saw it: a world without an
