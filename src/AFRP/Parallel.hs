@@ -268,6 +268,15 @@ bankSize sums = quotInt# (sizeofByteArray# sums) 8#
 -- occurrence @Event d@ the whole thing becomes @k sfs' d@, where @sfs'@ is
 -- the collection frozen just before the current step. The output at that
 -- instant is the new signal function's first output.
+--
+-- An event at time 0 passes the collection unstarted, and the output at
+-- time 0 is the new signal function's first output: the collection's own
+-- outputs at time 0 are seen only by @sfe@. Members carried over go on
+-- from their own local time when started (time spent switched out does
+-- not count); members that @k@ makes afresh start at local time 0 at the
+-- switching instant. If the new signal function switches at its own
+-- first sample, it does so at this same instant. (As Yampa's @pSwitch@;
+-- 'pSwitchB' and 'pSwitchZ' likewise.)
 pSwitch :: Functor col
         => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
         -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
@@ -287,7 +296,13 @@ pSwitchWith stepper rf sfs (SF e0) k = SF (lazyHandoverN (go (fmap sfNode sfs) e
 
 -- | Delayed 'pSwitch': at the switching instant the output is still the
 -- old collection's; @k sfs' d@ starts at that instant (its first output
--- discarded).
+-- discarded) and supplies the outputs from the next sample on.
+--
+-- An event at time 0: the output at time 0 is the initial collection's,
+-- and the new signal function, started at time 0, gives the outputs from
+-- the next sample on. Members carried over keep their local time, as for
+-- 'pSwitch'. (As Yampa's @dpSwitch@; 'dpSwitchB' and 'dpSwitchZ'
+-- likewise.)
 dpSwitch :: Functor col
          => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
          -> SF (a, col c) (Event d) -> (col (SF b c) -> d -> SF a (col c)) -> SF a (col c)
@@ -356,6 +371,14 @@ rpSwitchWith stepper rf sfs = SF (lazyN (go (fmap sfNode sfs)))
 -- | Delayed 'rpSwitch': at an event instant the output is still the old
 -- collection's; the new collection starts at that instant and supplies
 -- the outputs from the next sample on.
+--
+-- An event at time 0: @f@ receives the unstarted collection, the output at
+-- time 0 is the initial collection's, and the changed collection gives
+-- the outputs from the next sample on. Kept members keep their local
+-- time; new ones start at local time 0 at the event's instant. With
+-- events at consecutive samples, each collection gives exactly one output
+-- before the next takes over. (As Yampa's @drpSwitch@; 'drpSwitchB' and
+-- 'drpSwitchZ' likewise.)
 drpSwitch :: Functor col
           => (forall sf. a -> col sf -> col (b, sf)) -> col (SF b c)
           -> SF (a, Event (col (SF b c) -> col (SF b c))) (col c)

@@ -18,19 +18,28 @@
 -- of.
 --
 -- In every case the signal function switched in /starts/ at the switching
--- instant: its local time is 0 there, it sees the input sample of that
--- instant as its first sample, and (for the immediate switches) its
--- first output is the switch's output at that instant. A delayed switch
--- also starts the new signal function at the switching instant, but
--- discards its first output.
+-- instant: it sees the input sample of that instant as its first sample,
+-- and (for the immediate switches) its first output is the switch's output
+-- at that instant. A delayed switch also starts the new signal function at
+-- the switching instant, but discards its first output: the new one
+-- supplies the outputs from the next sample on.
+--
+-- Whatever the continuation builds afresh has local time 0 at the
+-- switching instant. A /frozen/ signal function that 'kSwitch', 'dkSwitch'
+-- or a collection switch ("AFRP.Parallel") hands on is different: when it
+-- is started, it repeats the step that the switch interrupted and then
+-- goes on from the local time it had, whenever it is started (time spent
+-- switched out does not count). So in @kSwitch localTime (after 1 ())
+-- (\s _ -> s)@ the output at 1 s is 1, not 0.
 --
 -- An event at time 0 switches at time 0.
 --
 -- A signal function switched in at an instant whose own event occurs at
 -- that same instant switches again, at once: so a switch into itself on
 -- an event that is always there at time 0 (@switch (sf &&& now ()) (\_ ->
--- that same switch)@, or 'after' 0) never finishes its sample, and runs
--- until memory runs out, as in Yampa. The event has to wait for time to
+-- that same switch)@, or 'after' 0) never finishes its sample: the
+-- program hangs (in constant memory), or GHC's runtime stops it with
+-- @\<\<loop\>\>@, as in Yampa. The event has to wait for time to
 -- pass ('after' with a positive time, or an event that is not there at
 -- the new signal function's first sample). 'kSwitch' and
 -- 'AFRP.Parallel.pSwitch' into themselves on such an event never finish
@@ -248,6 +257,12 @@ rSwitchFrom p (SF n0) = NStep (step n0)
 -- signal function's; the new one starts at that instant and supplies the
 -- outputs from the next sample on. Used by the notes' @vel@, where the new
 -- signal function is built from the switch's own output.
+--
+-- An event at time 0 switches at time 0: the output there is still
+-- @sf@'s, and the new signal function, started at time 0, gives the
+-- outputs from the next sample on. With events at consecutive samples,
+-- each signal function switched in gives exactly one output before the
+-- next takes over. (As Yampa's @drSwitch@.)
 drSwitch :: SF a b -> SF (a, Event (SF a b)) b
 drSwitch (SF n0) = SF (lazyN (go n0))
   where
@@ -275,7 +290,15 @@ kSwitch (SF n0) (SF e0) k = SF (lazyHandoverN (go n0 e0))
           (# m, b' #) -> (# Leave m, b' #))
 
 -- | Delayed 'kSwitch': at the switching instant the output is still
--- @sf@'s; @k sf' c@ starts there (first output discarded).
+-- @sf@'s; @k sf' c@ starts there (first output discarded) and supplies the
+-- outputs from the next sample on.
+--
+-- An event at time 0 passes the original, unstarted @sf@, and the output
+-- at time 0 is still @sf@'s. As for 'kSwitch', the frozen @sf'@ goes on
+-- from its own local time when started, while what @k@ builds afresh
+-- starts at local time 0 at the switching instant; if @k sf' c@ switches
+-- at its own first sample, that switch too happens at this instant.
+-- (As Yampa's @dkSwitch@.)
 dkSwitch :: SF a b -> SF (a, b) (Event c) -> (SF a b -> c -> SF a b) -> SF a b
 dkSwitch (SF n0) (SF e0) k = SF (lazyHandoverN (go n0 e0))
   where

@@ -6,8 +6,11 @@
 -- A @Task a b c@ is a signal function from @a@ to @b@ that may /end/ with a
 -- result of type @c@. Tasks sequence with @do@: when one ends, the next
 -- starts at that same instant (so its first output is the output at the
--- ending instant), with its local time at 0. A task that ends at time 0
--- takes no time at all, and the next one starts at once.
+-- ending instant), with its local time at 0. A task that ends at the
+-- instant it starts (at any time, not only at time 0) takes no time: its
+-- output is never seen, and the next task's first output is the output
+-- at that instant. Time-bounded tasks ('sleepT', 'timeOut', the event
+-- source of 'abortWhen') count their time from the instant they start.
 --
 -- Tasks are built in continuation-passing style on top of
 -- 'AFRP.Switch.switch', so a sequence of tasks costs one switch per step.
@@ -59,7 +62,8 @@ instance Monad (Task a b) where
 
 -- | @mkTask sf@ runs @sf@, outputting its first component, and ends at the
 -- first occurrence of its second component, with the event's value. At
--- that instant the output is already the next task's.
+-- that instant the output is already the next task's. An occurrence at
+-- the task's own first sample ends it at once: its output is never seen.
 mkTask :: SF a (b, Event c) -> Task a b c
 mkTask sf = Task (switch (sf >>> first (arr Left)))
 
@@ -68,8 +72,9 @@ mkTask sf = Task (switch (sf >>> first (arr Left)))
 runTask :: Task a b c -> SF a (Either b c)
 runTask t = unTask t (constant . Right)
 
--- | Run a task whose end is not expected. Its output after it has ended is
--- an error (raised only if that output is demanded).
+-- | Run a task whose end is not expected. Its output from the instant it
+-- ends, that instant included, is an error (raised only if that output is
+-- demanded).
 runTask_ :: Task a b c -> SF a b
 runTask_ t = runTask t >>> arr (either id (const (error
   "AFRP.Task.runTask_: the output of a task that has ended was demanded")))
@@ -77,7 +82,8 @@ runTask_ t = runTask t >>> arr (either id (const (error
 -- | A task as a signal function with an ending event: the output while it
 -- runs, and one occurrence carrying the result at the instant it ends.
 -- From that instant on the first component has no value; demanding it is
--- an error.
+-- an error. A task that ends at the instant it starts (@pure c@) gives its
+-- occurrence at that first sample, and so never has an output.
 taskToSF :: Task a b c -> SF a (b, Event c)
 taskToSF t = runTask t >>> (arr outputOf &&& (arr result >>> edgeBy ended Nothing))
   where
@@ -95,8 +101,9 @@ constT b = mkTask (constant b &&& never)
 -- | @sleepT t b@ outputs @b@ and ends, with @()@, at the first sample at or
 -- after local time @t@, within the rounding of the time accounting (as
 -- 'AFRP.EventSource.after', which it uses: six steps of 0.15 end
--- @sleepT 0.9@, at a local time of 0.8999999999999999). A negative or NaN
--- time is an error.
+-- @sleepT 0.9@, at a local time of 0.8999999999999999). The time counts
+-- from the instant the task starts; @sleepT 0 b@ ends there, and never
+-- outputs @b@. A negative or NaN time is an error.
 sleepT :: Time -> b -> Task a b ()
 sleepT t b
   | t < 0 || isNaN t = error ("AFRP.Task.sleepT: negative or NaN time, got " ++ show t)
@@ -108,7 +115,11 @@ snapT = mkTask (constant (error "AFRP.Task.snapT: no output (it ends at once)") 
 
 -- | @t \`timeOut\` d@ runs @t@ for at most @d@ seconds: it ends with
 -- @Just c@ if @t@ ends with @c@ first (or at the same instant), and with
--- 'Nothing' at the timeout. A negative or NaN @d@ is an error.
+-- 'Nothing' at the timeout. The @d@ seconds count from the instant the
+-- @timeOut@ task starts (not from time 0 of the whole signal function),
+-- and @t@ starts at that same instant. @t \`timeOut\` 0@ ends at once:
+-- with @Just c@ if @t@ ends at once too, with 'Nothing' otherwise. A
+-- negative or NaN @d@ is an error.
 timeOut :: Task a b c -> Time -> Task a b (Maybe c)
 timeOut t d
   | d < 0 || isNaN d = error ("AFRP.Task.timeOut: negative or NaN time, got " ++ show d)
@@ -118,7 +129,10 @@ timeOut t d
 
 -- | @t \`abortWhen\` sfe@ runs @t@ until it ends (result 'Left') or until
 -- @sfe@ occurs (result 'Right'); if both happen at one instant, the task's
--- own end wins.
+-- own end wins. @sfe@ starts together with the task, so its local time
+-- (for 'AFRP.EventSource.after', 'AFRP.EventSource.now' ...) counts from
+-- the task's start; an occurrence at that first sample aborts the task at
+-- once (its output is never seen), unless the task ends there too.
 abortWhen :: Task a b c -> SF a (Event d) -> Task a b (Either c d)
 abortWhen t sfe = mkTask ((taskToSF t &&& sfe) >>> arr pick)
   where
@@ -127,8 +141,11 @@ abortWhen t sfe = mkTask ((taskToSF t &&& sfe) >>> arr pick)
 -- | @repeatUntil m p@ runs @m@ again and again until its result satisfies
 -- @p@, and returns that result. A task that ends at the instant it starts
 -- (@pure x@, a 'AFRP.Task.sleepT' of 0) and never satisfies @p@ repeats
--- at that instant for ever: the sample never finishes (as in Yampa).
--- Some time must pass in each round.
+-- at that instant for ever: the sample never finishes (the program hangs,
+-- or GHC's runtime stops it with @\<\<loop\>\>@). Some time must pass in
+-- each round. ('repeatUntil', 'forAll' and 'forEver' are as Yampa's
+-- @FRP.Yampa.Task@ had them up to its version 0.12; later versions
+-- dropped them.)
 repeatUntil :: Monad m => m a -> (a -> Bool) -> m a
 repeatUntil m p = go
   where

@@ -69,6 +69,7 @@ spec = do
   rpSwitchSpec
   mapSpec
   loopSpec
+  documentedSpec
 
 parSpec :: Spec
 parSpec = do
@@ -388,3 +389,34 @@ loopSpec = describe "dpSwitchB in a feedback loop" $ do
 
   it "the detector (an edge) reads the fed-back output" $
     runDt 0.25 loopDetectorEdge (replicate 5 ()) `shouldTerminateWithLists` loopExpected
+
+------------------------------------------------------------------------------
+-- The cases the docs state for the collection switches: an event at time
+-- 0, the switching instant, members' local times (each checked against
+-- Yampa 0.15, which gives the same outputs). Samples every 0.5 s.
+
+documentedSpec :: Spec
+documentedSpec = describe "as documented: collection switches at time 0 and after a switch" $ do
+  let units = replicate 5 ()
+      lt100 = localTime >>> arr (+ 100)
+      addLt100 sfs () = parB (sfs ++ [lt100])
+  it "pSwitchB at time 0: the output there is the new collection's; dpSwitchB: the old one's" $ do
+    runDt 0.5 (pSwitchB [localTime] (now ()) addLt100) units
+      `shouldBe` [[0, 100], [0.5, 100.5], [1, 101], [1.5, 101.5], [2, 102]]
+    runDt 0.5 (dpSwitchB [localTime] (now ()) addLt100) units
+      `shouldBe` [[0], [0.5, 100.5], [1, 101], [1.5, 101.5], [2, 102]]
+  it "a carried member keeps its local time, a new one starts at 0 at the switching instant" $ do
+    runDt 0.5 (pSwitchB [localTime] (after 1 ()) addLt100) units
+      `shouldBe` [[0], [0.5], [1, 100], [1.5, 100.5], [2, 101]]
+    runDt 0.5 (dpSwitchB [localTime] (after 1 ()) addLt100) units
+      `shouldBe` [[0], [0.5], [1], [1.5, 100.5], [2, 101]]
+  it "a new signal function that switches at its own first sample does so at the same instant" $
+    runDt 0.5 (pSwitchB [localTime] (after 1 ())
+                 (\sfs () -> pSwitchB (sfs ++ [constant 50]) (now ()) addLt100)) units
+      `shouldBe` [[0], [0.5], [1, 50, 100], [1.5, 50, 100.5], [2, 50, 101]]
+  it "rpSwitchB at time 0 changes the collection before its first output; drpSwitchB after it" $ do
+    let events = [ ((), e) | e <- Event (++ [lt100]) : replicate 4 NoEvent ]
+    runDt 0.5 (rpSwitchB [localTime]) events
+      `shouldBe` [[0, 100], [0.5, 100.5], [1, 101], [1.5, 101.5], [2, 102]]
+    runDt 0.5 (drpSwitchB [localTime]) events
+      `shouldBe` [[0], [0.5, 100.5], [1, 101], [1.5, 101.5], [2, 102]]

@@ -46,6 +46,7 @@ spec = do
   kSwitchSpec
   decouplingSpec
   propertiesSpec
+  documentedSpec
 
 ------------------------------------------------------------------------------
 
@@ -444,3 +445,34 @@ propertiesSpec = describe "properties" $ do
     property $ forAll genFlagged $ \ss ->
       let sfe = arr (\((x, b), _) -> if b then Event x else NoEvent)
       in approxLists (runSamples (dkSwitch oldSF sfe (\s _ -> s)) ss) (runSamples oldSF ss)
+
+------------------------------------------------------------------------------
+-- The cases the module's docs state: an event at time 0, the instant of a
+-- switch, and the local time after it (each checked against Yampa 0.15,
+-- which gives the same outputs). Samples every 0.5 s.
+
+-- | @localTime@ plus a constant.
+ltPlus :: Double -> SF a Double
+ltPlus k = localTime >>> arr (+ k)
+
+documentedSpec :: Spec
+documentedSpec = describe "as documented: time 0, the switching instant, and the local time after it" $ do
+  let units = replicate 5 ()
+  it "drSwitch at time 0 keeps sf's output there; each of two switches at consecutive samples gives one output" $ do
+    runDt 0.5 (drSwitch localTime) [((), e) | e <- Event (ltPlus 100) : replicate 4 NoEvent]
+      `shouldBe` [0, 100.5, 101, 101.5, 102]
+    runDt 0.5 (drSwitch localTime) [((), e) | e <- [Event (ltPlus 100), Event (ltPlus 200), NoEvent, NoEvent, NoEvent]]
+      `shouldBe` [0, 100.5, 200.5, 201, 201.5]
+  it "kSwitch and dkSwitch: the frozen sf goes on from its own local time, what k builds starts at 0" $ do
+    let k s () = (s &&& localTime) >>> arr (\(a, b) -> a * 1000 + b)
+    runDt 0.5 (kSwitch localTime (after 1 ()) k) units `shouldBe` [0, 0.5, 1000, 1500.5, 2001]
+    runDt 0.5 (dkSwitch localTime (after 1 ()) k) units `shouldBe` [0, 0.5, 1, 1500.5, 2001]
+  it "dkSwitch at time 0 passes the unstarted sf, and the output at time 0 is sf's" $
+    runDt 0.5 (dkSwitch localTime (now ()) (\s () -> s)) units `shouldBe` [0, 0.5, 1, 1.5, 2]
+  it "a frozen sf started again later does not count the time it was switched out" $
+    runDt 0.5 (kSwitch localTime (after 1 ()) (\s () -> switch (constant (-1) &&& after 1 ()) (\() -> s)))
+               (replicate 7 ())
+      `shouldBe` [0, 0.5, -1, -1, 1, 1.5, 2]
+  it "a delayed switch into one that switches at its own first sample switches again at that instant" $
+    runDt 0.5 (dkSwitch (constant 0) (after 1 ()) (\_ () -> dkSwitch (constant 1) (now ()) (\_ () -> ltPlus 100))) units
+      `shouldBe` [0, 0, 0, 100.5, 101]

@@ -25,6 +25,7 @@ spec = do
   loopsSpec
   lawsSpec
   propertiesSpec
+  documentedSpec
 
 ------------------------------------------------------------------------------
 
@@ -318,3 +319,29 @@ propertiesSpec = describe "properties" $ do
           firstIx = length (takeWhile (< t) times)
           expected = [if i == firstIx then Event () else NoEvent | i <- [0 .. length times - 1]]
       in outs QC.=== expected
+
+------------------------------------------------------------------------------
+-- The cases the docs state: a task that ends at once, and the clocks of
+-- the time-bounded tasks, which start with the task (each checked against
+-- Yampa 0.15, which gives the same outputs). Samples every 0.5 s.
+
+documentedSpec :: Spec
+documentedSpec = describe "as documented: tasks that end at once, and clocks that start with the task" $ do
+  it "taskToSF of a task that ends at once: its occurrence at the first sample, and no output" $ do
+    let outs = runDt 0.5 (taskToSF (pure 5 :: Task () Double Int)) (units 5)
+    map snd outs `shouldBe` [Event 5, NoEvent, NoEvent, NoEvent, NoEvent]
+    evaluate (fst (head outs)) `shouldThrow` anyErrorCall
+  it "runTask_: the output at the ending instant is already an error" $ do
+    let outs = runDt 0.5 (runTask_ (sleepT 1 7 :: Task () Double ())) (units 5)
+    take 2 outs `shouldBe` [7, 7]
+    evaluate (outs !! 2) `shouldThrow` anyErrorCall
+  it "abortWhen's event source counts from the task's start" $
+    runDt 0.5 (runTask (sleepT 1 (-1) >> ((constT 7 :: Task () Double Int) `abortWhen` after 0.5 'x'))) (units 5)
+      `shouldBe` [Left (-1), Left (-1), Left 7, Right (Right 'x'), Right (Right 'x')]
+  it "timeOut counts from the task's start; timeOut 0 ends at once" $ do
+    runDt 0.5 (runTask (sleepT 1 (-1) >> ((sleepT 2 7 :: Task () Double ()) `timeOut` 0.5))) (units 5)
+      `shouldBe` [Left (-1), Left (-1), Left 7, Right Nothing, Right Nothing]
+    runDt 0.5 (runTask ((pure 5 :: Task () Double Int) `timeOut` 0)) (units 2)
+      `shouldBe` [Right (Just 5), Right (Just 5)]
+    runDt 0.5 (runTask (sleepT 1 (-1) >> ((constT 7 :: Task () Double Int) `timeOut` 0))) (units 3)
+      `shouldBe` [Left (-1), Left (-1), Right Nothing]
