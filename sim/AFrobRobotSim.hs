@@ -43,6 +43,7 @@ module AFrobRobotSim
   , getSimParams
   , simParamsOf
   , lookupSimParam
+  , argText
   , paramOr
   , readSimParam
   , defaultWorld

@@ -191,7 +191,7 @@ parseSimArgs o0 = go o0 False False
       , ("--log",     \v -> Right o { optLog = Just v })
       , ("--replay",  \v -> Right o { optReplay = Just v })
       , ("--result",  \v -> Right o { optResult = Just v })
-      , ("--param",   \v -> (\p -> o { optParams = setParam p (optParams o) }) <$> parseParam (argText v))
+      , ("--param",   \v -> (\p -> o { optParams = setParam p (optParams o) }) <$> (\(k, x) -> (argText k, x)) <$> parseParam v)
       ]
   -- the default files that were not named follow the output folder
   relocated o svgNamed pageNamed = o
@@ -229,9 +229,10 @@ parseParam v = case break (== '=') v of
 -- 'argText' decodes each run of stand-ins that is UTF-8 as the
 -- characters it spells, and leaves any other stand-in (a byte that is no
 -- UTF-8) as it is. An argument without stand-ins is returned unchanged.
--- A @--param@'s name and value are read through it; a file's name is
--- kept as given for opening, and written through it in a result line or
--- a log.
+-- A @--param@'s name is read through it, to be compared with the names a
+-- program asks for. Its value, like a file's name, is kept as given (as
+-- 'System.Environment.getArgs' gives it, so that a value naming a file
+-- opens it), and written through 'argText' in a result line or a log.
 --
 -- >>> argText "w\56515\56489.world"   -- "wé.world" in the C locale
 -- "w\233.world"

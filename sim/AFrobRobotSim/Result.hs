@@ -104,6 +104,10 @@ simParamsOf args = case parseSimArgs defaultSimOptions args of
   _                 -> []
 
 -- | The value of one @--param@ of this program's command line, if given.
+-- The name is matched as text in any locale; the value is as
+-- 'System.Environment.getArgs' gives it (in a locale that is not UTF-8,
+-- with stand-ins for the bytes beyond ASCII, so that a file it names
+-- opens: 'AFrobRobotSim.Options.argText' makes it text).
 lookupSimParam :: String -> IO (Maybe String)
 lookupSimParam name = do
   atomicModifyIORef' paramReads (\(e, ns) -> ((e, name : ns), ()))
@@ -296,7 +300,7 @@ resultJSON prog o summary tallies = JObject
   , ("dt", JNumber (optDt o))
   , ("seconds", JNumber (optSeconds o))
   , ("odometryNoise", JNumber (optOdometryNoise o))
-  , ("params", JObject [ (k, JString v) | (k, v) <- optParams o ])
+  , ("params", JObject [ (k, JString (argText v)) | (k, v) <- optParams o ])
   , ("outcome", JObject
       [ ("simulated", JNumber (lsSimulated summary))
       , ("steps", JNumber (fromIntegral (lsSteps summary)))

@@ -642,6 +642,13 @@ spec = do
         lines err `shouldBe` map (\(k, j) -> "sweep: " ++ dir </> "jobs" ++ ": line " ++ show k ++ " is line " ++ show j
                                           ++ " again: each run may be in the list once (scripts/sweep-merge refuses a run merged twice)")
                                  [(3 :: Int, 1 :: Int), (5, 4)]
+        -- (the line numbers counted past comments and blank lines; a line of
+        -- form feeds or of two CRs is blank, as the sweep skips it)
+        writeFile (dir </> "blanks") "# a\n\n--seed 1\n\f\n \n--seed 2\n\r\r\n--seed  1\n\f\n"
+        (code', _, err') <- runScriptCode [] sweep ["--list", "--jobs", dir </> "blanks"]
+        code' `shouldBe` ExitFailure 2
+        lines err' `shouldBe` ["sweep: " ++ dir </> "blanks" ++ ": line 8 is line 3 again: each run may be in the list once"
+                               ++ " (scripts/sweep-merge refuses a run merged twice)"]
         -- lines ending in CR LF (a jobs file written on Windows)
         writeFile (dir </> "crlf") "--seed 1 --param a=1\r\n# a comment\r\n\r\n--seed 2\r\n"
         listed ["--jobs", dir </> "crlf"] `shouldReturn` (ExitSuccess, ["--seed 1 --param a=1", "--seed 2"])

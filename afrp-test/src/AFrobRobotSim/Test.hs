@@ -50,7 +50,7 @@ module AFrobRobotSim.Test
   , robotGap
   ) where
 
-import           Control.Exception    (SomeException, displayException, evaluate, try)
+import           Control.Exception    (SomeAsyncException, displayException, evaluate, fromException, try, tryJust)
 import           Data.List            (intercalate, tails)
 import           Data.Maybe           (isJust)
 import           Test.QuickCheck
@@ -334,15 +334,21 @@ forAllRuns file config duration rcA rcB gen p =
   where
     page = file ++ ".html"
     -- (the instant that decided, found as runT finds it: a third run, up
-    -- to about twice that instant; a controller's failure or a predicate
-    -- that throws leaves the whole duration, the page then ending at the
-    -- failure)
+    -- to about twice that instant, evaluated here whole; a controller's
+    -- failure or a predicate that throws leaves the whole duration, the
+    -- page then ending at the failure; an asynchronous exception, such as
+    -- a timeout's, is not caught)
     pageEnd w = do
-      decided <- try (evaluate (fmap explTime (explainT (p w) (runStream config duration w rcA rcB))))
+      decided <- tryJust synchronous (evaluate (case explainT (p w) (runStream config duration w rcA rcB) of
+                                                  Nothing -> Nothing
+                                                  Just e  -> let t = explTime e in t `seq` Just t))
       pure $ case decided of
         Right (Just t) -> min duration (t + 5)
-        Left (_ :: SomeException) -> duration
         Right Nothing  -> duration
+        Left ()        -> duration
+    synchronous e = case fromException e of
+      Just (_ :: SomeAsyncException) -> Nothing
+      Nothing                        -> Just ()
 
 -- | @worldFileText config world@: @world@ in the world-file format
 -- ('renderWorld'), as the run of @config@ saw it: a world without an

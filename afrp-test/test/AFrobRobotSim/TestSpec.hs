@@ -384,6 +384,23 @@ specWithFiles = do
               _ -> expectationFailure ("the failing controller passed: " ++ output result))
           [(throwsAt3, "gave up"), (nanDrive, "NaN")]
 
+  it "forAllRuns: a controller that fails soon after the instant that decided ends the page there (it gave a page of no frame)" $ \tmp -> do
+    -- (decided false at 1 s; the controller fails at 1.2 s, within the
+    -- stretch that explaining reads)
+    let file = tmp </> "afrp-test-fails-after.world"
+        gaveUp _ = localTime >>> arr (\t -> if t >= 1.2 then error "gave up" else mrFinalize (ddVelTR 0.2 0))
+    result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+      forAllRuns file defaultSimConfig 10 gaveUp gaveUp (pure [OTSimbotA 1 (Point2 0 0) 0])
+        (\_ -> Always (SP (arr (\ws -> null (wsRobots ws) || wsTime ws < 1))))
+    case result of
+      Failure {} -> do
+        page <- readFile (file ++ ".html")
+        length page `seq` mapM_ removeFile [file, file ++ ".html"]
+        pageSummary page `shouldSatisfy` ("gave up" `isInfixOf`)
+        -- (frames at 25 a second up to the step before 1.2 s: 0 to 1.16)
+        occurrences "\"frame\"" page `shouldBe` 30
+      _ -> expectationFailure ("the run was not found to fail: " ++ output result)
+
 -- A robot that drives straight at full speed: in a world without walls it
 -- ends up against the world's edge, stuck.
 straight :: SimbotController
