@@ -21,10 +21,8 @@ import           AFRP.Test.LTL
 import           AFRP.Test.Stream   (SignalSampleStream, groupDeltas)
 
 -- | The predicates, by name: each looks a bounded way ahead under its
--- outermost operator (@nested@ nests an 'Eventually' whose argument holds
--- at every sample, so that each sample decides it; @and@ and @or@ join
--- two outermost operators, read side by side, each to the stream's end
--- but the 'Eventually' of @and@, decided at sample 6).
+-- outermost operator (the last nests an 'Eventually' whose argument holds
+-- at every sample, so that each sample decides it).
 predicates :: [(String, TPred Double)]
 predicates =
   [ ("always",     Always (is (>= 0)))
@@ -33,8 +31,6 @@ predicates =
   , ("until",      Until (is (>= 0)) (is (< 0)))
   , ("window",     Always (alwaysFor 0.05 (is (>= 0))))
   , ("nested",     Always (Implies (is (>= 0)) (Eventually (is (>= 0)))))
-  , ("and",        And (Always (is (>= 0))) (Eventually (is (> 5))))
-  , ("or",         Or (Eventually (is (< 0))) (Always (is (>= 0))))
   ]
   where is f = SP (arr f)
 

@@ -127,14 +127,11 @@ checkBound name d
 --
 -- Memory: the outermost 'Always', 'Eventually' and 'Until' are folded
 -- from time 0 on, stopping as soon as the answer is known. Connectives
--- above them ('And', 'Or', 'Implies') read their operands side by side,
--- one sample of each at a time, and stop as soon as the answer is known:
--- when one operand decides the whole (a false one of 'And', a true one
--- of 'Or', a false premise or a true conclusion of 'Implies'), the other
--- is read no further. So @And (Always p) (Eventually q)@ keeps no more
--- than each operand does alone. (An operand that raises an error at a
--- sample raises it if the other has not decided the whole by then.)
--- Under them, what a
+-- above them ('And', 'Or', 'Implies') decide their operands one after the
+-- other, the second only when the first does not decide: the stream is
+-- kept while the first is decided, as far as it reads (so @And (Always
+-- p) (Eventually q)@ keeps what @Always p@ reads; give two such
+-- properties as two checks to keep memory bounded). Under them, what a
 -- predicate keeps of a stream made lazily is what it must look ahead: 'Next' one sample, a
 -- time-bounded form its window, and a nested 'Always', 'Eventually' or
 -- 'Until' the samples up to the next one that decides it whatever
@@ -145,64 +142,35 @@ checkBound name d
 -- stream itself is kept only by whoever else holds it.)
 evalT :: TPred a -> SignalSampleStream a -> Bool
 evalT _ [] = True
-evalT p0 s = final (verdicts p0) == T
+evalT p0 s = atStart p0 == T
   where
-    -- (the verdict once the list ends in one: every list does)
-    final vs = case vs of
-      Just v : _    -> v
-      Nothing : vs' -> final vs'
-      []            -> T
-    -- The truth at time 0 as it is found: one element for each sample read
-    -- ('Nothing' while undecided), ending in the verdict. The connectives
-    -- read their operands side by side, so neither holds the stream while
-    -- the other is read.
-    verdicts p = case p of
-      And a b      -> sideBySide andV (verdicts a) (verdicts b)
-      Or a b       -> sideBySide orV (verdicts a) (verdicts b)
-      Implies a b  -> sideBySide impliesV (verdicts a) (verdicts b)
-      Not a        -> map (fmap notTri) (verdicts a)
+    -- (the truth at time 0; every truth list is as long as the stream,
+    -- which is not empty)
+    atStart p = case p of
+      -- (the second operand only when the first does not decide)
+      And a b      -> case atStart a of { F -> F; va -> min va (atStart b) }
+      Or a b       -> case atStart a of { T -> T; va -> max va (atStart b) }
+      Not a        -> notTri (atStart a)
+      Implies a b  -> case atStart a of { F -> T; va -> max (notTri va) (atStart b) }
       -- (at the end of the closed stream: 'Always' meets true, 'Eventually' false)
       Always a     -> foldStoppingAt F min T (everywhere a)
       Eventually a -> foldStoppingAt T max F (everywhere a)
       Until a b    -> untilFromStart T F (zip (everywhere a) (everywhere b))
       _            -> case everywhere p of
-        v : _ -> [Just v]
-        []    -> [Just T]
+        v : _ -> v
+        []    -> T
     everywhere p = truths Closed maxBound p s
-    -- (a verdict from what is known of the operands: the first operand's
-    -- alone when it decides the whole, without looking at the second's)
-    andV (Just F) _             = Just F
-    andV _ (Just F)             = Just F
-    andV (Just va) (Just vb)    = Just (min va vb)
-    andV _ _                    = Nothing
-    orV (Just T) _              = Just T
-    orV _ (Just T)              = Just T
-    orV (Just va) (Just vb)     = Just (max va vb)
-    orV _ _                     = Nothing
-    impliesV (Just F) _         = Just T
-    impliesV _ (Just T)         = Just T
-    impliesV (Just va) (Just vb) = Just (max (notTri va) vb)
-    impliesV _ _                = Nothing
-    -- (both operands one sample further at a time; a decided one stays)
-    sideBySide decide = go
-      where
-        go (x : xs) (y : ys) = case decide x y of
-          Just v  -> [Just v]
-          Nothing -> Nothing : go (further x xs) (further y ys)
-        go _ _ = [Just T]   -- (never: each list ends in its verdict)
-        further (Just v) _ = [Just v]
-        further Nothing xs = xs
     foldStoppingAt stop op = go
-      where go !acc (v : vs) | acc /= stop = Nothing : go (op acc v) vs
-            go acc _                       = [Just acc]
+      where go !acc (v : vs) | acc /= stop = go (op acc v) vs
+            go acc _                       = acc
     -- @a `Until` b@ at time 0 is the disjunction, over the samples i, of
     -- b at i with a at every sample before i, and of a everywhere with
     -- the end's true: left to right, with @before@ the conjunction of a
     -- so far and @acc@ the disjunction so far.
     untilFromStart !before !acc vs = case vs of
-      _ | acc == T || before == F -> [Just acc]
-      []                          -> [Just (max acc before)]
-      (va, vb) : rest             -> Nothing : untilFromStart (min before va) (max acc (min before vb)) rest
+      _ | acc == T || before == F -> acc
+      []                          -> max acc before
+      (va, vb) : rest             -> untilFromStart (min before va) (max acc (min before vb)) rest
 
 -- Three truth values: false, unknown (decided by samples not yet seen),
 -- true; 'min' is conjunction and 'max' disjunction (Kleene's logic).
