@@ -37,9 +37,10 @@
 -- A signal function switched in at an instant whose own event occurs at
 -- that same instant switches again, at once: so a switch into itself on
 -- an event that is always there at time 0 (@switch (sf &&& now ()) (\_ ->
--- that same switch)@, or 'after' 0) never finishes its sample: the
--- program hangs (in constant memory), or GHC's runtime stops it with
--- @\<\<loop\>\>@, as in Yampa. The event has to wait for time to
+-- that same switch)@, or 'after' 0) never finishes its sample, as in
+-- Yampa: the program runs until memory runs out, or (depending on how it
+-- is built and run) hangs or is stopped by GHC's runtime with
+-- @\<\<loop\>\>@. The event has to wait for time to
 -- pass ('after' with a positive time, or an event that is not there at
 -- the new signal function's first sample). 'kSwitch' and
 -- 'AFRP.Parallel.pSwitch' into themselves on such an event never finish

@@ -128,8 +128,13 @@ spec = do
       decided (Until (is (< 300)) (is (== 200))) `shouldReturn` Just True
       decided (Until (is (< 300)) (is (== 400))) `shouldReturn` Just False
       decided (Not (Always (is (/= 77)))) `shouldReturn` Just True
-      -- (a connective decides its second operand only if the first does not)
+      -- (a connective decides its second operand only if the first does not:
+      -- a second operand with a nested future operator that never decides
+      -- reads the whole stream at its first sample)
       decided (And (Always (is (< 10))) (Eventually (is (< 0)))) `shouldReturn` Just False
+      decided (And (SP (arr (const False))) (Always (Eventually (is (< 0))))) `shouldReturn` Just False
+      decided (Or (SP (arr (const True))) (Next (Eventually (is (< 0))))) `shouldReturn` Just True
+      decided (And (Always (is (< 5))) (Always (Eventually (is (< 0))))) `shouldReturn` Just False
       -- (nested: each decided at the sample that decides it, 700 and 900,
       -- without the end of the stream)
       decided (Always (Implies (is (> 500)) (Not (Eventually (is (== 700)))))) `shouldReturn` Just False
