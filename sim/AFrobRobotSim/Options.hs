@@ -217,7 +217,7 @@ parseSimArgs o0 = go o0 False False
 parseParam :: String -> Either String (String, String)
 parseParam v = case break (== '=') v of
   (name, '=' : value) | not (null name) -> Right (name, value)
-  _ -> Left ("--param expects NAME=VALUE, got " ++ show v)
+  _ -> Left ("--param expects NAME=VALUE, got " ++ show (argText v))
 
 -- | A command-line argument (or the program's name) as text. GHC
 -- decodes the arguments in the locale's encoding; in one that is not

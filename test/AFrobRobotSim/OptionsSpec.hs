@@ -166,6 +166,8 @@ spec = do
     it "reads a --param's name given in a locale that is not UTF-8 as the text it spells (it was no parameter the controller asks for); keeps its value as given (a file's name opens)" $
       fmap' optParams (parseSimArgs defaultSimOptions ["--param", cLocale "naïve=∑ 1", "--param", "a\56575=b"])
         `shouldBe` Right [("naïve", cLocale "∑ 1"), ("a\56575", "b")]
+    it "says a --param without = as text, in a locale that is not UTF-8 too" $
+      parseParam (cLocale "naïve") `shouldBe` Left ("--param expects NAME=VALUE, got " ++ show "naïve")
   describe "argText" $ do
     it "decodes the stand-ins of UTF-8 bytes (the C locale's) as the characters they spell" $ do
       argText (cLocale "wé.world") `shouldBe` "wé.world"
