@@ -191,7 +191,7 @@ parseSimArgs o0 = go o0 False False
       , ("--log",     \v -> Right o { optLog = Just v })
       , ("--replay",  \v -> Right o { optReplay = Just v })
       , ("--result",  \v -> Right o { optResult = Just v })
-      , ("--param",   \v -> (\p -> o { optParams = setParam p (optParams o) }) <$> (\(k, x) -> (argText k, x)) <$> parseParam v)
+      , ("--param",   \v -> (\(k, x) -> o { optParams = setParam (argText k, x) (optParams o) }) <$> parseParam v)
       ]
   -- the default files that were not named follow the output folder
   relocated o svgNamed pageNamed = o

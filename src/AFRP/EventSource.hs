@@ -109,10 +109,10 @@ after t x
 -- and then, where the tolerance of 'reached' covers it: this regime is
 -- the rule's approximation, not the rule.) Above that, the boundaries
 -- are counted exactly, even where several of them count as 'reached' at
--- once (a period within the tolerance of 'reached', @2^-48 * t@): @repeatedly 1e-12@ after 1000 s,
--- sampled every 1e-13 s, occurs about once every ten samples. An
--- occurrence at an infinite local time is the last: no boundary lies
--- after it.
+-- once (a period within the tolerance of 'reached', @2^-48 * t@):
+-- @repeatedly 1e-12@ after 1000 s, sampled every 1e-13 s, occurs about
+-- once every ten samples. An occurrence at an infinite local time is the
+-- last: no boundary lies after it.
 repeatedly :: Time -> b -> SF a (Event b)
 repeatedly p x
   | p <= 0 || isNaN p = errPeriod "repeatedly" p

@@ -344,8 +344,7 @@ forAllRuns file config duration rcA rcB gen p =
                                                   Just e  -> let t = explTime e in t `seq` Just t))
       pure $ case decided of
         Right (Just t) -> min duration (t + 5)
-        Right Nothing  -> duration
-        Left ()        -> duration
+        _              -> duration
     synchronous e = case fromException e of
       Just (_ :: SomeAsyncException) -> Nothing
       Nothing                        -> Just ()

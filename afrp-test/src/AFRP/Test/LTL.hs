@@ -132,11 +132,11 @@ checkBound name d
 -- kept while the first is decided, as far as it reads (so @And (Always
 -- p) (Eventually q)@ keeps what @Always p@ reads; give two such
 -- properties as two checks to keep memory bounded). Under them, what a
--- predicate keeps of a stream made lazily is what it must look ahead: 'Next' one sample, a
--- time-bounded form its window, and a nested 'Always', 'Eventually' or
--- 'Until' the samples up to the next one that decides it whatever
--- follows ('Always' a false, 'Eventually' a true, 'Until' its second
--- argument true or its first false). So @Always (Implies p (Eventually
+-- predicate keeps of a stream made lazily is what it must look ahead:
+-- 'Next' one sample, a time-bounded form its window, and a nested
+-- 'Always', 'Eventually' or 'Until' the samples up to the next one that
+-- decides it whatever follows ('Always' a false, 'Eventually' a true,
+-- 'Until' its second argument true or its first false). So @Always (Implies p (Eventually
 -- q))@ keeps the samples between two where @q@ holds: constant memory
 -- when @q@ holds now and then, the whole stream when it never does. (The
 -- stream itself is kept only by whoever else holds it.)
