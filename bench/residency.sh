@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the long-running networks for N and 10 N samples, the simulator
 # (10 simbots, the benchmark world, dt = 0.01) for N/10 and N steps, and
-# each stateful combinator inside a loop, and the testing kit's evalT, and
+# each stateful combinator inside a loop, the testing kit's evalT, runT and
+# writeRunReplayPage, and
 # prints the maximum residency that the GHC runtime reports (+RTS -s).
 # Constant space means the two figures of a row agree (within GC sampling
 # noise).
@@ -59,4 +60,9 @@ done
 for m in "$((n / 10))" "$n"; do
   printf '%-17s %12s %22s\n' "runT" "$m" \
     "$("$kit" runT "$m" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}')"
+done
+# writeRunReplayPage on that run (recorded as it goes), N/10 and N steps
+for m in "$((n / 10))" "$n"; do
+  printf '%-17s %12s %22s\n' "page" "$m" \
+    "$("$kit" page "$m" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}')"
 done

@@ -3,12 +3,18 @@
 -- @N + 1@ samples made lazily (0.01 s apart, the values 0..N) and prints
 -- the answer; run it with @+RTS -s@ and read the maximum residency. The
 -- kind @runT@ checks a predicate on every world state of a run of three
--- simbots for N steps of 0.01 s with 'runT'. With no arguments, every
--- kind on 10^5 samples, the run on 10^4 steps (what @cabal bench@ runs).
+-- simbots for N steps of 0.01 s with 'runT'; the kind @page@ writes that
+-- run's replay page ('writeRunReplayPage', to a file in the system's
+-- temporary folder, removed after) and prints its size in bytes. With no
+-- arguments, every kind on 10^5 samples, the run on 10^4 steps and its
+-- page on 10^3 (what @cabal bench@ runs).
 module Main (main) where
 
+import           System.Directory   (getTemporaryDirectory, removeFile)
 import           System.Environment (getArgs)
 import           System.Exit        (die)
+import           System.FilePath    ((</>))
+import           System.IO          (IOMode (ReadMode), hFileSize, withFile)
 
 import           Test.QuickCheck    (chatty, isSuccess, maxSuccess, quickCheckWithResult, stdArgs)
 
@@ -16,7 +22,7 @@ import           AFRP               (arr)
 import           AFRP.Geometry      (Point2 (..))
 import           AFrob              (constant, ddVelTR, mrFinalize, rpId)
 import           AFrobRobotSim      (ObjectTemplate (..), SimbotController, WorldState (..), defaultSimConfig)
-import           AFrobRobotSim.Test (runT)
+import           AFrobRobotSim.Test (runT, writeRunReplayPage)
 import           AFRP.Test.LTL
 import           AFRP.Test.Stream   (SignalSampleStream, groupDeltas)
 
@@ -42,10 +48,23 @@ stream n = groupDeltas (map fromIntegral [0 .. n]) (repeat 0.01)
 runOf :: Int -> IO Bool
 runOf n = isSuccess <$> quickCheckWithResult stdArgs { maxSuccess = 1, chatty = False }
   (runT defaultSimConfig (fromIntegral n / 100) wander wander (Always (SP (arr ((== 3) . length . wsRobots)))) world)
-  where
-    world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotA 2 (Point2 2 2) 1, OTSimbotB 3 (Point2 (-2) (-2)) 2]
-    wander :: SimbotController
-    wander props = constant (mrFinalize (ddVelTR 2 (fromIntegral (rpId props `mod` 5 - 2) * 0.6)))
+
+-- | The replay page of that run of @n@ steps, written and removed: its
+-- size in bytes.
+pageOf :: Int -> IO Integer
+pageOf n = do
+  tmp <- getTemporaryDirectory
+  let file = tmp </> "afrp-test-residency.html"
+  writeRunReplayPage file defaultSimConfig (fromIntegral n / 100) world wander wander
+  size <- withFile file ReadMode hFileSize
+  size <$ removeFile file
+
+-- | Three simbots, each driving its own circle.
+world :: [ObjectTemplate]
+world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotA 2 (Point2 2 2) 1, OTSimbotB 3 (Point2 (-2) (-2)) 2]
+
+wander :: SimbotController
+wander props = constant (mrFinalize (ddVelTR 2 (fromIntegral (rpId props `mod` 5 - 2) * 0.6)))
 
 main :: IO ()
 main = do
@@ -54,7 +73,9 @@ main = do
     [] -> do
       mapM_ (\(name, p) -> putStrLn (name ++ " " ++ show (evalT p (stream 100000)))) predicates
       runOf 10000 >>= putStrLn . ("runT " ++) . show
+      pageOf 1000 >>= putStrLn . ("page " ++) . show
     ["runT", n] | [(k, "")] <- reads n, k >= 0 -> runOf k >>= print
+    ["page", n] | [(k, "")] <- reads n, k >= 0 -> pageOf k >>= print
     [name, n] | Just p <- lookup name predicates, [(k, "")] <- reads n, k >= 0 ->
       print (evalT p (stream k))
-    _ -> die ("usage: afrp-test-residency [KIND N], KIND one of runT " ++ unwords (map fst predicates))
+    _ -> die ("usage: afrp-test-residency [KIND N], KIND one of runT page " ++ unwords (map fst predicates))

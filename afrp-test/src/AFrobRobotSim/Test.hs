@@ -1,3 +1,4 @@
+{-# LANGUAGE BangPatterns        #-}
 {-# LANGUAGE ScopedTypeVariables #-}
 -- (runT runs a failing world twice, so that the first run, which only
 -- decides, is not kept: GHC must not share the two runs)
@@ -63,7 +64,7 @@ import           AFrobRobotSim.Simulator (forceWorldState)
 import           AFrobRobotSim.World  (objectHalfSize)
 import           AFrobRobotSim.Log    (LogConfig (..), LogSummary (..), RunLog (..), defaultLogConfig,
                                        logFrames, logHeader)
-import           AFrobRobotSim.Replay (replayPage)
+import           AFrobRobotSim.Replay (newReplayRecorder, recordReplayState, replayPage, writeReplay)
 import           AFRP.Test.LTL
 import           AFRP.Test.Stream
 
@@ -317,7 +318,7 @@ runT config duration rcA rcB p world
 -- decided @p@ false (what 'runT' prints), or up to a controller's
 -- failure, if one failed; the whole run when neither ends it sooner. (A
 -- failure early in a long run makes a short page: the page of the whole
--- run, kept in memory, could take longer than the test.)
+-- run could take longer than the test.)
 --
 -- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB
 -- >   (genWorld defaultWorldMix notesBounds)
@@ -372,7 +373,11 @@ worldFileText config world
 -- longer than a 25th of a second), as @simbot --replay@ writes it. The
 -- page is ASCII text. A controller that fails (throws, or drives with a
 -- NaN) raises its 'ControllerError' when the page is evaluated: for such
--- a run, 'writeRunReplayPage' writes the page up to the failure.
+-- a run, 'writeRunReplayPage' writes the page up to the failure. The page
+-- opens with a hash of all its lines (the nonce of its scripts), so its
+-- first character comes only once the whole run is made, and the run is
+-- held in memory until then: for a long run, 'writeRunReplayPage', which
+-- keeps memory constant.
 runReplayPage :: SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController -> String
 runReplayPage config duration world rcA rcB =
   pageOf config world (map snd (runStream config duration world rcA rcB)) Nothing
@@ -381,35 +386,53 @@ runReplayPage config duration world rcA rcB =
 -- run's replay page ('runReplayPage') to @file@; when a controller fails,
 -- the page holds the run up to the step before the failure, and its
 -- summary says the failure ("FAILED: ..." on the page), as @simbot@'s page
--- of a failed run does.
+-- of a failed run does. The page is recorded as the run goes, as
+-- @simbot --replay@ records it ("AFrobRobotSim.Replay"'s recorder: each
+-- frame's line goes to a temporary file, streamed into the page at the
+-- end), so memory stays constant however long the run: it does not hold
+-- the run's states or frames. The page is written whole or not at all.
 writeRunReplayPage :: FilePath -> SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController
                    -> IO ()
 writeRunReplayPage file config duration world rcA rcB = do
-  (states, failure) <- upToFailure [] (map snd (runStream config duration world rcA rcB))
-  writeFile file (pageOf config world states failure)
+  recorder <- newReplayRecorder (pageConfig config world)
+  (steps, simulated, failure) <- record recorder 0 0 (map snd (runStream config duration world rcA rcB))
+  writeReplay recorder (pageSummary steps simulated (-1) failure) file
   where
-    -- (each state evaluated as simbot evaluates it before writing it)
-    upToFailure acc xs = do
+    -- (each state evaluated as simbot evaluates it before recording it;
+    -- the steps counted and the last one's time kept, strictly)
+    record recorder !steps !simulated xs = do
       r <- try (evaluate xs >>= \ys -> case ys of
                   []    -> pure Nothing
                   y : _ -> Just y <$ evaluate (forceWorldState y))
       case r of
-        Left (e :: ControllerError) -> pure (reverse acc, Just (displayException e))
-        Right Nothing               -> pure (reverse acc, Nothing)
-        Right (Just y)              -> upToFailure (y : acc) (drop 1 xs)
+        Left (e :: ControllerError) -> pure (steps, simulated, Just (displayException e))
+        Right Nothing               -> pure (steps, simulated, Nothing)
+        Right (Just y)              -> do
+          recordReplayState recorder y
+          record recorder (steps + 1 :: Int) (wsTime y) (drop 1 xs)
 
 -- The page of a run's states, with its failure if it had one.
 pageOf :: SimConfig -> WorldTemplate -> [WorldState] -> Maybe String -> String
 pageOf config world states failure =
   replayPage (RunLog (logHeader cfg) frames (Just summary))
   where
-    cfg     = defaultLogConfig { lcBounds = simBounds config, lcWorld = world, lcDt = simDt config
-                               , lcSeed = simSeed config, lcCommandLine = ["afrp-test"] }
+    cfg     = pageConfig config world
     frames  = logFrames cfg states
-    -- (steps: the samples, the one at time 0 included, as the log counts them)
-    summary = LogSummary { lsSimulated = if null states then 0 else wsTime (last states)
-                         , lsSteps = length states, lsFrames = length frames
-                         , lsWallTime = 0, lsInterrupted = False, lsFailure = failure, lsScores = [] }
+    summary = pageSummary (length states) (if null states then 0 else wsTime (last states)) (length frames) failure
+
+-- The log's settings for a run's page.
+pageConfig :: SimConfig -> WorldTemplate -> LogConfig
+pageConfig config world =
+  defaultLogConfig { lcBounds = simBounds config, lcWorld = world, lcDt = simDt config
+                   , lcSeed = simSeed config, lcCommandLine = ["afrp-test"] }
+
+-- @pageSummary steps simulated frames failure@: a run's page's summary
+-- (steps: the samples, the one at time 0 included, as the log counts
+-- them; the time of the last; the frames, or -1 for the recorder's count).
+pageSummary :: Int -> Time -> Int -> Maybe String -> LogSummary
+pageSummary steps simulated frames failure =
+  LogSummary { lsSimulated = simulated, lsSteps = steps, lsFrames = frames
+             , lsWallTime = 0, lsInterrupted = False, lsFailure = failure, lsScores = [] }
 
 -- | @robotClearance world r@: the distance from the edge of robot @r@'s
 -- disc to the nearest wall segment or block of @world@ (negative if they

@@ -303,6 +303,17 @@ specWithFiles = do
       Just result -> expectationFailure ("the run was not found to fail: " ++ output result)
       Nothing     -> expectationFailure "forAllRuns did not end within 60 s"
 
+  it "writeRunReplayPage, which records the run as it goes, writes the page runReplayPage gives" $ \tmp -> do
+    let file = tmp </> "afrp-test-page.html"
+        config = defaultSimConfig { simDt = 0.03 }
+        world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 2) 1, OTBall (Point2 (-2) 1)]
+    writeRunReplayPage file config 7 world wander straight
+    page <- readFile file
+    length page `seq` removeFile file
+    page `shouldBe` runReplayPage config 7 world wander straight
+    -- (the samples, the one at time 0 included)
+    pageSummary page `shouldSatisfy` (("\"steps\":" ++ show (length (runStream config 7 world wander straight)) ++ ",") `isInfixOf`)
+
   it "forAllRuns writes the shrunk world and its run's replay page (property)" $ \tmp -> do
     let file = tmp </> "afrp-test-broken-runs.world"
     result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 3, 0) } $
