@@ -134,11 +134,15 @@ class HasRangeFinder i where
   -- direction @a@, measured from the robot's heading (counter-clockwise
   -- positive) and interpreted modulo 2*pi (so @pi@ and @-pi@ both mean
   -- straight back). At most 'rfMaxRange' (the reading when nothing is in
-  -- range). A robot may only support some directions (the simbots have
-  -- sensors at 0, pi\/2, pi and -pi\/2); see its documentation. An angle
-  -- that is NaN or infinite names no direction: the simbots read
-  -- 'rfMaxRange' for it, as for nothing in range (so do angles so large
-  -- that the float no longer holds their fraction of a turn).
+  -- range). A robot may only support some directions (the notes' simbots
+  -- are queried at 0, pi\/2, pi and -pi\/2 only); see its documentation.
+  -- The simulator's simbots read every direction: the four quarter turns
+  -- exactly (their rays are cast once per sample, however often read), any
+  -- other finite angle as the ray at heading + @a@, a sum of floats (from
+  -- about 1e15 on it holds the heading only to a tenth of a radian or
+  -- worse, so so large an angle is no direction to rely on). An angle that
+  -- is NaN or infinite names no direction: the simbots read 'rfMaxRange'
+  -- for it, as for nothing in range.
   rfRange :: i -> Angle -> Distance
   -- | The largest distance the range finder reports, in metres.
   rfMaxRange :: i -> Distance

@@ -83,13 +83,17 @@ defaultWorldMix = WorldMix (0, 12) (0, 4) (0, 3) (1, 5)
 -- | @genWorld mix bounds@: a valid world of the given extent (see
 -- 'validateWorldIn'), with the numbers of objects @mix@ asks for as far as
 -- they fit: each object is placed at a random free spot, where its
--- bounding box ('objectBox') overlaps no other object's and lies inside
--- the world, so that robots start overlapping nothing. Robots get ids
--- 1, 2, ... per type and random headings. An object that finds no free
--- spot in 20 tries is left out. Bounds that are not finite numbers with
--- @x0 < x1@ and @y0 < y1@, or a range of the mix whose low end is above
--- its high end, are an error naming them (such a world could hold
--- nothing, and properties of its runs would hold of no robot).
+-- bounding box ('objectBox') lies inside the world and overlaps no other
+-- object's, so that robots start overlapping nothing. The robots are
+-- placed first, so a world that has room for a robot gets at least one
+-- when @mix@ asks for one (the first always fits), and the robots placed
+-- get ids 1, 2, ... per type, in the world's order, and random headings.
+-- An object that finds no free spot in 20 tries is left out. Bounds that
+-- are not finite numbers with @x0 < x1@ and @y0 < y1@, bounds narrower or
+-- lower than a simbot ('simbotDiameter') while @mix@ asks for at least
+-- one robot, or a range of the mix whose low end is above its high end,
+-- are an error naming them (such a world could hold no robot, and
+-- properties of its runs would hold of none).
 genWorld :: WorldMix -> Bounds -> Gen WorldTemplate
 genWorld mix bounds = case problems of
   p : _ -> error ("AFrobRobotSim.Test.genWorld: " ++ p)
@@ -103,6 +107,9 @@ genWorld mix bounds = case problems of
          | (name, r@(lo, hi)) <- [ ("mixWalls", mixWalls mix), ("mixBlocks", mixBlocks mix)
                                  , ("mixBalls", mixBalls mix), ("mixRobots", mixRobots mix) ]
          , lo > hi ]
+      ++ [ "the bounds " ++ show bounds ++ " are too small for a simbot (" ++ show simbotDiameter
+           ++ " m across), and mixRobots asks for at least one"
+         | fst (mixRobots mix) >= 1, bx1 - bx0 < simbotDiameter || by1 - by0 < simbotDiameter ]
 
 -- 'genWorld' once its parameters are checked.
 generateIn :: WorldMix -> Bounds -> Gen WorldTemplate
@@ -112,21 +119,28 @@ generateIn mix bounds = do
   nBlocks <- count (mixBlocks mix)
   nBalls  <- count (mixBalls mix)
   nRobots <- count (mixRobots mix)
-  kinds <- vectorOf nRobots (elements [SimbotA, SimbotB])
-  let robotMakers = zipWith robotOf kinds (idsPerKind kinds)
-      makers = replicate nWalls wallAt ++ replicate nBlocks (pure . OTBlock)
-               ++ replicate nBalls (pure . OTBall) ++ robotMakers
-  placeAll bounds makers []
+  let makers = replicate nRobots robotAt ++ replicate nWalls wallAt ++ replicate nBlocks (pure . OTBlock)
+               ++ replicate nBalls (pure . OTBall)
+  numberRobots <$> placeAll bounds makers []
   where
     wallAt p = elements [OTHWall p, OTVWall p]
-    robotOf k i p = do
+    robotAt p = do
+      k <- elements [SimbotA, SimbotB]
       h <- choose (-pi, pi)
       pure (case k of
-              SimbotA -> OTSimbotA i p h
-              SimbotB -> OTSimbotB i p h)
-    idsPerKind ks = [ length (filter (== k) (take n ks)) + 1 | (n, k) <- zip [0 ..] ks ]
+              SimbotA -> OTSimbotA 0 p h
+              SimbotB -> OTSimbotB 0 p h)
+    -- (ids 1, 2, ... per type, for the robots that found a spot)
+    numberRobots = go (0 :: RobotId) (0 :: RobotId)
+      where
+        go a b (o@OTSimbotA {} : os) = o { otRId = a + 1 } : go (a + 1) b os
+        go a b (o@OTSimbotB {} : os) = o { otRId = b + 1 } : go a (b + 1) os
+        go a b (o : os)              = o : go a b os
+        go _ _ []                    = []
 
--- Place each object (a maker given its centre) at a free spot.
+-- Place each object (a maker given its centre) at a free spot: its centre
+-- drawn where its box lies inside the bounds, up to 20 times until the box
+-- overlaps no object placed before it.
 placeAll :: Bounds -> [Point2 Double -> Gen ObjectTemplate] -> WorldTemplate -> Gen WorldTemplate
 placeAll _ [] placed = pure (reverse placed)
 placeAll bounds (make : rest) placed = do
@@ -136,24 +150,36 @@ placeAll bounds (make : rest) placed = do
     Bounds x0 y0 x1 y1 = bounds
     tryPlace 0 = pure Nothing
     tryPlace k = do
-      p <- Point2 <$> choose (x0, x1) <*> choose (y0, y1)
-      o <- make p
-      if fits o then pure (Just o) else tryPlace (k - 1)
-    fits o = inside (objectBox o) && not (any (boxesOverlap (objectBox o) . objectBox) placed)
+      -- (the maker's object at the origin: its kind, and so its size)
+      shape <- make (Point2 0 0)
+      let (hw, hh) = objectHalfSize shape
+      if 2 * hw > x1 - x0 || 2 * hh > y1 - y0
+        then pure Nothing
+        else do
+          p <- Point2 <$> choose (x0 + hw, x1 - hw) <*> choose (y0 + hh, y1 - hh)
+          let o = movedTo p shape
+          if fits o then pure (Just o) else tryPlace (k - 1)
+    -- (a size line is no object: nothing overlaps it)
+    fits o = inside (objectBox o) && not (any (boxesOverlap (objectBox o) . objectBox) (filter (not . isWorldSize) placed))
     inside (a, b, c, d) = a >= x0 && b >= y0 && c <= x1 && d <= y1
+    movedTo p o = case o of
+      OTSize {} -> o
+      _         -> o { otPos = p }
 
 -- | @genRobotIn bounds world@: a robot of either kind, with the next free
 -- id of its kind, at a free spot of @world@ (as 'genWorld' places it), or
--- the world unchanged if there is none.
+-- the world unchanged if there is none. The spot is inside @bounds@, or
+-- inside the world's own size when it has one ('OTSize', which wins over
+-- @bounds@ as in a run: 'worldBoundsOr').
 genRobotIn :: Bounds -> WorldTemplate -> Gen WorldTemplate
-genRobotIn bounds world = do
+genRobotIn given world = do
   k <- elements [SimbotA, SimbotB]
   h <- choose (-pi, pi)
   let i = 1 + maximum (0 : [ otRId o | o <- world, sameKind k o ])
       make p = pure (case k of
                        SimbotA -> OTSimbotA i p h
                        SimbotB -> OTSimbotB i p h)
-  placeAll bounds [make] (reverse world)
+  placeAll (worldBoundsOr given world) [make] (reverse world)
   where
     sameKind SimbotA OTSimbotA {} = True
     sameKind SimbotB OTSimbotB {} = True
@@ -175,8 +201,11 @@ shrinkWorld w =
     n = length objs
 
 -- | An object's bounding box, @(xMin, yMin, xMax, yMax)@ in metres, from
--- its centre and the sizes of "AFrobRobotSim.World".
+-- its centre and the sizes of "AFrobRobotSim.World". A size line
+-- ('OTSize'), which is no object, gives the world's extent (centred on the
+-- origin, as a world file's size is).
 objectBox :: ObjectTemplate -> (Double, Double, Double, Double)
+objectBox (OTSize w h) = (-w / 2, -h / 2, w / 2, h / 2)
 objectBox o =
   let Point2 x y = otPos o
       (hw, hh)   = objectHalfSize o

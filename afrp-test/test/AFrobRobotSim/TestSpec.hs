@@ -169,6 +169,20 @@ specWithoutFiles = do
     let page = runReplayPage defaultSimConfig { simDt = 0.1 } 1 [OTSimbotA 1 (Point2 0 0) 0] wander wander
     pageSummary page `shouldSatisfy` ("\"steps\":11," `isInfixOf`)
 
+  it "runT of a run as long as a deadline decides it (a 20 s run passed eventuallyWithin 20 of a p that never held)" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0]
+        neverTrue = SP (arr (const False))
+        check d bound = quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+          runT defaultSimConfig { simDt = 0.05 } d rcBrake rcBrake (eventuallyWithin bound neverTrue) world
+        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
+    atDeadline <- check 20 20
+    case atDeadline of
+      Failure {} -> output atDeadline `shouldSatisfy` ("decided false at t = 20.00" `isInfixOf`)
+      _          -> expectationFailure ("a run as long as the deadline passed: " ++ output atDeadline)
+    -- a run that ends before the deadline has not missed it
+    beforeDeadline <- check 19.9 20
+    isSuccess beforeDeadline `shouldBe` True
+
   it "runStream refuses a duration that is negative or not finite; 0 is the sample at time 0" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0]
         run d = runStream defaultSimConfig { simDt = 0.1 } d world wander wander
@@ -232,6 +246,34 @@ specWithoutFiles = do
     gen defaultWorldMix { mixRobots = (5, 1) } notesBounds `shouldThrow`
       errorCall "AFrobRobotSim.Test.genWorld: the range (5,1) of mixRobots is empty"
     gen defaultWorldMix { mixRobots = (1, 1) } notesBounds `shouldNotReturn` 0
+
+  it "genWorld refuses bounds too small for a simbot when the mix asks for a robot" $ do
+    let gen m b = generate (genWorld m b) >>= evaluate . length
+    gen defaultWorldMix (sizeBounds 0.4 3) `shouldThrow`
+      errorCall "AFrobRobotSim.Test.genWorld: the bounds Bounds (-0.2) (-1.5) 0.2 1.5 are too small for a simbot (0.5 m across), and mixRobots asks for at least one"
+    -- (a mix that may have no robot gets the objects that fit)
+    w <- generate (genWorld defaultWorldMix { mixRobots = (0, 2), mixBalls = (3, 3) } (sizeBounds 0.4 3))
+    filter isRobot w `shouldBe` []
+    validateWorldIn (sizeBounds 0.4 3) w `shouldBe` Right ()
+
+  it "genWorld places the robots first: a small world gets one when the mix asks for one (it got none in half of 2 m worlds) (property)" $
+    forAll (elements [0.5, 0.6, 1, 2, 3]) $ \side ->
+      forAll (genWorld defaultWorldMix (sizeBounds side side)) $ \w ->
+        counterexample (renderWorld w) $
+          not (null [ () | o <- w, isRobot o ]) .&&. validateWorldIn (sizeBounds side side) w === Right ()
+
+  it "genWorld numbers the robots placed 1, 2, ... per type (it skipped the ids of robots that found no spot) (property)" $
+    forAll (elements [1, 2, 10]) $ \side ->
+      forAll (genWorld defaultWorldMix { mixRobots = (1, 12) } (sizeBounds side side)) $ \w ->
+        counterexample (renderWorld w) $
+          [ i | OTSimbotA i _ _ <- w ] === [1 .. fromIntegral (length [ () | OTSimbotA {} <- w ])]
+          .&&. [ i | OTSimbotB i _ _ <- w ] === [1 .. fromIntegral (length [ () | OTSimbotB {} <- w ])]
+
+  it "genRobotIn places a robot in a world with a size line, inside that size (it failed on otPos)" $
+    forAll (genRobotIn notesBounds [OTSize 30 4, OTSimbotA 1 (Point2 0 0) 0]) $ \w ->
+      counterexample (renderWorld w) $
+        length [ () | o <- w, isRobot o ] === 2 .&&. validateWorld w === Right ()
+        .&&. all (\o -> not (isRobot o) || let (x0, y0, x1, y1) = objectBox o in x0 >= -15 && x1 <= 15 && y0 >= -2 && y1 <= 2) w
 
   it "showWorldState writes a value that is not a finite number as such (it wrote hundreds of digits)" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0]
@@ -414,6 +456,11 @@ specWithFiles = do
 
 -- A robot that drives straight at full speed: in a world without walls it
 -- ends up against the world's edge, stuck.
+isRobot :: ObjectTemplate -> Bool
+isRobot OTSimbotA {} = True
+isRobot OTSimbotB {} = True
+isRobot _            = False
+
 straight :: SimbotController
 straight _ = constant (mrFinalize (ddVelTR 1 0))
 

@@ -97,10 +97,13 @@ data TPred a where
 -- At the end of the stream: if the stream ends less than @d@ after this
 -- sample and @p@ has not held, true (the deadline has not passed; as for
 -- 'Next', the missing future does not count against it). So a 'False' is a
--- real miss of the deadline.
+-- real miss of the deadline. A stream whose last sample is @d@ after this
+-- one (within the slack) has shown the whole window: there a @p@ that never
+-- held is 'False'.
 --
--- A bound that is negative or NaN is an error naming it (an infinite one
--- is the rest of the stream).
+-- A bound that is negative or NaN is an error naming it. An infinite bound
+-- is a deadline that never passes: on a stream that ends it is true
+-- where @p@ never held ('Eventually' is false there).
 eventuallyWithin :: DTime -> TPred a -> TPred a
 eventuallyWithin d = EventuallyWithin (checkBound "eventuallyWithin" d)
 
@@ -234,16 +237,18 @@ truths ending m p0 s = go p0
           Just d  -> ([], Just (d, rest))
           Nothing -> let (before, after') = untilDecided rest in (v : before, after')
     -- The window of samples from each one to d seconds after it, folded;
-    -- if the stream seen so far reaches past the window, the window is
-    -- complete, otherwise the samples beyond decide (unknown while the
-    -- stream is open; at the end of a closed stream the value given).
+    -- if the stream seen so far reaches the window's end (a sample at d,
+    -- within the slack, or past it), the window is complete, otherwise the
+    -- samples beyond decide (unknown while the stream is open; at the end
+    -- of a closed stream the value given). An infinite window never ends.
     windowed d vs combine unit =
       [ let elapsed = sampleTimes (sRestart suffix)  -- times from the suffix's start (read lazily: a
                                                       -- predicate costs time linear in the stream times the window)
             (inWindow, after') = span ((<= d + slack) . fst) (zip elapsed vsFrom)
             slack = timeSlack d
-            end | not (null after') = unit
-                | otherwise         = case ending of
+            reached = not (isInfinite d) && any ((>= d - slack) . fst) inWindow
+            end | not (null after') || reached = unit
+                | otherwise                    = case ending of
                     Closed -> T
                     Open   -> U
         in foldr (combine . snd) end inWindow

@@ -14,10 +14,10 @@
 -- prints the result as a table, one sample a line:
 --
 -- > stream of 3 samples:
--- >     #   dt          t           value
--- >     0   0.0         0.0         0
--- >     1   0.5         0.5         1
--- >     2   1.0         1.5         -1
+-- >     #    dt          t           value
+-- >     0    0.0         0.0         0
+-- >     1    0.5         0.5         1
+-- >     2    1.0         1.5         -1
 module AFRP.Test.QuickCheck
   ( -- * Random stream generation
     generateStream
@@ -332,7 +332,7 @@ forAllStreamsWith range shrinkValue gen =
 -- @len@), printed with 'showStream' when one fails.
 --
 -- > forAllStreamsIn DistRandom (Just 0.01, Just 0.1) (Just (Right 3)) shrink $
--- >   propT (eventuallyWithin 2.5 (SP (arr (> 0))))
+-- >   propT (eventuallyWithin 2.5 (SP (arr (> (0 :: Int)))))
 forAllStreamsIn :: (Arbitrary a, Show a, Testable prop)
                 => Distribution -> Range -> Length -> (a -> [a])
                 -> (SignalSampleStream a -> prop) -> Property

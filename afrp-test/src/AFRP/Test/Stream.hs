@@ -78,16 +78,22 @@ lastSample [] = error "AFRP.Test.Stream.lastSample: empty stream"
 lastSample ss = snd (last ss)
 
 -- | @sMerge f s1 s2@ merges two streams by time: samples at the same time
--- are combined with @f@ (the first stream's value as first argument);
--- others are kept as they are, so the result samples at every time either
--- stream does.
+-- are combined with @f@ (the first stream's value as first argument), at
+-- the first stream's time; others are kept as they are, so the result
+-- samples at every time either stream does. Two times within 'timeSlack'
+-- of each other are the same time (as for 'sClipAfterTime'): three steps
+-- of 0.1 end at 0.30000000000000004, one of 0.3 at 0.3, and the two
+-- samples there are one, not two 5.6e-17 s apart.
+--
+-- > map snd (sMerge (+) [(0, 1), (0.1, 1), (0.1, 1), (0.1, 1)] [(0, 10), (0.3, 10)])
+-- >   == [11, 1, 1, 11]
 sMerge :: (a -> a -> a) -> SignalSampleStream a -> SignalSampleStream a -> SignalSampleStream a
 sMerge f s1 s2 = fromTimed (mergeTimed (toTimed s1) (toTimed s2))
   where
     mergeTimed [] ys = ys
     mergeTimed xs [] = xs
     mergeTimed xs@((t1, x) : xs') ys@((t2, y) : ys')
-      | t1 == t2  = (t1, f x y) : mergeTimed xs' ys'
+      | abs (t1 - t2) <= timeSlack (max (abs t1) (abs t2)) = (t1, f x y) : mergeTimed xs' ys'
       | t1 < t2   = (t1, x) : mergeTimed xs' ys
       | otherwise = (t2, y) : mergeTimed xs ys'
 
@@ -123,13 +129,18 @@ sRefineWith interpolate maxDT s0
     go prev ((dt, a) : rest)
       | dt > maxDT =
           let ratio  = dt / maxDT
-              pieces | ratio <= fromIntegral maxPieces = ceiling ratio :: Int
+              fewest | ratio <= fromIntegral maxPieces = ceiling ratio :: Int
                      | otherwise = error ("AFRP.Test.Stream.sRefine: a time step of " ++ show dt
                                           ++ " cut into steps of at most " ++ show maxDT ++ " would be more than "
                                           ++ show maxPieces ++ " samples")
-              step   = dt / fromIntegral pieces
+              -- (the steps of n pieces: n - 1 equal ones and the rest,
+              -- which sum to dt exactly; rounding may leave the rest or
+              -- the step just above maxDT, and then a piece more does)
+              stepsOf n = let d = dt / fromIntegral n in (d, dt - d * fromIntegral (n - 1))
+              pieces = until (\n -> let (d, r) = stepsOf n in d <= maxDT && r <= maxDT) (+ 1) fewest
+              (step, rest') = stepsOf pieces
               filler = replicate (pieces - 1) (step, interpolate prev a)
-          in filler ++ (dt - step * fromIntegral (pieces - 1), a) : go a rest
+          in filler ++ (rest', a) : go a rest
       | otherwise = (dt, a) : go a rest
 
 -- The most samples 'sRefineWith' makes of one time step: 10^8 (more than
@@ -181,7 +192,9 @@ sClipBeforeFrame n s = sRestart (drop (min (max 0 n) (length s - 1)) s)
 -- agree on which sample is at @t@. A NaN time is an error naming it.
 sClipBeforeTime :: DTime -> SignalSampleStream a -> SignalSampleStream a
 sClipBeforeTime t _ | isNaN t = error "AFRP.Test.Stream.sClipBeforeTime: the time is NaN"
-sClipBeforeTime t s = sClipBeforeFrame (length (takeWhile (< t - timeSlack t) (sampleTimes s))) s
+sClipBeforeTime t s = sClipBeforeFrame (length (takeWhile (< lower) (sampleTimes s))) s
+  where lower | isInfinite t = t   -- (its slack is infinite too: no NaN bound)
+              | otherwise    = t - timeSlack t
 
 -- | The stream timed from its own first sample: that sample's time step
 -- becomes 0, the others are kept. A suffix of a stream (@drop n s@) is a

@@ -109,6 +109,24 @@ spec = do
       evalT (eventuallyWithin 0.25 (is (== 3))) count `shouldBe` False
     it "eventuallyWithin is true when the stream ends before the deadline" $
       evalT (Always (Implies (is (== 8)) (eventuallyWithin 1 (is (== 20))))) count `shouldBe` True
+    it "eventuallyWithin is false when the stream's last sample is at the deadline and p never held (it was true)" $ do
+      -- count ends at 0.9 (three steps of 0.3 after 0, within the slack)
+      evalT (eventuallyWithin 0.9 (is (== 20))) count `shouldBe` False
+      evalT (eventuallyWithin 0.9 (is (== 9))) count `shouldBe` True
+      evalT (eventuallyWithin 0.3 (is (== 20))) (take 4 count) `shouldBe` False
+      evalT (eventuallyWithin 0.3 (is (== 20))) (take 3 count) `shouldBe` True
+      evalT (eventuallyWithin 0 (is (== 20))) (take 1 count) `shouldBe` False
+      evalT (Always (Implies (is (== 6)) (eventuallyWithin 0.3 (is (== 20))))) count `shouldBe` False
+      evalT (Always (Implies (is (== 7)) (eventuallyWithin 0.3 (is (== 20))))) count `shouldBe` True
+      fmap explFrame (explainT (eventuallyWithin 0.3 (is (== 20))) (take 4 count)) `shouldBe` Just 3
+    it "eventuallyWithin of an infinite bound is a deadline that never passes (true at the end, where Eventually is false)" $ do
+      evalT (eventuallyWithin (1 / 0) (is (== 20))) count `shouldBe` True
+      evalT (Eventually (is (== 20))) count `shouldBe` False
+      evalT (eventuallyWithin (1 / 0) (is (== 9))) count `shouldBe` True
+    it "alwaysFor is true at the end of the stream when the samples there hold, whether the window was seen whole or not" $ do
+      evalT (alwaysFor 0.9 (is (< 10))) count `shouldBe` True
+      evalT (alwaysFor 2 (is (< 10))) count `shouldBe` True
+      evalT (alwaysFor 0.9 (is (< 9))) count `shouldBe` False
     it "eventuallyWithin and alwaysFor refuse a negative or NaN bound" $ do
       evaluate (evalT (eventuallyWithin (-1) (is (== 3))) count) `shouldThrow`
         errorCall "AFRP.Test.LTL.eventuallyWithin: the time bound must be a number >= 0, got -1.0"

@@ -50,10 +50,24 @@ spec = do
         let s  = (0, 0) : [(d, x) | (Positive d, x) <- xs]
             s' = sRefine maxDT s
         in conjoin
-             [ counterexample "a step over the bound" (all ((<= maxDT * (1 + 1e-9)) . fst) (drop 1 s'))
+             [ counterexample "a step over the bound" (all ((<= maxDT) . fst) (drop 1 s'))
              , counterexample "total time changed"
                  (abs (sum (map fst s') - sum (map fst s)) <= 1e-9 * (1 + sum (map fst s)))
              , map head (group (samples s')) === map head (group (samples s)) ]
+    it "sRefine makes no step over the bound, even by a rounding (2.3 by 0.1 left a last step of 0.10000000000000009)" $ do
+      let s' = sRefine 0.1 [(0, 'a'), (2.3, 'b')]
+      filter ((> 0.1) . fst) (drop 1 s') `shouldBe` []
+      map snd s' `shouldBe` 'a' : replicate (length s' - 1) 'b'
+      abs (sum (map fst s') - 2.3) `shouldSatisfy` (<= 1e-12)
+    it "sMerge takes times within timeSlack of each other as one (it left a step of 5.6e-17 between them)" $ do
+      let merged = sMerge (+) [(0, 1), (0.1, 1), (0.1, 1), (0.1, 1)] [(0, 10), (0.3, 10 :: Int)]
+      map snd merged `shouldBe` [11, 1, 1, 11]
+      map snd (sMerge (+) [(0, 1), (0.3, 1)] [(0, 10), (0.3 + 1e-6, 10 :: Int)]) `shouldBe` [11, 1, 10]
+      map snd (sMerge (+) [(0, 1), (0.3, 1)] [(0, 10), (0.2, 10), (0.2, 10 :: Int)]) `shouldBe` [11, 10, 1, 10]
+    it "sClipBeforeTime of an infinite time keeps the last sample only (it kept them all)" $ do
+      let s = zip (0 : repeat 0.1) "abcdefg"
+      sClipBeforeTime (1 / 0) s `shouldBe` [(0, 'g')]
+      sClipBeforeTime (-1 / 0) s `shouldBe` s
     it "sRefine refuses to cut one step into more samples than memory holds (fixed)" $ do
       evaluate (length (sRefine 1e-300 [(0, 'a'), (1e300, 'b')])) `shouldThrow` anyErrorCall
       length (sRefine 0.25 [(0, 'a'), (1, 'b')]) `shouldBe` 5
