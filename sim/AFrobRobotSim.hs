@@ -98,6 +98,7 @@ module AFrobRobotSim
   , maxOdometryNoise
   , WorldState (..)
   , RobotState (..)
+  , startRobotStates
   , ControllerError (..)
     -- * World files
   , parseWorld

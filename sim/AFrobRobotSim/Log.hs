@@ -219,7 +219,9 @@ newEvents :: Maybe Prev -> WorldState -> [(String, Int)] -> [LogEvent]
 newEvents Nothing _ _ = []
 newEvents (Just p) s now = reverse (bumps ++ scores)
   where
-    t = wsTime s
+    -- (to a nanosecond, as a frame's other times are: 2.28, not
+    -- 2.2800000000000002)
+    t = roundTo 1e9 (wsTime s)
     bumps = [ LogEvent t "bump" (Just (robotType r, robotId r))
                 (robotType r ++ " " ++ show (robotId r) ++ " bumped into something")
             | (i, r) <- zip [0 .. pvCount p - 1] (wsRobots s), robotStuck r, indexI (pvStuck p) i == 0 ]

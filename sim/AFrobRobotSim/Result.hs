@@ -25,7 +25,10 @@
 -- centre travelled (the sum of the steps' displacements), @bumps@ the
 -- number of times it became stuck against something (a robot stuck at
 -- time 0 counts one), @stuckTime@ the simulated seconds it spent stuck,
--- @battery@ its charge left (1 = full). No wall-clock time is written, so
+-- @battery@ its charge left (1 = full). A run whose controller fails at
+-- its first sample, which simulates no state, lists the robots as the
+-- world places them (nothing travelled, the battery full). No wall-clock
+-- time is written, so
 -- two runs with the same flags write the same line.
 --
 -- Parameters: the controllers of a program are built before 'AFrobRobotSim.runSim'

@@ -202,7 +202,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
   frames <- if optFrames opts then Just <$> framesSink opts scale frameAt (renderPPM style scene) framesRef
                               else pure Nothing
   svg <- forM (optSvg opts) (svgSink svgEvery (style, scene))
-  result <- forM (optResult opts) (resultSink prog opts)
+  result <- forM (optResult opts) (resultSink prog opts world)
   -- (the log last: opening it replaces the file, so it is opened only once
   -- nothing else can stop the run before its first step; a run refused
   -- here leaves an existing log as it was)

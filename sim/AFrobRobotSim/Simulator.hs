@@ -81,6 +81,7 @@ module AFrobRobotSim.Simulator
   , WorldState (..)
   , forceWorldState
   , RobotState (..)
+  , startRobotStates
     -- * Failures
   , ControllerError (..)
   ) where
@@ -184,6 +185,29 @@ data RobotState = RobotState
 simulate :: DTime -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
 simulate dt = simulateWith defaultSimConfig { simDt = dt }
 
+-- The robots of a template as a run starts them: at rest, not stuck, the
+-- battery full, in template order.
+startRobots :: WorldTemplate -> [Robot]
+startRobots world = [ mkRobot k (otRId o) (otPos o) (normalizeHeading (otHdng o)) 0 False 1
+                    | o <- world, Just k <- [robotKindOf o] ]
+
+-- | The robots of a template as a run starts them, before their
+-- controllers' first sample: where the template places them (the heading
+-- normalised), at rest, not stuck, the battery full, odometry reading the
+-- true pose; in template order. The robots of a run's state at time 0
+-- ('wsRobots'), when the controllers' first sample gives one.
+startRobotStates :: WorldTemplate -> [RobotState]
+startRobotStates world = [ robotStateOf r (rPos r) | r <- startRobots world ]
+
+-- A robot's snapshot, with what its odometry reads.
+robotStateOf :: Robot -> Position2 -> RobotState
+robotStateOf r o = RobotState
+  { robotType = kindType (rKind r), robotId = rId r, robotPos = rPos r
+  , robotHeading = rHeading r, robotSpeed = rSpeed r, robotStuck = rStuck r
+  , robotBattery = batteryStatusOf (rCharge r), robotCharge = rCharge r
+  , robotOdometry = o }
+{-# INLINE robotStateOf #-}
+
 -- A robot's controller, before its first sample or as it continues. One
 -- record per robot and step, made where the controller is stepped (in the
 -- parallel chunks on several capabilities), with no box around the
@@ -225,8 +249,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
   where
     dt = simDt cfg
     arena = arenaOf (simBounds cfg) world
-    robots0 = [ mkRobot k (otRId o) (otPos o) (normalizeHeading (otHdng o)) 0 False 1
-              | o <- world, Just k <- [robotKindOf o] ]
+    robots0 = startRobots world
     agents0 = [ AgentNew props ((if rKind r == SimbotA then rcA else rcB) props)
               | r <- robots0, let props = SimbotProperties (rKind r) (rId r) ]
     odo0    | noise == 0 = []
@@ -302,14 +325,9 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
       Odometry p _ : more -> states p more
       []                  -> states (rPos r) []
       where states o more = let !rest = robotStates rs more
-                                !st   = robotState r o
+                                !st   = robotStateOf r o
                             in st : rest
     robotStates [] _ = []
-    robotState r o = RobotState
-      { robotType = kindType (rKind r), robotId = rId r, robotPos = rPos r
-      , robotHeading = rHeading r, robotSpeed = rSpeed r, robotStuck = rStuck r
-      , robotBattery = batteryStatusOf (rCharge r), robotCharge = rCharge r
-      , robotOdometry = o }
 
     noise = simOdometryNoise cfg
     -- Noisy odometry after the move: it integrates the true motion with a

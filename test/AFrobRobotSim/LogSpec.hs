@@ -107,13 +107,22 @@ spec = do
             naiveRest = [ l | l <- ls, all (\k -> naiveOwn k l == Nothing) robots ]
         in map own robots == map naive robots && rest == naiveRest
 
-  describe "bump events" $
+  describe "bump events" $ do
     it "say when a robot gets stuck (fixed)" $ do
       let world = [OTSimbotB 1 (Point2 0 0) 0, OTVWall (Point2 1 0)]
           run = take 301 (simulate 0.01 world (\_ -> constant (mrFinalize ddBrake)) (\_ -> constant (mrFinalize (ddVelDiff 1 1))))
           evs = concatMap lfEvents (logFrames defaultLogConfig { lcWorld = world } run)
       map evKind evs `shouldBe` ["bump"]
       map evRobot evs `shouldBe` [Just ("SimbotB", 1)]
+    it "are timed to a nanosecond, as the frame's other times are (2.2800000000000002 was written raw)" $ do
+      -- (the robot drives into the wall at a step whose time, a sum of
+      -- steps of 0.05, is 1.7000000000000002)
+      let world = [OTSimbotB 1 (Point2 0 0) 0, OTVWall (Point2 1 0)]
+          run = take 61 (simulate 0.05 world (\_ -> constant (mrFinalize ddBrake)) (\_ -> constant (mrFinalize (ddVelDiff 1 1))))
+          evs = concatMap lfEvents (logFrames defaultLogConfig { lcWorld = world, lcDt = 0.05, lcFps = 20 } run)
+          raw = [ wsTime s | s <- run, any robotStuck (wsRobots s) ]
+      take 1 raw `shouldSatisfy` all (\t -> roundTo 1e9 t /= t)
+      map evTime evs `shouldBe` map (roundTo 1e9) (take 1 raw)
 
   describe "score events" $
     it "mark each rise of a score, at the step it rose, in the frame of its period (fixed)" $ do

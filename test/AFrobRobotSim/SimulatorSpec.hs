@@ -86,6 +86,16 @@ spec = do
       failsWith (0 / 0)
       failsWith (1 / 0)
       failsWith (-1 / 0)
+    it "startRobotStates gives the robots of the run's state at time 0" $ do
+      let w = [ OTSimbotB 2 (Point2 1 1) 4, OTBall (Point2 0 0), OTSimbotA 1 (Point2 (-3) 2) (-7), OTBlock (Point2 3 3) ]
+      startRobotStates w `shouldBe` wsRobots (head (simulate 0.01 w (driveAt 1 0.5) idle))
+      map robotHeading (startRobotStates w) `shouldSatisfy` all (\h -> h >= -pi && h < pi)
+    it "names a command that is not finite by the function that makes it, not by its constructor (it said DriveTR)" $ do
+      let says c text = evaluate (length (show (take 3 (simulate 0.01 world c idle))))
+            `shouldThrow` (\e -> displayException (ceCause e) == text)
+          tr v w _ = constant (mrFinalize (ddVelTR v w))
+      says (tr (0 / 0) 0) "its wheel command is not finite: ddVelTR NaN 0.0 (translational and rotational speeds)"
+      says (driveAt 0.1 (1 / 0)) "its wheel command is not finite: ddVelDiff 0.1 Infinity (left and right wheel speeds)"
     it "shows a controller's failure as the sentence the run prints, not as a record" $ do
       let e = ControllerError "SimbotB" 3 2.5 (toException (ErrorCall "boom"))
       show e `shouldBe` "the controller of SimbotB 3 failed at t = 2.500 s: boom"

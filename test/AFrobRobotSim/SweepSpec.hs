@@ -15,7 +15,7 @@ import           Data.Ratio          (Ratio, (%))
 import qualified Data.Set            as S
 import           Data.List           (isInfixOf, isPrefixOf, sort)
 import           Data.Word           (Word8)
-import           System.Directory    (canonicalizePath, createDirectory, createFileLink, doesFileExist, findExecutable,
+import           System.Directory    (canonicalizePath, copyFile, createDirectory, createDirectoryIfMissing, createFileLink, doesFileExist, findExecutable,
                                       getPermissions, listDirectory, makeAbsolute, setOwnerExecutable,
                                       setPermissions)
 import           System.Environment  (getArgs, getEnvironment, getExecutablePath)
@@ -517,6 +517,18 @@ spec = do
           number k = either error id (asNumber (field [k] robotOf))
       number "bumps" `shouldBe` 1
       number "stuckTime" `shouldSatisfy` (\t -> t > 1 && t < 9)
+    it "a controller that throws at its first sample: the line lists the robots where the world places them (it listed none)" $ withTempDir $ \dir -> do
+      (code, _, line) <- runOnce dir ["--seconds", "2", "--seed", "3", "--param", "failAt=0"]
+      code `shouldBe` ExitFailure 1
+      let r = parsed line
+      field ["outcome", "failure"] r `shouldSatisfy` (/= JNull)
+      case field ["outcome", "robots"] r of
+        JArray [x] -> do
+          -- (the robot starts at x = -2.25, y = 0, with seed 3)
+          map (\k -> field [k] x) ["type", "id", "x", "y", "distance", "bumps", "stuckTime", "battery"]
+            `shouldBe` [JString "SimbotA", JNumber 1, JNumber (-2.25), JNumber 0, JNumber 0, JNumber 0, JNumber 0, JNumber 1]
+        other -> expectationFailure ("one robot expected: " ++ show other)
+
     it "a controller that throws: exit code 1, and the line has the failure and the time simulated" $ withTempDir $ \dir -> do
       (code, err, line) <- runOnce dir ["--seconds", "2", "--param", "failAt=0.5"]
       code `shouldBe` ExitFailure 1
@@ -581,15 +593,18 @@ spec = do
       sweep <- script "sweep"
       let world = dir </> "w.world"
       writeFile world "simbotA 1 at 0 0 heading 0 deg\n"
-      (code, _, _) <- runScriptCode [] sweep [ "--seeds", "1", "--param", "speed=2", prog, dir </> "r.jsonl"
+      -- (the second job line's run stops before it runs, at a parameter
+      -- it cannot read: the sweep's own check reads the first line's)
+      writeFile (dir </> "jobs") "--seed 1 --param speed=2\n--seed 2 --param speed=2 --param ratio=1%0\n"
+      (code, _, _) <- runScriptCode [] sweep [ "--jobs", dir </> "jobs", prog, dir </> "r.jsonl"
                                              , "--", "--seconds", "1", "--world", world, "--param", "speed=3"
-                                             , "--param", "k=a", "--no-such-flag" ]
+                                             , "--param", "k=a" ]
       code `shouldBe` ExitFailure 1
-      [line] <- lines <$> readFile (dir </> "r.jsonl")
+      [_, line] <- lines <$> readFile (dir </> "r.jsonl")
       field ["world"] (parsed line) `shouldBe` JString world
-      field ["params"] (parsed line) `shouldBe` JObject [("speed", JString "2"), ("k", JString "a")]
+      field ["params"] (parsed line) `shouldBe` JObject [("speed", JString "2"), ("k", JString "a"), ("ratio", JString "1%0")]
       table <- merged dir [dir </> "r.jsonl"]
-      table `shouldSatisfy` ("k=a speed=2  (1 runs, 1 failed)" `isInfixOf`)
+      table `shouldSatisfy` ("k=a ratio=1%0 speed=2  (1 runs, 1 failed)" `isInfixOf`)
 
     it "reads --shard and --seeds in decimal (010 is ten), and refuses what would run the wrong jobs" $ withTempDir $ \dir -> do
       sweep <- script "sweep"
@@ -655,6 +670,43 @@ spec = do
         -- what stays accepted: one parameter's values, two parameters
         listed ["--seeds", "1", "--param", "a=1,2", "--param", "b=x"]
           `shouldReturn` (ExitSuccess, ["--seed 1 --param a=1 --param b=x", "--seed 1 --param a=2 --param b=x"])
+    it "refuses, before any run, flags after -- that the program stops at (--seconds abc: every run failed)" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      (code, _, err) <- runScriptCode [] sweep ["--seeds", "1..3", prog, dir </> "r.jsonl", "--", "--seconds", "abc"]
+      code `shouldBe` ExitFailure 2
+      err `shouldSatisfy` ("the program stops before it runs, with the flags after -- and those of the first job line (--seed 1)" `isInfixOf`)
+      err `shouldSatisfy` ("--seconds expects a non-negative number" `isInfixOf`)
+      doesFileExist (dir </> "r.jsonl") `shouldReturn` False
+      -- (and a --param value the program cannot read, on the first line)
+      (code', _, err') <- runScriptCode [] sweep ["--seeds", "1", "--param", "speed=fast", prog, dir </> "r.jsonl"]
+      code' `shouldBe` ExitFailure 2
+      err' `shouldSatisfy` ("speed" `isInfixOf`)
+      doesFileExist (dir </> "r.jsonl") `shouldReturn` False
+
+    it "finds a cabal executable of the current folder's project by its name (it looked in afrp's only)" $ withTempDir $ \dir -> do
+      requireParallel
+      -- (a user's project beside afrp: its program where cabal builds it)
+      let binDir = dir </> "dist-newstyle/build/x86_64-linux/ghc-9.0.2/my-robot-0.1.0.0/x/my-robot/build/my-robot"
+      createDirectoryIfMissing True binDir
+      program <- childScript dir "program"
+      let prog = binDir </> "my-robot"
+      copyFile program prog
+      sweep <- script "sweep"
+      let run = readCreateProcessWithExitCode (proc "bash" [sweep, "--seeds", "1..2", "my-robot", "r.jsonl", "--", "--seconds", "1"])
+                  { cwd = Just dir } ""
+      (code, _, err) <- run
+      (code, err) `shouldBe` (ExitSuccess, "sweep: 2 runs, 0 failed; results in r.jsonl\n")
+      rs <- lines <$> readFile (dir </> "r.jsonl")
+      length rs `shouldBe` 2
+      prog `shouldSatisfy` (binDir `isPrefixOf`)
+      -- (and a name found nowhere is still refused)
+      (code', _, err') <- readCreateProcessWithExitCode (proc "bash" [sweep, "--seeds", "1", "no-such-robot", "r2.jsonl"])
+                            { cwd = Just dir } ""
+      code' `shouldBe` ExitFailure 2
+      err' `shouldSatisfy` ("no-such-robot is neither a path, a command, nor a built cabal executable" `isInfixOf`)
+
     it "counts as failed only the runs that failed, keeps job lines unexpanded, writes valid lines for odd seeds" $ withTempDir $ \dir -> do
       requireParallel
       prog <- childScript dir "program"
@@ -876,6 +928,7 @@ spec = do
       let prog = dir </> "slow"
           results = dir </> "r.jsonl"
       writeFile prog (unlines [ "#!/bin/bash"
+                              , "case \" $* \" in *' --dump-world '*) exit 0 ;; esac   # (the sweep's check of the flags)"
                               , "trap 'sleep 2; exit 143' TERM"
                               , ": > '" ++ dir </> "started" ++ "'/$$"
                               , "sleep 1000 & wait" ])

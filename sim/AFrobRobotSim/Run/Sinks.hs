@@ -59,8 +59,9 @@ import           AFrobRobotSim.OutputFile  (writeWhole)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Render.SVG  (svgOf)
 import           AFrobRobotSim.Replay
-import           AFrobRobotSim.Result      (RobotTally, resultJSON, startTallies, stepTallies)
+import           AFrobRobotSim.Result      (resultJSON, startTallies, stepTallies)
 import           AFrobRobotSim.Simulator
+import           AFrobRobotSim.World       (WorldTemplate)
 
 -- | One output of a run: a consumer of the stream of world states (every
 -- step's, from time 0) with its own small strict state, and what it does
@@ -253,10 +254,12 @@ replaySink note r file =
        (\summary -> attempt (show file) (Just ("wrote " ++ displayPath file ++ " (open it in a browser)" ++ note)) (writeReplay r summary file))
 
 -- | The result line (settings and outcome), written at the end however the
--- run ended; the robots' tallies are its only state.
-resultSink :: String -> SimOptions -> FilePath -> IO Sink
-resultSink prog opts file = do
-  ref <- newIORef ([] :: [RobotTally])
+-- run ended; the robots' tallies are its only state. Before the first
+-- state (a controller that fails at its first sample) they are the
+-- robots as the world places them ('startRobotStates'), not none.
+resultSink :: String -> SimOptions -> WorldTemplate -> FilePath -> IO Sink
+resultSink prog opts world file = do
+  ref <- newIORef (startTallies (WorldState 0 (startRobotStates world) [] []))
   let step n s = do
         old <- readIORef ref
         writeIORef ref $! if n == 0 then startTallies s else stepTallies (optDt opts) s old

@@ -139,9 +139,13 @@ cutNote = " ... (cut: longer than " ++ show maxTextChars ++ " characters)"
 finiteDrive :: DriveCommand -> ()
 finiteDrive c = case c of
   DriveBrake      -> ()
-  DriveWheels l r -> both "DriveWheels" l r
-  DriveTR v w     -> both "DriveTR" v w
+  DriveWheels l r -> both "ddVelDiff" "left and right wheel speeds" l r
+  DriveTR v w     -> both "ddVelTR" "translational and rotational speeds" v w
   where
-    both name a b
+    -- (named by the notes' function that makes such a command, not by
+    -- the constructor: "ddVelTR NaN 0.0 (translational and rotational
+    -- speeds)")
+    both name what a b
       | finite a && finite b = ()
-      | otherwise = errorWithoutStackTrace ("its wheel command is not finite: " ++ name ++ " " ++ show a ++ " " ++ show b)
+      | otherwise = errorWithoutStackTrace ("its wheel command is not finite: " ++ name ++ " " ++ show a ++ " "
+                                            ++ show b ++ " (" ++ what ++ ")")

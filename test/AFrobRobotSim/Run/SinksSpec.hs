@@ -142,7 +142,7 @@ spec = do
     it "writes one line of JSON at the end" $
       withTempDir $ \dir -> do
         let file = dir </> "result.jsonl"
-        sink <- resultSink "sinks-spec" defaultSimOptions file
+        sink <- resultSink "sinks-spec" defaultSimOptions defaultWorld file
         Outcome errs _ <- feed sink
         errs `shouldBe` []
         ls <- lines <$> readFile file
@@ -162,7 +162,7 @@ spec = do
     it "reports a write that fails at the end in the outcome, and does not throw" $
       withTempDir $ \dir -> do
         let file = dir </> "no-such-folder" </> "result.jsonl"
-        sink <- resultSink "sinks-spec" defaultSimOptions file
+        sink <- resultSink "sinks-spec" defaultSimOptions defaultWorld file
         Outcome errs wrote <- feed sink
         wrote `shouldBe` []
         map (("cannot write " ++ show file) `isPrefixOf`) errs `shouldBe` [True]
