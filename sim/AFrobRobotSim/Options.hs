@@ -306,6 +306,18 @@ scaleFor b o = maybe (fitScale b) id (optScale o)
 validateOptions :: SimOptions -> [String]
 validateOptions o =
   [ "--seconds and --dt must be finite numbers, --dt positive" | not (all finite [secs, dt, fps, scale]) || dt <= 0 || fps <= 0 ]
+  -- (what the flags refuse one at a time, for options set in code and
+  -- given to 'AFrobRobotSim.runSimWith': the simulator stopped at them
+  -- with a bare error, after the log was begun)
+  ++ [ "--seconds must be a number >= 0, got " ++ full secs | secs < 0 ]
+  ++ [ "--dt must be a positive number up to " ++ num maxTimeStep ++ ", got " ++ full dt | finite dt, dt > maxTimeStep ]
+  ++ [ "--odometry-noise must be a number from 0 to " ++ num maxOdometryNoise ++ ", got " ++ show noise
+     | not (noise >= 0 && noise <= maxOdometryNoise) ]
+  ++ [ "--scale must be a positive number, got " ++ full x | Just x <- [optScale o], finite x, x <= 0 ]
+  ++ [ "--seed must be a whole number from -2^53 to 2^53, got " ++ show (optSeed o)
+     | abs (toInteger (optSeed o)) > maxSeed ]
+  ++ [ "--keys: a key press's time must be a finite number >= 0, got " ++ show t ++ " for " ++ show k
+     | (t, k) <- optKeys o, not (t >= 0 && finite t) ]
   ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is "
        ++ (if isInfinite steps then "more steps than a number holds" else num steps ++ " steps")
        ++ ", more than the " ++ num maxSteps ++ " allowed"
@@ -331,6 +343,7 @@ validateOptions o =
      | Just v@(_ : _) <- [optVideo o], map toLower (takeExtension v) `notElem` map ('.' :) videoExtensions ]
   where
     secs = optSeconds o; dt = optDt o; fps = optFps o; scale = maybe 1 id (optScale o)
+    noise = optOdometryNoise o
     steps = secs / dt
     -- (more than maxSteps as runSteps counts them, with its slack)
     tooMany = isNaN steps || stepsBeforeFloor secs dt >= maxSteps + 1

@@ -28,7 +28,9 @@
 --    the arc and stops at the first contact with a wall, block, the world's
 --    boundary or another robot, whatever the speed (no tunnelling). Its
 --    speed becomes 0 and it is /stuck/; it stays stuck until it moves
---    again. Robots move one after the other, in template order, each
+--    again, that is, until its centre moves: turning on the spot does not
+--    free it (a disc that turns keeps touching what it touches), driving
+--    away from the contact does. Robots move one after the other, in template order, each
 --    against the others' current positions, so no two ever overlap.
 --
 -- = Indexing

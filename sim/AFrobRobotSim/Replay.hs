@@ -275,6 +275,10 @@ fnvBasis = 14695981039346656037
 -- folder, or in a folder that does not exist (said before the log is
 -- read).
 --
+-- The page keeps every frame of the log: it is not thinned to
+-- 'replayMaxFrames' as a run's own page is (a log of a long run makes a
+-- page about as big as the log).
+--
 -- The page is 'replayPage' of the log ('readLogFile'), made as a run's
 -- page is: the log is read a line at a time ('foldLogFile'), each frame's
 -- line written to a temporary file (in the system's temporary folder,

@@ -13,8 +13,10 @@
 -- summary.
 --
 -- Every fault that can be found before simulating is reported before
--- simulating, all of them in one message on standard error, with exit
--- code 2: an unknown flag, a world file that cannot be read or parsed
+-- simulating, on standard error, with exit code 2, in three stages: the
+-- command line (its first bad flag, or all the values that do not fit
+-- together); else the world (all its faults); else all the other faults,
+-- in one message. They are: an unknown flag, a world file that cannot be read or parsed
 -- (with its line and column), an invalid world, options that do not fit
 -- together ('validateOptions'), an output file or folder whose folder
 -- does not exist or cannot be written, two outputs that are the same file
@@ -23,7 +25,11 @@
 -- @ffmpeg@ on the PATH. A controller that throws stops the run with a message naming the
 -- robot and the simulated time (exit code 1); so does one whose messages
 -- raise when printed, whose step overflows the stack (@+RTS -K@), or
--- whose output depends on itself with no delay (@\<\<loop\>\>@). A write
+-- whose output depends on itself with no delay (@\<\<loop\>\>@, when the
+-- runtime sees it: a self-reference that the optimiser turns into a loop
+-- that never allocates, such as @rec let o = if c then x else o@ compiled
+-- with @-O@, hangs instead, and only @SIGTERM@'s watchdog ends it, see
+-- "AFrobRobotSim.Run.Signals"). A write
 -- that fails during the run (a full disk) stops it with a message (exit
 -- code 1), and so does the heap's limit (@+RTS -M@). Ctrl-C stops the
 -- run (exit code 130), and so does @SIGTERM@ (143). In each case the outputs are finished
@@ -121,7 +127,16 @@ runSimWith opts mworld rcA rcB = do
     Left errs -> failWith 2 (unlines ((prog ++ ": the world is invalid:") : map ("  " ++) errs))
     Right ()  -> pure ()
   if optDumpWorld opts
-    then putStr (renderWorld world) >> endOutput prog
+    then do
+      let text = renderWorld world
+      putStr text
+      -- (a world made in code may say what a file cannot: more objects
+      -- than 'maxObjects', a heading beyond 'maxHeading'; said, not
+      -- refused: the world is printed, and runs)
+      case parseWorld "the printed world" text of
+        Left e  -> putErr (prog ++ ": warning: this world does not load back with --world: " ++ e ++ "\n")
+        Right _ -> pure ()
+      endOutput prog
     else do
       (errs, ffmpeg) <- preflight (worldBounds world) opts
       unless (null errs) $

@@ -31,6 +31,19 @@ spec = do
                ["--fps", a, "or", b] ->
                  counterexample m (conjoin [ counterexample f (faults base { optFps = read f } === []) | f <- [a, b] ])
                other -> counterexample ("no two rates in: " ++ m ++ " " ++ show other) False
+  describe "validateOptions, numbers set in code" $
+    it "refuses what each flag refuses, for options that no flag made (runSimWith's)" $ do
+      let d = defaultSimOptions
+          faults o = [ m | m <- validateOptions o, m `notElem` validateOptions d ]
+      faults d { optSeconds = -1 } `shouldBe` ["--seconds must be a number >= 0, got -1.0"]
+      faults d { optOdometryNoise = 0 / 0 } `shouldBe` ["--odometry-noise must be a number from 0 to 1, got NaN"]
+      faults d { optOdometryNoise = -0.1 } `shouldBe` ["--odometry-noise must be a number from 0 to 1, got -0.1"]
+      faults d { optScale = Just 0 } `shouldSatisfy` elem "--scale must be a positive number, got 0.0"
+      faults d { optSeed = 2 ^ (60 :: Int) } `shouldBe` ["--seed must be a whole number from -2^53 to 2^53, got 1152921504606846976"]
+      faults d { optKeys = [(1, 'a'), (-2, 'b')] } `shouldBe` ["--keys: a key press's time must be a finite number >= 0, got -2.0 for 'b'"]
+      faults d { optDt = 2e6, optSeconds = 4e6, optFps = 1e-7 } `shouldSatisfy` elem "--dt must be a positive number up to 1000000, got 2000000.0"
+      -- (and the limits themselves are fine)
+      faults d { optOdometryNoise = 1, optSeed = 2 ^ (53 :: Int), optKeys = [(0, 'a')], optSeconds = 0 } `shouldBe` []
   describe "validateOptions, file names" $ do
     it "refuses an empty file name for every output, before the run" $ do
       let named f o = [ m | m <- validateOptions o, (f ++ " must not be empty") `isPrefixOf` m ]

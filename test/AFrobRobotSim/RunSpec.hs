@@ -128,6 +128,9 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- 2001 snapshots (the most it keeps), under the parent's heap limit.
 -- @params@: 0.1 s with a @--param@ it asks for and one it does not (a
 -- warning). @noworld@: a world file that is not there (exit code 2).
+-- @dumpfar@: @--dump-world@ of a world whose heading a file cannot say.
+-- @badnoise@: options set in code out of their flags' ranges (odometry
+-- noise 2, a time step of 2e6 s), with a log.
 -- @loop@: a SimbotA whose output depends on itself with no delay.
 -- @deep@: a SimbotA whose step overflows a small stack (@+RTS -K1m@).
 -- @leak@: a SimbotA that keeps ever more state, for a heap limit.
@@ -164,6 +167,9 @@ child arg = case break (== ':') arg of
     runSimWith (quick dir) { optFrames = False, optSeconds = 0.1, optParams = [("sped", "2"), ("speed", "3")] }
       (Just world) drive drive
   ("noworld", _ : dir) -> runSimWith (quick dir) { optWorldFile = Just (dir </> "missing.world") } Nothing drive drive
+  ("dumpfar", _ : _) -> runSimWith defaultSimOptions { optDumpWorld = True } (Just [OTSimbotA 1 (Point2 0 0) 1e10]) drive drive
+  ("badnoise", _ : dir) -> runSimWith (quick dir) { optFrames = False, optOdometryNoise = 2, optDt = 2e6
+                                                  , optLog = Just (dir </> "run.jsonl") } (Just world) drive drive
   ("loop", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg")
                                               , optResult = Just (dir </> "r.json") } (Just world) selfish drive
   ("lateloop", _ : dir) -> runSimWith (quick dir) { optFrames = False, optLog = Just (dir </> "run.jsonl")
@@ -418,6 +424,27 @@ spec = do
       full <- openFile "/dev/full" WriteMode
       (o', code') <- withErr "params" dir (UseHandle full)
       (code', take 25 o') `shouldBe` (ExitSuccess, "0.10 s simulated in 11 st")
+    it "--dump-world of a world that a file cannot say prints it and warns that it does not load back (it said nothing)" $
+      withTempDir $ \dir -> do
+        self <- getExecutablePath
+        environment <- getEnvironment
+        (code, out, err) <- readCreateProcessWithExitCode
+          (proc self []) { env = Just ((childVariable, "dumpfar:" ++ dir) : environment) } ""
+        code `shouldBe` ExitSuccess
+        lines out `shouldSatisfy` elem "simbotA 1 at 0.0 0.0 heading 1.0e10 rad"
+        err `shouldSatisfy` ("warning: this world does not load back with --world: the printed world:2:30: expected a heading within" `isInfixOf`)
+    it "options set in code out of their flags' ranges are refused before the run, exit 2 (the simulator stopped at them, the log begun)" $
+      withTempDir $ \dir -> do
+        writeFile (dir </> "run.jsonl") "an earlier log\n"
+        self <- getExecutablePath
+        environment <- getEnvironment
+        (code, out, err) <- readCreateProcessWithExitCode
+          (proc self []) { env = Just ((childVariable, "badnoise:" ++ dir) : environment) } ""
+        (code, out) `shouldBe` (ExitFailure 2, "")
+        lines err `shouldSatisfy` \ls -> all (`elem` map (dropWhile (== ' ')) ls)
+          [ "--odometry-noise must be a number from 0 to 1, got 2.0", "--dt must be a positive number up to 1000000, got 2000000.0" ]
+        err `shouldNotSatisfy` ("CallStack" `isInfixOf`)
+        readFile (dir </> "run.jsonl") `shouldReturn` "an earlier log\n"
     it "a world file that is not there still exits with code 2" $ withTempDir $ \dir -> do
       (o, code) <- withErr "noworld" dir NoStream
       (code, o) `shouldBe` (ExitFailure 2, "")
