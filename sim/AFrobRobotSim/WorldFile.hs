@@ -237,8 +237,8 @@ parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . textLines . 
 
 -- | The most objects a world file may describe: 100000 (the notes' world
 -- holds about 1100 balls, or 400 blocks, side by side; a world of 10,000
--- robots and their obstacles, as the benchmarks build in code, is some
--- 17,000, and its @--dump-world@ loads back). A file of that many is read
+-- robots and their obstacles, as the benchmarks build in code, is about
+-- 18,000, and its @--dump-world@ loads back). A file of that many is read
 -- and checked in about two seconds. The @size@ line is not an object.
 maxObjects :: Int
 maxObjects = 100000
