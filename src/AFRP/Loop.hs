@@ -44,15 +44,22 @@
 -- ("AFRP.ResidencySpec").
 --
 -- What this asks of a network: the body's output pair must exist at every
--- sample, also at one whose output nobody reads. A pair written as a
--- tuple (@arr (\(a, c) -> (e1, e2))@) always does. In a @rec@ block the
--- pair is made of the block's result and its variables, and a pattern
--- binding them is matched strictly: after @rec (x, y) <- sf -< e@ the
--- pair exists only where @sf@'s output pair does, so a 'AFRP.Delay.pre'
--- there (no output at time 0) fails the run at the second sample, and an
--- @sf@ whose output is an error (bottom) at some sample fails it at the next,
--- whether or not that output is read. Yampa never evaluates the pair, and
--- goes on where nobody reads it. Use 'AFRP.Delay.iPre', or a lazy pattern
+-- sample, also at one whose output nobody reads; a body whose pair is an
+-- error (bottom) at some sample fails the run at the next, whether or not
+-- that output is read, where Yampa, which never evaluates the pair, goes
+-- on. A pair written as a tuple (@arr (\(a, c) -> (e1, e2))@) always
+-- exists. In a @rec@ block the pair is made of the block's result and its
+-- variables, in the shape GHC's translation of the arrow notation gives
+-- it, and a pattern binding them is matched strictly: after
+-- @rec (x, y) <- sf -< e@ the pair may exist only where @sf@'s output
+-- pair does, so a 'AFRP.Delay.pre' there (no output at time 0), or an
+-- @sf@ whose output is an error at some sample, may fail the run. Whether
+-- it does depends on that shape, and so may differ from Yampa in either
+-- direction: with a 'AFRP.Delay.delay' after the pair
+-- (@rec (x, y) <- pre -< (a, z); z <- delay 1 0 -< x + y@) both fail;
+-- with an 'AFRP.Delay.iPre' after an @sf@ that errs at one sample, afrp
+-- went on where Yampa 0.15 failed. To be sure of neither, use
+-- 'AFRP.Delay.iPre' rather than 'AFRP.Delay.pre', and a lazy pattern
 -- (@~(x, y) <- sf -< e@).
 --
 -- = The exception: a lazy value kept by a delay
@@ -85,6 +92,9 @@ import           AFRP.VectorSpace
 --
 -- > -- a counter: 0, 1, 2, ...
 -- > loopPre 0 (arr (\(_, n) -> (n, n + 1)))
+--
+-- (A lazy accumulation, as this counter is: read its output at every
+-- sample, or it keeps a chain of additions; see the module's header.)
 loopPre :: c -> SF (a, c) (b, c) -> SF a b
 loopPre c0 sf = loop (second (iPre c0) >>> sf)
 {-# INLINE loopPre #-}

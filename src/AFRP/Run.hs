@@ -228,7 +228,11 @@ badDt runner dt = error ("AFRP.Run." ++ runner ++ ": a time step of " ++ show dt
 -- the speed ratio (0 pauses, 1 is real time, 2 is twice as fast); the
 -- embedded run's clock advances by @ratio * dt@ at each step, and the
 -- output is the embedded output of the latest embedded sample at or before
--- that clock (the last one once the samples run out). A negative or NaN
+-- that clock (the last one once the samples run out). The clock and the
+-- samples' times are sums of floats, compared as they are, as in Yampa
+-- (not by the rounding rule of the library's timed events): at a clock of
+-- 0.3, samples 0.1 apart have their fourth at 0.30000000000000004, not yet
+-- reached, so the output is the third's. A negative or NaN
 -- ratio is an error. The ratio at local time 0 is not read (the output
 -- there is the embedded output at time 0 whatever it is), as in Yampa;
 -- nor is the ratio of a later sample read before the output is demanded
