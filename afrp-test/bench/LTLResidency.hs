@@ -10,11 +10,11 @@
 -- page on 10^3 (what @cabal bench@ runs).
 module Main (main) where
 
+import           Control.Exception  (bracket)
 import           System.Directory   (getTemporaryDirectory, removeFile)
 import           System.Environment (getArgs)
 import           System.Exit        (die)
-import           System.FilePath    ((</>))
-import           System.IO          (IOMode (ReadMode), hFileSize, withFile)
+import           System.IO          (IOMode (ReadMode), hClose, hFileSize, openTempFile, withFile)
 
 import           Test.QuickCheck    (chatty, isSuccess, maxSuccess, quickCheckWithResult, stdArgs)
 
@@ -54,10 +54,12 @@ runOf n = isSuccess <$> quickCheckWithResult stdArgs { maxSuccess = 1, chatty = 
 pageOf :: Int -> IO Integer
 pageOf n = do
   tmp <- getTemporaryDirectory
-  let file = tmp </> "afrp-test-residency.html"
-  writeRunReplayPage file defaultSimConfig (fromIntegral n / 100) world wander wander
-  size <- withFile file ReadMode hFileSize
-  size <$ removeFile file
+  -- (a file of its own name, so that two runs at once do not meet,
+  -- removed whatever happens)
+  bracket (openTempFile tmp "afrp-test-residency.html") (\(file, h) -> hClose h >> removeFile file) $ \(file, h) -> do
+    hClose h
+    writeRunReplayPage file defaultSimConfig (fromIntegral n / 100) world wander wander
+    withFile file ReadMode hFileSize
 
 -- | Three simbots, each driving its own circle.
 world :: [ObjectTemplate]

@@ -88,6 +88,7 @@ module AFrobRobotSim.Replay
   , recordReplayStateWith
   , writeReplay
   , writeReplayChunked
+  , discardReplay
   ) where
 
 import qualified Data.ByteString.Char8     as BC
@@ -431,6 +432,14 @@ writePage chunk header fh summary hash out =
       at <- copy (1 :: Int, BC.length header)
       mapM_ (next at) summary
       BC.hPutStr oh (BC.pack post)
+
+-- | Throw a recording away: close its temporary file (and remove it,
+-- where the system kept it in its folder), writing no page. For a run
+-- that stops with an exception before its page is written; harmless after
+-- 'writeReplay', and when called twice.
+discardReplay :: ReplayRecorder -> IO ()
+discardReplay (ReplayRecorder _ left h _) =
+  (hClose h `catch` \e -> const (pure ()) (e :: IOException)) >> mapM_ removeIfExists left
 
 -- A temporary file removed, if it is still there.
 removeIfExists :: FilePath -> IO ()

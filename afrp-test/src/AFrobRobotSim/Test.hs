@@ -51,7 +51,8 @@ module AFrobRobotSim.Test
   , robotGap
   ) where
 
-import           Control.Exception    (SomeAsyncException, displayException, evaluate, fromException, try, tryJust)
+import           Control.Exception    (SomeAsyncException, bracketOnError, displayException, evaluate, fromException, try,
+                                       tryJust)
 import           Data.List            (intercalate, tails)
 import           Data.Maybe           (isJust)
 import           Test.QuickCheck
@@ -64,7 +65,7 @@ import           AFrobRobotSim.Simulator (forceWorldState)
 import           AFrobRobotSim.World  (objectHalfSize)
 import           AFrobRobotSim.Log    (LogConfig (..), LogSummary (..), RunLog (..), defaultLogConfig,
                                        logFrames, logHeader)
-import           AFrobRobotSim.Replay (newReplayRecorder, recordReplayState, replayPage, writeReplay)
+import           AFrobRobotSim.Replay (discardReplay, newReplayRecorder, recordReplayState, replayPage, writeReplay)
 import           AFRP.Test.LTL
 import           AFRP.Test.Stream
 
@@ -317,10 +318,11 @@ forAllWorlds file gen prop =
 -- world is run a second time to be explained, and that run is kept up to
 -- about twice the instant that decided ('explainT').
 --
--- The run ends at @duration@: a deadline beyond it has not passed, so
--- @'eventuallyWithin' 25 p@ holds of a 20 s run in which @p@ never holds
--- (see 'eventuallyWithin'). Give a duration at least as long as the
--- longest bound of @p@.
+-- The run ends at its last whole time step within @duration@ (at
+-- @duration@ when 'simDt' divides it): a deadline beyond it has not
+-- passed, so @'eventuallyWithin' 25 p@ holds of a 20 s run in which @p@
+-- never holds (see 'eventuallyWithin'). Give a duration of at least the
+-- longest bound of @p@ plus one time step.
 runT :: SimConfig -> Time -> SimbotController -> SimbotController -> TPred WorldState
      -> WorldTemplate -> Property
 runT config duration rcA rcB p world
@@ -422,10 +424,12 @@ runReplayPage config duration world rcA rcB =
 -- the run's states or frames. The page is written whole or not at all.
 writeRunReplayPage :: FilePath -> SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController
                    -> IO ()
-writeRunReplayPage file config duration world rcA rcB = do
-  recorder <- newReplayRecorder (pageConfig config world)
-  (steps, simulated, failure) <- record recorder 0 0 (map snd (runStream config duration world rcA rcB))
-  writeReplay recorder (pageSummary steps simulated (-1) failure) file
+writeRunReplayPage file config duration world rcA rcB =
+  -- (the recorder's temporary file closed whatever stops the run: an
+  -- error, a timeout's or Ctrl-C's exception)
+  bracketOnError (newReplayRecorder (pageConfig config world)) discardReplay $ \recorder -> do
+    (steps, simulated, failure) <- record recorder 0 0 (map snd (runStream config duration world rcA rcB))
+    writeReplay recorder (pageSummary steps simulated (-1) failure) file
   where
     -- (each state evaluated as simbot evaluates it before recording it;
     -- the steps counted and the last one's time kept, strictly)

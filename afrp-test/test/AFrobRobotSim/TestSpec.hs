@@ -2,10 +2,11 @@
 -- | Properties of whole simbot runs, written with "AFrobRobotSim.Test".
 module AFrobRobotSim.TestSpec (spec) where
 
-import           Control.Exception     (evaluate, try)
+import           Control.Exception     (ErrorCall, evaluate, try)
 import           Data.List             (isInfixOf, isPrefixOf, tails)
 import           Numeric               (showFFloat)
-import           System.Directory      (createDirectory, getTemporaryDirectory, removeDirectory, removeFile)
+import           System.Directory      (createDirectory, doesDirectoryExist, doesFileExist, getTemporaryDirectory, listDirectory,
+                                        removeDirectory, removeFile)
 import           System.IO.Error       (isAlreadyExistsError)
 import           System.Timeout        (timeout)
 import           System.FilePath       ((</>))
@@ -356,7 +357,24 @@ specWithFiles = do
     -- (the samples, the one at time 0 included)
     pageSummary page `shouldSatisfy` (("\"steps\":" ++ show (length (runStream config 7 world wander straight)) ++ ",") `isInfixOf`)
 
-  it "forAllRuns writes the shrunk world and its run's replay page (property)" $ \tmp -> do
+  it "writeRunReplayPage closes its temporary file when the run stops with an exception (it was left open)" $ \tmp -> do
+    let world = [OTSimbotA 1 (Point2 0 0) 0]
+        file = tmp </> "afrp-test-leak.html"
+        openFiles = length <$> listDirectory "/proc/self/fd"
+    linux <- doesDirectoryExist "/proc/self/fd"
+    if not linux then pendingWith "needs /proc/self/fd" else do
+      before <- openFiles
+      -- an error from the run (a negative duration), and a timeout's
+      -- exception in the middle of a long run
+      mapM_ (\_ -> (try (writeRunReplayPage file defaultSimConfig (-1) world wander wander) :: IO (Either ErrorCall ()))
+                     >>= either (const (pure ())) (const (expectationFailure "a negative duration ran")))
+            [1 .. 10 :: Int]
+      mapM_ (\_ -> timeout 20000 (writeRunReplayPage file defaultSimConfig 1e5 world wander wander)) [1 .. 10 :: Int]
+      after' <- openFiles
+      after' `shouldBe` before
+      doesFileExist file `shouldReturn` False
+
+
     let file = tmp </> "afrp-test-broken-runs.world"
     result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 3, 0) } $
       forAllRuns file defaultSimConfig { simDt = 0.02 } corridorTime (rcFollowLeftWallBroken 0.3 0.25) wander
@@ -454,12 +472,14 @@ specWithFiles = do
         occurrences "\"frame\"" page `shouldBe` 30
       _ -> expectationFailure ("the run was not found to fail: " ++ output result)
 
--- A robot that drives straight at full speed: in a world without walls it
--- ends up against the world's edge, stuck.
+-- Whether an object of a template is a robot.
 isRobot :: ObjectTemplate -> Bool
 isRobot OTSimbotA {} = True
 isRobot OTSimbotB {} = True
 isRobot _            = False
+
+-- A robot that drives straight at full speed: in a world without walls it
+-- ends up against the world's edge, stuck.
 
 straight :: SimbotController
 straight _ = constant (mrFinalize (ddVelTR 1 0))

@@ -237,20 +237,23 @@ truths ending m p0 s = go p0
           Just d  -> ([], Just (d, rest))
           Nothing -> let (before, after') = untilDecided rest in (v : before, after')
     -- The window of samples from each one to d seconds after it, folded;
-    -- if the stream seen so far reaches the window's end (a sample at d,
-    -- within the slack, or past it), the window is complete, otherwise the
-    -- samples beyond decide (unknown while the stream is open; at the end
-    -- of a closed stream the value given). An infinite window never ends.
+    -- if the stream seen so far reaches past the window, the window is
+    -- complete; if it is closed and its last sample is at the window's end
+    -- (at d, within the slack), too; otherwise the samples beyond decide
+    -- (unknown while the stream is open, since a sample of a step of 0
+    -- may still come at d; at the end of a closed stream the value given).
+    -- An infinite window never ends.
     windowed d vs combine unit =
       [ let elapsed = sampleTimes (sRestart suffix)  -- times from the suffix's start (read lazily: a
                                                       -- predicate costs time linear in the stream times the window)
             (inWindow, after') = span ((<= d + slack) . fst) (zip elapsed vsFrom)
             slack = timeSlack d
             reached = not (isInfinite d) && any ((>= d - slack) . fst) inWindow
-            end | not (null after') || reached = unit
-                | otherwise                    = case ending of
-                    Closed -> T
-                    Open   -> U
+            end | not (null after') = unit
+                | otherwise         = case ending of
+                    Closed | reached   -> unit
+                           | otherwise -> T
+                    Open -> U
         in foldr (combine . snd) end inWindow
       | (suffix, vsFrom) <- zip (suffixes (take m s)) (suffixes vs) ]
 

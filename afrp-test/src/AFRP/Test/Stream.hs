@@ -79,11 +79,14 @@ lastSample ss = snd (last ss)
 
 -- | @sMerge f s1 s2@ merges two streams by time: samples at the same time
 -- are combined with @f@ (the first stream's value as first argument), at
--- the first stream's time; others are kept as they are, so the result
--- samples at every time either stream does. Two times within 'timeSlack'
--- of each other are the same time (as for 'sClipAfterTime'): three steps
--- of 0.1 end at 0.30000000000000004, one of 0.3 at 0.3, and the two
--- samples there are one, not two 5.6e-17 s apart.
+-- the earlier of their two times; others are kept as they are, so the
+-- result samples at every time either stream does (a combined pair at the
+-- earlier of its two). Two times within 'timeSlack' of each other are the
+-- same time (as for 'sClipAfterTime'): three steps of 0.1 end at
+-- 0.30000000000000004, one of 0.3 at 0.3, and the two samples there are
+-- one, at 0.3, not two 5.6e-17 s apart. Each sample of the result is taken
+-- at the earlier of the two streams' next times, so its time steps are
+-- never negative.
 --
 -- > map snd (sMerge (+) [(0, 1), (0.1, 1), (0.1, 1), (0.1, 1)] [(0, 10), (0.3, 10)])
 -- >   == [11, 1, 1, 11]
@@ -93,7 +96,7 @@ sMerge f s1 s2 = fromTimed (mergeTimed (toTimed s1) (toTimed s2))
     mergeTimed [] ys = ys
     mergeTimed xs [] = xs
     mergeTimed xs@((t1, x) : xs') ys@((t2, y) : ys')
-      | abs (t1 - t2) <= timeSlack (max (abs t1) (abs t2)) = (t1, f x y) : mergeTimed xs' ys'
+      | abs (t1 - t2) <= timeSlack (max (abs t1) (abs t2)) = (min t1 t2, f x y) : mergeTimed xs' ys'
       | t1 < t2   = (t1, x) : mergeTimed xs' ys
       | otherwise = (t2, y) : mergeTimed xs ys'
 

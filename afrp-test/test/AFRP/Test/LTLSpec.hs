@@ -119,6 +119,13 @@ spec = do
       evalT (Always (Implies (is (== 6)) (eventuallyWithin 0.3 (is (== 20))))) count `shouldBe` False
       evalT (Always (Implies (is (== 7)) (eventuallyWithin 0.3 (is (== 20))))) count `shouldBe` True
       fmap explFrame (explainT (eventuallyWithin 0.3 (is (== 20))) (take 4 count)) `shouldBe` Just 3
+    it "explainT of a window that a sample of a step of 0 completes: the instant of the real miss (it named one that held)" $ do
+      -- times 0, 1, 1, 2, 3: p holds only at the second sample at t = 1, so
+      -- the window from 0 holds; the one from t = 2 misses, decided at t = 3
+      let s = [(0, 0), (1, 0), (0, 1), (1, 0), (1, 0)] :: SignalSampleStream Int
+          p = Always (eventuallyWithin 1 (is (== 1)))
+      evalT p s `shouldBe` False
+      fmap (\e -> (explFrame e, explTime e)) (explainT p s) `shouldBe` Just (4, 3)
     it "eventuallyWithin of an infinite bound is a deadline that never passes (true at the end, where Eventually is false)" $ do
       evalT (eventuallyWithin (1 / 0) (is (== 20))) count `shouldBe` True
       evalT (Eventually (is (== 20))) count `shouldBe` False

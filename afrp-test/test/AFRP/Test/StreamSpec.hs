@@ -64,6 +64,19 @@ spec = do
       map snd merged `shouldBe` [11, 1, 1, 11]
       map snd (sMerge (+) [(0, 1), (0.3, 1)] [(0, 10), (0.3 + 1e-6, 10 :: Int)]) `shouldBe` [11, 1, 10]
       map snd (sMerge (+) [(0, 1), (0.3, 1)] [(0, 10), (0.2, 10), (0.2, 10 :: Int)]) `shouldBe` [11, 10, 1, 10]
+      -- (a merged pair is at the earlier of its two times, so that a later
+      -- sample of either stream, within the slack too, is never before it:
+      -- the steps were -3e-13 and -1e-10 when the pair took the first's)
+      sMerge (+) [(0, 1), (5e-13, 1)] [(0, 10), (1e-13, 10), (1e-13, 10 :: Int)] `shouldBe` [(0, 11), (1e-13, 11), (1e-13, 10)]
+      map fst (sMerge (+) [(0, 1), (0.3, 1)] [(0, 10), (0.3 - 2e-10, 10), (1e-10, 10 :: Int)]) `shouldSatisfy` all (>= 0)
+    it "sMerge's steps are never negative, and its samples are both streams' (property)" $
+      property $ \(xs :: [(NonNegative Double, Int)]) (ys :: [(NonNegative Double, Int)]) ->
+        let tiny (NonNegative d, v) = (d * 1e-9, v)   -- (steps near the slack)
+            s1 = (0, 0) : map tiny xs
+            s2 = (0, 0) : map tiny ys
+            m  = sMerge (+) s1 s2
+        in conjoin [ counterexample "a negative step" (all ((>= 0) . fst) m)
+                   , counterexample "a sample lost" (sum (map snd m) === sum (map snd s1) + sum (map snd s2)) ]
     it "sClipBeforeTime of an infinite time keeps the last sample only (it kept them all)" $ do
       let s = zip (0 : repeat 0.1) "abcdefg"
       sClipBeforeTime (1 / 0) s `shouldBe` [(0, 'g')]
