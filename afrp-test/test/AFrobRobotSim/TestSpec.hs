@@ -363,7 +363,7 @@ specWithFiles = do
         openFiles = length <$> listDirectory "/proc/self/fd"
     linux <- doesDirectoryExist "/proc/self/fd"
     if not linux then pendingWith "needs /proc/self/fd" else do
-      before <- openFiles
+      opened <- openFiles
       -- an error from the run (a negative duration), and a timeout's
       -- exception in the middle of a long run
       mapM_ (\_ -> (try (writeRunReplayPage file defaultSimConfig (-1) world wander wander) :: IO (Either ErrorCall ()))
@@ -371,10 +371,10 @@ specWithFiles = do
             [1 .. 10 :: Int]
       mapM_ (\_ -> timeout 20000 (writeRunReplayPage file defaultSimConfig 1e5 world wander wander)) [1 .. 10 :: Int]
       after' <- openFiles
-      after' `shouldBe` before
+      after' `shouldBe` opened
       doesFileExist file `shouldReturn` False
 
-
+  it "forAllRuns writes the shrunk world and its run's replay page (property)" $ \tmp -> do
     let file = tmp </> "afrp-test-broken-runs.world"
     result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 3, 0) } $
       forAllRuns file defaultSimConfig { simDt = 0.02 } corridorTime (rcFollowLeftWallBroken 0.3 0.25) wander
