@@ -4,8 +4,9 @@
 
 # newest_build NAME: the path of the executable NAME as cabal builds it
 # into dist-newstyle, found without cabal (which a cluster's nodes may
-# lack), in this project and in the project of the current folder (a
-# user's own, beside an afrp checkout, whose cabal.project names it); the
+# lack), in this project and in the current folder's dist-newstyle (the
+# root of a user's own project beside an afrp checkout, whose
+# cabal.project names it: run from there); the
 # newest if there are several (a tree built before may hold an older
 # layout's), nothing if there is none.
 newest_build() {

@@ -28,7 +28,7 @@
 --
 -- * Limits, so that any file is read in time linear in its size: a line
 --   has at most 'maxLineLength' (4096) characters, a token at most
---   'maxTokenLength' (100); a file describes at most 'maxObjects' (100000)
+--   'maxTokenLength' (100); a file describes at most 'maxObjects' (10000)
 --   objects, and 'readWorldFile' reads at most 'maxFileBytes' (16 MiB). A NUL character anywhere is an error (the file
 --   is probably not text). A file read with 'readWorldFile' or
 --   'readWorldBytes' must be valid UTF-8; the first invalid byte is
@@ -134,7 +134,7 @@
 -- FILE:LINE:COLUMN: token longer than 100 characters, starting \"...\"
 -- FILE:LINE:COLUMN: found a NUL character (is this a text file?)
 -- FILE:LINE:COLUMN: invalid UTF-8 (byte 0xff)
--- FILE:LINE: too many objects (at most 100000)
+-- FILE:LINE: too many objects (at most 10000)
 -- FILE:LINE: the world's size is given twice (first on line N)
 -- @
 --
@@ -235,13 +235,16 @@ parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . textLines . 
       Left (Failure col msg) ->
         Left (file ++ ":" ++ show n ++ ":" ++ show col ++ ": " ++ msg)
 
--- | The most objects a world file may describe: 100000 (the notes' world
--- holds about 1100 balls, or 400 blocks, side by side; a world of 10,000
--- robots and their obstacles, as the benchmarks build in code, is about
--- 18,000, and its @--dump-world@ loads back). A file of that many is read
--- and checked in about two seconds. The @size@ line is not an object.
+-- | The most objects a world file may describe: 10000 (the notes' world
+-- holds about 1100 balls, or 400 blocks, side by side). A world built in
+-- code may hold more (the benchmarks' 10,000 robots and their obstacles
+-- are about 18,000): @--dump-world@ prints it and warns that it does not
+-- load back. (At 100,000, a file of 1.8 MB whose objects share grid cells
+-- without overlapping took more than 400 s to check: the check of
+-- overlaps compares the objects listed in a cell with one another.) The
+-- @size@ line is not an object.
 maxObjects :: Int
-maxObjects = 100000
+maxObjects = 10000
 
 -- | The longest line accepted, in characters: 4096.
 maxLineLength :: Int
@@ -316,7 +319,7 @@ readWorldFile path = do
     Right (Just s) -> readWorldBytes path s
 
 -- | The longest file 'readWorldFile' reads, in bytes: 16 MiB ('renderWorld'
--- writes 'maxObjects' objects in 12 MB at most).
+-- writes 'maxObjects' objects in less than 1.2 MB).
 maxFileBytes :: Int
 maxFileBytes = 16 * 1024 * 1024
 

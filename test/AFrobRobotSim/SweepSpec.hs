@@ -676,14 +676,21 @@ spec = do
       sweep <- script "sweep"
       (code, _, err) <- runScriptCode [] sweep ["--seeds", "1..3", prog, dir </> "r.jsonl", "--", "--seconds", "abc"]
       code `shouldBe` ExitFailure 2
-      err `shouldSatisfy` ("the program stops before it runs, with the flags after -- and those of the first job line (--seed 1)" `isInfixOf`)
-      err `shouldSatisfy` ("--seconds expects a non-negative number" `isInfixOf`)
+      err `shouldSatisfy` ("the program stops before it runs with the flags after -- (--seconds abc)" `isInfixOf`)
+      err `shouldSatisfy` (": --seconds expects a non-negative number" `isInfixOf`)
       doesFileExist (dir </> "r.jsonl") `shouldReturn` False
-      -- (and a --param value the program cannot read, on the first line)
-      (code', _, err') <- runScriptCode [] sweep ["--seeds", "1", "--param", "speed=fast", prog, dir </> "r.jsonl"]
+      -- (and a --param after -- that the program cannot read)
+      (code', _, err') <- runScriptCode [] sweep ["--seeds", "1", prog, dir </> "r.jsonl", "--", "--param", "speed=fast"]
       code' `shouldBe` ExitFailure 2
-      err' `shouldSatisfy` ("speed" `isInfixOf`)
+      err' `shouldSatisfy` ("cannot read the value \"fast\"" `isInfixOf`)
       doesFileExist (dir </> "r.jsonl") `shouldReturn` False
+      -- but a job line's own bad value fails that run alone: the others run
+      (code'', _, _) <- runScriptCode [] sweep ["--seeds", "1", "--param", "speed=fast,0.1", prog, dir </> "r.jsonl"
+                                               , "--", "--seconds", "1"]
+      code'' `shouldBe` ExitFailure 1
+      rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+      map (\r -> field ["params"] r) rs `shouldBe` [JObject [("speed", JString v)] | v <- ["fast", "0.1"]]
+      map (\r -> either (const False) (const True) (member "outcome" r)) rs `shouldBe` [False, True]
 
     it "finds a cabal executable of the current folder's project by its name (it looked in afrp's only)" $ withTempDir $ \dir -> do
       requireParallel
@@ -700,7 +707,6 @@ spec = do
       (code, err) `shouldBe` (ExitSuccess, "sweep: 2 runs, 0 failed; results in r.jsonl\n")
       rs <- lines <$> readFile (dir </> "r.jsonl")
       length rs `shouldBe` 2
-      prog `shouldSatisfy` (binDir `isPrefixOf`)
       -- (and a name found nowhere is still refused)
       (code', _, err') <- readCreateProcessWithExitCode (proc "bash" [sweep, "--seeds", "1", "no-such-robot", "r2.jsonl"])
                             { cwd = Just dir } ""
