@@ -171,8 +171,8 @@ parseSimArgs o0 = go o0 False False
     , ("--trails",     \(o, s, p) -> (o { optTrails = True }, s, p))
     ]
   valued o =
-      [ ("--seconds", \v -> (\x -> o { optSeconds = x }) <$> number "--seconds" (>= 0) v)
-      , ("--dt",      \v -> (\x -> o { optDt = x }) <$> number "--dt" (\x -> x > 0 && x <= maxTimeStep) v)
+      [ ("--seconds", \v -> (\x -> o { optSeconds = x }) <$> number "--seconds" secondsOk v)
+      , ("--dt",      \v -> (\x -> o { optDt = x }) <$> number "--dt" dtOk v)
       , ("--fps",     \v -> (\x -> o { optFps = x }) <$> number "--fps" (> 0) v)
       , ("--out",     \v -> if null v then Left "--out expects a folder name, got \"\""
                              else Right o { optOut = v })
@@ -181,9 +181,9 @@ parseSimArgs o0 = go o0 False False
       , ("--seed",    \v -> case integerLit (trim v) of
                              -- (read as an Int, 2^64 + 1 wrapped round to 1; beyond 2^53 the
                              -- result line and the log, JSON numbers, could not record it exactly)
-                             Just x | abs x <= maxSeed -> Right o { optSeed = fromInteger x }
+                             Just x | seedOk x -> Right o { optSeed = fromInteger x }
                              _ -> Left ("--seed expects a whole number from -2^53 to 2^53, got " ++ show v))
-      , ("--odometry-noise", \v -> (\x -> o { optOdometryNoise = x }) <$> number "--odometry-noise" (\x -> x >= 0 && x <= maxOdometryNoise) v)
+      , ("--odometry-noise", \v -> (\x -> o { optOdometryNoise = x }) <$> number "--odometry-noise" noiseOk v)
       , ("--world",   \v -> if null v then Left "--world must not be empty (a world file's name)"
                                         else Right o { optWorldFile = Just v })
       , ("--svg",     \v -> Right o { optSvg = Just v })
@@ -272,6 +272,17 @@ setParam (k, v) ps
 maxSeed :: Integer
 maxSeed = 2 ^ (53 :: Int)
 
+-- The ranges of the numbered settings, as the flags check them one at a
+-- time and 'validateOptions' checks options set in code (NaN is in none).
+secondsOk, dtOk, noiseOk, keyTimeOk :: Double -> Bool
+secondsOk x = x >= 0
+dtOk x      = x > 0 && x <= maxTimeStep
+noiseOk x   = x >= 0 && x <= maxOdometryNoise
+keyTimeOk x = x >= 0 && not (isInfinite x)
+
+seedOk :: Integer -> Bool
+seedOk x = abs x <= maxSeed
+
 -- | The most steps a run may take: 10^8 (about 280 simulated hours at the
 -- default step).
 maxSteps :: Double
@@ -309,15 +320,16 @@ validateOptions o =
   -- (what the flags refuse one at a time, for options set in code and
   -- given to 'AFrobRobotSim.runSimWith': the simulator stopped at them
   -- with a bare error, after the log was begun)
-  ++ [ "--seconds must be a number >= 0, got " ++ full secs | secs < 0 ]
-  ++ [ "--dt must be a positive number up to " ++ num maxTimeStep ++ ", got " ++ full dt | finite dt, dt > maxTimeStep ]
+  ++ [ "--seconds must be a number >= 0, got " ++ full secs | finite secs, not (secondsOk secs) ]
+  ++ [ "--dt must be a positive number up to " ++ num maxTimeStep ++ ", got " ++ full dt
+     | finite dt, dt > 0, not (dtOk dt) ]
   ++ [ "--odometry-noise must be a number from 0 to " ++ num maxOdometryNoise ++ ", got " ++ show noise
-     | not (noise >= 0 && noise <= maxOdometryNoise) ]
+     | not (noiseOk noise) ]
   ++ [ "--scale must be a positive number, got " ++ full x | Just x <- [optScale o], finite x, x <= 0 ]
   ++ [ "--seed must be a whole number from -2^53 to 2^53, got " ++ show (optSeed o)
-     | abs (toInteger (optSeed o)) > maxSeed ]
+     | not (seedOk (toInteger (optSeed o))) ]
   ++ [ "--keys: a key press's time must be a finite number >= 0, got " ++ show t ++ " for " ++ show k
-     | (t, k) <- optKeys o, not (t >= 0 && finite t) ]
+     | (t, k) <- optKeys o, not (keyTimeOk t) ]
   ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is "
        ++ (if isInfinite steps then "more steps than a number holds" else num steps ++ " steps")
        ++ ", more than the " ++ num maxSteps ++ " allowed"
@@ -434,7 +446,7 @@ parseKeys s
   | otherwise     = mapM one (splitOn ',' s)
   where
     one item = case break (== ':') (trim item) of
-      (t, ':' : key) | Just x <- decimalLit (trim t), x >= 0, not (isNaN x || isInfinite x)
+      (t, ':' : key) | Just x <- decimalLit (trim t), keyTimeOk x
                      , Just k <- keyNamed key -> Right (x, k)
       _ -> Left ("--keys expects TIME:KEY pairs separated by commas (e.g. \"1.5:a,3:b\"; a KEY is one "
                  ++ "character, or space or comma), got " ++ show item)

@@ -312,7 +312,7 @@ writeReplayFromLog logPath out = do
        opened <- try (openSpool tmp)
        case opened of
         Left e          -> pure (Left (spoolFault e))
-        Right (left, h) -> flip finally (quietly (hClose h) >> mapM_ removeIfExists left) $ restore $ do
+        Right (left, h) -> flip finally (closeSpool left h) $ restore $ do
           let start hd = let line = encodeLogLineBytes (LineHeader hd) in pure (line, fnvBytes fnvBasis line)
               step (header, !hash) f = do
                 let !line = encodeLogLineBytes (LineFrame f)
@@ -326,8 +326,6 @@ writeReplayFromLog logPath out = do
               let summary = encodeLogLineBytes . LineSummary <$> msummary
               either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) Right   -- (it names the page)
                 <$> try (writePage replayChunkChars header h summary (maybe hash (fnvBytes hash) summary) out)
-  where
-    quietly act = act `catch` \e -> const (pure ()) (e :: IOException)
 
 -- | A page being recorded as a run goes. Each frame's line is encoded at
 -- once and appended to a temporary file (in the system's temporary
@@ -408,7 +406,7 @@ writeReplayChunked chunk (ReplayRecorder cfg left h ref) s out =
       let s'      = if lsFrames s < 0 then s { lsFrames = n } else s
           summary = encodeLogLineBytes (LineSummary s')
       writePage chunk (encodeLogLineBytes (LineHeader (logHeader cfg))) h (Just summary) (fnvBytes hash summary) out)
-  `finally` ((hClose h `catch` \e -> const (pure ()) (e :: IOException)) >> mapM_ removeIfExists left)
+  `finally` closeSpool left h
 
 -- @writePage chunk header frames summary hash out@ writes the page of a
 -- log whose header line is @header@, whose frames' lines are what is left
@@ -438,8 +436,12 @@ writePage chunk header fh summary hash out =
 -- that stops with an exception before its page is written; harmless after
 -- 'writeReplay', and when called twice.
 discardReplay :: ReplayRecorder -> IO ()
-discardReplay (ReplayRecorder _ left h _) =
-  (hClose h `catch` \e -> const (pure ()) (e :: IOException)) >> mapM_ removeIfExists left
+discardReplay (ReplayRecorder _ left h _) = closeSpool left h
+
+-- The frames' temporary file ('openSpool') closed, and removed if the
+-- system kept it in its folder; quietly, and harmless when done twice.
+closeSpool :: Maybe FilePath -> Handle -> IO ()
+closeSpool left h = (hClose h `catch` \e -> const (pure ()) (e :: IOException)) >> mapM_ removeIfExists left
 
 -- A temporary file removed, if it is still there.
 removeIfExists :: FilePath -> IO ()

@@ -275,10 +275,11 @@ data RobotTally = RobotTally
   , tallyStuck    :: !Double      -- ^ simulated seconds spent stuck
   }
 
--- | The tallies at time 0: nothing travelled, a bump for a robot stuck
+-- | The tallies of the robots at time 0 (the state's, or 'startRobotStates'
+-- before there is one): nothing travelled, a bump for a robot stuck
 -- already.
-startTallies :: WorldState -> [RobotTally]
-startTallies s = [ RobotTally r 0 (if robotStuck r then 1 else 0) 0 | r <- wsRobots s ]
+startTallies :: [RobotState] -> [RobotTally]
+startTallies rs = [ RobotTally r 0 (if robotStuck r then 1 else 0) 0 | r <- rs ]
 
 -- | Take the next step's state (@dt@ after the previous one): add the
 -- displacement, a bump when a robot becomes stuck, @dt@ of stuck time for

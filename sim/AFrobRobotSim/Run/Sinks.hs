@@ -259,10 +259,10 @@ replaySink note r file =
 -- robots as the world places them ('startRobotStates'), not none.
 resultSink :: String -> SimOptions -> WorldTemplate -> FilePath -> IO Sink
 resultSink prog opts world file = do
-  ref <- newIORef (startTallies (WorldState 0 (startRobotStates world) [] []))
+  ref <- newIORef (startTallies (startRobotStates world))
   let step n s = do
         old <- readIORef ref
-        writeIORef ref $! if n == 0 then startTallies s else stepTallies (optDt opts) s old
+        writeIORef ref $! if n == 0 then startTallies (wsRobots s) else stepTallies (optDt opts) s old
       finish summary = do
         tallies <- readIORef ref
         attempt (show file) Nothing
