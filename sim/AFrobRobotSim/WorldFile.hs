@@ -28,7 +28,7 @@
 --
 -- * Limits, so that any file is read in time linear in its size: a line
 --   has at most 'maxLineLength' (4096) characters, a token at most
---   'maxTokenLength' (100); a file describes at most 'maxObjects' (10000)
+--   'maxTokenLength' (100); a file describes at most 'maxObjects' (100,000)
 --   objects, and 'readWorldFile' reads at most 'maxFileBytes' (16 MiB). A NUL character anywhere is an error (the file
 --   is probably not text). A file read with 'readWorldFile' or
 --   'readWorldBytes' must be valid UTF-8; the first invalid byte is
@@ -235,16 +235,15 @@ parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . textLines . 
       Left (Failure col msg) ->
         Left (file ++ ":" ++ show n ++ ":" ++ show col ++ ": " ++ msg)
 
--- | The most objects a world file may describe: 10000 (the notes' world
--- holds about 1100 balls, or 400 blocks, side by side). A world built in
--- code may hold more (the benchmarks' 10,000 robots and their obstacles
--- are about 18,000): @--dump-world@ prints it and warns that it does not
--- load back. (At 100,000, a file of 1.8 MB whose objects share grid cells
--- without overlapping took more than 400 s to check: the check of
--- overlaps compares the objects listed in a cell with one another.) The
--- @size@ line is not an object.
+-- | The most objects a world file may describe: 100,000 (the notes' world
+-- holds about 1100 balls, or 400 blocks, side by side; the benchmarks'
+-- 316 m world holds 10,000 robots and 7,939 obstacles, 1.2 MB as
+-- 'renderWorld' writes it). However
+-- many objects it has, a world whose objects crowd together is refused
+-- by 'AFrobRobotSim.World.maxClosePairs', which bounds the time its check
+-- takes. The @size@ line is not an object.
 maxObjects :: Int
-maxObjects = 10000
+maxObjects = 100000
 
 -- | The longest line accepted, in characters: 4096.
 maxLineLength :: Int
@@ -319,7 +318,7 @@ readWorldFile path = do
     Right (Just s) -> readWorldBytes path s
 
 -- | The longest file 'readWorldFile' reads, in bytes: 16 MiB ('renderWorld'
--- writes 'maxObjects' objects in less than 1.2 MB).
+-- writes 'maxObjects' objects in at most about 11 MB).
 maxFileBytes :: Int
 maxFileBytes = 16 * 1024 * 1024
 

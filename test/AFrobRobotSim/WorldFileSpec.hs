@@ -296,6 +296,26 @@ spec = do
                                  | i <- [1 .. maxObjects `div` 2] ])
       r <- forcedSoon (parseB pile)
       fmap (either (length . lines) (const 0)) r `shouldBe` Just (maxProblems + 1)
+    it "refuses 50,000 walls beside 50,000 balls in one square metre as too crowded, at the line that passes maxClosePairs" $ do
+      -- (with the limit at 100,000 objects and no bound on the pairs, such
+      -- a file of 1.8 MB took more than 400 s to check)
+      let crowd = BC.pack ("size 1000 1000\n" ++ concat (replicate 50000 "wall v at 0.5 0.5\nball at 0.75 0.5\n"))
+      r <- forcedSoon (parseB crowd)
+      fmap (either (take 1 . lines) (const [])) r
+        `shouldBe` Just [ "h.world:10002: vertical wall at (0.5, 0.5) (line 10002): too crowded: the objects up to "
+                          ++ "this one make 25005000 pairs that share a 1 m square (a robot and any object, a ball and "
+                          ++ "a wall or block), more than the " ++ show maxClosePairs ++ " that a world may have; the "
+                          ++ "check of overlaps and the physics compare such pairs one by one" ]
+    it "loads a file of maxObjects objects that lie apart: robots, blocks, balls and walls in a 1000 m world" $ do
+      let spot k = let (gx, gy) = k `divMod` 250 in (-490 + 9.8 * fromIntegral gx, -490 + 3.9 * fromIntegral gy) :: (Double, Double)
+          four k = let (x, y) = spot k
+                   in concat [ "simbotA ", show k, " at ", show x, " ", show y, " heading 0.5 rad\n"
+                             , "block at ", show (x + 1), " ", show y, "\n"
+                             , "ball at ", show (x + 2), " ", show y, "\n"
+                             , "wall v at ", show (x + 3), " ", show y, "\n" ]
+          file = BC.pack ("size 1000 1000\n" ++ concatMap four [0 .. maxObjects `div` 4 - 1])
+      r <- forcedSoon (parseB file)
+      fmap (either Left (Right . length)) r `shouldBe` Just (Right (maxObjects + 1))
     it "has no sizes to give: a size after an object is an error at its position" $
       parseB (BC.pack "block at 0 0 size -1")
         `shouldBe` Left "h.world:1:14: expected end of line or a comment after \"0\", found \"size\""

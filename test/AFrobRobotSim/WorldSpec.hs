@@ -13,7 +13,7 @@ import           Test.QuickCheck
 import           AFrob             (constant, ddVelDiff, mrFinalize)
 import           AFRP.Geometry
 import           AFrobRobotSim
-import           AFrobRobotSim.World (maxProblems, objectHalfSize, objectName, worldProblems)
+import           AFrobRobotSim.World (maxClosePairs, maxProblems, objectHalfSize, objectName, worldProblems)
 
 -- | The problems of a world ([] for a valid one).
 problems :: WorldTemplate -> [String]
@@ -101,6 +101,32 @@ spec = do
       let piles = OTSize 30 30 : replicate 5000 (OTBall (Point2 (-2) (-2))) ++ replicate 5000 (OTBlock (Point2 2 2))
       r <- timeout 30000000 (evaluate (length (problems piles)))
       r `shouldBe` Just 0
+    it "refuses objects crowding a square metre past maxClosePairs pairs, at the object that passes it; at the bound, accepts" $ do
+      -- k walls and k balls side by side (apart), alternately: after k of
+      -- each, k * k pairs of a ball and a wall; the next wall adds k more
+      let crowd k = OTSize 1000 1000 : concat (replicate k [OTVWall (Point2 0.5 0.5), OTBall (Point2 0.75 0.5)])
+          k0      = 5000
+      k0 * k0 `shouldBe` maxClosePairs
+      r <- timeout 30000000 (evaluate (problems (crowd k0 ++ [OTVWall (Point2 0.5 0.5)])))
+      r `shouldBe` Just [ "vertical wall at (0.5, 0.5): too crowded: the objects up to this one make "
+                          ++ show (k0 * k0 + k0) ++ " pairs that share a 1 m square (a robot and any object, "
+                          ++ "a ball and a wall or block), more than the 25000000 that a world may have; the "
+                          ++ "check of overlaps and the physics compare such pairs one by one" ]
+      r' <- timeout 30000000 (evaluate (problems (crowd k0)))
+      r' `shouldBe` Just []
+    it "reports the overlaps before a crowd, and checks the objects after it for all but overlaps" $ do
+      let crowd = concat (replicate 5001 [OTVWall (Point2 0.5 0.5), OTBall (Point2 0.75 0.5)])
+          w     = OTSize 1000 1000 : OTSimbotA 1 (Point2 3.5 3.5) 0 : OTSimbotA 2 (Point2 3.5 3.5) 0 : crowd
+                  ++ [OTSimbotA 3 (Point2 (-3) (-3)) 0, OTBlock (Point2 (-3) (-3)), OTBall (Point2 600 0)]
+      r <- timeout 30000000 (evaluate (problems w))
+      -- the two robots share one cell: one pair, so the crowd passes the
+      -- bound at the 5000th ball (5000 * 5000 + 1); the robot and the
+      -- block after it overlap, unreported; the ball far out is reported
+      fmap (map (takeWhile (/= ':'))) r
+        `shouldBe` Just [ "SimbotA 2 at (3.5, 3.5) overlaps SimbotA 1 at (3.5, 3.5)"
+                        , "ball at (0.75, 0.5)"
+                        , "ball at (600.0, 0.0)" ]
+      fmap (map ("make 25000001 pairs" `isInfixOf`)) r `shouldBe` Just [False, True, False]
   describe "validateWorld: the balls' discs no larger in all than the floor the robots leave" $ do
     let ball  = OTBall (Point2 0 0)
         robot = OTSimbotA 1 (Point2 3 3) 0

@@ -174,15 +174,16 @@ maxLogBytes :: Int
 maxLogBytes = 256 * 1024 * 1024
 
 -- | The longest line of a log that 'readLogFile' and 'foldLogFile' read,
--- in bytes: 32 MiB. A frame of 10,000 robots (the most a world holds) is
--- about 4 MB, the header of a world of 10,000 objects less; a line is
--- longer only when the robots print more than some 28 MB of messages in
--- one frame period. Reading a line takes up to some 33 times its length
--- in memory (a 30 MB string: 1 GB), so a longer one (a file that is no
--- log, a line without an end, such as @\/dev\/zero@'s) is refused, not
--- read.
+-- in bytes: 64 MiB. A frame of 10,000 robots is about 3.8 MB, and one of
+-- 100,000 robots (a world file's 'AFrobRobotSim.WorldFile.maxObjects',
+-- all robots) about 38 MB; the header of a world of as many objects is
+-- shorter. A line is longer only when the robots print more than some
+-- 26 MB of messages in one frame period, or a world built in code holds
+-- more robots. Reading a line takes up to some 33 times its length in
+-- memory (a 60 MB string: 2 GB), so a longer one (a file that is no log,
+-- a line without an end, such as @\/dev\/zero@'s) is refused, not read.
 maxLogLineBytes :: Int
-maxLogLineBytes = 32 * 1024 * 1024
+maxLogLineBytes = 64 * 1024 * 1024
 
 -- | 'readLogFile' reading at most the given number of bytes.
 readLogFileUpTo :: Int -> FilePath -> IO (Either String RunLog)

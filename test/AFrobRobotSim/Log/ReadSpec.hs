@@ -125,7 +125,7 @@ spec = do
   it "readLogFile says which file it cannot read and why, not which Haskell function failed" $ do
     r <- readLogFile "no-such-dir/run.jsonl"
     fmap (const ()) r `shouldBe` Left "no-such-dir/run.jsonl: cannot read it: does not exist (No such file or directory)"
-  it "foldLogFile gives the header, then each frame in order, and returns the summary; a line of more than 32 MiB is refused" $
+  it "foldLogFile gives the header, then each frame in order, and returns the summary; a line of more than 64 MiB is refused" $
     withTempDir $ \dir -> do
       let path = dir </> "run.jsonl"
       writeFile path fixtureLogText
@@ -135,7 +135,7 @@ spec = do
       -- a frame line just over the limit, after the header
       writeFile path (head (lines fixtureLogText) ++ "\n" ++ replicate (maxLogLineBytes + 1) ' ' ++ "\n")
       r' <- foldLogFile path (const (pure ())) (\_ _ -> pure ())
-      fmap (const ()) r' `shouldBe` Left (path ++ ":2: a line of more than 33554432 bytes, more than this reader takes"
+      fmap (const ()) r' `shouldBe` Left (path ++ ":2: a line of more than 67108864 bytes, more than this reader takes"
                                           ++ " (a frame of 10,000 robots is about 4 MB; is it a run log?)")
       -- and one at the limit is read (here: blank, so skipped)
       writeFile path (head (lines fixtureLogText) ++ "\n" ++ replicate maxLogLineBytes ' ' ++ "\n")
