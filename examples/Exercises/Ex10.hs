@@ -12,7 +12,10 @@
 -- swings) @v a sin (2 pi t / T)@, so its path is a wave of wavelength
 -- about @v T@ and amplitude about @v a T / (2 pi)@ (a little less:
 -- 'rcHeadingAux' is a proportional controller with gain 2, so the heading
--- lags the command and swings slightly less).
+-- lags the command and swings slightly less). For larger swings the
+-- forward progress is @v cos@ of the heading's offset, so a wave is
+-- shorter: the example's SimbotA (0.4 m/s, a swing of 1 rad, T = 8 s)
+-- advances about 2.5 m a period, not 3.2.
 module Exercises.Ex10
   ( rcSine
   , ex10World

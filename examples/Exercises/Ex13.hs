@@ -16,16 +16,21 @@
 -- Four modes, each ending with an event that carries what the next one
 -- needs (a snapshot taken at the switch), chained with 'switch':
 --
--- 1. /Seek/ ('approachFront'): drive straight ahead, on the heading the
---    robot had at the start, until the front range finder reads @d@; the
---    speed is capped by a braking profile so that it stops there.
+-- 1. /Seek/ ('seekWall'): drive straight ahead, on the heading the robot
+--    had at the start, until the front range finder reads @d@ (the speed
+--    is capped by a braking profile so that it stops there), a side one
+--    reads @d@ or less, or the robot is stuck: a wall met at a glancing
+--    angle is seen by a side ray, or touched, before the front ray reads
+--    @d@ (the seek used to watch the front alone, and such a robot pushed
+--    against the wall for the rest of the run).
 --
 -- 2. /Sweep/ ('sweepLeft'): turn in place through a full circle, watching
 --    the left range finder. Its smallest reading is where the left ray was
 --    perpendicular to the nearest wall; the sweep reports that heading and
 --    that reading. (A full circle, rather than stopping at the first
 --    minimum, makes it indifferent to the angle the wall was met at and to
---    corners: it always finds the nearest wall.)
+--    corners: it always finds the nearest wall, also when the seek ended
+--    with the robot touching it.)
 --
 -- 3. /Align/: turn back to that heading ('turnTo'); the wall is now on the
 --    left, parallel. If its distance is not @d@ (it is less when the wall
@@ -36,6 +41,7 @@
 --    ('rcMazeFollower'), which also takes the room's corners.
 module Exercises.Ex13
   ( rcRobustFollower
+  , seekWall
   , approachFront
   , sweepLeft
   , ex13World
@@ -52,7 +58,7 @@ import           Exercises.Ex12 (andThen, brakingSpeed, pose, rcMazeFollower, tu
 rcRobustFollower :: Velocity -> Distance -> SimbotController
 rcRobustFollower v d rps =
   (constant (mrFinalize ddBrake) &&& (arr pose >>> snap)) `andThen` \(_, h0) ->
-  approachFront v d h0 rps `andThen` \_ ->
+  seekWall v d h0 rps `andThen` \_ ->
   sweepLeft rps `andThen` \(h, r) ->
   turnTo h rps `andThen` \_ ->
   if abs (r - d) <= 0.03
@@ -75,6 +81,20 @@ approachFront v d h rps = proc sbi -> do
       he  = normalizeAngle (h - odometryHeading sbi)
   done <- iEdge False -< abs gap <= 0.01
   returnA -< (mrFinalize (ddVelTR v' (2 * he)), done `tag` pose sbi)
+
+-- | @seekWall v d h@, the seek mode: hold the heading @h@ and drive at up
+-- to @v@ until a wall is near: the front range finder reads @d@ (braking
+-- to a stop there, as 'approachFront'), a side one reads @d@ or less (a
+-- wall met at a glancing angle, which the front ray may never see before
+-- the robot's side touches it), or the robot is stuck against something
+-- (a corner or an obstacle that no ray sees); an event with the pose then.
+seekWall :: Velocity -> Distance -> Heading -> SimbotProperties
+         -> SF SimbotInput (SimbotOutput, Event (Position2, Heading))
+seekWall v d h rps = proc sbi -> do
+  (out, atFront) <- approachFront v d h rps -< sbi
+  atSide         <- iEdge False -< min (rfLeft sbi) (rfRight sbi) <= d
+  stuck          <- rsStuck -< sbi
+  returnA -< (out, atFront `lMerge` ((atSide `lMerge` stuck) `tag` pose sbi))
 
 -- What a sweep has seen so far: the heading at the previous sample, how
 -- far it has turned (radians), the smallest left reading so far and the

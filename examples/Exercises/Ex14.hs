@@ -44,6 +44,8 @@ module Exercises.Ex14
   , rcVelocityAux
   ) where
 
+import           Data.List     (sortOn)
+
 import           AFrob         hiding (forAll)
 import           AFrobRobotSim
 
@@ -87,8 +89,9 @@ braidVelocity b rps sbi = forward ^+^ pairTerms
   where
     p = odometryPosition sbi
     u = along b
+    -- (the tracker lists the robots in no particular order: nearest first)
     partners = [ vector2Polar d (odometryHeading sbi + a)
-               | (ty, _, a, d) <- aotOtherRobots sbi, ty == rpType rps ]
+               | (ty, _, a, d) <- sortOn (\(_, _, _, d') -> d') (aotOtherRobots sbi), ty == rpType rps ]
     (mid, pairTerms) = case partners of
       l : _ ->
         let gap      = norm l

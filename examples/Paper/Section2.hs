@@ -47,6 +47,7 @@ module Paper.Section2
     -- * 2.6 Discrete events and switching
   , sf
   , xspd
+  , sinAfresh
   , alarmSF
   , alarmCountSF
     -- * 2.7 Recursive signals
@@ -204,6 +205,16 @@ sf flag sfx sfy = proc i -> do
 xspd :: Speed -> SF SimbotInput Speed
 -- The notes' listing; its 'switch' was typeset with quotes for backquotes.
 xspd v = (constant v &&& rsStuck) `switch` \() -> constant 0
+
+-- | The notes' example of time beginning afresh in a signal function
+-- switched into: a sinusoid of the time, @sin t@, until the first
+-- 'rsStuck' event, and from that instant on a new one of the time since
+-- the event (0 at the event's own sample), whatever the time it came at.
+sinAfresh :: SF SimbotInput Double
+-- The notes' listing, its 'switch' typeset with quotes for backquotes.
+sinAfresh =
+  let sinSF = time >>> arr sin
+  in (sinSF &&& rsStuck) `switch` const sinSF
 
 -- | An event whenever the temperature ('tempSF') rises above 100 °C: at
 -- every sample where it is above 100 and was not at the previous one. No

@@ -48,8 +48,20 @@ spec = do
     let r = robotAt 0.25 (simulate 0.01 [OTSimbotA 1 (Point2 0 0) 0] (rcTurn 0.2) rcStop)
     robotHeading r `shouldSatisfy` (\h -> abs (h - 3.2 * 0.25) < 1e-6)
   it "rcA dispatches on the robot id" $ do
-    let s = robotAt 4 (simulate 0.01 [OTSimbotA 1 (Point2 0 0) 0, OTSimbotA 2 (Point2 0 2) 0] rcA rcStop)
-    posOf s `shouldBe` (0, 0)
+    -- 1 stops, 2 drives blind at half its top speed, 3 turns as fast as it can
+    let w  = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotA 2 (Point2 (-4) 2) 0, OTSimbotA 3 (Point2 0 (-2)) 0]
+        rs = wsRobots (simulate 0.01 w rcA rcStop !! 400)
+        r1 = head rs
+        r2 = rs !! 1
+        r3 = rs !! 2
+    map robotId rs `shouldBe` [1, 2, 3]
+    posOf r1 `shouldBe` (0, 0)
+    robotHeading r1 `shouldBe` 0
+    robotSpeed r2 `shouldSatisfy` (\v -> abs (v - 0.5) < 1e-9)
+    fst (posOf r2) `shouldSatisfy` (> -3)
+    -- (0.2 m/s at 3.2 rad/s: a circle of 6.25 cm radius)
+    posOf r3 `shouldSatisfy` (\(x, y) -> let e = sqrt (x * x + (y + 2) * (y + 2)) in e > 0.01 && e <= 0.13)
+    robotHeading r3 `shouldSatisfy` (/= 0)
   it "rcReverse backs off and says Ouch!! every time it gets stuck" $ do
     let run = take 4000 (simulate 0.01 [OTSimbotA 1 (Point2 0 0) 0, OTVWall (Point2 1.5 0), OTVWall (Point2 (-1.5) 0)]
                                   (rcReverse 0.5) rcStop)

@@ -222,6 +222,21 @@ spec = do
     it "goes round the whole maze, through every checkpoint in order (within 0.1 m)" $ do
       let v = visits robotB 0.1 checkpoints run
       v `shouldSatisfy` all (/= Nothing)
+    it "stops at distance d from the wall ahead before each inside-corner (right) turn" $ do
+      let run'   = runWorld dt 95 Ex12.mazeWorld (Ex12.rcMazeFollower 0.3 0.4) (probe (Ex12.rcMazeFollower 0.5 0.4))
+          fronts = map snd (probed "SimbotB.1" run')
+          hs     = map (robotHeading . robotB) run'
+          -- the samples of a right turn: the heading falling fast
+          turning = [ normalizeAngle (h' - h) < -0.5 * dt | (h, h') <- zip hs (drop 1 hs) ]
+          -- the front reading and speed at the first sample of each
+          starts = [ (f, robotSpeed (robotB w)) | (f, w, (wasTurning, isTurning)) <- zip3 fronts run' (zip (False : turning) turning)
+                                                , isTurning, not wasTurning ]
+      -- the lap's seven inside corners, each met with the front 1 cm from
+      -- d, slowed from 0.5 m/s to under 0.1 (the last of the braking: the
+      -- translational inertia stops it within 0.15 s and 6 mm)
+      length starts `shouldBe` 7
+      map fst starts `shouldSatisfy` all (near 0.01 0.4)
+      map snd starts `shouldSatisfy` all (< 0.1)
     it "keeps its distance from the walls on the straights" $ do
       -- on the west wall, the north wall and the east wall the centre stays
       -- 0.65 m from the wall face (2 cm)
@@ -253,6 +268,16 @@ spec = do
       check "SimbotA.1"
     it "never gets stuck" $
       run `shouldSatisfy` all (not . any robotStuck . wsRobots)
+    it "finds and follows a wall met at a glancing angle, or in a corner, never stuck (the seek watched the front alone and pushed against it)" $
+      mapM_ (\(p, h) -> do
+               let w  = [ o | o <- Ex13.ex13World, case o of { OTSimbotA {} -> False; OTSimbotB {} -> False; _ -> True } ] ++ [OTSimbotA 1 p h]
+                   r  = runWorld dt 80 w (Ex13.rcRobustFollower 0.3 d) (Ex13.rcRobustFollower 0.5 d)
+                   -- the centre 0.65 m from a wall face: 3.3 m from the middle, across or along
+                   onWall ws = let (x, y) = xy (robotA ws) in near 0.02 3.3 (abs x) || near 0.02 3.3 (abs y)
+               (p, h, length (filter (any robotStuck . wsRobots) r)) `shouldBe` (p, h, 0)
+               -- following a wall for the last 20 s
+               (p, h, all onWall (drop (round (60 / dt)) r)) `shouldBe` (p, h, True))
+        [(Point2 (-2) 3.3, 0.3), (Point2 (-2) 3.3, 0.08), (Point2 (-2) (-3), 1.85)]
     it "goes on round the room" $ do
       -- the SimbotB follows the east wall south, then the south wall west
       let b = robotB (at dt 30 run)

@@ -81,6 +81,11 @@ spec = do
                 (stuckIns [False, True, True, False, False])
         `shouldApproxList` [0, -1, -1, 1.5, 2.0]
 
+  describe "sinAfresh (time begins afresh at a switch)" $
+    it "is sin t until the first stuck event, then sin of the time since it: 0 at the event's sample" $
+      -- (the samples every 0.5 s; stuck from the third, at t = 1)
+      runDt 0.5 sinAfresh (stuckIns [False, False, True, True, False, True])
+        `shouldBe` [sin 0, sin 0.5, sin 0, sin 0.5, sin 1, sin 1.5]
   describe "xspd" $ do
     it "switches to 0 at the first stuck event, for good (fixed)" $
       runDt 0.5 (xspd 0.5) (stuckIns [False, False, True, True, False, True])
