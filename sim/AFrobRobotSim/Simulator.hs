@@ -116,7 +116,11 @@ data SimConfig = SimConfig
   , simBallRule       :: Time -> [Position2] -> Maybe [Position2]
     -- ^ a referee: after each step, given the time and the balls' new
     -- positions, 'Just' new positions puts the balls there, at rest (for
-    -- example the centre mark after a goal); 'Nothing' leaves them be
+    -- example the centre mark after a goal); 'Nothing' leaves them be.
+    -- It must give one position for each ball, in the same order, each
+    -- where the ball lies inside the world; otherwise the run stops there
+    -- with an error that says so. (Whether a ball so placed overlaps a
+    -- wall, block or robot is not checked.)
   , simParallel       :: !Bool
     -- ^ whether a step may use the program's other capabilities (see
     -- "Every core" above): 'True' (the default) computes it in parallel
@@ -129,6 +133,28 @@ data SimConfig = SimConfig
     -- that capability instead of sharing the workers with the others.
     -- (The runtime's collections still stop every capability.)
   }
+
+-- The balls' positions that a referee ('simBallRule') gave at a time,
+-- checked: as many as there are balls, each a finite point where its disc
+-- lies inside the world; otherwise an error that says what the rule did
+-- (a NaN or a ball beyond the walls was carried on into every later step,
+-- and a missing ball was silently lost).
+refereed :: Bounds -> Time -> Int -> [Position2] -> [Position2]
+refereed (Bounds x0 y0 x1 y1) t n ps
+  | k /= n = bad ("gave " ++ show k ++ " position" ++ plural k ++ " for " ++ show n ++ " ball" ++ plural n
+                  ++ " (it must give one for each)")
+  | (i, Point2 x y) : _ <- outside =
+      bad ("put ball " ++ show (i :: Int) ++ " (in the list's order) at (" ++ show x ++ ", " ++ show y
+           ++ "), not a point where it lies inside the world [" ++ show x0 ++ ", " ++ show x1 ++ "] x ["
+           ++ show y0 ++ ", " ++ show y1 ++ "]")
+  | otherwise = ps
+  where
+    k = length ps
+    r = ballDiameter / 2
+    outside = [ ip | ip@(_, Point2 x y) <- zip [1 ..] ps
+                   , not (x - r >= x0 && x + r <= x1 && y - r >= y0 && y + r <= y1) ]
+    plural m = if m == 1 then "" else "s"
+    bad what = error (printf "AFrobRobotSim.simulate: the ball rule (simBallRule) at t = %.3f s %s" t what)
 
 -- | The longest time step 'simulate' takes: 10^6 s (about 11 days). The
 -- motion's arithmetic stays finite far beyond (a robot's turn overflows
@@ -248,6 +274,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
     | otherwise -> run engine0
   where
     dt = simDt cfg
+    bounds = worldBoundsOr (simBounds cfg) world
     arena = arenaOf (simBounds cfg) world
     robots0 = startRobots world
     agents0 = [ AgentNew props ((if rKind r == SimbotA then rcA else rcB) props)
@@ -293,7 +320,7 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
         moved   = stepBalls dt arena robots' (enBalls en)
         balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
           Nothing -> moved
-          Just ps -> [ Ball q zeroVector | q <- ps ]
+          Just ps -> [ Ball q zeroVector | q <- refereed bounds (t + dt) (length moved) ps ]
         (odo', rng') = nextOdometry (enRng en) (enRobots en) robots' (enOdo en)
         -- keys' is forced too: left lazy, it would hold the previous
         -- engine (and so the whole run) when no controller reads its input

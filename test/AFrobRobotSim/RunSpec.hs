@@ -990,6 +990,26 @@ spec = do
                                           (Just world) drive drive)
       r `shouldBe` Left (ExitFailure 2)
       err `shouldSatisfy` (("run.svg\": its folder, " ++ show (dir </> "afile") ++ ", is not a folder") `isInfixOf`)
+    it "an --svg named as a folder (foo/.., with --out foo; x/), before the run (it failed after it)" $ withTempDir $ \dir -> do
+      let o = (quick (dir </> "foo")) { optSvg = Just (dir </> "foo" </> "..") }
+      (out, err, r) <- captured (runSimWith o (Just world) drive drive)
+      (r, out) `shouldBe` (Left (ExitFailure 2), "")
+      err `shouldSatisfy` ((show (dir </> "foo" </> "..") ++ " names a folder, not a file") `isInfixOf`)
+      doesPathExist (dir </> "foo") `shouldReturn` False
+      refused (\d -> (quick (d </> "f")) { optFrames = False, optSvg = Just (d </> "x/") })
+              ("/x/\" names a folder, not a file" `isInfixOf`)
+    it "an existing folder given as --out and as --svg: one message, not two (it was also \"is a folder\")" $ withTempDir $ \dir -> do
+      createDirectory (dir </> "o")
+      (out, err, r) <- captured (runSimWith (quick (dir </> "o")) { optSvg = Just (dir </> "o") } (Just world) drive drive)
+      (r, out) `shouldBe` (Left (ExitFailure 2), "")
+      lines err `shouldBe` [ "afrp-spec: cannot run:"
+                           , "  --svg " ++ show (dir </> "o") ++ " is the output folder (--out " ++ show (dir </> "o")
+                             ++ "), where the run writes the frames: choose another name" ]
+    it "a --result or --log in the kernel's /proc or /sys, before the run (it failed after it, saying \"does not exist\")" $ do
+      refused (\d -> (quick (d </> "f")) { optFrames = False, optResult = Just "/proc/version" })
+              ("--result \"/proc/version\": a file of the kernel's /proc or /sys, which takes no output" `isInfixOf`)
+      refused (\d -> (quick (d </> "f")) { optFrames = False, optLog = Just "/proc/new.jsonl" })
+              ("--log \"/proc/new.jsonl\": no file can be made there" `isInfixOf`)
     it "an --out that is a file, said so (not \"already exists\"), the file left as it was" $ withTempDir $ \dir -> do
       writeFile (dir </> "afile") "mine"
       (out, err, r) <- captured (runSimWith (quick (dir </> "afile")) (Just world) drive drive)

@@ -216,6 +216,25 @@ spec = do
                                       idle (driveAt 2 2))
       maximum [ max x y | s <- corner, Point2 x y <- wsBalls s ] `shouldSatisfy` (<= 5 - 0.15 + 1e-6)
 
+    it "are put where a referee (simBallRule) says, at rest; a rule that loses a ball, or puts one outside the world, stops the run saying so" $ do
+      let w       = [OTBall (Point2 1 0), OTBall (Point2 (-1) 0), OTSimbotA 1 (Point2 0 3) 0]
+          withRule rule = take 20 (simulateWith defaultSimConfig { simDt = 0.1, simBallRule = rule } w idle idle)
+          -- from t = 1 the balls go to (2, 2) and (-2, -2)
+          moveAt1 t _ = if t >= 0.95 then Just [Point2 2 2, Point2 (-2) (-2)] else Nothing
+          failsWith rule msg = do
+            r <- try (evaluate (length (show (map wsBalls (withRule rule)))))
+            case r of
+              Left (ErrorCall m) -> m `shouldSatisfy` (msg `isInfixOf`)
+              Right _            -> expectationFailure "the run went on"
+      map wsBalls (withRule moveAt1) !! 10 `shouldBe` [Point2 2 2, Point2 (-2) (-2)]
+      map wsBalls (withRule moveAt1) !! 9 `shouldBe` [Point2 1 0, Point2 (-1) 0]
+      failsWith (\t _ -> if t >= 0.95 then Just [Point2 0 0] else Nothing)
+                "the ball rule (simBallRule) at t = 1.000 s gave 1 position for 2 balls (it must give one for each)"
+      failsWith (\_ _ -> Just [Point2 0 0, Point2 (0 / 0) 1])
+                "the ball rule (simBallRule) at t = 0.100 s put ball 2 (in the list's order) at (NaN, 1.0), not a point where it lies inside the world [-5.0, 5.0] x [-5.0, 5.0]"
+      failsWith (\_ _ -> Just [Point2 4.9 0, Point2 0 0])
+                "put ball 1 (in the list's order) at (4.9, 0.0), not a point where it lies inside the world"
+
   describe "battery" $
     it "goes low and then critical on a long run at full effort" $ do
       let run = simulate 0.1 [OTSimbotA 1 (Point2 0 0) 0] (\_ -> constant (mrFinalize (ddVelTR 0 4))) idle

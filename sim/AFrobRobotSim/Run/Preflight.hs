@@ -1,3 +1,4 @@
+{-# LANGUAGE CPP                 #-}
 {-# LANGUAGE MultiWayIf          #-}
 {-# LANGUAGE ScopedTypeVariables #-}
 -- |
@@ -8,6 +9,8 @@
 -- 'AFrobRobotSim.runSim' simulates only when 'preflight' finds nothing
 -- wrong: the options together ('validateOptionsIn'), every output's folder
 -- (it exists and may be written; through a symbolic link, the target's),
+-- an output named as a folder (@x\/@, @foo\/..@), an output in the
+-- kernel's @\/proc@ or @\/sys@ that is no link, device or pipe,
 -- two outputs that are one file under two names (a path, a link, a hard
 -- link), an output named as the output folder that the run makes, an
 -- output that is the world file or that a frame would replace (a name
@@ -27,6 +30,10 @@ import           System.Directory          (createDirectory, doesDirectoryExist,
                                             pathIsSymbolicLink, removeFile, writable)
 import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, takeFileName, (</>))
 import           System.IO                 (hClose, hPutStr, openTempFile)
+#if !defined(mingw32_HOST_OS)
+import           System.Posix.Files        (FileStatus, getFileStatus, getSymbolicLinkStatus, isCharacterDevice,
+                                            isNamedPipe, isSocket, isSymbolicLink)
+#endif
 
 import           AFrobRobotSim.Console     (ioErrorText)
 import           AFrobRobotSim.Options
@@ -70,16 +77,28 @@ preflight bounds opts = do
   let checkIn flag f dir
         | folder dir == out && inOut = pure []
         | otherwise                  = folderWritable flag f dir
+  -- the outputs named as the output folder that the run makes (said as
+  -- such below, and not also as a folder)
+  let asOut = [ (flag, f) | inOut, (flag, f, (c, _)) <- canon, folder c == folder outCanon ]
   fileErrs <- forM targets $ \(flag, f, t) -> do
     isDir <- doesDirectoryExist f
-    dirErr <- checkIn flag f (takeDirectory f)
-    linkErr <- case t of
-      _ | isDir              -> pure []
-      Nothing                -> pure [ flag ++ " " ++ show f ++ ": a loop of symbolic links (or a chain of more than 40)" ]
-      Just target
-        | target /= f        -> checkIn flag f (takeDirectory target)
-        | otherwise          -> pure []
-    pure ([ flag ++ " " ++ show f ++ " is a folder" | isDir ] ++ dirErr ++ linkErr)
+    kernel <- kernelFile f
+    if | isDir && (flag, f) `elem` asOut -> pure []
+       | isDir -> pure [ flag ++ " " ++ show f ++ " is a folder" ]
+       -- (foo/.. with --out foo is a folder only once the run has made
+       -- foo: it failed after the run)
+       | namesFolder f -> pure [ flag ++ " " ++ show f ++ " names a folder, not a file" ]
+       | Just what <- kernel ->
+           pure [ flag ++ " " ++ show f ++ ": " ++ what ++ " (to write to a terminal or a pipe, name"
+                  ++ " /dev/stdout or /proc/self/fd/N)" ]
+       | otherwise -> do
+           dirErr <- checkIn flag f (takeDirectory f)
+           linkErr <- case t of
+             Nothing -> pure [ flag ++ " " ++ show f ++ ": a loop of symbolic links (or a chain of more than 40)" ]
+             Just target
+               | target /= f -> checkIn flag f (takeDirectory target)
+               | otherwise   -> pure []
+           pure (dirErr ++ linkErr)
   let pre = validateOptionsIn bounds opts
             ++ [ "--video needs the frames (add --frames)" | optVideo opts /= Nothing, not (optFrames opts) ]
             ++ [ "--video needs ffmpeg on the PATH (on Debian: apt-get install ffmpeg)"
@@ -92,7 +111,7 @@ preflight bounds opts = do
             ++ [ flag ++ " " ++ show f ++ " is the output folder (--out " ++ show (optOut opts)
                  ++ "), where the run writes " ++ (if optFrames opts then "the frames" else "its files")
                  ++ ": choose another name"
-               | inOut, (flag, f, (c, _)) <- canon, folder c == folder outCanon ]
+               | (flag, f) <- asOut ]
             ++ [ flag ++ " " ++ show f ++ " would overwrite the world file " ++ show w
                | (w, cw) <- world, (flag, f, c) <- canon, sameFile c cw ]
             ++ [ what ++ " " ++ show f ++ " would be overwritten by a frame: --frames writes "
@@ -106,6 +125,27 @@ preflight bounds opts = do
   pure (errs, ffmpeg)
   where
     device f = any (`isPrefixOf` normalise f) ["/dev/", "/proc/"]
+    -- a path whose last part is . or .., or that ends in a slash
+    namesFolder f = takeFileName f `elem` ["", ".", ".."]
+    -- A path under /proc or /sys that is not a link, a terminal or other
+    -- device, a pipe or a socket: the kernel's files and folders, where
+    -- no new file can be made and a write fails (/proc/version: after the
+    -- run, with \"does not exist\"); what it is, in words.
+    kernelFile :: FilePath -> IO (Maybe String)
+#if defined(mingw32_HOST_OS)
+    kernelFile _ = pure Nothing
+#else
+    kernelFile f
+      | not (any (`isPrefixOf` normalise f) ["/proc/", "/sys/"]) = pure Nothing
+      | otherwise = do
+          l  <- try (getSymbolicLinkStatus f) :: IO (Either IOException FileStatus)
+          st <- try (getFileStatus f)         :: IO (Either IOException FileStatus)
+          pure $ case (l, st) of
+            (Right ls, _) | isSymbolicLink ls -> Nothing
+            (_, Right s') | isCharacterDevice s' || isNamedPipe s' || isSocket s' -> Nothing
+            (_, Left _) -> Just "no file can be made there: /proc and /sys hold the kernel's own"
+            _           -> Just "a file of the kernel's /proc or /sys, which takes no output"
+#endif
     fileKey f = (,) <$> canonicalPath f <*> fileIdentity f
     sameFile (c1, i1) (c2, i2) = c1 == c2 || (isJust i1 && i1 == i2)
     -- a folder as one name (--out x/ and --out ./x are the folder x, which
