@@ -23,7 +23,10 @@
 -- 4. Balls that now overlap and approach each other collide elastically
 --    (equal masses: the normal components of their velocities are
 --    exchanged) and are pushed apart, pair by pair in the order (0, 1),
---    (0, 2), ..., (1, 2), ... Each push is swept, as a robot's is, and
+--    (0, 2), ..., (1, 2), ... (two balls on the very same spot are
+--    parted along a direction set by the later one's number,
+--    'ballPairPenetration', so that a pile laid on one spot spreads over
+--    the floor). Each push is swept, as a robot's is, and
 --    stops at a wall, block or robot: a ball pressed against a wall or a
 --    robot by another stays there, overlapping it, instead of being
 --    pushed into the wall (or, in a pile, out of the world) or into the
@@ -42,6 +45,7 @@ module AFrobRobotSim.Balls
     -- * Stepping
   , stepBalls
   , ballIndex
+  , ballPairPenetration
     -- * Parameters
   , ballFriction
   , ballRestitution
@@ -206,6 +210,21 @@ better h1@(Hit s1 k1 _ _) h2@(Hit s2 k2 _ _)
   | s2 < s1 || (s1 == s2 && k2 < k1) = h2
   | otherwise                        = h1   -- the same box, seen from two cells
 
+-- | @ballPairPenetration j p q@: how deep two balls centred at @p@ and @q@
+-- overlap, the second of them number @j@ in the list's order, and the
+-- unit normal from @q@ towards @p@ ('circleCirclePenetration'); except that two balls
+-- on the very same spot, which have no line of centres, are parted along
+-- the direction at @j@ times the golden angle (about 137.5 degrees), not
+-- always along x: a pile of balls laid on one spot spreads over the floor,
+-- where it used to spread along a line.
+ballPairPenetration :: Int -> Point2 Double -> Point2 Double -> Maybe (Double, Vector2 Double)
+ballPairPenetration j p q = case circleCirclePenetration p ballRadius q ballRadius of
+  Just (depth, _) | p == q -> let a = goldenAngle * fromIntegral j in Just (depth, Vector2 (cos a) (sin a))
+  other                    -> other
+  where
+    goldenAngle = pi * (3 - sqrt 5)
+{-# INLINE ballPairPenetration #-}
+
 -- Equal-mass elastic collisions between overlapping, approaching balls,
 -- pair by pair in the order (0, 1), (0, 2), ..., (1, 2), ...: for each
 -- ball, the next ball after the last one it met that overlaps it where
@@ -243,7 +262,7 @@ resolvePairs arena robots near bs0 = runST $ do
         (next, rest) <- firstOverlap bi (cdJs cur)
         if next == maxBound then pure () else do
           bj <- unsafeReadSTArray arr next
-          case circleCirclePenetration (bPos bi) ballRadius (bPos bj) ballRadius of
+          case ballPairPenetration next (bPos bi) (bPos bj) of
             Nothing -> pure ()
             Just (depth, nrm) -> do
               pi' <- readD pushed i

@@ -61,7 +61,7 @@ refResolvePairs arena robots bs0 = foldl resolve bs0 [ (i, j) | i <- [0 .. n - 1
     resolve bs (i, j) =
       let bi = bs !! i
           bj = bs !! j
-      in case circleCirclePenetration (bPos bi) ballRadius' (bPos bj) ballRadius' of
+      in case ballPairPenetration j (bPos bi) (bPos bj) of
            Nothing -> bs
            Just (depth, nrm) ->
              let relN = (bVel bi ^-^ bVel bj) `dot` nrm
@@ -175,6 +175,15 @@ spec = do
               arena = arenaFor (World notesBounds [])
               steps f = take 4 (iterate (f 0.01 arena []) bs)
           in steps stepBalls === steps refStepBalls
+    it "spreads a pile laid on one spot over the floor, not along a line (it spread along x alone)" $ do
+      let arena = arenaFor (World notesBounds [])
+          pile  = replicate 40 (Ball (Point2 0 0) zeroVector)
+          after = iterate (stepBalls 0.01 arena []) pile !! 100
+          spread f = maximum (map f after) - minimum (map f after)
+      spread (\b -> let Point2 x _ = bPos b in x) `shouldSatisfy` (> 1)
+      spread (\b -> let Point2 _ y = bPos b in y) `shouldSatisfy` (> 1)
+      -- and no two left on one spot
+      length [ () | (i, a) <- zip [0 :: Int ..] after, (j, b) <- zip [0 ..] after, i < j, bPos a == bPos b ] `shouldBe` 0
     it "never pushes a ball into a wall: two overlapping balls against the boundary stay inside" $ do
       -- (a pushed ball went 0.07 m into the boundary, and three stacked
       -- ones out of the world)
