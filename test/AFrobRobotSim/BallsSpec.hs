@@ -178,12 +178,12 @@ spec = do
     it "spreads a pile laid on one spot over the floor, not along a line (it spread along x alone)" $ do
       let arena = arenaFor (World notesBounds [])
           pile  = replicate 40 (Ball (Point2 0 0) zeroVector)
-          after = iterate (stepBalls 0.01 arena []) pile !! 100
-          spread f = maximum (map f after) - minimum (map f after)
+          settled = iterate (stepBalls 0.01 arena []) pile !! 100
+          spread f = maximum (map f settled) - minimum (map f settled)
       spread (\b -> let Point2 x _ = bPos b in x) `shouldSatisfy` (> 1)
       spread (\b -> let Point2 _ y = bPos b in y) `shouldSatisfy` (> 1)
       -- and no two left on one spot
-      length [ () | (i, a) <- zip [0 :: Int ..] after, (j, b) <- zip [0 ..] after, i < j, bPos a == bPos b ] `shouldBe` 0
+      length [ () | (i, a) <- zip [0 :: Int ..] settled, (j, b) <- zip [0 ..] settled, i < j, bPos a == bPos b ] `shouldBe` 0
     it "never pushes a ball into a wall: two overlapping balls against the boundary stay inside" $ do
       -- (a pushed ball went 0.07 m into the boundary, and three stacked
       -- ones out of the world)
