@@ -44,7 +44,7 @@ module AFrobRobotSim.Sweep
 import           Control.Exception   (IOException, throwIO, try)
 import           Control.Monad       (foldM, when)
 import           Data.List           (intercalate, isPrefixOf, tails)
-import           System.Environment  (getArgs)
+import           System.Environment  (getArgs, getProgName)
 import           System.Exit         (exitWith, ExitCode (..))
 import           System.IO           (Handle, IOMode (ReadMode), hClose, hIsTerminalDevice,
                                       hSetBinaryMode, openBinaryFile, stdin)
@@ -97,7 +97,8 @@ mergeHandle name h m0 = newLineReader h maxBound maxLineBytes >>= \src -> go src
 -- print the table of the result files, read in the order given, or of
 -- standard input when none is given (refused when standard input is a
 -- terminal). Exit code 0 with the table; otherwise nothing on standard
--- output, a message on standard error, and
+-- output, a message on standard error signed with the name the program
+-- was run by (@sweep-merge:@ when run by the script), and
 --
 -- * 1 when the lines are not a sweep's results: no result line at all
 --   (@no result lines in FILE, ...@), a line that is not UTF-8
@@ -115,6 +116,18 @@ mergeHandle name h m0 = newLineReader h maxBound maxLineBytes >>= \src -> go src
 sweepMergeMain :: IO ()
 sweepMergeMain = do
   tolerantOutput
+  -- (the name it was called by signs its messages: scripts/sweep-merge
+  -- runs it as sweep-merge)
+  prog <- getProgName
+  let usage = "usage: " ++ prog ++ " RESULTS...   (the result lines of a sweep; standard input when none is given)"
+      stop (Fault code msg) = endOutput prog >> putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure code)
+      -- (a file by its path, standard input by that name)
+      readAll path h m = do
+        r <- try (mergeHandle (displayPath path) h m)
+        case r of
+          Left e                -> stop (Fault 2 (cannotRead path (e :: IOException)))
+          Right (Left fault)    -> stop fault
+          Right (Right merged') -> pure merged'
   args <- getArgs
   when (any (`elem` ["-h", "--help"]) args) $ do
     putStrLn usage
@@ -137,17 +150,6 @@ sweepMergeMain = do
   case renderMerge merged of
     Right out -> putStr out >> endOutput prog
     Left _    -> stop (Fault 1 ("no result lines in " ++ (if null args then "standard input" else intercalate ", " (map displayPath args))))
-  where
-    prog = "afrp-sweep-merge"
-    usage = "usage: afrp-sweep-merge RESULTS...   (the result lines of a sweep; standard input when none is given)"
-    stop (Fault code msg) = endOutput prog >> putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure code)
-    -- (a file by its path, standard input by that name)
-    readAll path h m = do
-      r <- try (mergeHandle (displayPath path) h m)
-      case r of
-        Left e                -> stop (Fault 2 (cannotRead path (e :: IOException)))
-        Right (Left fault)    -> stop fault
-        Right (Right merged') -> pure merged'
 
 -- The first file given twice, as a fault.
 sameFiles :: [FilePath] -> IO (Maybe Fault)

@@ -18,7 +18,7 @@ import           Data.Word           (Word8)
 import           System.Directory    (canonicalizePath, copyFile, createDirectory, createDirectoryIfMissing, createFileLink, doesFileExist, findExecutable,
                                       getPermissions, listDirectory, makeAbsolute, setOwnerExecutable,
                                       setPermissions)
-import           System.Environment  (getArgs, getEnvironment, getExecutablePath)
+import           System.Environment  (getArgs, getEnvironment, getExecutablePath, withProgName)
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     ((</>))
 import           System.IO           (hGetContents, readFile')
@@ -45,7 +45,7 @@ childVariable = "AFRP_SPEC_SWEEP_CHILD"
 -- (default 0.1) and whose controller throws from @--param failAt=T@ on;
 -- @merge@ is @afrp-sweep-merge@.
 child :: String -> IO ()
-child "merge" = sweepMergeMain
+child "merge" = withProgName "afrp-sweep-merge" sweepMergeMain   -- (signed as the executable is)
 child "program" = do
   args <- getArgs
   speed  <- paramOr "speed" (0.1 :: Double)
