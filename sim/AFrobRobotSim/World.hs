@@ -285,16 +285,20 @@ capProblems ps = case splitAt maxProblems ps of
     in shown ++ [ "... and " ++ (if k >= limit then "at least " else "") ++ show k
                   ++ " more problem" ++ (if k == 1 then "" else "s") ]
 
--- | The problems of a world whose objects carry a label (appended to their
--- names in messages, such as @" (line 3)"@), in the order of the objects,
--- each with the position in the list of the object it is reported at:
--- for a pair, the later one. The objects must lie inside the template's
+-- | The problems of a world whose objects carry a label (appended to the
+-- names of the other objects a message names, such as @" (line 3)"@; the
+-- object a problem is reported at is named without it), in the order of
+-- the objects, each with the position in the list of the object it is
+-- reported at: for a pair, the later one. The objects must lie inside the template's
 -- 'OTSize' if it has one that is valid, else inside the given bounds.
 worldProblems :: Bounds -> [(String, ObjectTemplate)] -> [(Int, String)]
 worldProblems bounds labelled = concatMap problemsOf indexed
   where
     indexed = zip [0 :: Int ..] labelled
     name (lbl, o) = objectName o ++ lbl
+    -- (the object a problem is reported at is known by its position: its
+    -- label would say it twice, as in w.world:3: ... (line 3): ...)
+    subject (_, o) = objectName o
     sizes = [ (i, lo) | (i, lo@(_, OTSize {})) <- indexed ]
     Bounds x0 y0 x1 y1 = case sizes of
       (_, (_, OTSize w h)) : _ | goodSide w && goodSide h -> sizeBounds w h
@@ -302,28 +306,28 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     goodSide v = isFinite v && v >= minWorldSide && v <= maxWorldSide
     problemsOf (i, lo@(_, OTSize w h)) = case sizes of
       (j, first) : _ | j < i ->
-        [(i, name lo ++ ": a world has one size, and it was given by " ++ name first)]
+        [(i, subject lo ++ ": a world has one size, and it was given by " ++ name first)]
       _ | not (isFinite w && isFinite h) ->
-            [(i, name lo ++ ": the width and height must be finite numbers")]
+            [(i, subject lo ++ ": the width and height must be finite numbers")]
         | not (goodSide w && goodSide h) ->
-            [(i, name lo ++ ": each side must be between " ++ show minWorldSide ++ " and "
+            [(i, subject lo ++ ": each side must be between " ++ show minWorldSide ++ " and "
                    ++ show maxWorldSide ++ " metres")]
         | otherwise -> []
     problemsOf (i, lo@(_, o))
       | not (all isFinite (coords o)) =
-          [(i, name lo ++ ": coordinates and heading must be finite numbers")]
+          [(i, subject lo ++ ": coordinates and heading must be finite numbers")]
       | not (insideWorld o) =
-          [(i, name lo ++ ": lies (partly) outside the world [" ++ show x0 ++ ", " ++ show x1
+          [(i, subject lo ++ ": lies (partly) outside the world [" ++ show x0 ++ ", " ++ show x1
                  ++ "] x [" ++ show y0 ++ ", " ++ show y1 ++ "]")]
       | otherwise =
-          [ (i, name lo ++ ": a robot id must be from -2^53 to 2^53 (a JSON reader, the replay page's among them, "
+          [ (i, subject lo ++ ": a robot id must be from -2^53 to 2^53 (a JSON reader, the replay page's among them, "
                   ++ "reads a larger one as a nearby number)")
           | Just _ <- [robotKindOf o], abs (toInteger (otRId o)) > maxRobotId ]
-          ++ [ (i, name lo ++ " has the same id as " ++ name (labelledAt j))
+          ++ [ (i, subject lo ++ " has the same id as " ++ name (labelledAt j))
           | Just k <- [robotKindOf o], Just j <- [M.lookup (k, otRId o) firstWithId], j < i ]
-          ++ (if beforeCrowd i then [ (i, name lo ++ " overlaps " ++ name (labelledAt j)) | j <- overlapsBefore i o ]
-                               else [ (i, name lo ++ ": " ++ crowdMessage w) | Just (j, w) <- [crowd], j == i ])
-          ++ [ (i, name lo ++ ": " ++ overfullMessage n) | Just (j, n) <- [overfull], j == i ]
+          ++ (if beforeCrowd i then [ (i, subject lo ++ " overlaps " ++ name (labelledAt j)) | j <- overlapsBefore i o ]
+                               else [ (i, subject lo ++ ": " ++ crowdMessage w) | Just (j, w) <- [crowd], j == i ])
+          ++ [ (i, subject lo ++ ": " ++ overfullMessage n) | Just (j, n) <- [overfull], j == i ]
     coords o = let Point2 x y = otPos o
                in x : y : maybe [] (const [otHdng o]) (robotKindOf o)
     isFinite v = not (isNaN v || isInfinite v)

@@ -287,7 +287,7 @@ checkLine l = case [ c | (c, ch) <- zip [1 ..] (take (maxLineLength + 1) l), ch 
 -- The file @block at 0 0@, @simbotA 1 at 0.1 0@ (two lines) gives
 --
 -- @
--- w.world:2: SimbotA 1 at (0.1, 0.0) (line 2) overlaps block at (0.0, 0.0) (line 1)
+-- w.world:2: SimbotA 1 at (0.1, 0.0) overlaps block at (0.0, 0.0) (line 1)
 -- @
 readWorldBytes :: FilePath -> B.ByteString -> Either String WorldTemplate
 readWorldBytes name bytes =

@@ -206,10 +206,10 @@ spec = do
       "size 20 20\nball at 0 0\n size 30 30\n" `failsWith` "w.world:3: the world's size is given twice (first on line 1)"
     it "defaults to the notes' 10 by 10: an object beyond 5 m is outside without a size, inside with one" $ do
       readWorldBytes "w.world" (BC.pack "ball at 7 0\n")
-        `shouldBe` Left "w.world:1: ball at (7.0, 0.0) (line 1): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"
+        `shouldBe` Left "w.world:1: ball at (7.0, 0.0): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"
       readWorldBytes "w.world" (BC.pack "ball at 7 0\nsize 20 20\n") `shouldBe` Right [OTBall (Point2 7 0), OTSize 20 20]
       readWorldBytes "w.world" (BC.pack "size 20 12\nball at 7 0\nsimbotA 1 at 0 5.9\n")
-        `shouldBe` Left "w.world:3: SimbotA 1 at (0.0, 5.9) (line 3): lies (partly) outside the world [-10.0, 10.0] x [-6.0, 6.0]"
+        `shouldBe` Left "w.world:3: SimbotA 1 at (0.0, 5.9): lies (partly) outside the world [-10.0, 10.0] x [-6.0, 6.0]"
     it "does not count the size line among the objects" $
       fmap length (parse (unlines ("size 200 200" : replicate maxObjects "ball at 0 0"))) `shouldBe` Right (maxObjects + 1)
     it "renders a size as a size line" $
@@ -274,14 +274,14 @@ spec = do
       parseB (BC.pack "block at 1e309 0") `shouldSatisfy` either ("h.world:1:10: " `isPrefixOf`) (const False)
     it "rejects objects overlapping at time 0, naming both and their lines" $ do
       parseB (BC.pack "# arena\nblock at 0 0\n\nsimbotA 1 at 0.1 0 heading 90 deg\n")
-        `shouldBe` Left "h.world:4: SimbotA 1 at (0.1, 0.0) (line 4) overlaps block at (0.0, 0.0) (line 2)"
+        `shouldBe` Left "h.world:4: SimbotA 1 at (0.1, 0.0) overlaps block at (0.0, 0.0) (line 2)"
       parseB (BC.pack "ball at 1 1\nwall v at 1.1 1\n")
-        `shouldBe` Left "h.world:2: vertical wall at (1.1, 1.0) (line 2) overlaps ball at (1.0, 1.0) (line 1)"
+        `shouldBe` Left "h.world:2: vertical wall at (1.1, 1.0) overlaps ball at (1.0, 1.0) (line 1)"
     it "reports objects outside the world and duplicate ids with their lines" $
       parseB (BC.pack "simbotA 1 at 0 0\nball at 4.9 0\nsimbotA 1 at 2 2\n")
         `shouldBe` Left (intercalate "\n"
-          [ "h.world:2: ball at (4.9, 0.0) (line 2): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"
-          , "h.world:3: SimbotA 1 at (2.0, 2.0) (line 3) has the same id as SimbotA 1 at (0.0, 0.0) (line 1)" ])
+          [ "h.world:2: ball at (4.9, 0.0): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"
+          , "h.world:3: SimbotA 1 at (2.0, 2.0) has the same id as SimbotA 1 at (0.0, 0.0) (line 1)" ])
     it "gives 300 overlapping robots a short message, with a count of the rest" $ do
       let pile = BC.pack (concat [ "simbotB " ++ show i ++ " at 1 1\n" | i <- [1 .. 300 :: Int] ])
       r <- forcedSoon (parseB pile)
@@ -302,7 +302,7 @@ spec = do
       let crowd = BC.pack ("size 1000 1000\n" ++ concat (replicate 50000 "wall v at 0.5 0.5\nball at 0.75 0.5\n"))
       r <- forcedSoon (parseB crowd)
       fmap (either (take 1 . lines) (const [])) r
-        `shouldBe` Just [ "h.world:10002: vertical wall at (0.5, 0.5) (line 10002): too crowded: the objects up to "
+        `shouldBe` Just [ "h.world:10002: vertical wall at (0.5, 0.5): too crowded: the objects up to "
                           ++ "this one make 25005000 pairs that share a 1 m square (a robot and any object, a ball and "
                           ++ "a wall or block), more than the " ++ show maxClosePairs ++ " that a world may have; the "
                           ++ "check of overlaps and the physics compare such pairs one by one" ]
