@@ -181,13 +181,16 @@ replayChunkChars = 64 * 1024 * 1024
 replayMaxFrames :: Int
 replayMaxFrames = 9000
 
--- | The most robot-frames (robots times frames) a run's page holds: 2.5
--- million, about 1 GB of page (some 420 bytes each). Chromium (Debian's
--- 156) opened the page of 10,000 robots for 10 s (2.5 million, 1.06 GB)
--- in 25-33 s; the page of their 30 s (7.5 million, 3.2 GB) crashed it.
--- See 'replayFrameStep'.
+-- | The most robot-frames (robots times frames) a run's page holds: 1.25
+-- million, about 0.5 to 1 GB of page: some 420 bytes each, and up to some
+-- 840 in a crowded world, where each robot's tracker sees many others.
+-- Chromium (Debian's 156) opened the page of 10,000 robots for 10 s (2.5
+-- million robot-frames, 1.06 GB) in 25-33 s, and crashed on their 30 s
+-- (7.5 million, 3.2 GB); the page of 2,500 robots 2 m apart for 40 s (2.5
+-- million, 2.1 GB) took 161 s and 3.7 GB of script memory to open, so the
+-- bound, which was 2.5 million, is now half that. See 'replayFrameStep'.
 replayMaxRobotFrames :: Int
-replayMaxRobotFrames = 2500000
+replayMaxRobotFrames = 1250000
 
 -- | @replayFrameStep seconds fps robots@: the page of a run of that many
 -- simulated seconds, frames a second and robots keeps one frame period
@@ -199,7 +202,7 @@ replayMaxRobotFrames = 2500000
 --
 -- > replayFrameStep 30 25 6      == 1   -- the default world
 -- > replayFrameStep 400 25 6     == 2   -- 10,000 periods
--- > replayFrameStep 30 25 10000  == 3   -- 7.5 million robot-frames
+-- > replayFrameStep 30 25 10000  == 6   -- 7.5 million robot-frames
 replayFrameStep :: Double -> Double -> Int -> Int
 replayFrameStep seconds fps robots = maximum [1, over replayMaxFrames 1, over replayMaxRobotFrames (max 1 robots)]
   where

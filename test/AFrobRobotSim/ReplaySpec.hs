@@ -118,11 +118,11 @@ spec = do
         written `shouldBe` replayPageChunked n fixtureLog
 
   describe "replayFrameStep (how many frame periods a page keeps one of)" $ do
-    it "keeps every frame up to 9000 frames and 2.5 million robot-frames, and thins evenly beyond (fixed)" $ do
+    it "keeps every frame up to 9000 frames and 1.25 million robot-frames, and thins evenly beyond (fixed)" $ do
       map (\(secs, robots) -> replayFrameStep secs 25 robots)
           [ (30, 6), (360, 6), (360.04, 6), (400, 6), (3600, 2)
-          , (10, 10000), (10.04, 10000), (30, 10000), (30, 1000), (100, 1000), (100.04, 1000) ]
-        `shouldBe` [1, 1, 2, 2, 10, 1, 2, 3, 1, 1, 2]
+          , (5, 10000), (5.04, 10000), (10, 10000), (30, 10000), (30, 1000), (50, 1000), (50.04, 1000) ]
+        `shouldBe` [1, 1, 2, 2, 10, 1, 2, 2, 6, 1, 1, 2]
     it "keeps every frame of a run of no time, and counts a world without robots as one robot (fixed)" $
       map (\(secs, robots) -> replayFrameStep secs 25 robots) [(0, 10000), (30, 0), (400, 0)] `shouldBe` [1, 1, 2]
     it "keeps within both limits with the fewest periods skipped" $

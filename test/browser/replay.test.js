@@ -259,6 +259,17 @@ run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open)
     await page.check('#follow');
     const again = await view();
     check(again.cx === rB0.x && again.cy === rB0.y, 'ticked again, the view centres on it (' + JSON.stringify(again) + ')');
+    // zoomed in from the whole world with +, paused, the view keeps it (it zoomed about the middle and lost it until
+    // the frame changed)
+    await page.evaluate(() => { const R = window.afrpReplay; R.setView(1, R.header.bounds.x, R.header.bounds.y); });
+    for (let i = 0; i < 4; i++) await page.keyboard.press('+');
+    const plussed = await view();
+    const seen = await page.evaluate(r => {
+      const c = document.getElementById('world'), p = window.afrpReplay.worldToCanvas(r.x, r.y);
+      return { p: p, middle: Math.abs(p[0] - c.width / 2) < 0.3 * c.width && Math.abs(p[1] - c.height / 2) < 0.3 * c.height };
+    }, rB0);
+    check(plussed.zoom > 4 && seen.middle,
+          'zoomed in with + while paused, the view keeps it in its middle part (' + JSON.stringify([plussed, seen.p]) + ')');
     // a drag away from it stops following: the next frames leave the dragged view be
     await page.mouse.move(inner[0] + 300, inner[1] + 300);
     await page.mouse.down();

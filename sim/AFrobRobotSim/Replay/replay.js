@@ -519,7 +519,10 @@
     if (dragged || lastKind !== 'mouse') { dragged = false; return; }
     select(eventPixel(e), 'mouse');
   });
-  function zoomMiddle(factor) { zoomAt(canvas.width / 2, canvas.height / 2, factor); draw(); }
+  // (a zoom with the buttons or keys keeps a followed robot in view, paused
+  // too: it used to wait for the frame to change; the wheel zooms about
+  // the pointer, where the user looks)
+  function zoomMiddle(factor) { zoomAt(canvas.width / 2, canvas.height / 2, factor); follow(frames[state.frame]); draw(); }
   function fit() { setView(1, b.x, b.y); draw(); }
   $('zoomin').addEventListener('click', function () { zoomMiddle(1.5); });
   $('zoomout').addEventListener('click', function () { zoomMiddle(1 / 1.5); });
@@ -533,7 +536,8 @@
     else if (e.key === '-') zoomMiddle(1 / 1.5);
     else if (e.key === '0') fit();
   });
-  $('meta').textContent = header.commandLine.join(' ') + '\n' + 'dt ' + header.dt + ' s, ' + header.fps +
+  // (a thinned page's rate, such as 25/9, to four figures at most)
+  $('meta').textContent = header.commandLine.join(' ') + '\n' + 'dt ' + header.dt + ' s, ' + Number(header.fps.toPrecision(4)) +
     ' frames/s, seed ' + header.seed + ', ' + header.robots.length + ' robots' +
     (summary ? '; ' + summary.simulated.toFixed(2) + ' s simulated in ' + summary.steps + ' steps' +
                (summary.interrupted ? ' (interrupted)' : '') + (summary.failure ? '; FAILED: ' + summary.failure : '')
