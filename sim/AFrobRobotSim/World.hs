@@ -391,18 +391,21 @@ worldProblems bounds labelled = concatMap problemsOf indexed
       S.toAscList (S.fromList [ j | c <- cellsOf o, k <- against (classOf o)
                                   , (j, p) <- takeWhile ((< i) . fst) (M.findWithDefault [] (k, c) grid)
                                   , overlapAtStart o p ])
-    -- How many pairs that check compares up to each placed object (the
-    -- earlier objects of the classes it is looked for among, in each of
-    -- its cells), and the first object at which the running total passes
+    -- How many pairs that check, or the physics, compares up to each
+    -- placed object (the earlier objects of the classes it is looked for
+    -- among, and for a ball the earlier balls too, in each of its cells),
+    -- and the first object at which the running total passes
     -- 'maxClosePairs', with that total: that object and the ones after it
     -- are not checked for overlaps, so that the check's work is bounded
     -- (a file of 50,000 walls and 50,000 balls side by side in one square
-    -- metre took more than 400 s).
+    -- metre took more than 400 s), and a world whose physics would crawl
+    -- is refused (100,000 balls piled on one spot took 7 minutes a step).
+    counted k = if k == 1 then [0, 1, 2] else against k
     crowd =
       let step (counts, total) (i, o) =
             let k       = classOf o
                 cs      = cellsOf o
-                w       = sum [ M.findWithDefault 0 (k', c) counts | c <- cs, k' <- against k ]
+                w       = sum [ M.findWithDefault 0 (k', c) counts | c <- cs, k' <- counted k ]
                 counts' = foldl (\m c -> M.insertWith (+) (k, c) (1 :: Int) m) counts cs
                 total'  = total + w
             in total' `seq` ((counts', total'), (i, total'))
@@ -412,9 +415,9 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     beforeCrowd i = maybe True ((i <) . fst) crowd
     crowdMessage w =
       "too crowded: the objects up to this one make " ++ show w ++ " pairs that share a 1 m square "
-      ++ "(a robot and any object, a ball and a wall or block), more than the "
-      ++ show maxClosePairs ++ " that a world may have; the check of overlaps and the physics "
-      ++ "compare such pairs one by one"
+      ++ "(a robot and any object, a ball and a ball, wall or block; counted once for each square they "
+      ++ "share), more than the " ++ show maxClosePairs ++ " that a world may have (the physics and "
+      ++ "the check of overlaps compare such pairs one by one)"
 
 -- | 'Data.List.mapAccumL' with the accumulator evaluated (to weak head
 -- normal form) at each element, so that a long list leaves no chain of
@@ -427,17 +430,22 @@ mapAccumL' f = go
       (s', y) -> s' `seq` let (s'', ys) = go s' xs in (s'', y : ys)
 
 -- | The most pairs of objects that may share a cell of 1 m by 1 m in a
--- world, among the pairs that could overlap where the physics cannot part
--- them (a robot and any object, a ball and a wall or block; two balls or
--- two walls and blocks are not counted): 25,000,000, counted cell by
--- cell, an object in each cell its bounding box meets. 'validateWorld'
--- compares each such pair once, and the physics tests such pairs for
--- contact at each step; past this many, a world is refused as too crowded
--- (reported at the object that passes the bound), which keeps the check
--- of a world file of 'AFrobRobotSim.WorldFile.maxObjects' objects within
--- seconds. A world whose objects lie apart, however many, has few: the
--- 10,000 robots and 7,939 obstacles of the benchmarks' 316 m world make
--- 1,091.
+-- world, among the pairs that the physics tests for contact at each step
+-- or that could overlap where it cannot part them: a robot and any object,
+-- a ball and a ball, wall or block (two walls or blocks are not counted):
+-- 25,000,000, counted cell by cell (a pair that shares several cells
+-- counts once in each), an object in each cell its bounding box meets.
+-- 'validateWorld' compares the pairs that could overlap once each (two
+-- balls may), and the physics those that touch at each step; past this
+-- many, a world is refused as too crowded (reported at the object that
+-- passes the bound), which keeps the check of a world file of
+-- 'AFrobRobotSim.WorldFile.maxObjects' objects within seconds, and a
+-- simulation step within minutes (5,000 walls beside 3,660 balls piled
+-- on one spot, just below the bound, take 80 s a step; 7,071 balls on
+-- one spot, 0.8 s; 100,000, which the floor's area let through, took 7
+-- minutes). A world whose
+-- objects lie apart, however many, has few: the 10,000 robots and 7,938
+-- obstacles of the benchmarks' 316 m world make 1,091.
 maxClosePairs :: Int
 maxClosePairs = 25000000
 

@@ -237,7 +237,7 @@ parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . textLines . 
 
 -- | The most objects a world file may describe: 100,000 (the notes' world
 -- holds about 1100 balls, or 400 blocks, side by side; the benchmarks'
--- 316 m world holds 10,000 robots and 7,939 obstacles, 1.2 MB as
+-- 316 m world holds 10,000 robots and 7,938 obstacles, 1.2 MB as
 -- 'renderWorld' writes it). However
 -- many objects it has, a world whose objects crowd together is refused
 -- by 'AFrobRobotSim.World.maxClosePairs', which bounds the time its check

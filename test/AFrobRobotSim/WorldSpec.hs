@@ -98,35 +98,48 @@ spec = do
     it "checks a pile of 5000 balls and one of 5000 blocks, not pair by pair (they may overlap their own kind)" $ do
       -- (about 0.1 s; pair by pair it took minutes: the bound is that
       -- guard, generous for a loaded machine, not a measure of speed)
-      let piles = OTSize 30 30 : replicate 5000 (OTBall (Point2 (-2) (-2))) ++ replicate 5000 (OTBlock (Point2 2 2))
+      -- (each pile in one 1 m cell: 12.5 million pairs of balls, below
+      -- maxClosePairs; at a cell's corner they would count four times)
+      let piles = OTSize 30 30 : replicate 5000 (OTBall (Point2 (-2.5) (-2.5))) ++ replicate 5000 (OTBlock (Point2 2.5 2.5))
       r <- timeout 30000000 (evaluate (length (problems piles)))
       r `shouldBe` Just 0
-    it "refuses objects crowding a square metre past maxClosePairs pairs, at the object that passes it; at the bound, accepts" $ do
-      -- k walls and k balls side by side (apart), alternately: after k of
-      -- each, k * k pairs of a ball and a wall; the next wall adds k more
-      let crowd k = OTSize 1000 1000 : concat (replicate k [OTVWall (Point2 0.5 0.5), OTBall (Point2 0.75 0.5)])
-          k0      = 5000
-      k0 * k0 `shouldBe` maxClosePairs
-      r <- timeout 30000000 (evaluate (problems (crowd k0 ++ [OTVWall (Point2 0.5 0.5)])))
-      r `shouldBe` Just [ "vertical wall at (0.5, 0.5): too crowded: the objects up to this one make "
-                          ++ show (k0 * k0 + k0) ++ " pairs that share a 1 m square (a robot and any object, "
-                          ++ "a ball and a wall or block), more than the 25000000 that a world may have; the "
-                          ++ "check of overlaps and the physics compare such pairs one by one" ]
-      r' <- timeout 30000000 (evaluate (problems (crowd k0)))
+    it "refuses objects crowding a square metre past maxClosePairs pairs, at the object that passes it; below, accepts" $ do
+      -- 5000 walls, then m balls piled beside them, all in one cell: the
+      -- m-th ball adds a pair with each wall and each ball before it
+      let crowd m = OTSize 1000 1000 : replicate 5000 (OTVWall (Point2 0.5 0.5)) ++ replicate m (OTBall (Point2 0.75 0.5))
+          pairs m = sum [ 5000 + (j - 1) | j <- [1 .. m] ] :: Int
+          m0      = head [ m | m <- [1 ..], pairs m > maxClosePairs ]
+      (m0, pairs m0) `shouldBe` (3661, 25004630)
+      r <- timeout 30000000 (evaluate (problems (crowd m0)))
+      r `shouldBe` Just [ "ball at (0.75, 0.5): too crowded: the objects up to this one make "
+                          ++ show (pairs m0) ++ " pairs that share a 1 m square (a robot and any object, "
+                          ++ "a ball and a ball, wall or block; counted once for each square they share), more "
+                          ++ "than the 25000000 that a world may have (the physics and the check of overlaps "
+                          ++ "compare such pairs one by one)" ]
+      r' <- timeout 30000000 (evaluate (problems (crowd (m0 - 1))))
       r' `shouldBe` Just []
     it "reports the overlaps before a crowd, and checks the objects after it for all but overlaps" $ do
-      let crowd = concat (replicate 5001 [OTVWall (Point2 0.5 0.5), OTBall (Point2 0.75 0.5)])
+      let crowd = replicate 5000 (OTVWall (Point2 0.5 0.5)) ++ replicate 3661 (OTBall (Point2 0.75 0.5))
           w     = OTSize 1000 1000 : OTSimbotA 1 (Point2 3.5 3.5) 0 : OTSimbotA 2 (Point2 3.5 3.5) 0 : crowd
                   ++ [OTSimbotA 3 (Point2 (-3) (-3)) 0, OTBlock (Point2 (-3) (-3)), OTBall (Point2 600 0)]
       r <- timeout 30000000 (evaluate (problems w))
-      -- the two robots share one cell: one pair, so the crowd passes the
-      -- bound at the 5000th ball (5000 * 5000 + 1); the robot and the
-      -- block after it overlap, unreported; the ball far out is reported
+      -- the two robots share one cell: one pair more than the walls and
+      -- balls alone make, which pass the bound at the 3661st ball; the
+      -- robot and the block after it overlap, unreported; the ball far out
+      -- is reported
       fmap (map (takeWhile (/= ':'))) r
         `shouldBe` Just [ "SimbotA 2 at (3.5, 3.5) overlaps SimbotA 1 at (3.5, 3.5)"
                         , "ball at (0.75, 0.5)"
                         , "ball at (600.0, 0.0)" ]
-      fmap (map ("make 25000001 pairs" `isInfixOf`)) r `shouldBe` Just [False, True, False]
+      fmap (map ("make 25004631 pairs" `isInfixOf`)) r `shouldBe` Just [False, True, False]
+    it "refuses a pile of balls on one spot past maxClosePairs pairs of balls (the floor's area let 100,000 through, 7 minutes a step)" $ do
+      -- the n-th ball adds n - 1 pairs: 7071 balls make 24,995,985, the 7072nd 25,003,056
+      let pile n = OTSize 1000 1000 : replicate n (OTBall (Point2 0.5 0.5))
+      r <- timeout 30000000 (evaluate (problems (pile 7072)))
+      fmap (map (takeWhile (/= ','))) r `shouldBe` Just ["ball at (0.5"]
+      fmap (map ("make 25003056 pairs" `isInfixOf`)) r `shouldBe` Just [True]
+      r' <- timeout 30000000 (evaluate (problems (pile 7071)))
+      r' `shouldBe` Just []
   describe "validateWorld: the balls' discs no larger in all than the floor the robots leave" $ do
     let ball  = OTBall (Point2 0 0)
         robot = OTSimbotA 1 (Point2 3 3) 0
