@@ -107,12 +107,12 @@ spec = do
       -- 5000 walls, then m balls piled beside them, all in one cell: the
       -- m-th ball adds a pair with each wall and each ball before it
       let crowd m = OTSize 1000 1000 : replicate 5000 (OTVWall (Point2 0.5 0.5)) ++ replicate m (OTBall (Point2 0.75 0.5))
-          pairs m = sum [ 5000 + (j - 1) | j <- [1 .. m] ] :: Int
-          m0      = head [ m | m <- [1 ..], pairs m > maxClosePairs ]
-      (m0, pairs m0) `shouldBe` (3661, 25004630)
+          closePairs m = sum [ 5000 + (j - 1) | j <- [1 .. m] ] :: Int
+          m0      = head [ m | m <- [1 ..], closePairs m > maxClosePairs ]
+      (m0, closePairs m0) `shouldBe` (3661, 25004630)
       r <- timeout 30000000 (evaluate (problems (crowd m0)))
       r `shouldBe` Just [ "ball at (0.75, 0.5): too crowded: the objects up to this one make "
-                          ++ show (pairs m0) ++ " pairs that share a 1 m square (a robot and any object, "
+                          ++ show (closePairs m0) ++ " pairs that share a 1 m square (a robot and any object, "
                           ++ "a ball and a ball, wall or block; counted once for each square they share), more "
                           ++ "than the 25000000 that a world may have (the physics and the check of overlaps "
                           ++ "compare such pairs one by one)" ]
