@@ -126,4 +126,5 @@ import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors   (rangeFinderMax, trackerRange)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
+import           AFrobRobotSim.World.Check
 import           AFrobRobotSim.WorldFile

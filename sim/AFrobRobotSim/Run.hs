@@ -98,6 +98,7 @@ import           AFrobRobotSim.Run.Signals
 import           AFrobRobotSim.Run.Sinks
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World
+import           AFrobRobotSim.World.Check (validateWorld)
 import           AFrobRobotSim.WorldFile
 
 -- | Run a simbot program with the settings of the command line. 'Nothing'

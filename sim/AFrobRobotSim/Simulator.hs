@@ -105,6 +105,7 @@ import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors
 import           AFrobRobotSim.Simulator.Failure
 import           AFrobRobotSim.World
+import           AFrobRobotSim.World.Check (validateWorldIn)
 
 -- | Settings of a simulation run.
 data SimConfig = SimConfig

@@ -147,7 +147,7 @@
 --
 -- 'parseWorld' checks the syntax only. 'readWorldFile' and
 -- 'readWorldBytes' also check the world with
--- 'AFrobRobotSim.World.validateWorld' (objects inside the world, ids
+-- 'AFrobRobotSim.World.Check.validateWorld' (objects inside the world, ids
 -- unique, nothing overlapping at time 0, the balls' discs no larger in
 -- all than the floor the robots leave), each problem reported as
 -- @FILE:LINE: ...@ with the lines of the objects involved.
@@ -181,8 +181,8 @@ import           Data.List         (intercalate)
 import qualified Data.Map.Strict   as M
 
 import           AFRP.Geometry     (Point2 (..))
-import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, capProblems, isWorldSize,
-                                      notesBounds, worldProblems)
+import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, isWorldSize, notesBounds)
+import           AFrobRobotSim.World.Check (capProblems, worldProblems)
 import           AFrobRobotSim.Console          (displayPath)
 import           AFrobRobotSim.WorldFile.Grammar (Failure (..), maxHeading, parseLine)
 import           AFrobRobotSim.InputFile (readFileUpTo)
@@ -240,7 +240,7 @@ parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . textLines . 
 -- 316 m world holds 10,000 robots and 7,938 obstacles, 1.2 MB as
 -- 'renderWorld' writes it). However
 -- many objects it has, a world whose objects crowd together is refused
--- by 'AFrobRobotSim.World.maxClosePairs', which bounds the time its check
+-- by 'AFrobRobotSim.World.Check.maxClosePairs', which bounds the time its check
 -- takes. The @size@ line is not an object.
 maxObjects :: Int
 maxObjects = 100000
@@ -271,7 +271,7 @@ checkLine l = case [ c | (c, ch) <- zip [1 ..] (take (maxLineLength + 1) l), ch 
 
 -- | Decode the bytes of a world file as UTF-8, parse them with
 -- 'parseWorld' and check the world with
--- 'AFrobRobotSim.World.validateWorld', naming each
+-- 'AFrobRobotSim.World.Check.validateWorld', naming each
 -- object's line. The first byte that is not valid UTF-8 (a stray
 -- continuation byte, a truncated or overlong sequence, a surrogate, a code
 -- point beyond U+10FFFF) is an error
@@ -279,7 +279,7 @@ checkLine l = case [ c | (c, ch) <- zip [1 ..] (take (maxLineLength + 1) l), ch 
 -- characters before it on its line, plus one. The problems of an invalid
 -- world come one per line, each as @FILE:LINE: problem@ (the line of the
 -- later object of a pair, whose message names the other's line), at most
--- 'AFrobRobotSim.World.maxProblems' of them and then a count of the rest.
+-- 'AFrobRobotSim.World.Check.maxProblems' of them and then a count of the rest.
 --
 -- >>> readWorldBytes "w.world" (B.pack [98,97,108,108,32,97,116,32,48,32,255])
 -- Left "w.world:1:11: invalid UTF-8 (byte 0xff)"

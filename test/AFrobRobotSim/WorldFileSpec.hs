@@ -17,6 +17,7 @@ import           Test.QuickCheck
 
 import           AFRP.Geometry          (Point2 (..))
 import           AFrobRobotSim.World
+import           AFrobRobotSim.World.Check
 import           AFrobRobotSim.WorldFile
 import           TestUtil (withTempDir)
 

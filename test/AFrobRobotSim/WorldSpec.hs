@@ -13,7 +13,8 @@ import           Test.QuickCheck
 import           AFrob             (constant, ddVelDiff, mrFinalize)
 import           AFRP.Geometry
 import           AFrobRobotSim
-import           AFrobRobotSim.World (maxClosePairs, maxProblems, objectHalfSize, objectName, worldProblems)
+import           AFrobRobotSim.World (objectHalfSize, objectName)
+import           AFrobRobotSim.World.Check (maxClosePairs, maxProblems, worldProblems)
 
 -- | The problems of a world ([] for a valid one).
 problems :: WorldTemplate -> [String]
