@@ -51,8 +51,15 @@ run('node replay.test.js PAGE.html [SCREENSHOT.png]', async (page, errors, open)
     await page.uncheck('#rays');
     check((await rayRows()).every(c => near(c, background, 0)), 'unticking "range rays" hides them');
     await page.check('#rays');
+    await page.focus('#speed');   // (as choosing with the mouse leaves it)
     await page.selectOption('#speed', '4');
     check(await page.evaluate(() => document.getElementById('speed').value) === '4', 'the speed can be set');
+    // and the keys work straight after (the list kept the focus, and the page left the keys to it)
+    const beforeKey = await page.evaluate(() => window.afrpReplay.frame());
+    await page.keyboard.press('ArrowRight');
+    const afterKey = await page.evaluate(() => window.afrpReplay.frame());
+    check(afterKey === beforeKey + 1, 'after choosing a speed, ArrowRight steps a frame (' + beforeKey + ' -> ' + afterKey + ')');
+    await page.keyboard.press('ArrowLeft');
 
     // drag the slider to the end (keyboard End on the focused range input: a real input event)
     await page.focus('#slider');

@@ -403,7 +403,10 @@
   $('play').addEventListener('click', function () { setPlaying(!state.playing); });
   $('back').addEventListener('click', function () { setPlaying(false); setFrame(state.frame - 1); });
   $('fwd').addEventListener('click', function () { setPlaying(false); setFrame(state.frame + 1); });
-  $('speed').addEventListener('change', function () { state.speed = Number($('speed').value); });
+  // (the list gives the focus back once a speed is chosen: the keys, which
+  // a focused list takes for itself, went on working only after a click
+  // elsewhere)
+  $('speed').addEventListener('change', function () { state.speed = Number($('speed').value); $('speed').blur(); });
   ['rays', 'trails', 'sightings'].forEach(function (id) { $(id).addEventListener('change', function () { draw(); }); });
   $('follow').addEventListener('change', function () { follow(frames[state.frame]); draw(); });
   // the canvas pixel under a mouse or pointer event (inside the canvas's
