@@ -137,11 +137,11 @@ data SimConfig = SimConfig
 
 -- The balls' positions that a referee ('simBallRule') gave at a time,
 -- checked: as many as there are balls, each a finite point where its disc
--- lies inside the world; otherwise an error that says what the rule did
--- (a NaN or a ball beyond the walls was carried on into every later step,
--- and a missing ball was silently lost).
+-- lies inside the world ('insideBounds'); otherwise an error that says
+-- what the rule did (a NaN or a ball beyond the walls was carried on into
+-- every later step, and a missing ball was silently lost).
 refereed :: Bounds -> Time -> Int -> [Position2] -> [Position2]
-refereed (Bounds x0 y0 x1 y1) t n ps
+refereed bounds@(Bounds x0 y0 x1 y1) t n ps
   | k /= n = bad ("gave " ++ show k ++ " position" ++ plural k ++ " for " ++ show n ++ " ball" ++ plural n
                   ++ " (it must give one for each)")
   | (i, Point2 x y) : _ <- outside =
@@ -151,9 +151,7 @@ refereed (Bounds x0 y0 x1 y1) t n ps
   | otherwise = ps
   where
     k = length ps
-    r = ballDiameter / 2
-    outside = [ ip | ip@(_, Point2 x y) <- zip [1 ..] ps
-                   , not (x - r >= x0 && x + r <= x1 && y - r >= y0 && y + r <= y1) ]
+    outside = [ ip | ip@(_, p) <- zip [1 ..] ps, not (insideBounds bounds (OTBall p)) ]
     plural m = if m == 1 then "" else "s"
     bad what = error (printf "AFrobRobotSim.simulate: the ball rule (simBallRule) at t = %.3f s %s" t what)
 

@@ -63,6 +63,7 @@ module AFrobRobotSim.World
   , notesBounds
   , objectName
   , objectHalfSize
+  , insideBounds
   ) where
 
 import           AFRP.Geometry
@@ -231,3 +232,13 @@ objectHalfSize o = case o of
   OTSimbotA {} -> (simbotDiameter / 2, simbotDiameter / 2)
   OTSimbotB {} -> (simbotDiameter / 2, simbotDiameter / 2)
   OTSize w h   -> (w / 2, h / 2)
+
+-- | Does an object's bounding box ('objectHalfSize') lie inside these
+-- bounds? Touching their edge is inside; a NaN coordinate is not. An
+-- 'OTSize', which is no object, is.
+insideBounds :: Bounds -> ObjectTemplate -> Bool
+insideBounds _ OTSize {} = True
+insideBounds (Bounds x0 y0 x1 y1) o =
+  let Point2 x y = otPos o
+      (hw, hh)   = objectHalfSize o
+  in x - hw >= x0 && x + hw <= x1 && y - hh >= y0 && y + hh <= y1

@@ -46,8 +46,10 @@
 -- What this asks of a network: the body's output pair must exist at every
 -- sample, also at one whose output nobody reads; a body whose pair is an
 -- error (bottom) at some sample fails the run at the next, whether or not
--- that output is read, where Yampa, which never evaluates the pair, goes
--- on. A pair written as a tuple (@arr (\(a, c) -> (e1, e2))@) always
+-- that output is read, as in Yampa, whose loop matches the pair together
+-- with the body's next step (the loops above that evaluate nothing are
+-- the difference: @loop (second (iPre 0) >>> pre)@ goes on in afrp and
+-- stops in Yampa 0.15, found by a differential fuzz). A pair written as a tuple (@arr (\(a, c) -> (e1, e2))@) always
 -- exists. In a @rec@ block the pair is made of the block's result and its
 -- variables, in the shape GHC's translation of the arrow notation gives
 -- it, and a pattern binding them is matched strictly: after

@@ -20,6 +20,7 @@ module AFrobRobotSim.World.Check
   , capProblems
   ) where
 
+import           Data.List       (find, foldl', scanl')
 import qualified Data.Map.Strict as M
 import qualified Data.Set        as S
 import           Numeric         (showFFloat)
@@ -130,10 +131,7 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     coords o = let Point2 x y = otPos o
                in x : y : maybe [] (const [otHdng o]) (robotKindOf o)
     isFinite v = not (isNaN v || isInfinite v)
-    insideWorld o =
-      let Point2 x y = otPos o
-          (hw, hh)   = objectHalfSize o
-      in not (x - hw < x0 || x + hw > x1 || y - hh < y0 || y + hh > y1)
+    insideWorld = insideBounds (Bounds x0 y0 x1 y1)
     placed = [ (i, o) | (i, (_, o)) <- indexed, not (isWorldSize o), all isFinite (coords o), insideWorld o ]
     arr = M.fromList [ (i, lo) | (i, lo) <- indexed ]
     -- The balls cannot all lie apart once their discs' area exceeds the
@@ -201,32 +199,20 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     -- is refused (100,000 balls piled on one spot took 7 minutes a step).
     counted k = if k == 1 then [0, 1, 2] else against k
     crowd =
-      let step (counts, total) (i, o) =
+      let step (counts, total) (_, o) =
             let k       = classOf o
                 cs      = cellsOf o
                 w       = sum [ M.findWithDefault 0 (k', c) counts | c <- cs, k' <- counted k ]
-                counts' = foldl (\m c -> M.insertWith (+) (k, c) (1 :: Int) m) counts cs
-                total'  = total + w
-            in total' `seq` ((counts', total'), (i, total'))
-      in case dropWhile ((<= maxClosePairs) . snd) (snd (mapAccumL' step (M.empty, 0) placed)) of
-           first : _ -> Just first
-           []        -> Nothing
+                counts' = foldl' (\m c -> M.insertWith (+) (k, c) (1 :: Int) m) counts cs
+            in counts' `seq` total `seq` (counts', total + w)
+      in find ((> maxClosePairs) . snd)
+              [ (i, total) | ((i, _), (_, total)) <- zip placed (drop 1 (scanl' step (M.empty, 0) placed)) ]
     beforeCrowd i = maybe True ((i <) . fst) crowd
     crowdMessage w =
       "too crowded: the objects up to this one make " ++ show w ++ " pairs that share a 1 m square "
       ++ "(a robot and any object, a ball and a ball, wall or block; counted once for each square they "
       ++ "share), more than the " ++ show maxClosePairs ++ " that a world may have (the physics and "
       ++ "the check of overlaps compare such pairs one by one)"
-
--- | 'Data.List.mapAccumL' with the accumulator evaluated (to weak head
--- normal form) at each element, so that a long list leaves no chain of
--- thunks; the results are produced lazily.
-mapAccumL' :: (s -> a -> (s, b)) -> s -> [a] -> (s, [b])
-mapAccumL' f = go
-  where
-    go s []       = (s, [])
-    go s (x : xs) = case f s x of
-      (s', y) -> s' `seq` let (s'', ys) = go s' xs in (s'', y : ys)
 
 -- | The most pairs of objects that may share a cell of 1 m by 1 m in a
 -- world, among the pairs that the physics tests for contact at each step
