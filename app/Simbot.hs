@@ -14,6 +14,7 @@ import           System.Exit        (exitWith, ExitCode (..))
 
 import           AFrob
 import           AFrobRobotSim
+import           AFrobRobotSim.Log    (LogEnd (..))
 import           AFrobRobotSim.Replay (writeReplayFromLog)
 import           AFrobRobotSim.Console (displayPath, endOutput, putErr)
 import           Paper.Section3     (rcAlign, rcFollowLeftWall, rcMoveTo, rcReverse)
@@ -39,8 +40,17 @@ replayFrom args = do
   where
     go failWith f o = do
       r <- writeReplayFromLog f o
-      either failWith (const (putStrLn ("wrote " ++ displayPath o))) r   -- the message names the file
-      getProgName >>= endOutput
+      prog <- getProgName
+      case r of
+        Left msg  -> failWith msg   -- (the message names the file)
+        Right end -> do
+          -- (a log cut off, by a full disk: its page is made, and the
+          -- cut said)
+          mapM_ (\i -> putErr (prog ++ ": warning: " ++ displayPath f ++ ":" ++ show i ++ ": the log's last line"
+                                ++ " stops in its middle (did its disk fill up?); it is left out, and the page shows"
+                                ++ " the frames before it\n")) (leCutLine end)
+          putStrLn ("wrote " ++ displayPath o)
+      endOutput prog
 
 -- | The SimbotA demos, by id.
 demoA :: SimbotController

@@ -17,6 +17,7 @@ module AFrobRobotSim.InputFile
   , LineFault (..)
   , newLineReader
   , nextLine
+  , nextLineEnded
   ) where
 
 import           Control.Concurrent      (forkIO)
@@ -93,18 +94,25 @@ newLineReader h cap lineCap =
 -- is not read to its end (an endless one, @\/dev\/zero@'s, ends at the
 -- limit).
 nextLine :: LineReader -> IO (Either LineFault (Maybe (Int, B.ByteString)))
-nextLine (LineReader h restRef totalRef numRef cap lineCap) = do
+nextLine src = fmap (fmap (\(n, l, _) -> (n, l))) <$> nextLineEnded src
+
+-- | 'nextLine', and whether the line ended with a newline: 'False' only
+-- for a last line that the file ends in the middle of (a file whose
+-- writer was killed while writing it ends so, or one written without a
+-- final newline).
+nextLineEnded :: LineReader -> IO (Either LineFault (Maybe (Int, B.ByteString, Bool)))
+nextLineEnded (LineReader h restRef totalRef numRef cap lineCap) = do
   n <- readIORef numRef
   rest <- readIORef restRef
-  let done line left = do
+  let done line left ended = do
         writeIORef restRef left
         writeIORef numRef (n + 1)
-        pure (Right (Just (n, line)))
+        pure (Right (Just (n, line, ended)))
       -- the line's chunks so far (last first) and their length, then the
       -- bytes still to look at
       go acc len buf = case B.elemIndex 10 buf of
         Just k | len + k > lineCap -> pure (Left (LongLine n))
-               | otherwise         -> done (B.concat (reverse (B.take k buf : acc))) (B.drop (k + 1) buf)
+               | otherwise         -> done (B.concat (reverse (B.take k buf : acc))) (B.drop (k + 1) buf) True
         Nothing
           | len + B.length buf > lineCap -> pure (Left (LongLine n))
           | otherwise -> do
@@ -115,6 +123,6 @@ nextLine (LineReader h restRef totalRef numRef cap lineCap) = do
               if | Left e <- got -> pure (Left (Unreadable e))
                  | total > cap   -> pure (Left TooManyBytes)
                  | B.null chunk  -> if len + B.length buf == 0 then pure (Right Nothing)
-                                    else done (B.concat (reverse (buf : acc))) B.empty
+                                    else done (B.concat (reverse (buf : acc))) B.empty False
                  | otherwise     -> go (buf : acc) (len + B.length buf) chunk
   go [] 0 rest

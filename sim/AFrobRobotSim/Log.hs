@@ -53,6 +53,7 @@ module AFrobRobotSim.Log
   , logWriterFrames
     -- * Reading a log back
   , RunLog (..)
+  , LogEnd (..)
   , readLog
   , readLogFile
   , readLogFileUpTo

@@ -272,8 +272,11 @@ fnvBasis :: Word64
 fnvBasis = 14695981039346656037
 
 -- | Read a log file and write its page: what @simbot --replay-from
--- FILE.jsonl --replay OUT.html@ does. A log that does not read is a
--- 'Left' with the reader's message (nothing is written then); a page that
+-- FILE.jsonl --replay OUT.html@ does, giving how the log ends ('LogEnd':
+-- its summary, if any, and the number of its last line if that line was
+-- cut off, as a full disk leaves it: the page then shows the frames
+-- before it; see "AFrobRobotSim.Log.Read"). A log that does not
+-- read is a 'Left' with the reader's message (nothing is written then); a page that
 -- cannot be written is a 'Left' naming it, and so is a page that is the
 -- log itself (under any name: the log is kept), an empty name, a
 -- folder, or in a folder that does not exist (said before the log is
@@ -291,7 +294,7 @@ fnvBasis = 14695981039346656037
 -- however long the log: the page of a 37 MB log (ten minutes of the
 -- default world) took 16 MB and 2.8 s; read whole, it took 410 MB and
 -- 15 s (and a one-hour log 2.5 GB).
-writeReplayFromLog :: FilePath -> FilePath -> IO (Either String ())
+writeReplayFromLog :: FilePath -> FilePath -> IO (Either String LogEnd)
 writeReplayFromLog logPath out = do
   same <- (==) <$> canonicalPath logPath <*> canonicalPath out
   isFolder <- doesDirectoryExist out
@@ -325,9 +328,9 @@ writeReplayFromLog logPath out = do
           case spooled of
             Left e                                  -> pure (Left (spoolFault e))
             Right (Left e)                          -> pure (Left e)
-            Right (Right ((header, hash), msummary)) -> do
-              let summary = encodeLogLineBytes . LineSummary <$> msummary
-              either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) Right   -- (it names the page)
+            Right (Right ((header, hash), end)) -> do
+              let summary = encodeLogLineBytes . LineSummary <$> leSummary end
+              either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) (const (Right end))   -- (it names the page)
                 <$> try (writePage replayChunkChars header h summary (maybe hash (fnvBytes hash) summary) out)
 
 -- | A page being recorded as a run goes. Each frame's line is encoded at

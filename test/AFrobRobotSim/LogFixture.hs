@@ -46,6 +46,7 @@ fixtureLog :: RunLog
 fixtureLog = RunLog (logHeader fixtureConfig) (logFrames fixtureConfig fixtureStates)
   (Just (LogSummary fixtureSeconds (length fixtureStates) (length (logFrames fixtureConfig fixtureStates))
                     0.5 False Nothing []))
+  Nothing
 
 -- | The run's log, as the text of a file.
 fixtureLogText :: String

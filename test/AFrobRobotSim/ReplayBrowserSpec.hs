@@ -22,7 +22,7 @@ import           AFrobRobotSim.Replay
 
 -- | The page of a 1 s run of a world, its robots driving slowly ahead.
 pageOf :: WorldTemplate -> String
-pageOf w = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing)
+pageOf w = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing Nothing)
   where
     cfg    = defaultLogConfig { lcWorld = w, lcDt = 0.01, lcFps = 25 }
     states = take 101 (simulate 0.01 w slow slow)

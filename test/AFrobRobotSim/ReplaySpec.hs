@@ -156,7 +156,7 @@ spec = do
       let cfg = defaultLogConfig { lcWorld = defaultWorld, lcDt = 0.01, lcFps = 25 }
           steer _ = constant (mrFinalize (ddVelDiff 0.6 0.8))
           states = take 3001 (simulate 0.01 defaultWorld steer steer)
-          runLog = RunLog (logHeader cfg) (logFrames cfg states) Nothing
+          runLog = RunLog (logHeader cfg) (logFrames cfg states) Nothing Nothing
           big = replayPage runLog
       length big `shouldSatisfy` (< 3000000)
       readLog (unlines (map encodeLogLine (LineHeader (rlHeader runLog) : map LineFrame (rlFrames runLog))))
@@ -221,7 +221,7 @@ spec = do
       r <- writeReplayFromLog logPath out
       written <- readFile out
       length written `seq` mapM_ removeFile [logPath, out]
-      r `shouldBe` Right ()
+      r `shouldBe` Right (LogEnd (rlSummary fixtureLog) Nothing)
       written `shouldBe` page
     it "refuses a file that is not a log, writing nothing (fixed)" $ do
       tmp <- getTemporaryDirectory
@@ -294,7 +294,7 @@ spec = do
             out = dir </> "cut.html"
             short = unlines (take 10 (lines fixtureLogText))
         writeFile logPath short
-        writeReplayFromLog logPath out `shouldReturn` Right ()
+        writeReplayFromLog logPath out `shouldReturn` Right (LogEnd Nothing Nothing)
         written <- readFile out
         fmap replayPage (readLog short) `shouldBe` Right written
         -- a bad line after good frames: no page, the old one kept
@@ -302,6 +302,15 @@ spec = do
         writeReplayFromLog logPath out `shouldReturn` Left (logPath ++ ":11:17: expected ',' or '}', found end of input")
         readFile out `shouldReturn` written
         listDirectory dir >>= (`shouldBe` ["cut.html", "cut.jsonl"]) . sort
+    it "makes the page of a log whose last line stops in its middle (a full disk's), and gives that line's number" $
+      withTempDir $ \dir -> do
+        let logPath = dir </> "full.jsonl"
+            out = dir </> "full.html"
+            ls = lines fixtureLogText
+        writeFile logPath (unlines (take 10 ls) ++ take 40 (ls !! 10))
+        writeReplayFromLog logPath out `shouldReturn` Right (LogEnd Nothing (Just 11))
+        written <- readFile out
+        fmap replayPage (readLog (unlines (take 10 ls))) `shouldBe` Right written
     it "says a temporary folder it cannot use (TMPDIR), writing no page, and leaves no temporary file" $
       withTempDir $ \dir -> do
         let logPath = dir </> "run.jsonl"
@@ -312,6 +321,6 @@ spec = do
                                  (const False)
         -- (and with a usable one, the frames' file is gone after the page is written)
         createDirectory (dir </> "tmp")
-        withTMPDIR (dir </> "tmp") (writeReplayFromLog logPath out) `shouldReturn` Right ()
+        withTMPDIR (dir </> "tmp") (writeReplayFromLog logPath out) `shouldReturn` Right (LogEnd (rlSummary fixtureLog) Nothing)
         listDirectory (dir </> "tmp") `shouldReturn` []
         listDirectory dir >>= (`shouldBe` ["run.html", "run.jsonl", "tmp"]) . sort

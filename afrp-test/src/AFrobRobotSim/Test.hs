@@ -447,7 +447,7 @@ writeRunReplayPage file config duration world rcA rcB =
 -- The page of a run's states, with its failure if it had one.
 pageOf :: SimConfig -> WorldTemplate -> [WorldState] -> Maybe String -> String
 pageOf config world states failure =
-  replayPage (RunLog (logHeader cfg) frames (Just summary))
+  replayPage (RunLog (logHeader cfg) frames (Just summary) Nothing)
   where
     cfg     = pageConfig config world
     frames  = logFrames cfg states

@@ -13,8 +13,23 @@
 -- are not the header's, a time written as @null@, a line after the
 -- summary. A file is read a line at a time ('foldLogFile'), at most so
 -- many bytes in all and in a line, as UTF-8.
+--
+-- = A log cut off
+--
+-- A log can end in the middle of a line: its run's disk filled up while
+-- the run wrote it, or it was copied while its run still wrote it, or a
+-- transfer stopped short. Such a line, the last of its log, with no
+-- newline at its end and not a whole line of JSON, is left out (a prefix
+-- of a frame's JSON object is never JSON): the log reads as its lines
+-- before it, with no summary, and 'rlCutLine' (or 'leCutLine') gives
+-- its number, so that a reader can say so. A log cut off in its header
+-- line is refused, with that said. Any other fault of a last line, or a
+-- broken line with a newline after it, is refused as before: only the
+-- end of a log is taken as cut. (A whole last line without a newline, as
+-- a run killed between a line and its newline leaves, is a line.)
 module AFrobRobotSim.Log.Read
   ( RunLog (..)
+  , LogEnd (..)
   , readLog
   , readLogFile
   , readLogFileUpTo
@@ -30,7 +45,7 @@ import           System.IO                 (hClose, hFileSize)
 
 import           AFrobRobotSim.Console     (displayPath)
 import           AFrobRobotSim.Log.Records
-import           AFrobRobotSim.InputFile   (LineFault (..), newLineReader, nextLine, openReading)
+import           AFrobRobotSim.InputFile   (LineFault (..), newLineReader, nextLineEnded, openReading)
 import           AFrobRobotSim.WorldFile.Lexical (cannotRead, utf8TextFrom)
 
 -- | A log read back.
@@ -38,6 +53,19 @@ data RunLog = RunLog
   { rlHeader  :: LogHeader
   , rlFrames  :: [LogFrame]
   , rlSummary :: Maybe LogSummary  -- ^ absent when the run stopped before writing it
+  , rlCutLine :: Maybe Int
+    -- ^ the number of the log's last line (from 1), when that line was
+    -- cut off in its middle and left out (see "A log cut off" above: a
+    -- full disk, a copy made while the run wrote it). 'Nothing' for a
+    -- whole log.
+  } deriving (Eq, Show)
+
+-- | How a log read a line at a time ('foldLogFile') ends, after its last
+-- frame: its summary, if any, and the number of its last line when that
+-- line was cut off and left out (as 'rlSummary' and 'rlCutLine').
+data LogEnd = LogEnd
+  { leSummary :: Maybe LogSummary
+  , leCutLine :: Maybe Int
   } deriving (Eq, Show)
 
 -- | Parse a log's text: a header of this format and version, frames, and
@@ -46,7 +74,9 @@ data RunLog = RunLog
 -- them by position). Errors say @line N: ...@ (or @line N,
 -- column C: ...@ for a line that is not JSON); one saying that the first
 -- line is not a log header (not JSON, or another kind of line) asks
--- whether the text is a run log at all. Blank lines are ignored.
+-- whether the text is a run log at all. Blank lines are ignored. A
+-- last line cut off in its middle, with no newline after it, is left out
+-- (see "A log cut off" above).
 readLog :: String -> Either String RunLog
 readLog = readLogAt (\i mc -> "line " ++ show i ++ maybe "" (\c -> ", column " ++ show c) mc ++ ": ")
 
@@ -57,16 +87,30 @@ type Locate = Int -> Maybe Int -> String
 -- 'readLog' with its errors located by the given function: 'readLogFile'
 -- says where as a world file's errors do.
 readLogAt :: Locate -> String -> Either String RunLog
-readLogAt loc txt = case [ (i, l) | (i, l) <- zip [1 :: Int ..] (lines txt), not (blank l) ] of
+readLogAt loc txt = case [ (i, l, ended) | (i, l, ended) <- numbered, not (blank l) ] of
   [] -> Left (loc 1 Nothing ++ emptyLog)
-  (i0, l0) : rest -> headerLine loc i0 l0 >>= \h -> go h [] rest
+  (i0, l0, ended0) : rest -> headerLine loc ended0 i0 l0 >>= \h -> go h [] rest
   where
-    go h acc [] = Right (RunLog h (reverse acc) Nothing)
-    go h acc ((i, l) : rest) = bodyLine loc h (lastTime acc) i l >>= \ln -> case ln of
-      Left f  -> go h (f : acc) rest
-      Right s -> case rest of
-        []         -> Right (RunLog h (reverse acc) (Just s))
-        (j, _) : _ -> Left (loc j Nothing ++ afterSummary)
+    -- (each line with whether a newline ends it: all but a last one that
+    -- the text ends in)
+    numbered = [ (i, l, i < count || endsInNewline) | (i, l) <- zip [1 :: Int ..] ls ]
+    ls = lines txt
+    count = length ls
+    endsInNewline = take 1 (reverse txt) == "\n"
+    go h acc [] = Right (RunLog h (reverse acc) Nothing Nothing)
+    go h acc ((i, l, ended) : rest)
+      | cutOff ended l = Right (RunLog h (reverse acc) Nothing (Just i))
+      | otherwise = bodyLine loc h (lastTime acc) i l >>= \ln -> case ln of
+          Left f  -> go h (f : acc) rest
+          Right s -> case rest of
+            []            -> Right (RunLog h (reverse acc) (Just s) Nothing)
+            (j, _, _) : _ -> Left (loc j Nothing ++ afterSummary)
+
+-- Whether a line after the header is the cut-off end of a log
+-- (see "A log cut off" above), given whether a newline ends it:
+-- none does, and it is not a whole line of JSON.
+cutOff :: Bool -> String -> Bool
+cutOff ended l = not ended && either (const True) (const False) (decodeLogLine l)
 
 -- The time of the newest frame read, of frames newest first (0 before
 -- the first: a frame's time is not negative).
@@ -85,9 +129,9 @@ afterSummary = "a line after the summary"
 
 -- The first line that is not blank, line @i@: a header of this format and
 -- version, whose dt and fps are positive.
-headerLine :: Locate -> Int -> String -> Either String LogHeader
-headerLine loc i l = do
-  h <- either (Left . (++ notALogHint)) Right $ located loc i (decodeLogLine l) >>= \ln -> case ln of
+headerLine :: Locate -> Bool -> Int -> String -> Either String LogHeader
+headerLine loc ended i l = do
+  h <- either (Left . (++ hint)) Right $ located loc i (decodeLogLine l) >>= \ln -> case ln of
     LineHeader h -> Right h
     _            -> Left (loc i Nothing ++ "expected the header line first")
   located loc i (checkVersion h)
@@ -105,8 +149,12 @@ headerLine loc i l = do
           Left ("the header's bounds must be numbers, with a positive width and height, found x " ++ show x
                 ++ ", y " ++ show y ++ ", width " ++ show w ++ " and height " ++ show ht)
       | otherwise = Right ()
-    -- (a first line that is no header: most often a file that is not a log)
-    notALogHint = " (is it a run log? a run writes one with --log FILE.jsonl)"
+    -- (a first line that is no header: most often a file that is not a
+    -- log; or, with no newline after it, a log cut off in its first
+    -- line)
+    hint | cutOff ended l = " (the line stops with no newline after it: did the run that wrote the log stop"
+                            ++ " as it began, or its disk fill up?)"
+         | otherwise      = " (is it a run log? a run writes one with --log FILE.jsonl)"
     positive x = x > 0 && not (isInfinite x)   -- (NaN, read from null, is not > 0)
     finite x = not (isNaN x || isInfinite x)
 
@@ -189,23 +237,24 @@ maxLogLineBytes = 64 * 1024 * 1024
 readLogFileUpTo :: Int -> FilePath -> IO (Either String RunLog)
 readLogFileUpTo cap path = do
   r <- foldLogFileUpTo cap maxLogLineBytes path (\h -> pure (h, [])) (\(h, fs) f -> pure (h, f : fs))
-  pure (fmap (\((h, fs), ms) -> RunLog h (reverse fs) ms) r)
+  pure (fmap (\((h, fs), LogEnd ms cut) -> RunLog h (reverse fs) ms cut) r)
 
 -- | @foldLogFile path start step@ reads a log file as 'readLogFile' does
 -- (the same checks, the same errors, the same limits), a line at a time:
 -- @start@ takes the header, @step@ each frame in turn, and the result is
--- the last state with the summary, if the log has one. What the log's
+-- the last state with how the log ends ('LogEnd': its summary, if it
+-- has one, and whether its last line was cut off). What the log's
 -- lines take in memory is one line's, whatever its length: a page made of
 -- a log this way ('AFrobRobotSim.Replay.writeReplayFromLog') holds no
 -- frame. An error found at a line comes after @step@ has taken the
 -- frames before it.
 foldLogFile :: FilePath -> (LogHeader -> IO s) -> (s -> LogFrame -> IO s)
-            -> IO (Either String (s, Maybe LogSummary))
+            -> IO (Either String (s, LogEnd))
 foldLogFile = foldLogFileUpTo maxLogBytes maxLogLineBytes
 
 -- 'foldLogFile' with at most @cap@ bytes in all and @lineCap@ in a line.
 foldLogFileUpTo :: Int -> Int -> FilePath -> (LogHeader -> IO s) -> (s -> LogFrame -> IO s)
-                -> IO (Either String (s, Maybe LogSummary))
+                -> IO (Either String (s, LogEnd))
 foldLogFileUpTo cap lineCap path start step = do
   opened <- try (openReading path)
   -- (only reading the file is caught: what @start@ and @step@ throw is
@@ -218,29 +267,35 @@ foldLogFileUpTo cap lineCap path start step = do
       size <- either (\e -> const 0 (e :: IOException)) id <$> try (hFileSize hdl)
       if size > fromIntegral cap then pure (Left tooLong) else do
         src <- newLineReader hdl cap lineCap
-        let -- the next line that is not blank, with its number
-            nextText = nextLine src >>= \r -> case r of
-              Left fault            -> pure (Left (faultText fault))
-              Right Nothing         -> pure (Right Nothing)
-              Right (Just (i, bs))  -> case utf8TextFrom name i bs of
+        let -- the next line that is not blank, with its number and
+            -- whether a newline ends it; after the header, a last line
+            -- cut off in the middle of a character (not UTF-8, with no
+            -- newline after it) is no whole line either: read as empty
+            nextText afterHeader = nextLineEnded src >>= \r -> case r of
+              Left fault                  -> pure (Left (faultText fault))
+              Right Nothing               -> pure (Right Nothing)
+              Right (Just (i, bs, ended)) -> case utf8TextFrom name i bs of
+                Left _ | afterHeader && not ended -> pure (Right (Just (i, "", False)))
                 Left e              -> pure (Left e)
-                Right l | blank l   -> nextText
-                        | otherwise -> pure (Right (Just (i, l)))
-            body h prev s = nextText >>= \r -> case r of
+                Right l | blank l   -> nextText afterHeader
+                        | otherwise -> pure (Right (Just (i, l, ended)))
+            body h prev s = nextText True >>= \r -> case r of
               Left e              -> pure (Left e)
-              Right Nothing       -> pure (Right (s, Nothing))
-              Right (Just (i, l)) -> case bodyLine loc h prev i l of
-                Left e          -> pure (Left e)
-                Right (Left f)  -> step s f >>= body h (lfTime f)
-                Right (Right m) -> nextText >>= \after -> pure $ case after of
-                  Left e             -> Left e
-                  Right Nothing      -> Right (s, Just m)
-                  Right (Just (j, _)) -> Left (loc j Nothing ++ afterSummary)
-        first <- nextText
+              Right Nothing       -> pure (Right (s, LogEnd Nothing Nothing))
+              Right (Just (i, l, ended))
+                | cutOff ended l -> pure (Right (s, LogEnd Nothing (Just i)))
+                | otherwise -> case bodyLine loc h prev i l of
+                    Left e          -> pure (Left e)
+                    Right (Left f)  -> step s f >>= body h (lfTime f)
+                    Right (Right m) -> nextText True >>= \after -> pure $ case after of
+                      Left e                 -> Left e
+                      Right Nothing          -> Right (s, LogEnd (Just m) Nothing)
+                      Right (Just (j, _, _)) -> Left (loc j Nothing ++ afterSummary)
+        first <- nextText False
         case first of
-          Left e               -> pure (Left e)
-          Right Nothing        -> pure (Left (loc 1 Nothing ++ emptyLog))
-          Right (Just (i, l))  -> case headerLine loc i l of
+          Left e                     -> pure (Left e)
+          Right Nothing              -> pure (Left (loc 1 Nothing ++ emptyLog))
+          Right (Just (i, l, ended)) -> case headerLine loc ended i l of
             Left e  -> pure (Left e)
             Right h -> start h >>= body h 0
     name = displayPath path   -- (a name with control characters escaped)

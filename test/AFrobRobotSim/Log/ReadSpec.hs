@@ -3,6 +3,8 @@
 -- and reason; files read as world files are, at most so many bytes.
 module AFrobRobotSim.Log.ReadSpec (spec) where
 
+import qualified Data.ByteString          as BS
+import qualified Data.ByteString.Char8    as BC
 import           Data.Char                (isPrint)
 import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf)
 import           System.Directory         (getTemporaryDirectory, removeFile)
@@ -130,8 +132,8 @@ spec = do
       let path = dir </> "run.jsonl"
       writeFile path fixtureLogText
       r <- foldLogFile path (\h -> pure (h, [])) (\(h, ts) f -> pure (h, lfTime f : ts))
-      fmap (\((h, ts), s) -> (h, reverse ts, s)) r
-        `shouldBe` Right (rlHeader fixtureLog, map lfTime (rlFrames fixtureLog), rlSummary fixtureLog)
+      fmap (\((h, ts), end) -> (h, reverse ts, end)) r
+        `shouldBe` Right (rlHeader fixtureLog, map lfTime (rlFrames fixtureLog), LogEnd (rlSummary fixtureLog) Nothing)
       -- a frame line just over the limit, after the header
       writeFile path (head (lines fixtureLogText) ++ "\n" ++ replicate (maxLogLineBytes + 1) ' ' ++ "\n")
       r' <- foldLogFile path (const (pure ())) (\_ _ -> pure ())
@@ -143,6 +145,44 @@ spec = do
       fmap (const ()) r'' `shouldBe` Right ()
   it "reads a log cut short (no summary) (fixed)" $
     fmap rlSummary (readLog (unlines (take 10 (lines fixtureLogText)))) `shouldBe` Right Nothing
+  describe "a log whose last line stops in its middle (a full disk's)" $ do
+    let ls = lines fixtureLogText
+        -- ten whole lines (the header and nine frames), then the first
+        -- half of the eleventh, with no newline after it
+        cut = unlines (take 10 ls) ++ take (length (ls !! 10) `div` 2) (ls !! 10)
+        whole10 = readLog (unlines (take 10 ls))
+    it "reads as its whole lines, with no summary, and gives the cut line's number" $ do
+      fmap rlCutLine whole10 `shouldBe` Right Nothing
+      readLog cut `shouldBe` fmap (\l -> l { rlCutLine = Just 11 }) whole10
+      fmap (length . rlFrames) (readLog cut) `shouldBe` Right 9
+    it "loses only the summary when the summary's line is the one cut" $ do
+      let cutSummary = take (length fixtureLogText - 20) fixtureLogText   -- (the summary line is longer)
+      readLog cutSummary `shouldBe` Right fixtureLog { rlSummary = Nothing, rlCutLine = Just 53 }
+    it "reads a whole last line without a newline as a line, not as cut" $
+      readLog (init fixtureLogText) `shouldBe` Right fixtureLog
+    it "refuses a broken last line that a newline ends, and a whole one that is wrong" $ do
+      readLog (cut ++ "\n") `shouldSatisfy` either ("line 11, column " `isPrefixOf`) (const False)
+      -- (a whole frame with a robot at x = infinity, with no newline: a
+      -- fault, not a cut)
+      readLog (unlines (take 10 ls) ++ setFirst "\"x\":" "1e999" (ls !! 10))
+        `shouldSatisfy` either ("line 11: robot 1 of the frame" `isPrefixOf`) (const False)
+    it "refuses a log cut in its header, saying that the line stops with no newline" $ do
+      readLog (take 30 fixtureLogText) `shouldSatisfy`
+        either ("(the line stops with no newline after it: did the run that wrote the log stop as it began, or its disk fill up?)" `isSuffixOf`)
+               (const False)
+      readLog "# a README" `shouldSatisfy` either ("or its disk fill up?)" `isSuffixOf`) (const False)
+    it "is read so from a file too (readLogFile, foldLogFile), also when cut in a character" $ withTempDir $ \dir -> do
+      let path = dir </> "cut.jsonl"
+      writeFile path cut
+      readLogFile path `shouldReturn` readLog cut
+      r <- foldLogFile path (const (pure (0 :: Int))) (\n _ -> pure (n + 1))
+      r `shouldBe` Right (9, LogEnd Nothing (Just 11))
+      -- (a last line cut inside a two-byte character: not UTF-8, no newline)
+      BS.writeFile path (BS.append (BC.pack (unlines (take 10 ls) ++ "{\"kind\":\"frame\",\"msg\":\"")) (BS.pack [0xc3]))
+      fmap rlCutLine <$> readLogFile path `shouldReturn` Right (Just 11)
+      -- (the same bad byte with a newline after it is refused as before)
+      BS.writeFile path (BS.append (BC.pack (unlines (take 10 ls) ++ "{\"kind\":\"frame\",\"msg\":\"")) (BS.pack [0xc3, 0x0a]))
+      fmap rlCutLine <$> readLogFile path `shouldReturn` Left (path ++ ":11:24: invalid UTF-8 (byte 0xc3)")
 
 -- @setFirst key v line@: the number after the first @key@ in @line@
 -- written @v@ instead.
