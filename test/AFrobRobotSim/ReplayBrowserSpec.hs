@@ -3,6 +3,7 @@
 -- the checks). Missing tools fail the test with how to install them.
 module AFrobRobotSim.ReplayBrowserSpec (spec) where
 
+import           Control.Exception        (finally)
 import           Control.Monad            (unless, when)
 import           Data.List                (isInfixOf, isPrefixOf, tails)
 import           System.Directory         (doesDirectoryExist, doesFileExist, findExecutable,
@@ -65,8 +66,8 @@ playFixture pageText = do
     asked <- lookupEnv "AFRP_REPLAY_SCREENSHOT"
     tmp <- getTemporaryDirectory
     shot <- maybe (openTempFile tmp "afrp-replay.png" >>= \(f, h) -> f <$ hClose h) pure asked
-    out <- runPageScript "replay.test.js" [shot] pageText
-    when (asked == Nothing) (removeFile shot)
+    -- (the temporary screenshot removed also when the script fails)
+    out <- runPageScript "replay.test.js" [shot] pageText `finally` when (asked == Nothing) (removeFile shot)
     out `shouldSatisfy` (("the page has the log's frames (" ++ show (length (rlFrames fixtureLog)) ++ ")") `isInfixOf`)
 
 -- | @runPageScript script args page@ runs test/browser/@script@ with node
@@ -91,7 +92,7 @@ runPageScript script args pageText = do
     hClose h
     writeFile page pageText
     (code, out, err) <- readProcessWithExitCode (maybe "node" id node) (("test" </> "browser" </> script) : page : args) ""
-    removeFile page
+                          `finally` removeFile page
     case code of
       ExitSuccess   -> pure out
       ExitFailure c -> do
