@@ -363,13 +363,21 @@ takeEvents n0 = SF (lazyN (go n0))
 -- | Suppress the first @n@ occurrences, then let all through; an
 -- occurrence at time 0 is the first suppressed. For @n <= 0@ it lets
 -- every occurrence through, as in Yampa.
+--
+-- Until the @n@-th occurrence has passed, the output is 'NoEvent' whatever
+-- the input: whether a sample is an occurrence is looked at in the next
+-- step, as Yampa's (a decoupled switch) looks at it. So an undefined
+-- input sample there makes the next sample undefined, not its own output
+-- (as in Yampa 0.15; before, afrp's output at that sample was undefined).
 dropEvents :: Int -> SF (Event a) (Event a)
-dropEvents n0 = SF (lazyN (go n0))
+dropEvents n0 = SF (go n0)
   where
     go n | n <= 0    = idN
-         | otherwise = NStep (\_ e -> case e of
-             NoEvent -> (# go n, NoEvent #)
-             Event _ -> (# go (n - 1), NoEvent #))
+         | otherwise = NStep (\_ e -> (# counted n e, NoEvent #))
+    -- (the sample @e@ counted, at the start of the next step)
+    counted n e = NStep (\dt e' -> case e of
+      NoEvent -> stepN (go n) dt e'
+      Event _ -> stepN (go (n - 1)) dt e')
 
 -- | One occurrence at time 0 carrying the input sample there.
 snap :: SF a (Event a)

@@ -295,6 +295,13 @@ spec = do
       runDt 1 (dropEvents 2) [e 1, n, e 2, e 3, n, e (4 :: Int)] `shouldBe` [n, n, n, e 3, n, e 4]
     it "with 0 is the identity" $
       runDt 1 (dropEvents 0) [e 'a', n, e 'b'] `shouldBe` [e 'a', n, e 'b']
+    it "does not look at an input sample before the next sample while it drops (as Yampa)" $ do
+      let bad = error "input" :: Event Int
+      take 2 (runDt 1 (dropEvents 1) [n, bad, e 1]) `shouldBe` [n, n]
+      take 3 (runDt 1 (dropEvents 2) [e 1, n, bad, e 2]) `shouldBe` [n, n, n]
+      forceEvents (runDt 1 (dropEvents 1) [n, bad, e 1]) `shouldThrow` errorCall "input"
+      -- (once the occurrences are dropped, the input is the output)
+      forceEvents (take 2 (runDt 1 (dropEvents 1) [e 0, bad])) `shouldThrow` errorCall "input"
 
   describe "snap" $ do
     it "occurs at time 0 only, carrying the input there" $
