@@ -307,4 +307,4 @@ foldLogFileUpTo cap lineCap path start step = do
       Unreadable e -> cannotRead path e
       TooManyBytes -> tooLong
       LongLine i -> loc i Nothing ++ "a line of more than " ++ show lineCap ++ " bytes, more than this reader"
-                    ++ " takes (a frame of 10,000 robots is about 4 MB; is it a run log?)"
+                    ++ " takes (a frame of 100,000 robots is about 38 MB; is it a run log?)"

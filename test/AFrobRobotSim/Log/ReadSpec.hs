@@ -120,7 +120,7 @@ spec = do
     -- an endless line is refused at its limit, not read to the file's
     z' <- readLogFile "/dev/zero"
     fmap (const ()) z' `shouldBe` Left ("/dev/zero:1: a line of more than " ++ show maxLogLineBytes
-                                        ++ " bytes, more than this reader takes (a frame of 10,000 robots is about 4 MB; is it a run log?)")
+                                        ++ " bytes, more than this reader takes (a frame of 100,000 robots is about 38 MB; is it a run log?)")
     -- within the limit, the file is read as a log (here: not one)
     s <- readLogFileUpTo 400 path
     s `shouldSatisfy` either (not . ("more than" `isInfixOf`)) (const False)
@@ -138,7 +138,7 @@ spec = do
       writeFile path (head (lines fixtureLogText) ++ "\n" ++ replicate (maxLogLineBytes + 1) ' ' ++ "\n")
       r' <- foldLogFile path (const (pure ())) (\_ _ -> pure ())
       fmap (const ()) r' `shouldBe` Left (path ++ ":2: a line of more than 67108864 bytes, more than this reader takes"
-                                          ++ " (a frame of 10,000 robots is about 4 MB; is it a run log?)")
+                                          ++ " (a frame of 100,000 robots is about 38 MB; is it a run log?)")
       -- and one at the limit is read (here: blank, so skipped)
       writeFile path (head (lines fixtureLogText) ++ "\n" ++ replicate maxLogLineBytes ' ' ++ "\n")
       r'' <- foldLogFile path (const (pure ())) (\_ _ -> pure ())
