@@ -70,6 +70,7 @@ import qualified AFrobRobotSim.SpatialIndexSpec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified AFrobRobotSim.WorldFile.GrammarSpec
 import qualified AFrobRobotSim.WorldSpec
+import qualified AFrobRobotSim.World.CheckSpec
 import qualified AFrobRobotSim.WorkersSpec
 import qualified AFrobRobotSim.PipelineSpec
 import qualified NetworksSpec
@@ -144,6 +145,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec
   describe "AFrobRobotSim.WorldFile.Grammar" AFrobRobotSim.WorldFile.GrammarSpec.spec
   describe "AFrobRobotSim.World" AFrobRobotSim.WorldSpec.spec
+  describe "AFrobRobotSim.World.Check" AFrobRobotSim.World.CheckSpec.spec
   describe "AFrobRobotSim.Workers" AFrobRobotSim.WorkersSpec.spec
   describe "AFrobRobotSim.Pipeline" AFrobRobotSim.PipelineSpec.spec
   describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec
