@@ -121,12 +121,16 @@ runSimWith :: SimOptions -> Maybe WorldTemplate -> SimbotController -> SimbotCon
 runSimWith opts mworld rcA rcB = do
   tolerantOutput   -- (a message the terminal's encoding cannot write must not stop the run)
   prog  <- getProgName
+  -- (the world checked once: a file's by its reader, each problem with
+  -- its line; one given in code here; the run does not check it again,
+  -- see 'simulateValidated')
   world <- case optWorldFile opts of
     Just file -> readWorldFile file >>= either (\e -> failWith 2 (prog ++ ": " ++ e)) pure
-    Nothing   -> pure (maybe defaultWorld id mworld)
-  case validateWorld world of
-    Left errs -> failWith 2 (unlines ((prog ++ ": the world is invalid:") : map ("  " ++) errs))
-    Right ()  -> pure ()
+    Nothing   -> do
+      let world = maybe defaultWorld id mworld
+      case validateWorld world of
+        Left errs -> failWith 2 (unlines ((prog ++ ": the world is invalid:") : map ("  " ++) errs))
+        Right ()  -> pure world
   if optDumpWorld opts
     then do
       let text = renderWorld world
@@ -209,7 +213,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
                | otherwise      = ""
       svgEvery = max 1 (nSteps `div` svgMaxPoints)
       nRobots  = length [ () | o <- world, Just _ <- [robotKindOf o] ]
-      states   = take (nSteps + 1) (simulateWith cfg world rcA rcB)
+      states   = take (nSteps + 1) (simulateValidated cfg world rcA rcB)
   mrec <- forM (optReplay opts) $ \file -> do
     r <- try (newReplayRecorder replayCfg)
     either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r

@@ -70,6 +70,7 @@ module AFrobRobotSim.Simulator
   ( -- * Running
     simulate
   , simulateWith
+  , simulateValidated
   , SimConfig (..)
   , defaultSimConfig
   , maxTimeStep
@@ -263,14 +264,25 @@ data Engine = Engine
 simulateWith :: SimConfig -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
 simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
   Left errs -> error ("AFrobRobotSim.simulate: invalid world:\n  " ++ unlinesIndented errs)
-  Right ()
-    | not (simDt cfg > 0 && simDt cfg <= maxTimeStep) ->
-        error ("AFrobRobotSim.simulate: the time step must be positive and at most "
-               ++ show maxTimeStep ++ " s, got " ++ show (simDt cfg))
-    | not (simOdometryNoise cfg >= 0 && simOdometryNoise cfg <= maxOdometryNoise) ->
-        error ("AFrobRobotSim.simulate: the odometry noise must be from 0 to "
-               ++ show maxOdometryNoise ++ ", got " ++ show (simOdometryNoise cfg))
-    | otherwise -> run engine0
+  Right ()  -> simulateValidated cfg world rcA rcB
+
+-- | 'simulateWith' of a world that its caller has already found valid
+-- with @'validateWorldIn' ('simBounds' cfg)@, which is not checked again
+-- (the time step and odometry noise are): the runner
+-- ("AFrobRobotSim.Run") checks a world once, before its outputs are
+-- made, and a check of a world of 100,000 objects takes up to a second
+-- or so. A world that is not valid runs as it is, with whatever the
+-- physics makes of its overlaps: call 'simulateWith' unless the world
+-- was checked. (Not re-exported by "AFrobRobotSim".)
+simulateValidated :: SimConfig -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
+simulateValidated cfg world rcA rcB
+  | not (simDt cfg > 0 && simDt cfg <= maxTimeStep) =
+      error ("AFrobRobotSim.simulate: the time step must be positive and at most "
+             ++ show maxTimeStep ++ " s, got " ++ show (simDt cfg))
+  | not (simOdometryNoise cfg >= 0 && simOdometryNoise cfg <= maxOdometryNoise) =
+      error ("AFrobRobotSim.simulate: the odometry noise must be from 0 to "
+             ++ show maxOdometryNoise ++ ", got " ++ show (simOdometryNoise cfg))
+  | otherwise = run engine0
   where
     dt = simDt cfg
     bounds = worldBoundsOr (simBounds cfg) world
