@@ -17,7 +17,8 @@
 -- The page draws the world like the frames ("AFrobRobotSim.Render":
 -- same colours, shapes and robot shades), and has play/pause (space),
 -- one frame back and forth (arrow keys), a time slider, a speed, toggles
--- for range rays, trails and tracker sightings, and a panel with the
+-- for range rays, trails and tracker sightings, and beside the canvas
+-- (below it in a window narrower than about 980 pixels) a panel with the
 -- readings, wheel speeds and messages of the robot last clicked. It
 -- zooms (the mouse wheel, or a touchpad's pinch, about the point under
 -- it; two fingers' pinch on a touch screen, about their midpoint; the
