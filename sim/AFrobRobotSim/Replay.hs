@@ -19,7 +19,10 @@
 -- one frame back and forth (arrow keys), a time slider, a speed, toggles
 -- for range rays, trails and tracker sightings, and beside the canvas
 -- (below it in a window narrower than about 980 pixels) a panel with the
--- readings, wheel speeds and messages of the robot last clicked. It
+-- readings, wheel speeds and messages of the robot last clicked, and
+-- the run's events: bumps, scores, the robots' messages and the other
+-- console lines, the last 30 up to the frame, newest last and scrolled
+-- into view. It
 -- zooms (the mouse wheel, or a touchpad's pinch, about the point under
 -- it; two fingers' pinch on a touch screen, about their midpoint; the
 -- @+@ and @-@ buttons and keys, about the middle; up to 250 pixels a

@@ -9,6 +9,9 @@
 // Checked:
 // - the side panel sits beside the canvas at 1200 by 800, and below it
 //   on a narrow window;
+// - the events panel shows the newest line up to the frame, last and
+//   scrolled into view, also after a step back, and has the robots'
+//   messages, the scores and the bumps;
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
 'use strict';
@@ -48,6 +51,49 @@ run('node replay-usability.test.js PAGE.html', async (page, errors, open) => {
           'at 700 by 800 it is below the canvas, within the window (top ' + Math.round(narrow.side.top) + ', canvas bottom ' +
           Math.round(narrow.canvas.bottom) + ')');
     await page.setViewportSize({ width: 1200, height: 800 });
+
+    // the events panel: the newest line up to the frame in view, after a step back too
+    const panel = () => R(() => {
+      const el = document.getElementById('events'), lines = el.textContent.split('\n');
+      const R = window.afrpReplay, k = R.frame();
+      // the newest time of an event or a message up to the frame
+      let newest = -1;
+      for (let j = 0; j <= k; j++) {
+        const f = R.frameData(j);
+        f.events.forEach(e => { newest = Math.max(newest, e.t); });
+        f.robots.forEach(r => r.messages.forEach(m => { newest = Math.max(newest, m[0]); }));
+      }
+      return { frame: k, text: el.textContent, last: lines[lines.length - 1], count: lines.length, newest: newest,
+               atEnd: el.scrollTop + el.clientHeight >= el.scrollHeight - 1, overflows: el.scrollHeight > el.clientHeight + 20 };
+    });
+    const newestShown = p => p.last.startsWith('[' + p.newest.toFixed(2) + ']') && p.atEnd && p.overflows;
+    const describe = p => 'frame ' + p.frame + ', ' + p.count + ' lines, newest ' + p.newest.toFixed(2) + ', last "' + p.last +
+                          '", scrolled to the end: ' + p.atEnd;
+    await R(() => window.afrpReplay.setFrame(750));
+    const at30 = await panel();
+    check(newestShown(at30), 'at 30 s the events panel shows its newest line, last and in view (' + describe(at30) + ')');
+    check(at30.count === 30, 'it keeps the last 30 lines (' + at30.count + ')');
+    check(at30.text.includes('[30.00] SimbotA 1: tick'), 'the robots\' messages are among the events ("[30.00] SimbotA 1: tick")');
+    check(at30.text.includes('[30.00] score: seconds scores: 30'), 'and the scores ("[30.00] score: seconds scores: 30")');
+    await page.evaluate(() => document.activeElement && document.activeElement.blur());
+    await page.keyboard.press('ArrowLeft');
+    const back = await panel();
+    check(back.frame === 749 && !back.text.includes('[30.00]') && newestShown(back),
+          'a step back drops the lines of 30 s and still shows the newest, last and in view (' + describe(back) + ')');
+    await R(() => window.afrpReplay.setFrame(1200));
+    await R(() => window.afrpReplay.setFrame(400));
+    const jumped = await panel();
+    check(newestShown(jumped), 'so does a jump back (' + describe(jumped) + ')');
+    const bump = await R(() => {
+      const R = window.afrpReplay;
+      for (let j = 0; j < R.frameCount(); j++) {
+        const e = R.frameData(j).events.find(e => e.kind === 'bump');
+        if (e) { R.setFrame(j); return { frame: j, text: '[' + e.t.toFixed(2) + '] bump: ' + e.text }; }
+      }
+      return null;
+    });
+    const atBump = await panel();
+    check(bump !== null && atBump.last === bump.text, 'a bump is the newest line at its frame (' + JSON.stringify(bump) + ')');
 
     check(errors.length === 0, 'no errors on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
 });

@@ -353,13 +353,36 @@
     if (msgs.length === 0) msgs.push('  none');
     el.textContent = out.concat(msgs.slice(-50)).join('\n');
   }
+  // The events panel's lines in the run's order, made once: each frame's
+  // events (a bump, a score) and its robots' messages, by time, then the
+  // console lines no robot printed; 'eventsUpTo[j]', how many of them
+  // frames 0 to j have. (The messages were only in the selected robot's
+  // panel; and the lines were gathered from frame 0 at every frame drawn.)
+  var eventLines = [], eventsUpTo = [];
+  frames.forEach(function (f) {
+    var own = [];
+    f.events.forEach(function (e) { own.push([e.t, '[' + e.t.toFixed(2) + '] ' + e.kind + ': ' + e.text]); });
+    f.robots.forEach(function (r, i) {
+      var who = header.robots[i].type + ' ' + header.robots[i].id;
+      r.messages.forEach(function (m) { own.push([m[0], '[' + m[0].toFixed(2) + '] ' + who + ': ' + m[1]]); });
+    });
+    // (Array.prototype.sort is stable: a step's events, then its messages)
+    own.sort(function (x, y) { return x[0] - y[0]; });
+    own.forEach(function (l) { eventLines.push(l[1]); });
+    f.console.forEach(function (c) { eventLines.push(c); });
+    eventsUpTo.push(eventLines.length);
+  });
+  // The last 30 lines up to the frame, newest last (as the messages in
+  // the robot's panel), scrolled to the end so that the newest shows, also
+  // after a step back; the panel is left as it is (and where the user
+  // scrolled it) while the frame brings no line and takes none away.
+  var eventsShown = -1;
   function showEvents() {
-    var evs = [];
-    for (var j = 0; j <= state.frame; j++) {
-      frames[j].events.forEach(function (e) { evs.push('[' + e.t.toFixed(2) + '] ' + e.kind + ': ' + e.text); });
-      frames[j].console.forEach(function (c) { evs.push(c); });
-    }
-    $('events').textContent = evs.slice(-30).join('\n');
+    var n = eventsUpTo[state.frame], el = $('events');
+    if (n === eventsShown) return;
+    eventsShown = n;
+    el.textContent = eventLines.slice(Math.max(0, n - 30), n).join('\n');
+    el.scrollTop = el.scrollHeight;
   }
 
   function setFrame(i) {
