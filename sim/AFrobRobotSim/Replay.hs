@@ -16,7 +16,9 @@
 --
 -- The page draws the world like the frames ("AFrobRobotSim.Render":
 -- same colours, shapes and robot shades), and has play/pause (space),
--- one frame back and forth (arrow keys), a time slider, a speed, toggles
+-- one frame back and forth (arrow keys), a time slider (held while
+-- playing, it keeps the frame; playing goes on from where it is let
+-- go), a speed, toggles
 -- for range rays, trails and tracker sightings, and beside the canvas
 -- (below it in a window narrower than about 980 pixels) a panel with the
 -- readings, wheel speeds and messages of the robot last clicked, and

@@ -12,6 +12,8 @@
 // - the events panel shows the newest line up to the frame, last and
 //   scrolled into view, also after a step back, and has the robots'
 //   messages, the scores and the bumps;
+// - the slider held while playing keeps its frame, and playing goes on
+//   from where it was let go (a paused page stays paused);
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
 'use strict';
@@ -94,6 +96,39 @@ run('node replay-usability.test.js PAGE.html', async (page, errors, open) => {
     });
     const atBump = await panel();
     check(bump !== null && atBump.last === bump.text, 'a bump is the newest line at its frame (' + JSON.stringify(bump) + ')');
+
+    // the slider held while playing: the frame stays where the hand puts it; let go, playing goes on from there
+    const slider = await page.locator('#slider').boundingBox();
+    const along = f => [slider.x + slider.width * f, slider.y + slider.height / 2];
+    const now = () => R(() => ({ frame: window.afrpReplay.frame(), playing: window.afrpReplay.playing(),
+                                 value: Number(document.getElementById('slider').value),
+                                 t: window.afrpReplay.frameData().t }));
+    await R(() => { window.afrpReplay.setFrame(0); window.afrpReplay.play(); });
+    await page.waitForTimeout(300);
+    await page.mouse.move(...along(0.5));
+    await page.mouse.down();
+    await page.mouse.move(...along(0.4), { steps: 4 });
+    const held0 = await now();
+    await page.waitForTimeout(800);
+    const held1 = await now();
+    check(held0.playing && held1.playing && held1.frame === held0.frame && held1.value === held0.value && held1.value === held1.frame,
+          'while the slider is held, playing moves neither the frame nor the slider (' + JSON.stringify([held0, held1]) + ')');
+    await page.mouse.up();
+    await page.waitForTimeout(600);
+    const goneOn = await now();
+    check(goneOn.playing && goneOn.t - held1.t > 0.2 && goneOn.t - held1.t < 1.5,
+          'let go, playing goes on from where it was left (' + (goneOn.t - held1.t).toFixed(2) + ' s on from ' +
+          held1.t.toFixed(2) + ' s after 0.6 s)');
+    await R(() => window.afrpReplay.pause());
+    await page.mouse.move(...along(0.6));
+    await page.mouse.down();
+    await page.mouse.move(...along(0.7), { steps: 4 });
+    await page.waitForTimeout(300);
+    await page.mouse.up();
+    await page.waitForTimeout(300);
+    const paused = await now();
+    check(!paused.playing && paused.frame === paused.value && Math.abs(paused.frame / (n - 1) - 0.7) < 0.05,
+          'paused, the slider dragged leaves the page paused at the frame it was let go at (' + JSON.stringify(paused) + ')');
 
     check(errors.length === 0, 'no errors on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
 });

@@ -398,9 +398,13 @@
     draw();
     if (state.playing) requestAnimationFrame(tick);
   }
+  // (while the slider is held, playing leaves the frame to it, and takes
+  // no time: once it is let go, playing goes on from the frame it was left
+  // at; the playhead and the hand used to pull the slider each their way)
+  var sliderHeld = false;
   function tick(now) {
     if (!state.playing) return;
-    if (state.last !== null) {
+    if (state.last !== null && !sliderHeld) {
       state.simTime += (now - state.last) / 1000 * state.speed;
       var i = state.frame;
       while (i + 1 < frames.length && frames[i + 1].t <= state.simTime) i++;
@@ -423,6 +427,12 @@
 
   $('slider').max = String(frames.length - 1);
   $('slider').addEventListener('input', function () { setFrame(Number($('slider').value)); });
+  $('slider').addEventListener('pointerdown', function () { sliderHeld = true; });
+  // (let go anywhere, or the window left in the middle of the drag)
+  ['pointerup', 'pointercancel'].forEach(function (type) {
+    document.addEventListener(type, function () { sliderHeld = false; });
+  });
+  window.addEventListener('blur', function () { sliderHeld = false; });
   $('play').addEventListener('click', function () { setPlaying(!state.playing); });
   $('back').addEventListener('click', function () { setPlaying(false); setFrame(state.frame - 1); });
   $('fwd').addEventListener('click', function () { setPlaying(false); setFrame(state.frame + 1); });
