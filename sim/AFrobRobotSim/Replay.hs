@@ -18,7 +18,8 @@
 -- same colours, shapes and robot shades), and has play/pause (space),
 -- one frame back and forth (arrow keys), a time slider (held while
 -- playing, it keeps the frame; playing goes on from where it is let
--- go), a speed, toggles
+-- go), a speed (0.25x to 32x; frames that cannot be shown so fast are
+-- passed over, the time running at the speed), toggles
 -- for range rays, trails and tracker sightings, and beside the canvas
 -- (below it in a window narrower than about 980 pixels) a panel with the
 -- readings, wheel speeds and messages of the robot last clicked, and

@@ -14,6 +14,7 @@
 //   messages, the scores and the bumps;
 // - the slider held while playing keeps its frame, and playing goes on
 //   from where it was let go (a paused page stays paused);
+// - the speeds go up to 32x, and the time runs at the speed chosen;
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
 'use strict';
@@ -129,6 +130,27 @@ run('node replay-usability.test.js PAGE.html', async (page, errors, open) => {
     const paused = await now();
     check(!paused.playing && paused.frame === paused.value && Math.abs(paused.frame / (n - 1) - 0.7) < 0.05,
           'paused, the slider dragged leaves the page paused at the frame it was let go at (' + JSON.stringify(paused) + ')');
+
+    // the speeds: up to 32x, and the time runs at the speed chosen
+    const speeds = await R(() => Array.from(document.getElementById('speed').options).map(o => o.value));
+    check(['8', '16', '32'].every(v => speeds.includes(v)), 'the speeds go up to 32x (' + speeds.join(', ') + ')');
+    for (const v of ['8', '32']) {
+      if (!speeds.includes(v)) continue;
+      await page.selectOption('#speed', v);
+      const rate = await R(() => new Promise(done => {
+        const R = window.afrpReplay;
+        R.setFrame(0); R.play();
+        requestAnimationFrame(() => requestAnimationFrame(() => {
+          const t0 = performance.now(), s0 = R.frameData().t;
+          setTimeout(() => done({ real: (performance.now() - t0) / 1000, sim: R.frameData().t - s0, playing: R.playing() }), 1000);
+        }));
+      }));
+      await R(() => window.afrpReplay.pause());
+      const r = rate.sim / rate.real;
+      check(Math.abs(r / Number(v) - 1) < 0.15, 'at ' + v + 'x the time runs ' + r.toFixed(2) + ' times as fast as the clock (' +
+            rate.sim.toFixed(2) + ' s in ' + rate.real.toFixed(3) + ' s)');
+    }
+    await page.selectOption('#speed', '1');
 
     check(errors.length === 0, 'no errors on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
 });
