@@ -15,6 +15,7 @@
 // - the slider held while playing keeps its frame, and playing goes on
 //   from where it was let go (a paused page stays paused);
 // - the speeds go up to 32x, and the time runs at the speed chosen;
+// - keys with Ctrl, Meta or Alt are left to the browser;
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
 'use strict';
@@ -151,6 +152,32 @@ run('node replay-usability.test.js PAGE.html', async (page, errors, open) => {
             rate.sim.toFixed(2) + ' s in ' + rate.real.toFixed(3) + ' s)');
     }
     await page.selectOption('#speed', '1');
+
+    // keys with Ctrl, Meta or Alt are the browser's: the page neither acts on them nor takes them
+    await page.evaluate(() => {
+      document.activeElement && document.activeElement.blur();
+      window.__taken = [];
+      window.addEventListener('keydown', e => { if (e.defaultPrevented) window.__taken.push(e.key); });
+      window.afrpReplay.setFrame(100); window.afrpReplay.setView(2, 0, 0);
+    });
+    const state = () => R(() => ({ frame: window.afrpReplay.frame(), zoom: window.afrpReplay.view().zoom,
+                                   playing: window.afrpReplay.playing(), taken: window.__taken.slice() }));
+    const before = await state();
+    const keys = ['Control+0', 'Control+Equal', 'Control+Minus', 'Control+ArrowRight', 'Control+ArrowLeft', 'Control+Space',
+                  'Meta+ArrowRight', 'Meta+0', 'Alt+0', 'Alt+Equal'];
+    const moved = [];
+    for (const k of keys) {
+      await page.keyboard.press(k);
+      const s = await state();
+      if (s.frame !== before.frame || s.zoom !== before.zoom || s.playing || s.taken.length) moved.push(k + ' -> ' + JSON.stringify(s));
+      if (s.playing) await R(() => window.afrpReplay.pause());
+    }
+    check(moved.length === 0, 'keys with Ctrl, Meta or Alt neither step, zoom nor play, and are not taken from the browser' +
+          (moved.length ? ' (' + moved.join('; ') + ')' : ''));
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('0');
+    const plain = await state();
+    check(plain.frame === 101 && plain.zoom === 1, 'without them, the keys still step and fit (' + JSON.stringify(plain) + ')');
 
     check(errors.length === 0, 'no errors on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
 });

@@ -576,6 +576,10 @@
   $('fit').addEventListener('click', fit);
   document.addEventListener('keydown', function (e) {
     if (e.target && e.target.tagName === 'SELECT') return;
+    // (a key with Ctrl, Meta or Alt is the browser's: Ctrl+0, Ctrl+plus
+    // and Ctrl+minus zoom the page, Alt+left goes back; Shift is left in,
+    // as + is Shift+= on many keyboards)
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
     if (e.key === ' ') { e.preventDefault(); setPlaying(!state.playing); }
     else if (e.key === 'ArrowLeft') { e.preventDefault(); setPlaying(false); setFrame(state.frame - 1); }
     else if (e.key === 'ArrowRight') { e.preventDefault(); setPlaying(false); setFrame(state.frame + 1); }
