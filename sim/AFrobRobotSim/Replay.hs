@@ -26,7 +26,9 @@
 -- the run's events: bumps, scores, the robots' messages and the other
 -- console lines, the last 30 up to the frame, newest last and scrolled
 -- into view. Keys with Ctrl, Meta or Alt are left to the browser (its
--- zoom: Ctrl+0, Ctrl+plus, Ctrl+minus). It
+-- zoom: Ctrl+0, Ctrl+plus, Ctrl+minus). Its title names the run: the
+-- program (and the example) and the world file, from the log's command
+-- line (@simbot, world maze.world - afrp replay@). It
 -- zooms (the mouse wheel, or a touchpad's pinch, about the point under
 -- it; two fingers' pinch on a touch screen, about their midpoint; the
 -- @+@ and @-@ buttons and keys, about the middle; up to 250 pixels a

@@ -16,6 +16,7 @@
 //   from where it was let go (a paused page stays paused);
 // - the speeds go up to 32x, and the time runs at the speed chosen;
 // - keys with Ctrl, Meta or Alt are left to the browser;
+// - the title names the run's program and world file, as text;
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
 'use strict';
@@ -178,6 +179,11 @@ run('node replay-usability.test.js PAGE.html', async (page, errors, open) => {
     await page.keyboard.press('0');
     const plain = await state();
     check(plain.frame === 101 && plain.zoom === 1, 'without them, the keys still step and fit (' + JSON.stringify(plain) + ')');
+
+    // the title: the program and the world file, as text
+    const title = await R(() => ({ title: document.title, imgs: document.querySelectorAll('img').length }));
+    check(title.title === 'simbot, world <img src=x onerror=alert(1)>two.world - afrp replay' && title.imgs === 0,
+          'the title names the run\'s program and world, as text (' + JSON.stringify(title) + ')');
 
     check(errors.length === 0, 'no errors on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
 });

@@ -15,6 +15,19 @@
   }
   var lines = readLog();
   var header = lines[0];
+  // The run, for the page's title (a tab among others): its program (and
+  // the example, for afrp-examples NAME) and its world file, from its
+  // command line, e.g. "simbot, world maze.world - afrp replay".
+  function runName() {
+    var cl = header.commandLine || [], base = function (p) { return String(p).split(/[\\/]/).pop(); };
+    if (cl.length === 0) return '';
+    var name = base(cl[0]), w = cl.indexOf('--world');
+    if (cl.length > 1 && cl[1].charAt(0) !== '-') name += ' ' + cl[1];
+    if (w > 0 && w + 1 < cl.length) name += ', world ' + base(cl[w + 1]);
+    return name;
+  }
+  var run = runName();
+  document.title = (run ? run + ' - ' : '') + 'afrp replay';
   var frames = lines.filter(function (l) { return l.kind === 'frame'; });
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
   if (frames.length === 0) {
