@@ -47,7 +47,8 @@
 -- the canvas scrolls the page (a zoomed view takes every touch). In a big
 -- world a robot is drawn at least 1.5 pixels in radius, and the ids are
 -- drawn when they can be read: when at most 200 robots are in view, or
--- the robots are at least 8 pixels across.
+-- the robots are at least 8 pixels across; when a SimbotA and a
+-- SimbotB share an id, every id drawn has its type's letter (A1, B1).
 --
 -- For tests and tools the page exposes @window.afrpReplay@: @frameCount()@,
 -- @frame()@, @frameData(i)@, @setFrame(i)@, @play()@, @pause()@,

@@ -17,6 +17,7 @@
 // - the speeds go up to 32x, and the time runs at the speed chosen;
 // - keys with Ctrl, Meta or Alt are left to the browser;
 // - the title names the run's program and world file, as text;
+// - SimbotA 1 and SimbotB 1 are labelled A1 and B1.
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
 'use strict';
@@ -184,6 +185,22 @@ run('node replay-usability.test.js PAGE.html', async (page, errors, open) => {
     const title = await R(() => ({ title: document.title, imgs: document.querySelectorAll('img').length }));
     check(title.title === 'simbot, world <img src=x onerror=alert(1)>two.world - afrp replay' && title.imgs === 0,
           'the title names the run\'s program and world, as text (' + JSON.stringify(title) + ')');
+
+    // the labels of SimbotA 1 and SimbotB 1 differ (the texts the canvas is given, caught)
+    await R(() => window.afrpReplay.selectRobot(-1));
+    const labels = await R(() => {
+      const proto = CanvasRenderingContext2D.prototype, fillText = proto.fillText, texts = [];
+      proto.fillText = function (t) { texts.push(String(t)); return fillText.apply(this, arguments); };
+      try { window.afrpReplay.setFrame(0); } finally { proto.fillText = fillText; }
+      return texts;
+    });
+    check(labels.length === 2 && labels[0] !== labels[1], 'SimbotA 1 and SimbotB 1 are drawn with different labels (' +
+          JSON.stringify(labels) + ')');
+    check(JSON.stringify(labels) === '["A1","B1"]', 'A1 and B1');
+    await R(() => window.afrpReplay.selectRobot(1));
+    const head = (await page.locator('#info').textContent()).split('\n')[0];
+    check(head.startsWith('SimbotB 1 (drawn B1)'), 'the side panel names SimbotB 1 and its label (' + head + ')');
+    await R(() => window.afrpReplay.selectRobot(-1));
 
     check(errors.length === 0, 'no errors on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
 });

@@ -102,6 +102,18 @@
     var s = shades[r.type] || shades.other;
     return s[(k - 1) % s.length];
   });
+  // The id drawn beside each robot: its id, or, when robots of two types
+  // share an id (SimbotA 1 and SimbotB 1), its type's letter and its id
+  // (A1, B1) for every robot, so that no two labels are the same.
+  var typesOfId = {};
+  header.robots.forEach(function (r) {
+    var ts = typesOfId[r.id] || (typesOfId[r.id] = []);
+    if (ts.indexOf(r.type) < 0) ts.push(r.type);
+  });
+  var idsShared = Object.keys(typesOfId).some(function (k) { return typesOfId[k].length > 1; });
+  var robotLabels = header.robots.map(function (r) {
+    return idsShared ? String(r.type).replace(/^Simbot/, '') + r.id : String(r.id);
+  });
 
   // A layer: a canvas of the page's canvas's size, not in the page.
   function layer() {
@@ -291,7 +303,7 @@
     drawn = { robots: labels.length, labels: 0 };
     labels.forEach(function (l) {
       if (!crowd || l[2] >= 4 || l[0] === state.selected) {
-        ctx.fillText(String(header.robots[l[0]].id), l[1][0] + l[2] + 2, l[1][1] - l[2]);
+        ctx.fillText(robotLabels[l[0]], l[1][0] + l[2] + 2, l[1][1] - l[2]);
         drawn.labels++;
       }
     });
@@ -342,7 +354,8 @@
     }
     var i = state.selected, info = header.robots[i], r = frames[state.frame].robots[i];
     var out = [];
-    out.push(info.type + ' ' + info.id + '   at t = ' + frames[state.frame].t.toFixed(2) + ' s');
+    out.push(info.type + ' ' + info.id + (idsShared ? ' (drawn ' + robotLabels[i] + ')' : '') +
+             '   at t = ' + frames[state.frame].t.toFixed(2) + ' s');
     out.push('position  (' + num(r.x) + ', ' + num(r.y) + ') m   heading ' + num(r.heading) + ' rad');
     out.push('wheels    left ' + num(r.wheels[0]) + '  right ' + num(r.wheels[1]) + ' m/s');
     out.push('velocity  v ' + num(r.v) + ' m/s   omega ' + num(r.omega) + ' rad/s');
