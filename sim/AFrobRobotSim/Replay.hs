@@ -49,12 +49,17 @@
 -- drawn when they can be read: when at most 200 robots are in view, or
 -- the robots are at least 8 pixels across; when a SimbotA and a
 -- SimbotB share an id, every id drawn has its type's letter (A1, B1).
+-- The canvas has the screen's pixels: its @devicePixelRatio@ (from 1 to
+-- 2, as the page opened) a CSS pixel, shown at its size in CSS pixels;
+-- the sizes above are CSS pixels (a click's 3 pixels: of the canvas at
+-- that size).
 --
 -- For tests and tools the page exposes @window.afrpReplay@: @frameCount()@,
 -- @frame()@, @frameData(i)@, @setFrame(i)@, @play()@, @pause()@,
 -- @playing()@, @selectRobot(i)@, @selected()@, @selections()@ (how many
 -- clicks and taps have selected, a robot or none), @worldToCanvas(x,
--- y)@ and @canvasToWorld(px, py)@ (in the canvas's pixels, in the view),
+-- y)@ and @canvasToWorld(px, py)@ (in the canvas's pixels, in the view:
+-- twice the CSS pixels at a @devicePixelRatio@ of 2),
 -- @view()@ (@{zoom, cx, cy}@: the zoom, 1 for the whole world, and the
 -- world point in the middle), @setView(zoom, cx, cy)@, @maxZoom@,
 -- @drawn()@ (@{robots, labels, roughTrails}@: how many robots the last

@@ -64,6 +64,8 @@ spec = do
       (pageOf [OTSize 20 20, OTSimbotA 1 (Point2 3 2) 0, OTSimbotB 2 (Point2 (-3) (-2)) pi])
   it "passes a user's audit of its usability at 1200 by 800 (the checks: test/browser/replay-usability.test.js) (fixed)" $
     runPageTest "replay-usability.test.js" usabilityPage
+  it "draws with a HiDPI screen's pixels (2 a CSS pixel): the canvas shown as on a screen of 1, worldToCanvas in the canvas's pixels (fixed)" $
+    runPageTest "replay-hidpi.test.js" (replayPage fixtureLog)
   it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $
     playFixture (replayPage fixtureLog)
   it "plays it as well with its log split over several data elements, every frame read (fixed)" $ do

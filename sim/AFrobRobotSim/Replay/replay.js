@@ -40,18 +40,27 @@
   var $ = function (id) { return document.getElementById(id); };
   var b = header.bounds;
   var x0 = b.x - b.width / 2, y1 = b.y + b.height / 2;
-  var margin = 10;
-  // pixels a metre with the whole world in view (620 on its long side)
-  var fitScale = Math.min(620 / b.width, 620 / b.height);
+  // The canvas has 'dpr' pixels a CSS pixel, the screen's (its
+  // devicePixelRatio: 2 on many laptops and phones, where a canvas of CSS
+  // pixels was drawn blurred), at most 2 (the trails' copies below take
+  // dpr^2 times the memory) and at least 1, and is shown at its size in
+  // CSS pixels; the sizes drawn, in CSS pixels, are times dpr. (The ratio
+  // as the page opened: the browser's zoom changes it later.)
+  var dpr = clamp(window.devicePixelRatio || 1, 1, 2);
+  var margin = 10 * dpr;
+  // pixels a metre with the whole world in view (620 CSS pixels on its long side)
+  var fitScale = Math.min(620 / b.width, 620 / b.height) * dpr;
   canvas.width = Math.round(b.width * fitScale + 2 * margin);
   canvas.height = Math.round(b.height * fitScale + 2 * margin);
+  // (its border added: the style's box-sizing is border-box)
+  canvas.style.width = canvas.width / dpr + canvas.offsetWidth - canvas.clientWidth + 'px';
 
   // The view: the world point at the middle of the world's rectangle on
   // the canvas, and a zoom (1: the whole world; up to 250 pixels a metre,
   // or 1 if the whole world is already that close). Zoomed in, the view
   // stays within the world. 'scale' is the view's pixels a metre; 'vx0'
   // and 'vy1' the world's coordinates at the rectangle's top left corner.
-  var maxZoom = Math.max(1, 250 / fitScale);
+  var maxZoom = Math.max(1, 250 * dpr / fitScale);
   var view = { zoom: 1, cx: b.x, cy: b.y };
   var scale, vx0, vy1, fine, viewKey;
   function clamp(v, lo, hi) { return Math.max(lo, Math.min(hi, v)); }
@@ -62,7 +71,7 @@
     vx0 = view.cx - hw; vy1 = view.cy + hh;
     // In a big world a robot is a few pixels across: its rim, heading mark and
     // id shrink with it (full size from 30 px/m up, the notes' world included).
-    fine = Math.min(1, scale / 30);
+    fine = Math.min(1, scale / 30 / dpr);
     viewKey = view.zoom + ' ' + view.cx + ' ' + view.cy;
     // On a touch screen the whole world's view leaves a finger's vertical
     // swipe to the page, which scrolls (there is nothing to move: the view
@@ -136,7 +145,7 @@
       g.fillStyle = rgb(background); g.fillRect(0, 0, canvas.width, canvas.height);
       clipToWorld(g);
       var c0 = toCanvas(x0, y1);
-      g.lineWidth = 2; g.strokeStyle = 'rgb(45,45,45)';
+      g.lineWidth = 2 * dpr; g.strokeStyle = 'rgb(45,45,45)';
       g.strokeRect(c0[0], c0[1], b.width * scale, b.height * scale);
       // (walls and blocks at least a pixel wide and tall, about their
       // centre, so that a big world's thin walls still show, as its
@@ -148,8 +157,8 @@
         g.fillRect(c[0] - w / 2, c[1] - h / 2, w, h);
       };
       header.goals.forEach(function (k) { rect(k, 'rgba(60,170,60,0.25)', 0); });
-      header.walls.forEach(function (w) { rect(w, 'rgb(90,90,90)', 1); });
-      header.blocks.forEach(function (k) { rect(k, 'rgb(139,90,43)', 1); });
+      header.walls.forEach(function (w) { rect(w, 'rgb(90,90,90)', dpr); });
+      header.blocks.forEach(function (k) { rect(k, 'rgb(139,90,43)', dpr); });
       g.restore();
       still.view = viewKey;
     }
@@ -167,10 +176,10 @@
   var trails = layer();
   // A copy of the layer is kept at every keepEvery-th frame it passes
   // (every 25th, or every sixteenth of the frames on a longer page: at
-  // most 16 copies for a view, 1.6 MB each at the largest canvas),
-  // so that going back, a jump or the slider dragged backwards draws the
-  // paths from the nearest copy before the frame, not from the start (a
-  // 1000-robot, 30 s page: 0.2-0.6 s from the start).
+  // most 16 copies for a view, 1.6 MB each at the largest canvas, 6.6 MB
+  // at a dpr of 2), so that going back, a jump or the slider dragged
+  // backwards draws the paths from the nearest copy before the frame, not
+  // from the start (a 1000-robot, 30 s page: 0.2-0.6 s from the start).
   var keepEvery = Math.max(25, Math.ceil(frames.length / 16));
   trails.saved = [];
   // While the wheel, a drag or a pinch changes the view, redrawing the
@@ -215,7 +224,7 @@
           var p = toCanvas(frames[j].robots[i].x, frames[j].robots[i].y);
           if (j === from) g.moveTo(p[0], p[1]); else g.lineTo(p[0], p[1]);
         }
-        g.lineWidth = 1; g.strokeStyle = rgb(blend(0.5, typeColour(r.type), background)); g.stroke();
+        g.lineWidth = dpr; g.strokeStyle = rgb(blend(0.5, typeColour(r.type), background)); g.stroke();
       });
       g.restore();
       trails.upTo = to;
@@ -238,15 +247,16 @@
   // robot's). Robots with the same colours are drawn as one path (10,000
   // robots drawn one by one took about 0.2 s a frame); so are the rays,
   // the heading marks and the balls. Robots out of view are skipped.
+  // (These pixels, and the lines' widths, are CSS pixels: times dpr.)
   var drawn = { robots: 0, labels: 0 };
   function drawMoving(f) {
     var balls = new Path2D(), ballRadius = header.ballRadius * scale;
     f.balls.forEach(function (p) {
       var c = toCanvas(p[0], p[1]);
-      if (nearCanvas(c, ballRadius + 2)) { balls.moveTo(c[0] + ballRadius, c[1]); balls.arc(c[0], c[1], ballRadius, 0, 2 * Math.PI); }
+      if (nearCanvas(c, ballRadius + 2 * dpr)) { balls.moveTo(c[0] + ballRadius, c[1]); balls.arc(c[0], c[1], ballRadius, 0, 2 * Math.PI); }
     });
     ctx.fillStyle = 'rgb(255,140,0)'; ctx.fill(balls);
-    ctx.lineWidth = 1.5 * fine; ctx.strokeStyle = 'rgb(170,90,0)'; ctx.stroke(balls);
+    ctx.lineWidth = 1.5 * fine * dpr; ctx.strokeStyle = 'rgb(170,90,0)'; ctx.stroke(balls);
 
     var reach = 5 * scale;   // (a ray or a sighting is shorter than 5 m)
     var rays = $('rays').checked ? new Path2D() : null;
@@ -272,38 +282,38 @@
         r.seenRobots.forEach(function (s) { ray(seen.robots, s[2], 0, s[3]); });
         r.seenBalls.forEach(function (s) { ray(seen.balls, s[0], 0, s[1]); });
       }
-      if (!nearCanvas(here, radius + 40)) return;
+      if (!nearCanvas(here, radius + 40 * dpr)) return;
       var col = colours[i], selected = i === state.selected;
       var fill = rgb(r.bumper ? darken(0.6, col) : col), rim = r.bumper ? 'rgb(0,0,0)' : rgb(darken(0.5, col));
-      var width = selected ? Math.max(2, 4 * fine) : 2 * fine, key = fill + rim + width;
+      var width = (selected ? Math.max(2, 4 * fine) : 2 * fine) * dpr, key = fill + rim + width;
       var group = groups.get(key);
       if (!group) { group = { fill: fill, rim: rim, width: width, path: new Path2D() }; groups.set(key, group); }
-      var shown = Math.max(radius, 1.5);
+      var shown = Math.max(radius, 1.5 * dpr);
       group.path.moveTo(here[0] + shown, here[1]); group.path.arc(here[0], here[1], shown, 0, 2 * Math.PI);
-      if (radius >= 1.5) {
+      if (radius >= 1.5 * dpr) {
         marks.moveTo(here[0], here[1]);
         marks.lineTo(here[0] + radius * Math.cos(r.heading), here[1] - radius * Math.sin(r.heading));
       }
       labels.push([i, here, radius]);
     });
-    if (rays) { ctx.lineWidth = 1; ctx.strokeStyle = 'rgb(0,170,60)'; ctx.stroke(rays); }
+    if (rays) { ctx.lineWidth = dpr; ctx.strokeStyle = 'rgb(0,170,60)'; ctx.stroke(rays); }
     if (seen) {
-      ctx.setLineDash([4, 3]); ctx.lineWidth = 1;
+      ctx.setLineDash([4 * dpr, 3 * dpr]); ctx.lineWidth = dpr;
       ctx.strokeStyle = 'rgba(120,40,160,0.8)'; ctx.stroke(seen.robots);
       ctx.strokeStyle = 'rgba(200,110,0,0.8)'; ctx.stroke(seen.balls);
       ctx.setLineDash([]);
     }
     groups.forEach(function (g) {
       ctx.fillStyle = g.fill; ctx.fill(g.path);
-      if (g.width >= 0.5) { ctx.lineWidth = g.width; ctx.strokeStyle = g.rim; ctx.stroke(g.path); }
+      if (g.width >= 0.5 * dpr) { ctx.lineWidth = g.width; ctx.strokeStyle = g.rim; ctx.stroke(g.path); }
     });
-    ctx.lineWidth = 3 * fine; ctx.strokeStyle = 'rgb(255,255,255)'; ctx.stroke(marks);
+    ctx.lineWidth = 3 * fine * dpr; ctx.strokeStyle = 'rgb(255,255,255)'; ctx.stroke(marks);
     var crowd = labels.length > 200;
-    ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = Math.round(Math.max(8, 12 * fine)) + 'px sans-serif';
+    ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = Math.round(Math.max(8, 12 * fine) * dpr) + 'px sans-serif';
     drawn = { robots: labels.length, labels: 0 };
     labels.forEach(function (l) {
-      if (!crowd || l[2] >= 4 || l[0] === state.selected) {
-        ctx.fillText(robotLabels[l[0]], l[1][0] + l[2] + 2, l[1][1] - l[2]);
+      if (!crowd || l[2] >= 4 * dpr || l[0] === state.selected) {
+        ctx.fillText(robotLabels[l[0]], l[1][0] + l[2] + 2 * dpr, l[1][1] - l[2]);
         drawn.labels++;
       }
     });
@@ -454,7 +464,7 @@
     var f = frames[state.frame], best = -1, bestD = Infinity;
     f.robots.forEach(function (r, i) {
       var p = toCanvas(r.x, r.y), d = Math.hypot(p[0] - px, p[1] - py);
-      if (d <= Math.max(header.robots[i].radius * scale, 1.5) + reach && d < bestD) { best = i; bestD = d; }
+      if (d <= Math.max(header.robots[i].radius * scale, 1.5 * dpr) + reach && d < bestD) { best = i; bestD = d; }
     });
     return best;
   }
@@ -580,9 +590,10 @@
     startGesture();
   }
   // the robot a click or a tap at a canvas pixel selects (a finger's and a
-  // pen's reach in CSS pixels, the mouse's in canvas pixels)
+  // pen's reach in CSS pixels, the mouse's in the canvas's pixels at its
+  // own size, the CSS pixels of a canvas not scaled to fit)
   function select(p, kind) {
-    state.selected = robotAt(p[0], p[1], kind === 'mouse' ? 3 : (kind === 'touch' ? 16 : 8) * canvas.width / canvas.clientWidth);
+    state.selected = robotAt(p[0], p[1], kind === 'mouse' ? 3 * dpr : (kind === 'touch' ? 16 : 8) * canvas.width / canvas.clientWidth);
     selections++;
     draw();
   }
