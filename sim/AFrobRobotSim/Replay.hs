@@ -19,16 +19,16 @@
 -- one frame back and forth (arrow keys), a time slider (held while
 -- playing, it keeps the frame; playing goes on from where it is let
 -- go), a speed (0.25x to 32x; frames that cannot be shown so fast are
--- passed over, the time running at the speed), toggles
--- for range rays, trails and tracker sightings, and beside the canvas
--- (below it in a window narrower than about 980 pixels) a panel with the
--- readings, wheel speeds and messages of the robot last clicked, and
--- the run's events: bumps, scores, the robots' messages and the other
--- console lines, the last 30 up to the frame, newest last and scrolled
--- into view. Keys with Ctrl, Meta or Alt are left to the browser (its
--- zoom: Ctrl+0, Ctrl+plus, Ctrl+minus). Its title names the run: the
--- program (and the example) and the world file, from the log's command
--- line (@simbot, world maze.world - afrp replay@). It
+-- passed over, the time running at the speed), toggles for range rays,
+-- trails and tracker sightings, and beside the canvas (below it in a
+-- window narrower than about 980 pixels) a panel with the readings,
+-- wheel speeds and messages of the robot last clicked, and the run's
+-- events: bumps, scores, the robots' messages and the other console
+-- lines, the last 30 up to the frame, newest last and scrolled into
+-- view. Keys with Ctrl, Meta or Alt are left to the browser (its zoom:
+-- Ctrl+0, Ctrl+plus, Ctrl+minus). Its title names the run: the program
+-- (and the example) and the world file, from the log's command line
+-- (@simbot, world maze.world - afrp replay@). It
 -- zooms (the mouse wheel, or a touchpad's pinch, about the point under
 -- it; two fingers' pinch on a touch screen, about their midpoint; the
 -- @+@ and @-@ buttons and keys, about the middle; up to 250 pixels a
@@ -51,8 +51,8 @@
 -- SimbotB share an id, every id drawn has its type's letter (A1, B1).
 -- The canvas has the screen's pixels: its @devicePixelRatio@ (from 1 to
 -- 2, as the page opened) a CSS pixel, shown at its size in CSS pixels;
--- the sizes above are CSS pixels (a click's 3 pixels: of the canvas at
--- that size).
+-- the sizes above are CSS pixels, a click's 3 canvas pixels too (those
+-- of the canvas shown at its own size, not scaled to fit).
 --
 -- For tests and tools the page exposes @window.afrpReplay@: @frameCount()@,
 -- @frame()@, @frameData(i)@, @setFrame(i)@, @play()@, @pause()@,
