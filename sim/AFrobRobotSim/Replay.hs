@@ -16,9 +16,19 @@
 --
 -- The page draws the world like the frames ("AFrobRobotSim.Render":
 -- same colours, shapes and robot shades), and has play/pause (space),
--- one frame back and forth (arrow keys), a time slider, a speed, toggles
--- for range rays, trails and tracker sightings, and a panel with the
--- readings, wheel speeds and messages of the robot last clicked. It
+-- one frame back and forth (arrow keys), a time slider (held while
+-- playing, it keeps the frame; playing goes on from where it is let
+-- go), a speed (0.25x to 32x; frames that cannot be shown so fast are
+-- passed over, the time running at the speed), toggles for range rays,
+-- trails and tracker sightings, and beside the canvas (below it in a
+-- window narrower than about 980 pixels) a panel with the readings,
+-- wheel speeds and messages of the robot last clicked, and the run's
+-- events: bumps, scores, the robots' messages and the other console
+-- lines, the last 30 up to the frame, newest last and scrolled into
+-- view. Keys with Ctrl, Meta or Alt are left to the browser (its zoom:
+-- Ctrl+0, Ctrl+plus, Ctrl+minus). Its title names the run: the program
+-- (and the example) and the world file, from the log's command line
+-- (@simbot, world maze.world - afrp replay@). It
 -- zooms (the mouse wheel, or a touchpad's pinch, about the point under
 -- it; two fingers' pinch on a touch screen, about their midpoint; the
 -- @+@ and @-@ buttons and keys, about the middle; up to 250 pixels a
@@ -37,13 +47,19 @@
 -- the canvas scrolls the page (a zoomed view takes every touch). In a big
 -- world a robot is drawn at least 1.5 pixels in radius, and the ids are
 -- drawn when they can be read: when at most 200 robots are in view, or
--- the robots are at least 8 pixels across.
+-- the robots are at least 8 pixels across; when a SimbotA and a
+-- SimbotB share an id, every id drawn has its type's letter (A1, B1).
+-- The canvas has the screen's pixels: its @devicePixelRatio@ (from 1 to
+-- 2, as the page opened) a CSS pixel, shown at its size in CSS pixels;
+-- the sizes above are CSS pixels, a click's 3 canvas pixels too (those
+-- of the canvas shown at its own size, not scaled to fit).
 --
 -- For tests and tools the page exposes @window.afrpReplay@: @frameCount()@,
 -- @frame()@, @frameData(i)@, @setFrame(i)@, @play()@, @pause()@,
 -- @playing()@, @selectRobot(i)@, @selected()@, @selections()@ (how many
 -- clicks and taps have selected, a robot or none), @worldToCanvas(x,
--- y)@ and @canvasToWorld(px, py)@ (in the canvas's pixels, in the view),
+-- y)@ and @canvasToWorld(px, py)@ (in the canvas's pixels, in the view:
+-- twice the CSS pixels at a @devicePixelRatio@ of 2),
 -- @view()@ (@{zoom, cx, cy}@: the zoom, 1 for the whole world, and the
 -- world point in the middle), @setView(zoom, cx, cy)@, @maxZoom@,
 -- @drawn()@ (@{robots, labels, roughTrails}@: how many robots the last

@@ -29,6 +29,23 @@ pageOf w = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing Not
     states = take 101 (simulate 0.01 w slow slow)
     slow _ = constant (mrFinalize (ddVelDiff 0.2 0.2))
 
+-- | The page of a 60 s run in the notes' world (25 frames a second) with
+-- what a user's audit of the page needed: SimbotA 1 and SimbotB 1, which
+-- share an id; SimbotA 1, circling, prints "tick" every second; a score
+-- "seconds" rises every second; SimbotB 1 drives into a wall and sticks;
+-- the command line names a world file whose name is markup.
+usabilityPage :: String
+usabilityPage = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing)
+  where
+    world  = [OTSimbotA 1 (Point2 (-2) 0) 0, OTSimbotB 1 (Point2 2 1.5) 0, OTVWall (Point2 4 1.5)]
+    cfg    = defaultLogConfig { lcWorld = world, lcDt = 0.01, lcFps = 25
+                              , lcCommandLine = [ "simbot", "--world", "worlds/<img src=x onerror=alert(1)>two.world"
+                                                , "--seconds", "60" ]
+                              , lcScores = \s -> [("seconds", floor (wsTime s + 1e-9))] }
+    states = take 6001 (simulate 0.01 world ctrlA ctrlB)
+    ctrlA _ = repeatedly 1 "tick" >>> arr (\e -> mrFinalize (ddVelDiff 0.3 0.5 `mrMerge` tcoPrintMessage e))
+    ctrlB _ = constant (mrFinalize (ddVelDiff 0.5 0.5))
+
 spec :: Spec
 spec = do
   it "shows the whole of a 30 by 10 m and a 100 m world, robots near their far corners where the log says (fixed)" $
@@ -46,6 +63,10 @@ spec = do
   it "takes a touch screen's gestures: a pinch zooms about the fingers' midpoint and moves with it, a drag moves, a tap selects, and a phone's narrow screen shows the canvas scaled (fixed)" $
     runPageTest "replay-touch.test.js"
       (pageOf [OTSize 20 20, OTSimbotA 1 (Point2 3 2) 0, OTSimbotB 2 (Point2 (-3) (-2)) pi])
+  it "passes a user's audit of its usability at 1200 by 800 (the checks: test/browser/replay-usability.test.js) (fixed)" $
+    runPageTest "replay-usability.test.js" usabilityPage
+  it "draws with a HiDPI screen's pixels (2 a CSS pixel): the canvas shown as on a screen of 1, worldToCanvas in the canvas's pixels (fixed)" $
+    runPageTest "replay-hidpi.test.js" (replayPage fixtureLog)
   it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $
     playFixture (replayPage fixtureLog)
   it "plays it as well with its log split over several data elements, every frame read (fixed)" $ do

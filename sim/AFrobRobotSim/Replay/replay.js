@@ -15,6 +15,19 @@
   }
   var lines = readLog();
   var header = lines[0];
+  // The run, for the page's title (a tab among others): its program (and
+  // the example, for afrp-examples NAME) and its world file, from its
+  // command line, e.g. "simbot, world maze.world - afrp replay".
+  function runName() {
+    var cl = header.commandLine || [], base = function (p) { return String(p).split(/[\\/]/).pop(); };
+    if (cl.length === 0) return '';
+    var name = base(cl[0]), w = cl.indexOf('--world');
+    if (cl.length > 1 && cl[1].charAt(0) !== '-') name += ' ' + cl[1];
+    if (w > 0 && w + 1 < cl.length) name += ', world ' + base(cl[w + 1]);
+    return name;
+  }
+  var run = runName();
+  document.title = (run ? run + ' - ' : '') + 'afrp replay';
   var frames = lines.filter(function (l) { return l.kind === 'frame'; });
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
   if (frames.length === 0) {
@@ -27,18 +40,27 @@
   var $ = function (id) { return document.getElementById(id); };
   var b = header.bounds;
   var x0 = b.x - b.width / 2, y1 = b.y + b.height / 2;
-  var margin = 10;
-  // pixels a metre with the whole world in view (620 on its long side)
-  var fitScale = Math.min(620 / b.width, 620 / b.height);
+  // The canvas has 'dpr' pixels a CSS pixel, the screen's (its
+  // devicePixelRatio: 2 on many laptops and phones, where a canvas of CSS
+  // pixels was drawn blurred), at most 2 (the trails' copies below take
+  // dpr^2 times the memory) and at least 1, and is shown at its size in
+  // CSS pixels; the sizes drawn, in CSS pixels, are times dpr. (The ratio
+  // as the page opened: the browser's zoom changes it later.)
+  var dpr = clamp(window.devicePixelRatio || 1, 1, 2);
+  var margin = 10 * dpr;
+  // pixels a metre with the whole world in view (620 CSS pixels on its long side)
+  var fitScale = Math.min(620 / b.width, 620 / b.height) * dpr;
   canvas.width = Math.round(b.width * fitScale + 2 * margin);
   canvas.height = Math.round(b.height * fitScale + 2 * margin);
+  // (its border added: the style's box-sizing is border-box)
+  canvas.style.width = canvas.width / dpr + canvas.offsetWidth - canvas.clientWidth + 'px';
 
   // The view: the world point at the middle of the world's rectangle on
   // the canvas, and a zoom (1: the whole world; up to 250 pixels a metre,
   // or 1 if the whole world is already that close). Zoomed in, the view
   // stays within the world. 'scale' is the view's pixels a metre; 'vx0'
   // and 'vy1' the world's coordinates at the rectangle's top left corner.
-  var maxZoom = Math.max(1, 250 / fitScale);
+  var maxZoom = Math.max(1, 250 * dpr / fitScale);
   var view = { zoom: 1, cx: b.x, cy: b.y };
   var scale, vx0, vy1, fine, viewKey;
   function clamp(v, lo, hi) { return Math.max(lo, Math.min(hi, v)); }
@@ -49,7 +71,7 @@
     vx0 = view.cx - hw; vy1 = view.cy + hh;
     // In a big world a robot is a few pixels across: its rim, heading mark and
     // id shrink with it (full size from 30 px/m up, the notes' world included).
-    fine = Math.min(1, scale / 30);
+    fine = Math.min(1, scale / 30 / dpr);
     viewKey = view.zoom + ' ' + view.cx + ' ' + view.cy;
     // On a touch screen the whole world's view leaves a finger's vertical
     // swipe to the page, which scrolls (there is nothing to move: the view
@@ -89,6 +111,18 @@
     var s = shades[r.type] || shades.other;
     return s[(k - 1) % s.length];
   });
+  // The id drawn beside each robot: its id, or, when robots of two types
+  // share an id (SimbotA 1 and SimbotB 1), its type's letter and its id
+  // (A1, B1) for every robot, so that no two labels are the same.
+  var typesOfId = {};
+  header.robots.forEach(function (r) {
+    var ts = typesOfId[r.id] || (typesOfId[r.id] = []);
+    if (ts.indexOf(r.type) < 0) ts.push(r.type);
+  });
+  var idsShared = Object.keys(typesOfId).some(function (k) { return typesOfId[k].length > 1; });
+  var robotLabels = header.robots.map(function (r) {
+    return idsShared ? String(r.type).replace(/^Simbot/, '') + r.id : String(r.id);
+  });
 
   // A layer: a canvas of the page's canvas's size, not in the page.
   function layer() {
@@ -111,7 +145,7 @@
       g.fillStyle = rgb(background); g.fillRect(0, 0, canvas.width, canvas.height);
       clipToWorld(g);
       var c0 = toCanvas(x0, y1);
-      g.lineWidth = 2; g.strokeStyle = 'rgb(45,45,45)';
+      g.lineWidth = 2 * dpr; g.strokeStyle = 'rgb(45,45,45)';
       g.strokeRect(c0[0], c0[1], b.width * scale, b.height * scale);
       // (walls and blocks at least a pixel wide and tall, about their
       // centre, so that a big world's thin walls still show, as its
@@ -123,8 +157,8 @@
         g.fillRect(c[0] - w / 2, c[1] - h / 2, w, h);
       };
       header.goals.forEach(function (k) { rect(k, 'rgba(60,170,60,0.25)', 0); });
-      header.walls.forEach(function (w) { rect(w, 'rgb(90,90,90)', 1); });
-      header.blocks.forEach(function (k) { rect(k, 'rgb(139,90,43)', 1); });
+      header.walls.forEach(function (w) { rect(w, 'rgb(90,90,90)', dpr); });
+      header.blocks.forEach(function (k) { rect(k, 'rgb(139,90,43)', dpr); });
       g.restore();
       still.view = viewKey;
     }
@@ -142,10 +176,10 @@
   var trails = layer();
   // A copy of the layer is kept at every keepEvery-th frame it passes
   // (every 25th, or every sixteenth of the frames on a longer page: at
-  // most 16 copies for a view, 1.6 MB each at the largest canvas),
-  // so that going back, a jump or the slider dragged backwards draws the
-  // paths from the nearest copy before the frame, not from the start (a
-  // 1000-robot, 30 s page: 0.2-0.6 s from the start).
+  // most 16 copies for a view, 1.6 MB each at the largest canvas, 6.6 MB
+  // at a dpr of 2), so that going back, a jump or the slider dragged
+  // backwards draws the paths from the nearest copy before the frame, not
+  // from the start (a 1000-robot, 30 s page: 0.2-0.6 s from the start).
   var keepEvery = Math.max(25, Math.ceil(frames.length / 16));
   trails.saved = [];
   // While the wheel, a drag or a pinch changes the view, redrawing the
@@ -190,7 +224,7 @@
           var p = toCanvas(frames[j].robots[i].x, frames[j].robots[i].y);
           if (j === from) g.moveTo(p[0], p[1]); else g.lineTo(p[0], p[1]);
         }
-        g.lineWidth = 1; g.strokeStyle = rgb(blend(0.5, typeColour(r.type), background)); g.stroke();
+        g.lineWidth = dpr; g.strokeStyle = rgb(blend(0.5, typeColour(r.type), background)); g.stroke();
       });
       g.restore();
       trails.upTo = to;
@@ -213,15 +247,16 @@
   // robot's). Robots with the same colours are drawn as one path (10,000
   // robots drawn one by one took about 0.2 s a frame); so are the rays,
   // the heading marks and the balls. Robots out of view are skipped.
+  // (These pixels, and the lines' widths, are CSS pixels: times dpr.)
   var drawn = { robots: 0, labels: 0 };
   function drawMoving(f) {
     var balls = new Path2D(), ballRadius = header.ballRadius * scale;
     f.balls.forEach(function (p) {
       var c = toCanvas(p[0], p[1]);
-      if (nearCanvas(c, ballRadius + 2)) { balls.moveTo(c[0] + ballRadius, c[1]); balls.arc(c[0], c[1], ballRadius, 0, 2 * Math.PI); }
+      if (nearCanvas(c, ballRadius + 2 * dpr)) { balls.moveTo(c[0] + ballRadius, c[1]); balls.arc(c[0], c[1], ballRadius, 0, 2 * Math.PI); }
     });
     ctx.fillStyle = 'rgb(255,140,0)'; ctx.fill(balls);
-    ctx.lineWidth = 1.5 * fine; ctx.strokeStyle = 'rgb(170,90,0)'; ctx.stroke(balls);
+    ctx.lineWidth = 1.5 * fine * dpr; ctx.strokeStyle = 'rgb(170,90,0)'; ctx.stroke(balls);
 
     var reach = 5 * scale;   // (a ray or a sighting is shorter than 5 m)
     var rays = $('rays').checked ? new Path2D() : null;
@@ -247,38 +282,38 @@
         r.seenRobots.forEach(function (s) { ray(seen.robots, s[2], 0, s[3]); });
         r.seenBalls.forEach(function (s) { ray(seen.balls, s[0], 0, s[1]); });
       }
-      if (!nearCanvas(here, radius + 40)) return;
+      if (!nearCanvas(here, radius + 40 * dpr)) return;
       var col = colours[i], selected = i === state.selected;
       var fill = rgb(r.bumper ? darken(0.6, col) : col), rim = r.bumper ? 'rgb(0,0,0)' : rgb(darken(0.5, col));
-      var width = selected ? Math.max(2, 4 * fine) : 2 * fine, key = fill + rim + width;
+      var width = (selected ? Math.max(2, 4 * fine) : 2 * fine) * dpr, key = fill + rim + width;
       var group = groups.get(key);
       if (!group) { group = { fill: fill, rim: rim, width: width, path: new Path2D() }; groups.set(key, group); }
-      var shown = Math.max(radius, 1.5);
+      var shown = Math.max(radius, 1.5 * dpr);
       group.path.moveTo(here[0] + shown, here[1]); group.path.arc(here[0], here[1], shown, 0, 2 * Math.PI);
-      if (radius >= 1.5) {
+      if (radius >= 1.5 * dpr) {
         marks.moveTo(here[0], here[1]);
         marks.lineTo(here[0] + radius * Math.cos(r.heading), here[1] - radius * Math.sin(r.heading));
       }
       labels.push([i, here, radius]);
     });
-    if (rays) { ctx.lineWidth = 1; ctx.strokeStyle = 'rgb(0,170,60)'; ctx.stroke(rays); }
+    if (rays) { ctx.lineWidth = dpr; ctx.strokeStyle = 'rgb(0,170,60)'; ctx.stroke(rays); }
     if (seen) {
-      ctx.setLineDash([4, 3]); ctx.lineWidth = 1;
+      ctx.setLineDash([4 * dpr, 3 * dpr]); ctx.lineWidth = dpr;
       ctx.strokeStyle = 'rgba(120,40,160,0.8)'; ctx.stroke(seen.robots);
       ctx.strokeStyle = 'rgba(200,110,0,0.8)'; ctx.stroke(seen.balls);
       ctx.setLineDash([]);
     }
     groups.forEach(function (g) {
       ctx.fillStyle = g.fill; ctx.fill(g.path);
-      if (g.width >= 0.5) { ctx.lineWidth = g.width; ctx.strokeStyle = g.rim; ctx.stroke(g.path); }
+      if (g.width >= 0.5 * dpr) { ctx.lineWidth = g.width; ctx.strokeStyle = g.rim; ctx.stroke(g.path); }
     });
-    ctx.lineWidth = 3 * fine; ctx.strokeStyle = 'rgb(255,255,255)'; ctx.stroke(marks);
+    ctx.lineWidth = 3 * fine * dpr; ctx.strokeStyle = 'rgb(255,255,255)'; ctx.stroke(marks);
     var crowd = labels.length > 200;
-    ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = Math.round(Math.max(8, 12 * fine)) + 'px sans-serif';
+    ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = Math.round(Math.max(8, 12 * fine) * dpr) + 'px sans-serif';
     drawn = { robots: labels.length, labels: 0 };
     labels.forEach(function (l) {
-      if (!crowd || l[2] >= 4 || l[0] === state.selected) {
-        ctx.fillText(String(header.robots[l[0]].id), l[1][0] + l[2] + 2, l[1][1] - l[2]);
+      if (!crowd || l[2] >= 4 * dpr || l[0] === state.selected) {
+        ctx.fillText(robotLabels[l[0]], l[1][0] + l[2] + 2 * dpr, l[1][1] - l[2]);
         drawn.labels++;
       }
     });
@@ -329,7 +364,8 @@
     }
     var i = state.selected, info = header.robots[i], r = frames[state.frame].robots[i];
     var out = [];
-    out.push(info.type + ' ' + info.id + '   at t = ' + frames[state.frame].t.toFixed(2) + ' s');
+    out.push(info.type + ' ' + info.id + (idsShared ? ' (drawn ' + robotLabels[i] + ')' : '') +
+             '   at t = ' + frames[state.frame].t.toFixed(2) + ' s');
     out.push('position  (' + num(r.x) + ', ' + num(r.y) + ') m   heading ' + num(r.heading) + ' rad');
     out.push('wheels    left ' + num(r.wheels[0]) + '  right ' + num(r.wheels[1]) + ' m/s');
     out.push('velocity  v ' + num(r.v) + ' m/s   omega ' + num(r.omega) + ' rad/s');
@@ -353,13 +389,44 @@
     if (msgs.length === 0) msgs.push('  none');
     el.textContent = out.concat(msgs.slice(-50)).join('\n');
   }
-  function showEvents() {
-    var evs = [];
-    for (var j = 0; j <= state.frame; j++) {
-      frames[j].events.forEach(function (e) { evs.push('[' + e.t.toFixed(2) + '] ' + e.kind + ': ' + e.text); });
-      frames[j].console.forEach(function (c) { evs.push(c); });
+  // The events panel's lines in the run's order: each frame's events (a
+  // bump, a score) and its robots' messages, by time, then the console
+  // lines no robot printed; 'eventsUpTo[j]', how many of them frames 0 to
+  // j have. Made as far as the frames shown so far reach (a page's first
+  // frame does not wait for them: the robots' messages are looked for in
+  // every robot-frame, about 0.4 microseconds each, some 0.5 s for the
+  // largest page). (The messages were only in the selected robot's panel;
+  // and the lines were gathered from frame 0 at every frame drawn.)
+  var eventLines = [], eventsUpTo = [];
+  function indexEvents(upTo) {
+    for (var j = eventsUpTo.length; j <= upTo; j++) {
+      var f = frames[j], own = [];
+      f.events.forEach(function (e) { own.push([e.t, '[' + e.t.toFixed(2) + '] ' + e.kind + ': ' + e.text]); });
+      for (var i = 0; i < f.robots.length; i++) {
+        var ms = f.robots[i].messages;
+        for (var k = 0; k < ms.length; k++) {
+          own.push([ms[k][0], '[' + ms[k][0].toFixed(2) + '] ' + header.robots[i].type + ' ' + header.robots[i].id + ': ' + ms[k][1]]);
+        }
+      }
+      // (Array.prototype.sort is stable: a step's events, then its messages)
+      own.sort(function (x, y) { return x[0] - y[0]; });
+      own.forEach(function (l) { eventLines.push(l[1]); });
+      f.console.forEach(function (c) { eventLines.push(c); });
+      eventsUpTo.push(eventLines.length);
     }
-    $('events').textContent = evs.slice(-30).join('\n');
+  }
+  // The last 30 lines up to the frame, newest last (as the messages in
+  // the robot's panel), scrolled to the end so that the newest shows, also
+  // after a step back; the panel is left as it is (and where the user
+  // scrolled it) while the frame brings no line and takes none away.
+  var eventsShown = -1;
+  function showEvents() {
+    indexEvents(state.frame);
+    var n = eventsUpTo[state.frame], el = $('events');
+    if (n === eventsShown) return;
+    eventsShown = n;
+    el.textContent = eventLines.slice(Math.max(0, n - 30), n).join('\n');
+    el.scrollTop = el.scrollHeight;
   }
 
   function setFrame(i) {
@@ -375,9 +442,13 @@
     draw();
     if (state.playing) requestAnimationFrame(tick);
   }
+  // (while the slider is held, playing leaves the frame to it, and takes
+  // no time: once it is let go, playing goes on from the frame it was left
+  // at; the playhead and the hand used to pull the slider each their way)
+  var sliderHeld = false;
   function tick(now) {
     if (!state.playing) return;
-    if (state.last !== null) {
+    if (state.last !== null && !sliderHeld) {
       state.simTime += (now - state.last) / 1000 * state.speed;
       var i = state.frame;
       while (i + 1 < frames.length && frames[i + 1].t <= state.simTime) i++;
@@ -393,13 +464,19 @@
     var f = frames[state.frame], best = -1, bestD = Infinity;
     f.robots.forEach(function (r, i) {
       var p = toCanvas(r.x, r.y), d = Math.hypot(p[0] - px, p[1] - py);
-      if (d <= Math.max(header.robots[i].radius * scale, 1.5) + reach && d < bestD) { best = i; bestD = d; }
+      if (d <= Math.max(header.robots[i].radius * scale, 1.5 * dpr) + reach && d < bestD) { best = i; bestD = d; }
     });
     return best;
   }
 
   $('slider').max = String(frames.length - 1);
   $('slider').addEventListener('input', function () { setFrame(Number($('slider').value)); });
+  $('slider').addEventListener('pointerdown', function () { sliderHeld = true; });
+  // (let go anywhere, or the window left in the middle of the drag)
+  ['pointerup', 'pointercancel'].forEach(function (type) {
+    document.addEventListener(type, function () { sliderHeld = false; });
+  });
+  window.addEventListener('blur', function () { sliderHeld = false; });
   $('play').addEventListener('click', function () { setPlaying(!state.playing); });
   $('back').addEventListener('click', function () { setPlaying(false); setFrame(state.frame - 1); });
   $('fwd').addEventListener('click', function () { setPlaying(false); setFrame(state.frame + 1); });
@@ -407,6 +484,17 @@
   // a focused list takes for itself, went on working only after a click
   // elsewhere)
   $('speed').addEventListener('change', function () { state.speed = Number($('speed').value); $('speed').blur(); });
+  // Faster than the page's list: 8x to 32x (at 32x a 6-minute run plays in
+  // 11 s). Playing goes by the clock, so the frames that a screen's
+  // refresh cannot show at such a speed are passed over, and the time
+  // still runs at the speed chosen.
+  [8, 16, 32].forEach(function (v) {
+    var sel = $('speed');
+    if (Array.prototype.some.call(sel.options, function (o) { return Number(o.value) === v; })) return;
+    var o = document.createElement('option');
+    o.value = String(v); o.textContent = v + 'x';
+    sel.appendChild(o);
+  });
   ['rays', 'trails', 'sightings'].forEach(function (id) { $(id).addEventListener('change', function () { draw(); }); });
   $('follow').addEventListener('change', function () { follow(frames[state.frame]); draw(); });
   // the canvas pixel under a mouse or pointer event (inside the canvas's
@@ -502,9 +590,10 @@
     startGesture();
   }
   // the robot a click or a tap at a canvas pixel selects (a finger's and a
-  // pen's reach in CSS pixels, the mouse's in canvas pixels)
+  // pen's reach in CSS pixels, the mouse's in the canvas's pixels at its
+  // own size, the CSS pixels of a canvas not scaled to fit)
   function select(p, kind) {
-    state.selected = robotAt(p[0], p[1], kind === 'mouse' ? 3 : (kind === 'touch' ? 16 : 8) * canvas.width / canvas.clientWidth);
+    state.selected = robotAt(p[0], p[1], kind === 'mouse' ? 3 * dpr : (kind === 'touch' ? 16 : 8) * canvas.width / canvas.clientWidth);
     selections++;
     draw();
   }
@@ -532,6 +621,10 @@
   $('fit').addEventListener('click', fit);
   document.addEventListener('keydown', function (e) {
     if (e.target && e.target.tagName === 'SELECT') return;
+    // (a key with Ctrl, Meta or Alt is the browser's: Ctrl+0, Ctrl+plus
+    // and Ctrl+minus zoom the page, Alt+left goes back; Shift is left in,
+    // as + is Shift+= on many keyboards)
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
     if (e.key === ' ') { e.preventDefault(); setPlaying(!state.playing); }
     else if (e.key === 'ArrowLeft') { e.preventDefault(); setPlaying(false); setFrame(state.frame - 1); }
     else if (e.key === 'ArrowRight') { e.preventDefault(); setPlaying(false); setFrame(state.frame + 1); }
