@@ -35,7 +35,7 @@ pageOf w = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing Not
 -- "seconds" rises every second; SimbotB 1 drives into a wall and sticks;
 -- the command line names a world file whose name is markup.
 usabilityPage :: String
-usabilityPage = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing)
+usabilityPage = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing Nothing)
   where
     world  = [OTSimbotA 1 (Point2 (-2) 0) 0, OTSimbotB 1 (Point2 2 1.5) 0, OTVWall (Point2 4 1.5)]
     cfg    = defaultLogConfig { lcWorld = world, lcDt = 0.01, lcFps = 25
