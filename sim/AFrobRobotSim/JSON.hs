@@ -20,6 +20,7 @@ module AFrobRobotSim.JSON
     module AFrobRobotSim.JSON.Encode
     -- * Parsing
   , parseJSON
+  , cutShort
   , maxDepth
     -- * Reading values
   , member
@@ -108,6 +109,23 @@ parseJSON txt = case runP (skipSpace *> value 0 <* skipSpace <* end) (Input (Pos
     end = peek >>= \m -> case m of
       Nothing -> pure ()
       Just _  -> failHere ("expected the end of the text, found " ++ describeNext m)
+
+-- | Whether a text is JSON cut short: not JSON, and only because it
+-- ends too soon (the parser's first fault is at the text's end, where a
+-- value, a string or a name is still open). Every proper prefix of a JSON
+-- object or array is; a whole value is not, nor is a text with a fault
+-- before its end (a misspelt keyword, a character out of place), nor one
+-- with something after a whole value.
+--
+-- > cutShort "{\"a\": [1, 2"   == True
+-- > cutShort "{\"a\": 1}"      == False
+-- > cutShort "{\"a\" 1}"       == False   -- (a fault at the 1)
+cutShort :: String -> Bool
+cutShort txt = case runP (skipSpace *> value 0) (Input (Pos 1 1) txt) of
+  Left (pos, _) -> samePos pos (foldl' advance (Pos 1 1) txt)
+  Right _       -> False
+  where
+    samePos (Pos l c) (Pos l' c') = l == l' && c == c'
 
 value :: Int -> P JSON
 value depth = do

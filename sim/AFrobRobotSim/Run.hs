@@ -123,7 +123,7 @@ runSimWith opts mworld rcA rcB = do
   prog  <- getProgName
   -- (the world checked once: a file's by its reader, each problem with
   -- its line; one given in code here; the run does not check it again,
-  -- see 'simulateValidated')
+  -- see 'simulateUnchecked')
   world <- case optWorldFile opts of
     Just file -> readWorldFile file >>= either (\e -> failWith 2 (prog ++ ": " ++ e)) pure
     Nothing   -> do
@@ -213,7 +213,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
                | otherwise      = ""
       svgEvery = max 1 (nSteps `div` svgMaxPoints)
       nRobots  = length [ () | o <- world, Just _ <- [robotKindOf o] ]
-      states   = take (nSteps + 1) (simulateValidated cfg world rcA rcB)
+      states   = take (nSteps + 1) (simulateUnchecked cfg world rcA rcB)
   mrec <- forM (optReplay opts) $ \file -> do
     r <- try (newReplayRecorder replayCfg)
     either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r

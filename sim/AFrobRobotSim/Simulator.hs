@@ -70,7 +70,7 @@ module AFrobRobotSim.Simulator
   ( -- * Running
     simulate
   , simulateWith
-  , simulateValidated
+  , simulateUnchecked
   , SimConfig (..)
   , defaultSimConfig
   , maxTimeStep
@@ -264,7 +264,7 @@ data Engine = Engine
 simulateWith :: SimConfig -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
 simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
   Left errs -> error ("AFrobRobotSim.simulate: invalid world:\n  " ++ unlinesIndented errs)
-  Right ()  -> simulateValidated cfg world rcA rcB
+  Right ()  -> simulateUnchecked cfg world rcA rcB
 
 -- | 'simulateWith' of a world that its caller has already found valid
 -- with @'validateWorldIn' ('simBounds' cfg)@, which is not checked again
@@ -274,8 +274,8 @@ simulateWith cfg world rcA rcB = case validateWorldIn (simBounds cfg) world of
 -- or so. A world that is not valid runs as it is, with whatever the
 -- physics makes of its overlaps: call 'simulateWith' unless the world
 -- was checked. (Not re-exported by "AFrobRobotSim".)
-simulateValidated :: SimConfig -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
-simulateValidated cfg world rcA rcB
+simulateUnchecked :: SimConfig -> WorldTemplate -> SimbotController -> SimbotController -> [WorldState]
+simulateUnchecked cfg world rcA rcB
   | not (simDt cfg > 0 && simDt cfg <= maxTimeStep) =
       error ("AFrobRobotSim.simulate: the time step must be positive and at most "
              ++ show maxTimeStep ++ " s, got " ++ show (simDt cfg))

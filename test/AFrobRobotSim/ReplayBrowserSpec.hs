@@ -39,7 +39,7 @@ usabilityPage = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothin
   where
     world  = [OTSimbotA 1 (Point2 (-2) 0) 0, OTSimbotB 1 (Point2 2 1.5) 0, OTVWall (Point2 4 1.5)]
     cfg    = defaultLogConfig { lcWorld = world, lcDt = 0.01, lcFps = 25
-                              , lcCommandLine = [ "simbot", "--world", "worlds/<img src=x onerror=alert(1)>two.world"
+                              , lcCommandLine = [ "simbot", "--world", "one.world", "--world", "worlds/<img src=x onerror=alert(1)>two.world"
                                                 , "--seconds", "60" ]
                               , lcScores = \s -> [("seconds", floor (wsTime s + 1e-9))] }
     states = take 6001 (simulate 0.01 world ctrlA ctrlB)

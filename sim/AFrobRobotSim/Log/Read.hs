@@ -19,14 +19,17 @@
 -- A log can end in the middle of a line: its run's disk filled up while
 -- the run wrote it, or it was copied while its run still wrote it, or a
 -- transfer stopped short. Such a line, the last of its log, with no
--- newline at its end and not a whole line of JSON, is left out (a prefix
--- of a frame's JSON object is never JSON): the log reads as its lines
--- before it, with no summary, and 'rlCutLine' (or 'leCutLine') gives
--- its number, so that a reader can say so. A log cut off in its header
--- line is refused, with that said. Any other fault of a last line, or a
--- broken line with a newline after it, is refused as before: only the
--- end of a log is taken as cut. (A whole last line without a newline, as
--- a run killed between a line and its newline leaves, is a line.)
+-- newline at its end, and JSON cut short ('AFrobRobotSim.JSON.cutShort':
+-- not JSON only because it ends too soon, as every proper prefix of a
+-- line's JSON object is), is left out: the log reads as its lines before
+-- it, with no summary, and 'rlCutLine' (or 'leCutLine') gives its
+-- number, so that a reader can say so. A log cut off in its header line
+-- is refused, with that said. Any other fault of a last line (a fault
+-- before its end, whole JSON that is no log line, bytes that are not
+-- UTF-8: a log is ASCII), or a line cut short with a newline after it,
+-- is refused as before: only the end of a log is taken as cut. (A whole
+-- last line without a newline, as a run killed between a line and its
+-- newline leaves, is a line.)
 module AFrobRobotSim.Log.Read
   ( RunLog (..)
   , LogEnd (..)
@@ -44,6 +47,7 @@ import           Data.List                 (stripPrefix)
 import           System.IO                 (hClose, hFileSize)
 
 import           AFrobRobotSim.Console     (displayPath)
+import           AFrobRobotSim.JSON        (cutShort)
 import           AFrobRobotSim.Log.Records
 import           AFrobRobotSim.InputFile   (LineFault (..), newLineReader, nextLineEnded, openReading)
 import           AFrobRobotSim.WorldFile.Lexical (cannotRead, utf8TextFrom)
@@ -87,16 +91,10 @@ type Locate = Int -> Maybe Int -> String
 -- 'readLog' with its errors located by the given function: 'readLogFile'
 -- says where as a world file's errors do.
 readLogAt :: Locate -> String -> Either String RunLog
-readLogAt loc txt = case [ (i, l, ended) | (i, l, ended) <- numbered, not (blank l) ] of
+readLogAt loc txt = case [ (i, l, ended) | (i, (l, ended)) <- zip [1 :: Int ..] (linesEnded txt), not (blank l) ] of
   [] -> Left (loc 1 Nothing ++ emptyLog)
   (i0, l0, ended0) : rest -> headerLine loc ended0 i0 l0 >>= \h -> go h [] rest
   where
-    -- (each line with whether a newline ends it: all but a last one that
-    -- the text ends in)
-    numbered = [ (i, l, i < count || endsInNewline) | (i, l) <- zip [1 :: Int ..] ls ]
-    ls = lines txt
-    count = length ls
-    endsInNewline = take 1 (reverse txt) == "\n"
     go h acc [] = Right (RunLog h (reverse acc) Nothing Nothing)
     go h acc ((i, l, ended) : rest)
       | cutOff ended l = Right (RunLog h (reverse acc) Nothing (Just i))
@@ -106,11 +104,19 @@ readLogAt loc txt = case [ (i, l, ended) | (i, l, ended) <- numbered, not (blank
             []            -> Right (RunLog h (reverse acc) (Just s) Nothing)
             (j, _, _) : _ -> Left (loc j Nothing ++ afterSummary)
 
--- Whether a line after the header is the cut-off end of a log
--- (see "A log cut off" above), given whether a newline ends it:
--- none does, and it is not a whole line of JSON.
+-- 'lines', each line with whether a newline ends it (all but a last
+-- one that the text ends in), made as they are read: a long log's text
+-- is not held whole.
+linesEnded :: String -> [(String, Bool)]
+linesEnded txt = case break (== '\n') txt of
+  (l, _ : rest) -> (l, True) : if null rest then [] else linesEnded rest
+  (l, [])       -> [ (l, False) | not (null l) ]
+
+-- Whether a line is the cut-off end of a log (see "A log cut off"
+-- above), given whether a newline ends it: none does, and it is JSON
+-- cut short.
 cutOff :: Bool -> String -> Bool
-cutOff ended l = not ended && either (const True) (const False) (decodeLogLine l)
+cutOff ended l = not ended && cutShort l
 
 -- The time of the newest frame read, of frames newest first (0 before
 -- the first: a frame's time is not negative).
@@ -268,18 +274,15 @@ foldLogFileUpTo cap lineCap path start step = do
       if size > fromIntegral cap then pure (Left tooLong) else do
         src <- newLineReader hdl cap lineCap
         let -- the next line that is not blank, with its number and
-            -- whether a newline ends it; after the header, a last line
-            -- cut off in the middle of a character (not UTF-8, with no
-            -- newline after it) is no whole line either: read as empty
-            nextText afterHeader = nextLineEnded src >>= \r -> case r of
+            -- whether a newline ends it
+            nextText = nextLineEnded src >>= \r -> case r of
               Left fault                  -> pure (Left (faultText fault))
               Right Nothing               -> pure (Right Nothing)
               Right (Just (i, bs, ended)) -> case utf8TextFrom name i bs of
-                Left _ | afterHeader && not ended -> pure (Right (Just (i, "", False)))
                 Left e              -> pure (Left e)
-                Right l | blank l   -> nextText afterHeader
+                Right l | blank l   -> nextText
                         | otherwise -> pure (Right (Just (i, l, ended)))
-            body h prev s = nextText True >>= \r -> case r of
+            body h prev s = nextText >>= \r -> case r of
               Left e              -> pure (Left e)
               Right Nothing       -> pure (Right (s, LogEnd Nothing Nothing))
               Right (Just (i, l, ended))
@@ -287,11 +290,11 @@ foldLogFileUpTo cap lineCap path start step = do
                 | otherwise -> case bodyLine loc h prev i l of
                     Left e          -> pure (Left e)
                     Right (Left f)  -> step s f >>= body h (lfTime f)
-                    Right (Right m) -> nextText True >>= \after -> pure $ case after of
+                    Right (Right m) -> nextText >>= \after -> pure $ case after of
                       Left e                 -> Left e
                       Right Nothing          -> Right (s, LogEnd (Just m) Nothing)
                       Right (Just (j, _, _)) -> Left (loc j Nothing ++ afterSummary)
-        first <- nextText False
+        first <- nextText
         case first of
           Left e                     -> pure (Left e)
           Right Nothing              -> pure (Left (loc 1 Nothing ++ emptyLog))

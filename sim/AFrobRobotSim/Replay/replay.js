@@ -21,8 +21,9 @@
   function runName() {
     var cl = header.commandLine || [], base = function (p) { return String(p).split(/[\\/]/).pop(); };
     if (cl.length === 0) return '';
-    var name = base(cl[0]), w = cl.indexOf('--world');
-    if (cl.length > 1 && cl[1].charAt(0) !== '-') name += ' ' + cl[1];
+    // (the last --world, as the command line's parser takes the last)
+    var name = base(cl[0]), w = cl.lastIndexOf('--world');
+    if (cl.length > 1 && cl[1] !== '' && cl[1].charAt(0) !== '-') name += ' ' + cl[1];
     if (w > 0 && w + 1 < cl.length) name += ', world ' + base(cl[w + 1]);
     return name;
   }

@@ -5,6 +5,7 @@ module AFrobRobotSim.Log.ReadSpec (spec) where
 
 import qualified Data.ByteString          as BS
 import qualified Data.ByteString.Char8    as BC
+import           Control.Monad            (forM_)
 import           Data.Char                (isPrint)
 import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf)
 import           System.Directory         (getTemporaryDirectory, removeFile)
@@ -160,6 +161,12 @@ spec = do
       readLog cutSummary `shouldBe` Right fixtureLog { rlSummary = Nothing, rlCutLine = Just 53 }
     it "reads a whole last line without a newline as a line, not as cut" $
       readLog (init fixtureLogText) `shouldBe` Right fixtureLog
+    it "refuses a last line with no newline that is not JSON cut short: a fault before its end, whole JSON, no log line" $ do
+      let refusedAt11 lastLine = readLog (unlines (take 10 ls) ++ lastLine)
+            `shouldSatisfy` either ("line 11" `isPrefixOf`) (const False)
+      mapM_ refusedAt11
+        [ "{\"kind\":\"frmae\"}", "{\"a\": 1}", "[1,2,3]", "{\"kind\":\"frame\",\"t\":9}", "hello world"
+        , ls !! 10 ++ "}", "{\"kind\" \"frame\", \"t\": 0.4" ]
     it "refuses a broken last line that a newline ends, and a whole one that is wrong" $ do
       readLog (cut ++ "\n") `shouldSatisfy` either ("line 11, column " `isPrefixOf`) (const False)
       -- (a whole frame with a robot at x = infinity, with no newline: a
@@ -170,19 +177,30 @@ spec = do
       readLog (take 30 fixtureLogText) `shouldSatisfy`
         either ("(the line stops with no newline after it: did the run that wrote the log stop as it began, or its disk fill up?)" `isSuffixOf`)
                (const False)
-      readLog "# a README" `shouldSatisfy` either ("or its disk fill up?)" `isSuffixOf`) (const False)
-    it "is read so from a file too (readLogFile, foldLogFile), also when cut in a character" $ withTempDir $ \dir -> do
+      -- (a first line with a fault before its end is no log's header cut short)
+      readLog "# a README" `shouldSatisfy` either ("(is it a run log? a run writes one with --log FILE.jsonl)" `isSuffixOf`)
+                                                  (const False)
+    it "is read so from a file too (readLogFile, foldLogFile); a line that is not UTF-8 is refused (a log is ASCII)" $ withTempDir $ \dir -> do
       let path = dir </> "cut.jsonl"
       writeFile path cut
       readLogFile path `shouldReturn` readLog cut
       r <- foldLogFile path (const (pure (0 :: Int))) (\n _ -> pure (n + 1))
       r `shouldBe` Right (9, LogEnd Nothing (Just 11))
-      -- (a last line cut inside a two-byte character: not UTF-8, no newline)
+      -- (a last line with a byte that is not UTF-8, with or without a
+      -- newline after it)
       BS.writeFile path (BS.append (BC.pack (unlines (take 10 ls) ++ "{\"kind\":\"frame\",\"msg\":\"")) (BS.pack [0xc3]))
-      fmap rlCutLine <$> readLogFile path `shouldReturn` Right (Just 11)
-      -- (the same bad byte with a newline after it is refused as before)
+      fmap rlCutLine <$> readLogFile path `shouldReturn` Left (path ++ ":11:24: invalid UTF-8 (byte 0xc3)")
       BS.writeFile path (BS.append (BC.pack (unlines (take 10 ls) ++ "{\"kind\":\"frame\",\"msg\":\"")) (BS.pack [0xc3, 0x0a]))
       fmap rlCutLine <$> readLogFile path `shouldReturn` Left (path ++ ":11:24: invalid UTF-8 (byte 0xc3)")
+      -- (a fault before the end of a last line with no newline: refused)
+      writeFile path (unlines (take 10 ls) ++ "{\"kind\":\"frmae\"}")
+      fmap rlCutLine <$> readLogFile path `shouldReturn` Left (path ++ ":11: unknown kind of line \"frmae\"")
+    it "takes every proper prefix of every line of a real log as cut, as the line after the header" $
+      -- (the header's prefixes are the cut header's, refused with that said)
+      forM_ (zip [1 :: Int ..] ls) $ \(i, l) -> forM_ [1 .. length l - 1] $ \k ->
+        if i == 1
+          then readLog (take k l) `shouldSatisfy` either ("or its disk fill up?)" `isSuffixOf`) (const False)
+          else fmap rlCutLine (readLog (head ls ++ "\n" ++ take k l)) `shouldBe` Right (Just 2)
 
 -- @setFirst key v line@: the number after the first @key@ in @line@
 -- written @v@ instead.
