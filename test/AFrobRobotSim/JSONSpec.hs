@@ -21,6 +21,19 @@ spec = do
       encodeJSON (JString "\x1F600") `shouldBe` "\"\\ud83d\\ude00\""
       parseJSON "\"\\uD83D\\uDE00\"" `shouldBe` Right (JString "\x1F600")
 
+  describe "cutShort" $ do
+    it "holds of every proper prefix of an encoded object or array, and of no whole value (property)" $
+      property $ \(AnyJSON v) ->
+        let t = encodeJSON (JObject [("v", v)])
+            u = encodeJSON (JArray [v, v])
+        in conjoin [ cutShort (take k x) | x <- [t, u], k <- [0 .. length x - 1] ]
+           .&&. not (cutShort t) .&&. not (cutShort u) .&&. not (cutShort (encodeJSON v))
+    it "does not hold of a text with a fault before its end, or with more after a whole value (fixed)" $ do
+      map cutShort ["{\"a\" 1", "[1,, 2", "{\"a\": tru", "{\"a\": 1}}", "[1] [", "hello", "{\"a\": nul"]
+        `shouldBe` [False, False, True, False, False, False, True]
+      map cutShort ["{\"a\": \"b", "{\"a\": 1.", "[-", "{\"a\": \"\\u00", "  ", ""]
+        `shouldBe` [True, True, True, True, True, True]
+
   describe "parseJSON" $ do
     it "accepts whitespace and the escapes of RFC 8259 (fixed)" $
       parseJSON " { \"a\" : [1, -0.5e1, true, false, null, \"\\/\\b\\f\\u00e9\"] } \n"
