@@ -27,7 +27,8 @@
 --
 -- Three ways to use it: 'logStep' one state at a time (what a streaming
 -- writer needs), 'logFrames' on a whole list, and 'LogWriter', which
--- writes a file as the run goes. A log is read back with 'readLog' and
+-- writes a file as the run goes; and 'LogRates', 'logStep' at several
+-- frame rates at once, for the replay page's recorder. A log is read back with 'readLog' and
 -- 'readLogFile' (from "AFrobRobotSim.Log.Read", re-exported here).
 module AFrobRobotSim.Log
   ( -- * Settings
@@ -41,6 +42,11 @@ module AFrobRobotSim.Log
   , logFrames
   , isFrameStep
   , linesByRobot
+    -- * Several frame rates at once
+  , LogRates
+  , logRatesStart
+  , logRatesStep
+  , logRatesKeep
     -- * The values' rounding
   , roundHalfEven
   , roundTo
@@ -184,7 +190,13 @@ logStart cfg = LogState 0 Nothing [] [] (arenaOf (lcBounds cfg) (lcWorld cfg))
 isFrameStep :: Double -> Double -> Int -> Bool
 isFrameStep dt fps n =
   let f = fromIntegral n * dt * fps
-  in n == 0 || abs (f - fromIntegral (round f :: Int)) * 2 < dt * fps
+  in n == 0 || abs (f - fromIntegral (nearest f)) * 2 < dt * fps
+  where
+    -- ('round', by plain arithmetic where 'roundHalfEven' is exact: the
+    -- replay page's recorder asks at every step for each frame rate it
+    -- keeps, and 'round' is a foreign call)
+    nearest f | abs f < 1e15 = roundHalfEven f
+              | otherwise    = round f :: Int
 
 -- | Take the next step's state (the first call gets the state at time 0):
 -- the new 'LogState', and the frame record when this step is a frame's.
@@ -214,6 +226,74 @@ logFrames cfg = go (logStart cfg)
       (st', Just f)  -> f : go st' ss
       (st', Nothing) -> go st' ss
 
+-- | 'logStep' at several frame rates at once, each named by a key of the
+-- caller's: for a writer that cannot yet tell which rate it will keep (the
+-- replay page's recorder, which thins its page for the length the run
+-- turns out to have: "AFrobRobotSim.Replay"). The frames of the rate
+-- @fps@ are exactly 'logStep''s with that 'lcFps': the same steps
+-- ('isFrameStep' at @fps@) and the same records, each with the events,
+-- console lines and messages of its own period (the steps after that
+-- rate's previous frame, up to and including its own). What a step makes
+-- for every rate, its events, its console lines and its frame's instant
+-- (the robots' readings, the costly part), is made once.
+data LogRates k = LogRates !LogState !Int [RatePeriod k]
+  -- (the step count, the previous step and the arena, the state's own
+  -- period left empty; how many events and console lines the run has
+  -- made; each rate's period)
+
+-- One rate's period so far: its key, its frames a second, its events and
+-- console lines (newest first), and how many events and lines the run had
+-- made when it began. Two rates whose periods began at the same count hold
+-- the same events and lines: whatever was made since.
+data RatePeriod k = RatePeriod k !Double [LogEvent] [String] !Int
+
+-- | The rates, as (key, frames a second), before the first step.
+logRatesStart :: LogConfig -> [(k, Double)] -> LogRates k
+logRatesStart cfg rates = LogRates (logStart cfg) 0 [ RatePeriod k fps [] [] 0 | (k, fps) <- rates ]
+
+-- | Only the rates whose keys pass the test, from now on (a rate dropped
+-- costs nothing more; its period is forgotten).
+logRatesKeep :: (k -> Bool) -> LogRates k -> LogRates k
+logRatesKeep keep (LogRates st made rates) = LogRates st made [ r | r@(RatePeriod k _ _ _ _) <- rates, keep k ]
+
+-- | Take the next step's state (the first call gets the state at time 0):
+-- the new 'LogRates', and this step's frames, one for each group of the
+-- rates whose frame the step is and whose periods hold the same events and
+-- lines, with the keys of the group's rates (in the order the rates were
+-- given; the groups by their first rate). So each frame is
+-- 'logStep''s at each of its rates.
+logRatesStep :: LogConfig -> LogRates k -> WorldState -> (LogRates k, [([k], LogFrame)])
+logRatesStep cfg (LogRates st made rates) s = (next, frames)
+  where
+    n        = stStep st
+    scores   = lcScores cfg s
+    -- (made now, as 'logStep' makes them, so that nothing keeps the state)
+    new      = newEvents (stPrev st) s scores
+    newLines = reverse (wsMessages s)
+    made'    = made + length new + length newLines
+    grown | made' == made = rates
+          | otherwise     = map grow rates
+    grow (RatePeriod k fps evs ls since) =
+      let evs' = new ++ evs
+          ls'  = newLines ++ ls
+      in evs' `seq` ls' `seq` RatePeriod k fps evs' ls' since
+    isFrame (RatePeriod _ fps _ _ _) = isFrameStep (lcDt cfg) fps n
+    -- (each rate asked once; most steps are no rate's frame)
+    framed = [ (r, isFrame r) | r <- grown ]
+    firing = [ r | (r, True) <- framed ]
+    rates' | null firing = grown
+           | otherwise   = [ if f then RatePeriod k fps [] [] made' else r | (r@(RatePeriod k fps _ _ _), f) <- framed ]
+    st'    = st { stStep = n + 1, stPrev = Just $! prevOf s scores }
+    next   = foldr seq () new `seq` foldr seq () rates' `seq` LogRates st' made' rates'
+    instant = frameInstant cfg st s scores
+    frames = [ (keys, periodFrame instant (reverse evs) (reverse ls))
+             | (keys, evs, ls) <- samePeriods firing ]
+    -- (the rates grouped by the count their periods began at)
+    samePeriods [] = []
+    samePeriods (RatePeriod k _ evs ls since : rest) =
+      (k : [ k' | RatePeriod k' _ _ _ since' <- rest, since' == since ], evs, ls)
+      : samePeriods [ r | r@(RatePeriod _ _ _ _ since') <- rest, since' /= since ]
+
 -- Events from one step to the next (newest first): a robot that got
 -- stuck, a score that rose.
 newEvents :: Maybe Prev -> WorldState -> [(String, Int)] -> [LogEvent]
@@ -231,15 +311,35 @@ newEvents (Just p) s now = reverse (bumps ++ scores)
 
 -- (given the state's scores, which the step has made)
 frameOf :: LogConfig -> LogState -> WorldState -> [(String, Int)] -> [LogEvent] -> [String] -> LogFrame
-frameOf cfg st s scores events lines' = LogFrame
+frameOf cfg st s scores = periodFrame (frameInstant cfg st s scores)
+
+-- A frame without its period: the frame with no events, console lines or
+-- messages, and its robots' names (type and id, in its robots' order).
+data Instant = Instant LogFrame [(RobotType, RobotId)]
+
+-- The frame of an instant with the events and console lines of its period
+-- (oldest first): each robot's messages, and the lines no robot printed
+-- ('linesByRobot').
+periodFrame :: Instant -> [LogEvent] -> [String] -> LogFrame
+periodFrame (Instant f names) events lines' =
+  f { lfRobots = zipWith withMessages names (lfRobots f), lfEvents = events, lfConsole = console }
+  where
+    (messagesOf, console) = linesByRobot names lines'
+    withMessages k r = case messagesOf k of
+      [] -> r
+      ms -> r { lrMessages = ms }
+
+-- (given the state's scores, which the step has made)
+frameInstant :: LogConfig -> LogState -> WorldState -> [(String, Int)] -> Instant
+frameInstant cfg st s scores = Instant LogFrame
   { lfTime = roundTo 1e9 (wsTime s)
   , lfRobots = zipWith robotOf [0 ..] (wsRobots s)
   , lfBalls = [ (r6 x, r6 y) | (x, y) <- map xy (wsBalls s) ]
   , lfScores = scores
-  , lfEvents = events
-  , lfConsole = console }
+  , lfEvents = []
+  , lfConsole = [] }
+  [ (robotType r, robotId r) | r <- wsRobots s ]
   where
-    (messagesOf, console) = linesByRobot [ (robotType r, robotId r) | r <- wsRobots s ] lines'
     physical = [ mkRobot (kindOfType (robotType r)) (robotId r) (robotPos r) (robotHeading r)
                          (robotSpeed r) (robotStuck r) (robotCharge r) | r <- wsRobots s ]
     ctx = SenseContext (stArena st) physical [ Ball p zeroVector | p <- wsBalls s ]
@@ -263,7 +363,7 @@ frameOf cfg st s scores events lines' = LogFrame
            , lrBattery = case robotBattery r of
                BSHigh -> "high"; BSLow -> "low"; BSCritical -> "critical"
            , lrCharge = r6 (robotCharge r), lrOdoX = r6 ox, lrOdoY = r6 oy
-           , lrMessages = messagesOf (robotType r, robotId r) }
+           , lrMessages = [] }
     kindOfType ty = if ty == kindType SimbotB then SimbotB else SimbotA
 
 -- Frame values are rounded to a millionth (of a metre, radian, m/s):

@@ -49,11 +49,13 @@
 -- 40,000 a robot, the newest 20,000 drawn), the SVG fewer than 4,000
 -- snapshots (at most one every @max 1 (steps `div` 2000)@ steps, as
 -- their robots' centres in unboxed arrays, 16 bytes a robot). The
--- replay page's recorder spools each frame's encoded line to a temporary
--- file and streams it into the page at the end, so its memory is
--- constant too; the page itself grows with the run (about 70 kB per
--- simulated second of the default world): leave it out (@--no-replay@)
--- for very long runs and write a log instead.
+-- replay page's recorder spools each frame's encoded line to temporary
+-- files (at most about three pages' worth: it keeps the frames of every
+-- thinning the page may still get, for a run that stops early) and
+-- streams the page's into it at the end, so its memory is constant too;
+-- the page itself grows with the run (about 70 kB per simulated second of
+-- the default world) up to its bound ('replayMaxFrames'): leave it out
+-- (@--no-replay@) for very long runs and write a log instead.
 --
 -- On several capabilities (@+RTS -N2@) the sinks take the states on a
 -- thread of their own ("AFrobRobotSim.Pipeline"), while the stepping
@@ -206,16 +208,15 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
       frameAt  = isFrameStep dt (optFps opts)
       -- the replay page shows every frame period's state, or every k-th
       -- in a run that would give it more than 'replayMaxFrames' frames or
-      -- 'replayMaxRobotFrames' robot-frames (a page that opens)
-      replayThin = replayFrameStep (optSeconds opts) (optFps opts) nRobots
-      replayCfg  = logCfg { lcFps = optFps opts / fromIntegral replayThin }
-      thinNote | replayThin > 1 = "; this run's page keeps one frame period in " ++ show replayThin
-               | otherwise      = ""
+      -- 'replayMaxRobotFrames' robot-frames (a page that opens), k for the
+      -- length the run turns out to have (a run that stops early is
+      -- thinned less)
+      replayRun  = replayPlan (optSeconds opts) logCfg
       svgEvery = max 1 (nSteps `div` svgMaxPoints)
       nRobots  = length [ () | o <- world, Just _ <- [robotKindOf o] ]
       states   = take (nSteps + 1) (simulateUnchecked cfg world rcA rcB)
   mrec <- forM (optReplay opts) $ \file -> do
-    r <- try (newReplayRecorder replayCfg)
+    r <- try (newReplayRecorder replayRun logCfg)
     either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r
   stepsRef  <- newIORef (0 :: Int)
   framesRef <- newIORef (0 :: Int)
@@ -236,11 +237,11 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
       sinks = messages ++ catMaybes (logAndReplay ++ [ frames ]) ++ inMemory ++ progressLine
       messages = [ messagesSink progress | not (optQuiet opts) ]
       progressLine = [ progressSink nSteps framesRef | progress ]
-      -- the log and the page, which share each frame's line when the page
-      -- keeps every frame period (the same frames)
+      -- the log and the page, which share each frame's line where the
+      -- page has one of every frame period (the same frames)
       logAndReplay = case (mlog, (,) <$> mrec <*> optReplay opts) of
-        (Just w, Just (r, file)) | replayThin == 1 -> [ Just (logAndReplaySink w thinNote r file) ]
-        (ml, mr) -> [ logSink <$> ml, uncurry (replaySink thinNote) <$> mr ]
+        (Just w, Just (r, file)) -> [ Just (logAndReplaySink w r file) ]
+        (ml, mr) -> [ logSink <$> ml, uncurry replaySink <$> mr ]
       -- A step counts as simulated once the sinks that only keep it in
       -- memory (the SVG's track, the result line's tallies, which cannot
       -- fail) have taken it, before those that write it (the log, the

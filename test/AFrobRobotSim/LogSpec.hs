@@ -2,7 +2,7 @@
 -- (Reading it back is "AFrobRobotSim.Log.ReadSpec"'s.)
 module AFrobRobotSim.LogSpec (spec) where
 
-import           Data.List                (stripPrefix)
+import           Data.List                (nub, stripPrefix)
 import           Test.QuickCheck          (Gen, choose, elements, forAll, listOf, oneof, property)
 import           Text.Printf              (printf)
 import           System.Directory         (getTemporaryDirectory, removeFile)
@@ -91,6 +91,38 @@ spec = do
         roundHalfEven y == (round y :: Int)
     it "rounds the ties of 0.5 to the even neighbour" $
       map roundHalfEven [0.5, 1.5, 2.5, -0.5, -1.5, -2.5, 2.4999, -2.6] `shouldBe` [0, 2, 2, 0, -2, -2, 2, -3]
+  describe "isFrameStep" $
+    it "takes the steps that rounding with 'round' takes (property)" $
+      property $ forAll ((,,) <$> oneof [choose (1e-4, 1), elements [0.01, 0.04, 0.05, 1 / 3]]
+                              <*> oneof [choose (0.1, 500), elements [25, 12.5, 25 / 3, 2.5, 40, 100]]
+                              <*> oneof [choose (0, 10 ^ (7 :: Int)), choose (0, 1000)]) $ \(dt, fps, n) ->
+        let f = fromIntegral n * dt * fps
+        in isFrameStep dt fps n == (n == 0 || abs (f - fromIntegral (round f :: Int)) * 2 < dt * fps)
+
+  describe "LogRates (logStep at several frame rates at once)" $ do
+    let cfg = fixtureConfig { lcScores = \s -> [("tenths", floor (wsTime s * 10 + 1e-9))] }
+        rates = [(1, 25), (2, 12.5), (3, 25 / 3), (7, 25 / 7)] :: [(Int, Double)]
+        stepAll lr (s : ss) = let (lr', fs) = logRatesStep cfg lr s in fs : stepAll lr' ss
+        stepAll _ []        = []
+        byStep = stepAll (logRatesStart cfg rates) fixtureStates
+    it "gives at each rate exactly logFrames at that rate, events and the hostile message included (fixed)" $
+      mapM_ (\(k, fps) -> [ f | fs <- byStep, (ks, f) <- fs, k `elem` ks ] `shouldBe` logFrames cfg { lcFps = fps } fixtureStates)
+            rates
+    it "gives a step one frame for the rates whose periods hold the same events and lines, each rate once" $ do
+      [ ks | fs <- byStep, let ks = concatMap fst fs, length ks /= length (nub ks) ] `shouldBe` []
+      -- (the first step is every rate's frame, all with an empty period)
+      map (map fst) (take 1 byStep) `shouldBe` [[[1, 2, 3, 7]]]
+      -- (and a step of rates 1 and 2 after a score's rise at an odd frame: two)
+      length [ () | fs <- byStep, length fs > 1 ] `shouldSatisfy` (> 0)
+    it "goes on as before for the rates logRatesKeep keeps" $ do
+      let keepFrom k = let (a, b) = splitAt k fixtureStates
+                           lr = foldl (\l s -> fst (logRatesStep cfg l s)) (logRatesStart cfg rates) a
+                       in [ f | fs <- stepAll' (logRatesKeep (/= 2) lr) b, (ks, f) <- fs, 3 `elem` ks ]
+          stepAll' lr (s : ss) = let (lr', fs) = logRatesStep cfg lr s in fs : stepAll' lr' ss
+          stepAll' _ []        = []
+      keepFrom 77 `shouldBe` drop (length [ () | n <- [0 .. 76 :: Int], isFrameStep 0.01 (25 / 3) n ])
+                                  (logFrames cfg { lcFps = 25 / 3 } fixtureStates)
+
   describe "linesByRobot" $ do
     it "gives each robot its own lines and leaves the rest to the console (fixed)" $ do
       let (own, rest) = linesByRobot [("SimbotA", 1), ("SimbotB", 10)]

@@ -18,7 +18,7 @@ import           System.IO.Unsafe    (unsafePerformIO)
 import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
-import           Data.List           (isInfixOf, isPrefixOf, isSuffixOf, sort, stripPrefix, tails)
+import           Data.List           (isInfixOf, isPrefixOf, isSuffixOf, sort, stripPrefix, tails, transpose)
 import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
 import           Data.Char           (isPrint)
 import           System.Directory    (createDirectory, createFileLink, doesFileExist, doesPathExist, getPermissions, listDirectory,
@@ -32,7 +32,7 @@ import           AFrob               hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.Log   (LogEnd (..), LogFrame (..), LogHeader (..), LogRect (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
-import           AFrobRobotSim.Replay (writeReplayFromLog)
+import           AFrobRobotSim.Replay (replayPage, writeReplayFromLog)
 import           AFrobRobotSim.Run.Signals (Stopper, interruptible, signalReceived, stuckGrace)
 import           TestUtil (withCaps, withTMPDIR, withTempDir)
 
@@ -41,6 +41,41 @@ world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2
 
 drive :: SimbotController
 drive _ = constant (mrFinalize (ddVelDiff 1 1))
+
+-- | Forward and back in turns of 10 s, bumping into the wall and the
+-- world's edge, printing a line every 0.12 s; failing (an 'error') at
+-- @failAt@ seconds.
+restless :: Time -> SimbotController
+restless failAt _ = (localTime &&& repeatedly 0.12 ()) >>> arr (\(t, e) ->
+  if t >= failAt then error ("gave up at " ++ show t)
+  else let v = if even (floor (t / 10) :: Int) then 1 else -1
+       in mrFinalize (ddVelDiff v v `mrMerge` tcoPrintMessage (fmap (const ("tick at " ++ show t)) e)))
+
+-- | A log's frames thinned to one frame period in @k@, as a frame rate
+-- @k@ times coarser takes them (a reference for the replay page's
+-- thinning): frames 0, k, 2k, ..., each with the events, console lines
+-- and robots' messages of the frames left out before it; those after the
+-- last kept one are in none.
+thinFrames :: Int -> [LogFrame] -> [LogFrame]
+thinFrames _ [] = []
+thinFrames k (f0 : rest) = f0 : go rest
+  where
+    go fs | length period < k = []
+          | otherwise         = merged : go (drop k fs)
+      where
+        period = take k fs
+        lastOne = last period
+        merged = lastOne { lfEvents = concatMap lfEvents period, lfConsole = concatMap lfConsole period
+                         , lfRobots = zipWith (\r ms -> r { lrMessages = ms }) (lfRobots lastOne)
+                                              (map (concatMap lrMessages) (transpose (map lfRobots period))) }
+
+-- | The page of a log thinned to one frame period in @k@ ('thinFrames'),
+-- its header's frame rate and its summary's count of frames the page's.
+thinnedPage :: Int -> RunLog -> String
+thinnedPage k l = replayPage (RunLog (rlHeader l) { lhFps = lhFps (rlHeader l) / fromIntegral k } frames
+                                     (fmap (\s -> s { lsFrames = length frames }) (rlSummary l)))
+  where
+    frames = thinFrames k (rlFrames l)
 
 -- | A number never computed: the file @spinning@ made in a folder, then a
 -- count up from 1 that ends only when an 'Int' overflows (centuries), in
@@ -1173,6 +1208,42 @@ spec = do
       page <- readFile (dir </> "run.html")
       occurrences "\"kind\":\"frame\"" page `shouldBe` 5001
       out `shouldSatisfy` ("keeps one frame period in 2" `isInfixOf`)
+    it "a run that goes its planned length keeps its planned thinning: its log thinned to one frame period in 2, byte for byte (fixed)" $
+      withTempDir $ \dir -> do
+        (_, _, r) <- captured (runSimWith (quick dir) { optSeconds = 400, optDt = 0.04, optFrames = False
+                                                      , optLog = Just (dir </> "run.jsonl")
+                                                      , optReplay = Just (dir </> "run.html") } (Just world) (restless (1 / 0)) drive)
+        r `shouldBe` Right ()
+        Right l <- readLogFile (dir </> "run.jsonl")
+        -- (not vacuous: bumps and messages in frames the page leaves out)
+        length [ () | f <- every2nd (drop 1 (rlFrames l)), _ <- lfEvents f ] `shouldSatisfy` (>= 5)
+        length [ () | f <- every2nd (drop 1 (rlFrames l)), r' <- lfRobots f, _ <- lrMessages r' ] `shouldSatisfy` (> 1000)
+        readFile (dir </> "run.html") `shouldReturn` thinnedPage 2 l
+    it "a run that fails early gets the page of the length it ran: every frame period of its 100 s of a planned 400 (it kept one in 2)" $
+      withTempDir $ \dir -> do
+        (out, _, r) <- captured (runSimWith (quick dir) { optSeconds = 400, optDt = 0.04, optFrames = False, optQuiet = False
+                                                        , optLog = Just (dir </> "run.jsonl")
+                                                        , optReplay = Just (dir </> "run.html") } (Just world) (restless 100) drive)
+        r `shouldBe` Left (ExitFailure 1)
+        Right l <- readLogFile (dir </> "run.jsonl")
+        length (rlFrames l) `shouldBe` 2500
+        fmap (fmap ("gave up at 100" `isInfixOf`) . lsFailure) (rlSummary l) `shouldBe` Just (Just True)
+        -- (the log's own page, byte for byte)
+        writeReplayFromLog (dir </> "run.jsonl") (dir </> "again.html") `shouldReturn` Right ()
+        page <- readFile (dir </> "run.html")
+        readFile (dir </> "again.html") `shouldReturn` page
+        out `shouldNotSatisfy` ("keeps one frame period" `isInfixOf`)
+    it "a run that fails at 500 s of a planned 1200 keeps one frame period in 2 (it kept one in 4), with the events and messages of the others" $
+      withTempDir $ \dir -> do
+        (out, _, r) <- captured (runSimWith (quick dir) { optSeconds = 1200, optDt = 0.04, optFrames = False, optQuiet = False
+                                                        , optLog = Just (dir </> "run.jsonl")
+                                                        , optReplay = Just (dir </> "run.html") } (Just world) (restless 500) drive)
+        r `shouldBe` Left (ExitFailure 1)
+        Right l <- readLogFile (dir </> "run.jsonl")
+        length (rlFrames l) `shouldBe` 12500
+        length [ () | f <- every2nd (drop 1 (rlFrames l)), _ <- lfEvents f ] `shouldSatisfy` (>= 20)
+        readFile (dir </> "run.html") `shouldReturn` thinnedPage 2 l
+        out `shouldSatisfy` ("this run's page keeps one frame period in 2" `isInfixOf`)
     it "a controller's failure closes the log with the failure and still writes the page" $ withTempDir $ \dir -> do
       let bad _ = localTime >>> arr (\t -> mrFinalize (tcoPrintMessage
                     (if t >= 0.5 then merge (Event "a") (Event "b") else NoEvent)))
@@ -1200,6 +1271,11 @@ spec = do
     ppmAt bytes px py =
       let off = length "P6\n620 620\n255\n" + 3 * (py * 620 + px)
       in if off + 2 < BS.length bytes then Just (BS.index bytes off, BS.index bytes (off + 1), BS.index bytes (off + 2)) else Nothing
+
+-- Every second element, from the first.
+every2nd :: [a] -> [a]
+every2nd (x : _ : xs) = x : every2nd xs
+every2nd xs           = xs
 
 -- How many times a text occurs in another.
 occurrences :: String -> String -> Int

@@ -65,7 +65,8 @@ import           AFrobRobotSim.Simulator (forceWorldState)
 import           AFrobRobotSim.World  (objectHalfSize)
 import           AFrobRobotSim.Log    (LogConfig (..), LogSummary (..), RunLog (..), defaultLogConfig,
                                        logFrames, logHeader)
-import           AFrobRobotSim.Replay (discardReplay, newReplayRecorder, recordReplayState, replayPage, writeReplay)
+import           AFrobRobotSim.Replay (discardReplay, newReplayRecorder, recordReplayState, replayEveryFrame, replayPage,
+                                       writeReplay)
 import           AFRP.Test.LTL
 import           AFRP.Test.Stream
 
@@ -432,7 +433,7 @@ writeRunReplayPage :: FilePath -> SimConfig -> Time -> WorldTemplate -> SimbotCo
 writeRunReplayPage file config duration world rcA rcB =
   -- (the recorder's temporary file closed whatever stops the run: an
   -- error, a timeout's or Ctrl-C's exception)
-  bracketOnError (newReplayRecorder (pageConfig config world)) discardReplay $ \recorder -> do
+  bracketOnError (newReplayRecorder replayEveryFrame (pageConfig config world)) discardReplay $ \recorder -> do
     (steps, simulated, failure) <- record recorder 0 0 (map snd (runStream config duration world rcA rcB))
     writeReplay recorder (pageSummary steps simulated (-1) failure) file
   where

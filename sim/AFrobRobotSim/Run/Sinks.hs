@@ -236,22 +236,30 @@ centreList c = map (centreAt c) [0 .. centresCount c - 1]
 logSink :: LogWriter -> Sink
 logSink w = Sink (const (writeLogState w)) (\summary -> attempt "the log" Nothing (closeLogWriter w summary))
 
--- | The run log and a replay page of the same frames ('logSink' then
--- 'replaySink', as two sinks would be), each frame encoded once: the page
--- records the line the log wrote.
-logAndReplaySink :: LogWriter -> String -> ReplayRecorder -> FilePath -> Sink
-logAndReplaySink w note r file = Sink
+-- | The run log and a replay page ('logSink' then 'replaySink', as two
+-- sinks would be), each frame of every frame period encoded once: the
+-- page records the line the log wrote (for the frames it keeps at every
+-- frame period: 'recordReplayStateWith'; the recorder's 'LogConfig' must
+-- be the log's).
+logAndReplaySink :: LogWriter -> ReplayRecorder -> FilePath -> Sink
+logAndReplaySink w r file = Sink
   (\_ s -> writeLogStateLine w s >>= \line -> recordReplayStateWith r line s)
-  (\summary -> (<>) <$> sinkFinish (logSink w) summary <*> sinkFinish (replaySink note r file) summary)
+  (\summary -> (<>) <$> sinkFinish (logSink w) summary <*> sinkFinish (replaySink r file) summary)
 
--- | The replay page, written at the end from the recorder's temporary file
--- (constant memory; the page grows with the run's length, about 70 kB per
--- simulated second of the default world); @note@ follows its \"wrote\"
--- line.
-replaySink :: String -> ReplayRecorder -> FilePath -> Sink
-replaySink note r file =
+-- | The replay page, written at the end from the recorder's temporary
+-- files (constant memory; the page grows with the run's length, about 70
+-- kB per simulated second of the default world, up to its bound). Its
+-- \"wrote\" line says how thinned it is, when it is: one frame period in
+-- k ('replayPageStride': for the length the run had).
+replaySink :: ReplayRecorder -> FilePath -> Sink
+replaySink r file =
   Sink (const (recordReplayState r))
-       (\summary -> attempt (show file) (Just ("wrote " ++ displayPath file ++ " (open it in a browser)" ++ note)) (writeReplay r summary file))
+       (\summary -> do
+          k <- replayPageStride r summary
+          let note | k > 1     = "; this run's page keeps one frame period in " ++ show k
+                   | otherwise = ""
+          attempt (show file) (Just ("wrote " ++ displayPath file ++ " (open it in a browser)" ++ note))
+                  (writeReplay r summary file))
 
 -- | The result line (settings and outcome), written at the end however the
 -- run ended; the robots' tallies are its only state. Before the first
