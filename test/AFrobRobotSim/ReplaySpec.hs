@@ -61,7 +61,7 @@ recordedPage plan cfg states summary = withTempDir $ \dir -> do
 -- @fps / d@ ('logFrames'), the summary counting its frames.
 pageAtStride :: LogConfig -> Int -> [WorldState] -> LogSummary -> String
 pageAtStride cfg d states summary =
-  replayPage (RunLog (logHeader cfgD) frames (Just summary { lsFrames = length frames }))
+  replayPage (RunLog (logHeader cfgD) frames (Just summary { lsFrames = length frames }) Nothing)
   where
     cfgD   = cfg { lcFps = lcFps cfg / fromIntegral d }
     frames = logFrames cfgD states
