@@ -24,6 +24,7 @@ loopNetworks =
   , ("edgeBy",       edgeBy (\x y -> if y > x + 0.5 then Just y else Nothing) 0 >>> arr ev)
   , ("once",         arr tick >>> once >>> arr ev)
   , ("takeEvents",   arr tick >>> takeEvents 1000 >>> arr ev)
+  , ("dropEvents",   arr tick >>> dropEvents 1000 >>> arr ev)
   , ("hold",         arr tick >>> hold 0)
   , ("accumHold",    arr (fmap (+) . tick) >>> accumHold 0)
   , ("accumBy",      arr tick >>> accumBy (+) 0 >>> arr ev)

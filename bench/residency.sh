@@ -30,7 +30,7 @@ done
 # body here is a lazy accumulator (each state a thunk of the previous one):
 # with its output discarded nobody evaluates it, so it grows without bound
 # (as in Yampa; see bench/README.md) and is run with its output used only.
-for key in edge iEdge edgeJust edgeBy once takeEvents hold accumHold accumBy delayEvent \
+for key in edge iEdge edgeJust edgeBy once takeEvents dropEvents hold accumHold accumBy delayEvent \
            integral imIntegral trapezoid derivative switch rSwitch kSwitch left parZ \
            pSwitchB rpSwitchB loopIntegral sscan sscanPrim iterFrom pause parC \
            delay sampleWindow loopPre; do
