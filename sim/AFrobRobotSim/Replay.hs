@@ -446,9 +446,16 @@ replayEveryFrame = ReplayPlan 0 (const 1)
 -- The price: the frames of the finer strides are made (sensed and
 -- encoded) though a run that goes its length keeps none of them, about
 -- half a page's worth for each doubling of the run beyond a page, and the
--- planned stride's. A 1-hour run of the default world (@S = 10@) makes
--- the frames of 27,901 steps for its page of 9001, and took 10.0 s
--- against 7.9 s (the same page); a 10-hour run, 43,921.
+-- planned stride's; a step that is a frame of several strides whose
+-- periods differ (a message or an event came between) is encoded once
+-- for each. A 1-hour run of the default world (@S = 10@) makes the
+-- frames of 27,901 steps for its page of 9001, and took 10.0 s against
+-- 7.9 s (the same page); a 10-hour run, 43,921 (a review counted 39,930
+-- and 67,530 encodings when a robot prints a line every 0.12 s). It costs
+-- most just past a bound, where nearly every frame period is encoded for
+-- a page of half of them, and where encoding is most of the run: the
+-- review's 200-robot world at 100 frames a second for 70 s (@S = 2@) took
+-- 16.75 s against 10.19 s.
 data ReplayRecorder = ReplayRecorder LogConfig !Int (Double -> Int) (IORef Recording)
   -- (the frames at every frame period; the planned stride; the stride of
   -- a page of a run that stops at a time; what is recorded)

@@ -33,11 +33,11 @@
 -- outputs (the frames and log lines already written are kept; on several
 -- capabilities the frame being written then, held up by the collection
 -- the loop keeps from starting, is left as its temporary file,
--- @frame-NNNNNN.ppm.tmp@; the replay page's temporary file is gone with
--- the program: it is removed from @TMPDIR@ as soon as it is made). A run that
--- is merely slow to stop (its log written into a pipe nobody reads for a
--- while, a video being assembled) has a runtime that acts, and is not cut
--- short. No other signal is used, and one run is watched at a time (a
+-- @frame-NNNNNN.ppm.tmp@; the replay page's temporary files are gone
+-- with the program: each is removed from @TMPDIR@ as soon as it is made).
+-- A run that is merely slow to stop (its log written into a pipe nobody
+-- reads for a while, a video being assembled) has a runtime that acts,
+-- and is not cut short. No other signal is used, and one run is watched at a time (a
 -- second run at once in the same program gets no watchdog of its own,
 -- and keeps the first's in front of its handler). The runtime is watched
 -- until the stop has reached the run's thread, so a loop entered after
