@@ -34,13 +34,12 @@ replayFrom args = do
   prog <- getProgName
   let failWith msg = putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure 2)
   case args of
-    ["--replay-from", f, "--replay", o] -> go failWith f o
-    ["--replay", o, "--replay-from", f] -> go failWith f o
+    ["--replay-from", f, "--replay", o] -> go prog failWith f o
+    ["--replay", o, "--replay-from", f] -> go prog failWith f o
     _ -> failWith "--replay-from FILE.jsonl needs --replay OUT.html and no other flag"
   where
-    go failWith f o = do
+    go prog failWith f o = do
       r <- writeReplayFromLog f o
-      prog <- getProgName
       case r of
         Left msg  -> failWith msg   -- (the message names the file)
         Right end -> do

@@ -44,6 +44,7 @@ maxDepth = 512
 
 -- A position in the text: line and column, both from 1.
 data Pos = Pos !Int !Int
+  deriving Eq
 
 advance :: Pos -> Char -> Pos
 advance (Pos l _) '\n' = Pos (l + 1) 1
@@ -122,10 +123,8 @@ parseJSON txt = case runP (skipSpace *> value 0 <* skipSpace <* end) (Input (Pos
 -- > cutShort "{\"a\" 1}"       == False   -- (a fault at the 1)
 cutShort :: String -> Bool
 cutShort txt = case runP (skipSpace *> value 0) (Input (Pos 1 1) txt) of
-  Left (pos, _) -> samePos pos (foldl' advance (Pos 1 1) txt)
+  Left (pos, _) -> pos == foldl' advance (Pos 1 1) txt
   Right _       -> False
-  where
-    samePos (Pos l c) (Pos l' c') = l == l' && c == c'
 
 value :: Int -> P JSON
 value depth = do

@@ -366,9 +366,9 @@ takeEvents n0 = SF (lazyN (go n0))
 --
 -- Until the @n@-th occurrence has passed, the output is 'NoEvent' whatever
 -- the input: whether a sample is an occurrence is looked at in the next
--- step, as Yampa's (a decoupled switch) looks at it. So an undefined
--- input sample there makes the next sample undefined, not its own output,
--- as in Yampa 0.15.
+-- step, as Yampa's (a decoupled switch) looks at it. So an input sample
+-- there that is an error (bottom) fails the next sample, not its own
+-- output, as in Yampa 0.15.
 dropEvents :: Int -> SF (Event a) (Event a)
 dropEvents n0 = SF (go n0)
   where

@@ -1210,9 +1210,7 @@ spec = do
       out `shouldSatisfy` ("keeps one frame period in 2" `isInfixOf`)
     it "a run that goes its planned length keeps its planned thinning: its log thinned to one frame period in 2, byte for byte (fixed)" $
       withTempDir $ \dir -> do
-        (_, _, r) <- captured (runSimWith (quick dir) { optSeconds = 400, optDt = 0.04, optFrames = False
-                                                      , optLog = Just (dir </> "run.jsonl")
-                                                      , optReplay = Just (dir </> "run.html") } (Just world) (restless (1 / 0)) drive)
+        (_, _, r) <- restlessRun dir 400 (1 / 0)
         r `shouldBe` Right ()
         Right l <- readLogFile (dir </> "run.jsonl")
         -- (not vacuous: bumps and messages in frames the page leaves out)
@@ -1221,9 +1219,7 @@ spec = do
         readFile (dir </> "run.html") `shouldReturn` thinnedPage 2 l
     it "a run that fails early gets the page of the length it ran: every frame period of its 100 s of a planned 400 (it kept one in 2)" $
       withTempDir $ \dir -> do
-        (out, _, r) <- captured (runSimWith (quick dir) { optSeconds = 400, optDt = 0.04, optFrames = False, optQuiet = False
-                                                        , optLog = Just (dir </> "run.jsonl")
-                                                        , optReplay = Just (dir </> "run.html") } (Just world) (restless 100) drive)
+        (out, _, r) <- restlessRun dir 400 100
         r `shouldBe` Left (ExitFailure 1)
         Right l <- readLogFile (dir </> "run.jsonl")
         length (rlFrames l) `shouldBe` 2500
@@ -1235,9 +1231,7 @@ spec = do
         out `shouldNotSatisfy` ("keeps one frame period" `isInfixOf`)
     it "a run that fails at 500 s of a planned 1200 keeps one frame period in 2 (it kept one in 4), with the events and messages of the others" $
       withTempDir $ \dir -> do
-        (out, _, r) <- captured (runSimWith (quick dir) { optSeconds = 1200, optDt = 0.04, optFrames = False, optQuiet = False
-                                                        , optLog = Just (dir </> "run.jsonl")
-                                                        , optReplay = Just (dir </> "run.html") } (Just world) (restless 500) drive)
+        (out, _, r) <- restlessRun dir 1200 500
         r `shouldBe` Left (ExitFailure 1)
         Right l <- readLogFile (dir </> "run.jsonl")
         length (rlFrames l) `shouldBe` 12500
@@ -1273,6 +1267,16 @@ spec = do
       in if off + 2 < BS.length bytes then Just (BS.index bytes off, BS.index bytes (off + 1), BS.index bytes (off + 2)) else Nothing
 
 -- Every second element, from the first.
+-- | @restlessRun dir seconds failAt@: a run of 'world' planned for that
+-- many seconds at dt 0.04, with a log and a page in @dir@, its SimbotA
+-- 'restless' (failing at @failAt@): its standard output and error, and
+-- how it ended.
+restlessRun :: FilePath -> Double -> Time -> IO (String, String, Either ExitCode ())
+restlessRun dir seconds failAt =
+  captured (runSimWith (quick dir) { optSeconds = seconds, optDt = 0.04, optFrames = False, optQuiet = False
+                                   , optLog = Just (dir </> "run.jsonl")
+                                   , optReplay = Just (dir </> "run.html") } (Just world) (restless failAt) drive)
+
 every2nd :: [a] -> [a]
 every2nd (x : _ : xs) = x : every2nd xs
 every2nd xs           = xs
