@@ -42,6 +42,7 @@ module AFrobRobotSim.Log.Read
   ) where
 
 import           Control.Exception         (IOException, finally, try)
+import qualified Data.ByteString.Char8     as BC
 import           Data.Char                 (isDigit)
 import           Data.List                 (stripPrefix)
 import           System.IO                 (hClose, hFileSize)
@@ -278,10 +279,11 @@ foldLogFileUpTo cap lineCap path start step = do
             nextText = nextLineEnded src >>= \r -> case r of
               Left fault                  -> pure (Left (faultText fault))
               Right Nothing               -> pure (Right Nothing)
-              Right (Just (i, bs, ended)) -> case utf8TextFrom name i bs of
-                Left e              -> pure (Left e)
-                Right l | blank l   -> nextText
-                        | otherwise -> pure (Right (Just (i, l, ended)))
+              Right (Just (i, bs, ended))
+                -- (blank by its bytes, before it is decoded: a long blank
+                -- line as a String took seconds and gigabytes)
+                | BC.all (\c -> c == ' ' || c == '\t' || c == '\r') bs -> nextText
+                | otherwise -> pure (either Left (\l -> Right (Just (i, l, ended))) (utf8TextFrom name i bs))
             body h prev s = nextText >>= \r -> case r of
               Left e              -> pure (Left e)
               Right Nothing       -> pure (Right (s, LogEnd Nothing Nothing))
