@@ -67,6 +67,12 @@ spec = do
     runPageTest "replay-usability.test.js" usabilityPage
   it "draws with a HiDPI screen's pixels (2 a CSS pixel): the canvas shown as on a screen of 1, worldToCanvas in the canvas's pixels (fixed)" $
     runPageTest "replay-hidpi.test.js" (replayPage fixtureLog)
+  it "shows the robot's messages newest first, the newest in view at any width, indexed once (no more work a frame late in the run than early), and the run's name in its heading (fixed)" $
+    runPageTest "replay-panel.test.js" usabilityPage
+  it "gives the canvas the screen's new pixels when the browser's zoom changes the ratio, the view and worldToCanvas kept in the canvas's pixels (fixed)" $
+    runPageTest "replay-rescale.test.js" (replayPage fixtureLog)
+  it "leaves Space to a button or a tick box reached with Tab (after a click it plays), and keeps each tick box's label on one line on a narrow window (fixed)" $
+    runPageTest "replay-controls.test.js" (replayPage fixtureLog)
   it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $
     playFixture (replayPage fixtureLog)
   it "plays it as well with its log split over several data elements, every frame read (fixed)" $ do

@@ -15,9 +15,10 @@
   }
   var lines = readLog();
   var header = lines[0];
-  // The run, for the page's title (a tab among others): its program (and
-  // the example, for afrp-examples NAME) and its world file, from its
-  // command line, e.g. "simbot, world maze.world - afrp replay".
+  // The run, for the page's title (a tab among others) and its heading:
+  // its program (and the example, for afrp-examples NAME) and its world
+  // file, from its command line, e.g. "simbot, world maze.world - afrp
+  // replay".
   function runName() {
     var cl = header.commandLine || [], base = function (p) { return String(p).split(/[\\/]/).pop(); };
     if (cl.length === 0) return '';
@@ -29,6 +30,8 @@
   }
   var run = runName();
   document.title = (run ? run + ' - ' : '') + 'afrp replay';
+  // (the heading, as text, said "afrp replay" on every page)
+  document.getElementsByTagName('h1')[0].textContent = 'afrp replay' + (run ? ': ' + run : '');
   var frames = lines.filter(function (l) { return l.kind === 'frame'; });
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
   if (frames.length === 0) {
@@ -45,22 +48,30 @@
   // devicePixelRatio: 2 on many laptops and phones, where a canvas of CSS
   // pixels was drawn blurred), at most 2 (the trails' copies below take
   // dpr^2 times the memory) and at least 1, and is shown at its size in
-  // CSS pixels; the sizes drawn, in CSS pixels, are times dpr. (The ratio
-  // as the page opened: the browser's zoom changes it later.)
-  var dpr = clamp(window.devicePixelRatio || 1, 1, 2);
-  var margin = 10 * dpr;
-  // pixels a metre with the whole world in view (620 CSS pixels on its long side)
-  var fitScale = Math.min(620 / b.width, 620 / b.height) * dpr;
-  canvas.width = Math.round(b.width * fitScale + 2 * margin);
-  canvas.height = Math.round(b.height * fitScale + 2 * margin);
-  // (its border added: the style's box-sizing is border-box)
-  canvas.style.width = canvas.width / dpr + canvas.offsetWidth - canvas.clientWidth + 'px';
+  // CSS pixels; the sizes drawn, in CSS pixels, are times dpr. The
+  // browser's zoom, or the window taken to another screen, changes the
+  // ratio: the canvas is then given the new ratio's pixels (see rescale
+  // below; it kept those of the ratio the page opened with, blurred after
+  // a zoom in).
+  var dpr, margin, fitScale;
+  function setPixels() {
+    dpr = clamp(window.devicePixelRatio || 1, 1, 2);
+    margin = 10 * dpr;
+    // pixels a metre with the whole world in view (620 CSS pixels on its long side)
+    fitScale = Math.min(620 / b.width, 620 / b.height) * dpr;
+    canvas.width = Math.round(b.width * fitScale + 2 * margin);
+    canvas.height = Math.round(b.height * fitScale + 2 * margin);
+    // (its border added: the style's box-sizing is border-box)
+    canvas.style.width = canvas.width / dpr + canvas.offsetWidth - canvas.clientWidth + 'px';
+  }
+  setPixels();
 
   // The view: the world point at the middle of the world's rectangle on
   // the canvas, and a zoom (1: the whole world; up to 250 pixels a metre,
   // or 1 if the whole world is already that close). Zoomed in, the view
   // stays within the world. 'scale' is the view's pixels a metre; 'vx0'
   // and 'vy1' the world's coordinates at the rectangle's top left corner.
+  // (the same at every ratio: fitScale is times dpr too)
   var maxZoom = Math.max(1, 250 * dpr / fitScale);
   var view = { zoom: 1, cx: b.x, cy: b.y };
   var scale, vx0, vy1, fine, viewKey;
@@ -355,10 +366,41 @@
     fullTimer = setTimeout(function () { fullTimer = null; if (trailsRough) draw(); }, 250);
   }
 
-  function num(x, d) { return x === null ? 'n/a' : x.toFixed(d === undefined ? 3 : d); }
+  // The screen's ratio changed (the browser's zoom, another screen): the
+  // canvas and its layers get the new ratio's pixels, the view (its zoom
+  // and middle) and the frame are kept, and all is drawn afresh; the
+  // trails' copies, of the old size, go. Looked at on every resize of the
+  // window (a zoom resizes the page's CSS pixels too) and when the
+  // resolution the page was drawn for stops matching.
+  function rescale() {
+    if (clamp(window.devicePixelRatio || 1, 1, 2) === dpr) return;
+    setPixels();
+    [still, trails].forEach(function (l) {
+      l.canvas.width = canvas.width; l.canvas.height = canvas.height; l.view = null; l.upTo = -1;
+    });
+    trails.saved = []; trails.at = null;
+    setView(view.zoom, view.cx, view.cy);
+    // (a gesture under way goes on from the view as it is, in the new pixels)
+    Object.keys(pointers).forEach(function (k) { pointers[k].at = pixelAt(pointers[k].client[0], pointers[k].client[1]); });
+    startGesture();
+    draw();
+  }
+  function watchRatio() {
+    if (!window.matchMedia) return;
+    var query = window.matchMedia('(resolution: ' + (window.devicePixelRatio || 1) + 'dppx)');
+    var changed = function () {
+      if (query.removeEventListener) query.removeEventListener('change', changed); else query.removeListener(changed);
+      rescale();
+      watchRatio();
+    };
+    if (query.addEventListener) query.addEventListener('change', changed); else query.addListener(changed);
+  }
+
+  function num(x, d) { return x === null ? 'n/a' : x.toFixed(d == null ? 3 : d); }
   function showInfo() {
     var el = $('info');
     if (state.selected < 0) {
+      infoShownFor = -1;
       el.textContent = 'Click or tap a robot to see its readings.\n' +
         'Zoom with the wheel, two fingers or + and -; drag to move; 0 or Fit for the whole world.';
       return;
@@ -382,14 +424,24 @@
       out.push('  ' + s[0] + ' ' + s[1] + ' at ' + num(s[2], 2) + ' rad, ' + num(s[3], 2) + ' m');
     });
     r.seenBalls.forEach(function (s) { out.push('  ball at ' + num(s[0], 2) + ' rad, ' + num(s[1], 2) + ' m'); });
-    out.push('messages (up to now, newest last):');
-    var msgs = [];
-    for (var j = 0; j <= state.frame; j++) {
-      frames[j].robots[i].messages.forEach(function (m) { msgs.push('  [' + m[0].toFixed(2) + '] ' + m[1]); });
-    }
+    // The robot's last 50 messages up to the frame, newest first, from the
+    // index the events panel's lines are made with (they were gathered
+    // from frame 0 at every frame drawn). Newest first, the newest is the
+    // line below the readings, read with them as the robot's latest word,
+    // at the same place while playing; its older ones follow, to be
+    // scrolled to. (Newest last, it was below the panel's bottom once the
+    // lines outgrew it, soon on a narrow window, which wraps the readings;
+    // the panel scrolled to its end would hide the readings instead.)
+    indexEvents(state.frame);
+    var said = robotMessages[i] || { frames: [], lines: [] }, n = messagesUpTo(said, state.frame);
+    out.push('messages (up to now, newest first):');
+    var msgs = said.lines.slice(Math.max(0, n - 50), n).reverse();
     if (msgs.length === 0) msgs.push('  none');
-    el.textContent = out.concat(msgs.slice(-50)).join('\n');
+    el.textContent = out.concat(msgs).join('\n');
+    // (another robot's readings are shown from the top)
+    if (i !== infoShownFor) { el.scrollTop = 0; infoShownFor = i; }
   }
+  var infoShownFor = -1;
   // The events panel's lines in the run's order: each frame's events (a
   // bump, a score) and its robots' messages, by time, then the console
   // lines no robot printed; 'eventsUpTo[j]', how many of them frames 0 to
@@ -398,15 +450,21 @@
   // every robot-frame, about 0.4 microseconds each, some 0.5 s for the
   // largest page). (The messages were only in the selected robot's panel;
   // and the lines were gathered from frame 0 at every frame drawn.)
-  var eventLines = [], eventsUpTo = [];
+  // Each robot's messages are kept too, for its panel: 'robotMessages[i]'
+  // (for a robot that has printed) has their lines and the frame of each,
+  // and 'messagesUpTo' counts those of frames 0 to j.
+  var eventLines = [], eventsUpTo = [], robotMessages = {};
   function indexEvents(upTo) {
     for (var j = eventsUpTo.length; j <= upTo; j++) {
       var f = frames[j], own = [];
       f.events.forEach(function (e) { own.push([e.t, '[' + e.t.toFixed(2) + '] ' + e.kind + ': ' + e.text]); });
       for (var i = 0; i < f.robots.length; i++) {
         var ms = f.robots[i].messages;
+        if (ms.length > 0 && !(i in robotMessages)) robotMessages[i] = { frames: [], lines: [] };
         for (var k = 0; k < ms.length; k++) {
           own.push([ms[k][0], '[' + ms[k][0].toFixed(2) + '] ' + header.robots[i].type + ' ' + header.robots[i].id + ': ' + ms[k][1]]);
+          robotMessages[i].frames.push(j);
+          robotMessages[i].lines.push('  [' + ms[k][0].toFixed(2) + '] ' + ms[k][1]);
         }
       }
       // (Array.prototype.sort is stable: a step's events, then its messages)
@@ -416,8 +474,15 @@
       eventsUpTo.push(eventLines.length);
     }
   }
-  // The last 30 lines up to the frame, newest last (as the messages in
-  // the robot's panel), scrolled to the end so that the newest shows, also
+  // (a binary search: the first of the robot's messages after frame j)
+  function messagesUpTo(said, j) {
+    var lo = 0, hi = said.frames.length;
+    while (lo < hi) { var mid = (lo + hi) >> 1; if (said.frames[mid] <= j) lo = mid + 1; else hi = mid; }
+    return lo;
+  }
+  // The last 30 lines up to the frame, newest last (as a log is read; the
+  // robot's panel, whose readings come first, has its messages newest
+  // first), scrolled to the end so that the newest shows, also
   // after a step back; the panel is left as it is (and where the user
   // scrolled it) while the frame brings no line and takes none away.
   var eventsShown = -1;
@@ -498,12 +563,13 @@
   });
   ['rays', 'trails', 'sightings'].forEach(function (id) { $(id).addEventListener('change', function () { draw(); }); });
   $('follow').addEventListener('change', function () { follow(frames[state.frame]); draw(); });
-  // the canvas pixel under a mouse or pointer event (inside the canvas's
-  // border; the canvas may be shown scaled)
-  function eventPixel(e) {
+  // the canvas pixel under a mouse or pointer event, or under a point of
+  // the window (inside the canvas's border; the canvas may be shown scaled)
+  function eventPixel(e) { return pixelAt(e.clientX, e.clientY); }
+  function pixelAt(clientX, clientY) {
     var r = canvas.getBoundingClientRect();
-    return [(e.clientX - r.left - canvas.clientLeft) * canvas.width / canvas.clientWidth,
-            (e.clientY - r.top - canvas.clientTop) * canvas.height / canvas.clientHeight];
+    return [(clientX - r.left - canvas.clientLeft) * canvas.width / canvas.clientWidth,
+            (clientY - r.top - canvas.clientTop) * canvas.height / canvas.clientHeight];
   }
   canvas.addEventListener('wheel', function (e) {
     e.preventDefault();
@@ -620,12 +686,32 @@
   $('zoomin').addEventListener('click', function () { zoomMiddle(1.5); });
   $('zoomout').addEventListener('click', function () { zoomMiddle(1 / 1.5); });
   $('fit').addEventListener('click', fit);
+  // whether an element is a button or a tick box that has the focus from
+  // the keyboard (Tab), not from a click or a tap: 'focusByKeys', set as
+  // the focus moves, unless a press of the mouse, a finger or a pen came
+  // after the last key (the browser's :focus-visible will not do: Chrome
+  // turns it on at any key, Space's own keydown too)
+  var focusByKeys = false, pressed = false;
+  document.addEventListener('pointerdown', function () { pressed = true; focusByKeys = false; }, true);
+  document.addEventListener('keydown', function () { pressed = false; }, true);
+  document.addEventListener('focusin', function () { focusByKeys = !pressed; });
+  function keyboardControl(el) {
+    return focusByKeys && el === document.activeElement &&
+           (el.tagName === 'BUTTON' || (el.tagName === 'INPUT' && el.type === 'checkbox'));
+  }
   document.addEventListener('keydown', function (e) {
     if (e.target && e.target.tagName === 'SELECT') return;
     // (a key with Ctrl, Meta or Alt is the browser's: Ctrl+0, Ctrl+plus
     // and Ctrl+minus zoom the page, Alt+left goes back; Shift is left in,
     // as + is Shift+= on many keyboards)
     if (e.ctrlKey || e.metaKey || e.altKey) return;
+    // (Space on a button or a tick box reached with the keyboard, Tab, is
+    // the control's: it presses the button or ticks the box, as a user of
+    // the keyboard expects; it played instead. After a click, which also
+    // leaves the focus on the control, it plays, as elsewhere on the page:
+    // Space after a click on the step button plays rather than steps
+    // again.)
+    if (e.key === ' ' && keyboardControl(e.target)) return;
     if (e.key === ' ') { e.preventDefault(); setPlaying(!state.playing); }
     else if (e.key === 'ArrowLeft') { e.preventDefault(); setPlaying(false); setFrame(state.frame - 1); }
     else if (e.key === 'ArrowRight') { e.preventDefault(); setPlaying(false); setFrame(state.frame + 1); }
@@ -645,7 +731,7 @@
     header: header, summary: summary,
     frameCount: function () { return frames.length; },
     frame: function () { return state.frame; },
-    frameData: function (i) { return frames[i === undefined ? state.frame : i]; },
+    frameData: function (i) { return frames[i == null ? state.frame : i]; },
     setFrame: setFrame,
     play: function () { setPlaying(true); },
     pause: function () { setPlaying(false); },
@@ -668,4 +754,6 @@
     roughAbove: 200000
   };
   setFrame(0);
+  window.addEventListener('resize', rescale);
+  watchRatio();
 })();
