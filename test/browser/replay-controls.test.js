@@ -54,8 +54,8 @@ run('node replay-controls.test.js PAGE.html', async (page, errors, open) => {
     await page.keyboard.press('Space');
     const played = await state();
     await R(() => window.afrpReplay.pause());
-    check(stepped.frame === 6 && stepped.focus === 'fwd' && played.playing && played.frame <= 7,
-          'Space after a click on the step button plays, and does not step again (' + JSON.stringify([stepped, played]) + ')');
+    check(stepped.frame === 6 && stepped.focus === 'fwd' && played.playing,
+          'Space after a click on the step button plays (a press of the button would have paused it) (' + JSON.stringify([stepped, played]) + ')');
     await page.click('#trails');
     const clicked = await state();
     await page.keyboard.press('Space');

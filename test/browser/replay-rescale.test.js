@@ -14,13 +14,28 @@
 // pixels wide (or scaled to fit the window); worldToCanvas is in its pixels (a robot's colour is read
 // where it puts it, and a click there selects it); the view (zoom and
 // middle) and the frame are kept; a resize that keeps the ratio keeps the
-// canvas.
+// canvas and gives no canvas a width; one listener of a media query is
+// live at the end (each change's is removed).
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
 'use strict';
 const { run, check, near } = require('./harness');
 
 run('node replay-rescale.test.js PAGE.html', async (page, errors, open) => {
+    // (counted before the page's script runs: the media queries' change
+    // listeners live, and how often a canvas is given a width)
+    await page.addInitScript(() => {
+      window.afrpSpy = { listeners: 0, widths: 0 };
+      const MQ = window.MediaQueryList.prototype, add = MQ.addEventListener, remove = MQ.removeEventListener;
+      MQ.addEventListener = function (type, f, o) { if (type === 'change') window.afrpSpy.listeners++; return add.call(this, type, f, o); };
+      MQ.removeEventListener = function (type, f, o) { if (type === 'change') window.afrpSpy.listeners--; return remove.call(this, type, f, o); };
+      const width = Object.getOwnPropertyDescriptor(HTMLCanvasElement.prototype, 'width');
+      Object.defineProperty(HTMLCanvasElement.prototype, 'width', {
+        get: function () { return width.get.call(this); },
+        set: function (v) { window.afrpSpy.widths++; width.set.call(this, v); },
+        configurable: true });
+    });
+    const spy = () => page.evaluate(() => Object.assign({}, window.afrpSpy));
     await open();
     const cdp = await page.context().newCDPSession(page);
     // a zoom of the browser: the ratio times z, the window's CSS pixels over z
@@ -75,10 +90,15 @@ run('node replay-rescale.test.js PAGE.html', async (page, errors, open) => {
             JSON.stringify([a, bB]) + ')');
       check(await clickSelects(s, 1) === 1, what + ' a click on SimbotB 2 selects it');
     }
-    // a resize alone (the ratio kept) keeps the canvas's pixels
+    // a resize alone (the ratio kept) keeps the canvas's pixels, and gives no canvas a width
+    const spied = await spy();
     await cdp.send('Emulation.setDeviceMetricsOverride', { width: 900, height: 700, deviceScaleFactor: 1, mobile: false });
     await page.evaluate(() => new Promise(done => requestAnimationFrame(() => requestAnimationFrame(done))));
     const resized = await state();
-    check(resized.width === 640 && resized.css === 640, 'a resize that keeps the ratio keeps the canvas (' + resized.width + ', shown ' + resized.css + ')');
+    const spiedAfter = await spy();
+    check(resized.width === 640 && resized.css === 640 && spiedAfter.widths === spied.widths,
+          'a resize that keeps the ratio keeps the canvas, made afresh no canvas (' + resized.width + ', shown ' + resized.css +
+          '; widths given ' + spied.widths + ' then ' + spiedAfter.widths + ')');
+    check(spiedAfter.listeners === 1, 'after every change of ratio, one listener of a media query is left (' + spiedAfter.listeners + ')');
     check(errors.length === 0, 'no errors on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
 });
