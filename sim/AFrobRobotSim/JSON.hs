@@ -1,5 +1,4 @@
 {-# LANGUAGE BangPatterns #-}
-{-# LANGUAGE MultiWayIf   #-}
 -- |
 -- Module      : AFrobRobotSim.JSON
 -- Description : A small JSON value type, its encoder and its parser.
@@ -11,10 +10,13 @@
 --
 -- The value type and the encoder are "AFrobRobotSim.JSON.Encode", which
 -- says what the encoder writes (its escapes, its numbers) and is
--- re-exported here whole; the parser and the readers of values are this
--- module's own. The seam runs this way round, the encoder below the
--- parser, because a reader's error names a number by its JSON text
--- ('encodeNumber').
+-- re-exported here whole; the parser of strings and the readers of values
+-- are this module's own. The seam runs this way round, the encoder below
+-- the parser, because a reader's error names a number by its JSON text
+-- ('encodeNumber'). The parser of bytes ('parseJSONBytes', for a file's
+-- lines: a log's line of 38 MB cost gigabytes as a 'String') is
+-- "AFrobRobotSim.JSON.Bytes", re-exported here; it gives what 'parseJSON'
+-- gives, value and error alike.
 module AFrobRobotSim.JSON
   ( -- * Values and encoding
     module AFrobRobotSim.JSON.Encode
@@ -22,6 +24,8 @@ module AFrobRobotSim.JSON
   , parseJSON
   , cutShort
   , maxDepth
+  , parseJSONBytes
+  , cutShortBytes
     -- * Reading values
   , member
   , memberMaybe
@@ -35,12 +39,9 @@ module AFrobRobotSim.JSON
 import           Data.Char                  (chr, isDigit, isHexDigit, ord, digitToInt)
 import           Data.List                  (foldl')
 
+import           AFrobRobotSim.JSON.Bytes   (cutShortBytes, maxDepth, parseJSONBytes, roundDigits,
+                                             significantDigits)
 import           AFrobRobotSim.JSON.Encode
-
--- | How deeply arrays and objects may nest in a text 'parseJSON' accepts:
--- 512 (deeper input is rejected, not a stack to exhaust).
-maxDepth :: Int
-maxDepth = 512
 
 -- A position in the text: line and column, both from 1.
 data Pos = Pos !Int !Int
@@ -208,34 +209,14 @@ number = do
 
 -- | @decimal negative int frac e@: the number @int.frac@ times @10^e@
 -- (digits, as JSON writes them), negated if @negative@, rounded to the
--- nearest 'Double' as 'read' rounds it. A number of at most 15
--- significant digits and an exponent within 22 of them is made in one
--- division or product, which is exact then (both operands are); any
--- other is given to 'read' with at most 'significantDigits' digits:
--- 'read' of a million digits takes half a minute, and the rest cannot
--- change how it rounds. Digits beyond those are dropped; if one of them
--- was not zero, a 1 stands for them after the last one kept (so a number
--- just above a point halfway between two 'Double's stays above it).
+-- nearest 'Double' as 'read' rounds it ('roundDigits', of the first
+-- 'significantDigits' significant digits and whether one after them is
+-- not zero: 'read' of a million digits takes half a minute, and the rest
+-- cannot change how it rounds).
 decimal :: Bool -> String -> String -> Int -> Double
-decimal negative int frac e = signed $ case dropWhile (== '0') (int ++ frac) of
-  []     -> 0
-  digits ->
-    let (kept, dropped) = splitAt significantDigits digits
-        sticky = any (/= '0') dropped
-        -- the exponent of the digits kept, as a whole number: a value
-        -- beyond 10^(+-99999) is an infinity or zero, however written
-        ex = max (-99999) (min 99999 (e - length frac + length dropped - (if sticky then 1 else 0)))
-        whole = foldl' (\a d -> a * 10 + fromIntegral (digitToInt d)) 0 kept :: Int
-    in if | null dropped, length kept <= 15, ex >= 0, ex <= 22 -> fromIntegral whole * 10 ^ ex
-          | null dropped, length kept <= 15, ex < 0, ex >= -22 -> fromIntegral whole / 10 ^ negate ex
-          | otherwise -> read (kept ++ (if sticky then "1" else "") ++ "e" ++ show ex)
-  where
-    signed x = if negative then negate x else x
-
--- The most significant digits 'decimal' keeps: 800. The exact decimal
--- value of a point halfway between two 'Double's has at most 767.
-significantDigits :: Int
-significantDigits = 800
+decimal negative int frac e =
+  let (kept, dropped) = splitAt significantDigits (dropWhile (== '0') (int ++ frac))
+  in roundDigits negative kept (length dropped) (any (/= '0') dropped) (e - length frac)
 
 stringLit :: P String
 stringLit = expect '"' *> P (scan [])

@@ -12,7 +12,9 @@
 -- version, a header whose dt or fps is not positive, a frame whose robots
 -- are not the header's, a time written as @null@, a line after the
 -- summary. A file is read a line at a time ('foldLogFile'), at most so
--- many bytes in all and in a line, as UTF-8.
+-- many bytes in all and in a line, as UTF-8, each line parsed as its
+-- bytes ('AFrobRobotSim.JSON.parseJSONBytes': the same lines, and the
+-- same errors, as 'readLog' of the file's text).
 --
 -- = A log cut off
 --
@@ -48,7 +50,7 @@ import           Data.List                 (stripPrefix)
 import           System.IO                 (hClose, hFileSize)
 
 import           AFrobRobotSim.Console     (displayPath)
-import           AFrobRobotSim.JSON        (cutShort)
+import           AFrobRobotSim.JSON        (cutShort, cutShortBytes)
 import           AFrobRobotSim.Log.Records
 import           AFrobRobotSim.InputFile   (LineFault (..), newLineReader, nextLineEnded, openReading)
 import           AFrobRobotSim.WorldFile.Lexical (cannotRead, utf8TextFrom)
@@ -94,12 +96,12 @@ type Locate = Int -> Maybe Int -> String
 readLogAt :: Locate -> String -> Either String RunLog
 readLogAt loc txt = case [ (i, l, ended) | (i, (l, ended)) <- zip [1 :: Int ..] (linesEnded txt), not (blank l) ] of
   [] -> Left (loc 1 Nothing ++ emptyLog)
-  (i0, l0, ended0) : rest -> headerLine loc ended0 i0 l0 >>= \h -> go h [] rest
+  (i0, l0, ended0) : rest -> headerLine loc (cutOff ended0 l0) i0 (decodeLogLine l0) >>= \h -> go h [] rest
   where
     go h acc [] = Right (RunLog h (reverse acc) Nothing Nothing)
     go h acc ((i, l, ended) : rest)
       | cutOff ended l = Right (RunLog h (reverse acc) Nothing (Just i))
-      | otherwise = bodyLine loc h (lastTime acc) i l >>= \ln -> case ln of
+      | otherwise = bodyLine loc h (lastTime acc) i (decodeLogLine l) >>= \ln -> case ln of
           Left f  -> go h (f : acc) rest
           Right s -> case rest of
             []            -> Right (RunLog h (reverse acc) (Just s) Nothing)
@@ -119,6 +121,10 @@ linesEnded txt = case break (== '\n') txt of
 cutOff :: Bool -> String -> Bool
 cutOff ended l = not ended && cutShort l
 
+-- 'cutOff' of a line's bytes (UTF-8).
+cutOffBytes :: Bool -> BC.ByteString -> Bool
+cutOffBytes ended l = not ended && cutShortBytes l
+
 -- The time of the newest frame read, of frames newest first (0 before
 -- the first: a frame's time is not negative).
 lastTime :: [LogFrame] -> Double
@@ -134,11 +140,13 @@ emptyLog, afterSummary :: String
 emptyLog = "an empty log (expected a header line)"
 afterSummary = "a line after the summary"
 
--- The first line that is not blank, line @i@: a header of this format and
--- version, whose dt and fps are positive.
-headerLine :: Locate -> Bool -> Int -> String -> Either String LogHeader
-headerLine loc ended i l = do
-  h <- either (Left . (++ hint)) Right $ located loc i (decodeLogLine l) >>= \ln -> case ln of
+-- The first line that is not blank, line @i@, decoded ('decodeLogLine'
+-- or 'decodeLogLineBytes'): a header of this format and version, whose
+-- dt and fps are positive. @cut@: whether the line is a log's cut-off end
+-- ('cutOff': looked at only for a line refused).
+headerLine :: Locate -> Bool -> Int -> Either String LogLine -> Either String LogHeader
+headerLine loc cut i decoded = do
+  h <- either (Left . (++ hint)) Right $ located loc i decoded >>= \ln -> case ln of
     LineHeader h -> Right h
     _            -> Left (loc i Nothing ++ "expected the header line first")
   located loc i (checkVersion h)
@@ -159,18 +167,18 @@ headerLine loc ended i l = do
     -- (a first line that is no header: most often a file that is not a
     -- log; or, with no newline after it, a log cut off in its first
     -- line)
-    hint | cutOff ended l = " (the line stops with no newline after it: did the run that wrote the log stop"
+    hint | cut            = " (the line stops with no newline after it: did the run that wrote the log stop"
                             ++ " as it began, or its disk fill up?)"
          | otherwise      = " (is it a run log? a run writes one with --log FILE.jsonl)"
     positive x = x > 0 && not (isInfinite x)   -- (NaN, read from null, is not > 0)
     finite x = not (isNaN x || isInfinite x)
 
--- A line after the header, line @i@, not blank, the frame before it at
--- time @prev@ (0 for none): a frame (with a time, not before @prev@, the
--- header's robots, and robots and balls at places that are numbers) or
--- the summary (with its times).
-bodyLine :: Locate -> LogHeader -> Double -> Int -> String -> Either String (Either LogFrame LogSummary)
-bodyLine loc h prev i l = located loc i (decodeLogLine l) >>= \ln -> case ln of
+-- A line after the header, line @i@, not blank, decoded, the frame before
+-- it at time @prev@ (0 for none): a frame (with a time, not before
+-- @prev@, the header's robots, and robots and balls at places that are
+-- numbers) or the summary (with its times).
+bodyLine :: Locate -> LogHeader -> Double -> Int -> Either String LogLine -> Either String (Either LogFrame LogSummary)
+bodyLine loc h prev i decoded = located loc i decoded >>= \ln -> case ln of
   LineFrame f
     | not (finite (lfTime f)) ->
         Left (loc i Nothing ++ "a frame's time must be a number, found " ++ show (lfTime f)
@@ -234,9 +242,13 @@ maxLogBytes = 256 * 1024 * 1024
 -- all robots) about 38 MB; the header of a world of as many objects is
 -- shorter. A line is longer only when the robots print more than some
 -- 26 MB of messages in one frame period, or a world built in code holds
--- more robots. Reading a line takes up to some 33 times its length in
--- memory (a 60 MB string: 2 GB), so a longer one (a file that is no log,
--- a line without an end, such as @\/dev\/zero@'s) is refused, not read.
+-- more robots. A line is read as its bytes, and only what of its value
+-- is used is made ('AFrobRobotSim.Log.Records.decodeLogLineBytes'): a
+-- line of 64 MiB refused for a member it lacks takes some 70 MB of heap
+-- (it took 1 to 2 GB as a 'String'), a frame of 10,000 robots some 9
+-- times its bytes with the frame made of it. A longer line (a file that
+-- is no log, a line without an end, such as @\/dev\/zero@'s) is refused,
+-- not read.
 maxLogLineBytes :: Int
 maxLogLineBytes = 64 * 1024 * 1024
 
@@ -275,21 +287,22 @@ foldLogFileUpTo cap lineCap path start step = do
       if size > fromIntegral cap then pure (Left tooLong) else do
         src <- newLineReader hdl cap lineCap
         let -- the next line that is not blank, with its number and
-            -- whether a newline ends it
+            -- whether a newline ends it; its bytes, which are UTF-8 (it is
+            -- read as bytes: as a String, a line took some 40 times its
+            -- length, and gigabytes)
             nextText = nextLineEnded src >>= \r -> case r of
               Left fault                  -> pure (Left (faultText fault))
               Right Nothing               -> pure (Right Nothing)
               Right (Just (i, bs, ended))
-                -- (blank by its bytes, before it is decoded: a long blank
-                -- line as a String took seconds and gigabytes)
                 | BC.all (\c -> c == ' ' || c == '\t' || c == '\r') bs -> nextText
-                | otherwise -> pure (either Left (\l -> Right (Just (i, l, ended))) (utf8TextFrom name i bs))
+                -- (the text, unused, is not made)
+                | otherwise -> pure (either Left (\_ -> Right (Just (i, bs, ended))) (utf8TextFrom name i bs))
             body h prev s = nextText >>= \r -> case r of
               Left e              -> pure (Left e)
               Right Nothing       -> pure (Right (s, LogEnd Nothing Nothing))
               Right (Just (i, l, ended))
-                | cutOff ended l -> pure (Right (s, LogEnd Nothing (Just i)))
-                | otherwise -> case bodyLine loc h prev i l of
+                | cutOffBytes ended l -> pure (Right (s, LogEnd Nothing (Just i)))
+                | otherwise -> case bodyLine loc h prev i (decodeLogLineBytes l) of
                     Left e          -> pure (Left e)
                     Right (Left f)  -> step s f >>= body h (lfTime f)
                     Right (Right m) -> nextText >>= \after -> pure $ case after of
@@ -300,7 +313,7 @@ foldLogFileUpTo cap lineCap path start step = do
         case first of
           Left e                     -> pure (Left e)
           Right Nothing              -> pure (Left (loc 1 Nothing ++ emptyLog))
-          Right (Just (i, l, ended)) -> case headerLine loc ended i l of
+          Right (Just (i, l, ended)) -> case headerLine loc (cutOffBytes ended l) i (decodeLogLineBytes l) of
             Left e  -> pure (Left e)
             Right h -> start h >>= body h 0
     name = displayPath path   -- (a name with control characters escaped)

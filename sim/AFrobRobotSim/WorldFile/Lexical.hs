@@ -48,37 +48,16 @@ import           System.FilePath        (normalise)
 import           System.IO.Error        (ioeGetErrorType)
 
 import           AFrobRobotSim.Console  (displayPath, quote)
+import           AFrobRobotSim.JSON.Bytes (utf8Fault)
 
 ------------------------------------------------------------------------------
 -- UTF-8
 
 -- The first invalid byte of a UTF-8 text, if any: its line, column (in
--- characters) and value.
+-- characters) and value (the JSON parser of bytes checks its input so
+-- too).
 utf8Error :: B.ByteString -> Maybe (Int, Int, Word8)
-utf8Error bs = go 0 1 1
-  where
-    n = B.length bs
-    at i = BU.unsafeIndex bs i
-    cont i lo hi = i < n && at i >= lo && at i <= hi
-    go !i !l !c
-      | i >= n    = Nothing
-      | b < 0x80  = if b == 10 then go (i + 1) (l + 1) 1 else go (i + 1) l (c + 1)
-      | b >= 0xC2 && b <= 0xDF = need 1 0x80 0xBF
-      | b == 0xE0 = need 2 0xA0 0xBF
-      | b == 0xED = need 2 0x80 0x9F
-      | b >= 0xE1 && b <= 0xEF = need 2 0x80 0xBF
-      | b == 0xF0 = need 3 0x90 0xBF
-      | b >= 0xF1 && b <= 0xF3 = need 3 0x80 0xBF
-      | b == 0xF4 = need 3 0x80 0x8F
-      | otherwise = Just (l, c, b)
-      where
-        b = at i
-        -- the second byte in [lo, hi], the others continuation bytes
-        need k lo hi
-          | not (cont (i + 1) lo hi) = Just (l, c, b)
-          | k >= 2 && not (cont (i + 2) 0x80 0xBF) = Just (l, c, b)
-          | k >= 3 && not (cont (i + 3) 0x80 0xBF) = Just (l, c, b)
-          | otherwise = go (i + 1 + k) l (c + 1)
+utf8Error = utf8Fault
 
 -- | The text of a file's bytes, or, when they are not UTF-8, the message
 -- every reader of text files gives:

@@ -6,14 +6,16 @@ module AFrobRobotSim.Log.ReadSpec (spec) where
 import qualified Data.ByteString          as BS
 import qualified Data.ByteString.Char8    as BC
 import           Control.Monad            (forM_)
-import           Data.Char                (isPrint)
-import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf)
+import           Data.Char                (isDigit, isPrint)
+import           Data.List                (isInfixOf, isPrefixOf, isSuffixOf, stripPrefix)
 import           System.Directory         (getTemporaryDirectory, removeFile)
 import           System.FilePath          ((</>))
 import           System.IO                (hClose, openTempFile)
 import           Test.Hspec
+import           Test.QuickCheck
 
 import           AFrobRobotSim.Log
+import           AFrobRobotSim.JSONSpec   (utf8)
 import           AFrobRobotSim.LogFixture
 import           TestUtil                 (withTempDir)
 
@@ -125,6 +127,17 @@ spec = do
     -- within the limit, the file is read as a log (here: not one)
     s <- readLogFileUpTo 400 path
     s `shouldSatisfy` either (not . ("more than" `isInfixOf`)) (const False)
+  it "readLogFile reads a log's bytes as readLog reads its text: the same log, or the same error (property)" $
+    -- (the file's lines are parsed as bytes, the text's as a String)
+    withMaxSuccess 300 $ forAll brokenLog $ \txt -> ioProperty $ withTempDir $ \dir -> do
+      let path = dir </> "run.jsonl"
+      BS.writeFile path (utf8 txt)
+      r <- readLogFile path
+      n <- foldLogFile path (\h -> pure (h, [])) (\(h, fs) f -> pure (h, f : fs))
+      let expected = either (Left . asFileError path) Right (readLog txt)
+          folded = fmap (\((h, fs), LogEnd sm cut) -> RunLog h (reverse fs) sm cut) n
+      -- (shown: a number read as null, NaN, is not equal to itself)
+      pure (counterexample txt (show r === show expected .&&. show folded === show expected))
   it "readLogFile says which file it cannot read and why, not which Haskell function failed" $ do
     r <- readLogFile "no-such-dir/run.jsonl"
     fmap (const ()) r `shouldBe` Left "no-such-dir/run.jsonl: cannot read it: does not exist (No such file or directory)"
@@ -203,6 +216,47 @@ spec = do
         if i == 1
           then readLog (take k l) `shouldSatisfy` either ("or its disk fill up?)" `isSuffixOf`) (const False)
           else fmap rlCutLine (readLog (head ls ++ "\n" ++ take k l)) `shouldBe` Right (Just 2)
+
+-- The fixture log with faults made in it, or none: a line cut short (the
+-- log ending there, or going on), a character put in, taken out or put
+-- for another (characters of JSON, control characters, characters
+-- outside ASCII), a newline taken out or put in, blank lines put in; and
+-- lines given a first member whose name is not ASCII.
+brokenLog :: Gen String
+brokenLog = do
+  let ls = lines fixtureLogText
+  faults <- choose (0, 3 :: Int)
+  ls' <- foldr (=<<) (pure ls) (replicate faults breakOne)
+  end <- elements ["\n", "\n", ""]
+  pure (concatMap (++ "\n") (init' ls') ++ concat (lastOf ls') ++ if null ls' then "" else end)
+  where
+    init' xs = if null xs then [] else init xs
+    lastOf xs = [ last xs | not (null xs) ]
+    breakOne ls = do
+      i <- choose (0, length ls - 1)
+      let l = ls !! i
+      k <- choose (0, length l)
+      c <- elements [ "{", "}", "[", "]", ",", ":", "\"", "\\", "-", ".", "0", "9", "e", " ", "\t", "\r", "\0", "\233"
+                    , "\x1F600", "null", "1e999", "\"x\":1,", "\n", "  \n \n" ]
+      l' <- oneof [ pure (take k l), pure (take k l ++ c ++ drop k l), pure (take k l ++ drop (k + 1) l)
+                  , (\m -> take k l ++ c ++ drop (k + m) l) <$> choose (1, 4) ]
+      -- (a member first whose name is not ASCII: a fault after it is
+      -- at a column of characters, not bytes)
+      let wide = "{\"\233\x1F600\":0," ++ drop 1 l
+      how <- choose (0, 4 :: Int)
+      pure (case how of
+              0 -> take i ls ++ [take k l]
+              1 -> take i ls ++ [wide] ++ drop (i + 1) ls
+              _ -> take i ls ++ [l'] ++ drop (i + 1) ls)
+
+-- An error of 'readLog' (@line L, column C: ...@ or @line L: ...@) as
+-- 'readLogFile' of a file of the same text says it.
+asFileError :: FilePath -> String -> String
+asFileError path e = case span isDigit <$> stripPrefix "line " e of
+  Just (l@(_ : _), ',' : ' ' : rest)
+    | Just (c@(_ : _), ':' : ' ' : msg) <- span isDigit <$> stripPrefix "column " rest -> path ++ ":" ++ l ++ ":" ++ c ++ ": " ++ msg
+  Just (l@(_ : _), ':' : ' ' : msg) -> path ++ ":" ++ l ++ ": " ++ msg
+  _ -> e
 
 -- @setFirst key v line@: the number after the first @key@ in @line@
 -- written @v@ instead.
