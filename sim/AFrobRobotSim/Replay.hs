@@ -21,12 +21,15 @@
 -- go), a speed (0.25x to 32x; frames that cannot be shown so fast are
 -- passed over, the time running at the speed), toggles for range rays,
 -- trails and tracker sightings, and beside the canvas (below it in a
--- window narrower than about 980 pixels) a panel with the readings,
--- wheel speeds and messages of the robot last clicked, and the run's
+-- window narrower than about 980 pixels) a panel with the readings and
+-- wheel speeds of the robot last clicked, then its messages up to the
+-- frame, newest first (the last 50), and the run's
 -- events: bumps, scores, the robots' messages and the other console
 -- lines, the last 30 up to the frame, newest last and scrolled into
 -- view. Keys with Ctrl, Meta or Alt are left to the browser (its zoom:
--- Ctrl+0, Ctrl+plus, Ctrl+minus). Its title names the run: the program
+-- Ctrl+0, Ctrl+plus, Ctrl+minus); Space plays or pauses, except on a
+-- button or a tick box reached with Tab, which it presses or ticks. Its
+-- title and its heading name the run (as text): the program
 -- (and the example) and the world file, from the log's command line
 -- (@simbot, world maze.world - afrp replay@). It
 -- zooms (the mouse wheel, or a touchpad's pinch, about the point under
@@ -50,7 +53,8 @@
 -- the robots are at least 8 pixels across; when a SimbotA and a
 -- SimbotB share an id, every id drawn has its type's letter (A1, B1).
 -- The canvas has the screen's pixels: its @devicePixelRatio@ (from 1 to
--- 2, as the page opened) a CSS pixel, shown at its size in CSS pixels;
+-- 2, taken again when the browser's zoom or another screen changes it,
+-- the view and the frame kept) a CSS pixel, shown at its size in CSS pixels;
 -- the sizes above are CSS pixels, a click's 3 canvas pixels too (those
 -- of the canvas shown at its own size, not scaled to fit).
 --
