@@ -246,7 +246,10 @@ maxLogBytes = 256 * 1024 * 1024
 -- is used is made ('AFrobRobotSim.Log.Records.decodeLogLineBytes'): a
 -- line of 64 MiB refused for a member it lacks takes some 70 MB of heap
 -- (it took 1 to 2 GB as a 'String'), a frame of 10,000 robots some 9
--- times its bytes with the frame made of it. A longer line (a file that
+-- times its bytes with the frame made of it. (A line that is made whole,
+-- such as a frame of 64 MiB, still takes its value's memory, which can
+-- be many times its bytes: each number of a list some 40 bytes, more
+-- than a gigabyte for 64 MiB of one-digit numbers.) A longer line (a file that
 -- is no log, a line without an end, such as @\/dev\/zero@'s) is refused,
 -- not read.
 maxLogLineBytes :: Int

@@ -48,7 +48,7 @@ import           System.FilePath        (normalise)
 import           System.IO.Error        (ioeGetErrorType)
 
 import           AFrobRobotSim.Console  (displayPath, quote)
-import           AFrobRobotSim.JSON.Bytes (utf8Fault)
+import           AFrobRobotSim.UTF8     (utf8Fault)
 
 ------------------------------------------------------------------------------
 -- UTF-8
