@@ -8,6 +8,8 @@ module AFrobRobotSim.LogFixture
   , fixtureStates
   , fixtureLog
   , fixtureLogText
+  , fixtureLogLines
+  , fixtureChunkEdges
   ) where
 
 import           AFrob
@@ -50,6 +52,18 @@ fixtureLog = RunLog (logHeader fixtureConfig) (logFrames fixtureConfig fixtureSt
 
 -- | The run's log, as the text of a file.
 fixtureLogText :: String
-fixtureLogText = unlines (map encodeLogLine (LineHeader (rlHeader fixtureLog)
-                                             : map LineFrame (rlFrames fixtureLog)
-                                             ++ maybe [] ((: []) . LineSummary) (rlSummary fixtureLog)))
+fixtureLogText = unlines fixtureLogLines
+
+-- | The run's log, as its lines (no newlines).
+fixtureLogLines :: [String]
+fixtureLogLines = map encodeLogLine (LineHeader (rlHeader fixtureLog)
+                                     : map LineFrame (rlFrames fixtureLog)
+                                     ++ maybe [] ((: []) . LineSummary) (rlSummary fixtureLog))
+
+-- | Bounds of a page's data element about where the log's first lines
+-- would end one: the @k@-th line's end, the lines joined by a comma and
+-- a newline, and one character either side (@k@ from 1 to 6).
+fixtureChunkEdges :: [Int]
+fixtureChunkEdges = concat [ [e - 1, e, e + 1] | k <- [1 .. 6], let e = prefixJoined k ]
+  where
+    prefixJoined k = sum (map length (take k fixtureLogLines)) + 2 * (k - 1)

@@ -78,12 +78,8 @@ spec = do
         ["world", "play", "back", "fwd", "slider", "speed", "rays", "trails", "sightings", "info", "time"]
 
   describe "replayPageChunked (a long log in several data elements)" $ do
-    let lns = map encodeLogLine (LineHeader (rlHeader fixtureLog) : map LineFrame (rlFrames fixtureLog)
-                                   ++ maybe [] ((: []) . LineSummary) (rlSummary fixtureLog))
-        -- bounds about where the first lines would end an element: the
-        -- k-th line's joined end, and one more line just fitting or not
-        prefixJoined k = sum (map length (take k lns)) + 2 * (k - 1)
-        edges = concat [ [e - 1, e, e + 1] | k <- [1 .. 6], let e = prefixJoined k ]
+    let lns = fixtureLogLines
+        edges = fixtureChunkEdges
     it "joins its elements' arrays, in order, into the log's lines; each within the bound unless it is one line" $
       forM_ ([10, 700, 2000, 5000, 20000] ++ edges) $ \n -> do
         let els = dataElements (replayPageChunked n fixtureLog)

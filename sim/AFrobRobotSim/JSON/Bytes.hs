@@ -162,11 +162,17 @@ byteAt bs i = fromIntegral (BU.unsafeIndex bs i)
 
 -- The offset of the first byte from @i@ on that is not JSON whitespace.
 spaces :: B.ByteString -> Int -> Int
-spaces bs = go
+spaces = skipping isSpaceW
+
+-- The offset of the first byte from @i@ on that the test does not take
+-- (or the text's end).
+skipping :: (Word8 -> Bool) -> B.ByteString -> Int -> Int
+skipping ok bs = go
   where
     n = B.length bs
-    go !i | i < n, isSpaceW (BU.unsafeIndex bs i) = go (i + 1)
+    go !i | i < n, ok (BU.unsafeIndex bs i) = go (i + 1)
           | otherwise = i
+{-# INLINE skipping #-}
 
 isSpaceW, isDigitW, isHexW :: Word8 -> Bool
 isSpaceW w = w == 32 || w == 9 || w == 13 || w == 10
@@ -291,11 +297,7 @@ checkValue bs = value
 
 -- The offset after a run of digits from @i@.
 digitsEnd :: B.ByteString -> Int -> Int
-digitsEnd bs = go
-  where
-    n = B.length bs
-    go !i | i < n, isDigitW (BU.unsafeIndex bs i) = go (i + 1)
-          | otherwise = i
+digitsEnd = skipping isDigitW
 
 ------------------------------------------------------------------------------
 -- The second pass: the value made from checked bytes, as it is used

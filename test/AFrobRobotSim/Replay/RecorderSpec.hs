@@ -78,10 +78,7 @@ spec :: Spec
 spec = do
   let page = replayPage fixtureLog
   describe "writeReplayChunked (a long log in several data elements)" $ do
-    let lns = map encodeLogLine (LineHeader (rlHeader fixtureLog) : map LineFrame (rlFrames fixtureLog)
-                                   ++ maybe [] ((: []) . LineSummary) (rlSummary fixtureLog))
-        prefixJoined k = sum (map length (take k lns)) + 2 * (k - 1)
-        edges = concat [ [e - 1, e, e + 1] | k <- [1 .. 6], let e = prefixJoined k ]
+    let edges = fixtureChunkEdges
     it "is written the same by a recorder (writeReplayChunked)" $
       forM_ ([10, 2000] ++ edges) $ \n -> do
         tmp <- getTemporaryDirectory
