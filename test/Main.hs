@@ -45,7 +45,6 @@ import qualified AFrobRobotSim.Log.RecordsSpec
 import qualified AFrobRobotSim.ReplayBrowserSpec
 import qualified AFrobRobotSim.ReplaySpec
 import qualified AFrobRobotSim.Replay.RecorderSpec
-import qualified AFrobRobotSim.Log.CaptureSpec
 import qualified AFrobRobotSim.NearbySpec
 import qualified AFrobRobotSim.NotesSection3Spec
 import qualified AFrobRobotSim.OptionsSpec
@@ -128,7 +127,6 @@ specs = hspec $ do
   describe "AFrobRobotSim.Log"       AFrobRobotSim.LogSpec.spec
   describe "AFrobRobotSim.Log.Read"  AFrobRobotSim.Log.ReadSpec.spec
   describe "AFrobRobotSim.Log.Records" AFrobRobotSim.Log.RecordsSpec.spec
-  describe "AFrobRobotSim.Log.Capture" AFrobRobotSim.Log.CaptureSpec.spec
   describe "AFrobRobotSim.Replay"    AFrobRobotSim.ReplaySpec.spec
   describe "AFrobRobotSim.Replay.Recorder" AFrobRobotSim.Replay.RecorderSpec.spec
   describe "AFrobRobotSim.Replay in Chromium" AFrobRobotSim.ReplayBrowserSpec.spec

@@ -28,9 +28,7 @@
 -- Three ways to use it: 'logStep' one state at a time (what a streaming
 -- writer needs), 'logFrames' on a whole list, and 'LogWriter', which
 -- writes a file as the run goes; and 'LogRates', 'logStep' at several
--- frame rates at once, for the replay page's recorder, whose frames may
--- also be captured now and made later ('logRatesStepPending',
--- "AFrobRobotSim.Log.Capture"). A log is read back with 'readLog' and
+-- frame rates at once, for the replay page's recorder. A log is read back with 'readLog' and
 -- 'readLogFile' (from "AFrobRobotSim.Log.Read", re-exported here).
 module AFrobRobotSim.Log
   ( -- * Settings
@@ -49,10 +47,6 @@ module AFrobRobotSim.Log
   , logRatesStart
   , logRatesStep
   , logRatesKeep
-    -- * Frames made later
-  , logRatesStepPending
-  , pendingFrameMaker
-  , module AFrobRobotSim.Log.Capture
     -- * The values' rounding
   , roundHalfEven
   , roundTo
@@ -92,7 +86,6 @@ import           AFrobRobotSim.Arena       (Arena, arenaOf)
 import           AFrobRobotSim.Balls       (Ball (..))
 import           AFrobRobotSim.FlatArray   (DblArr, IntArr, freezeD, freezeI, indexD, indexI, newDblArr,
                                             newIntArr, writeD, writeI)
-import           AFrobRobotSim.Log.Capture
 import           AFrobRobotSim.Log.Records
 import           AFrobRobotSim.Physics     (mkRobot)
 import           AFrobRobotSim.Robot
@@ -270,29 +263,7 @@ logRatesKeep keep (LogRates st made rates) = LogRates st made [ r | r@(RatePerio
 -- given; the groups by their first rate). So each frame is
 -- 'logStep''s at each of its rates.
 logRatesStep :: LogConfig -> LogRates k -> WorldState -> (LogRates k, [([k], LogFrame)])
-logRatesStep cfg lr@(LogRates st _ _) s = (next, [ (keys, periodFrame instant evs ls) | (keys, evs, ls) <- groups ])
-  where
-    (next, capture, groups) = ratesStep cfg lr s
-    instant = instantOf (stArena st) capture
-
--- | 'logRatesStep' with its frames not made: each group's frame as its
--- instant, captured (the state's values that the frame needs, not the
--- state), and its period's events and lines. Made later by
--- 'pendingFrameMaker', it is the frame 'logRatesStep' gives; the groups
--- of a step share one capture. For a writer that may never need most of
--- its frames: the sensing, most of a frame's cost, is left to the frames
--- it keeps.
-logRatesStepPending :: LogConfig -> LogRates k -> WorldState -> (LogRates k, [([k], PendingFrame)])
-logRatesStepPending cfg lr s = (next, [ (keys, PendingFrame capture evs ls) | (keys, evs, ls) <- groups ])
-  where
-    (next, capture, groups) = ratesStep cfg lr s
-
--- The step of 'logRatesStep': the new 'LogRates', the state's capture
--- (lazily: only a step that is a frame's needs it) and the groups of rates
--- whose frame it is, each with its period's events and lines (oldest
--- first).
-ratesStep :: LogConfig -> LogRates k -> WorldState -> (LogRates k, FrameCapture, [([k], [LogEvent], [String])])
-ratesStep cfg (LogRates st made rates) s = (next, captureOf cfg st s scores, groups)
+logRatesStep cfg (LogRates st made rates) s = (next, frames)
   where
     n        = stStep st
     scores   = lcScores cfg s
@@ -314,7 +285,9 @@ ratesStep cfg (LogRates st made rates) s = (next, captureOf cfg st s scores, gro
            | otherwise   = [ if f then RatePeriod k fps [] [] made' else r | (r@(RatePeriod k fps _ _ _), f) <- framed ]
     st'    = st { stStep = n + 1, stPrev = Just $! prevOf s scores }
     next   = foldr seq () new `seq` foldr seq () rates' `seq` LogRates st' made' rates'
-    groups = [ (keys, reverse evs, reverse ls) | (keys, evs, ls) <- samePeriods firing ]
+    instant = frameInstant cfg st s scores
+    frames = [ (keys, periodFrame instant (reverse evs) (reverse ls))
+             | (keys, evs, ls) <- samePeriods firing ]
     -- (the rates grouped by the count their periods began at)
     samePeriods [] = []
     samePeriods (RatePeriod k _ evs ls since : rest) =
@@ -358,69 +331,40 @@ periodFrame (Instant f names) events lines' =
 
 -- (given the state's scores, which the step has made)
 frameInstant :: LogConfig -> LogState -> WorldState -> [(String, Int)] -> Instant
-frameInstant cfg st s scores = instantOf (stArena st) (captureOf cfg st s scores)
-
--- What a frame needs of a state (given its scores): its robots' omega
--- from the previous step's headings, the rest as the state has it.
-captureOf :: LogConfig -> LogState -> WorldState -> [(String, Int)] -> FrameCapture
-captureOf cfg st s scores = FrameCapture
-  { fcTime = wsTime s, fcRobots = zipWith robotOf [0 ..] (wsRobots s), fcBalls = map xy (wsBalls s)
-  , fcScores = scores }
-  where
-    robotOf i r =
-      let Point2 ox oy = robotOdometry r
-          Point2 x y = robotPos r
-      in CapturedRobot
-           { crType = robotType r, crId = robotId r, crX = x, crY = y, crHeading = robotHeading r
-           , crSpeed = robotSpeed r, crStuck = robotStuck r, crCharge = robotCharge r
-           , crOdoX = ox, crOdoY = oy, crBattery = robotBattery r
-           , crOmega = case stPrev st of
-               Just p | i < pvCount p, lcDt cfg > 0 ->
-                 normalizeAngle (robotHeading r - indexD (pvHeading p) i) / lcDt cfg
-               _ -> 0 }
-
--- The instant of a capture: its robots' readings are the sensors' in the
--- arena among the capture's robots and balls.
-instantOf :: Arena -> FrameCapture -> Instant
-instantOf arena c = Instant LogFrame
-  { lfTime = roundTo 1e9 (fcTime c)
-  , lfRobots = zipWith robotOf [0 ..] (fcRobots c)
-  , lfBalls = [ (r6 x, r6 y) | (x, y) <- fcBalls c ]
-  , lfScores = fcScores c
+frameInstant cfg st s scores = Instant LogFrame
+  { lfTime = roundTo 1e9 (wsTime s)
+  , lfRobots = zipWith robotOf [0 ..] (wsRobots s)
+  , lfBalls = [ (r6 x, r6 y) | (x, y) <- map xy (wsBalls s) ]
+  , lfScores = scores
   , lfEvents = []
   , lfConsole = [] }
-  [ (crType r, crId r) | r <- fcRobots c ]
+  [ (robotType r, robotId r) | r <- wsRobots s ]
   where
-    physical = [ mkRobot (kindOfType (crType r)) (crId r) (Point2 (crX r) (crY r)) (crHeading r)
-                         (crSpeed r) (crStuck r) (crCharge r) | r <- fcRobots c ]
-    ctx = SenseContext arena physical [ Ball (Point2 x y) zeroVector | (x, y) <- fcBalls c ]
+    physical = [ mkRobot (kindOfType (robotType r)) (robotId r) (robotPos r) (robotHeading r)
+                         (robotSpeed r) (robotStuck r) (robotCharge r) | r <- wsRobots s ]
+    ctx = SenseContext (stArena st) physical [ Ball p zeroVector | p <- wsBalls s ]
     robotOf i r =
-      let input = senseRobot ctx i (Point2 (crOdoX r) (crOdoY r), crHeading r) Nothing
-          omega = crOmega r
-          half = kindWheelBase (kindOfType (crType r)) / 2
-          v = crSpeed r
+      let input = senseRobot ctx i (robotOdometry r, robotHeading r) Nothing
+          omega = case stPrev st of
+            Just p | i < pvCount p, lcDt cfg > 0 ->
+              normalizeAngle (robotHeading r - indexD (pvHeading p) i) / lcDt cfg
+            _ -> 0
+          half = kindWheelBase (kindOfType (robotType r)) / 2
+          v = robotSpeed r
+          Point2 ox oy = robotOdometry r
+          Point2 x y = robotPos r
       in LogRobot
-           { lrX = r6 (crX r), lrY = r6 (crY r), lrHeading = r6 (crHeading r)
+           { lrX = r6 x, lrY = r6 y, lrHeading = r6 (robotHeading r)
            , lrWheelLeft = r6 (v - omega * half), lrWheelRight = r6 (v + omega * half)
-           , lrSpeed = r6 v, lrRotVel = r6 omega, lrBumper = crStuck r
+           , lrSpeed = r6 v, lrRotVel = r6 omega, lrBumper = robotStuck r
            , lrRange = map (r6 . siRange input) rangeAngles
            , lrSeenRobots = [ (ty, k, r6 a, r6 d) | (ty, k, a, d) <- siRobots input ]
            , lrSeenBalls  = [ (r6 a, r6 d) | (a, d) <- siBalls input ]
-           , lrBattery = case crBattery r of
+           , lrBattery = case robotBattery r of
                BSHigh -> "high"; BSLow -> "low"; BSCritical -> "critical"
-           , lrCharge = r6 (crCharge r), lrOdoX = r6 (crOdoX r), lrOdoY = r6 (crOdoY r)
+           , lrCharge = r6 (robotCharge r), lrOdoX = r6 ox, lrOdoY = r6 oy
            , lrMessages = [] }
     kindOfType ty = if ty == kindType SimbotB then SimbotB else SimbotA
-
--- | @pendingFrameMaker cfg@ makes the frames of pending frames captured
--- with @cfg@ ('logRatesStepPending'): each is the frame 'logStep' made
--- at its step at its rate, byte for byte once encoded (the readings
--- sensed now, from the capture, as they were sensed then from the
--- state). Its arena is made once, when it is given the config.
-pendingFrameMaker :: LogConfig -> PendingFrame -> LogFrame
-pendingFrameMaker cfg = \(PendingFrame c evs ls) -> periodFrame (instantOf arena c) evs ls
-  where
-    arena = arenaOf (lcBounds cfg) (lcWorld cfg)
 
 -- Frame values are rounded to a millionth (of a metre, radian, m/s):
 -- far finer than anything the page can show or a controller can act on,

@@ -30,15 +30,13 @@ module AFrobRobotSim.Replay.Recorder
   , discardReplay
   ) where
 
-import qualified Data.ByteString           as BS
-import qualified Data.ByteString.Builder   as B
 import qualified Data.ByteString.Char8     as BC
-import           Data.Bits                 (setBit, shiftL, testBit, (.|.))
+import           Data.Bits                 (setBit, testBit)
 import           Data.IORef
 import           Data.List                 (find, foldl')
 import           Data.Maybe                (catMaybes, fromMaybe, isNothing, listToMaybe)
 import           Data.Word                 (Word64)
-import           Control.Exception         (bracket, evaluate, finally, uninterruptibleMask_)
+import           Control.Exception         (evaluate, finally, uninterruptibleMask_)
 import           System.Directory          (getTemporaryDirectory)
 import           System.IO
 
@@ -115,11 +113,11 @@ replayEveryFrame :: ReplayPlan
 replayEveryFrame = ReplayPlan 0 (const 1)
 
 -- | A page being recorded as a run goes, thinned for the length the run
--- turns out to have. Each frame is appended at once to a temporary file
--- (in the system's temporary folder), as its line or as its capture (see
--- the price, below), so recording holds neither the simulation's states
--- nor the frames: memory stays constant however long the run.
--- 'writeReplay' streams the lines of the page into it. The files are removed from their folder as soon as they are made
+-- turns out to have. Each frame's line is encoded at once and appended to
+-- a temporary file (in the system's temporary folder), so recording holds
+-- neither the simulation's states nor the frames: memory stays constant
+-- however long the run. 'writeReplay' streams the lines of the page into
+-- it. The files are removed from their folder as soon as they are made
 -- (each lives on through the recorder's handle), so that a run that is
 -- killed (@SIGKILL@) leaves nothing in the temporary folder; where a file
 -- cannot be removed while open, the recorder removes it when it closes it.
@@ -149,18 +147,18 @@ replayEveryFrame = ReplayPlan 0 (const 1)
 -- console lines and messages of its whole period, those of the frame
 -- periods left out included. A step that is a frame of several strides
 -- whose periods hold the same events and lines (nothing happened between)
--- is captured or made once for them all. (A line for each stride rather than one
+-- is encoded once for them all. (A line for each stride rather than one
 -- for the finest, merged at the end: a merge would parse each kept frame
 -- again and write it anew, at the cost of a frame's making, and only as
 -- exact as a number's text reads back.)
 --
--- Each frame goes to the temporary file of the coarsest stride it serves,
+-- Each line goes to the temporary file of the coarsest stride it serves,
 -- tagged with its step and its strides, and a stride's file is closed,
 -- and so removed, once the run has outgrown it (a stop would get a
--- coarser stride). A stride @d@'s file holds at most one frame for each of
+-- coarser stride). A stride @d@'s file holds at most one line for each of
 -- its frames so far; the strides alive at a time are @d@, @2 d@, ... and
 -- @S@, where @d@'s frames are within the page's bounds; so the files hold
--- at most about three pages' worth of frames (@d@'s, half as many for
+-- at most about three pages' worth of lines (@d@'s, half as many for
 -- @2 d@, a quarter for @4 d@, ..., and @S@'s), in frames and in
 -- robot-frames (tested: at most three pages of frames and a line for each
 -- stride). Why not the divisors of @S@: a chain of them (9 gives 1,
@@ -168,34 +166,24 @@ replayEveryFrame = ReplayPlan 0 (const 1)
 -- factor 2, and need not divide @S@ since each stride is kept whole on
 -- its own. Why a file for each stride rather than one: a stride the run
 -- has outgrown leaves with its file, where one file would keep about a
--- page's worth of such frames for each doubling of the run's length.
+-- page's worth of such lines for each doubling of the run's length.
 --
--- The price, and how it is kept down: the frames of the planned stride
--- are made (sensed and encoded) as the run goes, as a recorder of that
--- stride alone made them; those of the finer strides, which a run that
--- goes its length never shows, are only captured
--- ('AFrobRobotSim.Log.logRatesStepPending': the values of the state that
--- their frames need, a few dozen bytes a robot, without the sensing) and
--- made when their page is written, only those of the page written. A
--- step that is a frame of several strides whose periods differ (a message
--- or an event came between) is captured or made once for each. A 1-hour
--- run of the default world (@S = 10@) captures the frames of 27,901 steps
--- for its page of 9001 (a 10-hour run, 43,921); making them all, as the
--- recorder did at first, took 9.98 s against 7.89 s for a recorder of the
--- planned stride alone (MUT, a quiet machine); capturing them takes 0.91
--- of the time of making them all (the median of five alternating pairs
--- on a loaded machine, 0.83-0.95: 10.8-13.1 s against 11.8-14.4 s). The
--- 200-robot world at 100 frames a second for 70 s (@S = 2@, where nearly
--- every frame period is a frame of a finer stride) took 16.75 s against
--- 10.19 s making them all; capturing them takes 0.76 of that time (0.74-0.81:
--- 11.5-18.2 s against 15.5-22.8 s). A run that stops early
--- pays for its page's frames when the page is written, as many as a run
--- planned for that length made as it went, and writes its lines to one
--- more temporary file, for the nonce that comes before them.
-data ReplayRecorder = ReplayRecorder LogConfig !Int !Int (Double -> Int) (PendingFrame -> LogFrame) (IORef Recording)
-  -- (the frames at every frame period; the planned stride and its bit; the
-  -- stride of a page of a run that stops at a time; the maker of the
-  -- frames captured; what is recorded)
+-- The price: the frames of the finer strides are made (sensed and
+-- encoded) though a run that goes its length keeps none of them, about
+-- half a page's worth for each doubling of the run beyond a page, and the
+-- planned stride's; a step that is a frame of several strides whose
+-- periods differ (a message or an event came between) is encoded once
+-- for each. A 1-hour run of the default world (@S = 10@) makes the
+-- frames of 27,901 steps for its page of 9001, and took 10.0 s against
+-- 7.9 s (the same page); a 10-hour run, 43,921 (a review counted 39,930
+-- and 67,530 encodings when a robot prints a line every 0.12 s). It costs
+-- most just past a bound, where nearly every frame period is encoded for
+-- a page of half of them, and where encoding is most of the run: the
+-- review's 200-robot world at 100 frames a second for 70 s (@S = 2@) took
+-- 16.75 s against 10.19 s.
+data ReplayRecorder = ReplayRecorder LogConfig !Int (Double -> Int) (IORef Recording)
+  -- (the frames at every frame period; the planned stride; the stride of
+  -- a page of a run that stops at a time; what is recorded)
 
 -- What the recorder carries from step to step: each live stride's
 -- periods ('LogRates', keyed by the stride's bit), the live strides,
@@ -204,20 +192,16 @@ data ReplayRecorder = ReplayRecorder LogConfig !Int !Int (Double -> Int) (Pendin
 data Recording = Recording !(LogRates Int) [Level] !Int
 
 -- A stride the page may still be thinned to, and its temporary file,
--- which holds the frames whose coarsest stride it is.
+-- which holds the lines whose coarsest stride it is.
 data Level = Level
   { lvStride :: !Int
-  , lvBit    :: !Int            -- its bit in the tag of a frame (from 0, the finest)
+  , lvBit    :: !Int            -- its bit in the tag of a line (from 0, the finest)
   , lvLeft   :: Maybe FilePath  -- its file's path, if the system kept it in its folder
   , lvHandle :: Handle
-  , lvLines  :: !Int            -- the frames its file holds
+  , lvLines  :: !Int            -- the lines its file holds
   , lvFrames :: !Int            -- the frames of its page so far
-  , lvHash   :: !Word64         -- the nonce hash of its page's lines so far (its header's first), while 'lvMade'
-  , lvMade   :: !Bool           -- whether every frame of its page so far is made (none only captured)
+  , lvHash   :: !Word64         -- the nonce hash of its page's lines so far (its header's first)
   }
-
--- A frame in a temporary file: its line, or its capture ('encodePending').
-data Spooled = Made BC.ByteString | Captured BS.ByteString
 
 -- | Start recording a run of the given plan, whose frame periods are the
 -- config's ('lcFps': the page's frame rate is that divided by its stride):
@@ -228,11 +212,10 @@ newReplayRecorder :: ReplayPlan -> LogConfig -> IO ReplayRecorder
 newReplayRecorder plan cfg = do
   tmp <- getTemporaryDirectory
   spools <- openSpools tmp (length strides)
-  let levels = [ Level d b left h 0 0 (fnvBytes fnvBasis (headerAt cfg d)) True
+  let levels = [ Level d b left h 0 0 (fnvBytes fnvBasis (headerAt cfg d))
                | (b, d, (left, h)) <- zip3 [0 ..] strides spools ]
       rates  = logRatesStart cfg [ (b, lcFps cfg / fromIntegral d) | (b, d) <- zip [0 ..] strides ]
-  ReplayRecorder cfg planned (length strides - 1) strideAt (pendingFrameMaker cfg)
-    <$> newIORef (Recording rates levels 0)
+  ReplayRecorder cfg planned strideAt <$> newIORef (Recording rates levels 0)
   where
     planned = max 1 (planStride plan (planSeconds plan))
     strides = takeWhile (\d -> d > 0 && d < planned) (iterate (* 2) 1) ++ [planned]
@@ -241,6 +224,7 @@ newReplayRecorder plan cfg = do
 -- The header line of the page of one frame period in @d@.
 headerAt :: LogConfig -> Int -> BC.ByteString
 headerAt cfg d = encodeLogLineBytes (LineHeader (logHeader cfg { lcFps = lcFps cfg / fromIntegral d }))
+
 
 -- | Give the recorder the next step's state (every step, the first at
 -- time 0).
@@ -251,7 +235,7 @@ recordReplayState r = recordReplayStateWith r Nothing
 -- 'LogConfig' is the recorder's made of this state, if any
 -- ('AFrobRobotSim.Log.writeLogStateLine': a frame of every frame
 -- period, which is the finest stride's while the run is short enough to
--- keep them all). The recorder then keeps that line instead of making
+-- keep them all). The recorder then writes that line instead of encoding
 -- that frame again (at 1000 robots a frame's encoding costs several times
 -- the step it shows); the page is the same. With 'Nothing', or at a step
 -- that is not a frame's, it is 'recordReplayState'.
@@ -261,58 +245,45 @@ recordReplayState r = recordReplayStateWith r Nothing
 -- state's frames are written: a whole step or none, whatever the moment
 -- of a Ctrl-C.
 recordReplayStateWith :: ReplayRecorder -> Maybe BC.ByteString -> WorldState -> IO ()
-recordReplayStateWith (ReplayRecorder cfg _ top strideAt maker ref) made s = do
+recordReplayStateWith (ReplayRecorder cfg _ strideAt ref) made s = do
   Recording rates levels step <- readIORef ref
   let t = wsTime s
       (gone, live) = span ((< strideAt t) . lvStride) levels
       kept | null gone = rates
            | otherwise = logRatesKeep (\b -> any ((== b) . lvBit) live) rates
-      (rates', frames) = logRatesStepPending cfg kept s
-  recs <- mapM (\(bits, p) -> (,) bits <$> case made of
-                  Just l | 0 `elem` bits -> pure (Made l)   -- (bit 0: every frame period, the log's)
-                  _ | top `elem` bits -> Made <$> evaluate (encodeLogLineBytes (LineFrame (maker p)))
-                    | otherwise       -> Captured <$> evaluate (encodePending p)) frames
-  let live' = foldl' (\lvs rc -> map (spooled rc) lvs) live recs
-  -- (the frames, then the new state, then the files outgrown: a write that
+      (rates', frames) = logRatesStep cfg kept s
+  lns <- mapM (\(bits, f) -> (,) bits <$> case made of
+                 Just l | 0 `elem` bits -> pure l   -- (bit 0: every frame period, the log's)
+                 _                      -> evaluate (encodeLogLineBytes (LineFrame f))) frames
+  let live' = foldl' (\lvs ln -> map (spooled ln) lvs) live lns
+  -- (the lines, then the new state, then the files outgrown: a write that
   -- fails leaves the recording as it was before the step)
   uninterruptibleMask_ $ do
-    mapM_ (\(bits, rc) -> mapM_ (\lv -> writeSpooled (lvHandle lv) step bits rc) (holder bits live)) recs
+    mapM_ (\(bits, l) -> mapM_ (\lv -> writeTagged (lvHandle lv) step bits l) (holder bits live)) lns
     forceLevels live' `seq` writeIORef ref (Recording rates' live' (step + 1))
     mapM_ closeLevel gone
   where
-    -- (the file of a frame: its coarsest stride's)
+    -- (the file of a line: its coarsest stride's)
     holder bits lvs = take 1 [ lv | lv <- lvs, lvBit lv == maximum bits ]
-    spooled (bits, rc) lv =
+    spooled (bits, l) lv =
       let lv1 = if lvBit lv == maximum bits then lv { lvLines = lvLines lv + 1 } else lv
-      in if lvBit lv `notElem` bits then lv1 else case rc of
-           Made l     -> lv1 { lvFrames = lvFrames lv1 + 1, lvHash = fnvBytes (lvHash lv1) l }
-           Captured _ -> lv1 { lvFrames = lvFrames lv1 + 1, lvMade = False }
+      in if lvBit lv `elem` bits then lv1 { lvFrames = lvFrames lv1 + 1, lvHash = fnvBytes (lvHash lv1) l } else lv1
     forceLevels = foldr seq ()
 
--- A frame in a temporary file: its size, its step, its strides' bits, a
--- byte saying whether it is a line (1) or a capture (0), and its bytes.
-writeSpooled :: Handle -> Int -> [Int] -> Spooled -> IO ()
-writeSpooled h step bits rc = B.hPutBuilder h $
-  B.int64LE (fromIntegral (BS.length bytes)) <> B.int64LE (fromIntegral step)
-  <> B.int64LE (fromIntegral (foldl' setBit (0 :: Int) bits)) <> B.word8 tag <> B.byteString bytes
-  where
-    (tag, bytes) = case rc of
-      Made l     -> (1, l)
-      Captured c -> (0, c)
+-- A frame line in a temporary file: its step, its strides' bits and the
+-- line, on one line.
+writeTagged :: Handle -> Int -> [Int] -> BC.ByteString -> IO ()
+writeTagged h step bits l = do
+  BC.hPut h (BC.pack (shows step (' ' : shows (foldl' setBit (0 :: Int) bits) " ")))
+  BC.hPutStrLn h l
 
--- The next frame of a temporary file: its step, its strides' bits and
--- the frame ('Nothing' for a file cut short or damaged).
-readSpooled :: Handle -> IO (Maybe (Int, Int, Spooled))
-readSpooled h = do
-  hd <- BS.hGet h 25
-  if BS.length hd /= 25 then pure Nothing else do
-    let word i = foldr (\j acc -> (acc `shiftL` 8) .|. fromIntegral (BS.index hd (i + j))) (0 :: Int) [0 .. 7]
-        size = word 0
-    bytes <- if size < 0 then pure BS.empty else BS.hGet h size
-    pure $ if size < 0 || BS.length bytes /= size then Nothing else case BS.index hd 24 of
-      1 -> Just (word 8, word 16, Made bytes)
-      0 -> Just (word 8, word 16, Captured bytes)
-      _ -> Nothing
+-- A line of a temporary file taken apart: its step, its strides' bits and
+-- the frame's line.
+untag :: BC.ByteString -> Maybe (Int, Int, BC.ByteString)
+untag raw = do
+  (step, r1) <- BC.readInt raw
+  (bits, r2) <- BC.readInt (BC.drop 1 r1)
+  pure (step, bits, BC.drop 1 r2)
 
 -- A stride's temporary file closed (and removed).
 closeLevel :: Level -> IO ()
@@ -329,17 +300,17 @@ replayPageStride r s = maybe 1 lvStride <$> pageLevel r s
 -- The stride of the page of a summary ('replayPageStride'), if it is
 -- still recorded (it is, until 'writeReplay' or 'discardReplay').
 pageLevel :: ReplayRecorder -> LogSummary -> IO (Maybe Level)
-pageLevel (ReplayRecorder _ planned _ _ _ ref) s = do
+pageLevel (ReplayRecorder _ planned _ ref) s = do
   Recording _ levels _ <- readIORef ref
   pure $ if not (lsInterrupted s) && isNothing (lsFailure s)
            then find ((== planned) . lvStride) levels
            else listToMaybe levels
 
--- | How many frames the recorder's temporary files hold now (lines, or
--- captures of lines not made yet): those of the strides the page may
--- still get (see 'ReplayRecorder': at most about three pages' worth).
+-- | How many frame lines the recorder's temporary files hold now: those of
+-- the strides the page may still get (see 'ReplayRecorder': at most
+-- about three pages' worth).
 replaySpooled :: ReplayRecorder -> IO Int
-replaySpooled (ReplayRecorder _ _ _ _ _ ref) = do
+replaySpooled (ReplayRecorder _ _ _ ref) = do
   Recording _ levels _ <- readIORef ref
   pure (sum (map lvLines levels))
 
@@ -363,7 +334,7 @@ writeReplay = writeReplayChunked replayChunkChars
 -- | 'writeReplay' with the log's lines in data elements of at most @n@
 -- characters each, as 'replayPageChunked' writes them.
 writeReplayChunked :: Int -> ReplayRecorder -> LogSummary -> FilePath -> IO ()
-writeReplayChunked chunk r@(ReplayRecorder cfg _ _ _ maker ref) s out =
+writeReplayChunked chunk r@(ReplayRecorder cfg _ _ ref) s out =
   (do Recording _ levels _ <- readIORef ref
       mlv <- pageLevel r s
       case mlv of
@@ -371,58 +342,41 @@ writeReplayChunked chunk r@(ReplayRecorder cfg _ _ _ maker ref) s out =
         Just lv -> do
           let s'      = if lsFrames s < 0 then s { lsFrames = lvFrames lv } else s
               summary = encodeLogLineBytes (LineSummary s')
-              header  = headerAt cfg (lvStride lv)
-              -- (the files that hold its frames: its own and the coarser strides')
+              -- (the files that hold its lines: its own and the coarser strides')
               files   = [ l | l <- levels, lvStride l >= lvStride lv ]
           mapM_ (rewind . lvHandle) files
-          next <- strideFrames (lvBit lv) files
-          let nextLine = next >>= traverse lineOf
-          if lvMade lv
-            then writePageFrom chunk header nextLine (Just summary) (fnvBytes (lvHash lv) summary) out
-            else do
-              -- (the lines made first, into a temporary file of their own:
-              -- the nonce, which comes before them, hashes them all)
-              tmp <- getTemporaryDirectory
-              bracket (openSpool tmp) (uncurry closeSpool) $ \(_, h) -> do
-                let copy !hash = nextLine >>= maybe (pure hash) (\l -> BC.hPutStrLn h l >> copy (fnvBytes hash l))
-                hash <- copy (fnvBytes fnvBasis header)
-                rewind h
-                writePage chunk header h (Just summary) (fnvBytes hash summary) out)
+          next <- strideLines (lvBit lv) files
+          writePageFrom chunk (headerAt cfg (lvStride lv)) next (Just summary) (fnvBytes (lvHash lv) summary) out)
   `finally` discardReplay r
-  where
-    lineOf (Made l)     = pure l
-    lineOf (Captured c) = case decodePending c of
-      Just p  -> evaluate (encodeLogLineBytes (LineFrame (maker p)))
-      Nothing -> ioError (userError "a damaged frame in the replay's temporary file")
 
--- A temporary file's next frame of a stride, read: its step, the frame,
--- the file and how many of its frames are left to read.
-data Next = Next !Int Spooled Handle !Int
+-- A temporary file's next line of a stride, read: its step, the line, the
+-- file and how many of its lines are left to read.
+data Next = Next !Int BC.ByteString Handle !Int
 
--- @strideFrames b files@: the frames of the stride of bit @b@, one at a
--- time, in step order, from its temporary files (rewound), each read up
--- to its count of frames (a frame of a write that failed is not one).
-strideFrames :: Int -> [Level] -> IO (IO (Maybe Spooled))
-strideFrames b files = do
+-- @strideLines b files@: the frame lines of the stride of bit @b@, one
+-- at a time, in step order, from its temporary files (rewound), each read
+-- up to its count of lines (a line of a write that failed is not one).
+strideLines :: Int -> [Level] -> IO (IO (Maybe BC.ByteString))
+strideLines b files = do
   firsts <- mapM (\lv -> readNext (lvHandle lv) (lvLines lv)) files
   cur <- newIORef (catMaybes firsts)
   pure $ do
     pending <- readIORef cur
     case earliest pending of
       Nothing -> pure Nothing
-      Just (Next _ f h left, others) -> do
+      Just (Next _ l h left, others) -> do
         after <- readNext h left
         writeIORef cur (maybe others (: others) after)
-        pure (Just f)
+        pure (Just l)
   where
     readNext h left
       | left <= 0 = pure Nothing
       | otherwise = do
-          rd <- readSpooled h
-          case rd of
-            Just (step, bits, f) | testBit bits b -> pure (Just (Next step f h (left - 1)))
+          raw <- BC.hGetLine h
+          case untag raw of
+            Just (step, bits, l) | testBit bits b -> pure (Just (Next step l h (left - 1)))
                                  | otherwise      -> readNext h (left - 1)
-            Nothing -> ioError (userError "a damaged frame in the replay's temporary file")
+            Nothing -> ioError (userError "a damaged line in the replay's temporary file")
     earliest [] = Nothing
     earliest (x : xs) = Just (go x [] xs)
       where
@@ -436,4 +390,5 @@ strideFrames b files = do
 -- that stops with an exception before its page is written; harmless after
 -- 'writeReplay', and when called twice.
 discardReplay :: ReplayRecorder -> IO ()
-discardReplay (ReplayRecorder _ _ _ _ _ ref) = readIORef ref >>= \(Recording _ levels _) -> mapM_ closeLevel levels
+discardReplay (ReplayRecorder _ _ _ ref) = readIORef ref >>= \(Recording _ levels _) -> mapM_ closeLevel levels
+
