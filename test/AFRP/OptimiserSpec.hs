@@ -184,17 +184,19 @@ spec = do
       pureAfter (arr p >>> first sw >>> arr q) `shouldBe` [False, False, False, True]
       pureAfter (unfused (arr p) >>> first sw >>> unfused (arr q)) `shouldBe` [False, False, False, True]
     it "does not evaluate the input, p's result, the part passed on or q's result before they are needed" $ do
-      let bad :: Int -> (Int, Int)
-          bad = const undefined
+      let bottom :: a
+          bottom = error "evaluated before it was needed"
+          bad :: Int -> (Int, Int)
+          bad = const bottom
       -- a delay's first output does not look at its input
       take 1 (embed (arr bad >>> first (iPre 7) >>> arr fst) (1, [])) `shouldBe` [7]
-      embed (arr (\x -> (x, undefined :: Int)) >>> first (iPre 0) >>> arr fst) (1 :: Int, [(1, Just 2)])
+      embed (arr (\x -> (x, bottom :: Int)) >>> first (iPre 0) >>> arr fst) (1 :: Int, [(1, Just 2)])
         `shouldBe` [0, 1]
-      embed (arr (\x -> (x, x)) >>> first (arr (const (undefined :: Int)) >>> iPre 0) >>> arr snd)
+      embed (arr (\x -> (x, x)) >>> first (arr (const (bottom :: Int)) >>> iPre 0) >>> arr snd)
         (1 :: Int, [(1, Just 2)]) `shouldBe` [1, 2]
-      length (embed (arr p >>> first (iPre 0) >>> arr (\_ -> undefined :: Int)) (1, [(1, Just 2)]))
+      length (embed (arr p >>> first (iPre 0) >>> arr (\_ -> bottom :: Int)) (1, [(1, Just 2)]))
         `shouldBe` 2
-      map fst (embed (arr p >>> first (iPre 0 >>> arr (\_ -> undefined :: Int)) >>> arr (\(a, c) -> (c, a)))
+      map fst (embed (arr p >>> first (iPre 0 >>> arr (\_ -> bottom :: Int)) >>> arr (\(a, c) -> (c, a)))
                      (1, [(1, Just 2)])) `shouldBe` [10, 20]
     it "closes a loop through the part it passes on (fixed)" $
       -- y_0 = 0, y_k = 1 + y_(k-1): the value fed back is needed only a
