@@ -96,14 +96,15 @@ spec = do
         `shouldBe` "(arr >>> ((pre *** id) >>> arr))"
     it "makes each command of arrow notation one node, the functions between commands taken into them" $ do
       -- (@arr p >>> first sf@, the shape of every command, is one node by
-      -- a rewrite rule, see below; the compositions are nested to the
-      -- right by another, so the environment a command rebuilds and the
-      -- next takes apart meet in one function)
+      -- a rewrite rule, see below, and so is the function after it; the
+      -- compositions are nested to the right by another, so the
+      -- environment a command rebuilds and the next takes apart meet in
+      -- one function, and the last command takes the block's result in)
       let sf = proc x -> do
                  y <- pre0 -< x + 1
                  z <- pre0 -< y * 2
                  returnA -< z + x
-      sfShape sf `shouldBe` "(step >>> (step >>> arr))"
+      sfShape sf `shouldBe` "(step >>> step)"
       embed sf (1, [(1, Just 2), (1, Just 3), (1, Just 4)]) `shouldBe` [1, 2, 7, 10]
     it "builds a network grown on the right one stage at a time in time linear in its length (fixed)" $
       -- 100,000 stages by foldl: a walk of the whole spine at every >>>
@@ -146,6 +147,61 @@ spec = do
       -- y_0 = 0, y_k = 1 + y_(k-1): the value fed back is needed only a
       -- sample later, through the delay
       embed (loop (arr (\(x, c) -> (x + c, c)) >>> first (iPre 0) >>> arr (\(y, _) -> (y, y))))
+            (1 :: Int, [(1, Just 1), (1, Just 1), (1, Just 1)])
+        `shouldBe` [0, 1, 2, 3]
+
+  -- arr p >>> first sf >>> arr q, written in the source (a command and
+  -- the function after it), is one node (arrFirstQSF) by a rewrite rule,
+  -- and so are the functions at either end of sf.
+  describe "arr p >>> first sf >>> arr q, one node" $ do
+    let p x = (x + 1, x * 10) :: (Int, Int)
+        q (a, b) = a - b :: Int
+        sw :: SF Int Int
+        sw = switch (iPre 0 &&& after 2 ()) (\_ -> arr (* 3))
+        runs :: SF Int b -> [b]
+        runs sf = embed sf (1, [(1, Just x) | x <- [2 .. 6]])
+    it "gives the outputs of the composition, before and after a switch inside it" $ do
+      runs (arr p >>> first sw >>> arr q) `shouldBe` runs (unfused (arr p) >>> first sw >>> unfused (arr q))
+      runs (arr (* 2) >>> arr p >>> first sw >>> arr q >>> arr (+ 1))
+        `shouldBe` runs (unfused (arr (* 2)) >>> unfused (arr p) >>> first sw >>> unfused (arr q) >>> unfused (arr (+ 1)))
+    it "gives the outputs of the composition with functions at either end of sf" $ do
+      runs (arr p >>> first (arr (* 2) >>> sw) >>> arr q)
+        `shouldBe` runs (unfused (arr p) >>> first (unfused (arr (* 2)) >>> sw) >>> unfused (arr q))
+      runs (arr p >>> first (sw >>> arr (+ 7)) >>> arr q)
+        `shouldBe` runs (unfused (arr p) >>> first (sw >>> unfused (arr (+ 7))) >>> unfused (arr q))
+      runs (arr p >>> first (arr (* 2) >>> sw >>> arr (+ 7)))
+        `shouldBe` runs (unfused (arr p) >>> first (unfused (arr (* 2)) >>> sw >>> unfused (arr (+ 7))))
+      runs (arr p >>> first (arr (* 2) >>> iPre 5 >>> arr (+ 7)) >>> arr q)
+        `shouldBe` [2, -9, -17, -25, -33, -41]
+    it "is one stateful node, and a pure function while sf is one" $ do
+      sfShape (arr p >>> first (iPre 0) >>> arr q) `shouldBe` "step"
+      sfShape (arr p >>> first (arr (* 2) >>> iPre 0 >>> arr (+ 1)) >>> arr q) `shouldBe` "step"
+      isPureSF (arr p >>> first (arr (* 2)) >>> arr q) `shouldBe` True
+      -- (sw becomes a function after its switch, and the node with it,
+      -- at the step the composition does)
+      let pureAfter sf = map (isPureSF . fst) (tail (scanl (\(n, _) (dt, x) -> stepSF n dt x) (sf, 0)
+                                                          [(0, 1), (1, 2), (1, 3), (1, 4)]))
+      pureAfter (arr p >>> first sw >>> arr q) `shouldBe` [False, False, False, True]
+      pureAfter (unfused (arr p) >>> first sw >>> unfused (arr q)) `shouldBe` [False, False, False, True]
+    it "does not evaluate the input, p's result, the part passed on or q's result before they are needed" $ do
+      let bottom :: a
+          bottom = error "evaluated before it was needed"
+          bad :: Int -> (Int, Int)
+          bad = const bottom
+      -- a delay's first output does not look at its input
+      take 1 (embed (arr bad >>> first (iPre 7) >>> arr fst) (1, [])) `shouldBe` [7]
+      embed (arr (\x -> (x, bottom :: Int)) >>> first (iPre 0) >>> arr fst) (1 :: Int, [(1, Just 2)])
+        `shouldBe` [0, 1]
+      embed (arr (\x -> (x, x)) >>> first (arr (const (bottom :: Int)) >>> iPre 0) >>> arr snd)
+        (1 :: Int, [(1, Just 2)]) `shouldBe` [1, 2]
+      length (embed (arr p >>> first (iPre 0) >>> arr (\_ -> bottom :: Int)) (1, [(1, Just 2)]))
+        `shouldBe` 2
+      map fst (embed (arr p >>> first (iPre 0 >>> arr (\_ -> bottom :: Int)) >>> arr (\(a, c) -> (c, a)))
+                     (1, [(1, Just 2)])) `shouldBe` [10, 20]
+    it "closes a loop through the part it passes on (fixed)" $
+      -- y_0 = 0, y_k = 1 + y_(k-1): the value fed back is needed only a
+      -- sample later, through the delay
+      embed (loop (arr (\(x, c) -> (x + c, c)) >>> first (arr (* 1) >>> iPre 0) >>> arr (\(y, _) -> (y, y))))
             (1 :: Int, [(1, Just 1), (1, Just 1), (1, Just 1)])
         `shouldBe` [0, 1, 2, 3]
 

@@ -107,8 +107,10 @@
 --   composing unknown functions lazily when the network is built (see
 --   bench/README.md for what that saves); likewise @arr p >>> edge@
 --   ("AFRP.EventSource"), the functions next to an 'AFRP.Integration.integral'
---   at 'Double' ("AFRP.Integration") and @loop (second (iPre c) >>> arr g)@
---   ("AFRP.Delay") become one node each, compiled with the functions in
+--   at 'Double' ("AFRP.Integration"), @loop (second (iPre c) >>> arr g)@
+--   ("AFRP.Delay") and a command of arrow notation with the functions
+--   around it (@arr p >>> first sf >>> arr q@, 'AFRP.Internal.SF.arrFirstQSF')
+--   become one node each, compiled with the functions in
 --   place; integrals in series written in the source stay nodes the
 --   chains see, with the functions between them composed at compile time
 --   (@integralsD@ in "AFRP.Integration").

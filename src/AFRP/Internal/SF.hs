@@ -24,6 +24,7 @@ module AFRP.Internal.SF
   , arrSF
   , firstSF
   , arrFirstSF
+  , arrFirstQSF
   , secondSF
   , loopSF
     -- * Loops (for rewrite rules)
@@ -363,6 +364,69 @@ arrFirstN p = go
   compSF (arrFirstSF p s) (arrSF q) = arrFirstSF (\a -> p (q a)) s
 "AFRP arr>>>arrFirst>>>sf" forall p q s h.
   compSF (compSF h (arrFirstSF p s)) (arrSF q) = compSF h (arrFirstSF (\a -> p (q a)) s)
+  #-}
+
+-- | @arrFirstQSF p sf q@ is @arr p >>> first sf >>> arr q@, as one node,
+-- made by the rewrite rules below where GHC sees the composition: a
+-- command of arrow notation with the function that follows it (the rest
+-- of the @proc@ block after a command's last one, the environment rebuilt
+-- for the next command). Each step is 'arrFirstSF''s, with the output
+-- @q (y, c)@ applied lazily, as the composition node applies the function
+-- behind a stateful node: the same value, as lazily, without the
+-- composition node (rebuilt at every step by the composition), the pair
+-- and the selection of @c@ from @p@'s result (compiled with @q@'s body in
+-- place, the pair is taken apart where it is built). Relies on
+-- associativity and on @(arr p >>> first sf) >>> arr q@ applying @q@
+-- lazily to the pair of @sf@'s output and the part passed on. While @sf@
+-- is a lifted function (and after a switch makes it one) the node is the
+-- composition, which fuses with its neighbours.
+arrFirstQSF :: (a -> (b, c)) -> SF b d -> ((d, c) -> e) -> SF a e
+arrFirstQSF p (SF s) q = SF (arrFirstQN (\a -> p a) s (\x -> q x))
+{-# INLINE [1] arrFirstQSF #-}
+
+arrFirstQN :: (a -> (b, c)) -> Node b d -> ((d, c) -> e) -> Node a e
+arrFirstQN p s0 q = go s0
+  where
+    go s = case s of
+      NPure _ -> compN (NPure (FDG p)) (compN (firstN s) (NPure (FDG q)))
+      _       -> NStep (\dt a -> let pa = p a in case stepN s dt (fst pa) of
+        (# s', y #) -> case go s' of !n -> (# n, q (y, snd pa) #))
+{-# INLINE arrFirstQN #-}
+
+-- The function after a command is taken into its node (@arrFirstSF p sf
+-- >>> arr q = arrFirstQSF p sf q@, by associativity on a spine nested to
+-- the right), and a function after or before such a node into it:
+-- @arrFirstQSF p sf q >>> arr r = arrFirstQSF p sf (r . q)@, @arr r >>>
+-- arrFirstQSF p sf q = arrFirstQSF (p . r) sf q@, each applied lazily, as
+-- the composition applies it. A lifted function at either end of the
+-- command itself is taken out of @first@ into the node's functions, as
+-- 'firstB' does at run time (@first (arr f >>> sf) = first (arr f) >>>
+-- first sf@, @first (arr f) = arr (\ ~(b, c) -> (f b, c))@, the
+-- component not given to @f@ passed on as it came), so that it is applied
+-- where @p@ or @q@ builds or takes apart the pair rather than stepped as a
+-- composition node inside the command: arrow notation gives every command
+-- @sf -< e@ as @first (arr (\(e, ()) -> e) >>> sf)@.
+{-# RULES
+"AFRP arrFirst>>>arr" forall p s q.
+  compSF (arrSF q) (arrFirstSF p s) = arrFirstQSF p s q
+"AFRP arrFirst>>>arr>>>sf" forall p s q h.
+  compSF (compSF h (arrSF q)) (arrFirstSF p s) = compSF h (arrFirstQSF p s q)
+"AFRP arrFirstQ>>>arr" forall p s q r.
+  compSF (arrSF r) (arrFirstQSF p s q) = arrFirstQSF p s (\x -> r (q x))
+"AFRP arrFirstQ>>>arr>>>sf" forall p s q r h.
+  compSF (compSF h (arrSF r)) (arrFirstQSF p s q) = compSF h (arrFirstQSF p s (\x -> r (q x)))
+"AFRP arr>>>arrFirstQ" forall p s q r.
+  compSF (arrFirstQSF p s q) (arrSF r) = arrFirstQSF (\a -> p (r a)) s q
+"AFRP arr>>>arrFirstQ>>>sf" forall p s q r h.
+  compSF (compSF h (arrFirstQSF p s q)) (arrSF r) = compSF h (arrFirstQSF (\a -> p (r a)) s q)
+"AFRP arrFirst/arr>>>sf" forall p f s.
+  arrFirstSF p (compSF s (arrSF f)) = arrFirstSF (\a -> let (b, c) = p a in (f b, c)) s
+"AFRP arrFirstQ/arr>>>sf" forall p f s q.
+  arrFirstQSF p (compSF s (arrSF f)) q = arrFirstQSF (\a -> let (b, c) = p a in (f b, c)) s q
+"AFRP arrFirst/sf>>>arr" forall p f s.
+  arrFirstSF p (compSF (arrSF f) s) = arrFirstQSF p s (\ ~(d, c) -> (f d, c))
+"AFRP arrFirstQ/sf>>>arr" forall p f s q.
+  arrFirstQSF p (compSF (arrSF f) s) q = arrFirstQSF p s (\ ~(d, c) -> q (f d, c))
   #-}
 
 -- Compositions GHC can see are nested to the right before the rules above
