@@ -40,7 +40,6 @@ import           Data.Bits              ((.&.), (.|.), shiftL)
 import qualified Data.ByteString        as B
 import qualified Data.ByteString.Unsafe as BU
 import           Data.Char              (chr, isDigit, isSpace, toLower)
-import           Data.Word              (Word8)
 import           GHC.IO.Exception       (IOException (ioe_description))
 import           Numeric                (showHex)
 import           System.Directory       (canonicalizePath)
@@ -52,12 +51,6 @@ import           AFrobRobotSim.UTF8     (utf8Fault)
 
 ------------------------------------------------------------------------------
 -- UTF-8
-
--- The first invalid byte of a UTF-8 text, if any: its line, column (in
--- characters) and value (the JSON parser of bytes checks its input so
--- too).
-utf8Error :: B.ByteString -> Maybe (Int, Int, Word8)
-utf8Error = utf8Fault
 
 -- | The text of a file's bytes, or, when they are not UTF-8, the message
 -- every reader of text files gives:
@@ -76,12 +69,12 @@ utf8Text name = utf8TextFrom name 1
 -- >>> utf8TextFrom "run.jsonl" 7 (B.pack [0x61, 0xff])
 -- Left "run.jsonl:7:2: invalid UTF-8 (byte 0xff)"
 utf8TextFrom :: String -> Int -> B.ByteString -> Either String String
-utf8TextFrom name n bytes = case utf8Error bytes of
+utf8TextFrom name n bytes = case utf8Fault bytes of
   Just (l, c, b) -> Left (name ++ ":" ++ show (l + n - 1) ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
                           ++ (if b < 16 then "0" else "") ++ showHex b ")")
   Nothing        -> Right (decodeUtf8 bytes)
 
--- Decode valid UTF-8 (as 'utf8Error' accepts it), lazily.
+-- Decode valid UTF-8 (as 'utf8Fault' accepts it), lazily.
 decodeUtf8 :: B.ByteString -> String
 decodeUtf8 bs = go 0
   where

@@ -405,7 +405,10 @@ arrFirstQN p s0 q = go s0
 -- component not given to @f@ passed on as it came), so that it is applied
 -- where @p@ or @q@ builds or takes apart the pair rather than stepped as a
 -- composition node inside the command: arrow notation gives every command
--- @sf -< e@ as @first (arr (\(e, ()) -> e) >>> sf)@.
+-- @sf -< e@ as @first (arr (\(e, ()) -> e) >>> sf)@. The laziness of
+-- the new functions is load-bearing: @let (b, c) = p a@ at the front (a
+-- @case@ would take @p@'s result apart before @f@ asks for @b@; a test in
+-- OptimiserSpec fails on it) and @\ ~(d, c)@ at the back.
 {-# RULES
 "AFRP arrFirst>>>arr" forall p s q.
   compSF (arrSF q) (arrFirstSF p s) = arrFirstQSF p s q
