@@ -343,17 +343,8 @@ firstSF (SF f) = SF (firstB f)
 -- arrFirstSF p sf = arrFirstSF (p . q) sf@), as arrow notation puts one
 -- between two commands.
 arrFirstSF :: (a -> (b, c)) -> SF b d -> SF a (d, c)
-arrFirstSF p (SF s) = SF (arrFirstN (\a -> p a) s)
+arrFirstSF p (SF s) = SF (arrFirstQN (\a -> p a) s FDI)
 {-# INLINE [1] arrFirstSF #-}
-
-arrFirstN :: (a -> (b, c)) -> Node b d -> Node a (d, c)
-arrFirstN p = go
-  where
-    go s = case s of
-      NPure _ -> compN (NPure (FDG p)) (firstN s)
-      _       -> NStep (\dt a -> let pa = p a in case stepN s dt (fst pa) of
-        (# s', y #) -> case go s' of !n -> (# n, (y, snd pa) #))
-{-# INLINE arrFirstN #-}
 
 {-# RULES
 "AFRP arr>>>first" forall p s.
@@ -381,14 +372,18 @@ arrFirstN p = go
 -- is a lifted function (and after a switch makes it one) the node is the
 -- composition, which fuses with its neighbours.
 arrFirstQSF :: (a -> (b, c)) -> SF b d -> ((d, c) -> e) -> SF a e
-arrFirstQSF p (SF s) q = SF (arrFirstQN (\a -> p a) s (\x -> q x))
+arrFirstQSF p (SF s) q = SF (arrFirstQN (\a -> p a) s (FDG (\x -> q x)))
 {-# INLINE [1] arrFirstQSF #-}
 
-arrFirstQN :: (a -> (b, c)) -> Node b d -> ((d, c) -> e) -> Node a e
-arrFirstQN p s0 q = go s0
+-- The node of both: @arr p >>> first s >>> q@, @q@ the identity ('FDI')
+-- for 'arrFirstSF', whose pair is then output as it is made (inlined at
+-- each use, @fdFun FDI@ is no call, and @compN n (NPure FDI)@ is @n@).
+arrFirstQN :: (a -> (b, c)) -> Node b d -> FunD (d, c) e -> Node a e
+arrFirstQN p s0 qd = go s0
   where
+    q = fdFun qd
     go s = case s of
-      NPure _ -> compN (NPure (FDG p)) (compN (firstN s) (NPure (FDG q)))
+      NPure _ -> compN (NPure (FDG p)) (compN (firstN s) (NPure qd))
       _       -> NStep (\dt a -> let pa = p a in case stepN s dt (fst pa) of
         (# s', y #) -> case go s' of !n -> (# n, q (y, snd pa) #))
 {-# INLINE arrFirstQN #-}
