@@ -37,6 +37,7 @@ import qualified AFrobRobotSim.ArenaSpec
 import qualified AFrobRobotSim.ClearanceSpec
 import qualified AFrobRobotSim.ConsoleSpec
 import qualified AFrobRobotSim.FlatArraySpec
+import qualified AFrobRobotSim.InputFileSpec
 import qualified AFrobRobotSim.JSONSpec
 import qualified AFrobRobotSim.JSON.EncodeSpec
 import qualified AFrobRobotSim.LogSpec
@@ -133,6 +134,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Arena"     AFrobRobotSim.ArenaSpec.spec
   describe "AFrobRobotSim.Clearance" AFrobRobotSim.ClearanceSpec.spec
   describe "AFrobRobotSim.Console"   AFrobRobotSim.ConsoleSpec.spec
+  describe "AFrobRobotSim.InputFile" AFrobRobotSim.InputFileSpec.spec
   describe "AFrobRobotSim.Nearby" AFrobRobotSim.NearbySpec.spec
   describe "AFrobRobotSim.Options" AFrobRobotSim.OptionsSpec.spec
   describe "AFrobRobotSim.OutputFile" AFrobRobotSim.OutputFileSpec.spec
