@@ -692,6 +692,23 @@ spec = do
       map (\r -> field ["params"] r) rs `shouldBe` [JObject [("speed", JString v)] | v <- ["fast", "0.1"]]
       map (\r -> either (const False) (const True) (member "outcome" r)) rs `shouldBe` [False, True]
 
+    it "shows a run's warning (a --param the program never asks for) once, and counts the runs that warned (it swallowed them)" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      (code, _, err) <- runScriptCode [] sweep ["-j", "2", "--seeds", "1..2", "--param", "sped=0.2,0.5", prog, dir </> "r.jsonl"
+                                               , "--", "--seconds", "1"]
+      code `shouldBe` ExitSuccess
+      let named = "asked for no parameter named \"sped\""
+      length (filter (named `isInfixOf`) (lines err)) `shouldBe` 1
+      err `shouldSatisfy` ("4 of 4 runs printed warnings" `isInfixOf`)
+      length . lines <$> readFile (dir </> "r.jsonl") `shouldReturn` 4
+      -- (a parameter the program reads: no warning)
+      (code', _, err') <- runScriptCode [] sweep ["--seeds", "1..2", "--param", "speed=0.2", prog, dir </> "r2.jsonl"
+                                                 , "--", "--seconds", "1"]
+      code' `shouldBe` ExitSuccess
+      err' `shouldNotSatisfy` ("warning" `isInfixOf`)
+
     it "finds a cabal executable of the current folder's project by its name (it looked in afrp's only)" $ withTempDir $ \dir -> do
       requireParallel
       -- (a user's project beside afrp: its program where cabal builds it)
