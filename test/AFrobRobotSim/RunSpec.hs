@@ -1053,6 +1053,10 @@ spec = do
       readFile (dir </> "afile") `shouldReturn` "mine"
     it "an --out whose parent folder does not exist" $
       refused (\dir -> quick (dir </> "a" </> "b")) ("does not exist" `isInfixOf`)
+    it "an --out whose parent folder does not exist, said with the other faults (it was said only once they were mended)" $
+      refused (\dir -> (quick (dir </> "a" </> "b")) { optLog = Just (dir </> "nolog" </> "run.jsonl") })
+              (\e -> all (`isInfixOf` e) ["--log", "cannot write frames to", "a" </> "b" ++ "\": the folder"]
+                     && length (filter ("cannot run" `isInfixOf`) (lines e)) == 1)
     it "an empty --out" $ do
       parseSimArgs defaultSimOptions ["--out", ""] `shouldSatisfy` either ("--out" `isInfixOf`) (const False)
       refused (\_ -> (quick "") { optFrames = True }) ("--out" `isInfixOf`)

@@ -120,8 +120,11 @@ preflight bounds opts = do
                                                      ++ [ ("--world", w, cw) | (w, cw) <- world ]
                , takeDirectory c == outCanon, isFrameName (takeFileName c) ]
             ++ concat fileErrs
-  -- the output folder is created only when nothing else is wrong
-  errs <- if inOut && null pre then checkFolder out else pure pre
+  -- the output folder is created only when nothing else is wrong; with
+  -- other faults, what can be told of it without making it is said too
+  errs <- if | not inOut -> pure pre
+             | null pre  -> checkFolder out
+             | otherwise -> (pre ++) <$> folderFaults out
   pure (errs, ffmpeg)
   where
     device f = any (`isPrefixOf` normalise f) ["/dev/", "/proc/"]
@@ -179,7 +182,10 @@ preflight bounds opts = do
     -- (without --frames only the SVG, page, log or result go there)
     writeTo | optFrames opts = "cannot write frames to "
             | otherwise      = "cannot write to the output folder (--out) "
-    checkFolder dir = do
+    -- (what is wrong with the output folder that can be told without
+    -- making it or writing into it: its name taken by a file, a parent
+    -- not there, no permission to write where it is or would be made)
+    folderFaults dir = do
       there <- doesDirectoryExist dir
       parentThere <- doesDirectoryExist (takeDirectory dir)
       taken <- doesPathExist dir
@@ -187,6 +193,16 @@ preflight bounds opts = do
          | not there && not parentThere ->
              pure [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir) ++ " does not exist" ]
          | otherwise -> do
+             let at = if there then dir else takeDirectory dir
+             w <- either (\(_ :: IOException) -> True) writable <$> try (getPermissions at)
+             pure [ writeTo ++ show dir ++ ": " ++ (if there then "no permission to write there"
+                                                    else "no permission to make it in " ++ show at)
+                  | not w ]
+    checkFolder dir = do
+      early <- folderFaults dir
+      if | not (null early) -> pure early
+         | otherwise -> do
+          there <- doesDirectoryExist dir
           -- (a hidden file of a new name, so that no file already there is
           -- touched, removed whatever happens)
           r <- try (do unless there (createDirectory dir)
