@@ -1,3 +1,4 @@
+{-# LANGUAGE BangPatterns #-}
 -- |
 -- Module      : AFrobRobotSim.WorldFile
 -- Description : A plain-text file format for world templates: parser,
@@ -182,7 +183,7 @@ import qualified Data.Map.Strict   as M
 
 import           AFRP.Geometry     (Point2 (..))
 import           AFrobRobotSim.World (ObjectTemplate (..), WorldTemplate, isWorldSize, notesBounds)
-import           AFrobRobotSim.World.Check (capProblems, worldProblems)
+import           AFrobRobotSim.World.Check (capProblems, maxProblems, worldProblems)
 import           AFrobRobotSim.Console          (displayPath)
 import           AFrobRobotSim.WorldFile.Grammar (Failure (..), maxHeading, parseLine)
 import           AFrobRobotSim.InputFile (readFileUpTo)
@@ -195,9 +196,12 @@ import           AFrobRobotSim.WorldFile.Lexical
 -- format). The first argument is the file name, used only in error
 -- messages.
 --
--- On success, the objects in the order of their lines. On the first
--- malformed line, a single message
--- @FILE:LINE:COLUMN: expected ..., found ...@ and nothing else.
+-- On success, the objects in the order of their lines. Otherwise a
+-- message for every malformed line, one a line,
+-- @FILE:LINE:COLUMN: expected ..., found ...@ (the first
+-- 'AFrobRobotSim.World.Check.maxProblems', then how many more), and
+-- nothing else; a file of more than 'maxObjects' objects stops at the
+-- first object too many.
 --
 -- >>> parseWorld "w.world" "ball at 0 0\nsimbotA 1 at 1 2 heading 90 deg\n"
 -- Right [OTBall {otPos = Point2 0.0 0.0},OTSimbotA {otRId = 1, otPos = Point2 1.0 2.0, otHdng = 1.5707963267948966}]
@@ -209,7 +213,7 @@ parseWorld file = fmap (map snd) . parseNumbered file
 
 -- | 'parseWorld', each object with its line number.
 parseNumbered :: FilePath -> String -> Either String [(Int, ObjectTemplate)]
-parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . textLines . dropBom
+parseNumbered name = go (0 :: Int) Nothing [] (Faults [] 0) . numberedFrom 1 . textLines . dropBom
   where
     -- lines ended by \n, \r\n or a lone \r (a file with no line end at
     -- all is one line; a final line end does not start another)
@@ -217,23 +221,44 @@ parseNumbered name = go (0 :: Int) Nothing [] . zip [1 :: Int ..] . textLines . 
       (l, [])                 -> [l | not (null l)]
       (l, '\r' : '\n' : rest) -> l : textLines rest
       (l, _ : rest)           -> l : textLines rest
+    -- (numbered by a counter, not zipped with @[1 ..]@: that list, a
+    -- constant, was floated out as a top-level value, which kept a cell
+    -- for every line of the largest file read so far for as long as the
+    -- program could parse another: 315 MB after a file of 8 million
+    -- comment lines)
+    numberedFrom :: Int -> [String] -> [(Int, String)]
+    numberedFrom !n (l : ls) = (n, l) : numberedFrom (n + 1) ls
+    numberedFrom _ []        = []
     file = displayPath name   -- (control characters escaped in messages)
     dropBom ('\xFEFF' : r) = r
     dropBom r              = r
-    -- k objects so far; the line of the size, if one was given
-    go _ _ acc [] = Right (reverse acc)
-    go k sizeLine acc ((n, l) : ls) = case checkLine l >>= parseLine of
-      Right Nothing  -> go k sizeLine acc ls
+    -- k objects so far; the line of the size, if one was given; the
+    -- faults so far (the first 'maxProblems', last first) and their number
+    go _ _ acc (Faults _ 0) [] = Right (reverse acc)
+    go _ _ _ faults [] = Left (faultsText faults)
+    go k sizeLine acc faults ((n, l) : ls) = case checkLine l >>= parseLine of
+      Right Nothing  -> go k sizeLine acc faults ls
       Right (Just o@OTSize {}) -> case sizeLine of
-        Just first -> Left (file ++ ":" ++ show n ++ ": the world's size is given twice (first on line "
-                            ++ show first ++ ")")
-        Nothing    -> go k (Just n) ((n, o) : acc) ls
+        Just first -> go k sizeLine acc (faults `with` (file ++ ":" ++ show n ++ ": the world's size is given twice (first on line "
+                                                        ++ show first ++ ")")) ls
+        Nothing    -> go k (Just n) ((n, o) : acc) faults ls
       Right (Just o)
-        | k >= maxObjects -> Left (file ++ ":" ++ show n ++ ": too many objects (at most "
-                                   ++ show maxObjects ++ ")")
-        | otherwise       -> go (k + 1) sizeLine ((n, o) : acc) ls
+        | k >= maxObjects -> Left (faultsText (faults `with` (file ++ ":" ++ show n ++ ": too many objects (at most "
+                                                              ++ show maxObjects ++ ")")))
+        | otherwise       -> go (k + 1) sizeLine ((n, o) : acc) faults ls
       Left (Failure col msg) ->
-        Left (file ++ ":" ++ show n ++ ":" ++ show col ++ ": " ++ msg)
+        go k sizeLine acc (faults `with` (file ++ ":" ++ show n ++ ":" ++ show col ++ ": " ++ msg)) ls
+    with (Faults shown count) msg
+      | count < maxProblems = Faults (msg : shown) (count + 1)
+      | otherwise           = Faults shown (count + 1)
+    faultsText (Faults shown count) =
+      intercalate "\n" (reverse shown ++ [ "... and " ++ show more ++ " more problem" ++ (if more == 1 then "" else "s")
+                                          | let more = count - maxProblems, more > 0 ])
+
+-- The faults of a world file's lines so far: the first 'maxProblems'
+-- messages (the last first) and how many there are, so that a file of
+-- millions of bad lines holds only those.
+data Faults = Faults [String] !Int
 
 -- | The most objects a world file may describe: 100,000 (the notes' world
 -- holds about 1100 balls, or 400 blocks, side by side; the benchmarks'

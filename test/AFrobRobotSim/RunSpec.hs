@@ -163,6 +163,7 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- 2001 snapshots (the most it keeps), under the parent's heap limit.
 -- @params@: 0.1 s with a @--param@ it asks for and one it does not (a
 -- warning). @noworld@: a world file that is not there (exit code 2).
+-- @comments@: 0.1 s of the world file @comments.world@ the parent writes.
 -- @dumpfar@: @--dump-world@ of a world whose heading a file cannot say.
 -- @badnoise@: options set in code out of their flags' ranges (odometry
 -- noise 2, a time step of 2e6 s), with a log.
@@ -201,6 +202,8 @@ child arg = case break (== ':') arg of
     _ <- paramOr "speed" (1 :: Double)
     runSimWith (quick dir) { optFrames = False, optSeconds = 0.1, optParams = [("sped", "2"), ("speed", "3")] }
       (Just world) drive drive
+  ("comments", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSeconds = 0.1, optWorldFile = Just (dir </> "comments.world") }
+                                    Nothing drive drive
   ("noworld", _ : dir) -> runSimWith (quick dir) { optWorldFile = Just (dir </> "missing.world") } Nothing drive drive
   ("dumpfar", _ : _) -> runSimWith defaultSimOptions { optDumpWorld = True } (Just [OTSimbotA 1 (Point2 0 0) 1e10]) drive drive
   ("badnoise", _ : dir) -> runSimWith (quick dir) { optFrames = False, optOdometryNoise = 2, optDt = 2e6
@@ -498,6 +501,9 @@ spec = do
           out `shouldSatisfy` (summary `isPrefixOf`)
     it "a simulated hour with the SVG and trails runs in 40 MB of heap (+RTS -M40m)" $ withTempDir $ \dir ->
       underHeap "40m" "hour" dir "3600.00 s simulated in 360001 steps"
+    it "a world file of two million lines is read in 40 MB of heap (a cell per line was kept: 80 MB)" $ withTempDir $ \dir -> do
+      writeFile (dir </> "comments.world") (concat (replicate 2000000 "#\n") ++ "simbotA 1 at 0 0 heading 0 deg\n")
+      underHeap "40m" "comments" dir "0.10 s simulated in 11 steps"
     it "an SVG of 100 robots' 2001 snapshots runs in 20 MB of heap (+RTS -M20m)" $ withTempDir $ \dir -> do
       underHeap "20m" "svgmany" dir "2000.00 s simulated in 50001 steps"
       svg <- readFile (dir </> "run.svg")

@@ -494,9 +494,20 @@ spec = do
         "w.world:1:9: expected a finite number after \"at\", found \"1e400\" (too large for a Double)"
     it "counts a tab as one column" $
       "ball\tat\tq 0" `failsWith` "w.world:1:9: expected a number after \"at\", found \"q\""
-    it "reports only the first error, and nothing partial" $
-      parse "ball at 0 0\nblock at 1\nwall at 2 2\n"
-        `shouldBe` Left "w.world:2:11: expected a number after \"1\", found end of line"
+    it "reports every malformed line, in order, and nothing partial (it reported only the first)" $
+      parse "ball at 0 0\nblock at 1\nwall at 2 2\nsize 10 10\nsize 20 20\n"
+        `shouldBe` Left (intercalate "\n"
+                       [ "w.world:2:11: expected a number after \"1\", found end of line"
+                       , "w.world:3:6: expected a wall orientation (v, vertical, h or horizontal) after \"wall\", found \"at\""
+                       , "w.world:5: the world's size is given twice (first on line 4)" ])
+    it "lists the first maxProblems malformed lines, then counts the others" $ do
+      let bad = 25 + maxProblems
+      case parse (concat (replicate bad "bal at 0 0\n")) of
+        Left msg -> do
+          length (lines msg) `shouldBe` maxProblems + 1
+          last (lines msg) `shouldBe` "... and 25 more problems"
+          take 1 (lines msg) `shouldBe` ["w.world:1:1: expected an object keyword (simbotA, simbotB, wall, block or ball) or size, found \"bal\""]
+        Right _ -> expectationFailure "parsed"
     it "uses the given file name" $
       parseWorld "dir/my.world" "bal at 0 0" `shouldSatisfy` either ("dir/my.world:1:1: " `isPrefixOf`) (const False)
 
