@@ -117,7 +117,9 @@
 --
 -- = Errors
 --
--- 'parseWorld' stops at the first malformed line and reports it as
+-- 'parseWorld' reports every malformed line (up to
+-- 'AFrobRobotSim.World.Check.maxProblems' of them; one more stops the
+-- reading, and a last line says from where), each as
 --
 -- @
 -- FILE:LINE:COLUMN: expected WHAT [after \"PREVIOUS TOKEN\"], found \"TOKEN\"
@@ -127,7 +129,7 @@
 -- COLUMN is the 1-based column (in characters; a tab counts as one) where
 -- the offending token starts; when a token is missing, it is the column
 -- just after the preceding token, and the message says
--- @found end of line@. Nothing is returned for the lines before an error.
+-- @found end of line@. Nothing is returned for the lines that are right.
 -- The limits give messages of the same shape:
 --
 -- @
@@ -135,7 +137,7 @@
 -- FILE:LINE:COLUMN: token longer than 100 characters, starting \"...\"
 -- FILE:LINE:COLUMN: found a NUL character (is this a text file?)
 -- FILE:LINE:COLUMN: invalid UTF-8 (byte 0xff)
--- FILE:LINE: too many objects (at most 10000)
+-- FILE:LINE: too many objects (at most 100000)
 -- FILE:LINE: the world's size is given twice (first on line N)
 -- @
 --
@@ -198,10 +200,11 @@ import           AFrobRobotSim.WorldFile.Lexical
 --
 -- On success, the objects in the order of their lines. Otherwise a
 -- message for every malformed line, one a line,
--- @FILE:LINE:COLUMN: expected ..., found ...@ (the first
--- 'AFrobRobotSim.World.Check.maxProblems', then how many more), and
--- nothing else; a file of more than 'maxObjects' objects stops at the
--- first object too many.
+-- @FILE:LINE:COLUMN: expected ..., found ...@, and nothing else: the
+-- first 'AFrobRobotSim.World.Check.maxProblems' (20); one more ends the
+-- reading, said in a last line (@... and more problems from line L on@).
+-- A file of more than 'maxObjects' objects stops at the first object too
+-- many, said after the faults before it.
 --
 -- >>> parseWorld "w.world" "ball at 0 0\nsimbotA 1 at 1 2 heading 90 deg\n"
 -- Right [OTBall {otPos = Point2 0.0 0.0},OTSimbotA {otRId = 1, otPos = Point2 1.0 2.0, otHdng = 1.5707963267948966}]
@@ -224,8 +227,8 @@ parseNumbered name = go (0 :: Int) Nothing [] (Faults [] 0) . numberedFrom 1 . t
     -- (numbered by a counter, not zipped with @[1 ..]@: that list, a
     -- constant, was floated out as a top-level value, which kept a cell
     -- for every line of the largest file read so far for as long as the
-    -- program could parse another: 315 MB after a file of 8 million
-    -- comment lines)
+    -- program could parse another: 315 MB of heap (771 MB of memory in
+    -- all) after a file of 8 million comment lines)
     numberedFrom :: Int -> [String] -> [(Int, String)]
     numberedFrom !n (l : ls) = (n, l) : numberedFrom (n + 1) ls
     numberedFrom _ []        = []
@@ -235,7 +238,8 @@ parseNumbered name = go (0 :: Int) Nothing [] (Faults [] 0) . numberedFrom 1 . t
     -- k objects so far; the line of the size, if one was given; the
     -- faults so far (the first 'maxProblems', last first) and their number
     go _ _ acc (Faults _ 0) [] = Right (reverse acc)
-    go _ _ _ faults [] = Left (faultsText faults)
+    go _ _ _ faults [] = Left (faultsText faults [])
+    go _ _ _ faults@Stopped {} _ = Left (faultsText faults [])
     go k sizeLine acc faults ((n, l) : ls) = case checkLine l >>= parseLine of
       Right Nothing  -> go k sizeLine acc faults ls
       Right (Just o@OTSize {}) -> case sizeLine of
@@ -243,22 +247,28 @@ parseNumbered name = go (0 :: Int) Nothing [] (Faults [] 0) . numberedFrom 1 . t
                                                         ++ show first ++ ")")) ls
         Nothing    -> go k (Just n) ((n, o) : acc) faults ls
       Right (Just o)
-        | k >= maxObjects -> Left (faultsText (faults `with` (file ++ ":" ++ show n ++ ": too many objects (at most "
-                                                              ++ show maxObjects ++ ")")))
+        | k >= maxObjects -> Left (faultsText faults [file ++ ":" ++ show n ++ ": too many objects (at most "
+                                                      ++ show maxObjects ++ ")"])
         | otherwise       -> go (k + 1) sizeLine ((n, o) : acc) faults ls
       Left (Failure col msg) ->
         go k sizeLine acc (faults `with` (file ++ ":" ++ show n ++ ":" ++ show col ++ ": " ++ msg)) ls
-    with (Faults shown count) msg
-      | count < maxProblems = Faults (msg : shown) (count + 1)
-      | otherwise           = Faults shown (count + 1)
-    faultsText (Faults shown count) =
-      intercalate "\n" (reverse shown ++ [ "... and " ++ show more ++ " more problem" ++ (if more == 1 then "" else "s")
-                                          | let more = count - maxProblems, more > 0 ])
+      where
+        -- (one fault more than 'maxProblems' ends the reading: the rest
+        -- of a file of millions of bad lines is not read)
+        with (Faults shown count) msg
+          | count < maxProblems = Faults (msg : shown) (count + 1)
+          | otherwise           = Stopped shown n
+        with stopped _ = stopped
+    -- (a last message, the reason the reading stopped, after the faults)
+    faultsText (Faults shown _) final = intercalate "\n" (reverse shown ++ final)
+    faultsText (Stopped shown n) final =
+      intercalate "\n" (reverse shown ++ final ++ ["... and more problems from line " ++ show n
+                                                  ++ " on (the reading stopped there)"])
 
 -- The faults of a world file's lines so far: the first 'maxProblems'
--- messages (the last first) and how many there are, so that a file of
--- millions of bad lines holds only those.
-data Faults = Faults [String] !Int
+-- messages (the last first) and how many there are; or, once one more is
+-- found, those and the line where it was, which ends the reading.
+data Faults = Faults [String] !Int | Stopped [String] !Int
 
 -- | The most objects a world file may describe: 100,000 (the notes' world
 -- holds about 1100 balls, or 400 blocks, side by side; the benchmarks'

@@ -9,6 +9,7 @@ import           Control.Concurrent     (forkIO, threadDelay)
 import           Control.Exception      (bracket)
 import qualified Data.ByteString.Char8  as BC
 import           System.FilePath        ((</>))
+import           GHC.IO.Handle.FD       (openFileBlocking)
 import           System.IO              (IOMode (..), hClose, withBinaryFile)
 import           System.Posix.Files     (createNamedPipe, ownerReadMode, ownerWriteMode, unionFileModes)
 import           System.Timeout         (timeout)
@@ -61,10 +62,12 @@ spec = do
       withTempDir $ \dir -> do
         let fifo = dir </> "world.fifo"
         createNamedPipe fifo (ownerReadMode `unionFileModes` ownerWriteMode)
-        -- (the writer opens the pipe only after the reader has begun)
+        -- (the writer opens the pipe after the reader has begun, most
+        -- likely; its open waits for the reader's either way, whereas
+        -- GHC's usual open for writing fails at once without a reader)
         _ <- forkIO $ do
           threadDelay 200000
-          withBinaryFile fifo WriteMode $ \h -> BC.hPut h (BC.pack "robot 1 1 0\n")
+          bracket (openFileBlocking fifo WriteMode) hClose $ \h -> BC.hPut h (BC.pack "robot 1 1 0\n")
         r <- timeout 20000000 (readFileUpTo 1000 fifo)
         fmap (either (const Nothing) (fmap BC.unpack)) r `shouldBe` Just (Just "robot 1 1 0\n")
 

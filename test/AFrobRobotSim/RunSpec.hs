@@ -501,7 +501,7 @@ spec = do
           out `shouldSatisfy` (summary `isPrefixOf`)
     it "a simulated hour with the SVG and trails runs in 40 MB of heap (+RTS -M40m)" $ withTempDir $ \dir ->
       underHeap "40m" "hour" dir "3600.00 s simulated in 360001 steps"
-    it "a world file of two million lines is read in 40 MB of heap (a cell per line was kept: 80 MB)" $ withTempDir $ \dir -> do
+    it "a world file of two million lines is read in 40 MB of heap (a cell per line was kept: about 80 MB of heap)" $ withTempDir $ \dir -> do
       writeFile (dir </> "comments.world") (concat (replicate 2000000 "#\n") ++ "simbotA 1 at 0 0 heading 0 deg\n")
       underHeap "40m" "comments" dir "0.10 s simulated in 11 steps"
     it "an SVG of 100 robots' 2001 snapshots runs in 20 MB of heap (+RTS -M20m)" $ withTempDir $ \dir -> do

@@ -500,13 +500,20 @@ spec = do
                        [ "w.world:2:11: expected a number after \"1\", found end of line"
                        , "w.world:3:6: expected a wall orientation (v, vertical, h or horizontal) after \"wall\", found \"at\""
                        , "w.world:5: the world's size is given twice (first on line 4)" ])
-    it "lists the first maxProblems malformed lines, then counts the others" $ do
+    it "lists the first maxProblems malformed lines, and stops reading at the next, saying where" $ do
       let bad = 25 + maxProblems
       case parse (concat (replicate bad "bal at 0 0\n")) of
         Left msg -> do
           length (lines msg) `shouldBe` maxProblems + 1
-          last (lines msg) `shouldBe` "... and 25 more problems"
+          last (lines msg) `shouldBe` ("... and more problems from line " ++ show (maxProblems + 1) ++ " on (the reading stopped there)")
           take 1 (lines msg) `shouldBe` ["w.world:1:1: expected an object keyword (simbotA, simbotB, wall, block or ball) or size, found \"bal\""]
+        Right _ -> expectationFailure "parsed"
+    it "says too many objects after the faults before them, however many (it was only counted)" $
+      case parse (concat (replicate maxProblems "bal at 0 0\n") ++ concat (replicate (maxObjects + 1) "ball at 0 0\n")) of
+        Left msg -> do
+          length (lines msg) `shouldBe` maxProblems + 1
+          last (lines msg) `shouldBe` ("w.world:" ++ show (maxProblems + maxObjects + 1) ++ ": too many objects (at most "
+                                       ++ show maxObjects ++ ")")
         Right _ -> expectationFailure "parsed"
     it "uses the given file name" $
       parseWorld "dir/my.world" "bal at 0 0" `shouldSatisfy` either ("dir/my.world:1:1: " `isPrefixOf`) (const False)

@@ -183,23 +183,33 @@ preflight bounds opts = do
     writeTo | optFrames opts = "cannot write frames to "
             | otherwise      = "cannot write to the output folder (--out) "
     -- (what is wrong with the output folder that can be told without
-    -- making it or writing into it: its name taken by a file, a parent
-    -- not there, no permission to write where it is or would be made)
+    -- making it or writing into it, said with the other faults: its name
+    -- taken by a file, a parent not there, or, as the system's access
+    -- check tells it, no writing where it is or would be made, which
+    -- does not say whether for want of permission or on a read-only
+    -- file system; with no other fault, 'checkFolder' tries, and says
+    -- the system's reason)
     folderFaults dir = do
+      early <- folderShape dir
+      if | not (null early) -> pure early
+         | otherwise -> do
+             there <- doesDirectoryExist dir
+             let at = if there then dir else takeDirectory dir
+             w <- either (\(_ :: IOException) -> True) writable <$> try (getPermissions at)
+             pure [ writeTo ++ show dir ++ ": " ++ (if there then "cannot write there" else "cannot make it in " ++ show at)
+                    ++ " (no permission, or a read-only file system)"
+                  | not w ]
+    -- (its name taken by a file, or its parent not there)
+    folderShape dir = do
       there <- doesDirectoryExist dir
       parentThere <- doesDirectoryExist (takeDirectory dir)
       taken <- doesPathExist dir
-      if | not there && taken -> pure [ writeTo ++ show dir ++ ": it is a file, not a folder" ]
-         | not there && not parentThere ->
-             pure [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir) ++ " does not exist" ]
-         | otherwise -> do
-             let at = if there then dir else takeDirectory dir
-             w <- either (\(_ :: IOException) -> True) writable <$> try (getPermissions at)
-             pure [ writeTo ++ show dir ++ ": " ++ (if there then "no permission to write there"
-                                                    else "no permission to make it in " ++ show at)
-                  | not w ]
+      pure $ if | not there && taken -> [ writeTo ++ show dir ++ ": it is a file, not a folder" ]
+                | not there && not parentThere ->
+                    [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir) ++ " does not exist" ]
+                | otherwise -> []
     checkFolder dir = do
-      early <- folderFaults dir
+      early <- folderShape dir
       if | not (null early) -> pure early
          | otherwise -> do
           there <- doesDirectoryExist dir
