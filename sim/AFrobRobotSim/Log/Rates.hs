@@ -25,7 +25,7 @@ import           AFrobRobotSim.Simulator
 -- caller's: for a writer that cannot yet tell which rate it will keep (the
 -- replay page's recorder, which thins its page for the length the run
 -- turns out to have: "AFrobRobotSim.Replay"). The frames of the rate
--- @fps@ are exactly 'logStep''s with that 'lcFps': the same steps
+-- @fps@ are exactly those of 'logStep' with that 'lcFps': the same steps
 -- ('isFrameStep' at @fps@) and the same records, each with the events,
 -- console lines and messages of its own period (the steps after that
 -- rate's previous frame, up to and including its own). What a step makes
@@ -56,7 +56,7 @@ logRatesKeep keep (LogRates st made rates) = LogRates st made [ r | r@(RatePerio
 -- rates whose frame the step is and whose periods hold the same events and
 -- lines, with the keys of the group's rates (in the order the rates were
 -- given; the groups by their first rate). So each frame is
--- 'logStep''s at each of its rates.
+-- that of 'logStep' at each of its rates.
 logRatesStep :: LogConfig -> LogRates k -> WorldState -> (LogRates k, [([k], LogFrame)])
 logRatesStep cfg (LogRates st made rates) s = (next, frames)
   where

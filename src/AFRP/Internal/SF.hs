@@ -361,7 +361,7 @@ arrFirstSF p (SF s) = SF (arrFirstQN (\a -> p a) s FDI)
 -- made by the rewrite rules below where GHC sees the composition: a
 -- command of arrow notation with the function that follows it (the rest
 -- of the @proc@ block after a command's last one, the environment rebuilt
--- for the next command). Each step is 'arrFirstSF''s, with the output
+-- for the next command). Each step is that of 'arrFirstSF', with the output
 -- @q (y, c)@ applied lazily, as the composition node applies the function
 -- behind a stateful node: the same value, as lazily, without the
 -- composition node (rebuilt at every step by the composition), the pair
