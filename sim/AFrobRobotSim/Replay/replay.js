@@ -30,10 +30,17 @@
   }
   var run = runName();
   document.title = (run ? run + ' - ' : '') + 'afrp replay';
-  // (the heading, as text, said "afrp replay" on every page)
-  document.getElementsByTagName('h1')[0].textContent = 'afrp replay' + (run ? ': ' + run : '');
   var frames = lines.filter(function (l) { return l.kind === 'frame'; });
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
+  // A test's property of the run decided false (afrp-test's forAllRuns
+  // writes it): the instant that decided, 't', and a line that says so,
+  // 'text'. The page says the line in its heading and its summary, and
+  // opens at that instant, marked on the slider (it opened at frame 0,
+  // the instant only in the test's output).
+  var falsified = (summary && summary.falsified) || null;
+  // (the heading, as text, said "afrp replay" on every page)
+  document.getElementsByTagName('h1')[0].textContent = 'afrp replay' + (run ? ': ' + run : '') +
+    (falsified ? ' - FAILED: ' + falsified.text : '');
   if (frames.length === 0) {
     document.getElementById('meta').textContent = 'This log has no frames: the run stopped before its first.';
     window.afrpReplay = { header: header, summary: summary, frameCount: function () { return 0; } };
@@ -536,6 +543,22 @@
   }
 
   $('slider').max = String(frames.length - 1);
+  // the frame nearest the instant that decided a property false (the
+  // later of two as near), marked on the slider: -1 if none
+  var falsifiedFrame = -1;
+  if (falsified) {
+    falsifiedFrame = 0;
+    frames.forEach(function (f, i) {
+      if (Math.abs(f.t - falsified.t) <= Math.abs(frames[falsifiedFrame].t - falsified.t)) falsifiedFrame = i;
+    });
+    var marks = document.createElement('datalist'), mark = document.createElement('option');
+    marks.id = 'slider-marks';
+    mark.value = String(falsifiedFrame); mark.label = 'decided false';
+    marks.appendChild(mark);
+    document.body.appendChild(marks);
+    $('slider').setAttribute('list', marks.id);
+    $('slider').title = 'the mark: t = ' + frames[falsifiedFrame].t.toFixed(2) + ' s, where the property was decided false';
+  }
   $('slider').addEventListener('input', function () { setFrame(Number($('slider').value)); });
   $('slider').addEventListener('pointerdown', function () { sliderHeld = true; });
   // (let go anywhere, or the window left in the middle of the drag)
@@ -723,7 +746,8 @@
   $('meta').textContent = header.commandLine.join(' ') + '\n' + 'dt ' + header.dt + ' s, ' + Number(header.fps.toPrecision(4)) +
     ' frames/s, seed ' + header.seed + ', ' + header.robots.length + ' robots' +
     (summary ? '; ' + summary.simulated.toFixed(2) + ' s simulated in ' + summary.steps + ' steps' +
-               (summary.interrupted ? ' (interrupted)' : '') + (summary.failure ? '; FAILED: ' + summary.failure : '')
+               (summary.interrupted ? ' (interrupted)' : '') + (summary.failure ? '; FAILED: ' + summary.failure : '') +
+               (falsified ? '; FAILED: ' + falsified.text : '')
              : '; no summary (the run stopped early)');
 
   // For tests and tools: the page's state, in world and canvas coordinates.
@@ -749,11 +773,14 @@
     // how many robots the last frame drawn drew (those in view), how many
     // of their ids, and whether its trails were rough (see drawTrails)
     drawn: function () { return { robots: drawn.robots, labels: drawn.labels, roughTrails: trailsRough }; },
+    // the frame that a property was decided false at, which the page
+    // opens at (-1 if none)
+    falsifiedFrame: falsifiedFrame,
     // above how many stretches of path (robots times frames) the trails are
     // rough while the view changes
     roughAbove: 200000
   };
-  setFrame(0);
+  setFrame(Math.max(0, falsifiedFrame));
   window.addEventListener('resize', rescale);
   watchRatio();
 })();
