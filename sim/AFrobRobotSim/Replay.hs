@@ -52,7 +52,10 @@
 -- drawn when they can be read: when at most 200 robots are in view, or
 -- the robots are at least 8 pixels across; when a SimbotA and a
 -- SimbotB share an id, every id drawn has its type's letter (A1, B1).
--- The page of a test's failing run,
+-- An id goes above its robot on the right, on the left where it would
+-- leave the canvas (zoomed in, the world's rectangle) on the right, and
+-- below the robot where it would leave it at the top. The text panels
+-- break their lines between words. The page of a test's failing run,
 -- whose summary has the instant the test's property was decided false
 -- (@falsified@: afrp-test's @forAllRuns@ writes it), says its line in the
 -- heading and the summary line (@FAILED: decided false at t = 6.76 (step
@@ -72,10 +75,11 @@
 -- twice the CSS pixels at a @devicePixelRatio@ of 2),
 -- @view()@ (@{zoom, cx, cy}@: the zoom, 1 for the whole world, and the
 -- world point in the middle), @setView(zoom, cx, cy)@, @maxZoom@,
--- @drawn()@ (@{robots, labels, roughTrails}@: how many robots the last
--- frame drew, those in view, how many of their ids, and whether its
--- trails were the layer moved and scaled while the view changed),
--- @falsifiedFrame@ (the frame nearest the instant a property
+-- @drawn()@ (@{robots, labels, labelBoxes, roughTrails}@: how many robots the last
+-- frame drew, those in view, how many of their ids, each id's box
+-- (@{robot, x, y, width, height}@ in the canvas's pixels, @y@ its top),
+-- and whether its trails were the layer moved and scaled while the view
+-- changed), @falsifiedFrame@ (the frame nearest the instant a property
 -- was decided false, which the page opens at, or -1),
 -- @roughAbove@ (the page's paths, in robots times frames, above which
 -- the trails are so moved while the wheel, a drag or a pinch changes
