@@ -52,6 +52,15 @@
 -- drawn when they can be read: when at most 200 robots are in view, or
 -- the robots are at least 8 pixels across; when a SimbotA and a
 -- SimbotB share an id, every id drawn has its type's letter (A1, B1).
+-- An id goes above its robot on the right, on the left where it would
+-- leave the canvas (zoomed in, the world's rectangle) on the right, and
+-- below the robot where it would leave it at the top. The text panels
+-- break their lines between words. The page of a test's failing run,
+-- whose summary has the instant the test's property was decided false
+-- (@falsified@: afrp-test's @forAllRuns@ writes it), says its line in the
+-- heading and the summary line (@FAILED: decided false at t = 6.76 (step
+-- 338)@, as a controller's failure is said there), opens at the frame
+-- nearest the instant and marks it on the time slider.
 -- The canvas has the screen's pixels: its @devicePixelRatio@ (from 1 to
 -- 2, taken again when the browser's zoom or another screen changes it,
 -- the view and the frame kept) a CSS pixel, shown at its size in CSS pixels;
@@ -66,16 +75,20 @@
 -- twice the CSS pixels at a @devicePixelRatio@ of 2),
 -- @view()@ (@{zoom, cx, cy}@: the zoom, 1 for the whole world, and the
 -- world point in the middle), @setView(zoom, cx, cy)@, @maxZoom@,
--- @drawn()@ (@{robots, labels, roughTrails}@: how many robots the last
--- frame drew, those in view, how many of their ids, and whether its
--- trails were the layer moved and scaled while the view changed),
+-- @drawn()@ (@{robots, labels, labelBoxes, roughTrails}@: how many robots the last
+-- frame drew, those in view, how many of their ids, each id's box
+-- (@{robot, x, y, width, height}@ in the canvas's pixels, @y@ its top),
+-- and whether its trails were the layer moved and scaled while the view
+-- changed), @falsifiedFrame@ (the frame nearest the instant a property
+-- was decided false, which the page opens at, or -1),
 -- @roughAbove@ (the page's paths, in robots times frames, above which
 -- the trails are so moved while the wheel, a drag or a pinch changes
 -- the view, and drawn afresh 0.25 s after the last change: 200,000),
 -- @header@ and @summary@.
 -- Element ids: @world@ (the canvas), @play@, @back@, @fwd@, @slider@,
 -- @speed@, @rays@, @trails@, @sightings@, @follow@, @zoomin@, @zoomout@,
--- @fit@, @time@, @info@, @events@, @meta@, @afrp-log@ (the log's lines,
+-- @fit@, @time@, @info@, @events@, @meta@, @slider-marks@ (the
+-- slider's mark, on the page of a failing test), @afrp-log@ (the log's lines,
 -- a JSON array), and @afrp-log-2@, @afrp-log-3@, ...
 -- (the lines that follow, when there are more).
 --

@@ -313,7 +313,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
       failureText = case ending of
         Failed ce -> Just (displayException ce)
         _         -> stoppedText
-      summary   = LogSummary simulated steps (-1) wall interrupted failureText []
+      summary   = LogSummary simulated steps (-1) wall interrupted failureText Nothing []
   Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
   let runErrs = maybe [] pure stoppedText
   printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"

@@ -47,7 +47,7 @@ fixtureStates = take (round (fixtureSeconds / 0.01) + 1) (simulate 0.01 fixtureW
 fixtureLog :: RunLog
 fixtureLog = RunLog (logHeader fixtureConfig) (logFrames fixtureConfig fixtureStates)
   (Just (LogSummary fixtureSeconds (length fixtureStates) (length (logFrames fixtureConfig fixtureStates))
-                    0.5 False Nothing []))
+                    0.5 False Nothing Nothing []))
   Nothing
 
 -- | The run's log, as the text of a file.

@@ -171,7 +171,7 @@ spec = do
       hClose h
       w <- openLogWriter fixtureConfig path
       mapM_ (writeLogState w) fixtureStates
-      closeLogWriter w (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing [])
+      closeLogWriter w (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing Nothing [])
       r <- readLogFile path
       removeFile path
       r `shouldBe` Right fixtureLog
@@ -183,7 +183,7 @@ spec = do
       mapM_ (writeLogState w) (take 41 fixtureStates)
       -- another process reads the file before the writer is closed
       (_, txt, _) <- readProcessWithExitCode "cat" [path] ""
-      closeLogWriter w (LogSummary 0.4 41 (-1) 0 True Nothing [])
+      closeLogWriter w (LogSummary 0.4 41 (-1) 0 True Nothing Nothing [])
       removeFile path
       fmap (\l -> (length (rlFrames l), rlSummary l)) (readLog txt) `shouldBe` Right (11, Nothing)
 

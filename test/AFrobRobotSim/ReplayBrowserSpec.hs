@@ -26,8 +26,38 @@ pageOf :: WorldTemplate -> String
 pageOf w = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing Nothing)
   where
     cfg    = defaultLogConfig { lcWorld = w, lcDt = 0.01, lcFps = 25 }
-    states = take 101 (simulate 0.01 w slow slow)
-    slow _ = constant (mrFinalize (ddVelDiff 0.2 0.2))
+    states = take 101 (simulate 0.01 w slowAhead slowAhead)
+
+-- | A robot that drives slowly ahead.
+slowAhead :: SimbotController
+slowAhead _ = constant (mrFinalize (ddVelDiff 0.2 0.2))
+
+-- | The page of a 1 s run in the notes' world with robots at its edges:
+-- SimbotA 1 at the right edge, SimbotB 1 at the top edge, SimbotA 22 in
+-- the top right corner and SimbotB 22 in the bottom right corner (ids
+-- shared: labelled A1, B1, A22, B22); the command line names the world
+-- file @worlds/a\b.world@.
+edgesPage :: String
+edgesPage = replayPage (RunLog (logHeader cfg) (logFrames cfg states) Nothing Nothing)
+  where
+    world  = [ OTSimbotA 1 (Point2 4.7 0) 0, OTSimbotB 1 (Point2 2 4.7) (pi / 2)
+             , OTSimbotA 22 (Point2 4.7 4.7) 0, OTSimbotB 22 (Point2 4.7 (-4.7)) 0 ]
+    cfg    = defaultLogConfig { lcWorld = world, lcDt = 0.01, lcFps = 25
+                              , lcCommandLine = ["simbot", "--world", "worlds/a\\b.world"] }
+    states = take 101 (simulate 0.01 world slowAhead slowAhead)
+
+-- | The page of a 10 s run (25 frames a second) of which a test's
+-- property was decided false at 4.01 s, as afrp-test's forAllRuns writes
+-- it: its summary's 'lsFalsified'.
+verdictPage :: String
+verdictPage = replayPage (RunLog (logHeader cfg) frames (Just summary) Nothing)
+  where
+    world   = [OTSimbotA 1 (Point2 (-2) 0) 0, OTSimbotB 2 (Point2 2 1.5) 1]
+    cfg     = defaultLogConfig { lcWorld = world, lcDt = 0.01, lcFps = 25, lcCommandLine = ["afrp-test"] }
+    states  = take 1001 (simulate 0.01 world slowAhead slowAhead)
+    frames  = logFrames cfg states
+    summary = LogSummary 10 (length states) (length frames) 0 False Nothing
+                         (Just (4.01, "decided false at t = 4.01 (step 401)")) []
 
 -- | The page of a 60 s run in the notes' world (25 frames a second) with
 -- what a user's audit of the page needed: SimbotA 1 and SimbotB 1, which
@@ -73,6 +103,10 @@ spec = do
     runPageTest "replay-rescale.test.js" (replayPage fixtureLog)
   it "leaves Space to a button or a tick box reached with Tab (after a click it plays), and keeps each tick box's label on one line on a narrow window (fixed)" $
     runPageTest "replay-controls.test.js" (replayPage fixtureLog)
+  it "keeps the robots' labels within the canvas at its edges, breaks the text panels' lines between words, keeps the play button's width, and titles a world file named a\\b.world whole (fixed)" $
+    runPageTest "replay-edges.test.js" edgesPage
+  it "opens the page of a run whose property was decided false at that instant, marked on the slider, and says it (fixed)" $
+    runPageTest "replay-verdict.test.js" verdictPage
   it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $
     playFixture (replayPage fixtureLog)
   it "plays it as well with its log split over several data elements, every frame read (fixed)" $ do

@@ -23,7 +23,8 @@
 -- instant the predicate was decided false, and writes it to the file, to
 -- be run again with @simbot --world failing.world@. 'forAllRuns' does
 -- both at once and also writes the failing run's replay page
--- (@failing.world.html@), to watch in a browser.
+-- (@failing.world.html@), to watch in a browser: it opens at the instant
+-- that decided, and says it.
 --
 -- Everything here uses the simulator's public API only.
 module AFrobRobotSim.Test
@@ -45,6 +46,7 @@ module AFrobRobotSim.Test
   , forAllRuns
   , runReplayPage
   , writeRunReplayPage
+  , writeFalsifiedRunReplayPage
   , worldFileText
     -- * Distances, for predicates
   , robotClearance
@@ -343,19 +345,27 @@ runT config duration rcA rcB p world
                        ++ " evalT and explainT disagree (a fault of afrp-test; please report it)")
                       explanation (explainT p (run ()))
     explanation e = unlines $
-      ("decided false at t = " ++ showTime (explTime e) ++ " (step " ++ show (explFrame e) ++ "):")
+      (decidedLine e ++ ":")
       : [ (if j == explFrame e then "  > " else "    ") ++ showWorldState ws | (j, _, ws) <- explAround e ]
+
+-- The first line of what 'runT' prints of a failure: the instant that
+-- decided, @decided false at t = 6.76 (step 338)@.
+decidedLine :: Explanation WorldState -> String
+decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++ show (explFrame e) ++ ")"
 
 -- | @forAllRuns file config duration rcA rcB gen p@: the predicate @p w@
 -- ('runT') holds for the run of every world @w@ from @gen@. A failing world is
 -- shrunk ('shrinkWorld'); the smallest is printed, written to @file@ in the
 -- world-file format with the size the run gave it ('worldFileText') and
--- its run's replay page ('writeRunReplayPage') to @file ++ \".html\"@.
+-- its run's replay page to @file ++ \".html\"@.
 -- The page shows the run up to 5 simulated seconds past the instant that
 -- decided @p@ false (what 'runT' prints), or up to a controller's
 -- failure, if one failed; the whole run when neither ends it sooner. (A
 -- failure early in a long run makes a short page: the page of the whole
--- run could take longer than the test.)
+-- run could take longer than the test.) It opens at that instant, marked
+-- on its time slider, and says it (@FAILED: decided false at t = 6.76
+-- (step 338)@ in its heading and its summary): 'writeFalsifiedRunReplayPage'.
+-- A page of a controller's failure ('writeRunReplayPage') says the failure.
 --
 -- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB
 -- >   (genWorld defaultWorldMix notesBounds)
@@ -365,24 +375,26 @@ forAllRuns :: FilePath -> SimConfig -> Time -> SimbotController -> SimbotControl
 forAllRuns file config duration rcA rcB gen p =
   forAllShrinkShow gen shrinkWorld (worldFileText config) $ \w ->
     whenFail (do writeFile file (worldFileText config w)
-                 upTo <- pageEnd w
-                 writeRunReplayPage page config upTo w rcA rcB)
+                 (upTo, decided) <- pageEnd w
+                 writeRunPage decided page config upTo w rcA rcB)
              (counterexample ("(the world is written to " ++ file ++ ", its run's replay page to " ++ page ++ ")")
                              (runT config duration rcA rcB (p w) w))
   where
     page = file ++ ".html"
-    -- (the instant that decided, found as runT finds it: a third run, up
-    -- to about twice that instant, evaluated here whole; a controller's
-    -- failure or a predicate that throws leaves the whole duration, the
-    -- page then ending at the failure; an asynchronous exception, such as
-    -- a timeout's, is not caught)
+    -- (the instant that decided and the line runT prints of it, found as
+    -- runT finds it: a third run, up to about twice that instant,
+    -- evaluated here whole; a controller's failure or a predicate that
+    -- throws leaves the whole duration and no instant, the page then
+    -- ending at the failure; an asynchronous exception, such as a
+    -- timeout's, is not caught)
     pageEnd w = do
       decided <- tryJust synchronous (evaluate (case explainT (p w) (runStream config duration w rcA rcB) of
                                                   Nothing -> Nothing
-                                                  Just e  -> let t = explTime e in t `seq` Just t))
+                                                  Just e  -> let d@(t, line) = (explTime e, decidedLine e)
+                                                             in t `seq` length line `seq` Just d))
       pure $ case decided of
-        Right (Just t) -> min duration (t + 5)
-        _              -> duration
+        Right (Just d@(t, _)) -> (min duration (t + 5), Just d)
+        _                     -> (duration, Nothing)
     synchronous e = case fromException e of
       Just (_ :: SomeAsyncException) -> Nothing
       Nothing                        -> Just ()
@@ -430,12 +442,31 @@ runReplayPage config duration world rcA rcB =
 -- the run's states or frames. The page is written whole or not at all.
 writeRunReplayPage :: FilePath -> SimConfig -> Time -> WorldTemplate -> SimbotController -> SimbotController
                    -> IO ()
-writeRunReplayPage file config duration world rcA rcB =
+writeRunReplayPage = writeRunPage Nothing
+
+-- | @writeFalsifiedRunReplayPage file config duration world rcA rcB (t, line)@:
+-- 'writeRunReplayPage' for a run of which a property was decided false
+-- at @t@ (seconds from the run's start), @line@ saying so ('forAllRuns'
+-- gives the first line of what 'runT' prints: @decided false at t =
+-- 6.76 (step 338)@). The page says @FAILED: @ and the line in its heading
+-- and its summary, marks the instant on its time slider and opens at the
+-- frame nearest it; its log's summary has them as its @falsified@
+-- (docs/LOG.md).
+writeFalsifiedRunReplayPage :: FilePath -> SimConfig -> Time -> WorldTemplate -> SimbotController
+                            -> SimbotController -> (Time, String) -> IO ()
+writeFalsifiedRunReplayPage file config duration world rcA rcB decided =
+  writeRunPage (Just decided) file config duration world rcA rcB
+
+-- 'writeRunReplayPage', with the instant a property was decided false
+-- and its line, if any.
+writeRunPage :: Maybe (Time, String) -> FilePath -> SimConfig -> Time -> WorldTemplate -> SimbotController
+             -> SimbotController -> IO ()
+writeRunPage decided file config duration world rcA rcB =
   -- (the recorder's temporary file closed whatever stops the run: an
   -- error, a timeout's or Ctrl-C's exception)
   bracketOnError (newReplayRecorder replayEveryFrame (pageConfig config world)) discardReplay $ \recorder -> do
     (steps, simulated, failure) <- record recorder 0 0 (map snd (runStream config duration world rcA rcB))
-    writeReplay recorder (pageSummary steps simulated (-1) failure) file
+    writeReplay recorder (pageSummary steps simulated (-1) failure decided) file
   where
     -- (each state evaluated as simbot evaluates it before recording it;
     -- the steps counted and the last one's time kept, strictly)
@@ -457,7 +488,7 @@ pageOf config world states failure =
   where
     cfg     = pageConfig config world
     frames  = logFrames cfg states
-    summary = pageSummary (length states) (if null states then 0 else wsTime (last states)) (length frames) failure
+    summary = pageSummary (length states) (if null states then 0 else wsTime (last states)) (length frames) failure Nothing
 
 -- The log's settings for a run's page.
 pageConfig :: SimConfig -> WorldTemplate -> LogConfig
@@ -465,13 +496,15 @@ pageConfig config world =
   defaultLogConfig { lcBounds = simBounds config, lcWorld = world, lcDt = simDt config
                    , lcSeed = simSeed config, lcCommandLine = ["afrp-test"] }
 
--- @pageSummary steps simulated frames failure@: a run's page's summary
--- (steps: the samples, the one at time 0 included, as the log counts
--- them; the time of the last; the frames, or -1 for the recorder's count).
-pageSummary :: Int -> Time -> Int -> Maybe String -> LogSummary
-pageSummary steps simulated frames failure =
+-- @pageSummary steps simulated frames failure decided@: a run's page's
+-- summary (steps: the samples, the one at time 0 included, as the log
+-- counts them; the time of the last; the frames, or -1 for the
+-- recorder's count; the instant a property was decided false, and its
+-- line).
+pageSummary :: Int -> Time -> Int -> Maybe String -> Maybe (Time, String) -> LogSummary
+pageSummary steps simulated frames failure decided =
   LogSummary { lsSimulated = simulated, lsSteps = steps, lsFrames = frames
-             , lsWallTime = 0, lsInterrupted = False, lsFailure = failure, lsScores = [] }
+             , lsWallTime = 0, lsInterrupted = False, lsFailure = failure, lsFalsified = decided, lsScores = [] }
 
 -- | @robotClearance world r@: the distance from the edge of robot @r@'s
 -- disc to the nearest wall segment or block of @world@ (negative if they

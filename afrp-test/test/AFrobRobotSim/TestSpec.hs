@@ -357,6 +357,23 @@ specWithFiles = do
     -- (the samples, the one at time 0 included)
     pageSummary page `shouldSatisfy` (("\"steps\":" ++ show (length (runStream config 7 world wander straight)) ++ ",") `isInfixOf`)
 
+  it "writeFalsifiedRunReplayPage writes writeRunReplayPage's page, its summary with the instant a property was decided false and its line" $ \tmp -> do
+    let file = tmp </> "afrp-test-falsified.html"
+        plainFile = tmp </> "afrp-test-plain.html"
+        config = defaultSimConfig { simDt = 0.03 }
+        world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 2 (Point2 2 2) 1]
+    writeFalsifiedRunReplayPage file config 7 world wander straight (3.5, "decided false at t = 3.50 (step 117)")
+    writeRunReplayPage plainFile config 7 world wander straight
+    page <- readFile file
+    plain <- readFile plainFile
+    length page `seq` length plain `seq` mapM_ removeFile [file, plainFile]
+    pageSummary page `shouldSatisfy` ("\"falsified\":{\"t\":3.5,\"text\":\"decided false at t = 3.50 (step 117)\"" `isInfixOf`)
+    pageSummary plain `shouldNotSatisfy` ("falsified" `isInfixOf`)
+    -- (the same header and frames)
+    let logLines p = filter ("{\"kind\":\"" `isPrefixOf`) (lines p)
+    init (logLines page) `shouldBe` init (logLines plain)
+    length (logLines page) `shouldSatisfy` (> 100)
+
   it "writeRunReplayPage closes its temporary file when the run stops with an exception (it was left open)" $ \tmp -> do
     let world = [OTSimbotA 1 (Point2 0 0) 0]
         file = tmp </> "afrp-test-leak.html"
@@ -390,6 +407,14 @@ specWithFiles = do
         fmap length written `shouldSatisfy` either (const False) (<= 3)
         fmap renderWorld written `shouldBe` Right shown
         output result `shouldSatisfy` ("decided false at t = " `isInfixOf`)
+        -- (the page's summary has the instant that decided and the line
+        -- the output says it with, without its colon: the page says it)
+        case ( [ takeWhile (/= ':') l | l <- lines (output result), "decided false at t = " `isPrefixOf` l ]
+             , [ takeWhile (/= ',') rest | rest <- tails (pageSummary page), "\"falsified\":{\"t\":" `isPrefixOf` rest ] ) of
+          (decided : _, t : _) -> do
+            pageSummary page `shouldSatisfy` (("\"text\":\"" ++ decided ++ "\"") `isInfixOf`)
+            decided `shouldSatisfy` (("decided false at t = " ++ showFFloat (Just 2) (read (drop 17 t) :: Double) " ") `isPrefixOf`)
+          _ -> expectationFailure ("no instant in the output or the page: " ++ output result ++ "\n" ++ pageSummary page)
       _ -> expectationFailure ("the broken wall follower was not caught: " ++ output result)
 
   it "forAllRuns keeps a world's size while shrinking: the failure found is the one shrunk, in a world file that runs again" $ \tmp -> do

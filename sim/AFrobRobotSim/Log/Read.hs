@@ -176,7 +176,8 @@ headerLine loc cut i decoded = do
 -- A line after the header, line @i@, not blank, decoded, the frame before
 -- it at time @prev@ (0 for none): a frame (with a time, not before
 -- @prev@, the header's robots, and robots and balls at places that are
--- numbers) or the summary (with its times).
+-- numbers) or the summary (with its times, the instant a property was
+-- falsified's too).
 bodyLine :: Locate -> LogHeader -> Double -> Int -> Either String LogLine -> Either String (Either LogFrame LogSummary)
 bodyLine loc h prev i decoded = located loc i decoded >>= \ln -> case ln of
   LineFrame f
@@ -203,6 +204,8 @@ bodyLine loc h prev i decoded = located loc i decoded >>= \ln -> case ln of
     | not (all finite [lsSimulated s, lsWallTime s]) ->
         Left (loc i Nothing ++ "the summary's simulated and wall times must be numbers, found "
               ++ show (lsSimulated s) ++ " and " ++ show (lsWallTime s))
+    | Just (t, _) <- lsFalsified s, not (finite t) ->
+        Left (loc i Nothing ++ "the summary's falsified time must be a number, found " ++ show t)
     | otherwise -> Right (Right s)
   LineHeader _ -> Left (loc i Nothing ++ "a second header")
   where

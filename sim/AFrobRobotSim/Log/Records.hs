@@ -152,6 +152,11 @@ data LogSummary = LogSummary
     -- ^ a controller's failure, as printed (@displayException@ of the
     -- 'AFrobRobotSim.Simulator.ControllerError', which names the robot
     -- and the time): the failing step has no state, so no frame shows it
+  , lsFalsified   :: Maybe (Double, String)
+    -- ^ a test's property of the run decided false: the instant that
+    -- decided (s) and a line that says so (afrp-test's @forAllRuns@
+    -- writes it, the explanation's first line; a run of simbot never
+    -- does). Written only when there is one
   , lsScores      :: [(String, Int)] -- ^ final scores, if any
   } deriving (Eq, Show)
 
@@ -190,11 +195,12 @@ logLineJSON (LineFrame f) = JObject
     event e = JObject ([ ("t", num (evTime e)), ("kind", JString (evKind e)) ]
                        ++ maybe [] (\(ty, i) -> [("robot", JArray [JString ty, int i])]) (evRobot e)
                        ++ [ ("text", JString (evText e)) ])
-logLineJSON (LineSummary s) = JObject
+logLineJSON (LineSummary s) = JObject $
   [ ("kind", JString "summary"), ("simulated", num (lsSimulated s)), ("steps", int (lsSteps s))
   , ("frames", int (lsFrames s)), ("wallTime", num (lsWallTime s))
-  , ("interrupted", JBool (lsInterrupted s)), ("failure", maybe JNull JString (lsFailure s))
-  , ("scores", scores (lsScores s)) ]
+  , ("interrupted", JBool (lsInterrupted s)), ("failure", maybe JNull JString (lsFailure s)) ]
+  ++ maybe [] (\(t, text) -> [("falsified", JObject [("t", num t), ("text", JString text)])]) (lsFalsified s)
+  ++ [ ("scores", scores (lsScores s)) ]
 
 num :: Double -> JSON
 num = JNumber
@@ -435,7 +441,9 @@ logLineFromJSON v = do
       _       -> Left "expected a robot as [type, id]"
     summary = LogSummary <$> field "simulated" asNumber <*> field "steps" asInt
       <*> field "frames" asInt <*> field "wallTime" asNumber <*> field "interrupted" asBool
-      <*> (memberMaybe "failure" v >>= traverse asString) <*> field "scores" toScores
+      <*> (memberMaybe "failure" v >>= traverse asString) <*> (memberMaybe "falsified" v >>= traverse falsified)
+      <*> field "scores" toScores
+    falsified f = (,) <$> (member "t" f >>= asNumber) <*> (member "text" f >>= asString)
 
 listOf :: (JSON -> Either String a) -> JSON -> Either String [a]
 listOf p v = asArray v >>= traverse p

@@ -18,9 +18,10 @@
   // The run, for the page's title (a tab among others) and its heading:
   // its program (and the example, for afrp-examples NAME) and its world
   // file, from its command line, e.g. "simbot, world maze.world - afrp
-  // replay".
+  // replay". (A path's folders end at '/' alone, as on the systems simbot
+  // runs on: a world file named a\b.world was titled b.world.)
   function runName() {
-    var cl = header.commandLine || [], base = function (p) { return String(p).split(/[\\/]/).pop(); };
+    var cl = header.commandLine || [], base = function (p) { return String(p).split('/').pop(); };
     if (cl.length === 0) return '';
     // (the last --world, as the command line's parser takes the last)
     var name = base(cl[0]), w = cl.lastIndexOf('--world');
@@ -30,10 +31,17 @@
   }
   var run = runName();
   document.title = (run ? run + ' - ' : '') + 'afrp replay';
-  // (the heading, as text, said "afrp replay" on every page)
-  document.getElementsByTagName('h1')[0].textContent = 'afrp replay' + (run ? ': ' + run : '');
   var frames = lines.filter(function (l) { return l.kind === 'frame'; });
   var summary = lines.filter(function (l) { return l.kind === 'summary'; })[0] || null;
+  // A test's property of the run decided false (afrp-test's forAllRuns
+  // writes it): the instant that decided, 't', and a line that says so,
+  // 'text'. The page says the line in its heading and its summary, and
+  // opens at that instant, marked on the slider (it opened at frame 0,
+  // the instant only in the test's output).
+  var falsified = (summary && summary.falsified) || null;
+  // (the heading, as text, said "afrp replay" on every page)
+  document.getElementsByTagName('h1')[0].textContent = 'afrp replay' + (run ? ': ' + run : '') +
+    (falsified ? ' - FAILED: ' + falsified.text : '');
   if (frames.length === 0) {
     document.getElementById('meta').textContent = 'This log has no frames: the run stopped before its first.';
     window.afrpReplay = { header: header, summary: summary, frameCount: function () { return 0; } };
@@ -260,7 +268,7 @@
   // robots drawn one by one took about 0.2 s a frame); so are the rays,
   // the heading marks and the balls. Robots out of view are skipped.
   // (These pixels, and the lines' widths, are CSS pixels: times dpr.)
-  var drawn = { robots: 0, labels: 0 };
+  var drawn = { robots: 0, labels: 0, labelBoxes: [] };
   function drawMoving(f) {
     var balls = new Path2D(), ballRadius = header.ballRadius * scale;
     f.balls.forEach(function (p) {
@@ -320,13 +328,25 @@
       if (g.width >= 0.5 * dpr) { ctx.lineWidth = g.width; ctx.strokeStyle = g.rim; ctx.stroke(g.path); }
     });
     ctx.lineWidth = 3 * fine * dpr; ctx.strokeStyle = 'rgb(255,255,255)'; ctx.stroke(marks);
-    var crowd = labels.length > 200;
-    ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = Math.round(Math.max(8, 12 * fine) * dpr) + 'px sans-serif';
-    drawn = { robots: labels.length, labels: 0 };
+    var crowd = labels.length > 200, size = Math.round(Math.max(8, 12 * fine) * dpr);
+    ctx.fillStyle = 'rgb(20,20,20)'; ctx.font = size + 'px sans-serif';
+    drawn = { robots: labels.length, labels: 0, labelBoxes: [] };
+    // A label goes above the robot's disc, on its right; on its left when
+    // it would leave the canvas on the right, and below the disc when it
+    // would leave it at the top (zoomed in, the world's rectangle, which
+    // clips what is drawn): the labels of robots at the world's right or
+    // top edge were cut off ("A2" showed as "A").
+    var inset = view.zoom > 1 ? margin : 0;
     labels.forEach(function (l) {
       if (!crowd || l[2] >= 4 * dpr || l[0] === state.selected) {
-        ctx.fillText(robotLabels[l[0]], l[1][0] + l[2] + 2 * dpr, l[1][1] - l[2]);
+        var text = robotLabels[l[0]], m = ctx.measureText(text), gap = l[2] + 2 * dpr;
+        var ascent = m.actualBoundingBoxAscent || 0.8 * size, descent = m.actualBoundingBoxDescent || 0;
+        var x = l[1][0] + gap, y = l[1][1] - l[2];
+        if (x + m.width > canvas.width - inset) x = l[1][0] - gap - m.width;
+        if (y - ascent < inset) y = l[1][1] + l[2] + ascent;
+        ctx.fillText(text, x, y);
         drawn.labels++;
+        drawn.labelBoxes.push({ robot: l[0], x: x, y: y - ascent, width: m.width, height: ascent + descent });
       }
     });
   }
@@ -341,7 +361,7 @@
     ctx.restore();
     $('time').textContent = 't = ' + f.t.toFixed(2) + ' s  (frame ' + state.frame + ' of ' + (frames.length - 1) + ')';
     $('slider').value = String(state.frame);
-    $('play').textContent = state.playing ? 'Pause' : 'Play';
+    $('play').textContent = state.playing ? playLabels.playing : playLabels.paused;
     showInfo();
     showEvents();
   }
@@ -535,7 +555,36 @@
     return best;
   }
 
+  // The play button as wide as its wider label ("Pause"), so that the
+  // controls after it stay where they are when it changes (they moved by
+  // the labels' difference at every press of Play and Pause)
+  var playLabels = { playing: 'Pause', paused: 'Play' };
+  (function () {
+    var button = $('play'), widest = 0;
+    [playLabels.playing, playLabels.paused].forEach(function (label) {
+      button.textContent = label;
+      widest = Math.max(widest, button.getBoundingClientRect().width);
+    });
+    button.style.minWidth = widest + 'px';
+  })();
+
   $('slider').max = String(frames.length - 1);
+  // the frame nearest the instant that decided a property false (the
+  // later of two as near), marked on the slider: -1 if none
+  var falsifiedFrame = -1;
+  if (falsified) {
+    falsifiedFrame = 0;
+    frames.forEach(function (f, i) {
+      if (Math.abs(f.t - falsified.t) <= Math.abs(frames[falsifiedFrame].t - falsified.t)) falsifiedFrame = i;
+    });
+    var marks = document.createElement('datalist'), mark = document.createElement('option');
+    marks.id = 'slider-marks';
+    mark.value = String(falsifiedFrame); mark.label = 'decided false';
+    marks.appendChild(mark);
+    document.body.appendChild(marks);
+    $('slider').setAttribute('list', marks.id);
+    $('slider').title = 'the mark: t = ' + frames[falsifiedFrame].t.toFixed(2) + ' s, where the property was decided false';
+  }
   $('slider').addEventListener('input', function () { setFrame(Number($('slider').value)); });
   $('slider').addEventListener('pointerdown', function () { sliderHeld = true; });
   // (let go anywhere, or the window left in the middle of the drag)
@@ -723,7 +772,8 @@
   $('meta').textContent = header.commandLine.join(' ') + '\n' + 'dt ' + header.dt + ' s, ' + Number(header.fps.toPrecision(4)) +
     ' frames/s, seed ' + header.seed + ', ' + header.robots.length + ' robots' +
     (summary ? '; ' + summary.simulated.toFixed(2) + ' s simulated in ' + summary.steps + ' steps' +
-               (summary.interrupted ? ' (interrupted)' : '') + (summary.failure ? '; FAILED: ' + summary.failure : '')
+               (summary.interrupted ? ' (interrupted)' : '') + (summary.failure ? '; FAILED: ' + summary.failure : '') +
+               (falsified ? '; FAILED: ' + falsified.text : '')
              : '; no summary (the run stopped early)');
 
   // For tests and tools: the page's state, in world and canvas coordinates.
@@ -747,13 +797,23 @@
     setView: function (zoom, cx, cy) { setView(zoom, cx, cy); draw(); },
     maxZoom: maxZoom,
     // how many robots the last frame drawn drew (those in view), how many
-    // of their ids, and whether its trails were rough (see drawTrails)
-    drawn: function () { return { robots: drawn.robots, labels: drawn.labels, roughTrails: trailsRough }; },
+    // of their ids, where (each id's box: the robot, and x, y, width and
+    // height in the canvas's pixels, y its top), and whether its trails
+    // were rough (see drawTrails)
+    drawn: function () {
+      return { robots: drawn.robots, labels: drawn.labels, roughTrails: trailsRough,
+               labelBoxes: drawn.labelBoxes.map(function (k) {
+                 return { robot: k.robot, x: k.x, y: k.y, width: k.width, height: k.height };
+               }) };
+    },
+    // the frame that a property was decided false at, which the page
+    // opens at (-1 if none)
+    falsifiedFrame: falsifiedFrame,
     // above how many stretches of path (robots times frames) the trails are
     // rough while the view changes
     roughAbove: 200000
   };
-  setFrame(0);
+  setFrame(Math.max(0, falsifiedFrame));
   window.addEventListener('resize', rescale);
   watchRatio();
 })();

@@ -90,6 +90,19 @@ spec = do
       Just sm -> do
         readLog (withSummary sm { lsSimulated = 0 / 0 }) `shouldSatisfy` either ("summary's simulated" `isInfixOf`) (const False)
         readLog (withSummary sm) `shouldSatisfy` either (const False) (const True)
+  it "reads back a summary's falsified (a test's property decided false: its instant and line), written only when there is one; a null instant refused" $ do
+    let ls = lines fixtureLogText
+        withSummary s' = unlines (init ls ++ [encodeLogLine (LineSummary s')])
+    case rlSummary fixtureLog of
+      Nothing -> expectationFailure "the fixture log has no summary"
+      Just sm -> do
+        let decided = sm { lsFalsified = Just (4.01, "decided false at t = 4.01 (step 401)") }
+        encodeLogLine (LineSummary decided)
+          `shouldSatisfy` (",\"falsified\":{\"t\":4.01,\"text\":\"decided false at t = 4.01 (step 401)\"}," `isInfixOf`)
+        fmap rlSummary (readLog (withSummary decided)) `shouldBe` Right (Just decided)
+        encodeLogLine (LineSummary sm) `shouldNotSatisfy` ("falsified" `isInfixOf`)
+        readLog (withSummary decided { lsFalsified = Just (0 / 0, "never") })
+          `shouldSatisfy` either ("the summary's falsified time must be a number" `isInfixOf`) (const False)
   it "readLogFile locates an error as FILE:LINE:COLUMN: or FILE:LINE:, like a world file" $ do
     tmp <- getTemporaryDirectory
     (path, h) <- openTempFile tmp "afrp-log.jsonl"

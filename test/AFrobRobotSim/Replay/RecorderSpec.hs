@@ -86,7 +86,7 @@ spec = do
         mapM_ (recordReplayState rec) fixtureStates
         (path, h) <- openTempFile tmp "afrp-replay.html"
         hClose h
-        writeReplayChunked n rec (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing []) path
+        writeReplayChunked n rec (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing Nothing []) path
         written <- readFile path
         length written `seq` removeFile path
         written `shouldBe` replayPageChunked n fixtureLog
@@ -122,7 +122,7 @@ spec = do
       during `shouldBe` spoolsBefore
       (path, h) <- openTempFile tmp "afrp-replay.html"
       hClose h
-      writeReplay rec (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing []) path
+      writeReplay rec (LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing Nothing []) path
       written <- readFile path
       length written `seq` removeFile path
       written `shouldBe` page
@@ -130,7 +130,7 @@ spec = do
       spoolsAfter `shouldBe` spoolsBefore
 
   describe "ReplayRecorder's thinning for the run's actual length" $ do
-    let summaryOf states = LogSummary (wsTime (last states)) (length states) (-1) 0.5 False Nothing []
+    let summaryOf states = LogSummary (wsTime (last states)) (length states) (-1) 0.5 False Nothing Nothing []
         interrupted states = (summaryOf states) { lsInterrupted = True }
         failed states = (summaryOf states) { lsFailure = Just "the controller of SimbotA 1 failed" }
         -- (stops at states' counts about the strides' changes)
@@ -198,7 +198,7 @@ spec = do
       a `shouldBe` b
 
   describe "recordReplayStateWith" $ do
-    let summary = LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing []
+    let summary = LogSummary fixtureSeconds (length fixtureStates) (-1) 0.5 False Nothing Nothing []
         pageOf :: (ReplayRecorder -> IO ()) -> IO String
         pageOf record = do
           tmp <- getTemporaryDirectory

@@ -36,7 +36,7 @@ states = take 101 (simulate 0.01 defaultWorld ctl ctl)
 
 -- | A summary of that run.
 summary :: LogSummary
-summary = LogSummary 1 101 0 0.1 False Nothing []
+summary = LogSummary 1 101 0 0.1 False Nothing Nothing []
 
 -- | Every state to the sink, in order, then its end.
 feed :: Sink -> IO Outcome
