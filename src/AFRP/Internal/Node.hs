@@ -91,7 +91,8 @@
 --   @firstB@ in "AFRP.Internal.SF"), so that the shapes above are found
 --   in networks written in arrow notation, which nests to the left;
 -- * @integral *** integral@ at 'Double' is stepped in place, both sums
---   at once, and after its first step it is one node ('int2On') that
+--   at once, and after its first step it is one node
+--   ('AFRP.Internal.Node.Fuse.int2On') that
 --   holds its input pair unevaluated instead of two integral nodes
 --   holding a selector of it each; with a function in front of it
 --   (@arr p >>> (integral *** integral)@, the shape of the notes'
@@ -116,6 +117,17 @@
 --   (@integralsD@ in "AFRP.Integration").
 --
 -- Every such case states, next to it, the identity it relies on.
+--
+-- = Modules
+--
+-- This module is the one the rest of the library imports: it holds the
+-- stepper and re-exports the names of the three it is built on, each of
+-- which imports only those before it: "AFRP.Internal.Node.FunD" (the
+-- stateless functions a pure node holds, and their algebra),
+-- "AFRP.Internal.Node.Build" (the node type and the smart constructors)
+-- and "AFRP.Internal.Node.Fuse" (the nodes that stand for several, which
+-- the stepper makes of a pair of integrals or of a run of integrals and
+-- delays; it finds the runs itself, see 'chainFromInt').
 module AFRP.Internal.Node
   ( -- * Time
     Time
@@ -141,64 +153,16 @@ module AFRP.Internal.Node
   ) where
 
 import           AFRP.Internal.Chain
+import           AFRP.Internal.Node.Build
+import           AFRP.Internal.Node.FunD
+import           AFRP.Internal.Node.Fuse
 
 ------------------------------------------------------------------------------
--- Time
-
--- | Time in seconds. Local time starts at 0 when a signal function starts
--- (at the beginning of a run, or when it is switched in).
-type Time = Double
-
--- | A time step in seconds: the time between two consecutive samples.
--- A time step is a number, 0 or more, infinity included (the runners of
--- "AFRP.Run" refuse a NaN or negative one); the first sample of any
--- signal function has no time step at all.
-type DTime = Double
-
-------------------------------------------------------------------------------
--- Representation
-
-
--- | Stateless functions, with the two special cases that enable
--- simplification recognised.
-data FunD a b where
-  -- | The identity.
-  FDI :: FunD a a
-  -- | A constant function; the value is lazy.
-  FDC :: b -> FunD a b
-  -- | Any other function.
-  FDG :: (a -> b) -> FunD a b
-
--- | A node of a signal-function network.
-data Node a b where
-  -- | A stateless node.
-  NPure   :: !(FunD a b) -> Node a b
-  -- | Serial composition.
-  NComp   :: !(Node a c) -> !(Node c b) -> Node a b
-  -- | Parallel composition on pairs. @first f@ and @second f@ are
-  -- @NPar f id@ and @NPar id f@ (see 'firstN').
-  NPar    :: !(Node a b) -> !(Node c d) -> Node (a, c) (b, d)
-  -- | Fan-out: both nodes see the same input.
-  NFan    :: !(Node a b) -> !(Node a c) -> Node a (b, c)
-  -- | An opaque stateful node: given the time step and the input sample,
-  -- its successor and its output.
-  NStep   :: !(DTime -> a -> (# Node a b, b #)) -> Node a b
-  -- | 'AFRP.Delay.iPre' holding the previous input sample (lazy: the
-  -- delay never evaluates its input): outputs it and stores the current
-  -- one. Visible to @loopN@ ("AFRP.Internal.SF"), which closes a loop through it without a
-  -- knot.
-  NPre    :: a -> Node a a
-  -- | 'AFRP.Integration.integral' on 'Double' after its first sample: the
-  -- running sum and the previous input sample (lazy: the integral never
-  -- evaluates its current input). A specialised node, with no closure.
-  NIntD   :: {-# UNPACK #-} !Double -> Double -> Node Double Double
+-- Stepping
 
 -- | A step result in a box, for the places (knots, collections) that need
 -- a lifted value.
 data Boxed a b = Boxed !(Node a b) b
-
-------------------------------------------------------------------------------
--- Stepping
 
 -- | Step a node: time step, input sample, successor and output.
 --
@@ -273,12 +237,12 @@ stepN n dt a = case n of
       -- the sums y_n = y_(n-1) + dt_n * a_(n-1) of 'stepIntD'; the
       -- successor is one node that holds the input pair unevaluated and
       -- takes it apart at the next step, where both sums need its
-      -- components ('int2On' with the identity), where the two nodes
-      -- would each hold a selector of it, evaluated at that step.
+      -- components ('int2OnPair', 'int2On' with the identity), where the
+      -- two nodes would each hold a selector of it, evaluated at that step.
       NIntD acc1 prev1 | NIntD acc2 prev2 <- g ->
         let !acc1' = acc1 + dt * prev1
             !acc2' = acc2 + dt * prev2
-        in (# int2On (\p -> p) acc1' acc2' a, (acc1', acc2') #)
+        in (# int2OnPair acc1' acc2' a, (acc1', acc2') #)
       _         -> let (x, z) = a in case stepN f dt x of
         (# f', y #) -> case stepN g dt z of
           (# g', w #) -> case rebuildPar f' g' of !n' -> (# n', (y, w) #)
@@ -306,79 +270,6 @@ stepN n dt a = case n of
   -- integral: see 'stepIntD'
   NIntD acc prev -> stepIntD acc prev dt a
 
--- | @int2On p s1 s2 prev@ is @arr p >>> (integral *** integral)@ at
--- 'Double' after a step, as one node: the two running sums and the
--- previous input sample as it came, unevaluated. The nodes would hold two
--- selectors of the unevaluated @p prev@, evaluated at this step, where
--- the sums need them; this node applies @p@ at this step instead, and
--- takes the pair apart: the same values, evaluated at the same step, with
--- the same sums @y_n = y_(n-1) + dt_n * a_(n-1)@, without the three
--- thunks (and without the pair's two nodes, rebuilt at every step). A
--- step that is replayed ('AFRP.Internal.Deferred.freezeN') applies @p@ again: the same value,
--- computed twice, on that one step.
-int2On :: (c -> (Double, Double)) -> Double -> Double -> c -> Node c (Double, Double)
-int2On p !s1 !s2 prev = NStep (\dt a -> case p prev of
-  (x, z) -> let !s1' = s1 + dt * x
-                !s2' = s2 + dt * z
-            in (# int2On p s1' s2' a, (s1', s2') #))
-
--- @fuseInt2 p g@ is @Just@ @arr p >>> g@ as one 'int2On' node (followed
--- by the rest of the spine) when @g@ is @integral *** integral@ at
--- 'Double' after its first step, alone or at the head of a composition,
--- and 'Nothing' otherwise. The fused node's first step uses the previous
--- inputs the two integral nodes hold (selectors of @p@ of the previous
--- input, unevaluated): the same sums as the pair's step. The tests are
--- inlined into 'stepN', the building ('fuseInt2Out') is not, so that the
--- stepper's code does not grow (inlined, it slowed network c by 5%).
-fuseInt2 :: (a -> c) -> Node c b -> Maybe (Node a b)
-fuseInt2 p g = case g of
-  NPar (NIntD _ _) (NIntD _ _)            -> Just (fuseInt2Out p g)
-  NComp (NPar (NIntD _ _) (NIntD _ _)) _ -> Just (fuseInt2Out p g)
-  _                                       -> Nothing
-{-# INLINE fuseInt2 #-}
-
--- @arr p >>> g@ with the pair of integrals at the head of @g@ made one
--- node; any other @g@ (never passed) is left as the composition.
-fuseInt2Out :: (a -> c) -> Node c b -> Node a b
-fuseInt2Out p g = case g of
-  NPar (NIntD acc1 prev1) (NIntD acc2 prev2) -> int2S p acc1 prev1 acc2 prev2
-  -- with a function behind the pair, taken into the node ('int2OnQ')
-  NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) (NPure (FDG q)) ->
-    int2SQ p q acc1 prev1 acc2 prev2
-  NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) (NComp (NPure (FDG q)) rest) ->
-    NComp (int2SQ p q acc1 prev1 acc2 prev2) rest
-  NComp (NPar (NIntD acc1 prev1) (NIntD acc2 prev2)) rest ->
-    NComp (int2S p acc1 prev1 acc2 prev2) rest
-  _ -> NComp (NPure (FDG p)) g
-{-# NOINLINE fuseInt2Out #-}
-
--- | @int2OnQ p q s1 s2 prev@ is @int2On p s1 s2 prev >>> arr q@ as one
--- node: its output is @q@ of the pair of sums, applied lazily, as the
--- composition applies the function behind a stateful node (the same
--- value, without the pair's boxes, the composition node and its step).
-int2OnQ :: (c -> (Double, Double)) -> ((Double, Double) -> b) -> Double -> Double -> c
-        -> Node c b
-int2OnQ p q !s1 !s2 prev = NStep (\dt a -> case p prev of
-  (x, z) -> let !s1' = s1 + dt * x
-                !s2' = s2 + dt * z
-            in (# int2OnQ p q s1' s2' a, q (s1', s2') #))
-
--- The first step of a fused pair with a function behind it.
-int2SQ :: (a -> (Double, Double)) -> ((Double, Double) -> b) -> Double -> Double -> Double
-       -> Double -> Node a b
-int2SQ p q !acc1 prev1 !acc2 prev2 = NStep (\dt a ->
-  let !s1 = acc1 + dt * prev1
-      !s2 = acc2 + dt * prev2
-  in (# int2OnQ p q s1 s2 a, q (s1, s2) #))
-
--- The first step of a fused pair: the previous inputs held by the nodes.
-int2S :: (a -> (Double, Double)) -> Double -> Double -> Double -> Double
-      -> Node a (Double, Double)
-int2S p !acc1 prev1 !acc2 prev2 = NStep (\dt a ->
-  let !s1 = acc1 + dt * prev1
-      !s2 = acc2 + dt * prev2
-  in (# int2On p s1 s2 a, (s1, s2) #))
-
 -- | 'stepN', with the node of an 'AFRP.Integration.integral' at 'Double'
 -- (the commonest leaf of the networks that combinators step themselves:
 -- the members of a collection, the running part of a switch) stepped in
@@ -397,6 +288,46 @@ stepInline n dt a = case n of
 stepIntD :: Double -> Double -> DTime -> Double -> (# Node Double Double, Double #)
 stepIntD acc prev dt a = let !acc' = acc + dt * prev in (# NIntD acc' a, acc' #)
 {-# INLINE stepIntD #-}
+
+-- Rebuilding a node whose two children were both stateful before the step:
+-- as the smart constructor would, but with the common case (both still
+-- stateful, where no identity applies) decided by two tests and no call.
+-- @rebuildWith smart con@ is @smart@ if either child is now pure, @con@
+-- (the bare constructor) otherwise.
+rebuildWith :: (Node a b -> Node c d -> r) -> (Node a b -> Node c d -> r)
+            -> Node a b -> Node c d -> r
+rebuildWith smart con f g = case g of
+  NPure _ -> smart f g
+  _       -> case f of
+    NPure _ -> smart f g
+    _       -> con f g
+{-# INLINE rebuildWith #-}
+
+rebuildComp :: Node a c -> Node c b -> Node a b
+rebuildComp f g = rebuildWith compN NComp f g
+{-# INLINE rebuildComp #-}
+
+rebuildPar :: Node a b -> Node c d -> Node (a, c) (b, d)
+rebuildPar f g = rebuildWith parN NPar f g
+{-# INLINE rebuildPar #-}
+
+rebuildFan :: Node a b -> Node a c -> Node a (b, c)
+rebuildFan f g = rebuildWith fanN NFan f g
+{-# INLINE rebuildFan #-}
+
+-- | 'stepN' with a boxed result.
+boxStep :: Node a b -> DTime -> a -> Boxed a b
+boxStep n dt a = case stepN n dt a of (# n', b #) -> Boxed n' b
+{-# INLINE boxStep #-}
+
+------------------------------------------------------------------------------
+-- Runs of integrals and delays, found where the stepper meets them
+
+-- (These live with the stepper, not with the chain nodes of
+-- "AFRP.Internal.Node.Fuse": 'stepN' inlines 'chainFromPre', and only
+-- with 'collectI' compiled in the same module does GHC see that the
+-- stages it returns are evaluated; from another module, the chain node's
+-- stages were built in a thunk, with an evaluation of their own.)
 
 -- | @chainFromInt acc prev g@ is @Just@ the composition @NIntD acc prev
 -- >>> g@ with the run of 'Double'-valued stages at its head (integrals,
@@ -461,180 +392,3 @@ collectL g = case g of
       _                            -> ColL LEnd g
     _              -> ColL LEnd g
   _              -> ColL LEnd g
-
--- A chain as a node: its first step; then, if it has delays fed by
--- integrals, its second step, after which they are stages of the runs
--- ('settleL'); then every later step. (Three near-copies on purpose: one
--- stepper taking what follows the step as a function, inlined, cost 3%
--- more instructions on `afrp-bench --run b 300000`.)
-chainN :: AfterL -> Node Double Double
-chainN c = NStep (\dt a -> case stepAfterL dt a c of
-  (# c', y #) -> case (if hasDelayI c' then chainSettleN c' else chainRunN c') of
-    !n -> (# n, y #))
-
-chainSettleN :: AfterL -> Node Double Double
-chainSettleN c = NStep (\dt a -> case stepAfterL dt a c of
-  (# c', y #) -> case settleL c c' of
-    !c'' -> case chainRunN c'' of !n -> (# n, y #))
-
-chainRunN :: AfterL -> Node Double Double
-chainRunN c = NStep (\dt a -> case stepAfterL dt a c of
-  (# c', y #) -> case chainRunN c' of !n -> (# n, y #))
-
--- Rebuilding a node whose two children were both stateful before the step:
--- as the smart constructor would, but with the common case (both still
--- stateful, where no identity applies) decided by two tests and no call.
--- @rebuildWith smart con@ is @smart@ if either child is now pure, @con@
--- (the bare constructor) otherwise.
-rebuildWith :: (Node a b -> Node c d -> r) -> (Node a b -> Node c d -> r)
-            -> Node a b -> Node c d -> r
-rebuildWith smart con f g = case g of
-  NPure _ -> smart f g
-  _       -> case f of
-    NPure _ -> smart f g
-    _       -> con f g
-{-# INLINE rebuildWith #-}
-
-rebuildComp :: Node a c -> Node c b -> Node a b
-rebuildComp f g = rebuildWith compN NComp f g
-{-# INLINE rebuildComp #-}
-
-rebuildPar :: Node a b -> Node c d -> Node (a, c) (b, d)
-rebuildPar f g = rebuildWith parN NPar f g
-{-# INLINE rebuildPar #-}
-
-rebuildFan :: Node a b -> Node a c -> Node a (b, c)
-rebuildFan f g = rebuildWith fanN NFan f g
-{-# INLINE rebuildFan #-}
-
--- | 'stepN' with a boxed result.
-boxStep :: Node a b -> DTime -> a -> Boxed a b
-boxStep n dt a = case stepN n dt a of (# n', b #) -> Boxed n' b
-{-# INLINE boxStep #-}
-
-
-------------------------------------------------------------------------------
--- Stateless functions
-
-fdComp :: FunD a b -> FunD b c -> FunD a c
--- Identities: id >>> f = f, f >>> id = f.
-fdComp FDI     g       = g
-fdComp f       FDI     = f
--- Constants absorb what feeds them: f >>> const c = const c.
-fdComp _       (FDC c) = FDC c
--- const b >>> g = const (g b), lazily.
-fdComp (FDC b) (FDG g) = FDC (g b)
-fdComp (FDG f) (FDG g) = FDG (\a -> g (f a))
-
--- | The function a 'FunD' stands for.
-fdFun :: FunD a b -> a -> b
-fdFun FDI     = \a -> a
-fdFun (FDC b) = \_ -> b
-fdFun (FDG f) = f
-
-------------------------------------------------------------------------------
--- Smart constructors. Each states the identity it relies on.
-
--- | The constant node.
-constN :: b -> Node a b
-constN b = NPure (FDC b)
-{-# INLINE constN #-}
-
--- | A lifted function.
-arrN :: (a -> b) -> Node a b
-arrN f = NPure (FDG f)
-{-# INLINE arrN #-}
-
--- | The identity node.
-idN :: Node a a
-idN = NPure FDI
-
--- | Serial composition, simplified.
-compN :: Node a c -> Node c b -> Node a b
--- The identities it relies on, in the order they are tried:
---
--- > arr f >>> arr g                 = arr (g . f)
--- > n >>> id                        = n
--- > n >>> constant c                = constant c    (signal functions have no effects)
--- > (n >>> arr f) >>> arr g         = n >>> arr (g . f)
--- > (arr f &&& constant c) >>> arr g = arr (\a -> g (f a, c))
--- >                                  (the fan was kept only for the benefit of
--- >                                  a switch, and no switch can see it here)
--- > id >>> n                        = n
--- > arr f >>> (arr g >>> n)         = arr (g . f) >>> n
---
--- written as a decision tree on the two nodes, so that the common case (two
--- stateful nodes) costs two tests.
-compN f g = compNI f g
-
--- 'compN', inlined: 'stepN' rebuilds a composition at every step, and
--- with the tree inlined there the tests on the node it already knows (the
--- pure one) vanish and the rest cost no call. The same function as
--- 'compN', so the same identities.
-compNI :: Node a c -> Node c b -> Node a b
-compNI f g = case g of
-  NPure gd -> case f of
-    NPure fd -> NPure (fdComp fd gd)
-    _        -> case gd of
-      FDI   -> f
-      FDC c -> NPure (FDC c)
-      FDG _ -> case f of
-        NComp h (NPure fd)         -> NComp h (NPure (fdComp fd gd))
-        NFan (NPure fa) (NPure fc) -> NPure (fdComp (fanFD fa fc) gd)
-        _                          -> NComp f g
-  _        -> case f of
-    NPure FDI -> g
-    NPure fd  -> case g of
-      NComp (NPure gd) h -> NComp (NPure (fdComp fd gd)) h
-      _                  -> NComp f g
-    _         -> NComp f g
-{-# INLINE compNI #-}
-
--- | @first@, simplified.
-firstN :: Node a b -> Node (a, c) (b, c)
--- first id = id
-firstN (NPure FDI)     = NPure FDI
--- first (arr f) = arr (\(a, c) -> (f a, c))
-firstN (NPure (FDC b)) = NPure (FDG (\ ~(_, c) -> (b, c)))
-firstN (NPure (FDG f)) = NPure (FDG (\ ~(a, c) -> (f a, c)))
-firstN f               = NPar f idN
-{-# INLINE firstN #-}
-
--- | @second@, simplified.
-secondN :: Node a b -> Node (c, a) (c, b)
-secondN (NPure FDI)     = NPure FDI
-secondN (NPure (FDC b)) = NPure (FDG (\ ~(c, _) -> (c, b)))
-secondN (NPure (FDG f)) = NPure (FDG (\ ~(c, a) -> (c, f a)))
-secondN f               = NPar idN f
-{-# INLINE secondN #-}
-
--- | @(***)@, simplified.
-parN :: Node a b -> Node c d -> Node (a, c) (b, d)
--- f *** id = first f ; id *** g = second g
-parN f (NPure FDI)         = firstN f
-parN (NPure FDI) g         = secondN g
--- arr f *** arr g = arr (f `cross` g)
-parN (NPure f) (NPure g)   =
-  let f' = fdFun f
-      g' = fdFun g
-  in NPure (FDG (\ ~(a, c) -> (f' a, g' c)))
-parN f g                   = NPar f g
-
--- | @(&&&)@, simplified.
-fanN :: Node a b -> Node a c -> Node a (b, c)
--- constant b &&& constant c = constant (b, c)
-fanN (NPure (FDC b)) (NPure (FDC c)) = NPure (FDC (b, c))
--- sf &&& constant c is kept as a fan, so that a switch can see that its
--- event part is the constant NoEvent (sf &&& never) and remove itself.
-fanN f g@(NPure (FDC _))             = NFan f g
--- arr f &&& arr g = arr (\a -> (f a, g a))
-fanN (NPure f) (NPure g)             = NPure (fanFD f g)
-fanN f g                             = NFan f g
-{-# INLINE fanN #-}
-
-fanFD :: FunD a b -> FunD a c -> FunD a (b, c)
-fanFD (FDC b) (FDC c) = FDC (b, c)
-fanFD f g             =
-  let f' = fdFun f
-      g' = fdFun g
-  in FDG (\a -> (f' a, g' a))
