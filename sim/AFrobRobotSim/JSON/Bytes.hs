@@ -29,6 +29,9 @@ module AFrobRobotSim.JSON.Bytes
     parseJSONBytes
   , cutShortBytes
   , maxDepth
+    -- * Parsing bytes found to be UTF-8
+  , parseJSONUtf8
+  , cutShortUtf8
     -- * Shared with the parser of strings
   , roundDigits
   , significantDigits
@@ -41,7 +44,7 @@ import           Numeric                        (showHex)
 import           AFrobRobotSim.JSON.Bytes.Build (roundDigits, significantDigits, valueAt)
 import           AFrobRobotSim.JSON.Bytes.Scan
 import           AFrobRobotSim.JSON.Encode      (JSON (..))
-import           AFrobRobotSim.UTF8             (charAt, lineColumnAt, utf8Fault)
+import           AFrobRobotSim.UTF8             (Utf8, charAt, checkUtf8, lineColumnAt, utf8Bytes)
 
 -- | How deeply arrays and objects may nest in a text 'parseJSONBytes' and
 -- 'AFrobRobotSim.JSON.parseJSON' accept: 512 (deeper input is rejected,
@@ -74,16 +77,23 @@ maxDepth = 512
 -- each, made when that part is first looked into). A part of the top
 -- level that is never looked into is read over once and indexes nothing.
 parseJSONBytes :: B.ByteString -> Either String JSON
-parseJSONBytes bs = case utf8Fault bs of
-  Just (l, c, b) -> Left (lineColumn l c ("invalid UTF-8 (byte 0x" ++ (if b < 16 then "0" else "")
+parseJSONBytes bs = case checkUtf8 bs of
+  Left (l, c, b) -> Left (lineColumn l c ("invalid UTF-8 (byte 0x" ++ (if b < 16 then "0" else "")
                                           ++ showHex b ")"))
-  Nothing -> case checkValue bs 0 start of
-    Bad i back msg -> Left (located bs i back msg)
-    Ok j
-      | k < B.length bs -> Left (located bs k False ("expected the end of the text, found " ++ describeAt bs k))
-      | otherwise       -> Right (valueAt bs start)
-      where k = spaces bs j
+  Right u -> parseJSONUtf8 u
+
+-- | 'parseJSONBytes' of bytes already found to be UTF-8: the same value
+-- or error, without checking the bytes' UTF-8 again (a reader that has
+-- checked a line to report its faults its own way hands the line on).
+parseJSONUtf8 :: Utf8 -> Either String JSON
+parseJSONUtf8 u = case checkValue bs 0 start of
+  Bad i back msg -> Left (located bs i back msg)
+  Ok j
+    | k < B.length bs -> Left (located bs k False ("expected the end of the text, found " ++ describeAt bs k))
+    | otherwise       -> Right (valueAt bs start)
+    where k = spaces bs j
   where
+    bs = utf8Bytes u
     start = spaces bs 0
 
 -- | 'AFrobRobotSim.JSON.cutShort' of the text the bytes are, as UTF-8:
@@ -91,11 +101,16 @@ parseJSONBytes bs = case utf8Fault bs of
 -- not UTF-8 are not (they are not JSON for another reason). Nothing is
 -- made: a long line is checked in its own bytes.
 cutShortBytes :: B.ByteString -> Bool
-cutShortBytes bs = case utf8Fault bs of
-  Just _  -> False
-  Nothing -> case checkValue bs 0 (spaces bs 0) of
-    Bad i back _ -> not back && i == B.length bs
-    Ok _         -> False
+cutShortBytes = either (const False) cutShortUtf8 . checkUtf8
+
+-- | 'cutShortBytes' of bytes already found to be UTF-8, without checking
+-- them again.
+cutShortUtf8 :: Utf8 -> Bool
+cutShortUtf8 u = case checkValue bs 0 (spaces bs 0) of
+  Bad i back _ -> not back && i == B.length bs
+  Ok _         -> False
+  where
+    bs = utf8Bytes u
 
 -- An error's message, from the offset of its place: @line L, column C:
 -- msg@. @back@: the place is one column before the end of the character

@@ -33,6 +33,7 @@ module AFrobRobotSim.Log.Records
   , logLineFromJSON
   , decodeLogLine
   , decodeLogLineBytes
+  , decodeLogLineUtf8
   ) where
 
 import qualified Data.ByteString          as BS
@@ -49,6 +50,7 @@ import           Foreign.Storable         (pokeByteOff)
 import           GHC.Exts                 (Addr#, Int (I#), Ptr (Ptr), cstringLength#)
 
 import           AFrobRobotSim.JSON
+import           AFrobRobotSim.UTF8       (Utf8)
 
 -- | The format's name, the header's @format@: @"afrp-log"@.
 logFormatName :: String
@@ -386,6 +388,11 @@ decodeLogLine txt = parseJSON txt >>= logLineFromJSON
 -- 'String' and its parsed value did.
 decodeLogLineBytes :: BS.ByteString -> Either String LogLine
 decodeLogLineBytes bs = parseJSONBytes bs >>= logLineFromJSON
+
+-- | 'decodeLogLineBytes' of a line already found to be UTF-8
+-- ('parseJSONUtf8'): the same line or error, its UTF-8 not checked again.
+decodeLogLineUtf8 :: Utf8 -> Either String LogLine
+decodeLogLineUtf8 u = parseJSONUtf8 u >>= logLineFromJSON
 
 -- | A line from its JSON object, or what is missing or wrong. A header's
 -- version is not checked here (see 'AFrobRobotSim.Log.readLog').
