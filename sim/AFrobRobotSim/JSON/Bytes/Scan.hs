@@ -16,15 +16,17 @@
 -- 6.1 s for a text of 4 MB nested 511 deep, against 0.9 s for the
 -- parser of strings). So only the top-level value's parts are read over
 -- (once each: the top level is read once); a part of the top level that
--- is used makes, the first time one of its own parts' ends is asked
--- for, an 'Index' of the arrays and objects in it (two passes over its
--- bytes), and every end below it is looked up there. A part of the top
--- level that is not used costs the one reading over it, and no index: a
--- log's line refused for a member it lacks indexes nothing.
+-- is looked into makes, the first time one of its own parts' ends is
+-- asked for, an 'Index' of the arrays and objects in it (two passes over
+-- its bytes), and every end below it is looked up there: a value used
+-- whole costs time in proportion to its bytes. A part of the top level
+-- that is never looked into costs the one reading over it, and no index:
+-- a log's line refused for a member it lacks indexes nothing.
 --
--- Every function here takes a checked text (one that
--- 'AFrobRobotSim.JSON.Bytes.parseJSONBytes' accepts) and offsets of it;
--- bounds are not checked.
+-- 'spaces' and 'digitsEnd' take any text (the first pass's too) and stop
+-- at its end. Every other function on offsets takes a checked text (one
+-- that 'AFrobRobotSim.JSON.Bytes.parseJSONBytes' accepts) and the offset
+-- of one of its values, and does not check it.
 module AFrobRobotSim.JSON.Bytes.Scan
   ( -- * JSON's bytes
     quoteW, backslashW, openBraceW, closeBraceW, openBracketW, closeBracketW, commaW, colonW
@@ -151,8 +153,8 @@ skipValue bs i = reading bs $ \p n -> do
 -- while the reading runs. The passes that read over many bytes read so:
 -- under GHC 9.0's bytestring, 'BU.unsafeIndex' allocates 16 bytes for
 -- each byte it reads (1 GB, and twice the time, for reading over 64
--- MiB), and 'B.findIndex' for each mark found (a quote, a bracket), which
--- are many in a log's line.
+-- MiB), and a 'B.findIndex' for each mark (a quote, a bracket) some 48,
+-- and a log's line has many marks.
 reading :: B.ByteString -> (Ptr Word8 -> Int -> IO a) -> a
 reading bs k = unsafeDupablePerformIO (BU.unsafeUseAsCStringLen bs (\(p, n) -> k (castPtr p) n))
 {-# INLINE reading #-}
@@ -208,9 +210,8 @@ opens w = w == openBracketW || w == openBraceW
 ------------------------------------------------------------------------------
 -- Where the parts of arrays and objects end
 
--- | Where an array's or object's parts are found to end, for the second
--- pass: the offsets of a part's start and end, and the 'Cursor' of the
--- parts after it.
+-- | How the second pass finds where the parts of an array or object end,
+-- carried from one part to the next ('partEnd' gives the next one's).
 data Cursor
   = ReadOver
     -- ^ each part read over ('skipValue'): the top-level value's parts
@@ -237,13 +238,14 @@ containerIndex bs i0 = reading bs $ \p n -> do
       -- second slot holds the one around it until it closes)
       fill !j0 !top !next = do
         j <- markP p n j0
-        w <- peekW p j
-        if | w == quoteW -> stringEndP p n (j + 1) >>= \j' -> fill j' top next
-           | opens w     -> stToIO (writeI a (2 * next + 1) top) >> fill (j + 1) next (next + 1)
-           | otherwise   -> do
-               around <- stToIO (readI a (2 * top + 1))
-               stToIO (writeI a (2 * top) (j + 1) >> writeI a (2 * top + 1) next)
-               if around >= 0 then fill (j + 1) around next else pure ()
+        if j >= n then pure () else do   -- (not in a checked text)
+          w <- peekW p j
+          if | w == quoteW -> stringEndP p n (j + 1) >>= \j' -> fill j' top next
+             | opens w     -> stToIO (writeI a (2 * next + 1) top) >> fill (j + 1) next (next + 1)
+             | otherwise   -> do
+                 around <- stToIO (readI a (2 * top + 1))
+                 stToIO (writeI a (2 * top) (j + 1) >> writeI a (2 * top + 1) next)
+                 if around >= 0 then fill (j + 1) around next else pure ()
   fill i0 (-1 :: Int) (0 :: Int)
   Index <$> stToIO (freezeI a)
 
