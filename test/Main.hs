@@ -39,6 +39,8 @@ import qualified AFrobRobotSim.ConsoleSpec
 import qualified AFrobRobotSim.FlatArraySpec
 import qualified AFrobRobotSim.InputFileSpec
 import qualified AFrobRobotSim.JSONSpec
+import qualified AFrobRobotSim.JSON.BytesSpec
+import qualified AFrobRobotSim.JSON.Bytes.ScanSpec
 import qualified AFrobRobotSim.JSON.EncodeSpec
 import qualified AFrobRobotSim.LogSpec
 import qualified AFrobRobotSim.Log.ReadSpec
@@ -70,6 +72,7 @@ import qualified Examples.RegistrySpec
 import qualified Examples.Section3Spec
 import qualified AFrobRobotSim.SimulatorSpec
 import qualified AFrobRobotSim.SpatialIndexSpec
+import qualified AFrobRobotSim.UTF8Spec
 import qualified AFrobRobotSim.WorldFileSpec
 import qualified AFrobRobotSim.WorldFile.GrammarSpec
 import qualified AFrobRobotSim.WorldSpec
@@ -125,6 +128,8 @@ specs = hspec $ do
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
   describe "AFrobRobotSim.FlatArray" AFrobRobotSim.FlatArraySpec.spec
   describe "AFrobRobotSim.JSON"      AFrobRobotSim.JSONSpec.spec
+  describe "AFrobRobotSim.JSON.Bytes" AFrobRobotSim.JSON.BytesSpec.spec
+  describe "AFrobRobotSim.JSON.Bytes.Scan" AFrobRobotSim.JSON.Bytes.ScanSpec.spec
   describe "AFrobRobotSim.JSON.Encode" AFrobRobotSim.JSON.EncodeSpec.spec
   describe "AFrobRobotSim.Log"       AFrobRobotSim.LogSpec.spec
   describe "AFrobRobotSim.Log.Read"  AFrobRobotSim.Log.ReadSpec.spec
@@ -147,6 +152,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.RayCast" AFrobRobotSim.RayCastSpec.spec
   describe "AFrobRobotSim.SpatialIndex" AFrobRobotSim.SpatialIndexSpec.spec
   describe "AFrobRobotSim.Sensors" AFrobRobotSim.SensorsSpec.spec
+  describe "AFrobRobotSim.UTF8" AFrobRobotSim.UTF8Spec.spec
   describe "the notes, section 3"    AFrobRobotSim.NotesSection3Spec.spec
   describe "AFrobRobotSim.WorldFile" AFrobRobotSim.WorldFileSpec.spec
   describe "AFrobRobotSim.WorldFile.Grammar" AFrobRobotSim.WorldFile.GrammarSpec.spec

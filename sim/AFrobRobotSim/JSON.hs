@@ -26,6 +26,8 @@ module AFrobRobotSim.JSON
   , maxDepth
   , parseJSONBytes
   , cutShortBytes
+  , parseJSONUtf8
+  , cutShortUtf8
     -- * Reading values
   , member
   , memberMaybe
@@ -39,8 +41,8 @@ module AFrobRobotSim.JSON
 import           Data.Char                  (chr, isDigit, isHexDigit, ord, digitToInt)
 import           Data.List                  (foldl')
 
-import           AFrobRobotSim.JSON.Bytes   (cutShortBytes, maxDepth, parseJSONBytes, roundDigits,
-                                             significantDigits)
+import           AFrobRobotSim.JSON.Bytes   (cutShortBytes, cutShortUtf8, maxDepth, parseJSONBytes,
+                                             parseJSONUtf8, roundDigits, significantDigits)
 import           AFrobRobotSim.JSON.Encode
 
 -- A position in the text: line and column, both from 1.

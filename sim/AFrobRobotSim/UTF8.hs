@@ -5,11 +5,17 @@
 --               column of an offset, the character at an offset.
 --
 -- What every reader of the simulator's files (world files, run logs,
--- result lines) needs of UTF-8, on strict 'B.ByteString's.
+-- result lines) needs of UTF-8, on strict 'B.ByteString's; and 'Utf8',
+-- bytes found to be UTF-8, so that a reader that checks a line once can
+-- hand it on checked.
 module AFrobRobotSim.UTF8
   ( utf8Fault
   , lineColumnAt
   , charAt
+    -- * Bytes checked once
+  , Utf8
+  , checkUtf8
+  , utf8Bytes
   ) where
 
 import           Data.Bits              ((.&.), (.|.), shiftL)
@@ -54,6 +60,19 @@ utf8Fault bs = go 0
           | otherwise = Just (k :: Int)
     line j = fst (lineColumnAt bs j)
     column j = snd (lineColumnAt bs j)
+
+-- | Bytes in which 'utf8Fault' finds no fault. Only 'checkUtf8' makes
+-- one, so a function that takes 'Utf8' need not check its bytes again
+-- (such as 'AFrobRobotSim.JSON.parseJSONUtf8').
+newtype Utf8 = Utf8 B.ByteString
+
+-- | The bytes as 'Utf8', or their first fault, as 'utf8Fault' gives it.
+checkUtf8 :: B.ByteString -> Either (Int, Int, Word8) Utf8
+checkUtf8 bs = maybe (Right (Utf8 bs)) Left (utf8Fault bs)
+
+-- | The bytes themselves.
+utf8Bytes :: Utf8 -> B.ByteString
+utf8Bytes (Utf8 bs) = bs
 
 -- | The line and column (both from 1, the column in characters) of an
 -- offset of UTF-8 bytes, which are UTF-8 up to it (a line ended by byte 10).

@@ -1,9 +1,9 @@
 -- | The JSON parser, and the encoder and parser together: round trips on
--- random values and hostile strings, and the parser's positioned errors;
--- the parser of bytes against the parser of strings, on random texts and
--- random faults in them. The encoder's own properties are
--- "AFrobRobotSim.JSON.EncodeSpec"'s.
-module AFrobRobotSim.JSONSpec (spec, utf8) where
+-- random values and hostile strings, and the parser's positioned errors.
+-- The encoder's own properties are "AFrobRobotSim.JSON.EncodeSpec"'s; the
+-- parser of bytes, checked against this parser, is
+-- "AFrobRobotSim.JSON.BytesSpec"'s.
+module AFrobRobotSim.JSONSpec (spec, utf8, numberText) where
 
 import qualified Data.ByteString          as BS
 import qualified Data.ByteString.Builder  as BB
@@ -86,95 +86,11 @@ spec = do
       parseJSON ("1e" ++ replicate 100000 '9') `shouldSatisfy` either (const False) (== JNumber (1 / 0))
       parseJSON ("1e-" ++ replicate 100000 '9') `shouldBe` Right (JNumber 0)
 
-  describe "parseJSONBytes and cutShortBytes" $ do
-    it "give what parseJSON and cutShort give of the text the bytes are: the value, or the very error (property)" $
-      withMaxSuccess 2000 $ forAll jsonish $ \t ->
-        let b = utf8 t
-        in counterexample (show b) (parseJSONBytes b === parseJSON t .&&. cutShortBytes b === cutShort t)
-    it "read back any value encoded, and every proper prefix of one as cut short (property)" $
-      property $ \(AnyJSON v) ->
-        let t = encodeJSON (JObject [("v", v), ("s", JString (replicate 70 'x' ++ hostile ++ "\233\x1F600"))])
-        in parseJSONBytes (utf8 t) === Right (JObject [("v", v), ("s", JString (replicate 70 'x' ++ hostile ++ "\233\x1F600"))])
-           .&&. conjoin [ cutShortBytes (utf8 (take k t)) | k <- [0, 7 .. length t - 1] ]
-    it "count columns in characters, not bytes, as parseJSON does (fixed)" $ do
-      let t = "[\"\233\x20ac\x1F600\", \233]"
-      parseJSONBytes (utf8 t) `shouldBe` Left "line 1, column 9: expected a JSON value, found '\\233'"
-      parseJSONBytes (utf8 t) `shouldBe` parseJSON t
-      -- (an unknown escape of a line break: parseJSON says column 0 of the next line)
-      parseJSONBytes (utf8 "\n[\"\\\n\"]") `shouldBe` Left "line 3, column 0: unknown escape \\\n"
-      parseJSONBytes (utf8 "\n[\"\\\n\"]") `shouldBe` parseJSON "\n[\"\\\n\"]"
-    it "refuse bytes that are not UTF-8 at the first bad one, before any other fault (fixed)" $ do
-      parseJSONBytes (BS.pack [0x5b, 0x0a, 0x22, 0xc3, 0xa9, 0xff, 0x22]) `shouldBe` Left "line 2, column 3: invalid UTF-8 (byte 0xff)"
-      parseJSONBytes (BS.pack [0x7d, 0xc3]) `shouldBe` Left "line 1, column 2: invalid UTF-8 (byte 0xc3)"
-      parseJSONBytes (BS.pack [0x22, 0xed, 0xa0, 0x80, 0x22]) `shouldBe` Left "line 1, column 2: invalid UTF-8 (byte 0xed)"
-      cutShortBytes (BS.pack [0x5b, 0x22, 0xc3]) `shouldBe` False
-    it "make a long string from its bytes alike, escapes, pairs and lone surrogates included (fixed)" $ do
-      let long = concat (replicate 40 "a\\u00e9\\ud83d\\ude00\\ud800\\n\x20ac")
-      parseJSONBytes (utf8 ("[\"" ++ long ++ "\", \"" ++ long ++ "\"]")) `shouldBe` parseJSON ("[\"" ++ long ++ "\", \"" ++ long ++ "\"]")
-      fmap (\v -> case v of { JArray [JString s, _] -> length s; _ -> 0 }) (parseJSONBytes (utf8 ("[\"" ++ long ++ "\", 1]")))
-        `shouldBe` Right (40 * 6)
-
 -- | A text's UTF-8 bytes.
 utf8 :: String -> BS.ByteString
 utf8 = BL.toStrict . BB.toLazyByteString . BB.stringUtf8
 
--- A text for the two parsers: mostly JSON (values written with
--- whitespace between their tokens, strings with escapes of every kind,
--- surrogates paired and lone, characters outside ASCII, numbers of many
--- digits and of every form), often with a fault made in it: cut short,
--- a character put in or taken out, or nested near 'maxDepth' (both sides
--- of it).
-jsonish :: Gen String
-jsonish = do
-  t <- (++) <$> ws <*> ((++) <$> sized (valueText . min 4 . (`div` 10)) <*> ws)
-  frequency [(2, pure t), (5, mutate t), (2, mutate t >>= mutate), (1, deep t)]
-  where
-    ws = elements ["", "", " ", "\n", "\t ", "\r\n  "]
-    valueText :: Int -> Gen String
-    valueText d = frequency $
-      [ (2, elements ["true", "false", "null", "tru", "nul", "True"])
-      , (3, numberish)
-      , (3, (\x -> "\"" ++ x ++ "\"") <$> stringBody) ] ++
-      (if d > 0 then [(2, array), (2, object)] else [])
-      where
-        array = do
-          xs <- resize 5 (listOf (valueText (d - 1)))
-          sp <- ws
-          pure ("[" ++ sp ++ commas sp xs ++ "]")
-        object = do
-          xs <- resize 5 (listOf ((\k sp v -> "\"" ++ k ++ "\"" ++ sp ++ ":" ++ sp ++ v)
-                                    <$> stringBody <*> ws <*> valueText (d - 1)))
-          sp <- ws
-          pure ("{" ++ sp ++ commas sp xs ++ "}")
-    commas sp = foldr (\x acc -> if null acc then x else x ++ sp ++ "," ++ sp ++ acc) ""
-    stringBody = concat <$> resize 12 (listOf (frequency
-      [ (6, (: []) <$> elements "abc xyz019 ~")
-      , (3, elements [ "\\n", "\\\"", "\\\\", "\\/", "\\b\\f\\r\\t", "\\u00e9", "\\u0000", "\\uFFFF"
-                     , "\\ud83d\\ude00", "\\uD800", "\\udc00", "\\ud83d\\u0041", "\\ud83dx", "\\ud83d\\" ])
-      , (2, (: []) <$> elements "\233\x20ac\x1F600\x7f\x80\x2028\xFFFD")
-      , (1, (: []) <$> elements "\t\n\0\x1f")
-      , (1, (`replicate` 'q') <$> choose (60, 70)) ]))
-    numberish = oneof
-      [ show <$> (arbitrary :: Gen Int)
-      , show <$> (arbitrary :: Gen Double)
-      , numberText
-      , (\k -> "0." ++ replicate k '0' ++ "1") <$> choose (790, 820)
-      , (\k -> "1" ++ replicate k '3' ++ "e-" ++ show k) <$> choose (10, 900)
-      , elements ["-", "-0", "00", "01", "1.", "1.e3", ".5", "1e", "1e+", "1E-0", "-01.5", "1e0000000000000000000001"] ]
-    mutate t = do
-      k <- choose (0, length t)
-      c <- elements [ "{", "}", "[", "]", ",", ":", "\"", "\\", "u", "e", "-", ".", "0", " ", "\n", "\t", "\r"
-                    , "\0", "\x1f", "\233", "\x1F600", "x", "tru", "\\u12", "\\\n", "\\\233" ]
-      oneof [ pure (take k t)
-            , pure (take k t ++ c ++ drop k t)
-            , pure (take k t ++ drop (k + 1) t)
-            , (\m -> take k t ++ c ++ drop (k + m) t) <$> choose (1, 3) ]
-    deep t = do
-      k <- choose (maxDepth - 2, maxDepth + 2)
-      closing <- choose (k - 1, k)
-      pure (replicate k '[' ++ t ++ replicate closing ']')
-
--- A JSON number's text, which is also one that 'read' reads as a
+-- | A JSON number's text, which is also one that 'read' reads as a
 -- 'Double': a sign, digits (often many, some with leading zeros in the
 -- fraction), a fraction, an exponent (the sign of both kinds), from the
 -- small to beyond the Double's range.

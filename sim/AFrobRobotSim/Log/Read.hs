@@ -12,9 +12,9 @@
 -- version, a header whose dt or fps is not positive, a frame whose robots
 -- are not the header's, a time written as @null@, a line after the
 -- summary. A file is read a line at a time ('foldLogFile'), at most so
--- many bytes in all and in a line, as UTF-8, each line parsed as its
--- bytes ('AFrobRobotSim.JSON.parseJSONBytes': the same lines, and the
--- same errors, as 'readLog' of the file's text).
+-- many bytes in all and in a line, as UTF-8, each line checked to be
+-- UTF-8 once and parsed as its bytes ('AFrobRobotSim.JSON.parseJSONUtf8':
+-- the same lines, and the same errors, as 'readLog' of the file's text).
 --
 -- = A log cut off
 --
@@ -50,10 +50,11 @@ import           Data.List                 (stripPrefix)
 import           System.IO                 (hClose, hFileSize)
 
 import           AFrobRobotSim.Console     (displayPath)
-import           AFrobRobotSim.JSON        (cutShort, cutShortBytes)
+import           AFrobRobotSim.JSON        (cutShort, cutShortUtf8)
 import           AFrobRobotSim.Log.Records
 import           AFrobRobotSim.InputFile   (LineFault (..), newLineReader, nextLineEnded, openReading)
-import           AFrobRobotSim.WorldFile.Lexical (cannotRead, utf8TextFrom)
+import           AFrobRobotSim.UTF8        (Utf8)
+import           AFrobRobotSim.WorldFile.Lexical (cannotRead, utf8BytesFrom)
 
 -- | A log read back.
 data RunLog = RunLog
@@ -121,9 +122,9 @@ linesEnded txt = case break (== '\n') txt of
 cutOff :: Bool -> String -> Bool
 cutOff ended l = not ended && cutShort l
 
--- 'cutOff' of a line's bytes (UTF-8).
-cutOffBytes :: Bool -> BC.ByteString -> Bool
-cutOffBytes ended l = not ended && cutShortBytes l
+-- 'cutOff' of a line's bytes, found to be UTF-8.
+cutOffUtf8 :: Bool -> Utf8 -> Bool
+cutOffUtf8 ended l = not ended && cutShortUtf8 l
 
 -- The time of the newest frame read, of frames newest first (0 before
 -- the first: a frame's time is not negative).
@@ -141,7 +142,7 @@ emptyLog = "an empty log (expected a header line)"
 afterSummary = "a line after the summary"
 
 -- The first line that is not blank, line @i@, decoded ('decodeLogLine'
--- or 'decodeLogLineBytes'): a header of this format and version, whose
+-- or 'decodeLogLineUtf8'): a header of this format and version, whose
 -- dt and fps are positive. @cut@: whether the line is a log's cut-off end
 -- ('cutOff': looked at only for a line refused).
 headerLine :: Locate -> Bool -> Int -> Either String LogLine -> Either String LogHeader
@@ -246,7 +247,7 @@ maxLogBytes = 256 * 1024 * 1024
 -- shorter. A line is longer only when the robots print more than some
 -- 26 MB of messages in one frame period, or a world built in code holds
 -- more robots. A line is read as its bytes, and only what of its value
--- is used is made ('AFrobRobotSim.Log.Records.decodeLogLineBytes'): a
+-- is used is made ('AFrobRobotSim.Log.Records.decodeLogLineUtf8'): a
 -- line of 64 MiB refused for a member it lacks takes some 70 MB of heap
 -- (it took 1 to 2 GB as a 'String'), a frame of 10,000 robots some 9
 -- times its bytes with the frame made of it. (A line that is made whole,
@@ -293,22 +294,21 @@ foldLogFileUpTo cap lineCap path start step = do
       if size > fromIntegral cap then pure (Left tooLong) else do
         src <- newLineReader hdl cap lineCap
         let -- the next line that is not blank, with its number and
-            -- whether a newline ends it; its bytes, which are UTF-8 (it is
-            -- read as bytes: as a String, a line took some 40 times its
-            -- length, and gigabytes)
+            -- whether a newline ends it; its bytes, found to be UTF-8 here,
+            -- once (it is read as bytes: as a String, a line took some 40
+            -- times its length, and gigabytes)
             nextText = nextLineEnded src >>= \r -> case r of
               Left fault                  -> pure (Left (faultText fault))
               Right Nothing               -> pure (Right Nothing)
               Right (Just (i, bs, ended))
                 | BC.all (\c -> c == ' ' || c == '\t' || c == '\r') bs -> nextText
-                -- (the text, unused, is not made)
-                | otherwise -> pure (either Left (\_ -> Right (Just (i, bs, ended))) (utf8TextFrom name i bs))
+                | otherwise -> pure (fmap (\u -> Just (i, u, ended)) (utf8BytesFrom name i bs))
             body h prev s = nextText >>= \r -> case r of
               Left e              -> pure (Left e)
               Right Nothing       -> pure (Right (s, LogEnd Nothing Nothing))
               Right (Just (i, l, ended))
-                | cutOffBytes ended l -> pure (Right (s, LogEnd Nothing (Just i)))
-                | otherwise -> case bodyLine loc h prev i (decodeLogLineBytes l) of
+                | cutOffUtf8 ended l -> pure (Right (s, LogEnd Nothing (Just i)))
+                | otherwise -> case bodyLine loc h prev i (decodeLogLineUtf8 l) of
                     Left e          -> pure (Left e)
                     Right (Left f)  -> step s f >>= body h (lfTime f)
                     Right (Right m) -> nextText >>= \after -> pure $ case after of
@@ -319,7 +319,7 @@ foldLogFileUpTo cap lineCap path start step = do
         case first of
           Left e                     -> pure (Left e)
           Right Nothing              -> pure (Left (loc 1 Nothing ++ emptyLog))
-          Right (Just (i, l, ended)) -> case headerLine loc (cutOffBytes ended l) i (decodeLogLineBytes l) of
+          Right (Just (i, l, ended)) -> case headerLine loc (cutOffUtf8 ended l) i (decodeLogLineUtf8 l) of
             Left e  -> pure (Left e)
             Right h -> start h >>= body h 0
     name = displayPath path   -- (a name with control characters escaped)

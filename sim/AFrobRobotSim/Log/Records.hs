@@ -41,6 +41,7 @@ module AFrobRobotSim.Log.Records
   , logLineFromJSON
   , decodeLogLine
   , decodeLogLineBytes
+  , decodeLogLineUtf8
   ) where
 
 import           AFrobRobotSim.Log.Records.Bytes

@@ -16,6 +16,7 @@ module AFrobRobotSim.WorldFile.Lexical
   ( -- * UTF-8
     utf8Text
   , utf8TextFrom
+  , utf8BytesFrom
     -- * Tokens
   , Tok (..)
   , tokenize
@@ -47,7 +48,7 @@ import           System.FilePath        (normalise)
 import           System.IO.Error        (ioeGetErrorType)
 
 import           AFrobRobotSim.Console  (displayPath, quote)
-import           AFrobRobotSim.UTF8     (utf8Fault)
+import           AFrobRobotSim.UTF8     (Utf8, checkUtf8, utf8Bytes)
 
 ------------------------------------------------------------------------------
 -- UTF-8
@@ -69,10 +70,19 @@ utf8Text name = utf8TextFrom name 1
 -- >>> utf8TextFrom "run.jsonl" 7 (B.pack [0x61, 0xff])
 -- Left "run.jsonl:7:2: invalid UTF-8 (byte 0xff)"
 utf8TextFrom :: String -> Int -> B.ByteString -> Either String String
-utf8TextFrom name n bytes = case utf8Fault bytes of
-  Just (l, c, b) -> Left (name ++ ":" ++ show (l + n - 1) ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
+utf8TextFrom name n bytes = decodeUtf8 . utf8Bytes <$> utf8BytesFrom name n bytes
+
+-- | 'utf8TextFrom' that keeps the bytes: them as 'Utf8' (checked, for a
+-- reader that parses bytes, such as a run log's, so that they are
+-- checked once), or the same message.
+--
+-- >>> utf8BytesFrom "run.jsonl" 7 (B.pack [0x61, 0xff])
+-- Left "run.jsonl:7:2: invalid UTF-8 (byte 0xff)"
+utf8BytesFrom :: String -> Int -> B.ByteString -> Either String Utf8
+utf8BytesFrom name n bytes = case checkUtf8 bytes of
+  Left (l, c, b) -> Left (name ++ ":" ++ show (l + n - 1) ++ ":" ++ show c ++ ": invalid UTF-8 (byte 0x"
                           ++ (if b < 16 then "0" else "") ++ showHex b ")")
-  Nothing        -> Right (decodeUtf8 bytes)
+  Right u        -> Right u
 
 -- Decode valid UTF-8 (as 'utf8Fault' accepts it), lazily.
 decodeUtf8 :: B.ByteString -> String

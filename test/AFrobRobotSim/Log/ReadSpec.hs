@@ -115,6 +115,20 @@ spec = do
     removeFile path
     fmap (const ()) r1 `shouldBe` Left (path ++ ":4:17: expected ',' or '}', found end of input")
     fmap (const ()) r2 `shouldBe` Left (path ++ ":4: a second header")
+  it "readLogFile refuses a header line, or a line after the summary, that is not UTF-8 with the UTF-8 message alone (fixed)" $
+    withTempDir $ \dir -> do
+      let path = dir </> "run.jsonl"
+          bad = BS.pack [0x7b, 0x22, 0xff]   -- {"<0xff>
+          utf8Fault c = Left (path ++ c ++ ": invalid UTF-8 (byte 0xff)")
+      -- (a header line: no hint that the file may be no log, whether a
+      -- newline ends it or not)
+      BS.writeFile path (BS.concat [bad, BC.pack ("\n" ++ unlines (drop 1 (lines fixtureLogText)))])
+      fmap (const ()) <$> readLogFile path `shouldReturn` utf8Fault ":1:3"
+      BS.writeFile path bad
+      fmap (const ()) <$> readLogFile path `shouldReturn` utf8Fault ":1:3"
+      -- (after the summary, line 53: the fault, not the line's being there)
+      BS.writeFile path (BS.concat [BC.pack fixtureLogText, BS.pack [0x20, 0x20, 0xff, 0x0a]])
+      fmap (const ()) <$> readLogFile path `shouldReturn` utf8Fault ":54:3"
   it "readLogFile names a log with control characters in its name escaped, whatever the fault" $ withTempDir $ \dir -> do
     let bad = dir </> "bad\ESC[1mlog\n.jsonl"
     writeFile bad "{\"bad\"\n"

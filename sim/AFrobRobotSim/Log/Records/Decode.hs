@@ -5,20 +5,22 @@
 --
 -- 'logLineFromJSON' is 'AFrobRobotSim.Log.Records.Encode.logLineJSON'
 -- undone: it takes the members that function writes, and says which one is
--- missing or of the wrong type. 'decodeLogLine' and 'decodeLogLineBytes'
--- parse a line's text first. Part of "AFrobRobotSim.Log.Records", which
--- re-exports all three; "AFrobRobotSim.Log.Read" reads whole logs with
+-- missing or of the wrong type. 'decodeLogLine', 'decodeLogLineBytes'
+-- and 'decodeLogLineUtf8' parse a line's text first. Part of
+-- "AFrobRobotSim.Log.Records", which re-exports all four; "AFrobRobotSim.Log.Read" reads whole logs with
 -- them.
 module AFrobRobotSim.Log.Records.Decode
   ( logLineFromJSON
   , decodeLogLine
   , decodeLogLineBytes
+  , decodeLogLineUtf8
   ) where
 
 import qualified Data.ByteString          as BS
 
 import           AFrobRobotSim.JSON
 import           AFrobRobotSim.Log.Records.Types
+import           AFrobRobotSim.UTF8       (Utf8)
 
 -- | Parse one line's text ('parseJSON', then 'logLineFromJSON').
 decodeLogLine :: String -> Either String LogLine
@@ -32,6 +34,11 @@ decodeLogLine txt = parseJSON txt >>= logLineFromJSON
 -- 'String' and its parsed value did.
 decodeLogLineBytes :: BS.ByteString -> Either String LogLine
 decodeLogLineBytes bs = parseJSONBytes bs >>= logLineFromJSON
+
+-- | 'decodeLogLineBytes' of a line already found to be UTF-8
+-- ('parseJSONUtf8'): the same line or error, its UTF-8 not checked again.
+decodeLogLineUtf8 :: Utf8 -> Either String LogLine
+decodeLogLineUtf8 u = parseJSONUtf8 u >>= logLineFromJSON
 
 -- | A line from its JSON object, or what is missing or wrong. A header's
 -- version is not checked here (see 'AFrobRobotSim.Log.readLog').
