@@ -76,6 +76,10 @@ maxDepth = 512
 -- of the arrays and objects of the top-level part it is in (two 'Int's
 -- each, made when that part is first looked into). A part of the top
 -- level that is never looked into is read over once and indexes nothing.
+-- The index is held while the part is in use: 16 bytes an array or
+-- object, at most 8 times the part's bytes (an array is at least the 2
+-- bytes of @[]@); a reviewer measured 604 MB for one 64 MiB part of
+-- arrays nested 510 deep side by side, its last element read.
 parseJSONBytes :: B.ByteString -> Either String JSON
 parseJSONBytes bs = case checkUtf8 bs of
   Left (l, c, b) -> Left (lineColumn l c ("invalid UTF-8 (byte 0x" ++ (if b < 16 then "0" else "")
