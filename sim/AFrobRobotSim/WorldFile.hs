@@ -216,7 +216,7 @@ parseWorld file = fmap (map snd) . parseNumbered file
 
 -- | 'parseWorld', each object with its line number.
 parseNumbered :: FilePath -> String -> Either String [(Int, ObjectTemplate)]
-parseNumbered name = go (0 :: Int) Nothing [] (Faults [] 0) . numberedFrom 1 . textLines . dropBom
+parseNumbered name = go (0 :: Int) Nothing [] (Faults []) . numberedFrom 1 . textLines . dropBom
   where
     -- lines ended by \n, \r\n or a lone \r (a file with no line end at
     -- all is one line; a final line end does not start another)
@@ -236,8 +236,8 @@ parseNumbered name = go (0 :: Int) Nothing [] (Faults [] 0) . numberedFrom 1 . t
     dropBom ('\xFEFF' : r) = r
     dropBom r              = r
     -- k objects so far; the line of the size, if one was given; the
-    -- faults so far (the first 'maxProblems', last first) and their number
-    go _ _ acc (Faults _ 0) [] = Right (reverse acc)
+    -- faults so far (at most 'maxProblems', last first)
+    go _ _ acc (Faults []) [] = Right (reverse acc)
     go _ _ _ faults [] = Left (faultsText faults [])
     go _ _ _ faults@Stopped {} _ = Left (faultsText faults [])
     go k sizeLine acc faults ((n, l) : ls) = case checkLine l >>= parseLine of
@@ -255,20 +255,20 @@ parseNumbered name = go (0 :: Int) Nothing [] (Faults [] 0) . numberedFrom 1 . t
       where
         -- (one fault more than 'maxProblems' ends the reading: the rest
         -- of a file of millions of bad lines is not read)
-        with (Faults shown count) msg
-          | count < maxProblems = Faults (msg : shown) (count + 1)
-          | otherwise           = Stopped shown n
+        with (Faults shown) msg
+          | length shown < maxProblems = Faults (msg : shown)
+          | otherwise                  = Stopped shown n
         with stopped _ = stopped
     -- (a last message, the reason the reading stopped, after the faults)
-    faultsText (Faults shown _) final = intercalate "\n" (reverse shown ++ final)
+    faultsText (Faults shown) final = intercalate "\n" (reverse shown ++ final)
     faultsText (Stopped shown n) final =
       intercalate "\n" (reverse shown ++ final ++ ["... and more problems from line " ++ show n
                                                   ++ " on (the reading stopped there)"])
 
--- The faults of a world file's lines so far: the first 'maxProblems'
--- messages (the last first) and how many there are; or, once one more is
--- found, those and the line where it was, which ends the reading.
-data Faults = Faults [String] !Int | Stopped [String] !Int
+-- The faults of a world file's lines so far: at most 'maxProblems'
+-- messages (the last first); or, once one more is found, those and the
+-- line where it was, which ends the reading.
+data Faults = Faults [String] | Stopped [String] !Int
 
 -- | The most objects a world file may describe: 100,000 (the notes' world
 -- holds about 1100 balls, or 400 blocks, side by side; the benchmarks'
