@@ -62,7 +62,9 @@ import qualified AFrobRobotSim.RayGridSpec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
 import qualified AFrobRobotSim.SensorsSpec
-import qualified AFrobRobotSim.ShapesSpec
+import qualified AFrobRobotSim.Shapes.BoxSpec
+import qualified AFrobRobotSim.Shapes.CollisionSpec
+import qualified AFrobRobotSim.Shapes.RaySpec
 import qualified AFrobRobotSim.SweepSpec
 import qualified Examples.Exercises14and15Spec
 import qualified Examples.Exercises1to6Spec
@@ -124,7 +126,9 @@ specs = hspec $ do
   describe "AFrob.Angle"             AFrob.AngleSpec.spec
   describe "AFrob.MergeableRecord"   AFrob.MergeableRecordSpec.spec
   describe "AFrob.RobotIO"           AFrob.RobotIOSpec.spec
-  describe "AFrobRobotSim.Shapes"    AFrobRobotSim.ShapesSpec.spec
+  describe "AFrobRobotSim.Shapes.Box" AFrobRobotSim.Shapes.BoxSpec.spec
+  describe "AFrobRobotSim.Shapes.Ray" AFrobRobotSim.Shapes.RaySpec.spec
+  describe "AFrobRobotSim.Shapes.Collision" AFrobRobotSim.Shapes.CollisionSpec.spec
   describe "AFrobRobotSim.Simulator" AFrobRobotSim.SimulatorSpec.spec
   describe "AFrobRobotSim.FlatArray" AFrobRobotSim.FlatArraySpec.spec
   describe "AFrobRobotSim.JSON"      AFrobRobotSim.JSONSpec.spec
