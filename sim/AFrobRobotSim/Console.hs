@@ -43,9 +43,11 @@ import           System.IO         (BufferMode (..), hFlush, hGetEncoding, hPutS
 quote :: String -> String
 quote s = "\"" ++ foldr esc "" s ++ "\""
   where
+    -- (showLitChar leaves a quote as it is: it is escaped here)
+    esc '"' rest = '\\' : '"' : rest
     esc ch rest
-      | isPrint ch && ch /= '"' && ch /= '\\' = ch : rest
-      | otherwise                             = showLitChar ch rest
+      | isPrint ch && ch /= '\\' = ch : rest
+      | otherwise               = showLitChar ch rest
 
 -- | A file name as a message shows it: as it is when every character of
 -- it prints, otherwise in quotes with the others escaped ('quote'), so

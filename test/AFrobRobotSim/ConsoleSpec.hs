@@ -22,6 +22,12 @@ spec = do
       displayPath "x\ESC[2Jy" `shouldBe` "\"x\\ESC[2Jy\""
     it "never lets a character that does not print through (property)" $ property $ \f ->
       all isPrint (displayPath f)
+  describe "quote" $ do
+    it "escapes the quote, the backslash and what does not print (a quote was left bare)" $ do
+      quote "say \"hi\"" `shouldBe` "\"say \\\"hi\\\"\""
+      quote "a\\n\n" `shouldBe` "\"a\\\\n\\n\""
+    it "reads back, as a Haskell literal, as the text it quotes (property)" $ property $ \t ->
+      read (quote t) == t
   describe "printableLine" $
     it "escapes what could forge or hide output, and keeps accents, emoji and joiners" $ do
       printableLine "caf\233 \128104\8205\128187" `shouldBe` "caf\233 \128104\8205\128187"

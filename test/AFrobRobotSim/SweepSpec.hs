@@ -277,8 +277,18 @@ spec = do
     it "prints a setting or a failure with control characters escaped" $ do
       let evil = resultLine 1 [("speed", "0.1\ESC[2J")] 1 (Just "bad\nFAILED seed 9: forged")
       mergeResults evil `shouldSatisfy` either (const False)
-        (\t -> "speed=0.1\\ESC[2J" `isInfixOf` t && "bad\\nFAILED seed 9: forged" `isInfixOf` t
+        (\t -> "speed=\"0.1\\ESC[2J\"" `isInfixOf` t && "bad\\nFAILED seed 9: forged" `isInfixOf` t
                && all (\c -> c == '\n' || c >= ' ') t)
+    it "names settings that are not alike so that they do not read alike (a value with a space and an = read as two parameters, a newline as a backslash and an n)" $ do
+      let headings ps = either (const []) (sort . filter ("== " `isPrefixOf`) . lines)
+                          (mergeResults (unlines [ resultLine 1 p 1 Nothing | p <- ps ]))
+      headings [[("a", "1 b=2")], [("a", "1"), ("b", "2")]] `shouldBe`
+        sort [ "== world=default a=\"1 b=2\"  (1 runs, 0 failed)", "== world=default a=1 b=2  (1 runs, 0 failed)" ]
+      headings [[("e", "x\ny")], [("e", "x\\ny")]] `shouldBe`
+        sort [ "== world=default e=\"x\\ny\"  (1 runs, 0 failed)", "== world=default e=\"x\\\\ny\"  (1 runs, 0 failed)" ]
+      -- (a quote, an empty value, a name with a space; a value beyond ASCII that prints is plain)
+      headings [[("q", "\"fast\""), ("empty", ""), ("my name", "caf\233")]] `shouldBe`
+        [ "== world=default empty=\"\" \"my name\"=caf\233 q=\"\\\"fast\\\"\"  (1 runs, 0 failed)" ]
 
     it "refuses a line that is neither a run's result line nor the sweep's line for a run with no result" $ do
       let failureLine = "{\"program\":\"p\",\"world\":\"default\",\"seed\":\"007\",\"params\":{\"speed\":\"1\"}"
@@ -586,6 +596,24 @@ spec = do
       table `shouldSatisfy` ("FAILED seed 2: the controller of SimbotA 1 failed at t = 0.500" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 3: exit code 2, no result" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 4: exit code 1: " `isInfixOf`)
+
+    it "a run that writes no result is filed under its setting when a parameter holds a control character (a tab was a space there: a setting of its own)" $ withTempDir $ \dir -> do
+      requireParallel
+      real <- childScript dir "program"
+      sweep <- script "sweep"
+      -- (the program, but seed 2 stops at once, writing no result)
+      let prog = dir </> "fails2"
+      writeFile prog (unlines [ "#!/bin/bash"
+                              , "case \" $* \" in *' --seed 2 '*) echo 'no luck' >&2; exit 3 ;; esac"
+                              , "exec '" ++ real ++ "' \"$@\"" ])
+      p <- getPermissions prog
+      setPermissions prog (setOwnerExecutable True p)
+      (code, _, _) <- runScriptCode [] sweep ["--seeds", "1..2", "--param", "note=a\tb", prog, dir </> "r.jsonl", "--", "--seconds", "1"]
+      code `shouldBe` ExitFailure 1
+      rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+      map (field ["params"]) rs `shouldBe` replicate 2 (JObject [("note", JString "a\tb")])
+      table <- merged dir [dir </> "r.jsonl"]
+      filter ("== " `isPrefixOf`) (lines table) `shouldBe` ["== world=default note=\"a\\tb\"  (2 runs, 1 failed)"]
 
     it "a run that writes no result is filed under the world and parameters it got after --, the job line's winning (it was filed under the job line's alone)" $ withTempDir $ \dir -> do
       requireParallel

@@ -55,6 +55,7 @@ module AFrobRobotSim.Test
 
 import           Control.Exception    (SomeAsyncException, bracketOnError, displayException, evaluate, fromException, try,
                                        tryJust)
+import           Data.IORef           (newIORef, readIORef, writeIORef)
 import           Data.List            (intercalate, tails)
 import           Data.Maybe           (isJust)
 import           Test.QuickCheck
@@ -238,10 +239,13 @@ runStream config duration world rcA rcB
   | duration / simDt config > 2 ^ (53 :: Int) =
       error ("AFrobRobotSim.Test.runStream: a duration of " ++ show duration ++ " s is more than 2^53 time steps of "
              ++ show (simDt config) ++ " s")
-  | otherwise =
-  let dt    = simDt config
-      steps = floor (duration / dt + 1e-9) :: Int
-  in zip (0 : repeat dt) (take (steps + 1) (simulateWith config world rcA rcB))
+  | otherwise = zip (0 : repeat (simDt config)) (take (stepsWithin config duration + 1) (simulateWith config world rcA rcB))
+
+-- The whole time steps of @config@ within a duration (the samples of
+-- 'runStream' but the one at time 0): a run of a shorter duration is the
+-- start of a longer one's.
+stepsWithin :: SimConfig -> Time -> Int
+stepsWithin config duration = floor (duration / simDt config + 1e-9)
 
 -- | One robot's view of a run: its state at every sample, found by its
 -- type (@\"SimbotA\"@ or @\"SimbotB\"@) and id. A robot that is not in
@@ -329,22 +333,30 @@ forAllWorlds file gen prop =
 -- longest bound of @p@ plus one time step.
 runT :: SimConfig -> Time -> SimbotController -> SimbotController -> TPred WorldState
      -> WorldTemplate -> Property
-runT config duration rcA rcB p world
+runT config duration rcA rcB p world =
+  -- (the run is made anew to explain a failure, since explaining keeps
+  -- it: deciding alone keeps only what the predicate looks ahead, see
+  -- 'evalT')
+  decideRun p (\() -> runStream config duration world rcA rcB)
+            (explainT p (runStream config duration world rcA rcB))
+
+-- @decideRun p run explanation@: 'runT' of @run ()@, a failure explained
+-- by @explanation@ (of a run of its own: 'forAllRuns' writes the page
+-- from the same run). The run to decide is made here, and not kept.
+decideRun :: TPred WorldState -> (() -> SignalSampleStream WorldState) -> Maybe (Explanation WorldState) -> Property
+decideRun p run explanation
   -- (a run has a sample at time 0 at least: never the empty stream that
-  -- 'propT' refuses. The run is made anew to explain a failure, since
-  -- explaining keeps the whole run: deciding alone keeps only what the
-  -- predicate looks ahead, see 'evalT')
+  -- 'propT' refuses)
   | evalT p (run ()) = property True
   | otherwise = counterexample explained False
   where
-    run () = runStream config duration world rcA rcB
     -- (made only when QuickCheck prints it, for the world it reports:
     -- not for each failing world met while shrinking, which costs a run
     -- each. 'explainT' decides as 'evalT' does, so it finds the failure)
     explained = maybe ("decided false, but explaining the run found no instant that decides it:"
                        ++ " evalT and explainT disagree (a fault of afrp-test; please report it)")
-                      explanation (explainT p (run ()))
-    explanation e = unlines $
+                      explanationText explanation
+    explanationText e = unlines $
       (decidedLine e ++ ":")
       : [ (if j == explFrame e then "  > " else "    ") ++ showWorldState ws | (j, _, ws) <- explAround e ]
 
@@ -366,6 +378,10 @@ decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++
 -- on its time slider, and says it (@FAILED: decided false at t = 6.76
 -- (step 338)@ in its heading and its summary): 'writeFalsifiedRunReplayPage'.
 -- A page of a controller's failure ('writeRunReplayPage') says the failure.
+-- Each world is run once to decide, as by 'runT', and the world
+-- QuickCheck reports once more: that run is both explained and the
+-- page's, and kept as 'runT' keeps it to explain it (the page beyond is
+-- recorded as it goes).
 --
 -- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB
 -- >   (genWorld defaultWorldMix notesBounds)
@@ -373,22 +389,35 @@ decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++
 forAllRuns :: FilePath -> SimConfig -> Time -> SimbotController -> SimbotController
            -> Gen WorldTemplate -> (WorldTemplate -> TPred WorldState) -> Property
 forAllRuns file config duration rcA rcB gen p =
-  forAllShrinkShow gen shrinkWorld (worldFileText config) $ \w ->
-    whenFail (do writeFile file (worldFileText config w)
-                 (upTo, decided) <- pageEnd w
-                 writeRunPage decided page config upTo w rcA rcB)
-             (counterexample ("(the world is written to " ++ file ++ ", its run's replay page to " ++ page ++ ")")
-                             (runT config duration rcA rcB (p w) w))
+  forAllShrinkShow gen shrinkWorld (worldFileText config) $ \w -> idempotentIOProperty $ do
+    -- (a failing world is run twice, as by 'runT': once to decide, which
+    -- keeps only what the predicate looks ahead, and once more for the
+    -- world QuickCheck reports, which explains the failure and makes the
+    -- page. That second run is made only if the page or the explanation
+    -- asks for it; the page takes it out of the cell, so that QuickCheck,
+    -- which holds on to this property's callbacks while it runs them,
+    -- does not keep the start of the run while the page is recorded)
+    let rerun       = runStream config duration w rcA rcB
+        explanation = explainT (p w) rerun
+    cell <- newIORef rerun
+    pure $
+      whenFail (do writeFile file (worldFileText config w)
+                   states <- readIORef cell
+                   writeIORef cell []
+                   (upTo, decided) <- pageEnd explanation
+                   -- (the run up to upTo is the start of this one)
+                   recordRunPage decided page config w (take (stepsWithin config upTo + 1) (map snd states)))
+               (counterexample ("(the world is written to " ++ file ++ ", its run's replay page to " ++ page ++ ")")
+                               (decideRun (p w) (\() -> runStream config duration w rcA rcB) explanation))
   where
     page = file ++ ".html"
-    -- (the instant that decided and the line runT prints of it, found as
-    -- runT finds it: a third run, up to about twice that instant,
-    -- evaluated here whole; a controller's failure or a predicate that
-    -- throws leaves the whole duration and no instant, the page then
-    -- ending at the failure; an asynchronous exception, such as a
-    -- timeout's, is not caught)
-    pageEnd w = do
-      decided <- tryJust synchronous (evaluate (case explainT (p w) (runStream config duration w rcA rcB) of
+    -- (the instant that decided and the line runT prints of it, from the
+    -- explanation it prints, evaluated here whole; a controller's
+    -- failure or a predicate that throws leaves the whole duration and no
+    -- instant, the page then ending at the failure; an asynchronous
+    -- exception, such as a timeout's, is not caught)
+    pageEnd explanation = do
+      decided <- tryJust synchronous (evaluate (case explanation of
                                                   Nothing -> Nothing
                                                   Just e  -> let d@(t, line) = (explTime e, decidedLine e)
                                                              in t `seq` length line `seq` Just d))
@@ -462,10 +491,16 @@ writeFalsifiedRunReplayPage file config duration world rcA rcB decided =
 writeRunPage :: Maybe (Time, String) -> FilePath -> SimConfig -> Time -> WorldTemplate -> SimbotController
              -> SimbotController -> IO ()
 writeRunPage decided file config duration world rcA rcB =
+  recordRunPage decided file config world (map snd (runStream config duration world rcA rcB))
+
+-- 'writeRunPage' of the run's states (made lazily: the run goes as far as
+-- they are read, and they are not kept).
+recordRunPage :: Maybe (Time, String) -> FilePath -> SimConfig -> WorldTemplate -> [WorldState] -> IO ()
+recordRunPage decided file config world states =
   -- (the recorder's temporary file closed whatever stops the run: an
   -- error, a timeout's or Ctrl-C's exception)
   bracketOnError (newReplayRecorder replayEveryFrame (pageConfig config world)) discardReplay $ \recorder -> do
-    (steps, simulated, failure) <- record recorder 0 0 (map snd (runStream config duration world rcA rcB))
+    (steps, simulated, failure) <- record recorder 0 0 states
     writeReplay recorder (pageSummary steps simulated (-1) failure decided) file
   where
     -- (each state evaluated as simbot evaluates it before recording it;

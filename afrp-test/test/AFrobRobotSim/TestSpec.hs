@@ -3,11 +3,13 @@
 module AFrobRobotSim.TestSpec (spec) where
 
 import           Control.Exception     (ErrorCall, evaluate, try)
+import           Data.IORef            (IORef, modifyIORef', newIORef, readIORef)
 import           Data.List             (isInfixOf, isPrefixOf, tails)
 import           Numeric               (showFFloat)
 import           System.Directory      (createDirectory, doesDirectoryExist, getTemporaryDirectory, listDirectory,
                                         removeDirectory, removeFile)
 import           System.IO.Error       (isAlreadyExistsError)
+import           System.IO.Unsafe      (unsafePerformIO)
 import           System.Timeout        (timeout)
 import           System.FilePath       ((</>))
 import           Test.Hspec            hiding (after)
@@ -495,6 +497,35 @@ specWithFiles = do
         -- (frames at 25 a second up to the step before 1.2 s: 0 to 1.16)
         occurrences "\"frame\"" page `shouldBe` 30
       _ -> expectationFailure ("the run was not found to fail: " ++ output result)
+
+  it "forAllRuns runs the world it reports twice, once to decide and once to explain it and write its page (it ran it four times)" $ \tmp -> do
+    -- (one robot, so that a start of its controller is a run; the empty
+    -- world that shrinking tries has none, and passes)
+    let file = tmp </> "afrp-test-runs.world"
+        world = pure [OTSimbotA 1 (Point2 0 0) 0]
+        runsOf rc p = do
+          starts <- newIORef 0
+          result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 3 } $
+            forAllRuns file defaultSimConfig { simDt = 0.05 } 10 (countingStarts starts rc) (countingStarts starts rc)
+              world (const p)
+          n <- readIORef starts
+          pure (isSuccess result, n)
+        throwsAt3 _ = localTime >>> arr (\t -> if t >= 3 then error "gave up" else mrFinalize (ddVelTR 0.2 0))
+    -- (a robot driving into the world's edge gets stuck after about 4 s)
+    runsOf straight neverStuck `shouldReturn` (False, 2)
+    -- (a controller that fails: deciding stops at the failure, which
+    -- the page then shows; it ran it three times)
+    runsOf throwsAt3 neverStuck `shouldReturn` (False, 2)
+    mapM_ removeFile [file, file ++ ".html"]
+    -- (three worlds that pass, each run once)
+    runsOf straight (Always (SP (arr (const True)))) `shouldReturn` (True, 3)
+
+-- @countingStarts starts rc@: the controller @rc@, counting in @starts@
+-- each time it is started for a robot (once per robot and run: the
+-- simulator starts a robot's controller in each run its robot moves in).
+countingStarts :: IORef Int -> SimbotController -> SimbotController
+countingStarts starts rc props = unsafePerformIO (modifyIORef' starts (+ 1) >> pure (rc props))
+{-# NOINLINE countingStarts #-}
 
 -- Whether an object of a template is a robot.
 isRobot :: ObjectTemplate -> Bool

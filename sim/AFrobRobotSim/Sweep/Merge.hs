@@ -22,7 +22,7 @@ module AFrobRobotSim.Sweep.Merge
 
 import           Control.Monad       (foldM)
 import           Data.Bits           (shiftL)
-import           Data.Char           (isSpace)
+import           Data.Char           (isPrint, isSpace)
 import qualified Data.IntMap.Strict  as IM
 import qualified Data.IntSet         as IS
 import qualified Data.Map.Strict     as M
@@ -31,7 +31,7 @@ import           Data.Ratio          ((%))
 import qualified Data.Set            as S
 import           Text.Printf         (printf)
 
-import           AFrobRobotSim.Console (printableLine)
+import           AFrobRobotSim.Console (printableLine, quote)
 import           AFrobRobotSim.JSON
 
 -- | The failed runs a group of the table lists, at most: 1000, the least
@@ -324,8 +324,19 @@ renderMerge (Merge names groups n)
     mergeGroups a b = Group (gRuns a + gRuns b) (gFailed a + gFailed b) (foldr listAdd (gListed a) (listedRuns (gListed b)))
                             (IM.unionWith addStat (gStats a) (gStats b)) noSeeds noSeeds M.empty
 
+-- A setting as the table names it: @world=default speed=0.1@, each name
+-- and value as it is when it is plain (not empty; no space, @=@, quote,
+-- backslash or character that does not print), otherwise in quotes with
+-- the quote, the backslash and the characters that do not print escaped
+-- ('quote'): @mode="1 b=2"@, @note="x\ny"@. So two settings never read
+-- alike: unquoted, a value @1 b=2@ read as two parameters, and a value
+-- with a newline as one with a backslash and an @n@.
 showSetting :: Setting -> String
-showSetting g = unwords [ k ++ "=" ++ v | (k, v) <- g ]
+showSetting g = unwords [ shown k ++ "=" ++ shown v | (k, v) <- g ]
+  where
+    shown t | not (null t) && all plain t = t
+            | otherwise                   = quote t
+    plain c = isPrint c && not (isSpace c) && c `notElem` "=\"\\"
 
 -- One group's lines of the table: its heading, its outcomes (in the
 -- order the runs, by seed, first name them), its failed runs by seed.
