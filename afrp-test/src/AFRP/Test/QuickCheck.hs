@@ -83,9 +83,11 @@ type Length = Maybe (Either Int DTime)
 -- the range that is negative or not finite, a lower bound above the upper
 -- one, an upper bound of 0 (no positive time step), a length in time that
 -- is negative or not finite or that the time steps cannot reach in
--- 'maxStreamSteps' steps (steps of the upper bound, at once; random steps,
--- after that many, or after 1000 steps in a row lost in the rounding of
--- the time so far), a normal
+-- 'maxStreamSteps' steps (at once: steps of the upper bound, or random
+-- steps from a range with an upper bound whose mean, the middle of the
+-- range for 'DistRandom', would need more; other random steps, after
+-- that many, or after 1000 steps in a row lost in the rounding of the
+-- time so far), a normal
 -- distribution whose mean or deviation is not finite or whose deviation
 -- is negative, or one that almost never (not once in 1000 draws) gives a
 -- time step inside the range.
@@ -123,6 +125,11 @@ generateStreamWith value dist range len = checked `seq` do
       ++ [ "time steps of at most " ++ show hi ++ " cannot reach the length " ++ show t ++ " in "
            ++ show maxStreamSteps ++ " steps"
          | Just (Right t) <- [len], Just hi <- [snd range], hi > 0, t / hi > fromIntegral maxStreamSteps ]
+      ++ [ "time steps drawn as " ++ show dist ++ " from the range " ++ show range ++ " average "
+           ++ show m ++ ": they would need about " ++ show (round (t / m) :: Integer) ++ " steps to reach the length "
+           ++ show t ++ ", more than " ++ show maxStreamSteps
+         | Just (Right t) <- [len], Just hi <- [snd range], hi > 0, t / hi <= fromIntegral maxStreamSteps
+         , Just m <- [meanStep dist range], m > 0, t / m > fromIntegral maxStreamSteps ]
     -- (one step for the whole stream; with a length in time, one that
     -- reaches it in fewer than 'maxStreamSteps' steps, so that a draw near
     -- a lower bound of 0 is not an error: with an upper bound, drawn from
@@ -145,6 +152,37 @@ generateStreamWith value dist range len = checked `seq` do
     stepsToReach dt t
       | t / dt > fromIntegral maxStreamSteps = tooLong dt t
       | otherwise                            = max 0 (ceiling (t / dt))
+
+-- The mean of the time steps a random distribution draws from a range
+-- with an upper bound, when it can be told before drawing: the middle of
+-- the range for 'DistRandom' (uniform draws), the mean of the normal
+-- distribution cut to the range's positive part for 'DistNormal'
+-- (Simpson's rule over the part within 12 deviations of its mean, to a
+-- relative error far below what a length near 'maxStreamSteps' steps
+-- needs). A sum of @n@ such steps strays from @n@ times the mean by about
+-- the square root of @n@ steps, so a length of more than 'maxStreamSteps'
+-- mean steps is all but never reached in that many.
+meanStep :: Distribution -> Range -> Maybe DTime
+meanStep dist (lo, mhi) = case (dist, mhi) of
+  (DistRandom, Just hi)        -> Just ((a + hi) / 2)
+  (DistNormal (mu, dev), Just hi)
+    | dev == 0                 -> if mu > 0 && a <= mu && mu <= hi then Just mu else Nothing
+    | otherwise ->
+        let x0 = max a (mu - 12 * dev)
+            x1 = min hi (mu + 12 * dev)
+            n  = 4000 :: Int
+            h  = (x1 - x0) / fromIntegral n
+            w k | k == 0 || k == n = 1
+                | odd k            = 4
+                | otherwise        = 2 :: Double
+            xs = [ (w k, x0 + fromIntegral k * h) | k <- [0 .. n] ]
+            density x = exp (-0.5 * ((x - mu) / dev) ^ (2 :: Int))
+            mass  = sum [ c * density x | (c, x) <- xs ]
+            moment = sum [ c * x * density x | (c, x) <- xs ]
+        in if x1 > x0 && mass > 0 then Just (moment / mass) else Nothing
+  _                            -> Nothing
+  where
+    a = max 0 (fromMaybe 0 lo)
 
 -- | The most time steps a generator makes to reach a length in time: 10^8
 -- (more than memory holds as a list). Asking for more is an error.

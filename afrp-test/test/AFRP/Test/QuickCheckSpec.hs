@@ -1,7 +1,7 @@
 module AFRP.Test.QuickCheckSpec (spec) where
 
 import           Control.Exception (ErrorCall (..), evaluate)
-import           Data.List        (isPrefixOf)
+import           Data.List        (isInfixOf, isPrefixOf)
 import           Test.Hspec
 import           Test.QuickCheck
 import           Test.QuickCheck.Random (mkQCGen)
@@ -88,6 +88,15 @@ spec = do
       fails (refused DistRandom (Just 0.5, Just 1) (Just (Right 1e17)))
       -- (at once, from the upper bound: it made 10^8 steps first)
       fails (refused DistRandom (Nothing, Just 1e-9) (Just (Right 1)))
+      -- (at once, from the steps' mean: the upper bound allowed the length,
+      -- and the steps, half of it on average, made 10^8 steps first)
+      fails (refused DistRandom (Nothing, Just 1) (Just (Right 7e7)))
+      fails (refused DistRandom (Just 0.2, Just 1) (Just (Right 7e7)))
+      fails (refused (DistNormal (0.5, 0.1)) (Nothing, Just 1) (Just (Right 7e7)))
+      -- (a normal distribution cut to (0, 2]: its mean is
+      -- (phi(0) - phi(2)) / (Phi(2) - Phi(0)) = 0.72276...)
+      refused (DistNormal (0, 1)) (Nothing, Just 2) (Just (Right 8e7))
+        `shouldThrow` (\(ErrorCall m) -> "average 0.7227" `isInfixOf` m && "about 110682" `isInfixOf` m)
     it "a normal distribution that is not one, or that misses the range (instead of drawing forever)" $ do
       fails (refused (DistNormal (1, 0)) (Just 2, Nothing) (Just (Left 3)))
       fails (refused (DistNormal (0.1, -1)) (Nothing, Nothing) (Just (Left 3)))
