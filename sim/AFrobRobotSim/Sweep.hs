@@ -53,7 +53,7 @@ import           AFrobRobotSim.Console (displayPath, endOutput, putErr, tolerant
 import           AFrobRobotSim.InputFile (LineFault (..), newLineReader, nextLine)
 import           AFrobRobotSim.OutputFile (fileIdentity)
 import           AFrobRobotSim.Sweep.Merge
-import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, cannotRead, utf8TextFrom)
+import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, cannotRead, utf8BytesFrom)
 
 -- | The longest line 'sweepMergeMain' reads: 16 MiB (16,777,216 bytes).
 -- A run's result line is about 250 bytes a robot at most (every number
@@ -61,9 +61,15 @@ import           AFrobRobotSim.WorldFile.Lexical (canonicalPath, cannotRead, utf
 -- robots a world file may hold; what else it holds comes from the run's
 -- command line (the world's name, the parameters), at most 2 MiB of
 -- arguments on Linux, 12 MiB were every character escaped (@\\u001b@).
--- A line at the limit takes at most about 550 MB and 3 s to read (one
--- string of 16 MiB: the parser makes a 'String' of it): the most memory
--- a hostile input can take.
+-- A line is parsed as its bytes ('addLineUtf8'), not as a 'String' of
+-- its text: a line at the limit of arrays and numbers is read in about
+-- 40 MB (it took 500 MB and 7.7 s; 0.9 s now). What is kept as text (the
+-- world's name, the parameters' names and values, a failure's message)
+-- still costs a 'String''s 24 to 40 bytes a character: a line at the
+-- limit that is one parameter's value takes about 960 MB and 6 s (1.2 GB
+-- and 11 s before), a value no command line can give (Linux takes at
+-- most 128 KiB for one argument): the most memory a hostile input can
+-- take.
 maxLineBytes :: Int
 maxLineBytes = 16 * 1024 * 1024
 
@@ -87,9 +93,9 @@ mergeHandle name h m0 = newLineReader h maxBound maxLineBytes >>= \src -> go src
       Right (Just (k, bytes)) -> case one k bytes m of
         Left f   -> pure (Left f)
         Right m' -> m' `seq` go src m'
-    one k bytes m = case utf8TextFrom name k bytes of
+    one k bytes m = case utf8BytesFrom name k bytes of
       Left msg -> Left (Fault 1 msg)
-      Right l  -> either (\e -> Left (Fault 1 (name ++ ": line " ++ show k ++ ": " ++ e))) Right (addLine m l)
+      Right u  -> either (\e -> Left (Fault 1 (name ++ ": line " ++ show k ++ ": " ++ e))) Right (addLineUtf8 m u)
     tooLong k = Fault 2 (name ++ ": line " ++ show k ++ ": longer than " ++ show maxLineBytes
                          ++ " bytes (16 MiB), more than any result line: not a result file of a sweep?")
 

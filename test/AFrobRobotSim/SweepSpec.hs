@@ -8,12 +8,13 @@ module AFrobRobotSim.SweepSpec (spec, childVariable, child) where
 import           Control.Concurrent  (threadDelay)
 import           Control.Monad       (forM, forM_, unless)
 import qualified Data.ByteString     as B
+import qualified Data.ByteString.Char8 as BC
 import           Data.Int            (Int8)
 import qualified Data.Map            as M
 import           Data.Maybe          (fromMaybe, isJust)
 import           Data.Ratio          (Ratio, (%))
 import qualified Data.Set            as S
-import           Data.List           (isInfixOf, isPrefixOf, sort)
+import           Data.List           (intercalate, isInfixOf, isPrefixOf, sort)
 import           Data.Word           (Word8)
 import           System.Directory    (canonicalizePath, copyFile, createDirectory, createDirectoryIfMissing, createFileLink, doesFileExist, findExecutable,
                                       getPermissions, listDirectory, makeAbsolute, setOwnerExecutable,
@@ -34,6 +35,9 @@ import           AFrob               hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.JSON
 import           AFrobRobotSim.Sweep (maxLineBytes, mergeResults, sweepMergeMain)
+import           AFrobRobotSim.Sweep.Merge (addLine, addLineUtf8, emptyMerge, renderMerge)
+import           AFrobRobotSim.UTF8 (checkUtf8)
+import           AFrobRobotSim.WorldFile.Lexical (utf8Text)
 import           TestUtil (cLocale, withTempDir)
 
 -- | The environment variable that makes the test binary run 'child'.
@@ -356,6 +360,30 @@ spec = do
       (code, err) `shouldBe` (ExitSuccess, "")
       lines out `shouldSatisfy` elem "== world=default speed=0  (2500 runs, 0 failed)"
       map words (lines out) `shouldSatisfy` elem ["SimbotA", "1", "distance", "5002.0000", "4.0000", "10000.0000"]
+
+    it "addLineUtf8 merges a line's bytes as addLine its text: every cut of a result line, blank lines, spaces beyond ASCII" $ do
+      let line = BC.pack (head sampleLines)
+          viaText b = either ("refused: " ++) (either ("no table: " ++) id . renderMerge)
+                        (either (const (Left "not UTF-8")) (addLine emptyMerge) (utf8Text "" b))
+          viaBytes b = either ("refused: " ++) (either ("no table: " ++) id . renderMerge)
+                         (either (const (Left "not UTF-8")) (addLineUtf8 emptyMerge) (checkUtf8 b))
+          extra = [B.empty, BC.pack " \t ", B.pack [0xc2, 0xa0], B.pack [0x20, 0xe3, 0x80, 0x80], B.pack [0xc2, 0xa0, 0x7b], BC.pack "{}"]
+      forM_ ([ B.take k line | k <- [0 .. B.length line] ] ++ extra) $ \b ->
+        (b, viaBytes b) `shouldBe` (b, viaText b)
+
+    it "afrp-sweep-merge: a result line of 12 MiB is read in a heap of 60 MB (its text as a String took about 300 MB)" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      let file = dir </> "wide.jsonl"
+          line = head sampleLines
+          -- (a member the merge does not read, which the parser still reads over)
+          padded = B.concat [ BC.pack (init line), BC.pack ",\"padding\":["
+                            , B.concat (replicate 63000 (BC.pack ("[" ++ intercalate "," (replicate 100 "1") ++ "],")))
+                            , BC.pack "[1]]}\n" ]
+      B.length padded `shouldSatisfy` (> 12 * 1024 * 1024)
+      B.writeFile file padded
+      (code, out, err) <- readProcessWithExitCode merger ["+RTS", "-M60m", "-RTS", file] ""
+      (code, err) `shouldBe` (ExitSuccess, "")
+      Right out `shouldBe` mergeResults line
 
     it "afrp-sweep-merge: no result line at all (empty files, empty standard input) is refused (exit 1)" $ withTempDir $ \dir -> do
       merger <- childScript dir "merge"

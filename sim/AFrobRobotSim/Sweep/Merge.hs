@@ -6,7 +6,8 @@
 --
 -- The pure part of "AFrobRobotSim.Sweep" (which re-exports 'mergeResults'
 -- and 'maxListedFailures'; see it for the design): a line read ('addLine':
--- a run's result line, or the sweep's line for a run that wrote none),
+-- a run's result line, or the sweep's line for a run that wrote none;
+-- 'addLineUtf8' the same from the line's bytes),
 -- added to its setting's tallies (a count, an exact sum, the least and
 -- the greatest of each outcome; the seeds seen, to refuse a run merged
 -- twice), and the table of the tallies ('renderMerge').
@@ -15,6 +16,7 @@ module AFrobRobotSim.Sweep.Merge
     Merge
   , emptyMerge
   , addLine
+  , addLineUtf8
   , renderMerge
   , mergeResults
   , maxListedFailures
@@ -23,6 +25,7 @@ module AFrobRobotSim.Sweep.Merge
 import           Control.Monad       (foldM)
 import           Data.Bits           (shiftL)
 import           Data.Char           (isPrint, isSpace)
+import qualified Data.ByteString     as B
 import qualified Data.IntMap.Strict  as IM
 import qualified Data.IntSet         as IS
 import qualified Data.Map.Strict     as M
@@ -33,6 +36,8 @@ import           Text.Printf         (printf)
 
 import           AFrobRobotSim.Console (printableLine, quote)
 import           AFrobRobotSim.JSON
+import           AFrobRobotSim.UTF8  (Utf8, utf8Bytes)
+import           AFrobRobotSim.WorldFile.Lexical (utf8Text)
 
 -- | The failed runs a group of the table lists, at most: 1000, the least
 -- by seed (then by message); the others are counted in a line of their
@@ -281,6 +286,24 @@ addLine m l
   | all isSpace l = Right m
   | otherwise = either (\e -> Left ("not a result line of a sweep (not JSON: " ++ e ++ ")")) Right (parseJSON l)
                   >>= readRun >>= addRun m
+
+-- | 'addLine' of a line's bytes, found to be UTF-8: the same merge, or the
+-- same message, as 'addLine' of its text. The bytes are parsed as they
+-- are ('parseJSONUtf8'), without the text of the whole line, which would
+-- take about 30 times the line's bytes (a 16 MiB line, 550 MB).
+addLineUtf8 :: Merge -> Utf8 -> Either String Merge
+addLineUtf8 m u
+  | B.all asciiSpace bs = Right m
+  | otherwise = case parseJSONUtf8 u of
+      Right v -> readRun v >>= addRun m
+      Left e
+        -- (a line blank but for spaces beyond ASCII, U+00A0 and the like,
+        -- is blank to 'isSpace' too)
+        | B.any (>= 0x80) bs, Right l <- utf8Text "" bs, all isSpace l -> Right m
+        | otherwise -> Left ("not a result line of a sweep (not JSON: " ++ e ++ ")")
+  where
+    bs = utf8Bytes u
+    asciiSpace b = b == 0x20 || (b >= 0x09 && b <= 0x0d)
 
 ------------------------------------------------------------------------------
 -- The table
