@@ -7,6 +7,7 @@ import           Test.Hspec
 import           Test.QuickCheck  (conjoin, counterexample, elements, forAll, property, (===))
 
 import           AFrobRobotSim.Options
+import           AFrobRobotSim.Options.Check (readableNumber)
 import           AFrobRobotSim.World (Bounds (..))
 import           TestUtil         (cLocale)
 
@@ -44,6 +45,10 @@ spec = do
       faults d { optDt = 2e6, optSeconds = 4e6, optFps = 1e-7 } `shouldSatisfy` elem "--dt must be a positive number up to 1000000, got 2000000.0"
       -- (and the limits themselves are fine)
       faults d { optOdometryNoise = 1, optSeed = 2 ^ (53 :: Int), optKeys = [(0, 'a')], optSeconds = 0 } `shouldBe` []
+  describe "readableNumber (the helper once exported as num)" $
+    it "writes a number as the messages do: three decimals at most, no trailing zeros, an exponent when far from 1" $
+      map readableNumber [25, 0.01, 100 / 3, 0, -2.5, 1e20, 2.5e-4, 1e6]
+        `shouldBe` ["25", "0.01", "33.333", "0", "-2.5", "1.000e20", "2.500e-4", "1000000"]
   describe "validateOptions, file names" $ do
     it "refuses an empty file name for every output, before the run" $ do
       let named f o = [ m | m <- validateOptions o, (f ++ " must not be empty") `isPrefixOf` m ]

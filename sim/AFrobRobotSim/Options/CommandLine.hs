@@ -115,8 +115,8 @@ parseSimArgs o0 = go o0 False False
     _ -> Left (flag ++ " expects " ++ what flag ++ " (written as in a world file: 2, 0.5, 1e-3), got "
                ++ show v)
   what flag | flag == "--seconds"        = "a non-negative number"
-            | flag == "--odometry-noise" = "a number from 0 to " ++ num maxOdometryNoise
-            | flag == "--dt"             = "a positive number up to " ++ num maxTimeStep
+            | flag == "--odometry-noise" = "a number from 0 to " ++ readableNumber maxOdometryNoise
+            | flag == "--dt"             = "a positive number up to " ++ readableNumber maxTimeStep
             | otherwise                  = "a positive number"
   check opts = case validateOptions opts of
     []   -> Right (RunWith opts)
