@@ -73,8 +73,10 @@ import           AFrobRobotSim.Simulator
 
 -- | The @--param NAME=VALUE@ pairs of this program's command line, in the
 -- order given (a name given twice keeps its last value, in its first
--- place). A command line that does not parse gives @[]@; 'AFrobRobotSim.runSim' then
--- reports the fault before anything is simulated.
+-- place; 'AFrobRobotSim.runSim' warns of it, see
+-- 'AFrobRobotSim.Options.optParamsRepeated'). A command line that does
+-- not parse gives @[]@; 'AFrobRobotSim.runSim' then reports the fault
+-- before anything is simulated.
 getSimParams :: IO [(String, String)]
 getSimParams = atomicModifyIORef' paramReads (\(_, ns) -> ((True, ns), ())) >> simParamsOf <$> getArgs
 

@@ -148,6 +148,13 @@ runSimWith opts mworld rcA rcB = do
       (errs, ffmpeg) <- preflight (worldBounds world) opts
       unless (null errs) $
         failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
+      -- (a parameter given twice: the run uses the last value, and says so)
+      let given k v = displayPath (k ++ "=" ++ argText v)
+          times n = if n == 2 then "twice" else show n ++ " times"
+      unless (null (optParamsRepeated opts)) $ putErr $ unlines
+        [ prog ++ ": warning: --param " ++ displayPath k ++ " is given " ++ times (length vs) ++ ", "
+          ++ intercalate " then " (map (given k) vs) ++ ": the last, " ++ given k (last vs) ++ ", is used"
+        | (k, vs@(_ : _)) <- optParamsRepeated opts ]
       -- (a parameter no controller asked for is usually a misspelled name)
       (unread, asked) <- unreadParams opts
       let readsText | null asked = "it reads none"

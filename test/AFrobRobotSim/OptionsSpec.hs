@@ -184,6 +184,16 @@ spec = do
     it "reads a --param's name given in a locale that is not UTF-8 as the text it spells (it was no parameter the controller asks for); keeps its value as given (a file's name opens)" $
       fmap' optParams (parseSimArgs defaultSimOptions ["--param", cLocale "naïve=∑ 1", "--param", "a\56575=b"])
         `shouldBe` Right [("naïve", cLocale "∑ 1"), ("a\56575", "b")]
+    it "keeps each --param name the command line repeats with all its values (it kept the last alone, the repeat unseen)" $ do
+      let parsed' args = case parseSimArgs defaultSimOptions args of
+            Right (RunWith o) -> Right (optParams o, optParamsRepeated o)
+            other             -> Left (show other)
+      parsed' ["--param", "a=1", "--param", "b=2", "--param", "a=3", "--param", "b=2", "--param", "a=4", "--param", "c="]
+        `shouldBe` Right ([("a", "4"), ("b", "2"), ("c", "")], [("a", ["1", "3", "4"]), ("b", ["2", "2"])])
+      parsed' ["--param", "a=1", "--param", "b=2"] `shouldBe` Right ([("a", "1"), ("b", "2")], [])
+      -- (a value of the given settings that the command line replaces is no repeat)
+      fmap' optParamsRepeated (parseSimArgs defaultSimOptions { optParams = [("a", "0")] } ["--param", "a=1"])
+        `shouldBe` Right []
     it "says a --param without = as text, in a locale that is not UTF-8 too" $
       parseParam (cLocale "naïve") `shouldBe` Left ("--param expects NAME=VALUE, got " ++ show "naïve")
   describe "argText" $ do

@@ -13,7 +13,7 @@ import qualified Data.Map            as M
 import           Data.Maybe          (fromMaybe, isJust)
 import           Data.Ratio          (Ratio, (%))
 import qualified Data.Set            as S
-import           Data.List           (isInfixOf, isPrefixOf, sort)
+import           Data.List           (isInfixOf, isPrefixOf, isSuffixOf, sort)
 import           Data.Word           (Word8)
 import           System.Directory    (canonicalizePath, copyFile, createDirectory, createDirectoryIfMissing, createFileLink, doesFileExist, findExecutable,
                                       getPermissions, listDirectory, makeAbsolute, setOwnerExecutable,
@@ -382,6 +382,14 @@ spec = do
     it "collects NAME=VALUE pairs in order, a repeated name keeping its last value" $
       simParamsOf ["--seed", "3", "--param", "a=1", "--param", "b=x=y", "--param", "a=2", "--param", "c="]
         `shouldBe` [("a", "2"), ("b", "x=y"), ("c", "")]
+    it "a name given twice: the run warns, naming the values and the one used (the last), and exits 0" $ withTempDir $ \dir -> do
+      (code, err, line) <- runOnce dir ["--seconds", "0.1", "--param", "speed=0.2", "--param", "tag=x", "--param", "speed=0.3"]
+      code `shouldBe` ExitSuccess
+      map (drop 1 . dropWhile (/= ':')) (lines err) `shouldBe`
+        [" warning: --param speed is given twice, speed=0.2 then speed=0.3: the last, speed=0.3, is used"]
+      field ["params"] (parsed line) `shouldBe` JObject [("speed", JString "0.3"), ("tag", JString "x")]
+      (_, err3, _) <- runOnce dir ["--seconds", "0.1", "--param", "speed=1", "--param", "speed=2", "--param", "speed=1"]
+      err3 `shouldSatisfy` (": warning: --param speed is given 3 times, speed=1 then speed=2 then speed=1: the last, speed=1, is used\n" `isSuffixOf`)
     it "rejects a value without a name or an =" $ do
       parseSimArgs defaultSimOptions ["--param", "speed"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
       parseSimArgs defaultSimOptions ["--param", "=1"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
