@@ -19,7 +19,9 @@
 -- in one message. They are: an unknown flag, a world file that cannot be read or parsed
 -- (with its line and column), an invalid world, options that do not fit
 -- together ('validateOptions'), an output file or folder whose folder
--- does not exist or cannot be written, two outputs that are the same file
+-- does not exist, cannot be written or cannot be searched (a folder on
+-- its path without x permission), an @--out@ that is a file or a
+-- symbolic link to nothing, two outputs that are the same file
 -- (under any names; devices such as @\/dev\/stdout@ excepted), an output
 -- that is the world file, @--video@ without
 -- @ffmpeg@ on the PATH. A controller that throws stops the run with a message naming the

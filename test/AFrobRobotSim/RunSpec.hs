@@ -12,7 +12,8 @@ import           System.Process      (CreateProcess (..), ProcessHandle, StdStre
                                       getPid, getProcessExitCode, interruptProcessGroupOf, proc,
                                       readCreateProcessWithExitCode,
                                       terminateProcess, waitForProcess)
-import           System.Posix.Files  (createLink, createNamedPipe)
+import           System.Posix.Files  (createLink, createNamedPipe, setFileMode)
+import           System.Posix.User   (getEffectiveUserID)
 import           System.Posix.Signals (raiseSignal, signalProcess, sigKILL, sigTERM)
 import           System.IO.Unsafe    (unsafePerformIO)
 import           System.Timeout      (timeout)
@@ -1063,6 +1064,38 @@ spec = do
       refused (\dir -> (quick (dir </> "a" </> "b")) { optLog = Just (dir </> "nolog" </> "run.jsonl") })
               (\e -> all (`isInfixOf` e) ["--log", "cannot write frames to", "a" </> "b" ++ "\": the folder"]
                      && length (filter ("cannot run" `isInfixOf`) (lines e)) == 1)
+    it "an --out that is a symbolic link to nothing, said so with the other faults (it was not listed; alone, \"already exists\")" $
+      withTempDir $ \dir -> do
+        createFileLink (dir </> "gone") (dir </> "out")
+        let saying = "cannot write frames to " ++ show (dir </> "out") ++ ": it is a symbolic link to "
+                     ++ show (dir </> "gone") ++ ", which does not exist"
+        (out, err, r) <- captured (runSimWith (quick (dir </> "out")) { optLog = Just (dir </> "nolog" </> "run.jsonl") }
+                                              (Just world) drive drive)
+        (r, out) `shouldBe` (Left (ExitFailure 2), "")
+        map (dropWhile (== ' ')) (lines err) `shouldSatisfy` \ls -> elem saying ls && any ("--log" `isPrefixOf`) ls
+        (out', err', r') <- captured (runSimWith (quick (dir </> "out")) (Just world) drive drive)
+        (r', out') `shouldBe` (Left (ExitFailure 2), "")
+        lines err' `shouldBe` ["afrp-spec: cannot run:", "  " ++ saying]
+        doesPathExist (dir </> "gone") `shouldReturn` False
+    it "an --out whose parent folder may not be searched, and an --svg in it, said so with the other faults (it said \"does not exist\", and the --svg failed after the run; as root, every folder may be)" $
+      withTempDir $ \dir -> do
+        uid <- getEffectiveUserID
+        if uid == 0 then pendingWith "root searches every folder: run as another user (see the test)" else do
+          createDirectory (dir </> "locked")
+          createDirectory (dir </> "locked" </> "sub")
+          setFileMode (dir </> "locked") 0o600
+          let o = (quick (dir </> "locked" </> "sub" </> "out")) { optLog = Just (dir </> "nolog" </> "run.jsonl")
+                                                                 , optSvg = Just (dir </> "locked" </> "a.svg") }
+          (out, err, r) <- captured (runSimWith o (Just world) drive drive)
+          setFileMode (dir </> "locked") 0o700
+          (r, out) `shouldBe` (Left (ExitFailure 2), "")
+          map (dropWhile (== ' ')) (lines err) `shouldSatisfy` \ls ->
+            elem ("cannot write frames to " ++ show (dir </> "locked" </> "sub" </> "out") ++ ": it cannot be reached: the folder "
+                  ++ show (dir </> "locked") ++ " on its path may not be searched (no x permission)") ls
+            && any ("--log" `isPrefixOf`) ls
+            -- (a file in it was refused only after the run, by the write)
+            && elem ("--svg " ++ show (dir </> "locked" </> "a.svg") ++ ": its folder, " ++ show (dir </> "locked")
+                     ++ ", may not be searched (no x permission)") ls
     it "an empty --out" $ do
       parseSimArgs defaultSimOptions ["--out", ""] `shouldSatisfy` either ("--out" `isInfixOf`) (const False)
       refused (\_ -> (quick "") { optFrames = True }) ("--out" `isInfixOf`)
