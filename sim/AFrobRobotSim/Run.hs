@@ -95,7 +95,7 @@ import           AFrobRobotSim.Options
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
-import           AFrobRobotSim.Result      (unreadParams)
+import           AFrobRobotSim.Result      (WorldSource, unreadParams, worldSource)
 import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Run.Preflight (preflight)
 import           AFrobRobotSim.Run.Signals
@@ -187,7 +187,7 @@ runSimWith opts mworld rcA rcB = do
       when (all (isNothing . robotKindOf) world) $ putErr $
         prog ++ ": warning: " ++ maybe "the world" (\f -> "the world " ++ displayPath f) (optWorldFile opts)
         ++ " has no robots: the controllers will not run\n"
-      simulateRun prog opts ffmpeg world rcA rcB
+      simulateRun prog opts ffmpeg (worldSource opts mworld) world rcA rcB
 
 -- How a run's loop ended.
 data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOException | OutOfHeap
@@ -195,9 +195,9 @@ data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOEx
 -- One pass over the states: every sink takes every state; nothing else
 -- keeps a state, so the run's memory is the sinks' (constant but for the
 -- replay page's frames).
-simulateRun :: String -> SimOptions -> Maybe FilePath -> WorldTemplate -> SimbotController -> SimbotController
-            -> IO ()
-simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
+simulateRun :: String -> SimOptions -> Maybe FilePath -> WorldSource -> WorldTemplate -> SimbotController
+            -> SimbotController -> IO ()
+simulateRun prog opts ffmpeg source world rcA rcB = interruptible $ \stopper -> do
   start <- getMonotonicTime
   tty   <- hIsTerminalDevice stderr
   args  <- getArgs
@@ -232,7 +232,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
   frames <- if optFrames opts then Just <$> framesSink opts scale frameAt (renderPPM style scene) framesRef
                               else pure Nothing
   svg <- forM (optSvg opts) (svgSink svgEvery (style, scene))
-  result <- forM (optResult opts) (resultSink prog opts world)
+  result <- forM (optResult opts) (resultSink prog opts source world)
   -- (the log last: opening it replaces the file, so it is opened only once
   -- nothing else can stop the run before its first step; a run refused
   -- here leaves an existing log as it was)

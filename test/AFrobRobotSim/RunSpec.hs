@@ -33,6 +33,7 @@ import           AFrob               hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.Log   (LogEnd (..), LogFrame (..), LogHeader (..), LogRect (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
+import           AFrobRobotSim.JSON  (JSON (..), member, parseJSON)
 import           AFrobRobotSim.Replay (replayPage, writeReplayFromLog)
 import           AFrobRobotSim.Run.Signals (Stopper, interruptible, signalReceived, stuckGrace)
 import           TestUtil (withCaps, withTMPDIR, withTempDir)
@@ -409,6 +410,20 @@ spec = do
       fmap (fmap (\sm -> (lsSimulated sm, lsSteps sm)) . rlSummary) logRead `shouldBe` Right (Just (5.31, 532))
       readFile (dir </> "run.jsonl") >>= (`shouldSatisfy` ("\"simulated\":5.31," `isInfixOf`))
       readFile (dir </> "r.json") >>= (`shouldSatisfy` ("\"simulated\":5.31," `isInfixOf`))
+  describe "the result line's world" $
+    it "is \"default\" for the built-in world, \"program\" for the program's own (it was \"default\"), the file for --world" $
+      withTempDir $ \dir -> do
+        let wf = dir </> "w.world"
+            r = dir </> "r.json"
+            worldOf = fmap (\l -> parseJSON l >>= member "world") (readFile r)
+            o = (quick dir) { optFrames = False, optSeconds = 0.1, optResult = Just r }
+        writeFile wf "simbotA 1 at 0 0\n"
+        _ <- captured (runSimWith o Nothing drive drive)
+        worldOf `shouldReturn` Right (JString "default")
+        _ <- captured (runSimWith o (Just world) drive drive)
+        worldOf `shouldReturn` Right (JString "program")
+        _ <- captured (runSimWith o { optWorldFile = Just wf } (Just world) drive drive)
+        worldOf `shouldReturn` Right (JString wf)
   describe "scripted keys" $
     it "warns of a key pressed after the run's last step (never pressed), and of no other" $ withTempDir $ \dir -> do
       (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 1

@@ -280,6 +280,24 @@ spec = do
         (\t -> "speed=0.1\\ESC[2J" `isInfixOf` t && "bad\\nFAILED seed 9: forged" `isInfixOf` t
                && all (\c -> c == '\n' || c >= ' ') t)
 
+    it "files the sweep's line for a run with no result and no --world (world null) with the result lines' own world (it went under \"default\" apart from the program's runs)" $ do
+      let own w = replace "\"world\":\"default\"" ("\"world\":" ++ w)
+          noResult seed = "{\"program\":\"p\",\"world\":null,\"seed\":" ++ show seed ++ ",\"params\":{\"speed\":\"0.1\"}"
+                          ++ ",\"flags\":\"--seed " ++ show seed ++ " --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
+          tableOf' ls = either (\e -> "refused: " ++ e) id (mergeResults (unlines ls))
+      -- the program's own world
+      lines (tableOf' (map (own "\"program\"") (take 2 sampleLines) ++ [noResult (7 :: Int)]))
+        `shouldSatisfy` elem "== world=program speed=0.1  (3 runs, 1 failed)"
+      -- the built-in default, in any order of the lines
+      forM_ [noResult (7 :: Int) : take 2 sampleLines, take 2 sampleLines ++ [noResult 7]] $ \ls ->
+        lines (tableOf' ls) `shouldSatisfy` elem "== world=default speed=0.1  (3 runs, 1 failed)"
+      -- no result line to tell: said as not given
+      lines (tableOf' [noResult (7 :: Int)]) `shouldSatisfy` elem "== world=(not given) speed=0.1  (1 runs, 1 failed)"
+      -- a run that is a result line too is merged twice
+      tableOf' (take 2 sampleLines ++ [noResult (2 :: Int)]) `shouldSatisfy`
+        ("refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too" `isPrefixOf`)
+      -- a result line must name its world
+      tableOf' [own "null" (head sampleLines)] `shouldSatisfy` ("refused: line 1: not a result line of a sweep" `isPrefixOf`)
     it "refuses a line that is neither a run's result line nor the sweep's line for a run with no result" $ do
       let failureLine = "{\"program\":\"p\",\"world\":\"default\",\"seed\":\"007\",\"params\":{\"speed\":\"1\"}"
                         ++ ",\"flags\":\"--seed 007 --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
@@ -477,7 +495,8 @@ spec = do
         length (lines line) `shouldBe` 1
         pure (parsed line)
       forM_ results $ \r -> do
-        field ["world"] r `shouldBe` JString "default"
+        -- (the child runs a world of its own: runSim (Just world); it was "default")
+        field ["world"] r `shouldBe` JString "program"
         field ["seed"] r `shouldBe` JNumber 3
         field ["dt"] r `shouldBe` JNumber 0.01
         field ["seconds"] r `shouldBe` JNumber 2
