@@ -24,18 +24,25 @@
 module AFrobRobotSim.OutputFile
   ( writeWhole
   , fileIdentity
+  , FolderState (..)
+  , folderState
+  , folderStateText
   , notAFolder
   ) where
 
+#if defined(mingw32_HOST_OS)
 import           System.Directory  (doesDirectoryExist, doesPathExist)
-
-#if !defined(mingw32_HOST_OS)
+#else
 import           Control.Exception (IOException, catch, onException, try)
-import           System.Directory  (canonicalizePath, getPermissions, removeFile, renameFile, writable)
-import           System.FilePath   (takeDirectory, takeFileName, (</>))
-import           System.IO.Error   (ioeSetFileName)
+import           Control.Monad     (filterM)
+import           Data.Maybe        (listToMaybe)
+import           System.Directory  (canonicalizePath, getPermissions, getSymbolicLinkTarget, removeFile, renameFile,
+                                    searchable, writable)
+import           System.FilePath   (splitDirectories, takeDirectory, takeFileName, (</>))
+import           System.IO.Error   (ioeSetFileName, isDoesNotExistError, isPermissionError)
 import           System.Posix.Files (FileStatus, deviceID, fileGroup, fileID, fileMode, fileOwner, getFileStatus,
-                                     isRegularFile, setFileMode, setOwnerAndGroup)
+                                     getSymbolicLinkStatus, isDirectory, isRegularFile, isSymbolicLink, setFileMode,
+                                     setOwnerAndGroup)
 import           System.Posix.Process (getProcessID)
 #endif
 
@@ -100,13 +107,92 @@ fileIdentity path = either (\(_ :: IOException) -> Nothing) (\st -> Just (key st
 fileIdentity _ = pure Nothing
 #endif
 
--- | Why files cannot be written into a path taken as a folder, in words
--- that follow its name: @Just \"does not exist\"@, @Just \"is not a
--- folder\"@ (a file is there), or 'Nothing' for a folder.
-notAFolder :: FilePath -> IO (Maybe String)
-notAFolder dir = do
+-- | What a path taken as a folder is, symbolic links followed: what
+-- @stat@ says, with its two failures told apart (nothing there, or a
+-- folder on the way that may not be searched) and a link to nothing told
+-- from nothing.
+data FolderState
+  = AFolder                       -- ^ a folder (whether it may be written is not asked)
+  | NotAFolder                    -- ^ something else: a file, a device
+  | NothingThere                  -- ^ nothing, not even a link
+  | DanglingLink FilePath         -- ^ a symbolic link (perhaps through others) to nothing: the path not there
+  | LinkLoop                      -- ^ a loop of symbolic links (or a chain too long to follow)
+  | Unsearchable (Maybe FilePath) -- ^ a folder on its path may not be searched (no x permission): which, when found
+  deriving (Eq, Show)
+
+-- | The 'FolderState' of a path. 'Unsearchable' names the first folder
+-- of the path (as written) that exists but may not be searched by this
+-- process; the path itself, a folder that may not be searched, is
+-- 'AFolder' (what is in it cannot be reached, but it is there). On
+-- Windows, only 'AFolder', 'NotAFolder' and 'NothingThere'.
+folderState :: FilePath -> IO FolderState
+#if !defined(mingw32_HOST_OS)
+folderState dir = do
+  st <- try (getFileStatus dir)
+  case st of
+    Right s | isDirectory s -> pure AFolder
+            | otherwise     -> pure NotAFolder
+    Left (e :: IOException)
+      | isPermissionError e -> Unsearchable <$> unsearchable
+      | otherwise -> do
+          -- (a link, which stat follows, to nothing: lstat sees it)
+          l <- try (getSymbolicLinkStatus dir) :: IO (Either IOException FileStatus)
+          case l of
+            Right ls | isSymbolicLink ls ->
+              if isDoesNotExistError e then DanglingLink <$> lastTarget (40 :: Int) dir else pure LinkLoop
+            _ -> pure NothingThere
+  where
+    -- (the end of a chain of links: the path that is not there)
+    lastTarget k f = do
+      t <- try (getSymbolicLinkTarget f)
+      case t of
+        Left (_ :: IOException) -> pure f
+        Right target -> do
+          let next = takeDirectory f </> target
+          l <- try (getSymbolicLinkStatus next) :: IO (Either IOException FileStatus)
+          case l of
+            Right ls | isSymbolicLink ls, k > 0 -> lastTarget (k - 1) next
+            _                                   -> pure next
+    -- (the first folder on the path that is there and may not be searched)
+    unsearchable = listToMaybe <$> filterM closed (init (scanl1 (</>) (splitDirectories dir)))
+    closed d = do
+      s <- try (getFileStatus d) :: IO (Either IOException FileStatus)
+      case s of
+        Right st' | isDirectory st' ->
+          either (\(_ :: IOException) -> False) (not . searchable) <$> try (getPermissions d)
+        _ -> pure False
+#else
+folderState dir = do
   isFolder <- doesDirectoryExist dir
   taken <- doesPathExist dir
-  pure $ if | isFolder  -> Nothing
-            | taken     -> Just "is not a folder"
-            | otherwise -> Just "does not exist"
+  pure $ if | isFolder  -> AFolder
+            | taken     -> NotAFolder
+            | otherwise -> NothingThere
+#endif
+
+-- | Why files cannot be written into a path of this 'FolderState', in
+-- words that follow its name, or 'Nothing' for a folder:
+--
+-- >>> folderStateText NothingThere
+-- Just "does not exist"
+-- >>> folderStateText (DanglingLink "gone")
+-- Just "is a symbolic link to \"gone\", which does not exist"
+-- >>> folderStateText (Unsearchable (Just "/srv/locked"))
+-- Just "cannot be reached: the folder \"/srv/locked\" on its path may not be searched (no x permission)"
+folderStateText :: FolderState -> Maybe String
+folderStateText st = case st of
+  AFolder        -> Nothing
+  NotAFolder     -> Just "is not a folder"
+  NothingThere   -> Just "does not exist"
+  DanglingLink t -> Just ("is a symbolic link to " ++ show t ++ ", which does not exist")
+  LinkLoop       -> Just "is a loop of symbolic links (or a chain too long to follow)"
+  Unsearchable d -> Just ("cannot be reached: " ++ maybe "a folder on its path" (\f -> "the folder " ++ show f ++ " on its path") d
+                          ++ " may not be searched (no x permission)")
+
+-- | Why files cannot be written into a path taken as a folder, in words
+-- that follow its name ('folderStateText' of its 'folderState'):
+-- @Just \"does not exist\"@, @Just \"is not a folder\"@ (a file is
+-- there), a link to nothing, a folder on the way that may not be
+-- searched, or 'Nothing' for a folder.
+notAFolder :: FilePath -> IO (Maybe String)
+notAFolder dir = folderStateText <$> folderState dir

@@ -11,7 +11,7 @@
 -- ends (a controller that throws still gets its line, with the failure):
 --
 -- @
--- {"program":"simbot","world":"default","seed":3,"dt":0.01,"seconds":30,
+-- {"program":"my-robot","world":"program","seed":3,"dt":0.01,"seconds":30,
 --  "odometryNoise":0,"params":{"speed":"0.5"},
 --  "outcome":{"simulated":30,"steps":3001,"interrupted":false,"failure":null,
 --             "robots":[{"type":"SimbotA","id":1,"x":..,"y":..,"heading":..,
@@ -19,8 +19,14 @@
 --             "scores":{}}}
 -- @
 --
--- (on one line). @world@ is the @--world@ file, or @"default"@ for the
--- program's own world; @odometryNoise@ is @--odometry-noise@ (so that
+-- (on one line: a run of @my-robot --seed 3 --param speed=0.5 --result
+-- FILE@, whose @main@ calls @runSim (Just world)@). @world@ says where
+-- the run's world came from
+-- ('WorldSource'): the @--world@ file's name, else @"program"@ for the
+-- world the program gives ('AFrobRobotSim.runSim' @(Just world)@, as
+-- @afrp-examples@ and most programs do), else @"default"@ for the
+-- built-in default world ('AFrobRobotSim.runSim' 'Nothing', as @simbot@
+-- does). @odometryNoise@ is @--odometry-noise@ (so that
 -- runs of a sweep over it are told apart). Per robot: the final true pose, the distance its
 -- centre travelled (the sum of the steps' displacements), @bumps@ the
 -- number of times it became stuck against something (a robot stuck at
@@ -49,6 +55,9 @@ module AFrobRobotSim.Result
   , readSimParam
   , unreadParams
     -- * The result line
+  , WorldSource (..)
+  , worldSource
+  , worldSourceName
   , RobotTally (..)
   , startTallies
   , stepTallies
@@ -73,8 +82,10 @@ import           AFrobRobotSim.Simulator
 
 -- | The @--param NAME=VALUE@ pairs of this program's command line, in the
 -- order given (a name given twice keeps its last value, in its first
--- place). A command line that does not parse gives @[]@; 'AFrobRobotSim.runSim' then
--- reports the fault before anything is simulated.
+-- place; 'AFrobRobotSim.runSim' warns of it, see
+-- 'AFrobRobotSim.Options.optParamsRepeated'). A command line that does
+-- not parse gives @[]@; 'AFrobRobotSim.runSim' then reports the fault
+-- before anything is simulated.
 getSimParams :: IO [(String, String)]
 getSimParams = atomicModifyIORef' paramReads (\(_, ns) -> ((True, ns), ())) >> simParamsOf <$> getArgs
 
@@ -266,6 +277,30 @@ numeralsHeld written shown
       Floating (Zero z) -> z
       _                 -> asRational n == Just 0
 
+-- | Where a run's world came from, as its result line names it
+-- ('worldSourceName').
+data WorldSource
+  = BuiltInWorld        -- ^ the built-in default world ("AFrobRobotSim.DefaultWorld"): @runSim Nothing@
+  | ProgramWorld        -- ^ the world the program gives: @runSim (Just world)@
+  | WorldFile FilePath  -- ^ a world file, @--world FILE@ (whichever world the program gives)
+  deriving (Eq, Show)
+
+-- | Where the world of a run with these options, given this world by the
+-- program (or 'Nothing', the default), comes from: @--world@ wins.
+worldSource :: SimOptions -> Maybe world -> WorldSource
+worldSource o mworld = case (optWorldFile o, mworld) of
+  (Just file, _) -> WorldFile file
+  (_, Just _)    -> ProgramWorld
+  _              -> BuiltInWorld
+
+-- | The result line's @world@: @"default"@, @"program"@, or the world
+-- file's name (as text: 'AFrobRobotSim.Options.argText').
+worldSourceName :: WorldSource -> String
+worldSourceName w = case w of
+  BuiltInWorld   -> "default"
+  ProgramWorld   -> "program"
+  WorldFile file -> argText file
+
 -- | What the result line keeps of one robot while the run goes: strict,
 -- so its memory is constant however long the run.
 data RobotTally = RobotTally
@@ -293,13 +328,14 @@ stepTallies dt s ts = forceAll (zipWith one ts (wsRobots s))
                  (if robotStuck r then st + dt else st)
     forceAll xs = foldl' (\acc x -> x `seq` acc) () xs `seq` xs
 
--- | The result line of a run: its settings (the program's name and
--- options) and its outcome (the summary and the robots' tallies at the
--- last state simulated). See the module documentation for the fields.
-resultJSON :: String -> SimOptions -> LogSummary -> [RobotTally] -> JSON
-resultJSON prog o summary tallies = JObject
+-- | The result line of a run: its settings (the program's name, its
+-- options and where its world came from) and its outcome (the summary
+-- and the robots' tallies at the last state simulated). See the module
+-- documentation for the fields.
+resultJSON :: String -> SimOptions -> WorldSource -> LogSummary -> [RobotTally] -> JSON
+resultJSON prog o source summary tallies = JObject
   [ ("program", JString (argText prog))
-  , ("world", JString (maybe "default" argText (optWorldFile o)))
+  , ("world", JString (worldSourceName source))
   , ("seed", JNumber (fromIntegral (optSeed o)))
   , ("dt", JNumber (optDt o))
   , ("seconds", JNumber (optSeconds o))

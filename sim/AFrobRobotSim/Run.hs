@@ -19,7 +19,9 @@
 -- in one message. They are: an unknown flag, a world file that cannot be read or parsed
 -- (with its line and column), an invalid world, options that do not fit
 -- together ('validateOptions'), an output file or folder whose folder
--- does not exist or cannot be written, two outputs that are the same file
+-- does not exist, cannot be written or cannot be searched (a folder on
+-- its path without x permission), an @--out@ that is a file or a
+-- symbolic link to nothing, two outputs that are the same file
 -- (under any names; devices such as @\/dev\/stdout@ excepted), an output
 -- that is the world file, @--video@ without
 -- @ffmpeg@ on the PATH. A controller that throws stops the run with a message naming the
@@ -93,7 +95,7 @@ import           AFrobRobotSim.Options
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
-import           AFrobRobotSim.Result      (unreadParams)
+import           AFrobRobotSim.Result      (WorldSource, unreadParams, worldSource)
 import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Run.Preflight (preflight)
 import           AFrobRobotSim.Run.Signals
@@ -148,6 +150,13 @@ runSimWith opts mworld rcA rcB = do
       (errs, ffmpeg) <- preflight (worldBounds world) opts
       unless (null errs) $
         failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
+      -- (a parameter given twice: the run uses the last value, and says so)
+      let given k v = displayPath (k ++ "=" ++ argText v)
+          times n = if n == 2 then "twice" else show n ++ " times"
+      unless (null (optParamsRepeated opts)) $ putErr $ unlines
+        [ prog ++ ": warning: --param " ++ displayPath k ++ " is given " ++ times (length vs) ++ ", "
+          ++ intercalate " then " (map (given k) vs) ++ ": the last, " ++ given k (last vs) ++ ", is used"
+        | (k, vs@(_ : _)) <- optParamsRepeated opts ]
       -- (a parameter no controller asked for is usually a misspelled name)
       (unread, asked) <- unreadParams opts
       let readsText | null asked = "it reads none"
@@ -178,7 +187,7 @@ runSimWith opts mworld rcA rcB = do
       when (all (isNothing . robotKindOf) world) $ putErr $
         prog ++ ": warning: " ++ maybe "the world" (\f -> "the world " ++ displayPath f) (optWorldFile opts)
         ++ " has no robots: the controllers will not run\n"
-      simulateRun prog opts ffmpeg world rcA rcB
+      simulateRun prog opts ffmpeg (worldSource opts mworld) world rcA rcB
 
 -- How a run's loop ended.
 data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOException | OutOfHeap
@@ -186,9 +195,9 @@ data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOEx
 -- One pass over the states: every sink takes every state; nothing else
 -- keeps a state, so the run's memory is the sinks' (constant but for the
 -- replay page's frames).
-simulateRun :: String -> SimOptions -> Maybe FilePath -> WorldTemplate -> SimbotController -> SimbotController
-            -> IO ()
-simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
+simulateRun :: String -> SimOptions -> Maybe FilePath -> WorldSource -> WorldTemplate -> SimbotController
+            -> SimbotController -> IO ()
+simulateRun prog opts ffmpeg source world rcA rcB = interruptible $ \stopper -> do
   start <- getMonotonicTime
   tty   <- hIsTerminalDevice stderr
   args  <- getArgs
@@ -223,7 +232,7 @@ simulateRun prog opts ffmpeg world rcA rcB = interruptible $ \stopper -> do
   frames <- if optFrames opts then Just <$> framesSink opts scale frameAt (renderPPM style scene) framesRef
                               else pure Nothing
   svg <- forM (optSvg opts) (svgSink svgEvery (style, scene))
-  result <- forM (optResult opts) (resultSink prog opts world)
+  result <- forM (optResult opts) (resultSink prog opts source world)
   -- (the log last: opening it replaces the file, so it is opened only once
   -- nothing else can stop the run before its first step; a run refused
   -- here leaves an existing log as it was)

@@ -7,6 +7,7 @@ import           Test.Hspec
 import           Test.QuickCheck  (conjoin, counterexample, elements, forAll, property, (===))
 
 import           AFrobRobotSim.Options
+import           AFrobRobotSim.Options.Check (readableNumber)
 import           AFrobRobotSim.World (Bounds (..))
 import           TestUtil         (cLocale)
 
@@ -44,6 +45,10 @@ spec = do
       faults d { optDt = 2e6, optSeconds = 4e6, optFps = 1e-7 } `shouldSatisfy` elem "--dt must be a positive number up to 1000000, got 2000000.0"
       -- (and the limits themselves are fine)
       faults d { optOdometryNoise = 1, optSeed = 2 ^ (53 :: Int), optKeys = [(0, 'a')], optSeconds = 0 } `shouldBe` []
+  describe "readableNumber (the helper once exported as num)" $
+    it "writes a number as the messages do: three decimals at most, no trailing zeros, an exponent when far from 1" $
+      map readableNumber [25, 0.01, 100 / 3, 0, -2.5, 1e20, 2.5e-4, 1e6]
+        `shouldBe` ["25", "0.01", "33.333", "0", "-2.5", "1.000e20", "2.500e-4", "1000000"]
   describe "validateOptions, file names" $ do
     it "refuses an empty file name for every output, before the run" $ do
       let named f o = [ m | m <- validateOptions o, (f ++ " must not be empty") `isPrefixOf` m ]
@@ -179,6 +184,16 @@ spec = do
     it "reads a --param's name given in a locale that is not UTF-8 as the text it spells (it was no parameter the controller asks for); keeps its value as given (a file's name opens)" $
       fmap' optParams (parseSimArgs defaultSimOptions ["--param", cLocale "naïve=∑ 1", "--param", "a\56575=b"])
         `shouldBe` Right [("naïve", cLocale "∑ 1"), ("a\56575", "b")]
+    it "keeps each --param name the command line repeats with all its values (it kept the last alone, the repeat unseen)" $ do
+      let parsed' args = case parseSimArgs defaultSimOptions args of
+            Right (RunWith o) -> Right (optParams o, optParamsRepeated o)
+            other             -> Left (show other)
+      parsed' ["--param", "a=1", "--param", "b=2", "--param", "a=3", "--param", "b=2", "--param", "a=4", "--param", "c="]
+        `shouldBe` Right ([("a", "4"), ("b", "2"), ("c", "")], [("a", ["1", "3", "4"]), ("b", ["2", "2"])])
+      parsed' ["--param", "a=1", "--param", "b=2"] `shouldBe` Right ([("a", "1"), ("b", "2")], [])
+      -- (a value of the given settings that the command line replaces is no repeat)
+      fmap' optParamsRepeated (parseSimArgs defaultSimOptions { optParams = [("a", "0")] } ["--param", "a=1"])
+        `shouldBe` Right []
     it "says a --param without = as text, in a locale that is not UTF-8 too" $
       parseParam (cLocale "naïve") `shouldBe` Left ("--param expects NAME=VALUE, got " ++ show "naïve")
   describe "argText" $ do

@@ -10,7 +10,9 @@ import           Test.Hspec
 import           AFRP.Geometry           (Point2 (..))
 import           AFrob                   (BatteryStatus (..), RobotType, constant, ddVelDiff, mrFinalize)
 import           AFrobRobotSim           (ObjectTemplate (..), simulate)
-import           AFrobRobotSim.Result    (RobotTally (..), startTallies, stepTallies)
+import           AFrobRobotSim.Options   (SimOptions (..), defaultSimOptions)
+import           AFrobRobotSim.Result    (RobotTally (..), WorldSource (..), startTallies, stepTallies, worldSource,
+                                          worldSourceName)
 import           AFrobRobotSim.Simulator (RobotState (..), WorldState (..))
 
 -- | A robot at @(x, y)@, stuck or not.
@@ -30,6 +32,13 @@ talliesOf (r0 : rs) = map view (scanl next (startTallies [r0]) rs)
 
 spec :: Spec
 spec = do
+  describe "worldSource" $
+    it "tells the built-in default world from the program's own (both were \"default\"), and --world wins" $ do
+      let file = defaultSimOptions { optWorldFile = Just "w.world" }
+      map (worldSourceName . uncurry worldSource)
+          [(defaultSimOptions, Nothing), (defaultSimOptions, Just ()), (file, Nothing), (file, Just ())]
+        `shouldBe` ["default", "program", "w.world", "w.world"]
+      worldSource file (Just ()) `shouldBe` WorldFile "w.world"
   describe "startTallies and stepTallies" $ do
     it "sum the straight-line steps of a robot's centre, not its displacement from the start" $
       -- (1 m out, 1 m back: 2 m travelled, none displaced)

@@ -12,7 +12,8 @@ import           System.Process      (CreateProcess (..), ProcessHandle, StdStre
                                       getPid, getProcessExitCode, interruptProcessGroupOf, proc,
                                       readCreateProcessWithExitCode,
                                       terminateProcess, waitForProcess)
-import           System.Posix.Files  (createLink, createNamedPipe)
+import           System.Posix.Files  (createLink, createNamedPipe, setFileMode)
+import           System.Posix.User   (getEffectiveUserID)
 import           System.Posix.Signals (raiseSignal, signalProcess, sigKILL, sigTERM)
 import           System.IO.Unsafe    (unsafePerformIO)
 import           System.Timeout      (timeout)
@@ -32,6 +33,7 @@ import           AFrob               hiding (forAll)
 import           AFrobRobotSim
 import           AFrobRobotSim.Log   (LogEnd (..), LogFrame (..), LogHeader (..), LogRect (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
+import           AFrobRobotSim.JSON  (JSON (..), member, parseJSON)
 import           AFrobRobotSim.Replay (replayPage, writeReplayFromLog)
 import           AFrobRobotSim.Run.Signals (Stopper, interruptible, signalReceived, stuckGrace)
 import           TestUtil (withCaps, withTMPDIR, withTempDir)
@@ -408,6 +410,20 @@ spec = do
       fmap (fmap (\sm -> (lsSimulated sm, lsSteps sm)) . rlSummary) logRead `shouldBe` Right (Just (5.31, 532))
       readFile (dir </> "run.jsonl") >>= (`shouldSatisfy` ("\"simulated\":5.31," `isInfixOf`))
       readFile (dir </> "r.json") >>= (`shouldSatisfy` ("\"simulated\":5.31," `isInfixOf`))
+  describe "the result line's world" $
+    it "is \"default\" for the built-in world, \"program\" for the program's own (it was \"default\"), the file for --world" $
+      withTempDir $ \dir -> do
+        let wf = dir </> "w.world"
+            r = dir </> "r.json"
+            worldOf = fmap (\l -> parseJSON l >>= member "world") (readFile r)
+            o = (quick dir) { optFrames = False, optSeconds = 0.1, optResult = Just r }
+        writeFile wf "simbotA 1 at 0 0\n"
+        _ <- captured (runSimWith o Nothing drive drive)
+        worldOf `shouldReturn` Right (JString "default")
+        _ <- captured (runSimWith o (Just world) drive drive)
+        worldOf `shouldReturn` Right (JString "program")
+        _ <- captured (runSimWith o { optWorldFile = Just wf } (Just world) drive drive)
+        worldOf `shouldReturn` Right (JString wf)
   describe "scripted keys" $
     it "warns of a key pressed after the run's last step (never pressed), and of no other" $ withTempDir $ \dir -> do
       (_, err, r) <- captured (runSimWith (quick dir) { optFrames = False, optSeconds = 1
@@ -1063,6 +1079,38 @@ spec = do
       refused (\dir -> (quick (dir </> "a" </> "b")) { optLog = Just (dir </> "nolog" </> "run.jsonl") })
               (\e -> all (`isInfixOf` e) ["--log", "cannot write frames to", "a" </> "b" ++ "\": the folder"]
                      && length (filter ("cannot run" `isInfixOf`) (lines e)) == 1)
+    it "an --out that is a symbolic link to nothing, said so with the other faults (it was not listed; alone, \"already exists\")" $
+      withTempDir $ \dir -> do
+        createFileLink (dir </> "gone") (dir </> "out")
+        let saying = "cannot write frames to " ++ show (dir </> "out") ++ ": it is a symbolic link to "
+                     ++ show (dir </> "gone") ++ ", which does not exist"
+        (out, err, r) <- captured (runSimWith (quick (dir </> "out")) { optLog = Just (dir </> "nolog" </> "run.jsonl") }
+                                              (Just world) drive drive)
+        (r, out) `shouldBe` (Left (ExitFailure 2), "")
+        map (dropWhile (== ' ')) (lines err) `shouldSatisfy` \ls -> elem saying ls && any ("--log" `isPrefixOf`) ls
+        (out', err', r') <- captured (runSimWith (quick (dir </> "out")) (Just world) drive drive)
+        (r', out') `shouldBe` (Left (ExitFailure 2), "")
+        lines err' `shouldBe` ["afrp-spec: cannot run:", "  " ++ saying]
+        doesPathExist (dir </> "gone") `shouldReturn` False
+    it "an --out whose parent folder may not be searched, and an --svg in it, said so with the other faults (it said \"does not exist\", and the --svg failed after the run; as root, every folder may be)" $
+      withTempDir $ \dir -> do
+        uid <- getEffectiveUserID
+        if uid == 0 then pendingWith "root searches every folder: run as another user (see the test)" else do
+          createDirectory (dir </> "locked")
+          createDirectory (dir </> "locked" </> "sub")
+          setFileMode (dir </> "locked") 0o600
+          let o = (quick (dir </> "locked" </> "sub" </> "out")) { optLog = Just (dir </> "nolog" </> "run.jsonl")
+                                                                 , optSvg = Just (dir </> "locked" </> "a.svg") }
+          (out, err, r) <- captured (runSimWith o (Just world) drive drive)
+          setFileMode (dir </> "locked") 0o700
+          (r, out) `shouldBe` (Left (ExitFailure 2), "")
+          map (dropWhile (== ' ')) (lines err) `shouldSatisfy` \ls ->
+            elem ("cannot write frames to " ++ show (dir </> "locked" </> "sub" </> "out") ++ ": it cannot be reached: the folder "
+                  ++ show (dir </> "locked") ++ " on its path may not be searched (no x permission)") ls
+            && any ("--log" `isPrefixOf`) ls
+            -- (a file in it was refused only after the run, by the write)
+            && elem ("--svg " ++ show (dir </> "locked" </> "a.svg") ++ ": its folder, " ++ show (dir </> "locked")
+                     ++ ", may not be searched (no x permission)") ls
     it "an empty --out" $ do
       parseSimArgs defaultSimOptions ["--out", ""] `shouldSatisfy` either ("--out" `isInfixOf`) (const False)
       refused (\_ -> (quick "") { optFrames = True }) ("--out" `isInfixOf`)

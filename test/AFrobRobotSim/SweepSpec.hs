@@ -14,7 +14,7 @@ import qualified Data.Map            as M
 import           Data.Maybe          (fromMaybe, isJust)
 import           Data.Ratio          (Ratio, (%))
 import qualified Data.Set            as S
-import           Data.List           (intercalate, isInfixOf, isPrefixOf, sort)
+import           Data.List           (intercalate, isInfixOf, isPrefixOf, isSuffixOf, sort)
 import           Data.Word           (Word8)
 import           System.Directory    (canonicalizePath, copyFile, createDirectory, createDirectoryIfMissing, createFileLink, doesFileExist, findExecutable,
                                       getPermissions, listDirectory, makeAbsolute, setOwnerExecutable,
@@ -294,6 +294,24 @@ spec = do
       headings [[("q", "\"fast\""), ("empty", ""), ("my name", "caf\233")]] `shouldBe`
         [ "== world=default empty=\"\" \"my name\"=caf\233 q=\"\\\"fast\\\"\"  (1 runs, 0 failed)" ]
 
+    it "files the sweep's line for a run with no result and no --world (world null) with the result lines' own world (it went under \"default\" apart from the program's runs)" $ do
+      let own w = replace "\"world\":\"default\"" ("\"world\":" ++ w)
+          noResult seed = "{\"program\":\"p\",\"world\":null,\"seed\":" ++ show seed ++ ",\"params\":{\"speed\":\"0.1\"}"
+                          ++ ",\"flags\":\"--seed " ++ show seed ++ " --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
+          tableOf' ls = either (\e -> "refused: " ++ e) id (mergeResults (unlines ls))
+      -- the program's own world
+      lines (tableOf' (map (own "\"program\"") (take 2 sampleLines) ++ [noResult (7 :: Int)]))
+        `shouldSatisfy` elem "== world=program speed=0.1  (3 runs, 1 failed)"
+      -- the built-in default, in any order of the lines
+      forM_ [noResult (7 :: Int) : take 2 sampleLines, take 2 sampleLines ++ [noResult (7 :: Int)]] $ \ls ->
+        lines (tableOf' ls) `shouldSatisfy` elem "== world=default speed=0.1  (3 runs, 1 failed)"
+      -- no result line to tell: said as not given
+      lines (tableOf' [noResult (7 :: Int)]) `shouldSatisfy` elem "== world=(not given) speed=0.1  (1 runs, 1 failed)"
+      -- a run that is a result line too is merged twice
+      tableOf' (take 2 sampleLines ++ [noResult (2 :: Int)]) `shouldSatisfy`
+        ("refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too" `isPrefixOf`)
+      -- a result line must name its world
+      tableOf' [own "null" (head sampleLines)] `shouldSatisfy` ("refused: line 1: not a result line of a sweep" `isPrefixOf`)
     it "refuses a line that is neither a run's result line nor the sweep's line for a run with no result" $ do
       let failureLine = "{\"program\":\"p\",\"world\":\"default\",\"seed\":\"007\",\"params\":{\"speed\":\"1\"}"
                         ++ ",\"flags\":\"--seed 007 --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
@@ -420,6 +438,14 @@ spec = do
     it "collects NAME=VALUE pairs in order, a repeated name keeping its last value" $
       simParamsOf ["--seed", "3", "--param", "a=1", "--param", "b=x=y", "--param", "a=2", "--param", "c="]
         `shouldBe` [("a", "2"), ("b", "x=y"), ("c", "")]
+    it "a name given twice: the run warns, naming the values and the one used (the last), and exits 0" $ withTempDir $ \dir -> do
+      (code, err, line) <- runOnce dir ["--seconds", "0.1", "--param", "speed=0.2", "--param", "tag=x", "--param", "speed=0.3"]
+      code `shouldBe` ExitSuccess
+      map (drop 1 . dropWhile (/= ':')) (lines err) `shouldBe`
+        [" warning: --param speed is given twice, speed=0.2 then speed=0.3: the last, speed=0.3, is used"]
+      field ["params"] (parsed line) `shouldBe` JObject [("speed", JString "0.3"), ("tag", JString "x")]
+      (_, err3, _) <- runOnce dir ["--seconds", "0.1", "--param", "speed=1", "--param", "speed=2", "--param", "speed=1"]
+      err3 `shouldSatisfy` (": warning: --param speed is given 3 times, speed=1 then speed=2 then speed=1: the last, speed=1, is used\n" `isSuffixOf`)
     it "rejects a value without a name or an =" $ do
       parseSimArgs defaultSimOptions ["--param", "speed"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
       parseSimArgs defaultSimOptions ["--param", "=1"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
@@ -507,7 +533,8 @@ spec = do
         length (lines line) `shouldBe` 1
         pure (parsed line)
       forM_ results $ \r -> do
-        field ["world"] r `shouldBe` JString "default"
+        -- (the child runs a world of its own: runSim (Just world); it was "default")
+        field ["world"] r `shouldBe` JString "program"
         field ["seed"] r `shouldBe` JNumber 3
         field ["dt"] r `shouldBe` JNumber 0.01
         field ["seconds"] r `shouldBe` JNumber 2
@@ -641,7 +668,7 @@ spec = do
       rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
       map (field ["params"]) rs `shouldBe` replicate 2 (JObject [("note", JString "a\tb")])
       table <- merged dir [dir </> "r.jsonl"]
-      filter ("== " `isPrefixOf`) (lines table) `shouldBe` ["== world=default note=\"a\\tb\"  (2 runs, 1 failed)"]
+      filter ("== " `isPrefixOf`) (lines table) `shouldBe` ["== world=program note=\"a\\tb\"  (2 runs, 1 failed)"]
 
     it "a run that writes no result is filed under the world and parameters it got after --, the job line's winning (it was filed under the job line's alone)" $ withTempDir $ \dir -> do
       requireParallel

@@ -26,7 +26,7 @@ module AFrobRobotSim.Options.Check
   , keyTimeOk
   , seedOk
     -- * Numbers in messages
-  , num
+  , readableNumber
   ) where
 
 import           Data.Char       (toLower)
@@ -50,18 +50,18 @@ validateOptions o =
   -- given to 'AFrobRobotSim.runSimWith': the simulator stopped at them
   -- with a bare error, after the log was begun)
   ++ [ "--seconds must be a number >= 0, got " ++ full secs | finite secs, not (secondsOk secs) ]
-  ++ [ "--dt must be a positive number up to " ++ num maxTimeStep ++ ", got " ++ full dt
+  ++ [ "--dt must be a positive number up to " ++ readableNumber maxTimeStep ++ ", got " ++ full dt
      | finite dt, dt > 0, not (dtOk dt) ]
-  ++ [ "--odometry-noise must be a number from 0 to " ++ num maxOdometryNoise ++ ", got " ++ show noise
+  ++ [ "--odometry-noise must be a number from 0 to " ++ readableNumber maxOdometryNoise ++ ", got " ++ show noise
      | not (noiseOk noise) ]
   ++ [ "--scale must be a positive number, got " ++ full x | Just x <- [optScale o], finite x, x <= 0 ]
   ++ [ "--seed must be a whole number from -2^53 to 2^53, got " ++ show (optSeed o)
      | not (seedOk (toInteger (optSeed o))) ]
   ++ [ "--keys: a key press's time must be a finite number >= 0, got " ++ show t ++ " for " ++ show k
      | (t, k) <- optKeys o, not (keyTimeOk t) ]
-  ++ [ "--seconds " ++ num secs ++ " with --dt " ++ num dt ++ " is "
-       ++ (if isInfinite steps then "more steps than a number holds" else num steps ++ " steps")
-       ++ ", more than the " ++ num maxSteps ++ " allowed"
+  ++ [ "--seconds " ++ readableNumber secs ++ " with --dt " ++ readableNumber dt ++ " is "
+       ++ (if isInfinite steps then "more steps than a number holds" else readableNumber steps ++ " steps")
+       ++ ", more than the " ++ readableNumber maxSteps ++ " allowed"
      | all finite [secs, dt], dt > 0, tooMany ]
   ++ [ "--seconds " ++ full secs ++ " with --dt " ++ full dt ++ " is less than half a step, so nothing would be"
        ++ " simulated after time 0 (a run takes the whole number of steps nearest seconds / dt); give"
@@ -69,11 +69,11 @@ validateOptions o =
      | all finite [secs, dt], dt > 0, secs > 0, stepsBeforeFloor secs dt < 1 ]
   ++ [ "--fps times --dt must not exceed 1 (at most one frame per time step)"
      | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
-  ++ [ "--dt " ++ num dt ++ " does not divide the frame period 1/" ++ num fps ++ " s; --fps "
+  ++ [ "--dt " ++ readableNumber dt ++ " does not divide the frame period 1/" ++ readableNumber fps ++ " s; --fps "
        ++ suggestion ++ " would work"
      | finite fps, finite dt, dt > 0, fps > 0, fps * dt <= 1 + 1e-9, fps * dt >= 1e-9, not tooMany
      , not (divides fps) ]
-  ++ [ "--fps " ++ num fps ++ " is less than one frame in 10^9 steps of --dt " ++ num dt
+  ++ [ "--fps " ++ readableNumber fps ++ " is less than one frame in 10^9 steps of --dt " ++ readableNumber dt
      | finite fps, finite dt, fps > 0, dt > 0, fps * dt < 1e-9 ]
   ++ [ "--out must not be empty" | null (optOut o) ]
   ++ [ flag ++ " must not be empty (a file name)"
@@ -112,12 +112,13 @@ validateOptions o =
 validateOptionsIn :: Bounds -> SimOptions -> [String]
 validateOptionsIn b@(Bounds x0 y0 x1 y1) o =
   validateOptions o
-  ++ [ "--scale " ++ num scale ++ " makes the frame of this " ++ num w ++ " by " ++ num h
-       ++ " m world " ++ num side ++ " pixels on its long side, more than " ++ num maxFrameSide
+  ++ [ "--scale " ++ readableNumber scale ++ " makes the frame of this " ++ readableNumber w ++ " by "
+       ++ readableNumber h ++ " m world " ++ readableNumber side ++ " pixels on its long side, more than "
+       ++ readableNumber maxFrameSide
      | finite scale, side > maxFrameSide ]
-  ++ [ "--scale " ++ num scale ++ " draws this " ++ num w ++ " by " ++ num h ++ " m world " ++ num (side - 20)
-       ++ " pixels across, too small to show it (at least " ++ num minWorldPixels ++ "; without --scale it is "
-       ++ num fitPixels ++ ")"
+  ++ [ "--scale " ++ readableNumber scale ++ " draws this " ++ readableNumber w ++ " by " ++ readableNumber h
+       ++ " m world " ++ readableNumber (side - 20) ++ " pixels across, too small to show it (at least "
+       ++ readableNumber minWorldPixels ++ "; without --scale it is " ++ readableNumber fitPixels ++ ")"
      | finite scale, side - 20 < minWorldPixels ]
   where
     scale = scaleFor b o
@@ -173,9 +174,11 @@ seedOk :: Integer -> Bool
 seedOk x = abs x <= maxSeed
 
 -- | A number as a person writes it, in the checks' messages and the
--- flags': 25, 0.01, 33.333, 1e+20.
-num :: Double -> String
-num x
+-- flags': at most three decimals, no trailing zeros, and an exponent
+-- below 0.001 or from 10^9 on (25, 0.01, 33.333, 1.000e20). Not for a
+-- value to be read back: it rounds.
+readableNumber :: Double -> String
+readableNumber x
   | x /= 0 && (abs x < 1e-3 || abs x >= 1e9) = printf "%.3e" x
   | otherwise = let s = printf "%.3f" x :: String
                 in reverse (dropWhile (== '.') (dropWhile (== '0') (reverse s)))

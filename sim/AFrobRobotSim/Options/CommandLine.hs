@@ -22,7 +22,7 @@ module AFrobRobotSim.Options.CommandLine
   ) where
 
 import           Data.Char       (isSpace, toLower)
-import           Data.List       (intercalate, isSuffixOf)
+import           Data.List       (intercalate, isSuffixOf, nub)
 import           System.FilePath ((</>))
 
 import           AFrobRobotSim.Options.Check
@@ -49,22 +49,43 @@ data Command
 --
 -- A flag given twice takes its last value, but for the two that add:
 -- each @--keys@ adds its presses to the settings' ('optKeys', those given
--- included), each @--param@ sets its name's value.
+-- included), and each @--param@ of a new name adds it ('optParams'). A
+-- @--param@ whose name this command line has given already replaces that
+-- value, where it stood (the last value is used), and the name is kept
+-- with all its values in 'optParamsRepeated' (after the given settings'),
+-- so that 'AFrobRobotSim.runSimWith' warns of it: a name given twice is
+-- usually a mistake (a job line and the flags every run gets both giving
+-- it), and a run that silently used one value would be taken for a run
+-- of the other. A @--param@ that replaces a value of the given settings
+-- alone is no repeat.
 parseSimArgs :: SimOptions -> [String] -> Either String Command
-parseSimArgs o0 = go o0 False False
+parseSimArgs o0 = go o0 False False []
   where
-  -- the settings so far, and whether the SVG and the page were named
-  go o svgNamed pageNamed args = case args of
-    []                       -> check (relocated o svgNamed pageNamed)
+  -- the settings so far, whether the SVG and the page were named, and the
+  -- @--param@s of this command line so far (name and value, latest first)
+  go o svgNamed pageNamed given args = case args of
+    []                       -> check (repeats given (relocated o svgNamed pageNamed))
     "--help" : _             -> Right ShowHelp
     "-h" : _                 -> Right ShowHelp
     flag : rest | Just switch <- lookup flag switches ->
-      case switch (o, svgNamed, pageNamed) of (o', s', p') -> go o' s' p' rest
+      case switch (o, svgNamed, pageNamed) of (o', s', p') -> go o' s' p' given rest
     flag : rest | Just set <- lookup flag (valued o) -> case rest of
       v : _ | isFlag v -> Left (flag ++ " needs a value (see --help), found the flag " ++ v)
-      v : rest' -> set v >>= \o' -> go o' (svgNamed || flag == "--svg") (pageNamed || flag == "--replay") rest'
+      v : rest' -> set v >>= \o' -> go o' (svgNamed || flag == "--svg") (pageNamed || flag == "--replay")
+                                        (givenParam flag v ++ given) rest'
       []        -> Left (flag ++ " needs a value (see --help)")
     flag : _                 -> Left ("unknown argument " ++ show flag ++ " (see --help)")
+  -- (a --param's value parsed once more: 'set' has accepted it)
+  givenParam flag v
+    | flag == "--param", Right (k, x) <- parseParam v = [(argText k, x)]
+    | otherwise                                       = []
+  -- the names given more than once, in the order first given, with their values in order
+  repeats given o =
+    let inOrder = reverse given
+        names = nub (map fst inOrder)
+    in o { optParamsRepeated = optParamsRepeated o0
+                               ++ [ (k, vs) | k <- names, let vs = [ x | (k', x) <- inOrder, k' == k ]
+                                            , length vs > 1 ] }
   -- a value that is one of the flags is a value left out (@--out --no-svg@
   -- would write into a folder named @--no-svg@); @./--no-svg@ names such a file
   isFlag v = v `elem` (["--help", "-h"] ++ map fst switches ++ map fst (valued o0))
@@ -115,8 +136,8 @@ parseSimArgs o0 = go o0 False False
     _ -> Left (flag ++ " expects " ++ what flag ++ " (written as in a world file: 2, 0.5, 1e-3), got "
                ++ show v)
   what flag | flag == "--seconds"        = "a non-negative number"
-            | flag == "--odometry-noise" = "a number from 0 to " ++ num maxOdometryNoise
-            | flag == "--dt"             = "a positive number up to " ++ num maxTimeStep
+            | flag == "--odometry-noise" = "a number from 0 to " ++ readableNumber maxOdometryNoise
+            | flag == "--dt"             = "a positive number up to " ++ readableNumber maxTimeStep
             | otherwise                  = "a positive number"
   check opts = case validateOptions opts of
     []   -> Right (RunWith opts)
@@ -238,7 +259,8 @@ usage prog = intercalate "\n"
   , "  --video FILE.mp4   assemble the frames into a video (needs ffmpeg and --frames;"
   , "                     also .m4v .mkv .webm .mov .avi .gif)"
   , "  --result FILE      write the run's settings and outcome as one JSON line"
-  , "  --param NAME=VALUE a parameter the controllers read (repeatable)"
+  , "  --param NAME=VALUE a parameter the controllers read (repeatable, a name once: a name given"
+  , "                     again warns, and its last value is used)"
   , "  --help             print this usage and exit"
   ] ++ concat [ "\n\n" ++ prog ++ " --replay-from F.jsonl --replay OUT.html\n"
                 ++ "  turns a run log written with --log into a replay page (simulates nothing)"

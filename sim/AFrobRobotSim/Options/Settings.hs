@@ -48,6 +48,11 @@ data SimOptions = SimOptions
   , optReplay        :: Maybe FilePath     -- ^ write the HTML replay page
   , optResult        :: Maybe FilePath     -- ^ write the result line (settings and outcome)
   , optParams        :: [(String, String)] -- ^ the @--param@s, in order, one per name
+  , optParamsRepeated :: [(String, [String])]
+    -- ^ each @--param@ name the command line gives more than once, in the
+    -- order first given, with all its values in the order given (the last
+    -- is its value in 'optParams'); 'AFrobRobotSim.runSimWith' warns of
+    -- each. Set by 'AFrobRobotSim.Options.parseSimArgs'; @[]@ by default.
   } deriving (Eq, Show)
 
 -- | The defaults listed in "AFrobRobotSim.Options": no frames, the SVG
@@ -58,7 +63,8 @@ defaultSimOptions = SimOptions
   , optScale = Nothing, optKeys = [], optSeed = 0, optOdometryNoise = 0, optQuiet = False
   , optWorldFile = Nothing, optDumpWorld = False, optRays = False, optTrails = False
   , optSvg = Just (defaultOut </> "run.svg"), optVideo = Nothing, optLog = Nothing
-  , optReplay = Just (defaultOut </> "replay.html"), optResult = Nothing, optParams = [] }
+  , optReplay = Just (defaultOut </> "replay.html"), optResult = Nothing, optParams = []
+  , optParamsRepeated = [] }
 
 defaultOut :: FilePath
 defaultOut = "simbot-out"

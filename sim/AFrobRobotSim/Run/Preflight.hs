@@ -8,7 +8,9 @@
 --
 -- 'AFrobRobotSim.runSim' simulates only when 'preflight' finds nothing
 -- wrong: the options together ('validateOptionsIn'), every output's folder
--- (it exists and may be written; through a symbolic link, the target's),
+-- (it exists and may be written and searched; through a symbolic link,
+-- the target's; what is wrong said as 'folderState' tells it: a folder
+-- on the way that may not be searched is not \"does not exist\"),
 -- an output named as a folder (@x\/@, @foo\/..@), an output in the
 -- kernel's @\/proc@ or @\/sys@ that is no link, device or pipe,
 -- two outputs that are one file under two names (a path, a link, a hard
@@ -16,7 +18,11 @@
 -- output that is the world file or that a frame would replace (a name
 -- like @frame-000001.ppm@ in the frames' folder), @--video@
 -- without ffmpeg, and the output folder, which it creates, proving it
--- writable with a file of a new name that it removes.
+-- writable with a file of a new name that it removes. What is wrong with
+-- the output folder that can be told without making it (a file or a link
+-- to nothing in its place, a parent not there, a folder on its path that
+-- may not be searched, no permission to write) is listed with the other
+-- faults.
 module AFrobRobotSim.Run.Preflight
   ( preflight
   ) where
@@ -25,9 +31,9 @@ import           Control.Exception         (IOException, catch, finally, mask, t
 import           Control.Monad             (forM, unless)
 import           Data.List                 (isPrefixOf)
 import           Data.Maybe                (catMaybes, isJust)
-import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist, doesPathExist,
+import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
                                             findExecutable, getPermissions, getSymbolicLinkTarget,
-                                            pathIsSymbolicLink, removeFile, writable)
+                                            pathIsSymbolicLink, removeFile, searchable, writable)
 import           System.FilePath           (dropTrailingPathSeparator, normalise, takeDirectory, takeFileName, (</>))
 import           System.IO                 (hClose, hPutStr, openTempFile)
 #if !defined(mingw32_HOST_OS)
@@ -37,7 +43,7 @@ import           System.Posix.Files        (FileStatus, getFileStatus, getSymbol
 
 import           AFrobRobotSim.Console     (ioErrorText)
 import           AFrobRobotSim.Options
-import           AFrobRobotSim.OutputFile  (fileIdentity, notAFolder)
+import           AFrobRobotSim.OutputFile  (FolderState (..), fileIdentity, folderState, folderStateText, notAFolder)
 import           AFrobRobotSim.Run.Sinks   (framePattern, isFrameName)
 import           AFrobRobotSim.World       (Bounds)
 import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
@@ -173,10 +179,12 @@ preflight bounds opts = do
       case why of
         Just w -> pure [ flag ++ " " ++ show f ++ ": its folder, " ++ show dir ++ ", " ++ w ]
         Nothing -> do
-          w <- writable <$> getPermissions dir
+          p <- getPermissions dir
           exists <- doesFileExist f
           fw <- if exists then writable <$> getPermissions f else pure True
-          pure [ flag ++ " " ++ show f ++ ": cannot write there" | not (w || (exists && fw)) ]
+          pure $ if | not (searchable p) -> [ flag ++ " " ++ show f ++ ": its folder, " ++ show dir ++ ", " ++ noSearch ]
+                    | otherwise -> [ flag ++ " " ++ show f ++ ": cannot write there" | not (writable p || (exists && fw)) ]
+    noSearch = "may not be searched (no x permission)"
     quietly act = act `catch` \(_ :: IOException) -> pure ()
     -- the output folder: created if its parent exists, then proven writable
     -- (without --frames only the SVG, page, log or result go there)
@@ -195,19 +203,29 @@ preflight bounds opts = do
          | otherwise -> do
              there <- doesDirectoryExist dir
              let at = if there then dir else takeDirectory dir
-             w <- either (\(_ :: IOException) -> True) writable <$> try (getPermissions at)
-             pure [ writeTo ++ show dir ++ ": " ++ (if there then "cannot write there" else "cannot make it in " ++ show at)
-                    ++ " (no permission, or a read-only file system)"
-                  | not w ]
-    -- (its name taken by a file, or its parent not there)
+                 whereTo = if there then "cannot write there" else "cannot make it in " ++ show at
+             p <- either (\(_ :: IOException) -> Nothing) Just <$> try (getPermissions at)
+             pure $ case p of
+               Just ps | not (searchable ps) ->
+                 [ writeTo ++ show dir ++ ": " ++ whereTo ++ ": " ++ show at ++ " " ++ noSearch ]
+               Just ps | not (writable ps) ->
+                 [ writeTo ++ show dir ++ ": " ++ whereTo ++ " (no permission, or a read-only file system)" ]
+               _ -> []
+    -- (its name taken by a file or by a link to nothing, a folder on its
+    -- path that may not be searched, or its parent not there)
     folderShape dir = do
-      there <- doesDirectoryExist dir
-      parentThere <- doesDirectoryExist (takeDirectory dir)
-      taken <- doesPathExist dir
-      pure $ if | not there && taken -> [ writeTo ++ show dir ++ ": it is a file, not a folder" ]
-                | not there && not parentThere ->
-                    [ writeTo ++ show dir ++ ": the folder " ++ show (takeDirectory dir) ++ " does not exist" ]
-                | otherwise -> []
+      here <- folderState dir
+      let parentDir = takeDirectory dir
+      parent <- folderState parentDir
+      pure $ case here of
+        AFolder -> []
+        NotAFolder -> [ writeTo ++ show dir ++ ": it is a file, not a folder" ]
+        NothingThere -> case parent of
+          AFolder      -> []
+          NotAFolder   -> [ writeTo ++ show dir ++ ": " ++ show parentDir ++ " is a file, not a folder" ]
+          _            -> [ writeTo ++ show dir ++ ": the folder " ++ show parentDir ++ " "
+                            ++ maybe "" id (folderStateText parent) ]
+        _ -> [ writeTo ++ show dir ++ ": it " ++ maybe "" id (folderStateText here) ]
     checkFolder dir = do
       early <- folderShape dir
       if | not (null early) -> pure early

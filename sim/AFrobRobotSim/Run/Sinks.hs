@@ -59,7 +59,7 @@ import           AFrobRobotSim.OutputFile  (writeWhole)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Render.SVG  (svgOf)
 import           AFrobRobotSim.Replay
-import           AFrobRobotSim.Result      (resultJSON, startTallies, stepTallies)
+import           AFrobRobotSim.Result      (WorldSource, resultJSON, startTallies, stepTallies)
 import           AFrobRobotSim.Simulator
 import           AFrobRobotSim.World       (WorldTemplate)
 
@@ -262,11 +262,12 @@ replaySink r file =
                   (writeReplay r summary file))
 
 -- | The result line (settings and outcome), written at the end however the
--- run ended; the robots' tallies are its only state. Before the first
+-- run ended, naming the world by where it came from; the robots' tallies
+-- are its only state. Before the first
 -- state (a controller that fails at its first sample) they are the
 -- robots as the world places them ('startRobotStates'), not none.
-resultSink :: String -> SimOptions -> WorldTemplate -> FilePath -> IO Sink
-resultSink prog opts world file = do
+resultSink :: String -> SimOptions -> WorldSource -> WorldTemplate -> FilePath -> IO Sink
+resultSink prog opts source world file = do
   ref <- newIORef (startTallies (startRobotStates world))
   let step n s = do
         old <- readIORef ref
@@ -274,7 +275,7 @@ resultSink prog opts world file = do
       finish summary = do
         tallies <- readIORef ref
         attempt (show file) Nothing
-          (writeWhole file (`writeFile` (encodeJSON (resultJSON prog opts summary tallies) ++ "\n")))
+          (writeWhole file (`writeFile` (encodeJSON (resultJSON prog opts source summary tallies) ++ "\n")))
   pure (Sink step finish)
 
 -- Run a write: its failure as a message, or its success as the line given

@@ -51,6 +51,19 @@ maxListedFailures = 1000
 -- The setting of a run: the world, then the parameters by name.
 type Setting = [(String, String)]
 
+-- The world of the sweep's line for a run that wrote no result and got no
+-- @--world@ (@"world": null@): the program's own world (a result line's
+-- @"program"@) or the built-in default (@"default"@), which the sweep
+-- cannot tell. 'renderMerge' files such runs with the result lines of
+-- that world, when the lines merged name one of the two ('ownWorlds'),
+-- as a sweep of one program does.
+unnamedWorld :: String
+unnamedWorld = ""
+
+-- The worlds a result line names when the run got no @--world@.
+ownWorlds :: [String]
+ownWorlds = ["default", "program"]
+
 -- A run's seed: as the table writes it (its JSON text), and the key that
 -- tells runs apart (an integer, or the text of any other seed).
 data Seed = Seed !String !(Either String Int)
@@ -72,8 +85,9 @@ data Run = Run
 -- a number, @dt@, @seconds@, @params@ and the @outcome@ object with
 -- @simulated@, @steps@, @interrupted@, @failure@, @robots@ and @scores@),
 -- or the line @scripts/sweep@ writes for a run that wrote none
--- (@program@, @world@, @seed@ a number or a string, @params@, @flags@,
--- and @failure@ a string where the result line has its outcome). Any
+-- (@program@, @world@ a string or @null@ when the run got no @--world@,
+-- @seed@ a number or a string, @params@, @flags@, and @failure@ a string
+-- where the result line has its outcome). Any
 -- other JSON (a run log's line, @{}@) is refused, naming what it lacks,
 -- rather than counted as a failed run.
 readRun :: JSON -> Either String Run
@@ -82,7 +96,12 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
     JObject kvs -> Right kvs
     _           -> Left "not a JSON object"
   _      <- member "program" v >>= asString
-  world  <- member "world" v >>= asString
+  worldValue <- member "world" v
+  world  <- case worldValue of
+    -- (the sweep's line for a run that got no --world: which world the
+    -- program ran, the sweep cannot tell)
+    JNull | Nothing <- lookup "outcome" fields -> Right unnamedWorld
+    _                                          -> asString worldValue
   params <- member "params" v >>= \p -> case p of
     JObject kvs -> mapM (\(k, x) -> (,) k <$> asString x) kvs
     _           -> Left "\"params\" is not an object"
@@ -193,6 +212,9 @@ noSeeds = Seeds IS.empty S.empty
 
 hasSeed :: Seed -> Seeds -> Bool
 hasSeed (Seed _ k) (Seeds is ts) = either (`S.member` ts) (`IS.member` is) k
+
+seedsUnion :: Seeds -> Seeds -> Seeds
+seedsUnion (Seeds is1 ts1) (Seeds is2 ts2) = Seeds (IS.union is1 is2) (S.union ts1 ts2)
 
 withSeed :: Seed -> Seeds -> Seeds
 withSeed (Seed _ k) (Seeds is ts) = either (\t -> Seeds is (S.insert t ts)) (\i -> Seeds (IS.insert i is) ts) k
@@ -323,14 +345,22 @@ mergeResults text = do
 -- | The table of the merged lines: per setting, the mean, least and
 -- greatest of every outcome and the failed runs, then (when two or more
 -- settings vary) the same per value of each ('Left' when no line was
--- merged).
+-- merged). The sweep's lines for runs with no result that got no
+-- @--world@ (@"world": null@) are filed under the world the result lines
+-- name for such runs (@"program"@ or @"default"@), when they name one;
+-- otherwise under @world=(not given)@ ('Left' when a run so filed is a
+-- result line's too).
 renderMerge :: Merge -> Either String String
-renderMerge (Merge names groups n)
+renderMerge (Merge names groups0 n)
   | n == 0    = Left "no result lines"
-  | otherwise = Right (unlines (map printableLine
+  | otherwise = tableOf names <$> fileUnnamed groups0
+
+-- The table of the groups (see 'renderMerge').
+tableOf :: M.Map String Int -> M.Map Setting Group -> String
+tableOf names groups = unlines (map printableLine
       (  concatMap (\(s, g) -> table nameOf (showSetting s) g) (M.toList groups)
       ++ concatMap (\(kv, g) -> table nameOf (showSetting [kv] ++ " over all other settings") g) marginal
-      ++ mixed)))
+      ++ mixed))
   where
     nameOf = IM.fromList [ (i, k) | (k, i) <- M.toList names ]
     values = M.fromListWith (+) [ (k, 1 :: Int) | (k, _) <- S.toList (S.fromList (concat (M.keys groups))) ]
@@ -347,15 +377,47 @@ renderMerge (Merge names groups n)
     mergeGroups a b = Group (gRuns a + gRuns b) (gFailed a + gFailed b) (foldr listAdd (gListed a) (listedRuns (gListed b)))
                             (IM.unionWith addStat (gStats a) (gStats b)) noSeeds noSeeds M.empty
 
+-- The groups with the runs of an unnamed world ('unnamedWorld') filed
+-- under the world the result lines name for a run without @--world@, when
+-- they name one ('ownWorlds'); left as they are when they name none (every
+-- such run failed) or both (two programs' sweeps merged). A run so filed
+-- that a result line has too (the same setting and seed) is refused, as
+-- 'addRun' refuses a run merged twice.
+fileUnnamed :: M.Map Setting Group -> Either String (M.Map Setting Group)
+fileUnnamed groups = case S.toList (S.fromList [ w | ("world", w) : _ <- M.keys groups, w `elem` ownWorlds ]) of
+  [own] -> foldM (file own) named (M.toList unnamed)
+  _     -> Right groups
+  where
+    (unnamed, named) = M.partitionWithKey (\k _ -> take 1 k == [("world", unnamedWorld)]) groups
+    file own acc (setting, g) =
+      let setting' = ("world", own) : drop 1 setting
+      in case M.lookup setting' acc of
+           Nothing -> Right (M.insert setting' g acc)
+           Just g0 -> case commonSeed (gNoRes g) (seedsUnion (gNoRes g0) (gResults g0)) of
+             Just seed -> Left ("the run " ++ showSetting setting' ++ " seed " ++ seed ++ " is on a line for a run with"
+                                ++ " no result and on a result line too (a result file merged with the sweep's"
+                                ++ " line for the same run): each run may be merged once")
+             Nothing -> Right (M.insert setting' (joinGroups g0 g) acc)
+    joinGroups a b = Group (gRuns a + gRuns b) (gFailed a + gFailed b) (foldr listAdd (gListed a) (listedRuns (gListed b)))
+                           (IM.unionWith addStat (gStats a) (gStats b)) (seedsUnion (gNoRes a) (gNoRes b))
+                           (seedsUnion (gResults a) (gResults b)) (M.unionWith seedsUnion (gBySteps a) (gBySteps b))
+    commonSeed (Seeds is1 ts1) (Seeds is2 ts2) =
+      case (fst <$> IS.minView (IS.intersection is1 is2), S.lookupMin (S.intersection ts1 ts2)) of
+        (Just i, _) -> Just (show i)
+        (_, Just t) -> Just t
+        _           -> Nothing
+
 -- A setting as the table names it: @world=default speed=0.1@, each name
 -- and value as it is when it is plain (not empty; no space, @=@, quote,
 -- backslash or character that does not print), otherwise in quotes with
 -- the quote, the backslash and the characters that do not print escaped
 -- ('quote'): @mode="1 b=2"@, @note="x\ny"@. So two settings never read
 -- alike: unquoted, a value @1 b=2@ read as two parameters, and a value
--- with a newline as one with a backslash and an @n@.
+-- with a newline as one with a backslash and an @n@. The world of a run
+-- with no result and no @--world@ that 'fileUnnamed' could not file is
+-- @world=(not given)@.
 showSetting :: Setting -> String
-showSetting g = unwords [ shown k ++ "=" ++ shown v | (k, v) <- g ]
+showSetting g = unwords [ shown k ++ "=" ++ (if k == "world" && v == unnamedWorld then "(not given)" else shown v) | (k, v) <- g ]
   where
     shown t | not (null t) && all plain t = t
             | otherwise                   = quote t

@@ -23,6 +23,7 @@ import           AFrobRobotSim           (defaultWorld, simulate)
 import           AFrobRobotSim.JSON      (asArray, asNumber, member, parseJSON)
 import           AFrobRobotSim.Log       (LogSummary (..))
 import           AFrobRobotSim.Options
+import           AFrobRobotSim.Result    (WorldSource (..))
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Run.Sinks
 import           AFrobRobotSim.Simulator (RobotState (..), WorldState (..))
@@ -142,7 +143,7 @@ spec = do
     it "writes one line of JSON at the end" $
       withTempDir $ \dir -> do
         let file = dir </> "result.jsonl"
-        sink <- resultSink "sinks-spec" defaultSimOptions defaultWorld file
+        sink <- resultSink "sinks-spec" defaultSimOptions BuiltInWorld defaultWorld file
         Outcome errs _ <- feed sink
         errs `shouldBe` []
         ls <- lines <$> readFile file
@@ -162,7 +163,7 @@ spec = do
     it "reports a write that fails at the end in the outcome, and does not throw" $
       withTempDir $ \dir -> do
         let file = dir </> "no-such-folder" </> "result.jsonl"
-        sink <- resultSink "sinks-spec" defaultSimOptions defaultWorld file
+        sink <- resultSink "sinks-spec" defaultSimOptions BuiltInWorld defaultWorld file
         Outcome errs wrote <- feed sink
         wrote `shouldBe` []
         map (("cannot write " ++ show file) `isPrefixOf`) errs `shouldBe` [True]
