@@ -113,7 +113,11 @@ mergeHandle name h m0 = newLineReader h maxBound maxLineBytes >>= \src -> go src
 --   JSON, or JSON that is neither a run's result line nor the sweep's
 --   line for a run with no result, such as a run log given by mistake),
 --   or a line that repeats a run (@FILE: line N: the run ... is on an
---   earlier line too@);
+--   earlier line too@); and, once every line is read, a run on the
+--   sweep's line for a run with no result and without @--world@ that a
+--   result line has too (@the run ... is on a line for a run with no
+--   result and on a result line too ...@: no file or line is named, the
+--   two lines having been filed under one world only then);
 --
 -- * 2 when they cannot be read: a file that cannot be read, one given
 --   twice (under any name: the same canonical path, or the same device
@@ -155,7 +159,9 @@ sweepMergeMain = do
             emptyMerge args
   case renderMerge merged of
     Right out -> putStr out >> endOutput prog
-    Left _    -> stop (Fault 1 ("no result lines in " ++ (if null args then "standard input" else intercalate ", " (map displayPath args))))
+    Left e
+      | mergedRuns merged == 0 -> stop (Fault 1 ("no result lines in " ++ (if null args then "standard input" else intercalate ", " (map displayPath args))))
+      | otherwise              -> stop (Fault 1 e)
 
 -- The first file given twice, as a fault.
 sameFiles :: [FilePath] -> IO (Maybe Fault)

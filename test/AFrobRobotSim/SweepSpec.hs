@@ -307,6 +307,10 @@ spec = do
         lines (tableOf' ls) `shouldSatisfy` elem "== world=default speed=0.1  (3 runs, 1 failed)"
       -- no result line to tell: said as not given
       lines (tableOf' [noResult (7 :: Int)]) `shouldSatisfy` elem "== world=(not given) speed=0.1  (1 runs, 1 failed)"
+      -- an empty world (the sweep's line of --world '') and a parameter named
+      -- world are names as given, not the unnamed world
+      lines (tableOf' ["{\"program\":\"p\",\"world\":\"\",\"seed\":1,\"params\":{\"world\":\"\"},\"flags\":\"x\",\"failure\":\"boom\"}"])
+        `shouldSatisfy` elem "== world=\"\" world=\"\"  (1 runs, 1 failed)"
       -- a run that is a result line too is merged twice
       tableOf' (take 2 sampleLines ++ [noResult (2 :: Int)]) `shouldSatisfy`
         ("refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too" `isPrefixOf`)
@@ -402,6 +406,15 @@ spec = do
       (code, out, err) <- readProcessWithExitCode merger ["+RTS", "-M60m", "-RTS", file] ""
       (code, err) `shouldBe` (ExitSuccess, "")
       Right out `shouldBe` mergeResults line
+
+    it "afrp-sweep-merge: a run both on a result line and on the sweep's line without --world is refused as merged twice, in either order (it said: no result lines)" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      writeFile (dir </> "a.jsonl") "{\"program\":\"p\",\"world\":\"program\",\"seed\":1,\"dt\":0.01,\"seconds\":1,\"params\":{\"a\":\"1\"},\"outcome\":{\"simulated\":1,\"steps\":101,\"interrupted\":false,\"failure\":null,\"robots\":[],\"scores\":{}}}\n"
+      writeFile (dir </> "c.jsonl") "{\"program\":\"p\",\"world\":null,\"seed\":1,\"params\":{\"a\":\"1\"},\"flags\":\"x\",\"failure\":\"boom\"}\n"
+      forM_ [["a.jsonl", "c.jsonl"], ["c.jsonl", "a.jsonl"]] $ \files -> do
+        (code, out, err) <- readProcessWithExitCode merger (map (dir </>) files) ""
+        (code, out) `shouldBe` (ExitFailure 1, "")
+        err `shouldSatisfy` ("afrp-sweep-merge: the run world=program a=1 seed 1 is on a line for a run with no result and on a result line too" `isPrefixOf`)
 
     it "afrp-sweep-merge: no result line at all (empty files, empty standard input) is refused (exit 1)" $ withTempDir $ \dir -> do
       merger <- childScript dir "merge"

@@ -15,6 +15,7 @@ module AFrobRobotSim.Sweep.Merge
   ( -- * Merging
     Merge
   , emptyMerge
+  , mergedRuns
   , addLine
   , addLineUtf8
   , renderMerge
@@ -56,9 +57,11 @@ type Setting = [(String, String)]
 -- @"program"@) or the built-in default (@"default"@), which the sweep
 -- cannot tell. 'renderMerge' files such runs with the result lines of
 -- that world, when the lines merged name one of the two ('ownWorlds'),
--- as a sweep of one program does.
+-- as a sweep of one program does. (A NUL, which no world's name holds:
+-- a command line cannot pass one, so neither @--world@ nor a world of
+-- @""@, which the sweep writes for @--world ''@, reads as it.)
 unnamedWorld :: String
-unnamedWorld = ""
+unnamedWorld = "\NUL"
 
 -- The worlds a result line names when the run got no @--world@.
 ownWorlds :: [String]
@@ -261,6 +264,11 @@ data Merge = Merge !(M.Map String Int) !(M.Map Setting Group) !Int
 emptyMerge :: Merge
 emptyMerge = Merge M.empty M.empty 0
 
+-- | How many runs are merged so far (lines, blank ones not counted): 0
+-- is the one case 'renderMerge' refuses for having nothing to show.
+mergedRuns :: Merge -> Int
+mergedRuns (Merge _ _ n) = n
+
 -- Add a run, or say why not: a run of the same setting and seed (and,
 -- both being result lines, time step and duration) is there already.
 addRun :: Merge -> Run -> Either String Merge
@@ -417,7 +425,9 @@ fileUnnamed groups = case S.toList (S.fromList [ w | ("world", w) : _ <- M.keys 
 -- with no result and no @--world@ that 'fileUnnamed' could not file is
 -- @world=(not given)@.
 showSetting :: Setting -> String
-showSetting g = unwords [ shown k ++ "=" ++ (if k == "world" && v == unnamedWorld then "(not given)" else shown v) | (k, v) <- g ]
+showSetting g = unwords (zipWith (\i (k, v) -> shown k ++ "=" ++ (if i == (0 :: Int) && k == "world" && v == unnamedWorld
+                                                                 then "(not given)" else shown v))
+                                 [0 ..] g)
   where
     shown t | not (null t) && all plain t = t
             | otherwise                   = quote t

@@ -3,9 +3,8 @@ module AFrobRobotSim.Shapes.BoxSpec (spec) where
 
 import Test.Hspec
 
-import AFRP.Geometry (Point2 (..), Vector2 (..))
+import AFRP.Geometry (Point2 (..))
 import AFrobRobotSim.Shapes.Box
-import AFrobRobotSim.ShapesFixture
 
 spec :: Spec
 spec = do
