@@ -39,6 +39,8 @@ import           Data.Maybe        (listToMaybe)
 import           System.Directory  (canonicalizePath, getPermissions, getSymbolicLinkTarget, removeFile, renameFile,
                                     searchable, writable)
 import           System.FilePath   (splitDirectories, takeDirectory, takeFileName, (</>))
+import           Foreign.C.Error   (Errno (..), eLOOP, eNOTDIR)
+import           GHC.IO.Exception  (IOException (ioe_errno))
 import           System.IO.Error   (ioeSetFileName, isDoesNotExistError, isPermissionError)
 import           System.Posix.Files (FileStatus, deviceID, fileGroup, fileID, fileMode, fileOwner, getFileStatus,
                                      getSymbolicLinkStatus, isDirectory, isRegularFile, isSymbolicLink, setFileMode,
@@ -108,15 +110,16 @@ fileIdentity _ = pure Nothing
 #endif
 
 -- | What a path taken as a folder is, symbolic links followed: what
--- @stat@ says, with its two failures told apart (nothing there, or a
--- folder on the way that may not be searched) and a link to nothing told
--- from nothing.
+-- @stat@ says, with its failures told apart (nothing there, a folder on
+-- the way that may not be searched, a file where a folder on the way
+-- would be, a loop of links) and a link to nothing told from nothing.
 data FolderState
   = AFolder                       -- ^ a folder (whether it may be written is not asked)
   | NotAFolder                    -- ^ something else: a file, a device
   | NothingThere                  -- ^ nothing, not even a link
   | DanglingLink FilePath         -- ^ a symbolic link (perhaps through others) to nothing: the path not there
   | LinkLoop                      -- ^ a loop of symbolic links (or a chain too long to follow)
+  | ThroughAFile (Maybe FilePath) -- ^ a file (not a folder) on its path, or on its links' path: which, when found
   | Unsearchable (Maybe FilePath) -- ^ a folder on its path may not be searched (no x permission): which, when found
   deriving (Eq, Show)
 
@@ -134,14 +137,24 @@ folderState dir = do
             | otherwise     -> pure NotAFolder
     Left (e :: IOException)
       | isPermissionError e -> Unsearchable <$> unsearchable
+      | ioe_errno e == Just (let Errno c = eLOOP in c) -> pure LinkLoop
       | otherwise -> do
           -- (a link, which stat follows, to nothing: lstat sees it)
           l <- try (getSymbolicLinkStatus dir) :: IO (Either IOException FileStatus)
-          case l of
-            Right ls | isSymbolicLink ls ->
-              if isDoesNotExistError e then DanglingLink <$> lastTarget (40 :: Int) dir else pure LinkLoop
-            _ -> pure NothingThere
+          let link = case l of
+                Right ls -> isSymbolicLink ls
+                Left _   -> False
+          if | ioe_errno e == Just (let Errno c = eNOTDIR in c) ->
+                 -- (a file where a folder of the path, as written or as
+                 -- its links lead, would be)
+                 (\end -> ThroughAFile <$> firstFile end) =<< (if link then lastTarget (40 :: Int) dir else pure dir)
+             | link && isDoesNotExistError e -> DanglingLink <$> lastTarget (40 :: Int) dir
+             | link                          -> pure LinkLoop
+             | otherwise                     -> pure NothingThere
   where
+    -- (the first part of a path that is there and is not a folder)
+    firstFile p = listToMaybe <$> filterM isFile (init (scanl1 (</>) (splitDirectories p)))
+    isFile d = either (\(_ :: IOException) -> False) (not . isDirectory) <$> try (getFileStatus d)
     -- (the end of a chain of links: the path that is not there)
     lastTarget k f = do
       t <- try (getSymbolicLinkTarget f)
@@ -186,6 +199,7 @@ folderStateText st = case st of
   NothingThere   -> Just "does not exist"
   DanglingLink t -> Just ("is a symbolic link to " ++ show t ++ ", which does not exist")
   LinkLoop       -> Just "is a loop of symbolic links (or a chain too long to follow)"
+  ThroughAFile f -> Just ("cannot be reached: " ++ maybe "a part of its path" show f ++ " on its path is not a folder")
   Unsearchable d -> Just ("cannot be reached: " ++ maybe "a folder on its path" (\f -> "the folder " ++ show f ++ " on its path") d
                           ++ " may not be searched (no x permission)")
 

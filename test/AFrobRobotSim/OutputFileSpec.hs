@@ -36,6 +36,13 @@ spec = do
     createDirectory (dir </> "sub")
     createFileLink "sub" (dir </> "tosub")
     folderState (dir </> "tosub") `shouldReturn` AFolder
+  it "tells a file on the way, as written or where a link leads, from a loop of links (a link through a file was \"a loop\")" $ withTempDir $ \dir -> do
+    writeFile (dir </> "afile") ""
+    createFileLink (dir </> "afile" </> "sub") (dir </> "lnk")
+    folderState (dir </> "lnk") `shouldReturn` ThroughAFile (Just (dir </> "afile"))
+    folderState (dir </> "afile" </> "sub") `shouldReturn` ThroughAFile (Just (dir </> "afile"))
+    notAFolder (dir </> "afile" </> "sub") `shouldReturn`
+      Just ("cannot be reached: " ++ show (dir </> "afile") ++ " on its path is not a folder")
   it "says which folder on the way may not be searched (it said \"does not exist\"; as root, every folder may be)" $
     withTempDir $ \dir -> do
       uid <- getEffectiveUserID
