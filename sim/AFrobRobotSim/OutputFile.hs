@@ -38,7 +38,7 @@ import           Control.Monad     (filterM)
 import           Data.Maybe        (listToMaybe)
 import           System.Directory  (canonicalizePath, getPermissions, getSymbolicLinkTarget, removeFile, renameFile,
                                     searchable, writable)
-import           System.FilePath   (splitDirectories, takeDirectory, takeFileName, (</>))
+import           System.FilePath   (normalise, splitDirectories, takeDirectory, takeFileName, (</>))
 import           Foreign.C.Error   (Errno (..), eLOOP, eNOTDIR)
 import           GHC.IO.Exception  (IOException (ioe_errno))
 import           System.IO.Error   (ioeSetFileName, isDoesNotExistError, isPermissionError)
@@ -153,7 +153,7 @@ folderState dir = do
              | otherwise                     -> pure NothingThere
   where
     -- (the first part of a path that is there and is not a folder)
-    firstFile p = listToMaybe <$> filterM isFile (init (scanl1 (</>) (splitDirectories p)))
+    firstFile p = listToMaybe <$> filterM isFile (init (scanl1 (</>) (splitDirectories (normalise p))))
     isFile d = either (\(_ :: IOException) -> False) (not . isDirectory) <$> try (getFileStatus d)
     -- (the end of a chain of links: the path that is not there)
     lastTarget k f = do
