@@ -5,6 +5,7 @@ import           Test.Hspec
 
 import qualified AFRP.BasicSpec
 import qualified AFRP.ChainSpec
+import qualified AFRP.CollectionSpec
 import qualified AFRP.ConditionalSpec
 import qualified AFRP.DeferredSpec
 import qualified AFRP.DelaySpec
@@ -109,6 +110,7 @@ specs = hspec $ do
   describe "AFRP.Switch"      AFRP.SwitchSpec.spec
   describe "AFRP.Parallel"    AFRP.ParallelSpec.spec
   describe "AFRP.Parallel"    AFRP.ParallelFunctorSpec.spec
+  describe "AFRP.Internal.Collection" AFRP.CollectionSpec.spec
   describe "AFRP.Noise"       AFRP.NoiseSpec.spec
   describe "AFRP.Run"         AFRP.RunSpec.spec
   describe "AFRP.Scan"        AFRP.ScanSpec.spec

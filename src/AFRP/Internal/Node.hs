@@ -72,7 +72,7 @@
 --   @loop (second (iPre c) >>> f)@ (the shape of 'AFRP.Loop.loopPre') is
 --   recognised and stepped without a knot: the delay never looks at its
 --   current input, so the value fed back is only stored, never needed
---   during the step (see @loopPreN@ in "AFRP.Internal.SF");
+--   during the step (see @loopPreN@ in "AFRP.Internal.Loop");
 -- * any other @loop (second sf >>> f)@ (for example
 --   'AFRP.Loop.loopIntegral') ties a knot that allocates one box, not a
 --   pair to be taken apart;

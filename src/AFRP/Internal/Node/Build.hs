@@ -64,7 +64,7 @@ data Node a b where
   NStep   :: !(DTime -> a -> (# Node a b, b #)) -> Node a b
   -- | 'AFRP.Delay.iPre' holding the previous input sample (lazy: the
   -- delay never evaluates its input): outputs it and stores the current
-  -- one. Visible to @loopN@ ("AFRP.Internal.SF"), which closes a loop through it without a
+  -- one. Visible to @loopN@ ("AFRP.Internal.Loop"), which closes a loop through it without a
   -- knot.
   NPre    :: a -> Node a a
   -- | 'AFRP.Integration.integral' on 'Double' after its first sample: the
