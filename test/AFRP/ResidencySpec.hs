@@ -8,7 +8,7 @@
 -- step of the loop (its successor nodes, and through them the values
 -- stored at earlier steps) made a chain as long as the run: 307 MB at
 -- 10^6 samples for @delay@. The loop now takes the fed-back value from
--- the step's output pair only ('AFRP.Internal.SF.loopK').
+-- the step's output pair only ('AFRP.Internal.Loop.loopK').
 --
 -- /The same delay, its output read once a second./ Reading the output at
 -- one sample evaluated that sample's pair only; the values fed back at
