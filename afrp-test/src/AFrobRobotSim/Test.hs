@@ -420,7 +420,10 @@ forAllRuns file config duration rcA rcB gen p =
       decided <- tryJust synchronous (evaluate (case explanation of
                                                   Nothing -> Nothing
                                                   Just e  -> let d@(t, line) = (explTime e, decidedLine e)
-                                                             in t `seq` length line `seq` Just d))
+                                                             -- (the frames around the instant made now,
+                                                             -- so that they do not hold the run's start
+                                                             -- while the page is recorded)
+                                                             in t `seq` length line `seq` length (explAround e) `seq` Just d))
       pure $ case decided of
         Right (Just d@(t, _)) -> (min duration (t + 5), Just d)
         _                     -> (duration, Nothing)

@@ -97,6 +97,9 @@ spec = do
       -- (phi(0) - phi(2)) / (Phi(2) - Phi(0)) = 0.72276...)
       refused (DistNormal (0, 1)) (Nothing, Just 2) (Just (Right 8e7))
         `shouldThrow` (\(ErrorCall m) -> "average 0.7227" `isInfixOf` m && "about 110682" `isInfixOf` m)
+      -- (steps too small to count: said so, not as a number of 309 digits)
+      refused (DistNormal (0, 1e-300)) (Nothing, Just 1e300) (Just (Right 1e10))
+        `shouldThrow` (\(ErrorCall m) -> "would need more steps than a number holds" `isInfixOf` m)
     it "a normal distribution that is not one, or that misses the range (instead of drawing forever)" $ do
       fails (refused (DistNormal (1, 0)) (Just 2, Nothing) (Just (Left 3)))
       fails (refused (DistNormal (0.1, -1)) (Nothing, Nothing) (Just (Left 3)))
