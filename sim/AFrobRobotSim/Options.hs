@@ -43,7 +43,9 @@
 -- @--dt@), the frame period @1 / fps@ is a whole number of steps;
 -- 'validateOptionsIn', once the world is known, also that the frame is at
 -- most 'maxFrameSide' pixels wide and tall. A @--video@'s name must end
--- in one of 'videoExtensions'.
+-- in one of 'videoExtensions'. Options set in code are held to what the
+-- flags hold them to, and 'optParams' to one value a name (a command line
+-- keeps a repeated @--param@'s last value, and warns).
 --
 -- = Scale
 --

@@ -43,6 +43,9 @@ spec = do
       faults d { optSeed = 2 ^ (60 :: Int) } `shouldBe` ["--seed must be a whole number from -2^53 to 2^53, got 1152921504606846976"]
       faults d { optKeys = [(1, 'a'), (-2, 'b')] } `shouldBe` ["--keys: a key press's time must be a finite number >= 0, got -2.0 for 'b'"]
       faults d { optDt = 2e6, optSeconds = 4e6, optFps = 1e-7 } `shouldSatisfy` elem "--dt must be a positive number up to 1000000, got 2000000.0"
+      -- (a parameter's name twice in optParams: the result line would hold the key twice)
+      faults d { optParams = [("a", "1"), ("b", "2"), ("a", "3")] }
+        `shouldBe` ["--param a is in the settings' parameters (optParams) 2 times; a name holds one value"]
       -- (and the limits themselves are fine)
       faults d { optOdometryNoise = 1, optSeed = 2 ^ (53 :: Int), optKeys = [(0, 'a')], optSeconds = 0 } `shouldBe` []
   describe "readableNumber (the helper once exported as num)" $

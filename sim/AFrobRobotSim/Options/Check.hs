@@ -30,7 +30,7 @@ module AFrobRobotSim.Options.Check
   ) where
 
 import           Data.Char       (toLower)
-import           Data.List       (intercalate)
+import           Data.List       (intercalate, nub)
 import           Numeric         (showFFloat)
 import           System.FilePath (takeExtension)
 import           Text.Printf     (printf)
@@ -75,6 +75,8 @@ validateOptions o =
      , not (divides fps) ]
   ++ [ "--fps " ++ readableNumber fps ++ " is less than one frame in 10^9 steps of --dt " ++ readableNumber dt
      | finite fps, finite dt, fps > 0, dt > 0, fps * dt < 1e-9 ]
+  ++ [ "--param " ++ k ++ " is in the settings' parameters (optParams) " ++ show n ++ " times; a name holds one value"
+     | (k, n) <- repeatedNames (map fst (optParams o)) ]
   ++ [ "--out must not be empty" | null (optOut o) ]
   ++ [ flag ++ " must not be empty (a file name)"
      | (flag, Just "") <- [ ("--svg", optSvg o), ("--replay", optReplay o), ("--log", optLog o)
@@ -182,3 +184,9 @@ readableNumber x
   | x /= 0 && (abs x < 1e-3 || abs x >= 1e9) = printf "%.3e" x
   | otherwise = let s = printf "%.3f" x :: String
                 in reverse (dropWhile (== '.') (dropWhile (== '0') (reverse s)))
+
+-- The names that come more than once, in the order first met, with their
+-- counts (for options set in code: a command line keeps one value a name
+-- in 'optParams', and its repeats in 'optParamsRepeated').
+repeatedNames :: [String] -> [(String, Int)]
+repeatedNames ks = [ (k, n) | k <- nub ks, let n = length (filter (== k) ks), n > 1 ]
