@@ -30,7 +30,7 @@ module AFrobRobotSim.Run.Preflight
 import           Control.Exception         (IOException, catch, finally, mask, try)
 import           Control.Monad             (forM, unless)
 import           Data.List                 (isPrefixOf)
-import           Data.Maybe                (catMaybes, isJust)
+import           Data.Maybe                (catMaybes, fromMaybe, isJust)
 import           System.Directory          (createDirectory, doesDirectoryExist, doesFileExist,
                                             findExecutable, getPermissions, getSymbolicLinkTarget,
                                             pathIsSymbolicLink, removeFile, searchable, writable)
@@ -224,8 +224,8 @@ preflight bounds opts = do
           AFolder      -> []
           NotAFolder   -> [ writeTo ++ show dir ++ ": " ++ show parentDir ++ " is a file, not a folder" ]
           _            -> [ writeTo ++ show dir ++ ": the folder " ++ show parentDir ++ " "
-                            ++ maybe "" id (folderStateText parent) ]
-        _ -> [ writeTo ++ show dir ++ ": it " ++ maybe "" id (folderStateText here) ]
+                            ++ fromMaybe "" (folderStateText parent) ]
+        _ -> [ writeTo ++ show dir ++ ": it " ++ fromMaybe "" (folderStateText here) ]
     checkFolder dir = do
       early <- folderShape dir
       if | not (null early) -> pure early

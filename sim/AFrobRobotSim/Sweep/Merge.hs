@@ -314,8 +314,11 @@ addRun (Merge names groups n) run
 addLine :: Merge -> String -> Either String Merge
 addLine m l
   | all isSpace l = Right m
-  | otherwise = either (\e -> Left ("not a result line of a sweep (not JSON: " ++ e ++ ")")) Right (parseJSON l)
-                  >>= readRun >>= addRun m
+  | otherwise = either (Left . notJSON) Right (parseJSON l) >>= readRun >>= addRun m
+
+-- The message of a line that is not JSON (the parser's message given).
+notJSON :: String -> String
+notJSON e = "not a result line of a sweep (not JSON: " ++ e ++ ")"
 
 -- | 'addLine' of a line's bytes, found to be UTF-8: the same merge, or the
 -- same message, as 'addLine' of its text. The bytes are parsed as they
@@ -330,7 +333,7 @@ addLineUtf8 m u
         -- (a line blank but for spaces beyond ASCII, U+00A0 and the like,
         -- is blank to 'isSpace' too)
         | B.any (>= 0x80) bs, Right l <- utf8Text "" bs, all isSpace l -> Right m
-        | otherwise -> Left ("not a result line of a sweep (not JSON: " ++ e ++ ")")
+        | otherwise -> Left (notJSON e)
   where
     bs = utf8Bytes u
     asciiSpace b = b == 0x20 || (b >= 0x09 && b <= 0x0d)
@@ -376,14 +379,12 @@ tableOf names groups = unlines (map printableLine
     -- with two or more settings varying, also each value of each over all the others
     marginal
       | length varying > 1 =
-          M.toList (M.fromListWith (flip mergeGroups) [ (kv, g) | (s, g) <- M.toList groups, kv@(k, _) <- s, k `elem` varying ])
+          M.toList (M.fromListWith (flip (joinGroups False)) [ (kv, g) | (s, g) <- M.toList groups, kv@(k, _) <- s, k `elem` varying ])
       | otherwise = []
     nMixed = length [ () | g <- M.elems groups, M.size (gBySteps g) > 1 ]
     mixed = [ "== note: " ++ show nMixed ++ (if nMixed == 1 then " setting mixes" else " settings mix")
               ++ " runs of different dt, seconds or odometry noise, which the table does not tell apart (give"
               ++ " each a --param to tell them apart)" | nMixed > 0 ]
-    mergeGroups a b = Group (gRuns a + gRuns b) (gFailed a + gFailed b) (foldr listAdd (gListed a) (listedRuns (gListed b)))
-                            (IM.unionWith addStat (gStats a) (gStats b)) noSeeds noSeeds M.empty
 
 -- The groups with the runs of an unnamed world ('unnamedWorld') filed
 -- under the world the result lines name for a run without @--world@, when
@@ -405,15 +406,25 @@ fileUnnamed groups = case S.toList (S.fromList [ w | ("world", w) : _ <- M.keys 
              Just seed -> Left ("the run " ++ showSetting setting' ++ " seed " ++ seed ++ " is on a line for a run with"
                                 ++ " no result and on a result line too (a result file merged with the sweep's"
                                 ++ " line for the same run): each run may be merged once")
-             Nothing -> Right (M.insert setting' (joinGroups g0 g) acc)
-    joinGroups a b = Group (gRuns a + gRuns b) (gFailed a + gFailed b) (foldr listAdd (gListed a) (listedRuns (gListed b)))
-                           (IM.unionWith addStat (gStats a) (gStats b)) (seedsUnion (gNoRes a) (gNoRes b))
-                           (seedsUnion (gResults a) (gResults b)) (M.unionWith seedsUnion (gBySteps a) (gBySteps b))
+             Nothing -> Right (M.insert setting' (joinGroups True g0 g) acc)
     commonSeed (Seeds is1 ts1) (Seeds is2 ts2) =
       case (fst <$> IS.minView (IS.intersection is1 is2), S.lookupMin (S.intersection ts1 ts2)) of
         (Just i, _) -> Just (show i)
         (_, Just t) -> Just t
         _           -> Nothing
+
+-- Two groups' runs as one: the runs and failures counted, the failures
+-- listed and the outcomes' tallies added; with @keepSeeds@ the seeds seen
+-- too (a setting's group, which a mixed run or a run merged twice is
+-- told by), otherwise none (a group of the per-value lines, whose seeds
+-- are never asked).
+joinGroups :: Bool -> Group -> Group -> Group
+joinGroups keepSeeds a b =
+  Group (gRuns a + gRuns b) (gFailed a + gFailed b) (foldr listAdd (gListed a) (listedRuns (gListed b)))
+        (IM.unionWith addStat (gStats a) (gStats b)) (seeds gNoRes) (seeds gResults)
+        (if keepSeeds then M.unionWith seedsUnion (gBySteps a) (gBySteps b) else M.empty)
+  where
+    seeds f = if keepSeeds then seedsUnion (f a) (f b) else noSeeds
 
 -- A setting as the table names it: @world=default speed=0.1@, each name
 -- and value as it is when it is plain (not empty; no space, @=@, quote,
@@ -425,10 +436,11 @@ fileUnnamed groups = case S.toList (S.fromList [ w | ("world", w) : _ <- M.keys 
 -- with no result and no @--world@ that 'fileUnnamed' could not file is
 -- @world=(not given)@.
 showSetting :: Setting -> String
-showSetting g = unwords (zipWith (\i (k, v) -> shown k ++ "=" ++ (if i == (0 :: Int) && k == "world" && v == unnamedWorld
-                                                                 then "(not given)" else shown v))
-                                 [0 ..] g)
+showSetting g = unwords $ case g of
+  ("world", w) : rest | w == unnamedWorld -> "world=(not given)" : map pair rest
+  _                                       -> map pair g
   where
+    pair (k, v) = shown k ++ "=" ++ shown v
     shown t | not (null t) && all plain t = t
             | otherwise                   = quote t
     plain c = isPrint c && not (isSpace c) && c `notElem` "=\"\\"
