@@ -92,6 +92,7 @@ import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout,
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
+import           AFrobRobotSim.Options.Check (timesText)
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
@@ -152,9 +153,8 @@ runSimWith opts mworld rcA rcB = do
         failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
       -- (a parameter given twice: the run uses the last value, and says so)
       let given k v = displayPath (k ++ "=" ++ argText v)
-          times n = if n == 2 then "twice" else show n ++ " times"
       unless (null (optParamsRepeated opts)) $ putErr $ unlines
-        [ prog ++ ": warning: --param " ++ displayPath k ++ " is given " ++ times (length vs) ++ ", "
+        [ prog ++ ": warning: --param " ++ displayPath k ++ " is given " ++ timesText (length vs) ++ ", "
           ++ intercalate " then " (map (given k) vs) ++ ": the last, " ++ given k (last vs) ++ ", is used"
         | (k, vs@(_ : _)) <- optParamsRepeated opts ]
       -- (a parameter no controller asked for is usually a misspelled name)

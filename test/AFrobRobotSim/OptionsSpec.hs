@@ -45,7 +45,7 @@ spec = do
       faults d { optDt = 2e6, optSeconds = 4e6, optFps = 1e-7 } `shouldSatisfy` elem "--dt must be a positive number up to 1000000, got 2000000.0"
       -- (a parameter's name twice in optParams: the result line would hold the key twice)
       faults d { optParams = [("a", "1"), ("b", "2"), ("a", "3")] }
-        `shouldBe` ["--param a is in the settings' parameters (optParams) 2 times; a name holds one value"]
+        `shouldBe` ["--param a is in the settings' parameters (optParams) twice; a name holds one value"]
       -- (and the limits themselves are fine)
       faults d { optOdometryNoise = 1, optSeed = 2 ^ (53 :: Int), optKeys = [(0, 'a')], optSeconds = 0 } `shouldBe` []
   describe "readableNumber (the helper once exported as num)" $

@@ -25,6 +25,9 @@ module AFrobRobotSim.Options.Check
   , noiseOk
   , keyTimeOk
   , seedOk
+    -- * Repeated parameters
+  , repeatedBy
+  , timesText
     -- * Numbers in messages
   , readableNumber
   ) where
@@ -75,8 +78,8 @@ validateOptions o =
      , not (divides fps) ]
   ++ [ "--fps " ++ readableNumber fps ++ " is less than one frame in 10^9 steps of --dt " ++ readableNumber dt
      | finite fps, finite dt, fps > 0, dt > 0, fps * dt < 1e-9 ]
-  ++ [ "--param " ++ k ++ " is in the settings' parameters (optParams) " ++ show n ++ " times; a name holds one value"
-     | (k, n) <- repeatedNames (map fst (optParams o)) ]
+  ++ [ "--param " ++ k ++ " is in the settings' parameters (optParams) " ++ timesText (length vs) ++ "; a name holds one value"
+     | (k, vs) <- repeatedBy (optParams o) ]
   ++ [ "--out must not be empty" | null (optOut o) ]
   ++ [ flag ++ " must not be empty (a file name)"
      | (flag, Just "") <- [ ("--svg", optSvg o), ("--replay", optReplay o), ("--log", optLog o)
@@ -185,8 +188,17 @@ readableNumber x
   | otherwise = let s = printf "%.3f" x :: String
                 in reverse (dropWhile (== '.') (dropWhile (== '0') (reverse s)))
 
--- The names that come more than once, in the order first met, with their
--- counts (for options set in code: a command line keeps one value a name
--- in 'optParams', and its repeats in 'optParamsRepeated').
-repeatedNames :: [String] -> [(String, Int)]
-repeatedNames ks = [ (k, n) | k <- nub ks, let n = length (filter (== k) ks), n > 1 ]
+-- | The names that come more than once in a list of pairs, in the order
+-- first met, each with all its values in order: how a command line's
+-- repeated @--param@s are kept ('optParamsRepeated'), and how the
+-- parameters of options set in code are checked ('validateOptions').
+--
+-- >>> repeatedBy [("a", 1), ("b", 2), ("a", 3)]
+-- [("a",[1,3])]
+repeatedBy :: Eq k => [(k, v)] -> [(k, [v])]
+repeatedBy kvs = [ (k, vs) | k <- nub (map fst kvs), let vs = [ v | (k', v) <- kvs, k' == k ], length vs > 1 ]
+
+-- | How often, in words: @twice@, @3 times@ (a repeated @--param@'s
+-- messages).
+timesText :: Int -> String
+timesText n = if n == 2 then "twice" else show n ++ " times"

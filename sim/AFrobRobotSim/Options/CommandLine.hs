@@ -22,7 +22,7 @@ module AFrobRobotSim.Options.CommandLine
   ) where
 
 import           Data.Char       (isSpace, toLower)
-import           Data.List       (intercalate, isSuffixOf, nub)
+import           Data.List       (intercalate, isSuffixOf)
 import           System.FilePath ((</>))
 
 import           AFrobRobotSim.Options.Check
@@ -80,12 +80,7 @@ parseSimArgs o0 = go o0 False False []
     | flag == "--param", Right (k, x) <- parseParam v = [(argText k, x)]
     | otherwise                                       = []
   -- the names given more than once, in the order first given, with their values in order
-  repeats given o =
-    let inOrder = reverse given
-        names = nub (map fst inOrder)
-    in o { optParamsRepeated = optParamsRepeated o0
-                               ++ [ (k, vs) | k <- names, let vs = [ x | (k', x) <- inOrder, k' == k ]
-                                            , length vs > 1 ] }
+  repeats given o = o { optParamsRepeated = optParamsRepeated o0 ++ repeatedBy (reverse given) }
   -- a value that is one of the flags is a value left out (@--out --no-svg@
   -- would write into a folder named @--no-svg@); @./--no-svg@ names such a file
   isFlag v = v `elem` (["--help", "-h"] ++ map fst switches ++ map fst (valued o0))

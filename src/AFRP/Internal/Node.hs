@@ -9,7 +9,8 @@
 -- Internal, not part of the API (exposed for the library's own tests and
 -- benchmarks; users import "AFRP", where 'AFRP.Internal.SF.SF' is
 -- abstract). "AFRP.Internal.SF" re-exports this module and holds the
--- signal-function type, its loops and its instances.
+-- signal-function type and its instances; "AFRP.Internal.Loop" the loops
+-- over nodes.
 --
 -- = Design
 --

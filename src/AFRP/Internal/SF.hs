@@ -3,7 +3,8 @@
 {-# LANGUAGE BangPatterns  #-}
 -- |
 -- Module      : AFRP.Internal.SF
--- Description : The signal-function type, its loops and the Arrow instances.
+-- Description : The signal-function type and the Arrow instances (its
+--               loops closed by "AFRP.Internal.Loop").
 --
 -- Internal, not part of the API (exposed for the library's own tests and
 -- benchmarks): users import "AFRP", where 'SF' is abstract.

@@ -100,7 +100,7 @@ slice bs i j = B.take (j - i) (B.drop i bs)
 -- shared by every string of its bytes: a log's frame names the same
 -- dozen members of every robot, its battery and the types it sees, and a
 -- string made for each took a third of the frame's value. At most
--- 'sharedStrings' strings are kept, the first in the text; any other is
+-- 'mostShared' strings are kept, the first in the text; any other is
 -- made for itself.
 sharedStrings :: B.ByteString -> M.Map B.ByteString String
 sharedStrings bs = go M.empty 0
