@@ -48,7 +48,7 @@ runExample prog e flags = case (e, flags) of
   _ -> case exampleCommand e flags of
     Left err            -> usageError prog err
     Right ShowHelp      -> putStrLn (usage (prog ++ " " ++ exName e))
-    Right (RunWith opt) -> runSimWith opt (Just (exWorld e)) (exControllerA e) (exControllerB e)
+    Right (RunWith opt) -> runSimRefereedWith opt (exReferee e) (Just (exWorld e)) (exControllerA e) (exControllerB e)
 
 suggestion :: String -> String
 suggestion name = case sortOn length [ exName e | e <- allExamples, lower name `isPrefixOf` lower (exName e) ] of

@@ -47,6 +47,12 @@ module AFrobRobotSim
   , paramOr
   , readSimParam
   , defaultWorld
+    -- ** A referee: the balls' rule, scores and goals
+  , runSimRefereed
+  , runSimRefereedWith
+  , Referee (..)
+  , noReferee
+  , LogRect (..)
     -- * Controllers and their input and output
   , SimbotController
   , SimbotProperties (..)
@@ -100,6 +106,7 @@ module AFrobRobotSim
   , RobotState (..)
   , startRobotStates
   , ControllerError (..)
+  , RefereeError (..)
     -- * World files
   , parseWorld
   , renderWorld
@@ -121,6 +128,8 @@ import           AFrobRobotSim.Result      (getSimParams, lookupSimParam, paramO
 import           AFrobRobotSim.Balls     (ballFriction, ballRestitution)
 import           AFrobRobotSim.Render    (RenderStyle (..), Scene (..), defaultRenderStyle, frameSize,
                                           renderPPM, renderSVG)
+import           AFrobRobotSim.Log.Records (LogRect (..))
+import           AFrobRobotSim.Referee   (Referee (..), noReferee)
 import           AFrobRobotSim.Run
 import           AFrobRobotSim.Robot
 import           AFrobRobotSim.Sensors   (rangeFinderMax, trackerRange)

@@ -60,6 +60,7 @@ import qualified AFrobRobotSim.ChunksSpec
 import qualified AFrobRobotSim.RayCastSpec
 import qualified AFrobRobotSim.Run.SinksSpec
 import qualified AFrobRobotSim.RayGridSpec
+import qualified AFrobRobotSim.RefereeSpec
 import qualified AFrobRobotSim.RenderSpec
 import qualified AFrobRobotSim.RunSpec
 import qualified AFrobRobotSim.SensorsSpec
@@ -166,6 +167,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.World.Check" AFrobRobotSim.World.CheckSpec.spec
   describe "AFrobRobotSim.Workers" AFrobRobotSim.WorkersSpec.spec
   describe "AFrobRobotSim.Pipeline" AFrobRobotSim.PipelineSpec.spec
+  describe "AFrobRobotSim.Referee"   AFrobRobotSim.RefereeSpec.spec
   describe "AFrobRobotSim.Render"    AFrobRobotSim.RenderSpec.spec
   describe "AFrobRobotSim.Run"       AFrobRobotSim.RunSpec.spec
   describe "AFrobRobotSim.Run.Sinks" AFrobRobotSim.Run.SinksSpec.spec

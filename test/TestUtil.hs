@@ -1,7 +1,7 @@
 {-# LANGUAGE ScopedTypeVariables #-}
 -- | Helpers shared by the specs: running signal functions on sample lists
 -- and comparing floating-point outputs; laziness checks; temporary folders;
--- a number of capabilities.
+-- a number of capabilities; a program's output captured.
 module TestUtil
   ( runDt
   , runSamples
@@ -14,11 +14,15 @@ module TestUtil
   , withoutHanging
   , withTempDir
   , withTMPDIR
+  , captured
   , withCaps
   , cLocale
   ) where
 
-import           Control.Exception (NonTermination (..), bracket, evaluate, try)
+import           Control.Exception (NonTermination (..), bracket, evaluate, finally, try)
+import           GHC.IO.Handle     (hDuplicate, hDuplicateTo)
+import           System.Exit       (ExitCode)
+import           System.IO         (IOMode (..), hClose, hFlush, stderr, stdout, withFile)
 import qualified Data.ByteString.Builder as B
 import qualified Data.ByteString.Lazy as BL
 import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
@@ -131,3 +135,23 @@ withCaps k act = bracket getNumCapabilities setNumCapabilities (\_ -> setNumCapa
 cLocale :: String -> String
 cLocale = map (\b -> if b < 0x80 then toEnum (fromIntegral b) else toEnum (0xDC00 + fromIntegral b))
           . BL.unpack . B.toLazyByteString . B.stringUtf8
+
+-- | Run an action with stdout and stderr captured into files; return what
+-- they received and how the action ended.
+captured :: IO a -> IO (String, String, Either ExitCode a)
+captured act = withTempDir $ \dir -> do
+  let outF = dir </> "out"
+      errF = dir </> "err"
+  r <- withFile outF WriteMode $ \ho -> withFile errF WriteMode $ \he ->
+         redirect stdout ho (redirect stderr he (try act))
+  o <- readAll outF
+  e <- readAll errF
+  pure (o, e, r)
+  where
+    redirect h to act' = do
+      hFlush h
+      saved <- hDuplicate h
+      (hDuplicateTo to h >> act') `finally` (hFlush h >> hDuplicateTo saved h >> hClose saved)
+    readAll f = do
+      s <- readFile f
+      length s `seq` pure s

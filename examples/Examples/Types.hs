@@ -6,7 +6,7 @@ module Examples.Types
   ( Example (..)
   ) where
 
-import           AFrobRobotSim (SimbotController, WorldTemplate)
+import           AFrobRobotSim (Referee, SimbotController, WorldTemplate)
 
 -- | One runnable example.
 data Example
@@ -21,6 +21,8 @@ data Example
       , exSeconds     :: Double            -- ^ how long a run shows it well (default for --seconds)
       , exKeys        :: [(Double, Char)]  -- ^ key presses (time, key) scripted when the command
                                            -- line gives no --keys; [] for a robot that reads no keys
+      , exReferee     :: Referee           -- ^ the run's referee ('AFrobRobotSim.runSimRefereed'): balls put
+                                           -- back, scores and goals; 'AFrobRobotSim.noReferee' for most
       }
     -- | A signal-function example from section 2: running it prints a
     -- short report (a table of sampled outputs, a property checked, ...).

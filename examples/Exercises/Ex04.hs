@@ -64,6 +64,7 @@ examples =
       , exControllerB = bounceController
       , exSeconds     = 40
       , exKeys        = []
+      , exReferee     = noReferee
       }
   , SignalExample "ex4-table"
       "Exercise 4: the negated and the recursive xspd 0.5 on a scripted stuck flag"

@@ -92,6 +92,7 @@ examples =
       , exControllerB = stopAtAlarm
       , exSeconds     = 15
       , exKeys        = []
+      , exReferee     = noReferee
       }
   ]
 

@@ -29,7 +29,7 @@ import           Data.List       (zip5)
 import           Text.Printf     (printf)
 
 import           AFrob
-import           AFrobRobotSim   (ObjectTemplate (..), SimbotController, SimbotInput)
+import           AFrobRobotSim   (ObjectTemplate (..), SimbotController, SimbotInput, noReferee)
 
 import           Examples.Types  (Example (..))
 import qualified Paper.Section2  as S2
@@ -70,6 +70,7 @@ examples =
       , exControllerB = velDriver
       , exSeconds     = 12
       , exKeys        = [(1, '+'), (3, '+'), (5, '+')]
+      , exReferee     = noReferee
       }
   ]
 

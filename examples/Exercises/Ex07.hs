@@ -46,5 +46,6 @@ examples =
       , exControllerB = rcBlindTurnStop 1.5
       , exSeconds     = 10
       , exKeys        = []
+      , exReferee     = noReferee
       }
   ]

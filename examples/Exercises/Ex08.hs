@@ -65,5 +65,6 @@ examples =
       , exControllerB = rcReverseSnap (rampUp 0.2 1.5)
       , exSeconds     = 40
       , exKeys        = []
+      , exReferee     = noReferee
       }
   ]

@@ -54,5 +54,6 @@ examples =
       , exControllerB = rcMoveToStop 1.2 0.1 (Point2 2 1)
       , exSeconds     = 25
       , exKeys        = []
+      , exReferee     = noReferee
       }
   ]

@@ -49,5 +49,6 @@ examples =
       , exControllerB = rcSine 0.45 0 1.2 5
       , exSeconds     = 24
       , exKeys        = []
+      , exReferee     = noReferee
       }
   ]

@@ -57,5 +57,6 @@ examples =
       , exControllerB = rcVisit 1.2 0.2 tourB
       , exSeconds     = 50
       , exKeys        = []
+      , exReferee     = noReferee
       }
   ]

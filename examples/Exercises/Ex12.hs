@@ -215,5 +215,6 @@ examples =
       , exControllerB = rcMazeFollower 0.5 0.4
       , exSeconds     = 100
       , exKeys        = []
+      , exReferee     = noReferee
       }
   ]

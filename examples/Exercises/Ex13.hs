@@ -140,5 +140,6 @@ examples =
       , exControllerB = rcRobustFollower 0.5 0.4
       , exSeconds     = 80
       , exKeys        = []
+      , exReferee     = noReferee
       }
   ]

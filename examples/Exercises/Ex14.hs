@@ -133,6 +133,7 @@ examples =
       , exControllerB = rcBraid notesBraid
       , exSeconds     = 30
       , exKeys        = []
+      , exReferee     = noReferee
       } ]
 
 -- The unit vector along the braid and the one a quarter turn to its left.

@@ -80,7 +80,8 @@ teamNaive rps
 -- robots) in @soccerWorld 10@, for two minutes: team A scores after about
 -- 13 s (team B's keeper calls it out). With no referee the ball is not put
 -- back on the centre mark; it rolls out of the goal, and team B scores
--- after about 55 s.
+-- after about 55 s. And @ex15-match@: the same with the match's referee
+-- ('matchReferee'), whose replay page shows the goals and the score.
 examples :: [Example]
 examples =
   [ RobotExample
@@ -91,4 +92,15 @@ examples =
       , exControllerB = teamNaive
       , exSeconds     = 120
       , exKeys        = []
+      , exReferee     = noReferee
+      }
+  , RobotExample
+      { exName        = "ex15-match"
+      , exDescription = "Exercise 15 refereed: the same teams, goals counted and the ball put back on the centre mark"
+      , exWorld       = soccerWorld 10
+      , exControllerA = teamSmart
+      , exControllerB = teamNaive
+      , exSeconds     = 120
+      , exKeys        = []
+      , exReferee     = matchReferee
       } ]

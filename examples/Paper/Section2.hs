@@ -337,6 +337,7 @@ examples =
       , exControllerB = xspdController
       , exSeconds     = 12
       , exKeys        = []
+      , exReferee     = noReferee
       }
   , RobotExample
       { exName        = "alarmSF-robot"
@@ -346,6 +347,7 @@ examples =
       , exControllerB = alarmController
       , exSeconds     = 45
       , exKeys        = []
+      , exReferee     = noReferee
       }
   ]
 

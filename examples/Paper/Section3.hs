@@ -235,7 +235,7 @@ examples =
   where
     robot name desc world ca cb secs = RobotExample
       { exName = name, exDescription = desc, exWorld = world
-      , exControllerA = ca, exControllerB = cb, exSeconds = secs, exKeys = [] }
+      , exControllerA = ca, exControllerB = cb, exSeconds = secs, exKeys = [], exReferee = noReferee }
 
 ------------------------------------------------------------------------------
 -- The worlds

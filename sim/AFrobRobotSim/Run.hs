@@ -69,10 +69,12 @@
 module AFrobRobotSim.Run
   ( runSim
   , runSimWith
+  , runSimRefereed
+  , runSimRefereedWith
   ) where
 
 import           Control.Concurrent        (getNumCapabilities)
-import           Control.Exception         (AsyncException (HeapOverflow, UserInterrupt), Exception (..), IOException,
+import           Control.Exception         (AsyncException (HeapOverflow, UserInterrupt), Exception (..), IOException, SomeException,
                                             evaluate, mask_, throwIO, try)
 import           Control.Monad             (forM, unless, when)
 import           Data.IORef
@@ -94,6 +96,7 @@ import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
 import           AFrobRobotSim.Options.Check (timesText)
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
+import           AFrobRobotSim.Referee
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
 import           AFrobRobotSim.Result      (WorldSource, unreadParams, worldSource)
@@ -111,19 +114,35 @@ import           AFrobRobotSim.WorldFile
 -- @--help@ prints the usage; a malformed command line is reported on
 -- standard error with exit code 2.
 runSim :: Maybe WorldTemplate -> SimbotController -> SimbotController -> IO ()
-runSim mworld rcA rcB = do
+runSim = runSimRefereed noReferee
+
+-- | 'runSim' with a referee: its rule for the balls and its scores are
+-- the simulator's ('AFrobRobotSim.Referee'), its goals are drawn on the
+-- replay page, and the scores reach the log, the page and the result
+-- line (the final ones in their summaries). A referee whose rule or
+-- scores fail stops the run as a failing controller does: the outputs
+-- are finished with what was simulated, the message names the rule and
+-- the time, and the exit code is 1. Goals that cannot be drawn (a
+-- coordinate not finite, a negative size) are refused before the run
+-- (exit code 2). @runSim = runSimRefereed 'noReferee'@.
+runSimRefereed :: Referee -> Maybe WorldTemplate -> SimbotController -> SimbotController -> IO ()
+runSimRefereed referee mworld rcA rcB = do
   tolerantOutput
   args <- getArgs
   prog <- getProgName
   case parseSimArgs defaultSimOptions args of
     Left err       -> failWith 2 (prog ++ ": " ++ err)
     Right ShowHelp -> putStrLn (usage prog) >> endOutput prog
-    Right (RunWith opts) -> runSimWith opts mworld rcA rcB
+    Right (RunWith opts) -> runSimRefereedWith opts referee mworld rcA rcB
 
 -- | Run a simbot program with settings given in code (the command line is
 -- not read; the log's header records the program's real arguments).
 runSimWith :: SimOptions -> Maybe WorldTemplate -> SimbotController -> SimbotController -> IO ()
-runSimWith opts mworld rcA rcB = do
+runSimWith opts = runSimRefereedWith opts noReferee
+
+-- | 'runSimWith' with a referee ('runSimRefereed').
+runSimRefereedWith :: SimOptions -> Referee -> Maybe WorldTemplate -> SimbotController -> SimbotController -> IO ()
+runSimRefereedWith opts referee mworld rcA rcB = do
   tolerantOutput   -- (a message the terminal's encoding cannot write must not stop the run)
   prog  <- getProgName
   -- (the world checked once: a file's by its reader, each problem with
@@ -148,7 +167,8 @@ runSimWith opts mworld rcA rcB = do
         Right _ -> pure ()
       endOutput prog
     else do
-      (errs, ffmpeg) <- preflight (worldBounds world) opts
+      (errs0, ffmpeg) <- preflight (worldBounds world) opts
+      let errs = errs0 ++ checkGoals referee
       unless (null errs) $
         failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
       -- (a parameter given twice: the run uses the last value, and says so)
@@ -187,31 +207,33 @@ runSimWith opts mworld rcA rcB = do
       when (all (isNothing . robotKindOf) world) $ putErr $
         prog ++ ": warning: " ++ maybe "the world" (\f -> "the world " ++ displayPath f) (optWorldFile opts)
         ++ " has no robots: the controllers will not run\n"
-      simulateRun prog opts ffmpeg (worldSource opts mworld) world rcA rcB
+      simulateRun prog opts referee ffmpeg (worldSource opts mworld) world rcA rcB
 
--- How a run's loop ended.
-data Ending = Finished | Interrupted | Failed ControllerError | WriteFailed IOException | OutOfHeap
+-- How a run's loop ended ('Failed': a controller's 'ControllerError' or
+-- the referee's 'RefereeError').
+data Ending = Finished | Interrupted | Failed SomeException | WriteFailed IOException | OutOfHeap
 
 -- One pass over the states: every sink takes every state; nothing else
 -- keeps a state, so the run's memory is the sinks' (constant but for the
 -- replay page's frames).
-simulateRun :: String -> SimOptions -> Maybe FilePath -> WorldSource -> WorldTemplate -> SimbotController
+simulateRun :: String -> SimOptions -> Referee -> Maybe FilePath -> WorldSource -> WorldTemplate -> SimbotController
             -> SimbotController -> IO ()
-simulateRun prog opts ffmpeg source world rcA rcB = interruptible $ \stopper -> do
+simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \stopper -> do
   start <- getMonotonicTime
   tty   <- hIsTerminalDevice stderr
   args  <- getArgs
   let dt       = optDt opts
       bounds   = worldBounds world
       scale    = scaleFor bounds opts
-      cfg      = defaultSimConfig { simDt = dt, simKeys = optKeys opts, simSeed = optSeed opts
-                                  , simOdometryNoise = optOdometryNoise opts, simBounds = bounds }
+      cfg      = refereeConfig referee
+                   defaultSimConfig { simDt = dt, simKeys = optKeys opts, simSeed = optSeed opts
+                                    , simOdometryNoise = optOdometryNoise opts, simBounds = bounds }
       nSteps   = runSteps opts
       scene    = Scene bounds world
       style    = RenderStyle scale (optRays opts) (optTrails opts)
       logCfg   = defaultLogConfig { lcBounds = bounds, lcWorld = world, lcDt = dt
                                   , lcFps = optFps opts, lcSeed = optSeed opts
-                                  , lcCommandLine = map argText (prog : args) }
+                                  , lcCommandLine = map argText (prog : args), lcGoals = refereeGoals referee }
       -- frame f is taken at the step nearest to simulated time f / fps
       -- (the same steps as the log's frames)
       frameAt  = isFrameStep dt (optFps opts)
@@ -228,6 +250,7 @@ simulateRun prog opts ffmpeg source world rcA rcB = interruptible $ \stopper -> 
     r <- try (newReplayRecorder replayRun logCfg)
     either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r
   stepsRef  <- newIORef (0 :: Int)
+  scoresRef <- newIORef []   -- (the last simulated state's scores, for the summaries)
   framesRef <- newIORef (0 :: Int)
   frames <- if optFrames opts then Just <$> framesSink opts scale frameAt (renderPPM style scene) framesRef
                               else pure Nothing
@@ -267,6 +290,7 @@ simulateRun prog opts ffmpeg source world rcA rcB = interruptible $ \stopper -> 
       sinkAll n s = do
         mapM_ (\k -> sinkStep k n s) inMemory
         writeIORef stepsRef $! n + 1
+        writeIORef scoresRef (wsScores s)
         mapM_ (\k -> sinkStep k n s) writing
       -- (on one capability, Ctrl-C and SIGTERM come between two steps'
       -- outputs, not in the middle of one's, unless a write waits: then
@@ -280,7 +304,8 @@ simulateRun prog opts ffmpeg source world rcA rcB = interruptible $ \stopper -> 
       -- how an exception ends the run (any other is thrown on)
       endedBy e
         | Just UserInterrupt <- fromException e       = pure Interrupted
-        | Just ce <- fromException e                  = pure (Failed ce)
+        | Just (_ :: ControllerError) <- fromException e = pure (Failed e)
+        | Just (_ :: RefereeError) <- fromException e = pure (Failed e)
         | Just (io :: IOException) <- fromException e = pure (WriteFailed io)
         -- (the heap limit, +RTS -M: the outputs are then written in
         -- what the run's states held, which they no longer need; were that
@@ -302,6 +327,7 @@ simulateRun prog opts ffmpeg source world rcA rcB = interruptible $ \stopper -> 
   finishing stopper
   when progress (hPutStr stderr eraseProgress)
   steps <- readIORef stepsRef
+  scores <- readIORef scoresRef
   nFrames <- readIORef framesRef
   end <- getMonotonicTime
   let simulated = roundTo 1e9 (fromIntegral (max 0 (steps - 1)) * dt)   -- (as the log's frames' times)
@@ -322,7 +348,7 @@ simulateRun prog opts ffmpeg source world rcA rcB = interruptible $ \stopper -> 
       failureText = case ending of
         Failed ce -> Just (displayException ce)
         _         -> stoppedText
-      summary   = LogSummary simulated steps (-1) wall interrupted failureText Nothing []
+      summary   = LogSummary simulated steps (-1) wall interrupted failureText Nothing scores
   Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
   let runErrs = maybe [] pure stoppedText
   printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"

@@ -85,12 +85,14 @@ module AFrobRobotSim.Simulator
   , startRobotStates
     -- * Failures
   , ControllerError (..)
+  , RefereeError (..)
   ) where
 
-import           Control.Exception       (Exception (..), SomeException)
+import           Control.Exception       (ErrorCall (..), Exception (..), SomeException, throw)
 import           GHC.Arr                 (Array, listArray, (!))
 import           Data.Bits               (shiftR, xor)
 import           Data.List               (foldl', sortOn)
+import qualified Data.Set                as Set
 import           Data.Word               (Word64)
 import           Text.Printf             (printf)
 
@@ -120,9 +122,20 @@ data SimConfig = SimConfig
     -- positions, 'Just' new positions puts the balls there, at rest (for
     -- example the centre mark after a goal); 'Nothing' leaves them be.
     -- It must give one position for each ball, in the same order, each
-    -- where the ball lies inside the world; otherwise the run stops there
-    -- with an error that says so. (Whether a ball so placed overlaps a
-    -- wall, block or robot is not checked.)
+    -- where the ball lies inside the world; otherwise, or if it throws,
+    -- the run stops there with a 'RefereeError' that says so. (Whether a
+    -- ball so placed overlaps a wall, block or robot is not checked.)
+  , simScores         :: SF WorldState [(String, Int)]
+    -- ^ the scores a referee keeps: a signal function of the snapshots,
+    -- stepped once a snapshot at the time step, whose output for a
+    -- snapshot is that snapshot's 'wsScores' (the first, at time 0, is
+    -- its output at time 0 on the first snapshot). It sees each snapshot
+    -- as it is but for its scores (@[]@ there), so it may keep state
+    -- ('accumHold', 'edge', ...) to count goals, say. Its output for each
+    -- snapshot is evaluated whole at that step (so that a run's memory
+    -- stays bounded); names must be distinct. If it throws, or gives a
+    -- name twice, the run stops there with a 'RefereeError'. The default,
+    -- @'constant' []@, keeps none.
   , simParallel       :: !Bool
     -- ^ whether a step may use the program's other capabilities (see
     -- "Every core" above): 'True' (the default) computes it in parallel
@@ -136,17 +149,17 @@ data SimConfig = SimConfig
     -- (The runtime's collections still stop every capability.)
   }
 
--- The balls' positions that a referee ('simBallRule') gave at a time,
--- checked: as many as there are balls, each a finite point where its disc
--- lies inside the world ('insideBounds'); otherwise an error that says
+-- The balls' positions that a referee ('simBallRule') gave, checked: as
+-- many as there are balls, each a finite point where its disc lies
+-- inside the world ('insideBounds'); otherwise an error that says
 -- what the rule did (a NaN or a ball beyond the walls was carried on into
 -- every later step, and a missing ball was silently lost).
-refereed :: Bounds -> Time -> Int -> [Position2] -> [Position2]
-refereed bounds@(Bounds x0 y0 x1 y1) t n ps
-  | k /= n = bad ("gave " ++ show k ++ " position" ++ plural k ++ " for " ++ show n ++ " ball" ++ plural n
+refereed :: Bounds -> Int -> [Position2] -> [Position2]
+refereed bounds@(Bounds x0 y0 x1 y1) n ps
+  | k /= n = bad ("it gave " ++ show k ++ " position" ++ plural k ++ " for " ++ show n ++ " ball" ++ plural n
                   ++ " (it must give one for each)")
   | (i, Point2 x y) : _ <- outside =
-      bad ("put ball " ++ show (i :: Int) ++ " (in the list's order) at (" ++ show x ++ ", " ++ show y
+      bad ("it put ball " ++ show (i :: Int) ++ " (in the list's order) at (" ++ show x ++ ", " ++ show y
            ++ "), not a point where it lies inside the world [" ++ show x0 ++ ", " ++ show x1 ++ "] x ["
            ++ show y0 ++ ", " ++ show y1 ++ "]")
   | otherwise = ps
@@ -154,7 +167,8 @@ refereed bounds@(Bounds x0 y0 x1 y1) t n ps
     k = length ps
     outside = [ ip | ip@(_, p) <- zip [1 ..] ps, not (insideBounds bounds (OTBall p)) ]
     plural m = if m == 1 then "" else "s"
-    bad what = error (printf "AFrobRobotSim.simulate: the ball rule (simBallRule) at t = %.3f s %s" t what)
+    -- (raised inside the rule's 'blaming': a 'RefereeError' at its time)
+    bad what = throw (ErrorCall what)
 
 -- | The longest time step 'simulate' takes: 10^6 s (about 11 days). The
 -- motion's arithmetic stays finite far beyond (a robot's turn overflows
@@ -170,9 +184,10 @@ maxOdometryNoise :: Double
 maxOdometryNoise = 1
 
 -- | A time step of 0.01 s, no keys, exact odometry, the notes' 10 m world,
--- no referee, the step in parallel on several capabilities.
+-- no referee (no ball rule, no scores), the step in parallel on several
+-- capabilities.
 defaultSimConfig :: SimConfig
-defaultSimConfig = SimConfig 0.01 [] 0 0 notesBounds (\_ _ -> Nothing) True
+defaultSimConfig = SimConfig 0.01 [] 0 0 notesBounds (\_ _ -> Nothing) (constant []) True
 
 -- | The state of the world at one instant.
 data WorldState = WorldState
@@ -180,15 +195,16 @@ data WorldState = WorldState
   , wsRobots   :: [RobotState]   -- ^ every robot, in template order
   , wsBalls    :: [Position2]    -- ^ every ball's centre, in template order
   , wsMessages :: [String]       -- ^ the console lines printed at this step
+  , wsScores   :: [(String, Int)] -- ^ the referee's scores at this instant ('simScores'), by name; @[]@ when it keeps none
   } deriving (Eq, Show)
 
 -- | Evaluate a snapshot as 'AFrobRobotSim.runSim' does before it writes
--- it: every robot's and ball's record, and every message whole (a
--- controller's failure at that step, a 'ControllerError', is raised
--- here).
+-- it: every robot's and ball's record, every message whole, and the
+-- scores (a controller's failure at that step, a 'ControllerError', or
+-- the scores', a 'RefereeError', is raised here).
 forceWorldState :: WorldState -> ()
 forceWorldState s = foldl' (flip seq) () (wsRobots s) `seq` foldl' (flip seq) () (wsBalls s)
-                    `seq` foldl' (flip seq) () (map length (wsMessages s))
+                    `seq` foldl' (flip seq) () (map length (wsMessages s)) `seq` foldl' (flip seq) () (wsScores s)
 
 -- | The state of one robot at one instant.
 data RobotState = RobotState
@@ -249,6 +265,11 @@ data Agent
 -- the robot's true pose, and is not kept apart).
 data Odometry = Odometry !Position2 {-# UNPACK #-} !Heading
 
+-- The referee's scores, before their first snapshot or as they continue.
+data Scores
+  = ScoresNew (SF WorldState [(String, Int)])
+  | Scores    (FutureSF WorldState [(String, Int)])
+
 data Engine = Engine
   { enStep   :: !Int
   , enRobots :: [Robot]
@@ -258,6 +279,7 @@ data Engine = Engine
   , enKeys   :: [(Time, Char)]
   , enKey    :: !(Maybe Char) -- ^ the key down at the previous step
   , enRng    :: !Word64
+  , enScores :: !Scores
   }
 
 -- | 'simulate' with explicit settings.
@@ -294,6 +316,7 @@ simulateUnchecked cfg world rcA rcB
             | otherwise  = [ Odometry (rPos r) (rHeading r) | r <- robots0 ]
     balls0  = [ Ball (otPos o) zeroVector | o@OTBall {} <- world ]
     engine0 = Engine 0 robots0 balls0 agents0 odo0 (sortOn fst (simKeys cfg)) Nothing (fromIntegral (simSeed cfg))
+                     (ScoresNew (simScores cfg))
 
     -- (on several capabilities, the workers are given the step's chunks
     -- before the snapshot is: they compute while the snapshot's reader,
@@ -320,25 +343,32 @@ simulateUnchecked cfg world rcA rcB
           (\i a r -> case senseRobotApart ctx i (odometry i r) key of
                        (input, apart) -> (stepAgent t a input, apart))
           (\apart r o -> planMoveApart dt arena apart r (soDrive o))
-        snapshot = WorldState
+        unscored = WorldState
           { wsTime     = t
           , wsRobots   = robotStates (enRobots en) (enOdo en)
           , wsBalls    = map bPos (enBalls en)
           , wsMessages = [ printf "[%.2f] %s.%d: %s" t (rpType (agProps a)) (rpId (agProps a)) m
                          | (a, o) <- zip (enAgents en) outputs, m <- soMessages o ]
+          , wsScores   = []
           }
+        -- (the scores of this snapshot, evaluated whole with the next
+        -- step's state)
+        (scores, scores') = stepScores t (enScores en) unscored
+        snapshot = unscored { wsScores = scores }
         robots' = stepRobotsPlanned (scRobotIndex ctx) plans
         moved   = stepBalls dt arena robots' (enBalls en)
-        balls'  = case simBallRule cfg (t + dt) (map bPos moved) of
-          Nothing -> moved
-          Just ps -> [ Ball q zeroVector | q <- refereed bounds (t + dt) (length moved) ps ]
+        balls'  = blaming (refereeFailed "the ball rule (simBallRule)" (t + dt)) $
+          case simBallRule cfg (t + dt) (map bPos moved) of
+            Nothing -> moved
+            Just ps -> let placed = [ Ball q zeroVector | q <- refereed bounds (length moved) ps ]
+                       in forceList placed `seq` placed
         (odo', rng') = nextOdometry (enRng en) (enRobots en) robots' (enOdo en)
         -- keys' is forced too: left lazy, it would hold the previous
         -- engine (and so the whole run) when no controller reads its input
         en' = forceList robots' `seq` forceList balls' `seq` forceList agents' `seq`
-              forceList odo' `seq` keys' `seq`
+              forceList odo' `seq` keys' `seq` scores' `seq`
               en { enStep = n + 1, enRobots = robots', enBalls = balls', enAgents = agents'
-                 , enOdo = odo', enKeys = keys', enKey = key, enRng = rng' }
+                 , enOdo = odo', enKeys = keys', enKey = key, enRng = rng', enScores = scores' }
 
     -- (the input is made with the bound on the robot's distance to the
     -- others that its move's plan takes, from one gathering of the robots
@@ -356,6 +386,24 @@ simulateUnchecked cfg world rcA rcB
     blame props t (e :: SomeException) = case fromException e of
       Just (ce :: ControllerError) -> ce
       Nothing                      -> ControllerError (rpType props) (rpId props) t e
+
+    -- The referee's scores of a snapshot, evaluated whole (names
+    -- distinct), and how they continue.
+    stepScores t sc ws = blaming (refereeFailed "the scores (simScores)" t) $
+      case (case sc of
+              ScoresNew sf -> evalAtZero sf ws
+              Scores fut   -> evalAt fut dt ws) of
+        (out, fut) -> fut `seq` checkScores out `seq` (out, Scores fut)
+    checkScores out = case repeatedName Set.empty out of
+      Nothing   -> ()
+      Just name -> throw (ErrorCall ("it gave the score " ++ show name ++ " twice (a name holds one score)"))
+    repeatedName _ [] = Nothing
+    repeatedName seen ((k, v) : more)
+      | foldr seq () k `seq` v `seq` Set.member k seen = Just k
+      | otherwise                                      = repeatedName (Set.insert k seen) more
+    refereeFailed rule t (e :: SomeException) = case fromException e of
+      Just (re :: RefereeError) -> re
+      Nothing                   -> RefereeError rule t e
 
     -- every robot's state, all at once when the list is first needed
     -- (with the noisy odometry's readings, or none when it is exact)

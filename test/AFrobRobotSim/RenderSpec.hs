@@ -19,7 +19,7 @@ style = defaultRenderStyle
 
 -- | A snapshot with the given robots and balls, at time 0.
 snapshot :: [RobotState] -> [Position2] -> WorldState
-snapshot rs bs = WorldState { wsTime = 0, wsRobots = rs, wsBalls = bs, wsMessages = [] }
+snapshot rs bs = WorldState { wsTime = 0, wsRobots = rs, wsBalls = bs, wsMessages = [], wsScores = [] }
 
 -- | A robot at rest.
 robotAt :: RobotType -> RobotId -> Position2 -> Heading -> Bool -> RobotState

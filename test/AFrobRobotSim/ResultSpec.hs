@@ -25,7 +25,7 @@ talliesOf :: [RobotState] -> [(Double, Int, Double)]
 talliesOf [] = []
 talliesOf (r0 : rs) = map view (scanl next (startTallies [r0]) rs)
   where
-    next ts r = stepTallies 0.5 (WorldState 0 [r] [] []) ts
+    next ts r = stepTallies 0.5 (WorldState 0 [r] [] [] []) ts
     view ts = case ts of
       [RobotTally _ d b st] -> (d, b, st)
       _                     -> (-1, -1, -1)
@@ -59,7 +59,7 @@ spec = do
 
     it "keep each robot's tally to itself, in template order" $ do
       let s0 = [robotAt "A" 0 0 False, robotAt "B" 5 5 True]
-          s1 = WorldState 0.5 [robotAt "A" 3 4 True, robotAt "B" 5 5 True] [] []
+          s1 = WorldState 0.5 [robotAt "A" 3 4 True, robotAt "B" 5 5 True] [] [] []
       [ (robotType (tallyLast t), tallyDistance t, tallyBumps t, tallyStuck t) | t <- stepTallies 0.5 s1 (startTallies s0) ]
         `shouldBe` [("A", 5, 1, 0.5), ("B", 0, 1, 0.5)]
 
@@ -72,7 +72,7 @@ spec = do
           states = take 1001 (simulate 0.01 world (const (constant (mrFinalize (ddVelDiff 0.5 0.5)))) (const (constant (mrFinalize (ddVelDiff 0 0)))))
           (first, rest) = case states of
             s : ss -> (s, ss)
-            []     -> (WorldState 0 [] [] [], [])
+            []     -> (WorldState 0 [] [] [] [], [])
           final = foldl (flip (stepTallies 0.01)) (startTallies (wsRobots first)) rest
           stuckSteps = length (filter (any robotStuck . wsRobots) rest)
       case final of

@@ -20,7 +20,6 @@ import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, isSuffixOf, sort, stripPrefix, tails, transpose)
-import           GHC.IO.Handle       (hDuplicate, hDuplicateTo)
 import           Data.Char           (isPrint)
 import           System.Directory    (createDirectory, createFileLink, doesFileExist, doesPathExist, getPermissions, listDirectory,
                                       setOwnerExecutable, setPermissions)
@@ -31,12 +30,12 @@ import           Test.Hspec          hiding (after)
 
 import           AFrob               hiding (forAll)
 import           AFrobRobotSim
-import           AFrobRobotSim.Log   (LogEnd (..), LogFrame (..), LogHeader (..), LogRect (..), LogRobot (..), LogSummary (..),
+import           AFrobRobotSim.Log   (LogEnd (..), LogFrame (..), LogHeader (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
 import           AFrobRobotSim.JSON  (JSON (..), member, parseJSON)
 import           AFrobRobotSim.Replay (replayPage, writeReplayFromLog)
 import           AFrobRobotSim.Run.Signals (Stopper, interruptible, signalReceived, stuckGrace)
-import           TestUtil (withCaps, withTMPDIR, withTempDir)
+import           TestUtil (captured, withCaps, withTMPDIR, withTempDir)
 
 world :: WorldTemplate
 world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2)]
@@ -103,26 +102,6 @@ circle _ = constant (mrFinalize (ddVelDiff 0.3 0.5))
 quick :: FilePath -> SimOptions
 quick dir = defaultSimOptions { optSeconds = 2, optOut = dir, optQuiet = True, optFrames = True
                               , optSvg = Nothing, optReplay = Nothing }
-
--- | Run an action with stdout and stderr captured into files; return what
--- they received and how the action ended.
-captured :: IO a -> IO (String, String, Either ExitCode a)
-captured act = withTempDir $ \dir -> do
-  let outF = dir </> "out"
-      errF = dir </> "err"
-  r <- withFile outF WriteMode $ \ho -> withFile errF WriteMode $ \he ->
-         redirect stdout ho (redirect stderr he (try act))
-  o <- readAll outF
-  e <- readAll errF
-  pure (o, e, r)
-  where
-    redirect h to act' = do
-      hFlush h
-      saved <- hDuplicate h
-      (hDuplicateTo to h >> act') `finally` (hFlush h >> hDuplicateTo saved h >> hClose saved)
-    readAll f = do
-      s <- readFile f
-      length s `seq` pure s
 
 -- | A text with its wall-clock times blanked: the log's and the result's
 -- @"wallTime":@ numbers, the summary line's wall time and speed, and the

@@ -25,7 +25,7 @@ import           Test.Hspec        hiding (after)
 
 import           AFrob             hiding (forAll)
 import           AFrobRobotSim
-import           AFrobRobotSim.Simulator (keyAtStep)
+import           AFrobRobotSim.Simulator (forceWorldState, keyAtStep)
 import           TestUtil (withCaps, withTempDir)
 
 -- | The snapshot at (about) time t of a run with step dt.
@@ -216,7 +216,7 @@ spec = do
                                       idle (driveAt 2 2))
       maximum [ max x y | s <- corner, Point2 x y <- wsBalls s ] `shouldSatisfy` (<= 5 - 0.15 + 1e-6)
 
-    it "are put where a referee (simBallRule) says, at rest; a rule that loses a ball, or puts one outside the world, stops the run saying so" $ do
+    it "are put where a referee (simBallRule) says, at rest; a rule that loses a ball, puts one outside the world or throws stops the run with a RefereeError saying so" $ do
       let w       = [OTBall (Point2 1 0), OTBall (Point2 (-1) 0), OTSimbotA 1 (Point2 0 3) 0]
           withRule rule = take 20 (simulateWith defaultSimConfig { simDt = 0.1, simBallRule = rule } w idle idle)
           -- from t = 1 the balls go to (2, 2) and (-2, -2)
@@ -224,16 +224,54 @@ spec = do
           failsWith rule msg = do
             r <- try (evaluate (length (show (map wsBalls (withRule rule)))))
             case r of
-              Left (ErrorCall m) -> m `shouldSatisfy` (msg `isInfixOf`)
-              Right _            -> expectationFailure "the run went on"
+              Left (e :: RefereeError) -> displayException e `shouldSatisfy` (msg `isInfixOf`)
+              Right _                  -> expectationFailure "the run went on"
       map wsBalls (withRule moveAt1) !! 10 `shouldBe` [Point2 2 2, Point2 (-2) (-2)]
       map wsBalls (withRule moveAt1) !! 9 `shouldBe` [Point2 1 0, Point2 (-1) 0]
       failsWith (\t _ -> if t >= 0.95 then Just [Point2 0 0] else Nothing)
-                "the ball rule (simBallRule) at t = 1.000 s gave 1 position for 2 balls (it must give one for each)"
+                "the ball rule (simBallRule) failed at t = 1.000 s: it gave 1 position for 2 balls (it must give one for each)"
       failsWith (\_ _ -> Just [Point2 0 0, Point2 (0 / 0) 1])
-                "the ball rule (simBallRule) at t = 0.100 s put ball 2 (in the list's order) at (NaN, 1.0), not a point where it lies inside the world [-5.0, 5.0] x [-5.0, 5.0]"
+                "the ball rule (simBallRule) failed at t = 0.100 s: it put ball 2 (in the list's order) at (NaN, 1.0), not a point where it lies inside the world [-5.0, 5.0] x [-5.0, 5.0]"
       failsWith (\_ _ -> Just [Point2 4.9 0, Point2 0 0])
                 "put ball 1 (in the list's order) at (4.9, 0.0), not a point where it lies inside the world"
+      failsWith (\t _ -> if t >= 0.55 then error "no ball here" else Nothing)
+                "the ball rule (simBallRule) failed at t = 0.600 s: no ball here"
+
+  describe "scores (simScores)" $ do
+    let w = [OTBall (Point2 1 0), OTSimbotA 1 (Point2 0 3) 0]
+        scored sf = take 20 (simulateWith defaultSimConfig { simDt = 0.1, simScores = sf } w idle idle)
+    it "are none by default" $
+      map wsScores (take 20 (simulate 0.1 w idle idle)) `shouldBe` replicate 20 []
+    it "are the signal function's output on each snapshot, the first at time 0, stepped at the time step" $ do
+      let tenths = localTime >>> arr (\t -> [("tenths", round (t * 10) :: Int), ("zero", 0)])
+      map wsScores (scored tenths) `shouldBe` [ [("tenths", k), ("zero", 0)] | k <- [0 .. 19] ]
+    it "see each snapshot (its balls, after the ball rule) and may keep state: a goal counted once" $ do
+      let toGoal t _ = if t >= 0.95 && t < 1.05 then Just [Point2 4 0] else Nothing
+          goals = proc ws -> do
+            g <- edge -< any (\(Point2 x _) -> x > 3) (wsBalls ws)
+            n <- accumHold 0 -< fmap (const (+ 1)) g
+            returnA -< [("goals", n)]
+          run = take 20 (simulateWith defaultSimConfig { simDt = 0.1, simBallRule = toGoal, simScores = goals } w idle idle)
+      map wsScores run `shouldBe` replicate 10 [("goals", 0)] ++ replicate 10 [("goals", 1)]
+      -- (the state the scores see is the snapshot, but for its scores)
+      map (\s -> s { wsScores = [] }) run `shouldBe` take 20 (simulateWith defaultSimConfig { simDt = 0.1, simBallRule = toGoal } w idle idle)
+    it "that throw, or give a name twice, stop the run with a RefereeError naming the time" $ do
+      let failsWith sf msg = do
+            r <- try (evaluate (foldr (\s acc -> forceWorldState s `seq` acc) () (scored sf)))
+            case r of
+              Left (e :: RefereeError) -> displayException e `shouldBe` msg
+              Right _                  -> expectationFailure "the run went on"
+      failsWith (localTime >>> arr (\t -> if t > 0.25 then errorWithoutStackTrace "no referee" else []))
+                "the scores (simScores) failed at t = 0.300 s: no referee"
+      failsWith (constant [("a", 1), ("b", 2), ("a", 3)])
+                "the scores (simScores) failed at t = 0.000 s: it gave the score \"a\" twice (a name holds one score)"
+    it "are evaluated at every step, read or not (a run's memory stays bounded)" $ do
+      let counted = localTime >>> arr (\t -> [("n", if t > 0.45 then error "evaluated" else 1)])
+          run = take 10 (simulateWith defaultSimConfig { simDt = 0.1, simScores = counted } w idle idle)
+      r <- try (evaluate (wsTime (last run)))
+      case r of
+        Left (e :: RefereeError) -> reTime e `shouldBe` 0.5
+        Right _                  -> expectationFailure "the scores were left unevaluated"
 
   describe "battery" $
     it "goes low and then critical on a long run at full effort" $ do

@@ -134,9 +134,23 @@ soccerSpec = do
     it "shows its result as A n - m B" $
       show (MatchResult 3 1 [(10, TeamA), (20, TeamB), (30, TeamA), (40, TeamA)]) `shouldBe` "A 3 - 1 B"
 
-    it "is the example ex15: the smart team against the naive one" $ do
-      map exName Ex15.examples `shouldBe` ["ex15"]
-      map exWorld Ex15.examples `shouldBe` [soccerWorld 10]
+    it "is the example ex15: the smart team against the naive one, and ex15-match with the match's referee" $ do
+      map exName Ex15.examples `shouldBe` ["ex15", "ex15-match"]
+      map exWorld Ex15.examples `shouldBe` [soccerWorld 10, soccerWorld 10]
+      map (\e -> length (refereeGoals (exReferee e))) Ex15.examples `shouldBe` [0, 2]
+
+    it "goalScores counts the goals goalsIn finds, at the snapshots where they are scored (the lone striker's run)" $ do
+      let world = pitchWalls ++ [OTBall centreMark, OTSimbotA 3 (Point2 (-1.5) 0.3) 0]
+          run   = takeWhile ((<= 60) . wsTime) (simulateWith matchConfig world (player attacker) teamNaive)
+          r     = matchResult run
+      goalsA r `shouldSatisfy` (> 1)
+      wsScores (head run) `shouldBe` [("A", 0), ("B", 0)]
+      wsScores (last run) `shouldBe` [("A", goalsA r), ("B", goalsB r)]
+      [ wsTime w1 | (w0, w1) <- zip run (drop 1 run), wsScores w1 /= wsScores w0 ] `shouldBe` map fst (goalTimes r)
+
+    it "goalAreas are the two goals behind the goal lines, each inside the world" $ do
+      goalAreas `shouldBe` [LogRect (-4.5) 0 1 1.8, LogRect 4.5 0 1 1.8]
+      map (\(LogRect x y _ _) -> isJust (goalOf (Point2 x y))) goalAreas `shouldBe` [True, True]
 
     it "ex15's run: team A scores after about 13 s, team B after about 55 s (as its Haddock and the tutorial say)" $ do
       -- (unrefereed: the first sample of each spell of the ball in a goal;

@@ -53,8 +53,8 @@ module AFrobRobotSim.Test
   , robotGap
   ) where
 
-import           Control.Exception    (SomeAsyncException, bracketOnError, displayException, evaluate, fromException, try,
-                                       tryJust)
+import           Control.Exception    (SomeAsyncException, SomeException, bracketOnError, displayException, evaluate, fromException, try,
+                                       throwIO, tryJust)
 import           Data.IORef           (newIORef, readIORef, writeIORef)
 import           Data.List            (intercalate, tails)
 import           Data.Maybe           (isJust)
@@ -503,21 +503,25 @@ recordRunPage decided file config world states =
   -- (the recorder's temporary file closed whatever stops the run: an
   -- error, a timeout's or Ctrl-C's exception)
   bracketOnError (newReplayRecorder replayEveryFrame (pageConfig config world)) discardReplay $ \recorder -> do
-    (steps, simulated, failure) <- record recorder 0 0 states
-    writeReplay recorder (pageSummary steps simulated (-1) failure decided) file
+    (steps, simulated, scores, failure) <- record recorder 0 0 [] states
+    writeReplay recorder (pageSummary steps simulated (-1) scores failure decided) file
   where
     -- (each state evaluated as simbot evaluates it before recording it;
-    -- the steps counted and the last one's time kept, strictly)
-    record recorder !steps !simulated xs = do
+    -- the steps counted and the last one's time and scores kept,
+    -- strictly; a controller's or the referee's failure ends the page)
+    record recorder !steps !simulated scores xs = do
       r <- try (evaluate xs >>= \ys -> case ys of
                   []    -> pure Nothing
                   y : _ -> Just y <$ evaluate (forceWorldState y))
       case r of
-        Left (e :: ControllerError) -> pure (steps, simulated, Just (displayException e))
-        Right Nothing               -> pure (steps, simulated, Nothing)
+        Left (e :: SomeException)
+          | Just (ce :: ControllerError) <- fromException e -> pure (steps, simulated, scores, Just (displayException ce))
+          | Just (re :: RefereeError) <- fromException e    -> pure (steps, simulated, scores, Just (displayException re))
+          | otherwise                                       -> throwIO e
+        Right Nothing               -> pure (steps, simulated, scores, Nothing)
         Right (Just y)              -> do
           recordReplayState recorder y
-          record recorder (steps + 1 :: Int) (wsTime y) (drop 1 xs)
+          record recorder (steps + 1 :: Int) (wsTime y) (wsScores y) (drop 1 xs)
 
 -- The page of a run's states, with its failure if it had one.
 pageOf :: SimConfig -> WorldTemplate -> [WorldState] -> Maybe String -> String
@@ -526,7 +530,8 @@ pageOf config world states failure =
   where
     cfg     = pageConfig config world
     frames  = logFrames cfg states
-    summary = pageSummary (length states) (if null states then 0 else wsTime (last states)) (length frames) failure Nothing
+    summary = pageSummary (length states) (if null states then 0 else wsTime (last states)) (length frames)
+                          (if null states then [] else wsScores (last states)) failure Nothing
 
 -- The log's settings for a run's page.
 pageConfig :: SimConfig -> WorldTemplate -> LogConfig
@@ -534,15 +539,15 @@ pageConfig config world =
   defaultLogConfig { lcBounds = simBounds config, lcWorld = world, lcDt = simDt config
                    , lcSeed = simSeed config, lcCommandLine = ["afrp-test"] }
 
--- @pageSummary steps simulated frames failure decided@: a run's page's
--- summary (steps: the samples, the one at time 0 included, as the log
--- counts them; the time of the last; the frames, or -1 for the
--- recorder's count; the instant a property was decided false, and its
--- line).
-pageSummary :: Int -> Time -> Int -> Maybe String -> Maybe (Time, String) -> LogSummary
-pageSummary steps simulated frames failure decided =
+-- @pageSummary steps simulated frames scores failure decided@: a run's
+-- page's summary (steps: the samples, the one at time 0 included, as the
+-- log counts them; the time of the last; the frames, or -1 for the
+-- recorder's count; the last one's scores ('wsScores'); the instant a
+-- property was decided false, and its line).
+pageSummary :: Int -> Time -> Int -> [(String, Int)] -> Maybe String -> Maybe (Time, String) -> LogSummary
+pageSummary steps simulated frames scores failure decided =
   LogSummary { lsSimulated = simulated, lsSteps = steps, lsFrames = frames
-             , lsWallTime = 0, lsInterrupted = False, lsFailure = failure, lsFalsified = decided, lsScores = [] }
+             , lsWallTime = 0, lsInterrupted = False, lsFailure = failure, lsFalsified = decided, lsScores = scores }
 
 -- | @robotClearance world r@: the distance from the edge of robot @r@'s
 -- disc to the nearest wall segment or block of @world@ (negative if they

@@ -359,6 +359,22 @@ specWithFiles = do
     -- (the samples, the one at time 0 included)
     pageSummary page `shouldSatisfy` (("\"steps\":" ++ show (length (runStream config 7 world wander straight)) ++ ",") `isInfixOf`)
 
+  it "writeRunReplayPage and runReplayPage put the referee's last scores in the summary, and end at its failure with its message" $ \tmp -> do
+    let file = tmp </> "afrp-test-scores.html"
+        world = [OTSimbotA 1 (Point2 0 0) 0]
+        counting = defaultSimConfig { simDt = 0.1, simScores = localTime >>> arr (\t -> [("tenths", round (t * 10))]) }
+        failing = counting { simScores = localTime >>> arr (\t -> if t > 0.45 then error "no score" else [("n", 1)]) }
+    writeRunReplayPage file counting 2 world wander wander
+    page <- readFile file
+    length page `seq` removeFile file
+    pageSummary page `shouldSatisfy` ("\"scores\":{\"tenths\":20" `isInfixOf`)
+    pageSummary (runReplayPage counting 2 world wander wander) `shouldSatisfy` ("\"scores\":{\"tenths\":20" `isInfixOf`)
+    writeRunReplayPage file failing 2 world wander wander
+    failed <- readFile file
+    length failed `seq` removeFile file
+    pageSummary failed `shouldSatisfy` ("the scores (simScores) failed at t = 0.500 s: no score" `isInfixOf`)
+    pageSummary failed `shouldSatisfy` ("\"scores\":{\"n\":1" `isInfixOf`)
+
   it "writeFalsifiedRunReplayPage writes writeRunReplayPage's page, its summary with the instant a property was decided false and its line" $ \tmp -> do
     let file = tmp </> "afrp-test-falsified.html"
         plainFile = tmp </> "afrp-test-plain.html"

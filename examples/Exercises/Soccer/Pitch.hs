@@ -1,3 +1,4 @@
+{-# LANGUAGE Arrows #-}
 -- |
 -- Module      : Exercises.Soccer.Pitch
 -- Description : Exercise 15's pitch, kick-off, referee and match runner.
@@ -66,6 +67,9 @@ module Exercises.Soccer.Pitch
   , kickOffPositions
     -- * Refereeing and matches
   , referee
+  , goalScores
+  , goalAreas
+  , matchReferee
   , matchConfig
   , matchDt
   , goalsIn
@@ -204,14 +208,44 @@ referee _ balls
       | otherwise         = b
     limit m v = max (negate m) (min m v)
 
+-- | The score of a run made with the 'referee', snapshot by snapshot: each
+-- team's goals so far, as @[(\"A\", a), (\"B\", b)]@, a goal counted at
+-- the snapshot where the ball is back on the centre mark ('goalsIn''s
+-- rule, so that the last snapshot's score is 'matchResult''s). For the
+-- simulator's 'simScores' and a 'Referee''s 'refereeScores'.
+goalScores :: SF WorldState [(String, Int)]
+goalScores = proc ws -> do
+  let ball = case wsBalls ws of
+        [b] -> Just b
+        _   -> Nothing
+  before <- iPre Nothing -< ball
+  let goal = case (before, ball) of
+        (Just b0, Just b1) | b1 == centreMark, distance b0 centreMark >= 3 ->
+          Event (if point2X b0 > 0 then TeamA else TeamB)
+        _ -> NoEvent
+  a <- accumHold 0 -< (+ 1) <$ filterE (== TeamA) goal
+  b <- accumHold 0 -< (+ 1) <$ filterE (== TeamB) goal
+  returnA -< [("A", a), ("B", b)]
+
+-- | The two goals, for the replay page: from each goal line to the
+-- world's boundary, as wide as the mouth.
+goalAreas :: [LogRect]
+goalAreas = [ LogRect (s * (goalLineX + worldXMax) / 2) 0 (worldXMax - goalLineX) (2 * goalHalfWidth) | s <- [-1, 1] ]
+
+-- | The 'referee', 'goalScores' and 'goalAreas' as a run's 'Referee', for
+-- 'runSimRefereed': a match whose replay page shows the goals and the
+-- score.
+matchReferee :: Referee
+matchReferee = Referee { refereeBalls = referee, refereeScores = goalScores, refereeGoals = goalAreas }
+
 -- | The time step of a match: 0.05 s.
 matchDt :: DTime
 matchDt = 0.05
 
--- | The settings of a match: the time step 'matchDt', exact odometry and
--- the 'referee'.
+-- | The settings of a match: the time step 'matchDt', exact odometry, the
+-- 'referee' and its 'goalScores'.
 matchConfig :: SimConfig
-matchConfig = defaultSimConfig { simDt = matchDt, simBallRule = referee }
+matchConfig = defaultSimConfig { simDt = matchDt, simBallRule = referee, simScores = goalScores }
 
 -- | The goals of a run made with the 'referee': the time of each and the
 -- team that scored it, in order. A goal shows as the (single) ball at

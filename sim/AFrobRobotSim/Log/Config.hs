@@ -32,13 +32,14 @@ data LogConfig = LogConfig
   , lcGoals       :: [LogRect]                 -- ^ goal areas to draw, if any
   , lcScores      :: WorldState -> [(String, Int)]
     -- ^ the program's scores in a state; a rise between two steps is a
-    -- @"score"@ event
+    -- @"score"@ event. By default the referee's ('wsScores', which
+    -- 'AFrobRobotSim.Simulator.simScores' keeps)
   }
 
 -- | The notes' world bounds, an empty world, dt 0.01 s, 25 fps, seed 0,
--- no command line, no goals, no scores.
+-- no command line, no goals, the states' own scores ('wsScores').
 defaultLogConfig :: LogConfig
-defaultLogConfig = LogConfig notesBounds [] 0.01 25 0 [] [] (const [])
+defaultLogConfig = LogConfig notesBounds [] 0.01 25 0 [] [] wsScores
 
 -- | The header line of a run.
 logHeader :: LogConfig -> LogHeader

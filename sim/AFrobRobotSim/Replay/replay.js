@@ -359,7 +359,10 @@
     if ($('trails').checked) drawTrails(state.frame, quick);
     drawMoving(f);
     ctx.restore();
-    $('time').textContent = 't = ' + f.t.toFixed(2) + ' s  (frame ' + state.frame + ' of ' + (frames.length - 1) + ')';
+    // (the program's scores, if it keeps any, after the time: "score: A 1, B 0")
+    var scoreNames = f.scores ? Object.keys(f.scores) : [];
+    $('time').textContent = 't = ' + f.t.toFixed(2) + ' s  (frame ' + state.frame + ' of ' + (frames.length - 1) + ')' +
+      (scoreNames.length ? '  score: ' + scoreNames.map(function (k) { return k + ' ' + f.scores[k]; }).join(', ') : '');
     $('slider').value = String(state.frame);
     $('play').textContent = state.playing ? playLabels.playing : playLabels.paused;
     showInfo();

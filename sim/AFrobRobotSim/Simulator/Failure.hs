@@ -11,10 +11,14 @@
 -- evaluates each robot's output, messages included, inside 'blaming', so
 -- that the failure names the robot and the time ('ControllerError')
 -- rather than surface later, unnamed, where the run's outputs are
--- written. What a run keeps of a message or of an exception's text is
--- cut at 'maxTextChars' characters.
+-- written. The referee's rules ('AFrobRobotSim.Simulator.simBallRule'
+-- and 'AFrobRobotSim.Simulator.simScores') are evaluated so too, and
+-- their failure is a 'RefereeError' naming the rule and the time. What a
+-- run keeps of a message or of an exception's text is cut at
+-- 'maxTextChars' characters.
 module AFrobRobotSim.Simulator.Failure
   ( ControllerError (..)
+  , RefereeError (..)
   , blaming
   , capMessage
   , maxTextChars
@@ -60,8 +64,32 @@ describe :: ControllerError -> String
 describe e = printf "the controller of %s %d failed at t = %.3f s: %s"
   (ceRobotType e) (ceRobotId e) (ceTime e) (displayException (ceCause e))
 
+-- | A rule of the referee failed while the simulation ran: the ball rule
+-- ('AFrobRobotSim.Simulator.simBallRule') or the scores
+-- ('AFrobRobotSim.Simulator.simScores') threw an exception, or gave an
+-- answer that cannot be (a ball lost or put outside the world, a score's
+-- name twice). As for 'ControllerError', 'show' and 'displayException'
+-- give the same sentence:
+--
+-- > the ball rule (simBallRule) failed at t = 1.000 s: it gave 1 position for 2 balls (it must give one for each)
+data RefereeError = RefereeError
+  { reRule  :: String          -- ^ which rule: @"the ball rule (simBallRule)"@ or @"the scores (simScores)"@
+  , reTime  :: Time            -- ^ the time of the state it was given
+  , reCause :: SomeException   -- ^ what it raised
+  }
+
+-- | The sentence of 'displayException', as for 'ControllerError'.
+instance Show RefereeError where
+  showsPrec _ e = showString (describeReferee e)
+
+instance Exception RefereeError where
+  displayException = describeReferee
+
+describeReferee :: RefereeError -> String
+describeReferee e = printf "%s failed at t = %.3f s: %s" (reRule e) (reTime e) (displayException (reCause e))
+
 -- | @blaming f v@ is @v@, with an exception that its evaluation raises
--- turned into @f e@: 'Control.Exception.mapException', but leaving
+-- turned into @f e@ (a 'ControllerError' or a 'RefereeError'): 'Control.Exception.mapException', but leaving
 -- asynchronous exceptions (Ctrl-C, a timeout, the heap's limit; not a
 -- stack overflow, which is @v@'s) as they are, so that an
 -- interrupted run is not reported as a failing controller; and without
@@ -75,7 +103,7 @@ describe e = printf "the controller of %s %d failed at t = %.3f s: %s"
 -- itself failed: a cause whose message raises another exception, or never
 -- ends, would fail (or hang) the run where its outputs are written,
 -- without naming the robot.
-blaming :: (SomeException -> ControllerError) -> a -> a
+blaming :: Exception e => (SomeException -> e) -> a -> a
 blaming f v = unsafeDupablePerformIO (IO (\s -> case v of !r -> (# s, r #)) `catch` handler)
   where
     handler e = case fromException e of
