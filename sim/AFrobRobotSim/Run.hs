@@ -167,8 +167,12 @@ runSimRefereedWith opts referee mworld rcA rcB = do
         Right _ -> pure ()
       endOutput prog
     else do
-      (errs0, ffmpeg) <- preflight (worldBounds world) opts
-      let errs = errs0 ++ checkGoals referee
+      -- (the referee's goals, before the checks of the files, which make
+      -- the output folder when nothing else is wrong)
+      let goalErrs = checkGoals referee
+      unless (null goalErrs) $
+        failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) goalErrs))
+      (errs, ffmpeg) <- preflight (worldBounds world) opts
       unless (null errs) $
         failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
       -- (a parameter given twice: the run uses the last value, and says so)
