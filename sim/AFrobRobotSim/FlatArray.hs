@@ -12,7 +12,9 @@
 -- physics moves robots' centres in mutable ones; a module of their own so
 -- that all of them use one representation. No bounds checks: callers index
 -- within the sizes they allocated. (And 'finite', the test for finite
--- numbers that the indexes and their users share.)
+-- numbers that the indexes, their users and the checks of a run's
+-- settings and of a log share: this module imports none of the
+-- simulator's, so any of them can import it.)
 module AFrobRobotSim.FlatArray
   ( -- * Immutable
     IntArr

@@ -41,8 +41,8 @@ module AFrobRobotSim.JSON
 import           Data.Char                  (chr, isDigit, isHexDigit, ord, digitToInt)
 import           Data.List                  (foldl')
 
-import           AFrobRobotSim.JSON.Bytes   (cutShortBytes, cutShortUtf8, maxDepth, parseJSONBytes,
-                                             parseJSONUtf8, roundDigits, significantDigits)
+import           AFrobRobotSim.JSON.Bytes   (cutShortBytes, cutShortUtf8, lineColumn, maxDepth,
+                                             parseJSONBytes, parseJSONUtf8, roundDigits, significantDigits)
 import           AFrobRobotSim.JSON.Encode
 
 -- A position in the text: line and column, both from 1.
@@ -107,7 +107,7 @@ expect c = do
 -- of a number, for a non-finite number).
 parseJSON :: String -> Either String JSON
 parseJSON txt = case runP (skipSpace *> value 0 <* skipSpace <* end) (Input (Pos 1 1) txt) of
-  Left (Pos l c, msg) -> Left ("line " ++ show l ++ ", column " ++ show c ++ ": " ++ msg)
+  Left (Pos l c, msg) -> Left (lineColumn l c msg)
   Right (v, _)        -> Right v
   where
     end = peek >>= \m -> case m of

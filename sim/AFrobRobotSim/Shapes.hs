@@ -36,7 +36,12 @@
 -- casting) and "AFrobRobotSim.Shapes.Collision" (a moving disc's sweeps,
 -- static overlap and the response). The helpers a module's kernels share
 -- stay in that module: imported from a module of their own, they changed
--- the code GHC made of the simulator's step (see the two modules).
+-- the code GHC made of the simulator's step (see the two modules). The
+-- exception is 'AFrobRobotSim.Shapes.Ray.fmax' and
+-- 'AFrobRobotSim.Shapes.Ray.fmin', which both modules use: they stay in
+-- "AFrobRobotSim.Shapes.Ray", beside the slab method, and
+-- "AFrobRobotSim.Shapes.Collision" imports them from there (not
+-- re-exported here).
 module AFrobRobotSim.Shapes
   ( -- * Axis-aligned boxes
     Box (..)

@@ -2,7 +2,8 @@
 -- |
 -- Module      : AFrobRobotSim.UTF8
 -- Description : UTF-8 bytes: where they stop being UTF-8, the line and
---               column of an offset, the character at an offset.
+--               column of an offset, the character and the byte at an
+--               offset.
 --
 -- What every reader of the simulator's files (world files, run logs,
 -- result lines) needs of UTF-8, on strict 'B.ByteString's; and 'Utf8',
@@ -12,6 +13,7 @@ module AFrobRobotSim.UTF8
   ( utf8Fault
   , lineColumnAt
   , charAt
+  , byteAt
     -- * Bytes checked once
   , Utf8
   , checkUtf8
@@ -94,6 +96,12 @@ charAt bs i
   | b < 0xF0  = (chr (((b .&. 0x0F) `shiftL` 12) .|. (tl 1 `shiftL` 6) .|. tl 2), i + 3)
   | otherwise = (chr (((b .&. 0x07) `shiftL` 18) .|. (tl 1 `shiftL` 12) .|. (tl 2 `shiftL` 6) .|. tl 3), i + 4)
   where
-    b = byteAt i
-    tl k = byteAt (i + k) .&. 0x3F
-    byteAt j = fromIntegral (BU.unsafeIndex bs j) :: Int
+    b = byteAt bs i
+    tl k = byteAt bs (i + k) .&. 0x3F
+
+-- | The byte at an offset, as an 'Int' (not bounds-checked): for
+-- arithmetic on it, as 'charAt' and the JSON parser's decoding of
+-- escapes do.
+byteAt :: B.ByteString -> Int -> Int
+byteAt bs i = fromIntegral (BU.unsafeIndex bs i)
+{-# INLINE byteAt #-}

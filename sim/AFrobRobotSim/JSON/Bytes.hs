@@ -20,7 +20,7 @@
 -- bytes; one used whole costs its value, which its user makes anyway.
 --
 -- The pieces both parsers share (the depth limit, how a number's digits
--- are rounded) are exported here too (where bytes stop being UTF-8 is
+-- are rounded, how an error says where it is) are exported here too (where bytes stop being UTF-8 is
 -- "AFrobRobotSim.UTF8"'s);
 -- "AFrobRobotSim.JSON" re-exports what of this module is for its users:
 -- import that.
@@ -35,6 +35,7 @@ module AFrobRobotSim.JSON.Bytes
     -- * Shared with the parser of strings
   , roundDigits
   , significantDigits
+  , lineColumn
   ) where
 
 import qualified Data.ByteString                as B
@@ -128,6 +129,8 @@ located bs i back msg
   where
     (l, c) = lineColumnAt bs i
 
+-- | @lineColumn l c msg@: an error's message, @msg@, said at line @l@
+-- and column @c@ (@line L, column C: msg@), as both parsers say it.
 lineColumn :: Int -> Int -> String -> String
 lineColumn l c msg = "line " ++ show l ++ ", column " ++ show c ++ ": " ++ msg
 

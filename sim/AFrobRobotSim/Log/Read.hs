@@ -50,6 +50,7 @@ import           Data.List                 (stripPrefix)
 import           System.IO                 (hClose, hFileSize)
 
 import           AFrobRobotSim.Console     (displayPath)
+import           AFrobRobotSim.FlatArray   (finite)
 import           AFrobRobotSim.JSON        (cutShort, cutShortUtf8)
 import           AFrobRobotSim.Log.Records
 import           AFrobRobotSim.InputFile   (LineFault (..), newLineReader, nextLineEnded, openReading)
@@ -172,7 +173,6 @@ headerLine loc cut i decoded = do
                             ++ " as it began, or its disk fill up?)"
          | otherwise      = " (is it a run log? a run writes one with --log FILE.jsonl)"
     positive x = x > 0 && not (isInfinite x)   -- (NaN, read from null, is not > 0)
-    finite x = not (isNaN x || isInfinite x)
 
 -- A line after the header, line @i@, not blank, decoded, the frame before
 -- it at time @prev@ (0 for none): a frame (with a time, not before
@@ -209,8 +209,6 @@ bodyLine loc h prev i decoded = located loc i decoded >>= \ln -> case ln of
         Left (loc i Nothing ++ "the summary's falsified time must be a number, found " ++ show t)
     | otherwise -> Right (Right s)
   LineHeader _ -> Left (loc i Nothing ++ "a second header")
-  where
-    finite x = not (isNaN x || isInfinite x)
 
 -- A line's error located: a JSON error, at "line 1, column C: ..." of
 -- that line, at line @i@ and column C; any other at line @i@.

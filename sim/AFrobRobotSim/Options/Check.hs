@@ -38,6 +38,7 @@ import           Numeric         (showFFloat)
 import           System.FilePath (takeExtension)
 import           Text.Printf     (printf)
 
+import           AFrobRobotSim.FlatArray (finite)
 import           AFrobRobotSim.Options.Settings
 import           AFrobRobotSim.Simulator (maxOdometryNoise, maxTimeStep)
 import           AFrobRobotSim.World (Bounds (..))
@@ -96,7 +97,6 @@ validateOptions o =
     -- a number as it is, without rounding (0.0025, 1.25e-301)
     full x | x /= 0 && (abs x < 1e-4 || abs x >= 1e9) = show x
            | otherwise                               = showFFloat Nothing x ""
-    finite x = not (isNaN x || isInfinite x)
     -- whether dt divides the frame period 1/f (to a relative 1e-4)
     divides f = let k = 1 / (f * dt) in abs (k - fromIntegral (round k :: Int)) <= 1e-4 * k
     -- frame rates that work, a whole number of steps apart, each written
@@ -130,7 +130,6 @@ validateOptionsIn b@(Bounds x0 y0 x1 y1) o =
     w = x1 - x0
     h = y1 - y0
     side = max w h * scale + 20
-    finite x = not (isNaN x || isInfinite x)
 
 -- | The most steps a run may take: 10^8 (about 280 simulated hours at the
 -- default step).

@@ -16,7 +16,7 @@ module AFrobRobotSim.Shapes.Ray
   ( -- * Ray casting
     rayBox
   , rayCircle
-    -- * Minimum and maximum that keep a zero's sign
+    -- * Minimum and maximum that keep a zero's sign (internal helpers)
   , fmax
   , fmin
   ) where
@@ -30,6 +30,10 @@ import AFrobRobotSim.Shapes.Box (Box (..))
 -- | @fmax a b@ / @fmin a b@: like 'max' / 'min', but on a tie the /second/
 -- argument wins. Used with the accumulated value second, so that an initial
 -- @0.0@ is never replaced by an equal @-0.0@.
+--
+-- Internal helpers of the kernels, exported for
+-- "AFrobRobotSim.Shapes.Collision" (and the tests) only: the umbrella
+-- "AFrobRobotSim.Shapes" does not re-export them.
 fmax, fmin :: Double -> Double -> Double
 fmax a b = if a <= b then b else a
 fmin a b = if b <= a then b else a

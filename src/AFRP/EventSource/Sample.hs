@@ -7,8 +7,12 @@
 --
 -- Part of "AFRP.EventSource", whose timing conventions apply to the
 -- sources here that occur at scheduled times ('snapAfter', 'sample',
--- 'sampleWindow'), as to those of "AFRP.EventSource.Timed" on which they
--- are built.
+-- 'sampleWindow'), as to those of "AFRP.EventSource.Timed". 'snapAfter'
+-- and 'sample' are built on 'after' and 'repeatedly'; 'sampleWindow'
+-- keeps a clock of its own (its instants those of
+-- 'AFRP.EventSource.afterEachCat' with the period as every delay), which
+-- counts every period a time step spans, in bounded time and memory
+-- however many they are.
 module AFRP.EventSource.Sample
   ( snap
   , snapAfter
@@ -19,8 +23,9 @@ module AFRP.EventSource.Sample
 import qualified Data.Sequence        as Seq
 
 import           AFRP.Event
-import           AFRP.EventSource.Timed (after, errNeg, errPeriod, never, repeatedly)
+import           AFRP.EventSource.Timed    (after, never, repeatedly)
 import           AFRP.Internal.Clock
+import           AFRP.Internal.EventSource (errNeg, errPeriod, twoTo53)
 import           AFRP.Internal.SF
 
 -- | One occurrence at time 0 carrying the input sample there.
@@ -98,7 +103,7 @@ sampleWindow w p
           | not (reached (clockTime d') t) = (# d, k #)
           | k < jumpAt              = count (k + 1) d'
           -- beyond the window: the periods but the last one or two at once
-          | r > 2 && r < 9007199254740992 =
+          | r > 2 && r < twoTo53 =
               let skipped = floor r - 1 :: Int
               in count (k + skipped) (tick d (fromIntegral skipped * p))
           -- the last one or two, while each is a visible step

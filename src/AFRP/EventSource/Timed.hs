@@ -1,8 +1,6 @@
 {-# LANGUAGE UnboxedTuples #-}
 {-# LANGUAGE BangPatterns  #-}
 {-# LANGUAGE ScopedTypeVariables #-}
-{-# LANGUAGE PolyKinds #-}
-{-# LANGUAGE KindSignatures #-}
 -- |
 -- Module      : AFRP.EventSource.Timed
 -- Description : Event sources whose occurrences are scheduled in local
@@ -11,7 +9,8 @@
 -- Part of "AFRP.EventSource", whose timing conventions (local time, "at,
 -- or as soon after as possible", the compensated clock, one occurrence
 -- or all of them when a sample spans several) apply to every source
--- here. Also the argument checks shared with "AFRP.EventSource.Sample".
+-- here. The argument checks' errors, which "AFRP.EventSource.Sample"
+-- shares, are "AFRP.Internal.EventSource"'s.
 module AFRP.EventSource.Timed
   ( -- * Basic sources
     never
@@ -23,17 +22,14 @@ module AFRP.EventSource.Timed
     -- * Delaying events
   , delayEvent
   , delayEventCat
-    -- * Argument checks (for "AFRP.EventSource.Sample")
-  , errNeg
-  , errPeriod
   ) where
 
 import qualified Data.Sequence        as Seq
-import           GHC.Exts             (RuntimeRep, TYPE)
 import           Data.Sequence        (Seq, (|>))
 
 import           AFRP.Event
 import           AFRP.Internal.Clock
+import           AFRP.Internal.EventSource (errNeg, errPeriod, twoTo53)
 import           AFRP.Internal.SF
 
 -- | The event source with no occurrences. The optimiser knows it: a switch
@@ -99,7 +95,11 @@ repeatedly p x
     -- (what follows an occurrence: the next boundary not reached; once
     -- the period is no longer than one unit in the last place of the
     -- local time, an occurrence at every sample that moves the time on;
-    -- after an infinite time, none)
+    -- after an infinite time, none. p <= 2^-53 t is tested as
+    -- p * 2^53 <= t: exact (a power of two), even where 2^-53 t would be
+    -- subnormal and rounded; then p is at most one unit in the last place
+    -- of t. Below that test t / p < 2^53, so the search's
+    -- q + tolerance * q cannot overflow)
     after' clock' t n
       | isInfinite t       = neverN
       | p * twoTo53 <= t   = fine clock'
@@ -123,11 +123,6 @@ repeatedly p x
                | otherwise               = n
         up n | beyond n  = n
              | otherwise = up (n + 1)
-    -- p <= 2^-53 t, tested as p * 2^53 <= t: exact (a power of two), even
-    -- where 2^-53 t would be subnormal and rounded; then p is at most one
-    -- unit in the last place of t. (Below that test t / p < 2^53, so the
-    -- search's q + tolerance * q cannot overflow.)
-    twoTo53 = 9007199254740992 :: Double
 
 -- | @afterEach [(q1, x1), (q2, x2), ...]@ occurs with @x1@ at local time
 -- @q1@, with @x2@ at @q1 + q2@, and so on: each delay is measured from the
@@ -219,13 +214,3 @@ delayEventCat q
           (due, rest) = Seq.spanl (\(tDue, _) -> reached tDue now') pending'
           out         = if Seq.null due then NoEvent else Event (foldr ((:) . snd) [] due)
       in (# go clock' rest e, out #))
-
--- | @errNeg f q@: the error of the source @f@ given a time @q@ that is
--- negative or NaN.
-errNeg :: forall (r :: RuntimeRep) (x :: TYPE r). String -> Double -> x
-errNeg f q = error ("AFRP.EventSource." ++ f ++ ": negative or NaN time, got " ++ show q)
-
--- | @errPeriod f p@: the error of the source @f@ given a period @p@ that
--- is not positive (or NaN).
-errPeriod :: String -> Double -> x
-errPeriod f p = error ("AFRP.EventSource." ++ f ++ ": the period must be positive, got " ++ show p)

@@ -16,7 +16,8 @@
 --
 -- Strings of at most 64 bytes are made once and shared
 -- ('sharedStrings'); numbers are rounded as the parser of strings rounds
--- them ('roundDigits', which it imports from here).
+-- them ('roundDigits', defined here, which "AFrobRobotSim.JSON" imports
+-- through "AFrobRobotSim.JSON.Bytes").
 module AFrobRobotSim.JSON.Bytes.Build
   ( -- * The value of a checked text
     valueAt
@@ -33,7 +34,7 @@ import qualified Data.Map.Strict           as M
 
 import           AFrobRobotSim.JSON.Bytes.Scan
 import           AFrobRobotSim.JSON.Encode (JSON (..))
-import           AFrobRobotSim.UTF8        (charAt)
+import           AFrobRobotSim.UTF8        (byteAt, charAt)
 
 ------------------------------------------------------------------------------
 -- The value
@@ -128,7 +129,7 @@ mostShared = 4096
 stringText :: B.ByteString -> Int -> Int -> String
 stringText bs i j
   | j - i <= 64 = let s = decodeString bs i j in length s `seq` s
-  | otherwise   = let !c = B.copy (B.take (j - i) (B.drop i bs)) in decodeString c 0 (j - i)
+  | otherwise   = let !c = B.copy (slice bs i j) in decodeString c 0 (j - i)
 
 -- The characters of checked string bytes from @i@ to before @j@, made as
 -- they are used, each made with its list cell.

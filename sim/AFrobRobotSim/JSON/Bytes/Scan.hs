@@ -33,12 +33,10 @@ module AFrobRobotSim.JSON.Bytes.Scan
   , minusW, plusW, dotW, zeroW, lowerEW, upperEW
   , isDigitW
   , isHexW
-  , byteAt
     -- * Reading over bytes
   , spaces
   , digitsEnd
   , stringEnd
-  , skipValue
     -- * Where the parts of arrays and objects end
   , Cursor (..)
   , Index
@@ -92,11 +90,6 @@ isDigitW w = w >= 48 && w <= 57
 isHexW :: Word8 -> Bool
 isHexW w = isDigitW w || (w >= 97 && w <= 102) || (w >= 65 && w <= 70)
 
--- | The byte at an offset, as an 'Int' (not bounds-checked).
-byteAt :: B.ByteString -> Int -> Int
-byteAt bs i = fromIntegral (BU.unsafeIndex bs i)
-{-# INLINE byteAt #-}
-
 ------------------------------------------------------------------------------
 -- Reading over bytes
 
@@ -127,7 +120,7 @@ skipping ok bs = go
 stringEnd :: B.ByteString -> Int -> Int
 stringEnd bs i = reading bs (\p n -> stringEndP p n i)
 
--- | The offset after the checked value that begins at an offset, found
+-- The offset after the checked value that begins at an offset, found
 -- by reading over it: an array or object to its matching bracket or
 -- brace (every part in it read over), a string to its closing quote, a
 -- keyword or number to its last byte.
