@@ -16,6 +16,7 @@ module AFrobRobotSim.World.Check
     -- * Limits
   , maxRobotId
   , maxClosePairs
+  , densestPacking
   , maxProblems
   , capProblems
   ) where
@@ -47,10 +48,11 @@ maxRobotId = 2 ^ (53 :: Int)
 -- with a wall or block (touching is allowed, to within a nanometre for
 -- rounding; walls and blocks may overlap each other, and balls each
 -- other); and the balls' discs cover no more than the floor that the
--- robots leave (the world's area less the robots' discs: more balls could
--- never all lie apart, and the physics would push at their pile at every
--- step, for ever; reported at the first ball past that area, with the
--- figures). Returns the problems, each naming the object(s), in the order
+-- robots leave (the world's area less the robots' discs), and the discs
+-- of all balls but one no more than 'densestPacking' of the world's
+-- floor (more balls could never all lie apart, and the physics would
+-- push at their pile at every step, for ever; reported at the first ball
+-- past either bound, with the figures). Returns the problems, each naming the object(s), in the order
 -- of the objects (a problem between two objects comes with the later
 -- one), or @Right ()@. A world whose objects make more than
 -- 'maxClosePairs' pairs that the check of overlaps would compare is
@@ -137,29 +139,42 @@ worldProblems bounds labelled = concatMap problemsOf indexed
     -- The balls cannot all lie apart once their discs' area exceeds the
     -- floor's less the robots' (robots overlap nothing, so theirs is a
     -- plain sum; robots that do overlap are reported, and the floor they
-    -- leave is then taken as no less than 0): the first placed ball past
-    -- that point, and how many balls that makes. (A pile that can never
-    -- spread keeps nearly every pair in contact at every step: 10,000
-    -- balls on one spot of the notes' world took 8.5 minutes a simulated
-    -- second.) Discs never cover a floor whole, so this is a bound that
-    -- a world can pass and still not hold its balls apart (their densest
-    -- packing covers about 91%).
+    -- leave is then taken as no less than 0), nor once the discs of all
+    -- but one exceed 'densestPacking' of the floor (Groemer's bound for n
+    -- equal discs in a convex region: its area is at least 2 sqrt 3 (n - 1)
+    -- r^2, so n - 1 discs cover at most pi / sqrt 12 of it): the first
+    -- placed ball past either, and how many balls that makes. (A pile
+    -- that can never spread keeps nearly every pair in contact at every
+    -- step: 10,000 balls on one spot of the notes' world took 8.5 minutes
+    -- a simulated second, and 1,350, 95% of the floor, which only the
+    -- first bound let through, ran at 0.2x real time, still a pile after
+    -- 5 s.) Both are bounds that a world can pass and still not hold its
+    -- balls apart.
     floorArea  = (x1 - x0) * (y1 - y0)
     robotsArea = fromIntegral (length [ () | (_, o) <- placed, robotKindOf o /= Nothing ])
                  * discArea simbotDiameter
     floorLeft  = max 0 (floorArea - robotsArea)
+    packable   = densestPacking * floorArea
     overfull   = case [ (i, n) | (n, i) <- zip [1 :: Int ..] [ i | (i, OTBall {}) <- placed ]
-                               , fromIntegral n * discArea ballDiameter > floorLeft ] of
+                               , fromIntegral n * discArea ballDiameter > floorLeft
+                                 || fromIntegral (n - 1) * discArea ballDiameter > packable ] of
                    first : _ -> Just first
                    []        -> Nothing
-    overfullMessage n =
-      (if n == 1 then "this ball covers " else "the " ++ show n ++ " balls up to this one cover ")
-      ++ squareMetres (fromIntegral n * discArea ballDiameter)
-      ++ ", more than the " ++ squareMetres floorLeft ++ " of floor "
-      ++ (if robotsArea > 0 then "that the robots leave (the world's " ++ squareMetres floorArea
-                                 ++ " less the robots' " ++ squareMetres robotsArea ++ ")"
-                            else "the world has")
-      ++ ": they can never all lie apart, and a pile that cannot spread stalls the simulation"
+    overfullMessage n
+      | fromIntegral n * discArea ballDiameter > floorLeft =
+          (if n == 1 then "this ball covers " else "the " ++ show n ++ " balls up to this one cover ")
+          ++ squareMetres (fromIntegral n * discArea ballDiameter)
+          ++ ", more than the " ++ squareMetres floorLeft ++ " of floor "
+          ++ (if robotsArea > 0 then "that the robots leave (the world's " ++ squareMetres floorArea
+                                     ++ " less the robots' " ++ squareMetres robotsArea ++ ")"
+                                else "the world has")
+          ++ cannotSpread
+      | otherwise =
+          "the " ++ show n ++ " balls up to this one cover " ++ squareMetres (fromIntegral n * discArea ballDiameter)
+          ++ ", and all but one of them " ++ squareMetres (fromIntegral (n - 1) * discArea ballDiameter)
+          ++ ", more than the " ++ squareMetres packable ++ " that equal discs can cover of the world's "
+          ++ squareMetres floorArea ++ " (at most pi / sqrt 12, about 90.69%, of a floor)" ++ cannotSpread
+    cannotSpread = ": they can never all lie apart, and a pile that cannot spread stalls the simulation"
     labelledAt j = arr M.! j
     firstWithId = M.fromListWith min [ ((k, otRId o), i) | (i, o) <- placed, Just k <- [robotKindOf o] ]
     -- The placed objects on a grid of 1 m cells (no object is larger), each
@@ -233,6 +248,13 @@ worldProblems bounds labelled = concatMap problemsOf indexed
 -- obstacles of the benchmarks' 316 m world make 1,091.
 maxClosePairs :: Int
 maxClosePairs = 25000000
+
+-- | The largest share of a floor that equal discs lying apart can cover:
+-- @pi / sqrt 12@, about 0.9069 (their hexagonal packing; Fejes Toth's
+-- and Groemer's bound, which holds in any convex region for all discs
+-- but one). 'validateWorld' refuses more balls than that.
+densestPacking :: Double
+densestPacking = pi / sqrt 12
 
 -- | The area of a disc of the given diameter, in square metres.
 discArea :: Length -> Double

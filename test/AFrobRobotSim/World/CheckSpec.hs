@@ -15,7 +15,7 @@ import           Test.QuickCheck
 import           AFRP.Geometry
 import           AFrobRobotSim
 import           AFrobRobotSim.World (objectHalfSize, objectName)
-import           AFrobRobotSim.World.Check (maxClosePairs, maxProblems, worldProblems)
+import           AFrobRobotSim.World.Check (densestPacking, maxClosePairs, maxProblems, worldProblems)
 
 -- | The problems of a world ([] for a valid one).
 problems :: WorldTemplate -> [String]
@@ -125,37 +125,44 @@ spec = do
       fmap (map ("make 25003056 pairs" `isInfixOf`)) r `shouldBe` Just [True]
       r' <- timeout 30000000 (evaluate (problems (pile 7071)))
       r' `shouldBe` Just []
-  describe "validateWorld: the balls' discs no larger in all than the floor the robots leave" $ do
+  describe "validateWorld: the balls' discs no larger in all than the floor the robots leave, nor than equal discs can cover" $ do
     let ball  = OTBall (Point2 0 0)
-        robot = OTSimbotA 1 (Point2 3 3) 0
-    it "accepts 1414 balls piled in the notes' 100 m^2 (99.95 m^2 of discs) and refuses the 1415th" $ do
-      problems (replicate 1414 ball) `shouldBe` []
-      problems (replicate 1415 ball)
-        `shouldBe` [ "ball at (0.0, 0.0): the 1415 balls up to this one cover 100.02 m^2, more than the "
-                     ++ "100.00 m^2 of floor the world has: they can never all lie apart, and a pile "
+        -- 60 robots in rows along the south wall: 11.78 m^2 of discs
+        robots = [ OTSimbotA k (Point2 (-4.5 + fromIntegral (k `mod` 18) * 0.52) (-4.5 + fromIntegral (k `div` 18) * 0.52)) 0
+                 | k <- [0 .. 59] ]
+        corner = OTBall (Point2 4.5 4.5)
+    it "accepts 1284 balls piled in the notes' 100 m^2 (all but one: 90.69 m^2 of discs) and refuses the 1285th (it took 1414, 99.95 m^2, which can never lie apart)" $ do
+      problems (replicate 1284 ball) `shouldBe` []
+      problems (replicate 1285 ball)
+        `shouldBe` [ "ball at (0.0, 0.0): the 1285 balls up to this one cover 90.83 m^2, and all but one of them "
+                     ++ "90.76 m^2, more than the 90.69 m^2 that equal discs can cover of the world's 100.00 m^2 "
+                     ++ "(at most pi / sqrt 12, about 90.69%, of a floor): they can never all lie apart, and a pile "
                      ++ "that cannot spread stalls the simulation" ]
+    it "is pi / sqrt 12, the hexagonal packing's share: 1283 discs of a ball in 100 m^2 fit, 1284 do not" $ do
+      densestPacking `shouldSatisfy` (\d -> abs (d - 0.9069) < 1e-4)
+      let discOfBall = pi * 0.15 * 0.15 :: Double in (1283 * discOfBall <= densestPacking * 100, 1284 * discOfBall <= densestPacking * 100) `shouldBe` (True, False)
     it "reports the first ball past the area, once, however many follow" $
       map fst (worldProblems notesBounds (map ((,) "") (OTBlock (Point2 4 4) : replicate 3000 ball)))
-        `shouldBe` [1415]
+        `shouldBe` [1285]
     it "takes the robots' discs off the floor, wherever they stand in the list" $ do
-      -- one robot: 0.20 m^2, so 99.80 m^2 for the balls: 1411 (99.74) fit, 1412 (99.81) do not
-      problems (replicate 1411 ball ++ [robot]) `shouldBe` []
-      map fst (worldProblems notesBounds (map ((,) "") (replicate 1412 ball ++ [robot])))
-        `shouldBe` [1411]
-      problems (robot : replicate 1412 ball)
+      -- 60 robots: 11.78 m^2, so 88.22 m^2 for the balls: 1248 (88.22) fit, 1249 (88.29) do not
+      problems (robots ++ replicate 1248 corner) `shouldBe` []
+      map fst (worldProblems notesBounds (map ((,) "") (replicate 1249 corner ++ robots)))
+        `shouldBe` [1248]
+      problems (robots ++ replicate 1249 corner)
         `shouldSatisfy` (\ps -> case ps of
-                           [p] -> "the 1412 balls up to this one cover 99.81 m^2, more than the 99.80 m^2 of floor that the robots leave (the world's 100.00 m^2 less the robots' 0.20 m^2)" `isInfixOf` p
+                           [p] -> "the 1249 balls up to this one cover 88.29 m^2, more than the 88.22 m^2 of floor that the robots leave (the world's 100.00 m^2 less the robots' 11.78 m^2)" `isInfixOf` p
                            _   -> False)
     it "measures the floor by the world's size" $ do
-      -- (200 m^2: 2829 balls cover 199.97, 2830 cover 200.04)
-      problems (OTSize 20 10 : replicate 2829 ball) `shouldBe` []
-      map fst (worldProblems notesBounds (map ((,) "") (OTSize 20 10 : replicate 2830 ball)))
-        `shouldBe` [2830]
+      -- (200 m^2: all but one of 2567 balls cover 181.39, of 2568 181.46; 181.38 fit)
+      problems (OTSize 20 10 : replicate 2567 ball) `shouldBe` []
+      map fst (worldProblems notesBounds (map ((,) "") (OTSize 20 10 : replicate 2568 ball)))
+        `shouldBe` [2568]
     it "takes robots that overlap (reported) as leaving no floor, and says one ball in the singular" $
       map snd (worldProblems notesBounds (map ((,) "") (replicate 600 (OTSimbotA 1 (Point2 0 0) 0) ++ [ball])))
         `shouldSatisfy` (any ("ball at (0.0, 0.0): this ball covers 0.07 m^2, more than the 0.00 m^2 of floor that the robots leave (the world's 100.00 m^2 less the robots' 117.81 m^2)" `isInfixOf`))
     it "counts only the balls inside the world" $
-      problems (replicate 1414 ball ++ [OTBall (Point2 20 0)])
+      problems (replicate 1284 ball ++ [OTBall (Point2 20 0)])
         `shouldBe` ["ball at (20.0, 0.0): lies (partly) outside the world [-5.0, 5.0] x [-5.0, 5.0]"]
   describe "validateWorld: ids" $ do
     it "names both robots that share an id" $
