@@ -107,6 +107,7 @@ module AFrobRobotSim
   , startRobotStates
   , ControllerError (..)
   , RefereeError (..)
+  , isRunFailure
     -- * World files
   , parseWorld
   , renderWorld

@@ -308,8 +308,7 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
       -- how an exception ends the run (any other is thrown on)
       endedBy e
         | Just UserInterrupt <- fromException e       = pure Interrupted
-        | Just (_ :: ControllerError) <- fromException e = pure (Failed e)
-        | Just (_ :: RefereeError) <- fromException e = pure (Failed e)
+        | isRunFailure e                               = pure (Failed e)
         | Just (io :: IOException) <- fromException e = pure (WriteFailed io)
         -- (the heap limit, +RTS -M: the outputs are then written in
         -- what the run's states held, which they no longer need; were that

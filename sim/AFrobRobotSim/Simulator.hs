@@ -86,9 +86,10 @@ module AFrobRobotSim.Simulator
     -- * Failures
   , ControllerError (..)
   , RefereeError (..)
+  , isRunFailure
   ) where
 
-import           Control.Exception       (ErrorCall (..), Exception (..), SomeException, throw)
+import           Control.Exception       (ErrorCall (..), throw)
 import           GHC.Arr                 (Array, listArray, (!))
 import           Data.Bits               (shiftR, xor)
 import           Data.List               (foldl', sortOn)
@@ -383,27 +384,31 @@ simulateUnchecked cfg world rcA rcB
           msgs -> let kept = map capMessage msgs
                   in forceList kept `seq` (o { soMessages = kept }, Agent (agProps a) fut)
 
-    blame props t (e :: SomeException) = case fromException e of
-      Just (ce :: ControllerError) -> ce
-      Nothing                      -> ControllerError (rpType props) (rpId props) t e
+    blame props t = ControllerError (rpType props) (rpId props) t
 
-    -- The referee's scores of a snapshot, evaluated whole (names
-    -- distinct), and how they continue.
+    -- The referee's scores of a snapshot, evaluated whole (names distinct,
+    -- at most 'maxTextChars' characters long; values within 2^53), and how
+    -- they continue.
     stepScores t sc ws = blaming (refereeFailed "the scores (simScores)" t) $
       case (case sc of
               ScoresNew sf -> evalAtZero sf ws
               Scores fut   -> evalAt fut dt ws) of
         (out, fut) -> fut `seq` checkScores out `seq` (out, Scores fut)
-    checkScores out = case repeatedName Set.empty out of
-      Nothing   -> ()
-      Just name -> throw (ErrorCall ("it gave the score " ++ show name ++ " twice (a name holds one score)"))
-    repeatedName _ [] = Nothing
-    repeatedName seen ((k, v) : more)
-      | foldr seq () k `seq` v `seq` Set.member k seen = Just k
-      | otherwise                                      = repeatedName (Set.insert k seen) more
-    refereeFailed rule t (e :: SomeException) = case fromException e of
-      Just (re :: RefereeError) -> re
-      Nothing                   -> RefereeError rule t e
+    checkScores = go Set.empty
+      where
+        go _ [] = ()
+        go seen ((k, v) : more)
+          | not (null (drop maxTextChars k)) =
+              bad ("it gave a score whose name is longer than " ++ show maxTextChars ++ " characters ("
+                   ++ show (take 40 k) ++ "...)")
+          | foldr seq () k `seq` Set.member k seen = bad ("it gave the score " ++ show k ++ " twice (a name holds one score)")
+          | abs (toInteger v) > maxScore =
+              bad ("it gave the score " ++ show k ++ " the value " ++ show v ++ ", beyond 2^53 (" ++ show maxScore
+                   ++ "): the log and the result line write numbers as JSON's doubles, exact only within it")
+          | otherwise = go (Set.insert k seen) more
+        bad = throw . ErrorCall
+        maxScore = 2 ^ (53 :: Int) :: Integer
+    refereeFailed = RefereeError
 
     -- every robot's state, all at once when the list is first needed
     -- (with the noisy odometry's readings, or none when it is exact)

@@ -14,7 +14,7 @@ import           AFrobRobotSim.JSON (JSON (..), member, parseJSON)
 import           AFrobRobotSim.Log  (LogEvent (..), LogFrame (..), LogHeader (..), LogSummary (..), RunLog (..),
                                      readLogFile)
 import           AFrobRobotSim.Referee (checkGoals)
-import           TestUtil           (captured, withTempDir)
+import           TestUtil           (captured, withCaps, withTempDir)
 
 -- A robot that pushes the ball east: the ball crosses x = 2 after about
 -- 2 s, and the referee puts it back at its start, a goal.
@@ -72,8 +72,8 @@ spec = do
       lhGoals (rlHeader lg) `shouldBe` []
       map lfScores (rlFrames lg) `shouldSatisfy` all null
       fmap lsScores (rlSummary lg) `shouldBe` Just []
-    it "a referee whose scores fail stops the run as a failing controller does: named, exit 1, the outputs finished" $
-      withTempDir $ \dir -> do
+    it "a referee whose scores fail stops the run as a failing controller does: named, exit 1, the outputs finished, on one capability and on two" $
+      mapM_ (\caps -> withCaps caps $ withTempDir $ \dir -> do
         let failing = referee { refereeScores = localTime >>> arr (\t -> if t > 1.5 then errorWithoutStackTrace "no score"
                                                                          else [("A", 0)]) }
         (_, err, r) <- captured (runSimRefereedWith (opts dir) failing (Just pitch) push push)
@@ -83,7 +83,7 @@ spec = do
         fmap lsFailure (rlSummary lg) `shouldBe` Just (Just "the scores (simScores) failed at t = 1.510 s: no score")
         fmap lsScores (rlSummary lg) `shouldBe` Just [("A", 0)]
         page <- readFile (dir </> "page.html")
-        page `shouldSatisfy` ("no score" `isInfixOf`)
+        page `shouldSatisfy` ("no score" `isInfixOf`)) [1, 2]
     it "goals that cannot be drawn are refused before the run (exit 2, nothing written)" $ withTempDir $ \dir -> do
       let bad = referee { refereeGoals = [LogRect 0 0 1 1, LogRect (0 / 0) 0 1 1, LogRect 0 0 (-1) 1] }
       (_, err, r) <- captured (runSimRefereedWith (opts (dir </> "out")) bad (Just pitch) push push)

@@ -8,7 +8,7 @@ module AFrobRobotSim.SimulatorSpec (spec) where
 
 import           Control.Concurrent (myThreadId)
 import           Control.Exception (ArithException (..), AsyncException (..), ErrorCall (..), Exception (..), evaluate,
-                                    finally, throw, try)
+                                    SomeException, finally, throw, try)
 import           System.Exit       (ExitCode (..))
 import qualified Data.ByteString   as BS
 import qualified Data.ByteString.Char8 as BC
@@ -265,6 +265,24 @@ spec = do
                 "the scores (simScores) failed at t = 0.300 s: no referee"
       failsWith (constant [("a", 1), ("b", 2), ("a", 3)])
                 "the scores (simScores) failed at t = 0.000 s: it gave the score \"a\" twice (a name holds one score)"
+      failsWith (constant [("big", 2 ^ (53 :: Int) + 1)])
+                ("the scores (simScores) failed at t = 0.000 s: it gave the score \"big\" the value 9007199254740993, beyond "
+                 ++ "2^53 (9007199254740992): the log and the result line write numbers as JSON's doubles, exact only within it")
+      failsWith (constant [("endless", 1), (cycle "ab", 2)])
+                ("the scores (simScores) failed at t = 0.000 s: it gave a score whose name is longer than 10000 characters ("
+                 ++ show (take 40 (cycle "ab")) ++ "...)")
+      map wsScores (scored (constant [("edge", 2 ^ (53 :: Int)), ("low", negate (2 ^ (53 :: Int))), (replicate 10000 'x', 0)]))
+        `shouldSatisfy` all ((== 3) . length)
+    it "that read a failing controller's messages let its ControllerError through (it was blamed on the scores)" $ do
+      let loud _ = localTime >>> arr (\t -> mrFinalize (tcoPrintMessage (if t > 0.95 then Event (error "boom") else NoEvent)))
+          run = take 20 (simulateWith defaultSimConfig { simDt = 0.1, simScores = arr (\ws -> [("chars", length (concat (wsMessages ws)))]) }
+                                      w loud idle)
+      r <- try (evaluate (foldr (\s acc -> foldr seq () (wsScores s) `seq` acc) () run))
+      case r of
+        Left (e :: SomeException) -> do
+          fmap (\ce -> (ceRobotType ce, ceRobotId ce, ceTime ce)) (fromException e) `shouldBe` Just ("SimbotA", 1, 1.0)
+          isRunFailure e `shouldBe` True
+        Right _ -> expectationFailure "the run went on"
     it "are evaluated at every step, read or not (a run's memory stays bounded)" $ do
       let counted = localTime >>> arr (\t -> [("n", if t > 0.45 then error "evaluated" else 1)])
           run = take 10 (simulateWith defaultSimConfig { simDt = 0.1, simScores = counted } w idle idle)

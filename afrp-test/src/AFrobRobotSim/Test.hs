@@ -515,9 +515,8 @@ recordRunPage decided file config world states =
                   y : _ -> Just y <$ evaluate (forceWorldState y))
       case r of
         Left (e :: SomeException)
-          | Just (ce :: ControllerError) <- fromException e -> pure (steps, simulated, scores, Just (displayException ce))
-          | Just (re :: RefereeError) <- fromException e    -> pure (steps, simulated, scores, Just (displayException re))
-          | otherwise                                       -> throwIO e
+          | isRunFailure e          -> pure (steps, simulated, scores, Just (displayException e))
+          | otherwise               -> throwIO e
         Right Nothing               -> pure (steps, simulated, scores, Nothing)
         Right (Just y)              -> do
           recordReplayState recorder y

@@ -3,7 +3,8 @@
 {-# LANGUAGE ScopedTypeVariables #-}
 -- |
 -- Module      : AFrobRobotSim.Simulator.Failure
--- Description : A controller's failure, found in its own step and named.
+-- Description : A controller's failure, found in its own step and named;
+--               the referee's, found in its rules.
 --
 -- A controller fails when evaluating its step raises an exception (its
 -- own, or an error in a message it prints), overflows the stack, or gives
@@ -19,6 +20,7 @@
 module AFrobRobotSim.Simulator.Failure
   ( ControllerError (..)
   , RefereeError (..)
+  , isRunFailure
   , blaming
   , capMessage
   , maxTextChars
@@ -27,6 +29,7 @@ module AFrobRobotSim.Simulator.Failure
 
 import           Control.Exception       (AsyncException (StackOverflow), ErrorCall (..), Exception (..),
                                           SomeAsyncException, SomeException (..), catch, evaluate, throwIO, try)
+import           Data.Maybe              (isJust)
 import           Data.Typeable           (typeOf)
 import           GHC.IO                  (IO (..), unsafeDupablePerformIO)
 import           Text.Printf             (printf)
@@ -88,8 +91,17 @@ instance Exception RefereeError where
 describeReferee :: RefereeError -> String
 describeReferee e = printf "%s failed at t = %.3f s: %s" (reRule e) (reTime e) (displayException (reCause e))
 
+-- | Whether an exception is a run's failure, a 'ControllerError' or a
+-- 'RefereeError': what stops a run with a message naming who failed and
+-- when (the runner, "AFrobRobotSim.Run", and the testing kit's pages
+-- sort exceptions by it).
+isRunFailure :: SomeException -> Bool
+isRunFailure e = isJust (fromException e :: Maybe ControllerError) || isJust (fromException e :: Maybe RefereeError)
+
 -- | @blaming f v@ is @v@, with an exception that its evaluation raises
--- turned into @f e@ (a 'ControllerError' or a 'RefereeError'): 'Control.Exception.mapException', but leaving
+-- turned into @f e@ (a 'ControllerError' or a 'RefereeError'), unless it
+-- is already a run's failure ('isRunFailure': a controller's, met by the
+-- referee's rule reading the snapshot, say), which goes through as it is: 'Control.Exception.mapException', but leaving
 -- asynchronous exceptions (Ctrl-C, a timeout, the heap's limit; not a
 -- stack overflow, which is @v@'s) as they are, so that an
 -- interrupted run is not reported as a failing controller; and without
@@ -107,6 +119,7 @@ blaming :: Exception e => (SomeException -> e) -> a -> a
 blaming f v = unsafeDupablePerformIO (IO (\s -> case v of !r -> (# s, r #)) `catch` handler)
   where
     handler e = case fromException e of
+      _ | isRunFailure e -> throwIO e
       -- (a stack overflow is raised where the controller's evaluation
       -- went too deep: its failure, as with +RTS -K)
       _ | Just StackOverflow <- fromException e -> throwIO (f e)
