@@ -20,7 +20,10 @@
 -- @
 --
 -- (on one line: a run of @my-robot --seed 3 --param speed=0.5 --result
--- FILE@, whose @main@ calls @runSim (Just world)@). @world@ says where
+-- FILE@, whose @main@ calls @runSim (Just world)@). @program@ is the
+-- executable's name, or the name the options give
+-- ('AFrobRobotSim.Options.optProgram': each of @afrp-examples@'s
+-- examples writes @"afrp-examples rcReverse"@ and the like). @world@ says where
 -- the run's world came from
 -- ('WorldSource'): the @--world@ file's name, else @"program"@ for the
 -- world the program gives ('AFrobRobotSim.runSim' @(Just world)@, as
@@ -67,6 +70,7 @@ module AFrobRobotSim.Result
 import           Control.Exception    (SomeException, displayException, evaluate, try)
 import           Data.IORef           (IORef, atomicModifyIORef', newIORef, readIORef)
 import           Data.List            (foldl', nub)
+import           Data.Maybe           (fromMaybe)
 import qualified Data.Map.Strict      as M
 import           System.IO.Unsafe     (unsafePerformIO)
 import           System.Environment   (getArgs, getProgName)
@@ -331,10 +335,12 @@ stepTallies dt s ts = forceAll (zipWith one ts (wsRobots s))
 -- | The result line of a run: its settings (the program's name, its
 -- options and where its world came from) and its outcome (the summary
 -- and the robots' tallies at the last state simulated). See the module
--- documentation for the fields.
+-- documentation for the fields. The name given (the executable's) is
+-- written as @program@ unless the options name the program
+-- ('AFrobRobotSim.Options.optProgram').
 resultJSON :: String -> SimOptions -> WorldSource -> LogSummary -> [RobotTally] -> JSON
 resultJSON prog o source summary tallies = JObject
-  [ ("program", JString (argText prog))
+  [ ("program", JString (argText (fromMaybe prog (optProgram o))))
   , ("world", JString (worldSourceName source))
   , ("seed", JNumber (fromIntegral (optSeed o)))
   , ("dt", JNumber (optDt o))
