@@ -25,7 +25,8 @@
 -- ('AFrobRobotSim.Options.optProgram': each of @afrp-examples@'s
 -- examples writes @"afrp-examples rcReverse"@ and the like). @world@ says where
 -- the run's world came from
--- ('WorldSource'): the @--world@ file's name, else @"program"@ for the
+-- ('WorldSource'): the @--world@ file's name (@"./default"@ for a file
+-- named @default@, and so for @program@), else @"program"@ for the
 -- world the program gives ('AFrobRobotSim.runSim' @(Just world)@, as
 -- @afrp-examples@ and most programs do), else @"default"@ for the
 -- built-in default world ('AFrobRobotSim.runSim' 'Nothing', as @simbot@
@@ -298,12 +299,19 @@ worldSource o mworld = case (optWorldFile o, mworld) of
   _              -> BuiltInWorld
 
 -- | The result line's @world@: @"default"@, @"program"@, or the world
--- file's name (as text: 'AFrobRobotSim.Options.argText').
+-- file's name (as text: 'AFrobRobotSim.Options.argText'), with @./@
+-- before a file named @default@ or @program@ (@--world default@ is
+-- @"./default"@), which would otherwise read as the built-in world or the
+-- program's own (as @scripts/sweep@ writes it too, for a run with no
+-- result).
 worldSourceName :: WorldSource -> String
 worldSourceName w = case w of
   BuiltInWorld   -> "default"
   ProgramWorld   -> "program"
-  WorldFile file -> argText file
+  WorldFile file
+    | name `elem` ["default", "program"] -> "./" ++ name
+    | otherwise                          -> name
+    where name = argText file
 
 -- | What the result line keeps of one robot while the run goes: strict,
 -- so its memory is constant however long the run.

@@ -311,6 +311,14 @@ spec = do
       -- world are names as given, not the unnamed world
       lines (tableOf' ["{\"program\":\"p\",\"world\":\"\",\"seed\":1,\"params\":{\"world\":\"\"},\"flags\":\"x\",\"failure\":\"boom\"}"])
         `shouldSatisfy` elem "== world=\"\" world=\"\"  (1 runs, 1 failed)"
+      -- the line an older sweep wrote for a run of a world file named
+      -- default or program (it wrote such a name bare) is that file's, as
+      -- a result line names it (./default), not the built-in world's
+      let ofFile w = replace "\"world\":null" ("\"world\":\"" ++ w ++ "\"") (noResult (7 :: Int))
+      filter ("== " `isPrefixOf`) (lines (tableOf' (take 2 sampleLines ++ [ofFile "default", own "\"./default\"" (sampleLines !! 2)])))
+        `shouldBe` ["== world=./default speed=0.1  (2 runs, 1 failed)", "== world=default speed=0.1  (2 runs, 0 failed)"]
+      filter ("== " `isPrefixOf`) (lines (tableOf' (map (own "\"program\"") (take 2 sampleLines) ++ [ofFile "program"])))
+        `shouldBe` ["== world=./program speed=0.1  (1 runs, 1 failed)", "== world=program speed=0.1  (2 runs, 0 failed)"]
       -- a run that is a result line too is merged twice
       tableOf' (take 2 sampleLines ++ [noResult (2 :: Int)]) `shouldSatisfy`
         ("refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too" `isPrefixOf`)
@@ -701,6 +709,27 @@ spec = do
       field ["params"] (parsed line) `shouldBe` JObject [("speed", JString "2"), ("k", JString "a"), ("ratio", JString "1%0")]
       table <- merged dir [dir </> "r.jsonl"]
       table `shouldSatisfy` ("k=a ratio=1%0 speed=2  (1 runs, 1 failed)" `isInfixOf`)
+
+    it "a world file named default is ./default on a run's result line and on the sweep's line for a run with no result (both said \"default\", the built-in world's name)" $ withTempDir $ \dir -> do
+      requireParallel
+      real <- childScript dir "program"
+      sweep <- script "sweep"
+      -- (the program, but seed 2 stops at once, writing no result)
+      let prog = dir </> "fails2"
+      writeFile prog (unlines [ "#!/bin/bash"
+                              , "case \" $* \" in *' --seed 2 '*) echo 'no luck' >&2; exit 3 ;; esac"
+                              , "exec '" ++ real ++ "' \"$@\"" ])
+      p <- getPermissions prog
+      setPermissions prog (setOwnerExecutable True p)
+      writeFile (dir </> "default") "simbotA 1 at 0 0 heading 0 deg\n"
+      writeFile (dir </> "jobs") "--seed 1 --world default\n--seed 2 --world default\n--seed 3\n"
+      (code, _, _) <- readCreateProcessWithExitCode
+        (proc "bash" [sweep, "--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "1"]) { cwd = Just dir } ""
+      code `shouldBe` ExitFailure 1
+      rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+      map (field ["world"]) rs `shouldBe` [JString "./default", JString "./default", JString "program"]
+      table <- merged dir [dir </> "r.jsonl"]
+      filter ("== " `isPrefixOf`) (lines table) `shouldBe` ["== world=./default  (2 runs, 1 failed)", "== world=program  (1 runs, 0 failed)"]
 
     it "reads --shard and --seeds in decimal (010 is ten), and refuses what would run the wrong jobs" $ withTempDir $ \dir -> do
       sweep <- script "sweep"

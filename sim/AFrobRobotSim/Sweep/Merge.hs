@@ -63,7 +63,9 @@ type Setting = [(String, String)]
 unnamedWorld :: String
 unnamedWorld = "\NUL"
 
--- The worlds a result line names when the run got no @--world@.
+-- The worlds a result line names when the run got no @--world@ (it names
+-- a world file of either name @./default@, @./program@:
+-- 'AFrobRobotSim.Result.worldSourceName').
 ownWorlds :: [String]
 ownWorlds = ["default", "program"]
 
@@ -88,7 +90,9 @@ data Run = Run
 -- a number, @dt@, @seconds@, @params@ and the @outcome@ object with
 -- @simulated@, @steps@, @interrupted@, @failure@, @robots@ and @scores@),
 -- or the line @scripts/sweep@ writes for a run that wrote none
--- (@program@, @world@ a string or @null@ when the run got no @--world@,
+-- (@program@, @world@ a string or @null@ when the run got no @--world@:
+-- @default@ or @program@ there, from an older sweep, is the world file of
+-- that name, which the result line calls @./default@ or @./program@;
 -- @seed@ a number or a string, @params@, @flags@, and @failure@ a string
 -- where the result line has its outcome). Any
 -- other JSON (a run log's line, @{}@) is refused, naming what it lacks,
@@ -100,11 +104,15 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
     _           -> Left "not a JSON object"
   _      <- member "program" v >>= asString
   worldValue <- member "world" v
-  world  <- case worldValue of
+  world  <- case (worldValue, lookup "outcome" fields) of
     -- (the sweep's line for a run that got no --world: which world the
     -- program ran, the sweep cannot tell)
-    JNull | Nothing <- lookup "outcome" fields -> Right unnamedWorld
-    _                                          -> asString worldValue
+    (JNull, Nothing) -> Right unnamedWorld
+    -- (the sweep's line for a run of --world default, written by a sweep
+    -- from before it wrote such a file as a result line does, ./default:
+    -- the file, not the built-in world)
+    (_, Nothing) -> asString worldValue >>= \w -> Right (if w `elem` ownWorlds then "./" ++ w else w)
+    _            -> asString worldValue
   params <- member "params" v >>= \p -> case p of
     JObject kvs -> mapM (\(k, x) -> (,) k <$> asString x) kvs
     _           -> Left "\"params\" is not an object"
