@@ -329,10 +329,23 @@ spec = do
                         ++ ",\"flags\":\"--seed 007 --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
           refusedAt k ls = mergeResults (unlines ls) `shouldSatisfy`
             either (("line " ++ show (k :: Int) ++ ": not a result line of a sweep") `isPrefixOf`) (const False)
-      -- the sweep's line for a run that wrote no result is a failed run
+      -- the sweep's line for a run that wrote no result is a failed run;
+      -- its seed, written as an older sweep wrote --seed 007, is the
+      -- number the run reads (it was listed as "007", and not matched with
+      -- the run's result line, seed 7)
       mergeResults (unlines (take 2 sampleLines ++ [failureLine])) `shouldSatisfy`
         either (const False) (\t -> "speed=1  (1 runs, 1 failed)" `isInfixOf` t
-                                   && "FAILED seed \"007\": exit code 2, no result: bad flag" `isInfixOf` t)
+                                   && "FAILED seed 7: exit code 2, no result: bad flag" `isInfixOf` t)
+      -- (the line's world default is the file so named, ./default: an
+      -- older sweep's line)
+      mergeResults (unlines [failureLine, replace "\"world\":\"default\"" "\"world\":\"./default\"" (resultLine 7 [("speed", "1")] 1 Nothing)])
+        `shouldSatisfy` either ("line 2: the run world=./default speed=1 seed 7 (dt 0.01, seconds 1) is on an earlier line too" `isPrefixOf`)
+                               (const False)
+      forM_ ["+7", " 7 ", "-0", "9007199254740993", "7.0", "abc", ""] $ \t -> do
+        let odd' = replace "\"seed\":\"007\"" ("\"seed\":" ++ encodeJSON (JString t)) failureLine
+            listed = either (const []) (filter ("  FAILED" `isPrefixOf`) . lines) (mergeResults odd')
+        listed `shouldBe` ["  FAILED seed " ++ (case t of { "+7" -> "7"; " 7 " -> "7"; "-0" -> "0"; _ -> encodeJSON (JString t) })
+                           ++ ": exit code 2, no result: bad flag"]
       -- an empty object, a run log's lines, another JSON value, not JSON
       refusedAt 1 ["{}"]
       refusedAt 2 [head sampleLines, "{\"kind\":\"summary\",\"simulated\":1,\"steps\":101,\"interrupted\":false,\"failure\":null,\"scores\":{}}"]
@@ -870,9 +883,32 @@ spec = do
       ls <- lines <$> readFile (dir </> "r.jsonl")
       map (field ["params"] . parsed) (take 2 ls)
         `shouldBe` [JObject [("flags", JString "a"), ("failure", JString "nan")], JObject [("k", JString "*")]]
-      field ["seed"] (parsed (ls !! 2)) `shouldBe` JString "007"
+      field ["seed"] (parsed (ls !! 2)) `shouldBe` JNumber 7
       table <- merged dir [dir </> "r.jsonl"]
-      table `shouldSatisfy` ("FAILED seed \"007\": exit code 2, no result" `isInfixOf`)
+      table `shouldSatisfy` ("FAILED seed 7: exit code 2, no result" `isInfixOf`)
+
+    it "writes the seed of a run with no result as the run reads it, a number (--seed 007 was \"007\", which the merge did not match with the run's result line, seed 7)" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      writeFile (dir </> "jobs") (unlines
+        [ "--seed 007 --no-such-flag", "--seed +8 --no-such-flag", "--seed 9007199254740992 --no-such-flag"
+        , "--seed 09007199254740993 --no-such-flag", "--seed abc --no-such-flag", "--param speed=2 --no-such-flag"
+        , "--seed -005 --no-such-flag", "--seed -0 --param speed=3 --no-such-flag" ])
+      (code, _, _) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "1"]
+      code `shouldBe` ExitFailure 1
+      ls <- lines <$> readFile (dir </> "r.jsonl")
+      map (field ["seed"] . parsed) ls `shouldBe`
+        [ JNumber 7, JNumber 8, JNumber 9007199254740992, JString "09007199254740993", JString "abc"
+        , JNumber 0, JNumber (-5), JNumber 0 ]
+      -- the run of seed 7 rerun, with its result line: the same run twice
+      (code7, _, line7) <- runOnce dir ["--seconds", "1", "--seed", "7"]
+      code7 `shouldBe` ExitSuccess
+      writeFile (dir </> "rerun.jsonl") line7
+      merger <- childScript dir "merge"
+      (codeM, out, err) <- readProcessWithExitCode merger [dir </> "r.jsonl", dir </> "rerun.jsonl"] ""
+      (codeM, out) `shouldBe` (ExitFailure 1, "")
+      err `shouldSatisfy` ("afrp-sweep-merge: the run world=program seed 7 is on a line for a run with no result and on a result line too" `isPrefixOf`)
 
     it "refuses a RESULTS that is a world, the jobs file or the program, under any name, before writing anything" $ withTempDir $ \dir -> do
       prog <- childScript dir "program"
