@@ -243,6 +243,14 @@ spec = do
       forAll (shuffle sampleLines) $ \ls -> mergeResults (unlines ls) == mergeResults (unlines sampleLines)
     it "reports a line that is not JSON with its number" $
       mergeResults (unlines [head sampleLines, "not json"]) `shouldSatisfy` either ("line 2" `isInfixOf`) (const False)
+    it "places a fault in a line that is not JSON by its column of the line, the file's line the only line named (it said: line 2: ... line 1, column 151)" $ do
+      let cut = take 150 (head sampleLines)
+      mergeResults (unlines [head sampleLines, cut]) `shouldSatisfy`
+        either (\e -> "line 2: not a result line of a sweep (not JSON: column 151 of the line: " `isPrefixOf` e
+                      && not ("line 1" `isInfixOf` e))
+               (const False)
+      mergeResults (unlines [head sampleLines, "{\"program\" 1}"]) `shouldBe`
+        Left "line 2: not a result line of a sweep (not JSON: column 12 of the line: expected ':', found '1')"
     it "refuses a line that repeats a run (the same setting and seed: a file merged twice), naming it" $ do
       let twice = mergeResults (unlines (sampleLines ++ take 2 sampleLines))
       twice `shouldSatisfy` either ("line 6: the run world=default speed=0.1 seed 1 (dt 0.01, seconds 1) is on an earlier line too" `isPrefixOf`)
@@ -362,6 +370,14 @@ spec = do
         refusedAt 1 [without k failureLine]
       refusedAt 1 [replace "\"seed\":1," "\"seed\":\"1\"," (head sampleLines)]
       refusedAt 1 [replace "\"failure\":\"exit" "\"failure\":{\"exit\":1},\"x\":\"exit" failureLine]
+
+    it "afrp-sweep-merge: a result line cut short is refused with its file and line, and its column of the line (it said line 1 too)" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      writeFile (dir </> "r.jsonl") (unlines [head sampleLines, take 150 (head sampleLines)])
+      (code, out, err) <- readProcessWithExitCode merger [dir </> "r.jsonl"] ""
+      (code, out) `shouldBe` (ExitFailure 1, "")
+      err `shouldSatisfy` ((dir </> "r.jsonl" ++ ": line 2: not a result line of a sweep (not JSON: column 151 of the line: ") `isInfixOf`)
+      err `shouldNotSatisfy` ("line 1" `isInfixOf`)
 
     it "afrp-sweep-merge: a run log given by mistake is refused with its file and line (exit 1)" $ withTempDir $ \dir -> do
       prog <- childScript dir "program"

@@ -25,12 +25,12 @@ module AFrobRobotSim.Sweep.Merge
 
 import           Control.Monad       (foldM)
 import           Data.Bits           (shiftL)
-import           Data.Char           (isPrint, isSpace)
+import           Data.Char           (isDigit, isPrint, isSpace)
 import qualified Data.ByteString     as B
 import qualified Data.IntMap.Strict  as IM
 import qualified Data.IntSet         as IS
 import qualified Data.Map.Strict     as M
-import           Data.List           (sortOn)
+import           Data.List           (sortOn, stripPrefix)
 import           Data.Ratio          ((%))
 import qualified Data.Set            as S
 import           Text.Printf         (printf)
@@ -336,9 +336,17 @@ addLine m l
   | all isSpace l = Right m
   | otherwise = either (Left . notJSON) Right (parseJSON l) >>= readRun >>= addRun m
 
--- The message of a line that is not JSON (the parser's message given).
+-- The message of a line that is not JSON (the parser's message given). The
+-- parser places its fault at @line 1, column C@ of the text it parsed,
+-- which is this one line (its first and only line): said as @column C of
+-- the line@, so that the only line a message numbers is the file's
+-- (@line 2: ... (not JSON: line 1, column 151 ...)@ read as two lines).
 notJSON :: String -> String
-notJSON e = "not a result line of a sweep (not JSON: " ++ e ++ ")"
+notJSON e = "not a result line of a sweep (not JSON: " ++ ofTheLine e ++ ")"
+  where
+    ofTheLine m = case stripPrefix "line 1, column " m of
+      Just rest | (c@(_ : _), ':' : msg) <- span isDigit rest -> "column " ++ c ++ " of the line:" ++ msg
+      _                                                       -> m
 
 -- | 'addLine' of a line's bytes, found to be UTF-8: the same merge, or the
 -- same message, as 'addLine' of its text. The bytes are parsed as they
