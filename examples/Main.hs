@@ -45,7 +45,7 @@ runExample :: String -> Example -> [String] -> IO ()
 runExample prog e flags = case (e, flags) of
   (SignalExample {}, []) -> putStr (exReport e)
   -- (a signal-function example with flags is a Left)
-  _ -> case exampleCommand e flags of
+  _ -> case exampleCommand prog e flags of
     Left err            -> usageError prog err
     Right ShowHelp      -> putStrLn (usage (prog ++ " " ++ exName e))
     Right (RunWith opt) -> runSimRefereedWith opt (exReferee e) (Just (exWorld e)) (exControllerA e) (exControllerB e)

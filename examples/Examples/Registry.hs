@@ -60,16 +60,23 @@ exampleListing es = unlines $
     showKey (t, c) = (if t == fromIntegral (round t :: Integer) then show (round t :: Integer) else show t)
                      ++ [':', c]
 
--- | A robot example's command line ('parseSimArgs'), with the example's
--- defaults: its @--seconds@, and its scripted keys ('exKeys') when the
--- command line gives no @--keys@ (every @--keys@ adds its presses, so the
--- example's script is not one to add to: @--keys 1:+@ presses + once).
--- A signal-function example takes no flags: a 'Left' saying so.
-exampleCommand :: Example -> [String] -> Either String Command
-exampleCommand e flags = case e of
+-- | @exampleCommand prog e flags@: a robot example's command line
+-- ('parseSimArgs'), with the example's defaults: its @--seconds@, its
+-- scripted keys ('exKeys') when the command line gives no @--keys@ (every
+-- @--keys@ adds its presses, so the example's script is not one to add
+-- to: @--keys 1:+@ presses + once), and its name in the result line,
+-- @prog@ and the example's name ('optProgram': @afrp-examples rcReverse@),
+-- so that the result lines of several examples, each in its own world,
+-- are told apart. A signal-function example takes no flags: a 'Left'
+-- saying so.
+exampleCommand :: String -> Example -> [String] -> Either String Command
+exampleCommand prog e flags = case e of
   SignalExample {} -> Left (exName e ++ " is a signal-function example; it takes no flags")
-  RobotExample {}  -> fmap scripted (parseSimArgs defaultSimOptions { optSeconds = exSeconds e } flags)
+  RobotExample {}  -> fmap (named . scripted)
+                           (parseSimArgs defaultSimOptions { optSeconds = exSeconds e } flags)
   where
     scripted (RunWith opt) | "--keys" `notElem` flags = RunWith opt { optKeys = exKeys e }
     scripted c = c
+    named (RunWith opt) = RunWith opt { optProgram = Just (prog ++ " " ++ exName e) }
+    named c = c
 

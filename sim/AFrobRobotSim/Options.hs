@@ -45,7 +45,9 @@
 -- most 'maxFrameSide' pixels wide and tall. A @--video@'s name must end
 -- in one of 'videoExtensions'. Options set in code are held to what the
 -- flags hold them to, and 'optParams' to one value a name (a command line
--- keeps a repeated @--param@'s last value, and warns).
+-- keeps a repeated @--param@'s last value, and warns); a fault only they
+-- can have is named by the record's field (@optSeconds must be a finite
+-- number >= 0, got -1.0@), one a command line can have too by its flags.
 --
 -- = Scale
 --

@@ -20,9 +20,13 @@
 -- @
 --
 -- (on one line: a run of @my-robot --seed 3 --param speed=0.5 --result
--- FILE@, whose @main@ calls @runSim (Just world)@). @world@ says where
+-- FILE@, whose @main@ calls @runSim (Just world)@). @program@ is the
+-- executable's name, or the name the options give
+-- ('AFrobRobotSim.Options.optProgram': each of @afrp-examples@'s
+-- examples writes @"afrp-examples rcReverse"@ and the like). @world@ says where
 -- the run's world came from
--- ('WorldSource'): the @--world@ file's name, else @"program"@ for the
+-- ('WorldSource'): the @--world@ file's name (@"./default"@ for a file
+-- named @default@, and so for @program@), else @"program"@ for the
 -- world the program gives ('AFrobRobotSim.runSim' @(Just world)@, as
 -- @afrp-examples@ and most programs do), else @"default"@ for the
 -- built-in default world ('AFrobRobotSim.runSim' 'Nothing', as @simbot@
@@ -67,6 +71,7 @@ module AFrobRobotSim.Result
 import           Control.Exception    (SomeException, displayException, evaluate, try)
 import           Data.IORef           (IORef, atomicModifyIORef', newIORef, readIORef)
 import           Data.List            (foldl', nub)
+import           Data.Maybe           (fromMaybe)
 import qualified Data.Map.Strict      as M
 import           System.IO.Unsafe     (unsafePerformIO)
 import           System.Environment   (getArgs, getProgName)
@@ -294,12 +299,19 @@ worldSource o mworld = case (optWorldFile o, mworld) of
   _              -> BuiltInWorld
 
 -- | The result line's @world@: @"default"@, @"program"@, or the world
--- file's name (as text: 'AFrobRobotSim.Options.argText').
+-- file's name (as text: 'AFrobRobotSim.Options.argText'), with @./@
+-- before a file named @default@ or @program@ (@--world default@ is
+-- @"./default"@), which would otherwise read as the built-in world or the
+-- program's own (as @scripts/sweep@ writes it too, for a run with no
+-- result).
 worldSourceName :: WorldSource -> String
 worldSourceName w = case w of
   BuiltInWorld   -> "default"
   ProgramWorld   -> "program"
-  WorldFile file -> argText file
+  WorldFile file
+    | name `elem` ["default", "program"] -> "./" ++ name
+    | otherwise                          -> name
+    where name = argText file
 
 -- | What the result line keeps of one robot while the run goes: strict,
 -- so its memory is constant however long the run.
@@ -331,10 +343,12 @@ stepTallies dt s ts = forceAll (zipWith one ts (wsRobots s))
 -- | The result line of a run: its settings (the program's name, its
 -- options and where its world came from) and its outcome (the summary
 -- and the robots' tallies at the last state simulated). See the module
--- documentation for the fields.
+-- documentation for the fields. The name given (the executable's) is
+-- written as @program@ unless the options name the program
+-- ('AFrobRobotSim.Options.optProgram').
 resultJSON :: String -> SimOptions -> WorldSource -> LogSummary -> [RobotTally] -> JSON
 resultJSON prog o source summary tallies = JObject
-  [ ("program", JString (argText prog))
+  [ ("program", JString (argText (fromMaybe prog (optProgram o))))
   , ("world", JString (worldSourceName source))
   , ("seed", JNumber (fromIntegral (optSeed o)))
   , ("dt", JNumber (optDt o))

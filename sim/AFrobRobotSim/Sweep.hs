@@ -110,7 +110,8 @@ mergeHandle name h m0 = newLineReader h maxBound maxLineBytes >>= \src -> go src
 --   (@no result lines in FILE, ...@), a line that is not UTF-8
 --   (@FILE:LINE:COLUMN: invalid UTF-8@), a line that is not a result line
 --   of a sweep (@FILE: line N: not a result line of a sweep (...)@: not
---   JSON, or JSON that is neither a run's result line nor the sweep's
+--   JSON, its fault placed at @column C of the line@ (a line cut short:
+--   at its end), or JSON that is neither a run's result line nor the sweep's
 --   line for a run with no result, such as a run log given by mistake),
 --   or a line that repeats a run (@FILE: line N: the run ... is on an
 --   earlier line too@); and, once every line is read, a run on the

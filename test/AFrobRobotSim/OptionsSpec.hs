@@ -32,22 +32,43 @@ spec = do
                ["--fps", a, "or", b] ->
                  counterexample m (conjoin [ counterexample f (faults base { optFps = read f } === []) | f <- [a, b] ])
                other -> counterexample ("no two rates in: " ++ m ++ " " ++ show other) False
-  describe "validateOptions, numbers set in code" $
-    it "refuses what each flag refuses, for options that no flag made (runSimWith's)" $ do
+  describe "validateOptions, numbers set in code" $ do
+    it "refuses what each flag refuses, for options that no flag made (runSimWith's), naming the record's field (it named the flag)" $ do
       let d = defaultSimOptions
           faults o = [ m | m <- validateOptions o, m `notElem` validateOptions d ]
-      faults d { optSeconds = -1 } `shouldBe` ["--seconds must be a number >= 0, got -1.0"]
-      faults d { optOdometryNoise = 0 / 0 } `shouldBe` ["--odometry-noise must be a number from 0 to 1, got NaN"]
-      faults d { optOdometryNoise = -0.1 } `shouldBe` ["--odometry-noise must be a number from 0 to 1, got -0.1"]
-      faults d { optScale = Just 0 } `shouldSatisfy` elem "--scale must be a positive number, got 0.0"
-      faults d { optSeed = 2 ^ (60 :: Int) } `shouldBe` ["--seed must be a whole number from -2^53 to 2^53, got 1152921504606846976"]
-      faults d { optKeys = [(1, 'a'), (-2, 'b')] } `shouldBe` ["--keys: a key press's time must be a finite number >= 0, got -2.0 for 'b'"]
-      faults d { optDt = 2e6, optSeconds = 4e6, optFps = 1e-7 } `shouldSatisfy` elem "--dt must be a positive number up to 1000000, got 2000000.0"
+      faults d { optSeconds = -1 } `shouldBe` ["optSeconds must be a finite number >= 0, got -1.0"]
+      faults d { optOdometryNoise = 0 / 0 } `shouldBe` ["optOdometryNoise must be a number from 0 to 1, got NaN"]
+      faults d { optOdometryNoise = -0.1 } `shouldBe` ["optOdometryNoise must be a number from 0 to 1, got -0.1"]
+      faults d { optScale = Just 0 }
+        `shouldBe` ["optScale must be Nothing (the scale that fits the world) or Just a finite number > 0, got Just 0.0"]
+      faults d { optSeed = 2 ^ (60 :: Int) } `shouldBe` ["optSeed must be a whole number from -2^53 to 2^53, got 1152921504606846976"]
+      faults d { optKeys = [(1, 'a'), (-2, 'b')] } `shouldBe` ["optKeys: a key press's time must be a finite number >= 0, got -2.0 for 'b'"]
+      faults d { optDt = 2e6, optSeconds = 4e6, optFps = 1e-7 } `shouldSatisfy` elem "optDt must be a positive number up to 1000000, got 2000000.0"
       -- (a parameter's name twice in optParams: the result line would hold the key twice)
       faults d { optParams = [("a", "1"), ("b", "2"), ("a", "3")] }
-        `shouldBe` ["--param a is in the settings' parameters (optParams) twice; a name holds one value"]
+        `shouldBe` ["optParams names the parameter \"a\" twice; a name holds one value"]
+      faults d { optOut = "" } `shouldBe` ["optOut must not be empty"]
       -- (and the limits themselves are fine)
       faults d { optOdometryNoise = 1, optSeed = 2 ^ (53 :: Int), optKeys = [(0, 'a')], optSeconds = 0 } `shouldBe` []
+    it "names the field that is not finite or not positive, each alone (a frame rate or a scale set to infinity, a negative frame rate, was \"--seconds and --dt must be finite numbers\")" $ do
+      let d = defaultSimOptions
+      validateOptions d { optFps = 1 / 0 } `shouldBe` ["optFps must be a finite number > 0, got Infinity"]
+      validateOptions d { optFps = -25 } `shouldBe` ["optFps must be a finite number > 0, got -25.0"]
+      validateOptions d { optScale = Just (1 / 0) }
+        `shouldBe` ["optScale must be Nothing (the scale that fits the world) or Just a finite number > 0, got Just Infinity"]
+      validateOptions d { optDt = 0 } `shouldBe` ["optDt must be a positive number up to 1000000, got 0.0"]
+      validateOptions d { optDt = -0.04, optFps = -25 }
+        `shouldBe` ["optDt must be a positive number up to 1000000, got -0.04", "optFps must be a finite number > 0, got -25.0"]
+      validateOptions d { optSeconds = 0 / 0 } `shouldBe` ["optSeconds must be a finite number >= 0, got NaN"]
+      validateOptions d { optSeconds = 1 / 0 } `shouldBe` ["optSeconds must be a finite number >= 0, got Infinity"]
+      -- (the settings a command line starts from are set in code: so named)
+      parseSimArgs d { optFps = 0 } ["--seconds", "2"] `shouldBe` Left "optFps must be a finite number > 0, got 0.0"
+    it "leaves the command line's messages naming its flags (its values are refused by the flags, or found together)" $ do
+      let refusal args = either id (const "") (parseSimArgs defaultSimOptions args)
+      map refusal [ ["--seconds", "-1"], ["--dt", "0"], ["--fps", "0"], ["--scale", "0"], ["--odometry-noise", "2"]
+                  , ["--seed", "1e20"], ["--keys", "-1:a"], ["--out", ""], ["--svg", ""]
+                  , ["--seconds", "1e20", "--dt", "0.01"], ["--fps", "30"] ]
+        `shouldSatisfy` all (\m -> "--" `isPrefixOf` m && not ("opt" `isInfixOf` m))
   describe "readableNumber (the helper once exported as num)" $
     it "writes a number as the messages do: three decimals at most, no trailing zeros, an exponent when far from 1" $
       map readableNumber [25, 0.01, 100 / 3, 0, -2.5, 1e20, 2.5e-4, 1e6]

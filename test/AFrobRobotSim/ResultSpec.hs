@@ -32,13 +32,16 @@ talliesOf (r0 : rs) = map view (scanl next (startTallies [r0]) rs)
 
 spec :: Spec
 spec = do
-  describe "worldSource" $
+  describe "worldSource" $ do
     it "tells the built-in default world from the program's own (both were \"default\"), and --world wins" $ do
       let file = defaultSimOptions { optWorldFile = Just "w.world" }
       map (worldSourceName . uncurry worldSource)
           [(defaultSimOptions, Nothing), (defaultSimOptions, Just ()), (file, Nothing), (file, Just ())]
         `shouldBe` ["default", "program", "w.world", "w.world"]
       worldSource file (Just ()) `shouldBe` WorldFile "w.world"
+    it "writes a world file named default or program as ./default, ./program (it read as the built-in world, the program's own)" $
+      map (worldSourceName . WorldFile) ["default", "program", "./default", "worlds/default", "defaults", "program/"]
+        `shouldBe` ["./default", "./program", "./default", "worlds/default", "defaults", "program/"]
   describe "startTallies and stepTallies" $ do
     it "sum the straight-line steps of a robot's centre, not its displacement from the start" $
       -- (1 m out, 1 m back: 2 m travelled, none displaced)

@@ -475,7 +475,7 @@ spec = do
           (proc self []) { env = Just ((childVariable, "badnoise:" ++ dir) : environment) } ""
         (code, out) `shouldBe` (ExitFailure 2, "")
         lines err `shouldSatisfy` \ls -> all (`elem` map (dropWhile (== ' ')) ls)
-          [ "--odometry-noise must be a number from 0 to 1, got 2.0", "--dt must be a positive number up to 1000000, got 2000000.0" ]
+          [ "optOdometryNoise must be a number from 0 to 1, got 2.0", "optDt must be a positive number up to 1000000, got 2000000.0" ]
         err `shouldNotSatisfy` ("CallStack" `isInfixOf`)
         readFile (dir </> "run.jsonl") `shouldReturn` "an earlier log\n"
     it "a world file that is not there still exits with code 2" $ withTempDir $ \dir -> do
@@ -1090,9 +1090,9 @@ spec = do
             -- (a file in it was refused only after the run, by the write)
             && elem ("--svg " ++ show (dir </> "locked" </> "a.svg") ++ ": its folder, " ++ show (dir </> "locked")
                      ++ ", may not be searched (no x permission)") ls
-    it "an empty --out" $ do
+    it "an empty --out (set in code, an empty optOut, said so)" $ do
       parseSimArgs defaultSimOptions ["--out", ""] `shouldSatisfy` either ("--out" `isInfixOf`) (const False)
-      refused (\_ -> (quick "") { optFrames = True }) ("--out" `isInfixOf`)
+      refused (\_ -> (quick "") { optFrames = True }) ("optOut must not be empty" `isInfixOf`)
     it "a step count that overflows or is beyond the maximum" $ do
       refused (\dir -> (quick dir) { optSeconds = 1e20 }) ("steps" `isInfixOf`)
       refused (\dir -> (quick dir) { optDt = 1e-300 }) ("steps" `isInfixOf`)

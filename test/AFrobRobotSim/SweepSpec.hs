@@ -243,6 +243,14 @@ spec = do
       forAll (shuffle sampleLines) $ \ls -> mergeResults (unlines ls) == mergeResults (unlines sampleLines)
     it "reports a line that is not JSON with its number" $
       mergeResults (unlines [head sampleLines, "not json"]) `shouldSatisfy` either ("line 2" `isInfixOf`) (const False)
+    it "places a fault in a line that is not JSON by its column of the line, the file's line the only line named (it said: line 2: ... line 1, column 151)" $ do
+      let cut = take 150 (head sampleLines)
+      mergeResults (unlines [head sampleLines, cut]) `shouldSatisfy`
+        either (\e -> "line 2: not a result line of a sweep (not JSON: column 151 of the line: " `isPrefixOf` e
+                      && not ("line 1" `isInfixOf` e))
+               (const False)
+      mergeResults (unlines [head sampleLines, "{\"program\" 1}"]) `shouldBe`
+        Left "line 2: not a result line of a sweep (not JSON: column 12 of the line: expected ':', found '1')"
     it "refuses a line that repeats a run (the same setting and seed: a file merged twice), naming it" $ do
       let twice = mergeResults (unlines (sampleLines ++ take 2 sampleLines))
       twice `shouldSatisfy` either ("line 6: the run world=default speed=0.1 seed 1 (dt 0.01, seconds 1) is on an earlier line too" `isPrefixOf`)
@@ -311,6 +319,14 @@ spec = do
       -- world are names as given, not the unnamed world
       lines (tableOf' ["{\"program\":\"p\",\"world\":\"\",\"seed\":1,\"params\":{\"world\":\"\"},\"flags\":\"x\",\"failure\":\"boom\"}"])
         `shouldSatisfy` elem "== world=\"\" world=\"\"  (1 runs, 1 failed)"
+      -- the line an older sweep wrote for a run of a world file named
+      -- default or program (it wrote such a name bare) is that file's, as
+      -- a result line names it (./default), not the built-in world's
+      let ofFile w = replace "\"world\":null" ("\"world\":\"" ++ w ++ "\"") (noResult (7 :: Int))
+      filter ("== " `isPrefixOf`) (lines (tableOf' (take 2 sampleLines ++ [ofFile "default", own "\"./default\"" (sampleLines !! 2)])))
+        `shouldBe` ["== world=./default speed=0.1  (2 runs, 1 failed)", "== world=default speed=0.1  (2 runs, 0 failed)"]
+      filter ("== " `isPrefixOf`) (lines (tableOf' (map (own "\"program\"") (take 2 sampleLines) ++ [ofFile "program"])))
+        `shouldBe` ["== world=./program speed=0.1  (1 runs, 1 failed)", "== world=program speed=0.1  (2 runs, 0 failed)"]
       -- a run that is a result line too is merged twice
       tableOf' (take 2 sampleLines ++ [noResult (2 :: Int)]) `shouldSatisfy`
         ("refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too" `isPrefixOf`)
@@ -321,10 +337,23 @@ spec = do
                         ++ ",\"flags\":\"--seed 007 --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
           refusedAt k ls = mergeResults (unlines ls) `shouldSatisfy`
             either (("line " ++ show (k :: Int) ++ ": not a result line of a sweep") `isPrefixOf`) (const False)
-      -- the sweep's line for a run that wrote no result is a failed run
+      -- the sweep's line for a run that wrote no result is a failed run;
+      -- its seed, written as an older sweep wrote --seed 007, is the
+      -- number the run reads (it was listed as "007", and not matched with
+      -- the run's result line, seed 7)
       mergeResults (unlines (take 2 sampleLines ++ [failureLine])) `shouldSatisfy`
         either (const False) (\t -> "speed=1  (1 runs, 1 failed)" `isInfixOf` t
-                                   && "FAILED seed \"007\": exit code 2, no result: bad flag" `isInfixOf` t)
+                                   && "FAILED seed 7: exit code 2, no result: bad flag" `isInfixOf` t)
+      -- (the line's world default is the file so named, ./default: an
+      -- older sweep's line)
+      mergeResults (unlines [failureLine, replace "\"world\":\"default\"" "\"world\":\"./default\"" (resultLine 7 [("speed", "1")] 1 Nothing)])
+        `shouldSatisfy` either ("line 2: the run world=./default speed=1 seed 7 (dt 0.01, seconds 1) is on an earlier line too" `isPrefixOf`)
+                               (const False)
+      forM_ ["+7", " 7 ", "-0", "9007199254740993", "7.0", "abc", ""] $ \t -> do
+        let odd' = replace "\"seed\":\"007\"" ("\"seed\":" ++ encodeJSON (JString t)) failureLine
+            listed = either (const []) (filter ("  FAILED" `isPrefixOf`) . lines) (mergeResults odd')
+        listed `shouldBe` ["  FAILED seed " ++ (case t of { "+7" -> "7"; " 7 " -> "7"; "-0" -> "0"; _ -> encodeJSON (JString t) })
+                           ++ ": exit code 2, no result: bad flag"]
       -- an empty object, a run log's lines, another JSON value, not JSON
       refusedAt 1 ["{}"]
       refusedAt 2 [head sampleLines, "{\"kind\":\"summary\",\"simulated\":1,\"steps\":101,\"interrupted\":false,\"failure\":null,\"scores\":{}}"]
@@ -341,6 +370,14 @@ spec = do
         refusedAt 1 [without k failureLine]
       refusedAt 1 [replace "\"seed\":1," "\"seed\":\"1\"," (head sampleLines)]
       refusedAt 1 [replace "\"failure\":\"exit" "\"failure\":{\"exit\":1},\"x\":\"exit" failureLine]
+
+    it "afrp-sweep-merge: a result line cut short is refused with its file and line, and its column of the line (it said line 1 too)" $ withTempDir $ \dir -> do
+      merger <- childScript dir "merge"
+      writeFile (dir </> "r.jsonl") (unlines [head sampleLines, take 150 (head sampleLines)])
+      (code, out, err) <- readProcessWithExitCode merger [dir </> "r.jsonl"] ""
+      (code, out) `shouldBe` (ExitFailure 1, "")
+      err `shouldSatisfy` ((dir </> "r.jsonl" ++ ": line 2: not a result line of a sweep (not JSON: column 151 of the line: ") `isInfixOf`)
+      err `shouldNotSatisfy` ("line 1" `isInfixOf`)
 
     it "afrp-sweep-merge: a run log given by mistake is refused with its file and line (exit 1)" $ withTempDir $ \dir -> do
       prog <- childScript dir "program"
@@ -702,6 +739,27 @@ spec = do
       table <- merged dir [dir </> "r.jsonl"]
       table `shouldSatisfy` ("k=a ratio=1%0 speed=2  (1 runs, 1 failed)" `isInfixOf`)
 
+    it "a world file named default is ./default on a run's result line and on the sweep's line for a run with no result (both said \"default\", the built-in world's name)" $ withTempDir $ \dir -> do
+      requireParallel
+      real <- childScript dir "program"
+      sweep <- script "sweep"
+      -- (the program, but seed 2 stops at once, writing no result)
+      let prog = dir </> "fails2"
+      writeFile prog (unlines [ "#!/bin/bash"
+                              , "case \" $* \" in *' --seed 2 '*) echo 'no luck' >&2; exit 3 ;; esac"
+                              , "exec '" ++ real ++ "' \"$@\"" ])
+      p <- getPermissions prog
+      setPermissions prog (setOwnerExecutable True p)
+      writeFile (dir </> "default") "simbotA 1 at 0 0 heading 0 deg\n"
+      writeFile (dir </> "jobs") "--seed 1 --world default\n--seed 2 --world default\n--seed 3\n"
+      (code, _, _) <- readCreateProcessWithExitCode
+        (proc "bash" [sweep, "--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "1"]) { cwd = Just dir } ""
+      code `shouldBe` ExitFailure 1
+      rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+      map (field ["world"]) rs `shouldBe` [JString "./default", JString "./default", JString "program"]
+      table <- merged dir [dir </> "r.jsonl"]
+      filter ("== " `isPrefixOf`) (lines table) `shouldBe` ["== world=./default  (2 runs, 1 failed)", "== world=program  (1 runs, 0 failed)"]
+
     it "reads --shard and --seeds in decimal (010 is ten), and refuses what would run the wrong jobs" $ withTempDir $ \dir -> do
       sweep <- script "sweep"
       sbatch <- script "sweep.sbatch"
@@ -841,9 +899,32 @@ spec = do
       ls <- lines <$> readFile (dir </> "r.jsonl")
       map (field ["params"] . parsed) (take 2 ls)
         `shouldBe` [JObject [("flags", JString "a"), ("failure", JString "nan")], JObject [("k", JString "*")]]
-      field ["seed"] (parsed (ls !! 2)) `shouldBe` JString "007"
+      field ["seed"] (parsed (ls !! 2)) `shouldBe` JNumber 7
       table <- merged dir [dir </> "r.jsonl"]
-      table `shouldSatisfy` ("FAILED seed \"007\": exit code 2, no result" `isInfixOf`)
+      table `shouldSatisfy` ("FAILED seed 7: exit code 2, no result" `isInfixOf`)
+
+    it "writes the seed of a run with no result as the run reads it, a number (--seed 007 was \"007\", which the merge did not match with the run's result line, seed 7)" $ withTempDir $ \dir -> do
+      requireParallel
+      prog <- childScript dir "program"
+      sweep <- script "sweep"
+      writeFile (dir </> "jobs") (unlines
+        [ "--seed 007 --no-such-flag", "--seed +8 --no-such-flag", "--seed 9007199254740992 --no-such-flag"
+        , "--seed 09007199254740993 --no-such-flag", "--seed abc --no-such-flag", "--param speed=2 --no-such-flag"
+        , "--seed -005 --no-such-flag", "--seed -0 --param speed=3 --no-such-flag" ])
+      (code, _, _) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "1"]
+      code `shouldBe` ExitFailure 1
+      ls <- lines <$> readFile (dir </> "r.jsonl")
+      map (field ["seed"] . parsed) ls `shouldBe`
+        [ JNumber 7, JNumber 8, JNumber 9007199254740992, JString "09007199254740993", JString "abc"
+        , JNumber 0, JNumber (-5), JNumber 0 ]
+      -- the run of seed 7 rerun, with its result line: the same run twice
+      (code7, _, line7) <- runOnce dir ["--seconds", "1", "--seed", "7"]
+      code7 `shouldBe` ExitSuccess
+      writeFile (dir </> "rerun.jsonl") line7
+      merger <- childScript dir "merge"
+      (codeM, out, err) <- readProcessWithExitCode merger [dir </> "r.jsonl", dir </> "rerun.jsonl"] ""
+      (codeM, out) `shouldBe` (ExitFailure 1, "")
+      err `shouldSatisfy` ("afrp-sweep-merge: the run world=program seed 7 is on a line for a run with no result and on a result line too" `isPrefixOf`)
 
     it "refuses a RESULTS that is a world, the jobs file or the program, under any name, before writing anything" $ withTempDir $ \dir -> do
       prog <- childScript dir "program"

@@ -47,21 +47,31 @@ import           AFrobRobotSim.World (Bounds (..))
 -- not depend on the world, one message each (empty when the options are
 -- fine). Checked by 'AFrobRobotSim.Options.CommandLine.parseSimArgs';
 -- 'validateOptionsIn' adds the frame's size.
+--
+-- A fault that only options set in code can have (a value a flag
+-- refuses, such as a negative 'optSeconds', or a name twice in
+-- 'optParams', where a command line keeps the last) is named by the
+-- record's field, as the code set it: @optSeconds must be a finite number
+-- >= 0, got -1.0@. A fault that a command line can have too (@--seconds
+-- 1e20 with --dt 0.01@, an empty @--svg@) is named by its flags, which
+-- are the fields' names on the command line.
 validateOptions :: SimOptions -> [String]
 validateOptions o =
-  [ "--seconds and --dt must be finite numbers, --dt positive" | not (all finite [secs, dt, fps, scale]) || dt <= 0 || fps <= 0 ]
   -- (what the flags refuse one at a time, for options set in code and
-  -- given to 'AFrobRobotSim.runSimWith': the simulator stopped at them
-  -- with a bare error, after the log was begun)
-  ++ [ "--seconds must be a number >= 0, got " ++ full secs | finite secs, not (secondsOk secs) ]
-  ++ [ "--dt must be a positive number up to " ++ readableNumber maxTimeStep ++ ", got " ++ full dt
-     | finite dt, dt > 0, not (dtOk dt) ]
-  ++ [ "--odometry-noise must be a number from 0 to " ++ readableNumber maxOdometryNoise ++ ", got " ++ show noise
+  -- given to 'AFrobRobotSim.runSimWith' or as the settings
+  -- 'AFrobRobotSim.Options.CommandLine.parseSimArgs' starts from: the
+  -- simulator stopped at them with a bare error, after the log was begun)
+  [ "optSeconds must be a finite number >= 0, got " ++ full secs | not (finite secs && secondsOk secs) ]
+  ++ [ "optDt must be a positive number up to " ++ readableNumber maxTimeStep ++ ", got " ++ full dt
+     | not (dtOk dt) ]
+  ++ [ "optFps must be a finite number > 0, got " ++ full fps | not (finite fps && fps > 0) ]
+  ++ [ "optOdometryNoise must be a number from 0 to " ++ readableNumber maxOdometryNoise ++ ", got " ++ show noise
      | not (noiseOk noise) ]
-  ++ [ "--scale must be a positive number, got " ++ full x | Just x <- [optScale o], finite x, x <= 0 ]
-  ++ [ "--seed must be a whole number from -2^53 to 2^53, got " ++ show (optSeed o)
+  ++ [ "optScale must be Nothing (the scale that fits the world) or Just a finite number > 0, got Just " ++ full x
+     | Just x <- [optScale o], not (finite x && x > 0) ]
+  ++ [ "optSeed must be a whole number from -2^53 to 2^53, got " ++ show (optSeed o)
      | not (seedOk (toInteger (optSeed o))) ]
-  ++ [ "--keys: a key press's time must be a finite number >= 0, got " ++ show t ++ " for " ++ show k
+  ++ [ "optKeys: a key press's time must be a finite number >= 0, got " ++ show t ++ " for " ++ show k
      | (t, k) <- optKeys o, not (keyTimeOk t) ]
   ++ [ "--seconds " ++ readableNumber secs ++ " with --dt " ++ readableNumber dt ++ " is "
        ++ (if isInfinite steps then "more steps than a number holds" else readableNumber steps ++ " steps")
@@ -72,16 +82,16 @@ validateOptions o =
        ++ " --seconds " ++ full (dt / 2) ++ " or more, or 0 for the time-0 sample alone"
      | all finite [secs, dt], dt > 0, secs > 0, stepsBeforeFloor secs dt < 1 ]
   ++ [ "--fps times --dt must not exceed 1 (at most one frame per time step)"
-     | finite fps, finite dt, fps * dt > 1 + 1e-9 ]
+     | finite fps, finite dt, fps > 0, dt > 0, fps * dt > 1 + 1e-9 ]
   ++ [ "--dt " ++ readableNumber dt ++ " does not divide the frame period 1/" ++ readableNumber fps ++ " s; --fps "
        ++ suggestion ++ " would work"
      | finite fps, finite dt, dt > 0, fps > 0, fps * dt <= 1 + 1e-9, fps * dt >= 1e-9, not tooMany
      , not (divides fps) ]
   ++ [ "--fps " ++ readableNumber fps ++ " is less than one frame in 10^9 steps of --dt " ++ readableNumber dt
      | finite fps, finite dt, fps > 0, dt > 0, fps * dt < 1e-9 ]
-  ++ [ "--param " ++ k ++ " is in the settings' parameters (optParams) " ++ timesText (length vs) ++ "; a name holds one value"
+  ++ [ "optParams names the parameter " ++ show k ++ " " ++ timesText (length vs) ++ "; a name holds one value"
      | (k, vs) <- repeatedBy (optParams o) ]
-  ++ [ "--out must not be empty" | null (optOut o) ]
+  ++ [ "optOut must not be empty" | null (optOut o) ]
   ++ [ flag ++ " must not be empty (a file name)"
      | (flag, Just "") <- [ ("--svg", optSvg o), ("--replay", optReplay o), ("--log", optLog o)
                           , ("--result", optResult o), ("--video", optVideo o) ] ]
@@ -89,7 +99,7 @@ validateOptions o =
        ++ " (ffmpeg picks the format by it; an image's, such as .ppm or .png, would write frames)"
      | Just v@(_ : _) <- [optVideo o], map toLower (takeExtension v) `notElem` map ('.' :) videoExtensions ]
   where
-    secs = optSeconds o; dt = optDt o; fps = optFps o; scale = maybe 1 id (optScale o)
+    secs = optSeconds o; dt = optDt o; fps = optFps o
     noise = optOdometryNoise o
     steps = secs / dt
     -- (more than maxSteps as runSteps counts them, with its slack)

@@ -47,6 +47,13 @@ data SimOptions = SimOptions
   , optLog           :: Maybe FilePath     -- ^ write the JSON-lines run log
   , optReplay        :: Maybe FilePath     -- ^ write the HTML replay page
   , optResult        :: Maybe FilePath     -- ^ write the result line (settings and outcome)
+  , optProgram       :: Maybe String
+    -- ^ the program's name as the result line writes it (its @program@):
+    -- 'Nothing' (the default) for the executable's name
+    -- ('System.Environment.getProgName'). No flag sets it: a program that
+    -- runs several things under one name sets it in code, as
+    -- @afrp-examples@ does for each example (@"afrp-examples rcReverse"@),
+    -- so that their result lines are told apart.
   , optParams        :: [(String, String)] -- ^ the @--param@s, in order, one per name
   , optParamsRepeated :: [(String, [String])]
     -- ^ each @--param@ name the command line gives more than once, in the
@@ -63,8 +70,8 @@ defaultSimOptions = SimOptions
   , optScale = Nothing, optKeys = [], optSeed = 0, optOdometryNoise = 0, optQuiet = False
   , optWorldFile = Nothing, optDumpWorld = False, optRays = False, optTrails = False
   , optSvg = Just (defaultOut </> "run.svg"), optVideo = Nothing, optLog = Nothing
-  , optReplay = Just (defaultOut </> "replay.html"), optResult = Nothing, optParams = []
-  , optParamsRepeated = [] }
+  , optReplay = Just (defaultOut </> "replay.html"), optResult = Nothing, optProgram = Nothing
+  , optParams = [], optParamsRepeated = [] }
 
 defaultOut :: FilePath
 defaultOut = "simbot-out"

@@ -25,12 +25,12 @@ module AFrobRobotSim.Sweep.Merge
 
 import           Control.Monad       (foldM)
 import           Data.Bits           (shiftL)
-import           Data.Char           (isPrint, isSpace)
+import           Data.Char           (isDigit, isPrint, isSpace)
 import qualified Data.ByteString     as B
 import qualified Data.IntMap.Strict  as IM
 import qualified Data.IntSet         as IS
 import qualified Data.Map.Strict     as M
-import           Data.List           (sortOn)
+import           Data.List           (sortOn, stripPrefix)
 import           Data.Ratio          ((%))
 import qualified Data.Set            as S
 import           Text.Printf         (printf)
@@ -38,7 +38,7 @@ import           Text.Printf         (printf)
 import           AFrobRobotSim.Console (printableLine, quote)
 import           AFrobRobotSim.JSON
 import           AFrobRobotSim.UTF8  (Utf8, utf8Bytes)
-import           AFrobRobotSim.WorldFile.Lexical (utf8Text)
+import           AFrobRobotSim.WorldFile.Lexical (integerLit, utf8Text)
 
 -- | The failed runs a group of the table lists, at most: 1000, the least
 -- by seed (then by message); the others are counted in a line of their
@@ -63,12 +63,15 @@ type Setting = [(String, String)]
 unnamedWorld :: String
 unnamedWorld = "\NUL"
 
--- The worlds a result line names when the run got no @--world@.
+-- The worlds a result line names when the run got no @--world@ (it names
+-- a world file of either name @./default@, @./program@:
+-- 'AFrobRobotSim.Result.worldSourceName').
 ownWorlds :: [String]
 ownWorlds = ["default", "program"]
 
--- A run's seed: as the table writes it (its JSON text), and the key that
--- tells runs apart (an integer, or the text of any other seed).
+-- A run's seed: as the table writes it (a whole number as such, any
+-- other seed as its JSON text), and the key that tells runs apart (an
+-- integer, or the text of any other seed).
 data Seed = Seed !String !(Either String Int)
 
 -- One line, read: the setting, the seed, the time step and duration of a
@@ -88,8 +91,12 @@ data Run = Run
 -- a number, @dt@, @seconds@, @params@ and the @outcome@ object with
 -- @simulated@, @steps@, @interrupted@, @failure@, @robots@ and @scores@),
 -- or the line @scripts/sweep@ writes for a run that wrote none
--- (@program@, @world@ a string or @null@ when the run got no @--world@,
--- @seed@ a number or a string, @params@, @flags@, and @failure@ a string
+-- (@program@, @world@ a string or @null@ when the run got no @--world@:
+-- @default@ or @program@ there, from an older sweep, is the world file of
+-- that name, which the result line calls @./default@ or @./program@;
+-- @seed@ a number or a string (a string that @--seed@ reads as a whole
+-- number, @"007"@ from an older sweep, is that number, the seed its run's
+-- result line says: 7), @params@, @flags@, and @failure@ a string
 -- where the result line has its outcome). Any
 -- other JSON (a run log's line, @{}@) is refused, naming what it lacks,
 -- rather than counted as a failed run.
@@ -100,30 +107,33 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
     _           -> Left "not a JSON object"
   _      <- member "program" v >>= asString
   worldValue <- member "world" v
-  world  <- case worldValue of
+  world  <- case (worldValue, lookup "outcome" fields) of
     -- (the sweep's line for a run that got no --world: which world the
     -- program ran, the sweep cannot tell)
-    JNull | Nothing <- lookup "outcome" fields -> Right unnamedWorld
-    _                                          -> asString worldValue
+    (JNull, Nothing) -> Right unnamedWorld
+    -- (the sweep's line for a run of --world default, written by a sweep
+    -- from before it wrote such a file as a result line does, ./default:
+    -- the file, not the built-in world)
+    (_, Nothing) -> asString worldValue >>= \w -> Right (if w `elem` ownWorlds then "./" ++ w else w)
+    _            -> asString worldValue
   params <- member "params" v >>= \p -> case p of
     JObject kvs -> mapM (\(k, x) -> (,) k <$> asString x) kvs
     _           -> Left "\"params\" is not an object"
   seedValue <- member "seed" v
   let setting = ("world", world) : sortOn fst params
-      seed k  = Seed (encodeJSON seedValue) k
   case lookup "outcome" fields of
     Nothing -> do
       -- the sweep's line for a run with no result
-      key <- case seedValue of
-        JNumber x -> Right (seedNumber x)
-        JString _ -> Right (Left (encodeJSON seedValue))
+      seed <- case seedValue of
+        JNumber x -> Right (numberSeed x)
+        JString t -> Right (textSeed t)
         _         -> Left "\"seed\" is neither a number nor a string"
       _       <- member "flags" v >>= asString
       failure <- member "failure" v >>= asString
-      pure (Run setting (seed key) Nothing (Just failure) [])
+      pure (Run setting seed Nothing (Just failure) [])
     Just out -> do
-      key <- case seedValue of
-        JNumber x -> Right (seedNumber x)
+      seed <- case seedValue of
+        JNumber x -> Right (numberSeed x)
         _         -> Left "\"seed\" is not a number"
       dt      <- member "dt" v >>= numberText
       seconds <- member "seconds" v >>= numberText
@@ -144,14 +154,24 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
             (Just f, _)   -> Just f
             (_, True)     -> Just "interrupted"
             _             -> Nothing
-      pure (Run setting (seed key) (Just (dt, seconds, noise)) fault
+      pure (Run setting seed (Just (dt, seconds, noise)) fault
                 ([("simulated", simulated), ("steps", steps)] ++ perRobot ++ scores))
   where
     -- (a seed is a whole number of at most 2^53, as --seed takes it)
-    seedNumber x
-      | x == fromIntegral r && abs r <= 2 ^ (53 :: Int) = Right r
-      | otherwise = Left (encodeNumber x)
+    numberSeed x
+      | x == fromIntegral r && seedInRange (toInteger r) = Seed (show r) (Right r)
+      | otherwise = Seed (encodeNumber x) (Left (encodeNumber x))
       where r = round x :: Int
+    -- (the seed of the sweep's line for a run with no result, as the
+    -- program would have read it: written as the --seed of its job line
+    -- was when --seed reads it as a whole number (007, +7, which an older
+    -- sweep wrote as such strings: their run is seed 7, as its result line
+    -- says), else as the text, quoted, and told apart from every number)
+    textSeed t = case integerLit (trimmed t) of
+      Just n | seedInRange n -> Seed (show n) (Right (fromInteger n))
+      _                      -> Seed (encodeJSON (JString t)) (Left (encodeJSON (JString t)))
+    seedInRange n = abs n <= 2 ^ (53 :: Int)
+    trimmed = reverse . dropWhile isSpace . reverse . dropWhile isSpace
     numberText x = encodeJSON . maybe JNull JNumber <$> finite x
     robotValues r = do
       ty <- member "type" r >>= asString
@@ -316,9 +336,17 @@ addLine m l
   | all isSpace l = Right m
   | otherwise = either (Left . notJSON) Right (parseJSON l) >>= readRun >>= addRun m
 
--- The message of a line that is not JSON (the parser's message given).
+-- The message of a line that is not JSON (the parser's message given). The
+-- parser places its fault at @line 1, column C@ of the text it parsed,
+-- which is this one line (its first and only line): said as @column C of
+-- the line@, so that the only line a message numbers is the file's
+-- (@line 2: ... (not JSON: line 1, column 151 ...)@ read as two lines).
 notJSON :: String -> String
-notJSON e = "not a result line of a sweep (not JSON: " ++ e ++ ")"
+notJSON e = "not a result line of a sweep (not JSON: " ++ ofTheLine e ++ ")"
+  where
+    ofTheLine m = case stripPrefix "line 1, column " m of
+      Just rest | (c@(_ : _), ':' : msg) <- span isDigit rest -> "column " ++ c ++ " of the line:" ++ msg
+      _                                                       -> m
 
 -- | 'addLine' of a line's bytes, found to be UTF-8: the same merge, or the
 -- same message, as 'addLine' of its text. The bytes are parsed as they

@@ -20,7 +20,7 @@ import           Text.Printf             (printf)
 import           AFRP.Geometry           (Point2 (..), norm, (.-.))
 import           AFrob                   (constant, ddVelDiff, mrFinalize)
 import           AFrobRobotSim           (defaultWorld, simulate)
-import           AFrobRobotSim.JSON      (asArray, asNumber, member, parseJSON)
+import           AFrobRobotSim.JSON      (JSON (..), asArray, asNumber, member, parseJSON)
 import           AFrobRobotSim.Log       (LogSummary (..))
 import           AFrobRobotSim.Options
 import           AFrobRobotSim.Result    (WorldSource (..))
@@ -160,6 +160,18 @@ spec = do
             map (field "x") rs `shouldBe` [ Right (let Point2 x _ = robotPos r in x) | r <- wsRobots final ]
             [ either (const False) (\d -> abs (d - travelled i) < 1e-12) (field "distance" v)
               | (i, v) <- zip [0 ..] rs ] `shouldBe` map (const True) (wsRobots final)
+    it "names the program as the options do (optProgram: afrp-examples' examples were all \"afrp-examples\"), else by the name given" $
+      withTempDir $ \dir -> do
+        let file = dir </> "result.jsonl"
+            programOf o = do
+              sink <- resultSink "sinks-spec" o BuiltInWorld defaultWorld file
+              Outcome errs _ <- feed sink
+              errs `shouldBe` []
+              txt <- readFile file
+              length txt `seq` pure (parseJSON txt >>= member "program")
+        programOf defaultSimOptions { optProgram = Just "afrp-examples rcReverse" }
+          `shouldReturn` Right (JString "afrp-examples rcReverse")
+        programOf defaultSimOptions `shouldReturn` Right (JString "sinks-spec")
     it "reports a write that fails at the end in the outcome, and does not throw" $
       withTempDir $ \dir -> do
         let file = dir </> "no-such-folder" </> "result.jsonl"
