@@ -11,16 +11,23 @@
 -- page's score line and events, and the result line's @"scores"@. The
 -- goals are drawn on the replay page and listed in the log's header.
 --
--- > -- two teams' goals counted as the ball crosses x = 4 or x = -4
+-- > -- each team's goals: a ball past x = 4 is A's, past x = -4 B's (counted
+-- > -- once a crossing: 'edge'), and the referee puts it back on the centre
 -- > goals :: SF WorldState [(String, Int)]
 -- > goals = proc ws -> do
--- >   a <- edge <<< arr (inGoal   4 ) -< ws
--- >   b <- edge <<< arr (inGoal (-4)) -< ws
+-- >   a <- edge -< any (\(Point2 x _) -> x > 4) (wsBalls ws)
+-- >   b <- edge -< any (\(Point2 x _) -> x < -4) (wsBalls ws)
 -- >   na <- accumHold 0 -< fmap (const (+ 1)) a
 -- >   nb <- accumHold 0 -< fmap (const (+ 1)) b
 -- >   returnA -< [("A", na), ("B", nb)]
 -- >
--- > main = runSimRefereed noReferee { refereeScores = goals } (Just pitch) teamA teamB
+-- > backToCentre :: Time -> [Position2] -> Maybe [Position2]
+-- > backToCentre _ bs
+-- >   | any (\(Point2 x _) -> abs x > 4.5) bs = Just [Point2 0 0]
+-- >   | otherwise                          = Nothing
+-- >
+-- > main = runSimRefereed noReferee { refereeBalls = backToCentre, refereeScores = goals }
+-- >                       (Just pitch) teamA teamB
 module AFrobRobotSim.Referee
   ( Referee (..)
   , noReferee
@@ -42,7 +49,8 @@ data Referee = Referee
   , refereeScores :: SF WorldState [(String, Int)]
     -- ^ the scores ('AFrobRobotSim.Simulator.simScores'): a signal
     -- function of the snapshots, whose output for each is its scores
-    -- (names distinct); it may keep state, to count goals, say
+    -- (names distinct, at most 10,000 characters; values within 2^53);
+    -- it may keep state, to count goals, say
   , refereeGoals  :: [LogRect]
     -- ^ goal areas to draw (centre and size, in metres): the replay page
     -- shades them, and the log's header lists them. Each must have

@@ -8,7 +8,8 @@
 -- A sweep runs one program over many seeds, worlds and parameters and
 -- compares the outcomes. Each run says what it was and how it ended in
 -- one JSON line, written by @--result FILE@ when the run ends, however it
--- ends (a controller that throws still gets its line, with the failure):
+-- ends (a controller or a referee that throws still gets its line, with
+-- the failure):
 --
 -- @
 -- {"program":"my-robot","world":"program","seed":3,"dt":0.01,"seconds":30,

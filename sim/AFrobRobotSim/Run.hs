@@ -25,7 +25,8 @@
 -- (under any names; devices such as @\/dev\/stdout@ excepted), an output
 -- that is the world file, @--video@ without
 -- @ffmpeg@ on the PATH. A controller that throws stops the run with a message naming the
--- robot and the simulated time (exit code 1); so does one whose messages
+-- robot and the simulated time (exit code 1), as does a referee's rule
+-- that throws ('runSimRefereed'); so does a controller whose messages
 -- raise when printed, whose step overflows the stack (@+RTS -K@), or
 -- whose output depends on itself with no delay (@\<\<loop\>\>@, when the
 -- runtime sees it: a self-reference that the optimiser turns into a loop
@@ -63,7 +64,7 @@
 -- thread of their own ("AFrobRobotSim.Pipeline"), while the stepping
 -- thread computes the next ones; a few batches of states at most wait
 -- between them. The sinks take the same states in the same order, and a
--- failing write, a failing controller or Ctrl-C stops the run at the same
+-- failing write, a failing controller or referee, or Ctrl-C stops the run at the same
 -- step, as on one capability (where one loop does both): the outputs are
 -- the same, byte for byte.
 module AFrobRobotSim.Run

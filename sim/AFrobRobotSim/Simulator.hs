@@ -134,9 +134,11 @@ data SimConfig = SimConfig
     -- as it is but for its scores (@[]@ there), so it may keep state
     -- ('accumHold', 'edge', ...) to count goals, say. Its output for each
     -- snapshot is evaluated whole at that step (so that a run's memory
-    -- stays bounded); names must be distinct. If it throws, or gives a
-    -- name twice, the run stops there with a 'RefereeError'. The default,
-    -- @'constant' []@, keeps none.
+    -- stays bounded); names must be distinct and at most 'maxTextChars'
+    -- characters long, values within 2^53 (the log writes them as JSON's
+    -- doubles). If it throws, or gives a name twice, one too long or a
+    -- value beyond, the run stops there with a 'RefereeError'. The
+    -- default, @'constant' []@, keeps none.
   , simParallel       :: !Bool
     -- ^ whether a step may use the program's other capabilities (see
     -- "Every core" above): 'True' (the default) computes it in parallel

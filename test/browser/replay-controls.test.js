@@ -82,5 +82,9 @@ run('node replay-controls.test.js PAGE.html', async (page, errors, open) => {
       .filter(l => l.getClientRects().length > 1).map(l => l.textContent.trim()));
     check(broken.length === 0, 'at 360 pixels wide every tick box\'s label is on one line' +
           (broken.length ? ' (broken: ' + broken.join(', ') + ')' : ''));
+    // a run that keeps no scores shows none after the time
+    const timeLine = await page.locator('#time').textContent();
+    check(/^t = \d+\.\d\d s\s+\(frame \d+ of \d+\)$/.test(timeLine), 'the time line has no score (' + timeLine + ')');
+
     check(errors.length === 0, 'no errors on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
 });

@@ -208,7 +208,8 @@ run('node replay-usability.test.js PAGE.html', async (page, errors, open) => {
     check(head.startsWith('SimbotB 1 (drawn B1)'), 'the side panel names SimbotB 1 and its label (' + head + ')');
     await R(() => window.afrpReplay.selectRobot(-1));
 
-    // the score "seconds" after the time: 5 at t = 5.00 s (frame 125), none on a page without scores
+    // the score "seconds" after the time: 5 at t = 5.00 s (frame 125) (a page without scores:
+    // replay-controls.test.js)
     await R(() => window.afrpReplay.setFrame(125));
     const timeLine = await page.locator('#time').textContent();
     check(/^t = 5\.00 s\s+\(frame 125 of \d+\)\s+score: seconds 5$/.test(timeLine), 'the time line shows the score (' + timeLine + ')');

@@ -453,8 +453,10 @@ worldFileText config world
 -- frames at 25 per simulated second (at every step, for a time step
 -- longer than a 25th of a second), as @simbot --replay@ writes it. The
 -- page is ASCII text. A controller that fails (throws, or drives with a
--- NaN) raises its 'ControllerError' when the page is evaluated: for such
--- a run, 'writeRunReplayPage' writes the page up to the failure. The page
+-- NaN) raises its 'ControllerError' when the page is evaluated, and a
+-- referee's rule that fails ('simBallRule', 'simScores') its
+-- 'RefereeError': for such a run, 'writeRunReplayPage' writes the page up
+-- to the failure, with the last state's scores in its summary. The page
 -- opens with a hash of all its lines (the nonce of its scripts), so its
 -- first character comes only once the whole run is made, and the run is
 -- held in memory until then: for a long run, 'writeRunReplayPage', which

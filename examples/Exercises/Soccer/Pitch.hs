@@ -219,10 +219,7 @@ goalScores = proc ws -> do
         [b] -> Just b
         _   -> Nothing
   before <- iPre Nothing -< ball
-  let goal = case (before, ball) of
-        (Just b0, Just b1) | b1 == centreMark, distance b0 centreMark >= 3 ->
-          Event (if point2X b0 > 0 then TeamA else TeamB)
-        _ -> NoEvent
+  let goal = maybe NoEvent Event (goalBetween =<< ((,) <$> before <*> ball))
   a <- accumHold 0 -< (+ 1) <$ filterE (== TeamA) goal
   b <- accumHold 0 -< (+ 1) <$ filterE (== TeamB) goal
   returnA -< [("A", a), ("B", b)]
@@ -252,10 +249,18 @@ matchConfig = defaultSimConfig { simDt = matchDt, simBallRule = referee, simScor
 -- the centre mark one snapshot after being at least 3 m from it.
 goalsIn :: [WorldState] -> [(Time, Team)]
 goalsIn ws =
-  [ (wsTime w1, if point2X b0 > 0 then TeamA else TeamB)
+  [ (wsTime w1, team)
   | (w0, w1) <- zip ws (drop 1 ws)
   , [b0] <- [wsBalls w0], [b1] <- [wsBalls w1]
-  , b1 == centreMark, distance b0 centreMark >= 3 ]
+  , Just team <- [goalBetween (b0, b1)] ]
+
+-- The team that scored between two snapshots of the (single) ball: its
+-- jump back to the centre mark from at least 3 m away, from the half
+-- that team attacks.
+goalBetween :: (Position2, Position2) -> Maybe Team
+goalBetween (b0, b1)
+  | b1 == centreMark, distance b0 centreMark >= 3 = Just (if point2X b0 > 0 then TeamA else TeamB)
+  | otherwise                                      = Nothing
 
 -- | The outcome of a match.
 data MatchResult = MatchResult

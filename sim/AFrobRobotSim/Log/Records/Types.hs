@@ -119,13 +119,16 @@ data LogSummary = LogSummary
   , lsWallTime    :: !Double       -- ^ wall-clock time of the run (s)
   , lsInterrupted :: !Bool         -- ^ stopped by Ctrl-C
   , lsFailure     :: Maybe String
-    -- ^ a controller's failure, as printed (@displayException@ of the
-    -- 'AFrobRobotSim.Simulator.ControllerError', which names the robot
-    -- and the time): the failing step has no state, so no frame shows it
+    -- ^ a controller's or the referee's failure, as printed
+    -- (@displayException@ of the 'AFrobRobotSim.Simulator.ControllerError',
+    -- which names the robot and the time, or of the
+    -- 'AFrobRobotSim.Simulator.RefereeError', which names the rule and
+    -- the time), or a write that failed: the failing step has no state,
+    -- so no frame shows it
   , lsFalsified   :: Maybe (Double, String)
     -- ^ a test's property of the run decided false: the instant that
     -- decided (s) and a line that says so (afrp-test's @forAllRuns@
     -- writes it, the explanation's first line; a run of simbot never
     -- does). Written only when there is one
-  , lsScores      :: [(String, Int)] -- ^ final scores, if any
+  , lsScores      :: [(String, Int)] -- ^ final scores, if any: the last simulated state's
   } deriving (Eq, Show)
