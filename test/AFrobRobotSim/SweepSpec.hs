@@ -778,7 +778,14 @@ spec = do
             (code, _, err) <- runScriptCode [] sweep args
             (code, what `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
       refused ["--list", "--seeds", "0..9999999999"] "more than a million seeds"
-      refused ["--seeds", "5..1", "prog", dir </> "r.jsonl"] "the job list is empty"
+      refused ["--seeds", "5..1", "prog", dir </> "r.jsonl"] "the job list is empty: --seeds 5..1 runs backwards"
+      -- (--list refuses an empty list as the sweep does: it printed
+      -- nothing and exited 0)
+      forM_ [("3..1", "1..3"), ("1..0", "0..1"), ("-1..-3", "-3..-1")] $ \(range, upwards) ->
+        refused ["--list", "--seeds", range] ("--seeds " ++ range ++ " runs backwards, and a range A..B counts up from A to B (write "
+                                              ++ upwards ++ ")")
+      writeFile (dir </> "comments") "# only a comment\n\n"
+      refused ["--list", "--jobs", dir </> "comments"] "the job list is empty: the jobs file"
       refused ["-j", "abc", "prog", dir </> "r.jsonl"] "-j expects a number"
       refused ["prog", dir </> "r.jsonl", "--", "--world", "a b.world"] "cannot hold a space"
       prog <- childScript dir "program"
