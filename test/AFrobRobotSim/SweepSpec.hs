@@ -1106,6 +1106,47 @@ spec = do
       map (field ["seed"]) rs `shouldBe` map JNumber [1, 2, 1, 2, 3]
       map (field ["params", "note"]) rs `shouldBe` map JString ["x y", "x y", "z", "z", "a \"b\""]
 
+    it "takes \\, as a comma within a --param value or a --worlds name, and refuses a value whose quote a comma split (it was run as two values)" $
+      withTempDir $ \dir -> do
+        sweep <- script "sweep"
+        let listed args = do
+              (code, out, err) <- runScriptCode [] sweep ("--list" : args)
+              pure (code, lines out, err)
+        -- (a comma inside quotes, not escaped: refused, naming the value
+        -- and the escape; it listed mode="a and mode=b" and exited 0)
+        (code, out, err) <- listed ["--seeds", "1,2", "--param", "mode=\"a,b\""]
+        (code, out) `shouldBe` (ExitFailure 2, [])
+        err `shouldSatisfy` ("--param mode=\"a,b\": the value \"a has a \" that is not closed" `isInfixOf`)
+        err `shouldSatisfy` ("write a comma within a value as \\," `isInfixOf`)
+        -- \, is a comma, \\ a backslash, any other \ as it is
+        listed ["--param", "mode=\"a\\,b\",c", "--param", "p=x\\\\,y\\z"] `shouldReturn`
+          ( ExitSuccess
+          , [ "--seed 0 --param 'mode=\"a,b\"' --param 'p=x\\'", "--seed 0 --param 'mode=\"a,b\"' --param 'p=y\\z'"
+            , "--seed 0 --param mode=c --param 'p=x\\'", "--seed 0 --param mode=c --param 'p=y\\z'" ]
+          , "" )
+        -- (one value alone is as given, a quote in it too; a quote escaped
+        -- inside a Haskell string counts as no quote)
+        listed ["--param", "note=5\""] `shouldReturn` (ExitSuccess, ["--seed 0 --param 'note=5\"'"], "")
+        listed ["--param", "s=\"a\\\"b\",c"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --param 's=\"a\\\"b\"'", "--seed 0 --param s=c"], "")
+        -- (a comma escaped at either end is no empty value; a line break
+        -- is refused, the job list being a run a line: the value was cut
+        -- at it)
+        listed ["--param", "a=\\,,x"] `shouldReturn` (ExitSuccess, ["--seed 0 --param a=,", "--seed 0 --param a=x"], "")
+        (codeNl, _, errNl) <- listed ["--param", "a=x\ny,z"]
+        (codeNl, "a value cannot hold a line break" `isInfixOf` errNl) `shouldBe` (ExitFailure 2, True)
+        -- a world file whose name has a comma
+        writeFile (dir </> "a,b.world") ""
+        writeFile (dir </> "c.world") ""
+        listed ["--worlds", dir </> "a\\,b.world," ++ dir </> "c.world"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --world " ++ dir </> "a,b.world", "--seed 0 --world " ++ dir </> "c.world"], "")
+        -- and a run gets the value with its comma
+        requireParallel
+        prog <- childScript dir "program"
+        _ <- runScript [] sweep ["--param", "tag=\"a\\,b\",c", prog, dir </> "r.jsonl", "--", "--seconds", "0.1"]
+        rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+        map (field ["params", "tag"]) rs `shouldBe` map JString ["\"a,b\"", "c"]
+
     it "interrupted (SIGTERM to its process group, as at Slurm's time limit): a line for every run, a message, no temporary file" $ withTempDir $ \dir -> do
       requireParallel
       prog <- childScript dir "program"
