@@ -496,6 +496,20 @@ spec = do
       field ["params"] (parsed line) `shouldBe` JObject [("speed", JString "0.3"), ("tag", JString "x")]
       (_, err3, _) <- runOnce dir ["--seconds", "0.1", "--param", "speed=1", "--param", "speed=2", "--param", "speed=1"]
       err3 `shouldSatisfy` (": warning: --param speed is given 3 times, speed=1 then speed=2 then speed=1: the last, speed=1, is used\n" `isSuffixOf`)
+    it "a flag with one value given twice: the run warns, naming the values and the one used (the last), and exits 0 (it was silent)" $
+      withTempDir $ \dir -> do
+        (code, err, line) <- runOnce dir [ "--seconds", "0.1", "--keys", "0:a", "--odometry-noise", "0", "--seconds", "0.2"
+                                         , "--keys", "0.1:b", "--odometry-noise", "0.01", "--param", "tag=x" ]
+        code `shouldBe` ExitSuccess
+        map (drop 1 . dropWhile (/= ':')) (lines err) `shouldBe`
+          [ " warning: --seconds is given twice, 0.1 then 0.2: the last, 0.2, is used"
+          , " warning: --odometry-noise is given twice, 0 then 0.01: the last, 0.01, is used" ]
+        (field ["seconds"] (parsed line), field ["odometryNoise"] (parsed line)) `shouldBe` (JNumber 0.2, JNumber 0.01)
+        -- (a value that is empty or holds a space is quoted)
+        (code', err', _) <- runOnce dir ["--seconds", "0.1", "--out", dir </> "a b", "--out", dir </> "c"]
+        code' `shouldBe` ExitSuccess
+        err' `shouldSatisfy` ((": warning: --out is given twice, " ++ show (dir </> "a b") ++ " then " ++ dir </> "c"
+                               ++ ": the last, " ++ dir </> "c" ++ ", is used\n") `isSuffixOf`)
     it "rejects a value without a name or an =" $ do
       parseSimArgs defaultSimOptions ["--param", "speed"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
       parseSimArgs defaultSimOptions ["--param", "=1"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
