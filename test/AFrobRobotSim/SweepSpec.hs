@@ -47,7 +47,8 @@ childVariable = "AFRP_SPEC_SWEEP_CHILD"
 -- | The test binary as a child: @program@ is a runSim program whose robot
 -- starts further right the larger the seed, drives at @--param speed=V@
 -- (default 0.1) and whose controller throws from @--param failAt=T@ on;
--- @merge@ is @afrp-sweep-merge@.
+-- @announcer@ reads @--param speed@ with 'paramOr', prints it (an action
+-- of its own before 'runSim'), then runs; @merge@ is @afrp-sweep-merge@.
 child :: String -> IO ()
 child "merge" = withProgName "afrp-sweep-merge" sweepMergeMain   -- (signed as the executable is)
 child "program" = do
@@ -65,6 +66,11 @@ child "program" = do
       ctl _ = localTime >>> arr (\t -> if t >= failAt then error "the test controller gives up"
                                        else mrFinalize (ddVelDiff speed speed))
   runSim (Just world) ctl ctl
+child "announcer" = do
+  speed <- paramOr "speed" (0.1 :: Double)
+  putStrLn ("speed " ++ show speed)
+  runSim (Just [OTSimbotA 1 (Point2 0 0) 0]) (\_ -> constant (mrFinalize (ddVelDiff speed speed)))
+                                            (\_ -> constant (mrFinalize (ddVelDiff 0 0)))
 child other = ioError (userError ("unknown child " ++ show other))
 
 -- The program run with a @--param@ that 'paramOr' refuses: a usage error,
@@ -510,6 +516,23 @@ spec = do
         code' `shouldBe` ExitSuccess
         err' `shouldSatisfy` ((": warning: --out is given twice, " ++ show (dir </> "a b") ++ " then " ++ dir </> "c"
                                ++ ": the last, " ++ dir </> "c" ++ ", is used\n") `isSuffixOf`)
+    it "paramOr on a command line runSim refuses stops the program at once, with runSim's message and exit code 2 (it read the default and the program went on); --help prints the usage and exits 0" $
+      withTempDir $ \dir -> do
+        prog <- childScript dir "announcer"
+        let after1 = drop 1 . dropWhile (/= ':')
+        forM_ [ (["--param", "=5"], " --param expects NAME=VALUE, got \"=5\"")
+              , (["--param", "speed=0.2", "--seconds", "abc"], " --seconds expects a non-negative number (written as in a world file: 2, 0.5, 1e-3), got \"abc\"")
+              , (["--no-such-flag"], " unknown argument \"--no-such-flag\" (see --help)") ] $ \(args, message) -> do
+          (code, out, err) <- readProcessWithExitCode prog args ""
+          (code, out, map after1 (lines err)) `shouldBe` (ExitFailure 2, "", [message])
+        (code, out, err) <- readProcessWithExitCode prog ["--param", "speed=0.2", "--help"] ""
+        (code, err) `shouldBe` (ExitSuccess, "")
+        out `shouldSatisfy` ("usage: " `isPrefixOf`)
+        out `shouldNotSatisfy` ("speed" `isPrefixOf`)
+        length (filter ("usage: " `isPrefixOf`) (lines out)) `shouldBe` 1
+        -- (a command line runSim takes: the program's own action, then the run)
+        (code', out', _) <- readProcessWithExitCode prog ["--param", "speed=0.2", "--seconds", "0.1", "--quiet", "--no-svg", "--no-replay"] ""
+        (code', take 1 (lines out')) `shouldBe` (ExitSuccess, ["speed 0.2"])
     it "rejects a value without a name or an =" $ do
       parseSimArgs defaultSimOptions ["--param", "speed"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
       parseSimArgs defaultSimOptions ["--param", "=1"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
