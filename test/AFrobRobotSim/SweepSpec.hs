@@ -338,6 +338,63 @@ spec = do
         ("refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too" `isPrefixOf`)
       -- a result line must name its world
       tableOf' [own "null" (head sampleLines)] `shouldSatisfy` ("refused: line 1: not a result line of a sweep" `isPrefixOf`)
+    it "merges the lines of two programs as two settings, naming the program only then (the same world and seed was refused as a run merged twice)" $ do
+      let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
+          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
+          rcStop = map (ofProgram "afrp-examples rcStop") (take 2 sampleLines)
+      headings (map (ofProgram "afrp-examples rcReverse") (take 2 sampleLines) ++ rcStop) `shouldBe`
+        [ "== program=\"afrp-examples rcReverse\" world=default speed=0.1  (2 runs, 0 failed)"
+        , "== program=\"afrp-examples rcStop\" world=default speed=0.1  (2 runs, 0 failed)" ]
+      -- (with a parameter varying too, each program over the other settings)
+      headings (sampleLines ++ map (ofProgram "q") sampleLines) `shouldBe`
+        [ "== program=p world=default speed=0.1  (3 runs, 0 failed)", "== program=p world=default speed=0.2  (2 runs, 1 failed)"
+        , "== program=q world=default speed=0.1  (3 runs, 0 failed)", "== program=q world=default speed=0.2  (2 runs, 1 failed)"
+        , "== program=p over all other settings  (5 runs, 1 failed)", "== program=q over all other settings  (5 runs, 1 failed)"
+        , "== speed=0.1 over all other settings  (6 runs, 0 failed)", "== speed=0.2 over all other settings  (4 runs, 2 failed)" ]
+      -- one program's table is as it was, whatever the program's name
+      mergeResults (unlines (map (ofProgram "another name") sampleLines)) `shouldBe` mergeResults (unlines sampleLines)
+      -- a run merged twice is one program's run twice
+      headings (rcStop ++ take 1 rcStop) `shouldBe`
+        [ "refused: line 3: the run world=default speed=0.1 seed 1 (dt 0.01, seconds 1) is on an earlier line too (a result file"
+          ++ " merged twice, a run merged with its rerun, or runs told apart only by flags a result line does not record, such"
+          ++ " as --keys: give each such run a --param that names its setting): each run may be merged once" ]
+      -- (named with its program when the lines so far name more than one)
+      headings (sampleLines ++ rcStop ++ take 1 rcStop) `shouldSatisfy` \hs -> case hs of
+        [h] -> ("refused: line 8: the run program=\"afrp-examples rcStop\" world=default speed=0.1 seed 1 (dt 0.01, seconds 1)"
+                ++ " is on an earlier line too") `isPrefixOf` h
+        _   -> False
+      -- a parameter named program is a parameter, not the program
+      headings [resultLine 1 [("program", "p")] 1 Nothing] `shouldBe` ["== world=default program=p  (1 runs, 0 failed)"]
+
+    it "files the sweep's line for a run with no result, which names the program's file, under the program its result lines name; with several programs, under its own name unless a result line names it" $ do
+      let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
+          noResult prog seed world = "{\"program\":" ++ encodeJSON (JString prog) ++ ",\"world\":" ++ world ++ ",\"seed\":"
+                                     ++ show (seed :: Int) ++ ",\"params\":{\"speed\":\"0.1\"},\"flags\":\"--seed "
+                                     ++ show seed ++ "\",\"failure\":\"exit code 2, no result: bad flag\"}"
+          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
+      -- one program: its runs with no result are its own, whatever name
+      -- the sweep gave them (a wrapper script's), the world too
+      headings (take 2 sampleLines ++ [noResult "p.sh" 7 "null"]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      headings (map (replace "\"world\":\"default\"" "\"world\":\"w.world\"") (take 2 sampleLines) ++ [noResult "p.sh" 7 "\"w.world\""])
+        `shouldBe` ["== world=w.world speed=0.1  (3 runs, 1 failed)"]
+      headings (take 2 sampleLines ++ [noResult "p.sh" 2 "null"]) `shouldBe`
+        [ "refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too (a result"
+          ++ " file merged with the sweep's line for the same run): each run may be merged once" ]
+      headings (take 2 sampleLines ++ [noResult "p.sh" 7 "null", noResult "p.bash" 7 "null"]) `shouldBe`
+        [ "refused: the run world=(not given) speed=0.1 seed 7 is on two lines for a run with no result (the sweep's lines for the"
+          ++ " same run merged twice, under two programs' names): each run may be merged once" ]
+      -- two programs: a line of one of them is filed with it (its own
+      -- world as its result lines name it), one of another program is a
+      -- setting of its own
+      let q = map (replace "\"world\":\"default\"" "\"world\":\"program\"" . ofProgram "q") (take 2 sampleLines)
+      headings (take 2 sampleLines ++ q ++ [noResult "q" 7 "null", noResult "p" 8 "null", noResult "r.sh" 9 "null"]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (3 runs, 1 failed)", "== program=q world=program speed=0.1  (3 runs, 1 failed)"
+        , "== program=r.sh world=(not given) speed=0.1  (1 runs, 1 failed)"
+        , "== program=p over all other settings  (3 runs, 1 failed)", "== program=q over all other settings  (3 runs, 1 failed)"
+        , "== program=r.sh over all other settings  (1 runs, 1 failed)"
+        , "== world=(not given) over all other settings  (1 runs, 1 failed)"
+        , "== world=default over all other settings  (3 runs, 1 failed)", "== world=program over all other settings  (3 runs, 1 failed)" ]
+
     it "refuses a line that is neither a run's result line nor the sweep's line for a run with no result" $ do
       let failureLine = "{\"program\":\"p\",\"world\":\"default\",\"seed\":\"007\",\"params\":{\"speed\":\"1\"}"
                         ++ ",\"flags\":\"--seed 007 --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
