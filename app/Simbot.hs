@@ -6,17 +6,16 @@
 -- Every flag of 'runSim' applies (@--help@ lists them).
 --
 -- @simbot --replay-from RUN.jsonl --replay OUT.html@ simulates nothing: it
--- turns a run log (written with @--log@) into a replay page.
+-- turns a run log (written with @--log@) into a replay page
+-- ('AFrobRobotSim.Replay.replayFromMain': exit code 2 when it refuses
+-- before writing, 1 when a write fails).
 module Main (main) where
 
-import           System.Environment (getArgs, getProgName)
-import           System.Exit        (exitWith, ExitCode (..))
+import           System.Environment (getArgs)
 
 import           AFrob
 import           AFrobRobotSim
-import           AFrobRobotSim.Log    (LogEnd (..))
-import           AFrobRobotSim.Replay (writeReplayFromLog)
-import           AFrobRobotSim.Console (displayPath, endOutput, putErr)
+import           AFrobRobotSim.Replay (replayFromMain)
 import           Paper.Section3     (rcAlign, rcFollowLeftWall, rcMoveTo, rcReverse)
 
 main :: IO ()
@@ -25,31 +24,8 @@ main = do
   -- replay mode when --replay-from is a flag the simulation's command line
   -- does not take (not, say, the name of the --out folder)
   case parseSimArgs defaultSimOptions args of
-    Left _ | "--replay-from" `elem` args -> replayFrom args
+    Left _ | "--replay-from" `elem` args -> replayFromMain args
     _                                    -> runSim Nothing demoA demoB
-
--- | @--replay-from F.jsonl --replay OUT.html@, in either order.
-replayFrom :: [String] -> IO ()
-replayFrom args = do
-  prog <- getProgName
-  let failWith msg = putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure 2)
-  case args of
-    ["--replay-from", f, "--replay", o] -> go prog failWith f o
-    ["--replay", o, "--replay-from", f] -> go prog failWith f o
-    _ -> failWith "--replay-from FILE.jsonl needs --replay OUT.html and no other flag"
-  where
-    go prog failWith f o = do
-      r <- writeReplayFromLog f o
-      case r of
-        Left msg  -> failWith msg   -- (the message names the file)
-        Right end -> do
-          -- (a log cut off, by a full disk: its page is made, and the
-          -- cut said)
-          mapM_ (\i -> putErr (prog ++ ": warning: " ++ displayPath f ++ ":" ++ show i ++ ": the log's last line"
-                                ++ " stops in its middle (did its disk fill up?); it is left out, and the page shows"
-                                ++ " the frames before it\n")) (leCutLine end)
-          putStrLn ("wrote " ++ displayPath o)
-      endOutput prog
 
 -- | The SimbotA demos, by id.
 demoA :: SimbotController

@@ -35,6 +35,11 @@
 -- --help             print this usage and exit
 -- @
 --
+-- A flag that takes a value, given twice on one command line, takes its
+-- last value and is warned of when the run starts
+-- ('optFlagsRepeated', 'optParamsRepeated'), but for @--keys@, whose
+-- presses all count.
+--
 -- 'validateOptions' checks the numbers together before anything is
 -- simulated: the step count @seconds / dt@ is finite and at most
 -- 'maxSteps' (a run takes the whole number of steps nearest to it, a half

@@ -111,7 +111,8 @@
 -- (a page recorded as a run goes, thinned for the length the run has),
 -- "AFrobRobotSim.Replay.Spool" (their temporary files) and
 -- "AFrobRobotSim.Replay.Assets" (the script and the style); and makes the
--- page of a log file ('writeReplayFromLog').
+-- page of a log file ('writeReplayFromLog', and @simbot --replay-from@'s
+-- command line, 'replayFromMain').
 module AFrobRobotSim.Replay
   ( -- * Pages
     replayPage
@@ -122,7 +123,12 @@ module AFrobRobotSim.Replay
   , replayFrameStep
   , replayMaxFrames
   , replayMaxRobotFrames
+    -- * The page of a log file
   , writeReplayFromLog
+  , ReplayFault (..)
+  , replayFaultText
+  , replayFromArgs
+  , replayFromMain
     -- * Recording a run as it goes
   , ReplayPlan (..)
   , replayPlan
@@ -141,10 +147,12 @@ module AFrobRobotSim.Replay
 import qualified Data.ByteString.Char8     as BC
 import           Control.Exception         (finally, mask, try)
 import           System.Directory          (doesDirectoryExist, getTemporaryDirectory)
+import           System.Environment        (getProgName)
+import           System.Exit               (ExitCode (..), exitWith)
 import           System.FilePath           (takeDirectory)
 
 import           AFrobRobotSim.Log
-import           AFrobRobotSim.Console     (displayPath, ioErrorText)
+import           AFrobRobotSim.Console     (displayPath, endOutput, ioErrorText, putErr)
 import           AFrobRobotSim.OutputFile  (notAFolder)
 import           AFrobRobotSim.Replay.Page
 import           AFrobRobotSim.Replay.Recorder
@@ -155,12 +163,15 @@ import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 -- FILE.jsonl --replay OUT.html@ does, giving how the log ends ('LogEnd':
 -- its summary, if any, and the number of its last line if that line was
 -- cut off, as a full disk leaves it: the page then shows the frames
--- before it; see "AFrobRobotSim.Log.Read"). A log that does not
--- read is a 'Left' with the reader's message (nothing is written then); a page that
--- cannot be written is a 'Left' naming it, and so is a page that is the
--- log itself (under any name: the log is kept), an empty name, a
--- folder, or in a folder that does not exist (said before the log is
--- read).
+-- before it; see "AFrobRobotSim.Log.Read"). What makes no page is a
+-- 'Left', refused before anything is written ('ReplayRefused'): a log
+-- that does not read (the reader's message: nothing is written then), a
+-- page that is the log itself (under any name: the log is kept), an
+-- empty name, a page that is a folder or in a folder that does not exist
+-- (said before the log is read), a temporary folder that cannot be
+-- used; or a write that fails on the way ('ReplayWriteFailed', naming
+-- the page or the temporary file: a full disk), which leaves an earlier
+-- page of that name as it was.
 --
 -- The page keeps every frame of the log: it is not thinned to
 -- 'replayMaxFrames' as a run's own page is (a log of a long run makes a
@@ -174,18 +185,20 @@ import           AFrobRobotSim.WorldFile.Lexical (canonicalPath)
 -- however long the log: the page of a 37 MB log (ten minutes of the
 -- default world) took 16 MB and 2.8 s; read whole, it took 410 MB and
 -- 15 s (and a one-hour log 2.5 GB).
-writeReplayFromLog :: FilePath -> FilePath -> IO (Either String LogEnd)
+writeReplayFromLog :: FilePath -> FilePath -> IO (Either ReplayFault LogEnd)
 writeReplayFromLog logPath out = do
   same <- (==) <$> canonicalPath logPath <*> canonicalPath out
   isFolder <- doesDirectoryExist out
   let folder = takeDirectory out
+      refused :: String -> IO (Either ReplayFault LogEnd)
+      refused = pure . Left . ReplayRefused
   why <- notAFolder folder
   case why of
-    _ | null logPath -> pure (Left "the log's name (--replay-from) is empty")
-      | null out -> pure (Left "the page's name (--replay) is empty")
-      | isFolder -> pure (Left ("cannot write the page " ++ displayPath out ++ ": it is a folder"))
-      | same     -> pure (Left (displayPath out ++ ": is the log being read; the page would overwrite it"))
-    Just w   -> pure (Left ("cannot write the page " ++ displayPath out ++ ": " ++ displayPath folder ++ " " ++ w))
+    _ | null logPath -> refused "the log's name (--replay-from) is empty"
+      | null out -> refused "the page's name (--replay) is empty"
+      | isFolder -> refused ("cannot write the page " ++ displayPath out ++ ": it is a folder")
+      | same     -> refused (displayPath out ++ ": is the log being read; the page would overwrite it")
+    Just w   -> refused ("cannot write the page " ++ displayPath out ++ ": " ++ displayPath folder ++ " " ++ w)
     Nothing  -> do
       tmp <- getTemporaryDirectory
       -- (the frames' temporary file: a fault there, a missing or full
@@ -197,18 +210,104 @@ writeReplayFromLog logPath out = do
       mask $ \restore -> do
        opened <- try (openSpool tmp)
        case opened of
-        Left e          -> pure (Left (spoolFault e))
+        Left e          -> refused (spoolFault e)
         Right (left, h) -> flip finally (closeSpool left h) $ restore $ do
           let start hd = let line = encodeLogLineBytes (LineHeader hd) in pure (line, fnvBytes fnvBasis line)
               step (header, !hash) f = do
                 let !line = encodeLogLineBytes (LineFrame f)
                 BC.hPutStrLn h line
                 pure (header, fnvBytes hash line)
+          -- (what the reading throws is the temporary file's: a fault
+          -- of the log's own is a Left)
           spooled <- try (foldLogFile logPath start step <* rewind h)
           case spooled of
-            Left e                                  -> pure (Left (spoolFault e))
-            Right (Left e)                          -> pure (Left e)
+            Left e                                  -> pure (Left (ReplayWriteFailed (spoolFault e)))
+            Right (Left e)                          -> refused e
             Right (Right ((header, hash), end)) -> do
               let summary = encodeLogLineBytes . LineSummary <$> leSummary end
-              either (\e -> Left ("cannot write the page: " ++ ioErrorText e)) (const (Right end))   -- (it names the page)
+              either (\e -> Left (ReplayWriteFailed ("cannot write the page: " ++ ioErrorText e)))   -- (it names the page)
+                     (const (Right end))
                 <$> try (writePage replayChunkChars header h summary (maybe hash (fnvBytes hash) summary) out)
+
+-- | Why 'writeReplayFromLog' made no page: refused before anything was
+-- written, or a write that failed. @simbot --replay-from@ exits with
+-- code 2 for the first, as a run does for what it refuses before it
+-- simulates, and 1 for the second, as a run does for a write that fails
+-- ('replayFromMain').
+data ReplayFault
+  = ReplayRefused String
+    -- ^ refused before anything was written: an empty name, a page that
+    -- is a folder, is the log or is in a folder it cannot be written to,
+    -- a log that does not read (the reader's message, with the line), a
+    -- temporary folder that cannot be used
+  | ReplayWriteFailed String
+    -- ^ a write that failed on the way (a full disk): of the frames'
+    -- temporary file, or of the page, which is then not written (an
+    -- earlier page of that name is kept)
+  deriving (Eq, Show)
+
+-- | The message of a 'ReplayFault' (it names the file).
+replayFaultText :: ReplayFault -> String
+replayFaultText (ReplayRefused msg)     = msg
+replayFaultText (ReplayWriteFailed msg) = msg
+
+-- | The log's and the page's names on the command line of @simbot
+-- --replay-from FILE.jsonl --replay OUT.html@ (the two flags in either
+-- order, each once, and no other), or what is wrong with it: a flag
+-- without its value (or with a flag for its value: @./--replay@ names
+-- such a file), the other flag missing, a flag given twice, any other
+-- argument.
+--
+-- >>> replayFromArgs ["--replay", "run.html", "--replay-from", "run.jsonl"]
+-- Right ("run.jsonl","run.html")
+-- >>> replayFromArgs ["--replay-from"]
+-- Left "--replay-from needs the name of the run log to read (written with --log): --replay-from FILE.jsonl --replay OUT.html"
+replayFromArgs :: [String] -> Either String (FilePath, FilePath)
+replayFromArgs = go Nothing Nothing
+  where
+    go mlog mpage args = case args of
+      [] -> case (mlog, mpage) of
+        (Just f, Just o) -> Right (f, o)
+        (Just _, _)      -> Left ("--replay-from needs --replay OUT.html, the page to write: " ++ usageLine)
+        _                -> Left ("--replay needs --replay-from FILE.jsonl, the run log to read: " ++ usageLine)
+      flag : rest
+        | flag `elem` flags -> case rest of
+            [] -> Left (flag ++ " needs " ++ what flag ++ ": " ++ usageLine)
+            v : _ | v `elem` flags -> Left (flag ++ " needs " ++ what flag ++ ", found the flag " ++ v)
+            v : rest'
+              | flag == "--replay-from" -> maybe (go (Just v) mpage rest') (const (twice flag)) mlog
+              | otherwise               -> maybe (go mlog (Just v) rest') (const (twice flag)) mpage
+        | otherwise -> Left (usageLine ++ " takes no other argument, got " ++ show flag)
+    flags = ["--replay-from", "--replay"]
+    what flag | flag == "--replay-from" = "the name of the run log to read (written with --log)"
+              | otherwise               = "the name of the page to write"
+    twice flag = Left (flag ++ " is given twice: " ++ usageLine)
+    usageLine = "--replay-from FILE.jsonl --replay OUT.html"
+
+-- | @simbot --replay-from FILE.jsonl --replay OUT.html@: the page of a run
+-- log ('writeReplayFromLog'), from these arguments ('replayFromArgs'),
+-- with @wrote OUT.html@ on standard output, a warning for a log cut off
+-- in its last line, and the messages on standard error signed with the
+-- program's name. The exit code is 0 when the page is written; 2 when
+-- it is refused before anything is written (a command line that is not
+-- those two flags with their values, a log that does not read, a page
+-- that cannot be written there: 'ReplayRefused'); 1 when a write fails
+-- on the way (a full disk: 'ReplayWriteFailed'), or standard output
+-- cannot be written.
+replayFromMain :: [String] -> IO ()
+replayFromMain args = do
+  prog <- getProgName
+  let stop code msg = putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure code)
+  (logPath, out) <- either (stop 2) pure (replayFromArgs args)
+  r <- writeReplayFromLog logPath out
+  case r of
+    Left (ReplayRefused msg)     -> stop 2 msg
+    Left (ReplayWriteFailed msg) -> stop 1 msg
+    Right end -> do
+      -- (a log cut off, by a full disk: its page is made, and the cut
+      -- said)
+      mapM_ (\i -> putErr (prog ++ ": warning: " ++ displayPath logPath ++ ":" ++ show i ++ ": the log's last line"
+                            ++ " stops in its middle (did its disk fill up?); it is left out, and the page shows"
+                            ++ " the frames before it\n")) (leCutLine end)
+      putStrLn ("wrote " ++ displayPath out)
+  endOutput prog

@@ -80,7 +80,7 @@ import           System.Exit          (ExitCode (..), exitWith)
 import           Text.Read            (readMaybe)
 
 import           AFRP.Geometry        (norm, point2X, point2Y, (.-.))
-import           AFrobRobotSim.Console (putErr)
+import           AFrobRobotSim.Console (endOutput, putErr, tolerantOutput)
 import           AFrobRobotSim.JSON
 import           AFrobRobotSim.Log.Records (LogSummary (..))
 import           AFrobRobotSim.Options
@@ -89,11 +89,39 @@ import           AFrobRobotSim.Simulator
 -- | The @--param NAME=VALUE@ pairs of this program's command line, in the
 -- order given (a name given twice keeps its last value, in its first
 -- place; 'AFrobRobotSim.runSim' warns of it, see
--- 'AFrobRobotSim.Options.optParamsRepeated'). A command line that does
--- not parse gives @[]@; 'AFrobRobotSim.runSim' then reports the fault
--- before anything is simulated.
+-- 'AFrobRobotSim.Options.optParamsRepeated'). The command line is read
+-- as 'AFrobRobotSim.runSim' reads it ('parseSimArgs'), and what it would
+-- stop at stops the program here, at once, before anything else the
+-- program does: a command line it refuses (@--param =5@, an unknown
+-- flag, @--seconds abc@), with its message on standard error
+-- (@prog: --param expects NAME=VALUE, got "=5"@) and exit code 2;
+-- @--help@, with the usage on standard output and exit code 0 (by
+-- 'exitWith', so a caller may catch the 'ExitCode'). (It gave @[]@, and
+-- the program went on with its defaults until 'AFrobRobotSim.runSim'
+-- stopped it.) A program whose command line is not 'AFrobRobotSim.runSim''s
+-- (as @afrp-examples NAME [flags]@ is) reads the parameters of its
+-- flags with 'simParamsOf' or 'readSimParam' instead.
 getSimParams :: IO [(String, String)]
-getSimParams = atomicModifyIORef' paramReads (\(_, ns) -> ((True, ns), ())) >> simParamsOf <$> getArgs
+getSimParams = atomicModifyIORef' paramReads (\(_, ns) -> ((True, ns), ())) >> commandLineParams
+
+-- The @--param@s of this program's command line, or the program stopped
+-- as 'AFrobRobotSim.runSim' would stop it (see 'getSimParams').
+commandLineParams :: IO [(String, String)]
+commandLineParams = do
+  args <- getArgs
+  case parseSimArgs defaultSimOptions args of
+    Right (RunWith o) -> pure (optParams o)
+    Right ShowHelp    -> do
+      tolerantOutput
+      prog <- getProgName
+      putStrLn (usage prog)
+      endOutput prog
+      exitWith ExitSuccess
+    Left err -> do
+      tolerantOutput
+      prog <- getProgName
+      putErr (prog ++ ": " ++ err ++ "\n")
+      exitWith (ExitFailure 2)
 
 -- The parameters this program has asked for: all of them ('getSimParams'),
 -- or those named ('lookupSimParam', 'paramOr'), for 'unreadParams'.
@@ -117,7 +145,8 @@ unreadParams o = do
   let asked = reverse names
   pure (if everything then [] else [ p | p@(k, _) <- optParams o, k `notElem` asked ], nub asked)
 
--- | The @--param@ pairs of a command line (as 'getSimParams', purely).
+-- | The @--param@ pairs of a command line (as 'getSimParams', purely; a
+-- command line that 'parseSimArgs' refuses, or @--help@, gives @[]@).
 simParamsOf :: [String] -> [(String, String)]
 simParamsOf args = case parseSimArgs defaultSimOptions args of
   Right (RunWith o) -> optParams o
@@ -127,11 +156,13 @@ simParamsOf args = case parseSimArgs defaultSimOptions args of
 -- The name is matched as text in any locale; the value is as
 -- 'System.Environment.getArgs' gives it (in a locale that is not UTF-8,
 -- with stand-ins for the bytes beyond ASCII, so that a file it names
--- opens: 'AFrobRobotSim.Options.argText' makes it text).
+-- opens: 'AFrobRobotSim.Options.argText' makes it text). A command line
+-- that 'AFrobRobotSim.runSim' would refuse, or @--help@, stops the
+-- program here, as 'getSimParams' does.
 lookupSimParam :: String -> IO (Maybe String)
 lookupSimParam name = do
   atomicModifyIORef' paramReads (\(e, ns) -> ((e, name : ns), ()))
-  lookup name . simParamsOf <$> getArgs
+  lookup name <$> commandLineParams
 
 -- | @paramOr name def@: the @--param name=VALUE@ of this program's
 -- command line read with 'Read' (a 'String' parameter must then be
@@ -140,7 +171,10 @@ lookupSimParam name = do
 -- before anything is simulated, as a malformed command line does
 -- ('AFrobRobotSim.runSim'): a message naming the parameter on standard
 -- error, and exit code 2 (by 'exitWith', so a caller may catch the
--- 'ExitCode').
+-- 'ExitCode'). So does a command line that 'AFrobRobotSim.runSim' would
+-- refuse, with its message, and @--help@ prints the usage and ends the
+-- program with exit code 0 ('getSimParams'), before the program's own
+-- actions.
 --
 -- > prog: --param speed=fast: cannot read the value "fast" (write it as Haskell's read reads it: 0.5, 3, True, "quoted text")
 -- > prog: --param n=99999999999999999999: the value "99999999999999999999" is out of range for this parameter (it would read as 7766279631452241919)

@@ -78,6 +78,7 @@ import           Control.Concurrent        (getNumCapabilities)
 import           Control.Exception         (AsyncException (HeapOverflow, UserInterrupt), Exception (..), IOException, SomeException,
                                             evaluate, mask_, throwIO, try)
 import           Control.Monad             (forM, unless, when)
+import           Data.Char                 (isPrint, isSpace)
 import           Data.IORef
 import           Data.List                 (intercalate)
 import           Data.Maybe                (catMaybes, isNothing)
@@ -176,6 +177,15 @@ runSimRefereedWith opts referee mworld rcA rcB = do
       (errs, ffmpeg) <- preflight (worldBounds world) opts
       unless (null errs) $
         failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
+      -- (a flag with one value given twice: the run uses the last value,
+      -- and says so; a value quoted when it is empty or holds a space)
+      let shown v | not (null v), all (\c -> isPrint c && not (isSpace c)) t = t
+                  | otherwise                                                = quote t
+            where t = argText v
+      unless (null (optFlagsRepeated opts)) $ putErr $ unlines
+        [ prog ++ ": warning: " ++ flag ++ " is given " ++ timesText (length vs) ++ ", "
+          ++ intercalate " then " (map shown vs) ++ ": the last, " ++ shown (last vs) ++ ", is used"
+        | (flag, vs@(_ : _)) <- optFlagsRepeated opts ]
       -- (a parameter given twice: the run uses the last value, and says so)
       let given k v = displayPath (k ++ "=" ++ argText v)
       unless (null (optParamsRepeated opts)) $ putErr $ unlines

@@ -6,8 +6,9 @@
 --
 -- A sweep (@scripts/sweep@, @scripts/sweep.sbatch@) writes one result line
 -- per run ("AFrobRobotSim.Result"), in shards, in whatever order the runs
--- finished. 'mergeResults' groups the runs by their setting (the world and
--- the parameters) and prints, per group, the mean, minimum and maximum of
+-- finished. 'mergeResults' groups the runs by their setting (the program,
+-- the world and the parameters; the program is named only when the lines
+-- name more than one) and prints, per group, the mean, minimum and maximum of
 -- every outcome over its runs; when two or more settings vary (two
 -- parameters, or a parameter and the world), it then prints the same per
 -- value of each setting, over all the values of the others. A run that

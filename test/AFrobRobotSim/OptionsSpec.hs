@@ -218,6 +218,22 @@ spec = do
       -- (a value of the given settings that the command line replaces is no repeat)
       fmap' optParamsRepeated (parseSimArgs defaultSimOptions { optParams = [("a", "0")] } ["--param", "a=1"])
         `shouldBe` Right []
+    it "keeps each flag with one value that the command line repeats, with all its values (the last was used, the repeat unseen)" $ do
+      let repeated o args = fmap' (\o' -> (optFlagsRepeated o', optSeconds o', optWorldFile o')) (parseSimArgs o args)
+      repeated defaultSimOptions ["--seconds", "2", "--world", "a.world", "--seconds", "3", "--world", "b.world", "--seconds", "2"]
+        `shouldBe` Right ([("--seconds", ["2", "3", "2"]), ("--world", ["a.world", "b.world"])], 2, Just "b.world")
+      -- (--keys adds its presses, --param has its own list, a flag
+      -- without a value is no repeat)
+      fmap' optFlagsRepeated (parseSimArgs defaultSimOptions
+        ["--keys", "1:a", "--keys", "2:b", "--param", "a=1", "--param", "a=2", "--no-svg", "--svg", "x.svg", "--quiet", "--quiet"])
+        `shouldBe` Right []
+      fmap' optFlagsRepeated (parseSimArgs defaultSimOptions ["--svg", "a.svg", "--no-svg", "--svg", "b.svg", "--out", "", "--out", "o"])
+        `shouldSatisfy` either ("--out expects a folder name" `isInfixOf`) (const False)
+      fmap' optFlagsRepeated (parseSimArgs defaultSimOptions ["--svg", "a.svg", "--no-svg", "--svg", "b.svg"])
+        `shouldBe` Right [("--svg", ["a.svg", "b.svg"])]
+      -- (a value of the given settings that the command line replaces is no repeat)
+      repeated defaultSimOptions { optSeconds = 5, optFlagsRepeated = [("--dt", ["1", "2"])] } ["--seconds", "1"]
+        `shouldBe` Right ([("--dt", ["1", "2"])], 1, Nothing)
     it "says a --param without = as text, in a locale that is not UTF-8 too" $
       parseParam (cLocale "naïve") `shouldBe` Left ("--param expects NAME=VALUE, got " ++ show "naïve")
   describe "argText" $ do

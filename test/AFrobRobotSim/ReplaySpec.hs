@@ -148,31 +148,31 @@ spec = do
       writeFile logPath "{\"kind\": \"header\", \"format\": \"other\"}\n"
       r <- writeReplayFromLog logPath (logPath ++ ".html")
       removeFile logPath
-      r `shouldSatisfy` either ((logPath ++ ":1: ") `isPrefixOf`) (const False)
+      r `shouldSatisfy` either (((logPath ++ ":1: ") `isPrefixOf`) . refusedText) (const False)
     it "reports a log that does not exist and a page that cannot be written as Left, naming the file (fixed)" $ do
       tmp <- getTemporaryDirectory
       let missing = tmp ++ "/afrp-no-such-log.jsonl"
       r1 <- writeReplayFromLog missing (missing ++ ".html")
-      r1 `shouldSatisfy` either (\e -> missing `isInfixOf` e && not ((missing ++ ": " ++ missing) `isInfixOf` e)) (const False)
+      r1 `shouldSatisfy` either ((\e -> missing `isInfixOf` e && not ((missing ++ ": " ++ missing) `isInfixOf` e)) . refusedText) (const False)
       (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
       hClose h
       writeFile logPath fixtureLogText
       let out = tmp ++ "/afrp-no-such-folder/page.html"
       r2 <- writeReplayFromLog logPath out
       removeFile logPath
-      r2 `shouldSatisfy` either (\e -> out `isInfixOf` e && not ((out ++ ": " ++ out) `isInfixOf` e)) (const False)
+      r2 `shouldSatisfy` either ((\e -> out `isInfixOf` e && not ((out ++ ": " ++ out) `isInfixOf` e)) . refusedText) (const False)
     it "says a page's missing folder before reading the log (and a file in the folder's place)" $ do
       tmp <- getTemporaryDirectory
       let missing = tmp ++ "/afrp-no-such-log.jsonl"
           out = tmp ++ "/afrp-no-such-folder/page.html"
       -- (the log does not exist either: the folder is said first)
       writeReplayFromLog missing out `shouldReturn`
-        Left ("cannot write the page " ++ out ++ ": " ++ tmp ++ "/afrp-no-such-folder does not exist")
+        Left (ReplayRefused ("cannot write the page " ++ out ++ ": " ++ tmp ++ "/afrp-no-such-folder does not exist"))
       (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
       hClose h
       r <- writeReplayFromLog missing (logPath </> "page.html")
       removeFile logPath
-      r `shouldBe` Left ("cannot write the page " ++ (logPath </> "page.html") ++ ": " ++ logPath ++ " is not a folder")
+      r `shouldBe` Left (ReplayRefused ("cannot write the page " ++ (logPath </> "page.html") ++ ": " ++ logPath ++ " is not a folder"))
     it "says an empty name of the log or the page, and a page that is a folder, as such (it was a bare renameFile error)" $ do
       tmp <- getTemporaryDirectory
       (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
@@ -182,8 +182,8 @@ spec = do
       r2 <- writeReplayFromLog "" (logPath ++ ".html")
       r3 <- writeReplayFromLog logPath tmp
       removeFile logPath
-      (r1, r2) `shouldBe` (Left "the page's name (--replay) is empty", Left "the log's name (--replay-from) is empty")
-      r3 `shouldBe` Left ("cannot write the page " ++ tmp ++ ": it is a folder")
+      (r1, r2) `shouldBe` (Left (ReplayRefused "the page's name (--replay) is empty"), Left (ReplayRefused "the log's name (--replay-from) is empty"))
+      r3 `shouldBe` Left (ReplayRefused ("cannot write the page " ++ tmp ++ ": it is a folder"))
     it "refuses a page that is the log itself under another name, keeping the log" $ do
       tmp <- getTemporaryDirectory
       (logPath, h) <- openTempFile tmp "afrp-log.jsonl"
@@ -193,7 +193,7 @@ spec = do
       r <- writeReplayFromLog logPath (dir </> "." </> name)
       kept <- readFile logPath
       length kept `seq` removeFile logPath
-      r `shouldSatisfy` either ("the page would overwrite it" `isInfixOf`) (const False)
+      r `shouldSatisfy` either (("the page would overwrite it" `isInfixOf`) . refusedText) (const False)
       kept `shouldBe` fixtureLogText
     it "reports a log that is not UTF-8 with the line and column of the first bad byte (fixed)" $ do
       tmp <- getTemporaryDirectory
@@ -205,7 +205,7 @@ spec = do
       hClose h
       r <- writeReplayFromLog logPath (logPath ++ ".html")
       removeFile logPath
-      r `shouldBe` Left (logPath ++ ":2:2: invalid UTF-8 (byte 0xff)")
+      r `shouldBe` Left (ReplayRefused (logPath ++ ":2:2: invalid UTF-8 (byte 0xff)"))
     it "turns a log cut short (no summary) into the page of what it holds, and says where a later line is bad" $
       withTempDir $ \dir -> do
         let logPath = dir </> "cut.jsonl"
@@ -217,7 +217,7 @@ spec = do
         fmap replayPage (readLog short) `shouldBe` Right written
         -- a bad line after good frames: no page, the old one kept
         writeFile logPath (short ++ "{\"kind\": \"frame\"\n")
-        writeReplayFromLog logPath out `shouldReturn` Left (logPath ++ ":11:17: expected ',' or '}', found end of input")
+        writeReplayFromLog logPath out `shouldReturn` Left (ReplayRefused (logPath ++ ":11:17: expected ',' or '}', found end of input"))
         readFile out `shouldReturn` written
         listDirectory dir >>= (`shouldBe` ["cut.html", "cut.jsonl"]) . sort
     it "makes the page of a log whose last line stops in its middle (a full disk's), and gives that line's number" $
@@ -235,10 +235,50 @@ spec = do
             out = dir </> "run.html"
         writeFile logPath fixtureLogText
         r <- withTMPDIR (dir </> "no-such-folder") (writeReplayFromLog logPath out)
-        r `shouldSatisfy` either (("cannot make the page: its temporary file in " ++ (dir </> "no-such-folder")) `isPrefixOf`)
+        r `shouldSatisfy` either ((("cannot make the page: its temporary file in " ++ (dir </> "no-such-folder")) `isPrefixOf`) . refusedText)
                                  (const False)
         -- (and with a usable one, the frames' file is gone after the page is written)
         createDirectory (dir </> "tmp")
         withTMPDIR (dir </> "tmp") (writeReplayFromLog logPath out) `shouldReturn` Right (LogEnd (rlSummary fixtureLog) Nothing)
         listDirectory (dir </> "tmp") `shouldReturn` []
         listDirectory dir >>= (`shouldBe` ["run.html", "run.jsonl", "tmp"]) . sort
+    it "says a page whose write fails (a full disk) as a failed write, not a refusal, keeping no partial page" $
+      withTempDir $ \dir -> do
+        let logPath = dir </> "run.jsonl"
+        writeFile logPath fixtureLogText
+        r <- writeReplayFromLog logPath "/dev/full"
+        r `shouldSatisfy` \x -> case x of
+          Left (ReplayWriteFailed msg) -> "cannot write the page: /dev/full" `isPrefixOf` msg
+          _                            -> False
+        listDirectory dir `shouldReturn` ["run.jsonl"]
+
+  describe "replayFromArgs (simbot --replay-from's command line)" $ do
+    it "takes the two flags in either order" $ do
+      replayFromArgs ["--replay-from", "a.jsonl", "--replay", "a.html"] `shouldBe` Right ("a.jsonl", "a.html")
+      replayFromArgs ["--replay", "a.html", "--replay-from", "a.jsonl"] `shouldBe` Right ("a.jsonl", "a.html")
+      replayFromArgs ["--replay", "./--replay", "--replay-from", ""] `shouldBe` Right ("", "./--replay")
+    it "says what is missing: a flag's value, or the other flag (it said \"needs --replay OUT.html and no other flag\")" $ do
+      replayFromArgs ["--replay-from"] `shouldBe`
+        Left "--replay-from needs the name of the run log to read (written with --log): --replay-from FILE.jsonl --replay OUT.html"
+      replayFromArgs ["--replay", "a.html", "--replay-from"] `shouldBe`
+        Left "--replay-from needs the name of the run log to read (written with --log): --replay-from FILE.jsonl --replay OUT.html"
+      replayFromArgs ["--replay-from", "a.jsonl", "--replay"] `shouldBe`
+        Left "--replay needs the name of the page to write: --replay-from FILE.jsonl --replay OUT.html"
+      replayFromArgs ["--replay-from", "--replay", "a.html"] `shouldBe`
+        Left "--replay-from needs the name of the run log to read (written with --log), found the flag --replay"
+      replayFromArgs ["--replay-from", "a.jsonl"] `shouldBe`
+        Left "--replay-from needs --replay OUT.html, the page to write: --replay-from FILE.jsonl --replay OUT.html"
+      replayFromArgs ["--replay", "a.html"] `shouldBe`
+        Left "--replay needs --replay-from FILE.jsonl, the run log to read: --replay-from FILE.jsonl --replay OUT.html"
+    it "refuses a flag given twice and any other argument, naming it" $ do
+      replayFromArgs ["--replay-from", "a.jsonl", "--replay", "a.html", "--replay-from", "b.jsonl"] `shouldBe`
+        Left "--replay-from is given twice: --replay-from FILE.jsonl --replay OUT.html"
+      replayFromArgs ["--replay-from", "a.jsonl", "--seconds", "3", "--replay", "a.html"] `shouldBe`
+        Left "--replay-from FILE.jsonl --replay OUT.html takes no other argument, got \"--seconds\""
+
+-- The message of a refusal; none ("") for a failed write, which the
+-- tests that use it do not expect.
+refusedText :: ReplayFault -> String
+refusedText f = case f of
+  ReplayRefused msg   -> msg
+  ReplayWriteFailed _ -> ""

@@ -6,7 +6,7 @@ module AFrobRobotSim.RunSpec (spec, childVariable, child) where
 import           Control.Exception   (AsyncException (UserInterrupt), evaluate, finally, try, uninterruptibleMask_)
 import           Control.Monad       (forM, forM_, replicateM_)
 import           Data.Maybe          (isJust)
-import           System.Environment  (getEnvironment, getExecutablePath, lookupEnv, setEnv, unsetEnv)
+import           System.Environment  (getArgs, getEnvironment, getExecutablePath, lookupEnv, setEnv, unsetEnv, withProgName)
 import           Control.Concurrent  (threadDelay)
 import           System.Process      (CreateProcess (..), ProcessHandle, StdStream (..), createProcess,
                                       getPid, getProcessExitCode, interruptProcessGroupOf, proc,
@@ -33,7 +33,7 @@ import           AFrobRobotSim
 import           AFrobRobotSim.Log   (LogEnd (..), LogFrame (..), LogHeader (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
 import           AFrobRobotSim.JSON  (JSON (..), member, parseJSON)
-import           AFrobRobotSim.Replay (replayPage, writeReplayFromLog)
+import           AFrobRobotSim.Replay (replayFromMain, replayPage, writeReplayFromLog)
 import           AFrobRobotSim.Run.Signals (Stopper, interruptible, signalReceived, stuckGrace)
 import           TestUtil (captured, withCaps, withTMPDIR, withTempDir)
 
@@ -166,6 +166,8 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- @holdoff@: the same, but after the signal it waits 'stuckGrace' + 3
 -- seconds, then takes the stop: prints @stopped@ and ends with exit code
 -- 0.
+-- @replayfrom@: @simbot --replay-from@ ('replayFromMain') with the
+-- child's arguments, as @simbot@.
 child :: String -> IO ()
 child arg = case break (== ':') arg of
   ("hour", _ : dir) -> runSimWith defaultSimOptions
@@ -208,6 +210,7 @@ child arg = case break (== ':') arg of
     { optSeconds = 36000, optQuiet = False, optFrames = False, optOut = dir, optSvg = Nothing
     , optLog = Just (dir </> "run.jsonl"), optReplay = Just (dir </> "run.html") } (Just world) talker drive
   ("held", _ : dir) -> heldThenSpin dir (pure ())
+  ("replayfrom", _) -> getArgs >>= withProgName "simbot" . replayFromMain
   ("heldtwice", _ : dir) -> heldThenSpin dir (threadDelay 300000 >> raiseSignal sigTERM >> threadDelay 200000)
   ("holdoff", _ : dir) -> do
     r <- try (interruptible $ \stopper -> uninterruptibleMask_ $ do
@@ -1234,6 +1237,31 @@ spec = do
       ("<!DOCTYPE html>" `isPrefixOf` page, "afrp-log" `isInfixOf` page) `shouldBe` (True, True)
       fmap leCutLine <$> writeReplayFromLog (dir </> "run.jsonl") (dir </> "again.html") `shouldReturn` Right Nothing
       readFile (dir </> "again.html") `shouldReturn` page
+    it "simbot --replay-from: exit 0 with the page, 2 for what it refuses before writing, 1 for a write that fails (it was 2)" $
+      withTempDir $ \dir -> do
+        (_, _, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just (dir </> "run.jsonl"), optReplay = Nothing }
+                                          (Just world) drive drive)
+        r `shouldBe` Right ()
+        self <- getExecutablePath
+        environment <- getEnvironment
+        let replayFrom args = readCreateProcessWithExitCode
+              (proc self args) { env = Just ((childVariable, "replayfrom") : environment) } ""
+            logPath = dir </> "run.jsonl"
+        replayFrom ["--replay", dir </> "run.html", "--replay-from", logPath]
+          `shouldReturn` (ExitSuccess, "wrote " ++ dir </> "run.html\n", "")
+        (code1, out1, err1) <- replayFrom ["--replay-from", logPath, "--replay", "/dev/full"]
+        (code1, out1) `shouldBe` (ExitFailure 1, "")
+        err1 `shouldSatisfy` ("simbot: cannot write the page: /dev/full" `isPrefixOf`)
+        -- (refused before anything is written: the command line, a page
+        -- in no folder, a log that is not there)
+        replayFrom ["--replay-from"] `shouldReturn`
+          ( ExitFailure 2, ""
+          , "simbot: --replay-from needs the name of the run log to read (written with --log): --replay-from FILE.jsonl"
+            ++ " --replay OUT.html\n" )
+        (code2, _, err2) <- replayFrom ["--replay-from", logPath, "--replay", dir </> "no" </> "p.html"]
+        (code2, "simbot: cannot write the page " `isPrefixOf` err2) `shouldBe` (ExitFailure 2, True)
+        (code3, _, err3) <- replayFrom ["--replay-from", dir </> "none.jsonl", "--replay", dir </> "p.html"]
+        (code3, (dir </> "none.jsonl") `isInfixOf` err3) `shouldBe` (ExitFailure 2, True)
     it "a run longer than the page's 9000 frames keeps one frame period in k, evenly; the log keeps them all" $ withTempDir $ \dir -> do
       -- 400 s at 25 frames a second: 10,001 frame periods, so one in 2
       (out, _, r) <- captured (runSimWith (quick dir) { optSeconds = 400, optDt = 0.04, optFrames = False, optQuiet = False

@@ -47,7 +47,8 @@ childVariable = "AFRP_SPEC_SWEEP_CHILD"
 -- | The test binary as a child: @program@ is a runSim program whose robot
 -- starts further right the larger the seed, drives at @--param speed=V@
 -- (default 0.1) and whose controller throws from @--param failAt=T@ on;
--- @merge@ is @afrp-sweep-merge@.
+-- @announcer@ reads @--param speed@ with 'paramOr', prints it (an action
+-- of its own before 'runSim'), then runs; @merge@ is @afrp-sweep-merge@.
 child :: String -> IO ()
 child "merge" = withProgName "afrp-sweep-merge" sweepMergeMain   -- (signed as the executable is)
 child "program" = do
@@ -65,6 +66,11 @@ child "program" = do
       ctl _ = localTime >>> arr (\t -> if t >= failAt then error "the test controller gives up"
                                        else mrFinalize (ddVelDiff speed speed))
   runSim (Just world) ctl ctl
+child "announcer" = do
+  speed <- paramOr "speed" (0.1 :: Double)
+  putStrLn ("speed " ++ show speed)
+  runSim (Just [OTSimbotA 1 (Point2 0 0) 0]) (\_ -> constant (mrFinalize (ddVelDiff speed speed)))
+                                            (\_ -> constant (mrFinalize (ddVelDiff 0 0)))
 child other = ioError (userError ("unknown child " ++ show other))
 
 -- The program run with a @--param@ that 'paramOr' refuses: a usage error,
@@ -332,6 +338,63 @@ spec = do
         ("refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too" `isPrefixOf`)
       -- a result line must name its world
       tableOf' [own "null" (head sampleLines)] `shouldSatisfy` ("refused: line 1: not a result line of a sweep" `isPrefixOf`)
+    it "merges the lines of two programs as two settings, naming the program only then (the same world and seed was refused as a run merged twice)" $ do
+      let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
+          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
+          rcStop = map (ofProgram "afrp-examples rcStop") (take 2 sampleLines)
+      headings (map (ofProgram "afrp-examples rcReverse") (take 2 sampleLines) ++ rcStop) `shouldBe`
+        [ "== program=\"afrp-examples rcReverse\" world=default speed=0.1  (2 runs, 0 failed)"
+        , "== program=\"afrp-examples rcStop\" world=default speed=0.1  (2 runs, 0 failed)" ]
+      -- (with a parameter varying too, each program over the other settings)
+      headings (sampleLines ++ map (ofProgram "q") sampleLines) `shouldBe`
+        [ "== program=p world=default speed=0.1  (3 runs, 0 failed)", "== program=p world=default speed=0.2  (2 runs, 1 failed)"
+        , "== program=q world=default speed=0.1  (3 runs, 0 failed)", "== program=q world=default speed=0.2  (2 runs, 1 failed)"
+        , "== program=p over all other settings  (5 runs, 1 failed)", "== program=q over all other settings  (5 runs, 1 failed)"
+        , "== speed=0.1 over all other settings  (6 runs, 0 failed)", "== speed=0.2 over all other settings  (4 runs, 2 failed)" ]
+      -- one program's table is as it was, whatever the program's name
+      mergeResults (unlines (map (ofProgram "another name") sampleLines)) `shouldBe` mergeResults (unlines sampleLines)
+      -- a run merged twice is one program's run twice
+      headings (rcStop ++ take 1 rcStop) `shouldBe`
+        [ "refused: line 3: the run world=default speed=0.1 seed 1 (dt 0.01, seconds 1) is on an earlier line too (a result file"
+          ++ " merged twice, a run merged with its rerun, or runs told apart only by flags a result line does not record, such"
+          ++ " as --keys: give each such run a --param that names its setting): each run may be merged once" ]
+      -- (named with its program when the lines so far name more than one)
+      headings (sampleLines ++ rcStop ++ take 1 rcStop) `shouldSatisfy` \hs -> case hs of
+        [h] -> ("refused: line 8: the run program=\"afrp-examples rcStop\" world=default speed=0.1 seed 1 (dt 0.01, seconds 1)"
+                ++ " is on an earlier line too") `isPrefixOf` h
+        _   -> False
+      -- a parameter named program is a parameter, not the program
+      headings [resultLine 1 [("program", "p")] 1 Nothing] `shouldBe` ["== world=default program=p  (1 runs, 0 failed)"]
+
+    it "files the sweep's line for a run with no result, which names the program's file, under the program its result lines name; with several programs, under its own name unless a result line names it" $ do
+      let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
+          noResult prog seed world = "{\"program\":" ++ encodeJSON (JString prog) ++ ",\"world\":" ++ world ++ ",\"seed\":"
+                                     ++ show (seed :: Int) ++ ",\"params\":{\"speed\":\"0.1\"},\"flags\":\"--seed "
+                                     ++ show seed ++ "\",\"failure\":\"exit code 2, no result: bad flag\"}"
+          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
+      -- one program: its runs with no result are its own, whatever name
+      -- the sweep gave them (a wrapper script's), the world too
+      headings (take 2 sampleLines ++ [noResult "p.sh" 7 "null"]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      headings (map (replace "\"world\":\"default\"" "\"world\":\"w.world\"") (take 2 sampleLines) ++ [noResult "p.sh" 7 "\"w.world\""])
+        `shouldBe` ["== world=w.world speed=0.1  (3 runs, 1 failed)"]
+      headings (take 2 sampleLines ++ [noResult "p.sh" 2 "null"]) `shouldBe`
+        [ "refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too (a result"
+          ++ " file merged with the sweep's line for the same run): each run may be merged once" ]
+      headings (take 2 sampleLines ++ [noResult "p.sh" 7 "null", noResult "p.bash" 7 "null"]) `shouldBe`
+        [ "refused: the run world=(not given) speed=0.1 seed 7 is on two lines for a run with no result (the sweep's lines for the"
+          ++ " same run merged twice, under two programs' names): each run may be merged once" ]
+      -- two programs: a line of one of them is filed with it (its own
+      -- world as its result lines name it), one of another program is a
+      -- setting of its own
+      let q = map (replace "\"world\":\"default\"" "\"world\":\"program\"" . ofProgram "q") (take 2 sampleLines)
+      headings (take 2 sampleLines ++ q ++ [noResult "q" 7 "null", noResult "p" 8 "null", noResult "r.sh" 9 "null"]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (3 runs, 1 failed)", "== program=q world=program speed=0.1  (3 runs, 1 failed)"
+        , "== program=r.sh world=(not given) speed=0.1  (1 runs, 1 failed)"
+        , "== program=p over all other settings  (3 runs, 1 failed)", "== program=q over all other settings  (3 runs, 1 failed)"
+        , "== program=r.sh over all other settings  (1 runs, 1 failed)"
+        , "== world=(not given) over all other settings  (1 runs, 1 failed)"
+        , "== world=default over all other settings  (3 runs, 1 failed)", "== world=program over all other settings  (3 runs, 1 failed)" ]
+
     it "refuses a line that is neither a run's result line nor the sweep's line for a run with no result" $ do
       let failureLine = "{\"program\":\"p\",\"world\":\"default\",\"seed\":\"007\",\"params\":{\"speed\":\"1\"}"
                         ++ ",\"flags\":\"--seed 007 --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
@@ -496,6 +559,37 @@ spec = do
       field ["params"] (parsed line) `shouldBe` JObject [("speed", JString "0.3"), ("tag", JString "x")]
       (_, err3, _) <- runOnce dir ["--seconds", "0.1", "--param", "speed=1", "--param", "speed=2", "--param", "speed=1"]
       err3 `shouldSatisfy` (": warning: --param speed is given 3 times, speed=1 then speed=2 then speed=1: the last, speed=1, is used\n" `isSuffixOf`)
+    it "a flag with one value given twice: the run warns, naming the values and the one used (the last), and exits 0 (it was silent)" $
+      withTempDir $ \dir -> do
+        (code, err, line) <- runOnce dir [ "--seconds", "0.1", "--keys", "0:a", "--odometry-noise", "0", "--seconds", "0.2"
+                                         , "--keys", "0.1:b", "--odometry-noise", "0.01", "--param", "tag=x" ]
+        code `shouldBe` ExitSuccess
+        map (drop 1 . dropWhile (/= ':')) (lines err) `shouldBe`
+          [ " warning: --seconds is given twice, 0.1 then 0.2: the last, 0.2, is used"
+          , " warning: --odometry-noise is given twice, 0 then 0.01: the last, 0.01, is used" ]
+        (field ["seconds"] (parsed line), field ["odometryNoise"] (parsed line)) `shouldBe` (JNumber 0.2, JNumber 0.01)
+        -- (a value that is empty or holds a space is quoted)
+        (code', err', _) <- runOnce dir ["--seconds", "0.1", "--out", dir </> "a b", "--out", dir </> "c"]
+        code' `shouldBe` ExitSuccess
+        err' `shouldSatisfy` ((": warning: --out is given twice, " ++ show (dir </> "a b") ++ " then " ++ dir </> "c"
+                               ++ ": the last, " ++ dir </> "c" ++ ", is used\n") `isSuffixOf`)
+    it "paramOr on a command line runSim refuses stops the program at once, with runSim's message and exit code 2 (it read the default and the program went on); --help prints the usage and exits 0" $
+      withTempDir $ \dir -> do
+        prog <- childScript dir "announcer"
+        let after1 = drop 1 . dropWhile (/= ':')
+        forM_ [ (["--param", "=5"], " --param expects NAME=VALUE, got \"=5\"")
+              , (["--param", "speed=0.2", "--seconds", "abc"], " --seconds expects a non-negative number (written as in a world file: 2, 0.5, 1e-3), got \"abc\"")
+              , (["--no-such-flag"], " unknown argument \"--no-such-flag\" (see --help)") ] $ \(args, message) -> do
+          (code, out, err) <- readProcessWithExitCode prog args ""
+          (code, out, map after1 (lines err)) `shouldBe` (ExitFailure 2, "", [message])
+        (code, out, err) <- readProcessWithExitCode prog ["--param", "speed=0.2", "--help"] ""
+        (code, err) `shouldBe` (ExitSuccess, "")
+        out `shouldSatisfy` ("usage: " `isPrefixOf`)
+        out `shouldNotSatisfy` ("speed" `isPrefixOf`)
+        length (filter ("usage: " `isPrefixOf`) (lines out)) `shouldBe` 1
+        -- (a command line runSim takes: the program's own action, then the run)
+        (code', out', _) <- readProcessWithExitCode prog ["--param", "speed=0.2", "--seconds", "0.1", "--quiet", "--no-svg", "--no-replay"] ""
+        (code', take 1 (lines out')) `shouldBe` (ExitSuccess, ["speed 0.2"])
     it "rejects a value without a name or an =" $ do
       parseSimArgs defaultSimOptions ["--param", "speed"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
       parseSimArgs defaultSimOptions ["--param", "=1"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
@@ -778,7 +872,14 @@ spec = do
             (code, _, err) <- runScriptCode [] sweep args
             (code, what `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
       refused ["--list", "--seeds", "0..9999999999"] "more than a million seeds"
-      refused ["--seeds", "5..1", "prog", dir </> "r.jsonl"] "the job list is empty"
+      refused ["--seeds", "5..1", "prog", dir </> "r.jsonl"] "the job list is empty: --seeds 5..1 runs backwards"
+      -- (--list refuses an empty list as the sweep does: it printed
+      -- nothing and exited 0)
+      forM_ [("3..1", "1..3"), ("1..0", "0..1"), ("-1..-3", "-3..-1")] $ \(range, upwards) ->
+        refused ["--list", "--seeds", range] ("--seeds " ++ range ++ " runs backwards, and a range A..B counts up from A to B (write "
+                                              ++ upwards ++ ")")
+      writeFile (dir </> "comments") "# only a comment\n\n"
+      refused ["--list", "--jobs", dir </> "comments"] "the job list is empty: the jobs file"
       refused ["-j", "abc", "prog", dir </> "r.jsonl"] "-j expects a number"
       refused ["prog", dir </> "r.jsonl", "--", "--world", "a b.world"] "cannot hold a space"
       prog <- childScript dir "program"
@@ -1098,6 +1199,47 @@ spec = do
       map (field ["outcome", "failure"]) rs `shouldBe` replicate 5 JNull
       map (field ["seed"]) rs `shouldBe` map JNumber [1, 2, 1, 2, 3]
       map (field ["params", "note"]) rs `shouldBe` map JString ["x y", "x y", "z", "z", "a \"b\""]
+
+    it "takes \\, as a comma within a --param value or a --worlds name, and refuses a value whose quote a comma split (it was run as two values)" $
+      withTempDir $ \dir -> do
+        sweep <- script "sweep"
+        let listed args = do
+              (code, out, err) <- runScriptCode [] sweep ("--list" : args)
+              pure (code, lines out, err)
+        -- (a comma inside quotes, not escaped: refused, naming the value
+        -- and the escape; it listed mode="a and mode=b" and exited 0)
+        (code, out, err) <- listed ["--seeds", "1,2", "--param", "mode=\"a,b\""]
+        (code, out) `shouldBe` (ExitFailure 2, [])
+        err `shouldSatisfy` ("--param mode=\"a,b\": the value \"a has a \" that is not closed" `isInfixOf`)
+        err `shouldSatisfy` ("write a comma within a value as \\," `isInfixOf`)
+        -- \, is a comma, \\ a backslash, any other \ as it is
+        listed ["--param", "mode=\"a\\,b\",c", "--param", "p=x\\\\,y\\z"] `shouldReturn`
+          ( ExitSuccess
+          , [ "--seed 0 --param 'mode=\"a,b\"' --param 'p=x\\'", "--seed 0 --param 'mode=\"a,b\"' --param 'p=y\\z'"
+            , "--seed 0 --param mode=c --param 'p=x\\'", "--seed 0 --param mode=c --param 'p=y\\z'" ]
+          , "" )
+        -- (one value alone is as given, a quote in it too; a quote escaped
+        -- inside a Haskell string counts as no quote)
+        listed ["--param", "note=5\""] `shouldReturn` (ExitSuccess, ["--seed 0 --param 'note=5\"'"], "")
+        listed ["--param", "s=\"a\\\"b\",c"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --param 's=\"a\\\"b\"'", "--seed 0 --param s=c"], "")
+        -- (a comma escaped at either end is no empty value; a line break
+        -- is refused, the job list being a run a line: the value was cut
+        -- at it)
+        listed ["--param", "a=\\,,x"] `shouldReturn` (ExitSuccess, ["--seed 0 --param a=,", "--seed 0 --param a=x"], "")
+        (codeNl, _, errNl) <- listed ["--param", "a=x\ny,z"]
+        (codeNl, "a value cannot hold a line break" `isInfixOf` errNl) `shouldBe` (ExitFailure 2, True)
+        -- a world file whose name has a comma
+        writeFile (dir </> "a,b.world") ""
+        writeFile (dir </> "c.world") ""
+        listed ["--worlds", dir </> "a\\,b.world," ++ dir </> "c.world"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --world " ++ dir </> "a,b.world", "--seed 0 --world " ++ dir </> "c.world"], "")
+        -- and a run gets the value with its comma
+        requireParallel
+        prog <- childScript dir "program"
+        _ <- runScript [] sweep ["--param", "tag=\"a\\,b\",c", prog, dir </> "r.jsonl", "--", "--seconds", "0.1"]
+        rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+        map (field ["params", "tag"]) rs `shouldBe` map JString ["\"a,b\"", "c"]
 
     it "interrupted (SIGTERM to its process group, as at Slurm's time limit): a line for every run, a message, no temporary file" $ withTempDir $ \dir -> do
       requireParallel

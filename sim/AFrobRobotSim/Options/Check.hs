@@ -199,7 +199,8 @@ readableNumber x
 
 -- | The names that come more than once in a list of pairs, in the order
 -- first met, each with all its values in order: how a command line's
--- repeated @--param@s are kept ('optParamsRepeated'), and how the
+-- repeated @--param@s and other flags are kept ('optParamsRepeated',
+-- 'optFlagsRepeated'), and how the
 -- parameters of options set in code are checked ('validateOptions').
 --
 -- >>> repeatedBy [("a", 1), ("b", 2), ("a", 3)]

@@ -56,31 +56,42 @@ data Command
 -- so that 'AFrobRobotSim.runSimWith' warns of it: a name given twice is
 -- usually a mistake (a job line and the flags every run gets both giving
 -- it), and a run that silently used one value would be taken for a run
--- of the other. A @--param@ that replaces a value of the given settings
--- alone is no repeat.
+-- of the other. So is every other flag that takes a value (@--seconds@,
+-- @--world@, @--svg@, ...) given twice: its last value is used, and it is
+-- kept with all its values, as given, in 'optFlagsRepeated' (after the
+-- given settings'). A flag that only replaces a value of the given
+-- settings is no repeat, and neither is a flag without a value
+-- (@--no-svg@ after @--svg a.svg@ is an order, not a repeat).
 parseSimArgs :: SimOptions -> [String] -> Either String Command
-parseSimArgs o0 = go o0 False False []
+parseSimArgs o0 = go o0 False False [] []
   where
-  -- the settings so far, whether the SVG and the page were named, and the
-  -- @--param@s of this command line so far (name and value, latest first)
-  go o svgNamed pageNamed given args = case args of
-    []                       -> check (repeats given (relocated o svgNamed pageNamed))
+  -- the settings so far, whether the SVG and the page were named, the
+  -- @--param@s of this command line so far (name and value, latest
+  -- first), and its other flags with a value but @--keys@ (the same)
+  go o svgNamed pageNamed given flags args = case args of
+    []                       -> check (repeats given flags (relocated o svgNamed pageNamed))
     "--help" : _             -> Right ShowHelp
     "-h" : _                 -> Right ShowHelp
     flag : rest | Just switch <- lookup flag switches ->
-      case switch (o, svgNamed, pageNamed) of (o', s', p') -> go o' s' p' given rest
+      case switch (o, svgNamed, pageNamed) of (o', s', p') -> go o' s' p' given flags rest
     flag : rest | Just set <- lookup flag (valued o) -> case rest of
       v : _ | isFlag v -> Left (flag ++ " needs a value (see --help), found the flag " ++ v)
       v : rest' -> set v >>= \o' -> go o' (svgNamed || flag == "--svg") (pageNamed || flag == "--replay")
-                                        (givenParam flag v ++ given) rest'
+                                        (givenParam flag v ++ given) (givenFlag flag v ++ flags) rest'
       []        -> Left (flag ++ " needs a value (see --help)")
     flag : _                 -> Left ("unknown argument " ++ show flag ++ " (see --help)")
   -- (a --param's value parsed once more: 'set' has accepted it)
   givenParam flag v
     | flag == "--param", Right (k, x) <- parseParam v = [(argText k, x)]
     | otherwise                                       = []
-  -- the names given more than once, in the order first given, with their values in order
-  repeats given o = o { optParamsRepeated = optParamsRepeated o0 ++ repeatedBy (reverse given) }
+  -- (the flags that take one value, whose last value is used)
+  givenFlag flag v
+    | flag `elem` ["--param", "--keys"] = []
+    | otherwise                         = [(flag, v)]
+  -- the names and flags given more than once, in the order first given,
+  -- with their values in order
+  repeats given flags o = o { optParamsRepeated = optParamsRepeated o0 ++ repeatedBy (reverse given)
+                            , optFlagsRepeated  = optFlagsRepeated o0 ++ repeatedBy (reverse flags) }
   -- a value that is one of the flags is a value left out (@--out --no-svg@
   -- would write into a folder named @--no-svg@); @./--no-svg@ names such a file
   isFlag v = v `elem` (["--help", "-h"] ++ map fst switches ++ map fst (valued o0))
@@ -257,6 +268,9 @@ usage prog = intercalate "\n"
   , "  --param NAME=VALUE a parameter the controllers read (repeatable, a name once: a name given"
   , "                     again warns, and its last value is used)"
   , "  --help             print this usage and exit"
+  , ""
+  , "A flag that takes a value, given twice, warns, and its last value is used (but --keys:"
+  , "the presses of every --keys are taken)."
   ] ++ concat [ "\n\n" ++ prog ++ " --replay-from F.jsonl --replay OUT.html\n"
                 ++ "  turns a run log written with --log into a replay page (simulates nothing)"
               | "simbot" `isSuffixOf` prog ]

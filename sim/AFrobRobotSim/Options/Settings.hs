@@ -60,6 +60,15 @@ data SimOptions = SimOptions
     -- order first given, with all its values in the order given (the last
     -- is its value in 'optParams'); 'AFrobRobotSim.runSimWith' warns of
     -- each. Set by 'AFrobRobotSim.Options.parseSimArgs'; @[]@ by default.
+  , optFlagsRepeated :: [(String, [String])]
+    -- ^ each other flag that takes one value (@--seconds@, @--world@,
+    -- @--svg@, ...; not @--keys@, whose presses all count) that the
+    -- command line gives more than once, in the order first given, with
+    -- all its values as given (the last is the one used);
+    -- 'AFrobRobotSim.runSimWith' warns of each: @--seconds 2 --seconds 3@
+    -- is usually a mistake (a sweep's job line and the flags every run
+    -- gets both giving it). Set by 'AFrobRobotSim.Options.parseSimArgs';
+    -- @[]@ by default.
   } deriving (Eq, Show)
 
 -- | The defaults listed in "AFrobRobotSim.Options": no frames, the SVG
@@ -71,7 +80,7 @@ defaultSimOptions = SimOptions
   , optWorldFile = Nothing, optDumpWorld = False, optRays = False, optTrails = False
   , optSvg = Just (defaultOut </> "run.svg"), optVideo = Nothing, optLog = Nothing
   , optReplay = Just (defaultOut </> "replay.html"), optResult = Nothing, optProgram = Nothing
-  , optParams = [], optParamsRepeated = [] }
+  , optParams = [], optParamsRepeated = [], optFlagsRepeated = [] }
 
 defaultOut :: FilePath
 defaultOut = "simbot-out"

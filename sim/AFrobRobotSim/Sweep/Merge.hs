@@ -8,9 +8,17 @@
 -- and 'maxListedFailures'; see it for the design): a line read ('addLine':
 -- a run's result line, or the sweep's line for a run that wrote none;
 -- 'addLineUtf8' the same from the line's bytes),
--- added to its setting's tallies (a count, an exact sum, the least and
--- the greatest of each outcome; the seeds seen, to refuse a run merged
--- twice), and the table of the tallies ('renderMerge').
+-- added to its setting's tallies ("AFrobRobotSim.Sweep.Tally": a count,
+-- an exact sum, the least and the greatest of each outcome; the seeds
+-- seen, to refuse a run merged twice), and the table of the tallies
+-- ('renderMerge').
+--
+-- A setting is the program, the world and the parameters' values: the
+-- lines of two programs (@"afrp-examples rcReverse"@ and
+-- @"afrp-examples rcStop"@, each in its own world) are two settings,
+-- even with the same world, parameters and seed. The table names the
+-- program only when the lines name more than one, so that the table of
+-- one program's lines is as it was before the program counted.
 module AFrobRobotSim.Sweep.Merge
   ( -- * Merging
     Merge
@@ -24,33 +32,45 @@ module AFrobRobotSim.Sweep.Merge
   ) where
 
 import           Control.Monad       (foldM)
-import           Data.Bits           (shiftL)
 import           Data.Char           (isDigit, isPrint, isSpace)
 import qualified Data.ByteString     as B
 import qualified Data.IntMap.Strict  as IM
-import qualified Data.IntSet         as IS
 import qualified Data.Map.Strict     as M
 import           Data.List           (sortOn, stripPrefix)
-import           Data.Ratio          ((%))
 import qualified Data.Set            as S
-import           Text.Printf         (printf)
 
 import           AFrobRobotSim.Console (printableLine, quote)
 import           AFrobRobotSim.JSON
+import           AFrobRobotSim.Sweep.Tally
 import           AFrobRobotSim.UTF8  (Utf8, utf8Bytes)
 import           AFrobRobotSim.WorldFile.Lexical (integerLit, utf8Text)
-
--- | The failed runs a group of the table lists, at most: 1000, the least
--- by seed (then by message); the others are counted in a line of their
--- own. (Every failed run is counted in the group's heading.)
-maxListedFailures :: Int
-maxListedFailures = 1000
 
 ------------------------------------------------------------------------------
 -- Runs
 
--- The setting of a run: the world, then the parameters by name.
+-- The setting of a run: the program (under 'programKey'), the world,
+-- then the parameters by name.
 type Setting = [(String, String)]
+
+-- The name under which a setting holds its program: a NUL and
+-- @program@, which no parameter's name is (a command line cannot pass a
+-- NUL), so that a parameter named @program@ is not taken for it, and
+-- which sorts before every name: the program first, as the table names
+-- it ('showSetting').
+programKey :: String
+programKey = "\NULprogram"
+
+-- The program of a setting.
+programOf :: Setting -> String
+programOf s = case s of
+  (k, p) : _ | k == programKey -> p
+  _                            -> ""
+
+-- A setting with its program replaced.
+withProgram :: String -> Setting -> Setting
+withProgram p s = case s of
+  (k, _) : rest | k == programKey -> (k, p) : rest
+  _                               -> (programKey, p) : s
 
 -- The world of the sweep's line for a run that wrote no result and got no
 -- @--world@ (@"world": null@): the program's own world (a result line's
@@ -68,11 +88,6 @@ unnamedWorld = "\NUL"
 -- 'AFrobRobotSim.Result.worldSourceName').
 ownWorlds :: [String]
 ownWorlds = ["default", "program"]
-
--- A run's seed: as the table writes it (a whole number as such, any
--- other seed as its JSON text), and the key that tells runs apart (an
--- integer, or the text of any other seed).
-data Seed = Seed !String !(Either String Int)
 
 -- One line, read: the setting, the seed, the time step and duration of a
 -- result line (their JSON text; 'Nothing' for the sweep's line for a run
@@ -105,7 +120,7 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
   fields <- case v of
     JObject kvs -> Right kvs
     _           -> Left "not a JSON object"
-  _      <- member "program" v >>= asString
+  program <- member "program" v >>= asString
   worldValue <- member "world" v
   world  <- case (worldValue, lookup "outcome" fields) of
     -- (the sweep's line for a run that got no --world: which world the
@@ -120,7 +135,7 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
     JObject kvs -> mapM (\(k, x) -> (,) k <$> asString x) kvs
     _           -> Left "\"params\" is not an object"
   seedValue <- member "seed" v
-  let setting = ("world", world) : sortOn fst params
+  let setting = (programKey, program) : ("world", world) : sortOn fst params
   case lookup "outcome" fields of
     Nothing -> do
       -- the sweep's line for a run with no result
@@ -187,95 +202,6 @@ finite :: JSON -> Either String (Maybe Double)
 finite JNull = Right Nothing
 finite x     = (\d -> if isNaN d || isInfinite d then Nothing else Just (d + 0)) <$> asNumber x
 
-------------------------------------------------------------------------------
--- Tallies
-
--- A sum of doubles, exactly: @m * 2^e@.
-data ExactSum = ExactSum !Integer !Int
-
-addExact :: ExactSum -> ExactSum -> ExactSum
-addExact a@(ExactSum m1 e1) b@(ExactSum m2 e2)
-  | m1 == 0   = b
-  | m2 == 0   = a
-  | e1 <= e2  = ExactSum (m1 + m2 `shiftL` (e2 - e1)) e1
-  | otherwise = addExact b a
-
-exactOf :: Double -> ExactSum
-exactOf x = uncurry ExactSum (decodeFloat x)
-
--- The sum divided by n, rounded once.
-exactMean :: ExactSum -> Int -> Double
-exactMean (ExactSum m e) n
-  | e >= 0    = fromRational ((m `shiftL` e) % fromIntegral n)
-  | otherwise = fromRational (m % (fromIntegral n `shiftL` negate e))
-
--- One outcome over a group's runs: where it is first named (the least
--- seed, as text, and its place in that run's line: the table's order),
--- how many runs gave a finite value and how many @null@, their exact sum,
--- least and greatest.
-data Stat = Stat !(String, Int) !Int !Int !ExactSum !Double !Double
-
-statOf :: (String, Int) -> Maybe Double -> Stat
-statOf at (Just x) = Stat at 1 0 (exactOf x) x x
-statOf at Nothing  = Stat at 0 1 (ExactSum 0 0) 0 0
-
-addStat :: Stat -> Stat -> Stat
-addStat (Stat f1 n1 z1 s1 lo1 hi1) (Stat f2 n2 z2 s2 lo2 hi2) =
-  Stat (min f1 f2) (n1 + n2) (z1 + z2) (addExact s1 s2) lo hi
-  where
-    (lo, hi) | n1 == 0   = (lo2, hi2)
-             | n2 == 0   = (lo1, hi1)
-             | otherwise = (min lo1 lo2, max hi1 hi2)
-
--- Seeds seen: the integers, and the text of any other.
-data Seeds = Seeds !IS.IntSet !(S.Set String)
-
-noSeeds :: Seeds
-noSeeds = Seeds IS.empty S.empty
-
-hasSeed :: Seed -> Seeds -> Bool
-hasSeed (Seed _ k) (Seeds is ts) = either (`S.member` ts) (`IS.member` is) k
-
-seedsUnion :: Seeds -> Seeds -> Seeds
-seedsUnion (Seeds is1 ts1) (Seeds is2 ts2) = Seeds (IS.union is1 is2) (S.union ts1 ts2)
-
-withSeed :: Seed -> Seeds -> Seeds
-withSeed (Seed _ k) (Seeds is ts) = either (\t -> Seeds is (S.insert t ts)) (\i -> Seeds (IS.insert i is) ts) k
-
--- A group's tallies: its runs, its failed runs (those listed, by seed and
--- message, with how many of each), each outcome's 'Stat' (by the number
--- of its name), and the seeds of its runs: of the sweep's lines for runs
--- with no result, of all result lines, and of the result lines of each
--- time step and duration.
-data Group = Group
-  { gRuns    :: !Int
-  , gFailed  :: !Int
-  , gListed  :: !Listed
-  , gStats   :: !(IM.IntMap Stat)
-  , gNoRes   :: !Seeds
-  , gResults :: !Seeds
-  , gBySteps :: !(M.Map (String, String, String) Seeds)
-  }
-
-emptyGroup :: Group
-emptyGroup = Group 0 0 (Listed 0 M.empty) IM.empty noSeeds noSeeds M.empty
-
--- The failed runs a group lists: how many, and by seed and message, with
--- how many of each; the least ones, at most 'maxListedFailures'.
-data Listed = Listed !Int !(M.Map (String, String) Int)
-
--- Add a failed run (its seed and message) to the list.
-listAdd :: (String, String) -> Listed -> Listed
-listAdd key (Listed n m)
-  | n < maxListedFailures = Listed (n + 1) (M.insertWith (+) key 1 m)
-  | otherwise = case M.lookupMax m of
-      Just (top, _) | key < top -> Listed n (M.insertWith (+) key 1 (M.updateMax (\k -> if k > 1 then Just (k - 1) else Nothing) m))
-      _                         -> Listed n m
-
--- The listed failed runs, by seed and message.
-listedRuns :: Listed -> [(String, String)]
-listedRuns (Listed _ m) = [ key | (key, k) <- M.toList m, _ <- [1 .. k] ]
-
 -- | The merged lines so far: the numbers of the outcomes' names, each
 -- group's tallies, and the runs counted.
 data Merge = Merge !(M.Map String Int) !(M.Map Setting Group) !Int
@@ -293,7 +219,7 @@ mergedRuns (Merge _ _ n) = n
 -- both being result lines, time step and duration) is there already.
 addRun :: Merge -> Run -> Either String Merge
 addRun (Merge names groups n) run
-  | repeated  = Left ("the run " ++ showSetting (runSetting run) ++ " seed " ++ seedText ++ steps
+  | repeated  = Left ("the run " ++ showSetting programsSoFar (runSetting run) ++ " seed " ++ seedText ++ steps
                       ++ " is on an earlier line too (a result file merged twice, a run merged with its"
                       ++ " rerun, or runs told apart only by flags a result line does not record, such as"
                       ++ " --keys: give each such run a --param that names its setting):"
@@ -302,6 +228,8 @@ addRun (Merge names groups n) run
   where
     seed@(Seed seedText _) = runSeed run
     g = M.findWithDefault emptyGroup (runSetting run) groups
+    -- (the program named when the lines so far name more than one)
+    programsSoFar = any ((/= programOf (runSetting run)) . programOf) (M.keys groups)
     repeated = hasSeed seed (gNoRes g) || case runSteps run of
       Nothing -> hasSeed seed (gResults g)
       Just ds -> hasSeed seed (M.findWithDefault noSeeds ds (gBySteps g))
@@ -384,27 +312,36 @@ mergeResults text = do
 -- | The table of the merged lines: per setting, the mean, least and
 -- greatest of every outcome and the failed runs, then (when two or more
 -- settings vary) the same per value of each ('Left' when no line was
--- merged). The sweep's lines for runs with no result that got no
--- @--world@ (@"world": null@) are filed under the world the result lines
--- name for such runs (@"program"@ or @"default"@), when they name one;
--- otherwise under @world=(not given)@ ('Left' when a run so filed is a
--- result line's too).
+-- merged). The sweep's lines for runs with no result are filed first
+-- under the program of the result lines (the sweep names the
+-- executable it ran, which a program may name otherwise), then,
+-- those that got no @--world@ (@"world": null@), under the world the
+-- result lines of their program name for such runs (@"program"@ or
+-- @"default"@), when they name one; otherwise under @world=(not given)@
+-- ('Left' when a run so filed is a result line's too).
 renderMerge :: Merge -> Either String String
 renderMerge (Merge names groups0 n)
   | n == 0    = Left "no result lines"
-  | otherwise = tableOf names <$> fileUnnamed groups0
+  | otherwise = tableOf names <$> (filePrograms groups0 >>= fileUnnamed)
+
+-- Whether the groups name more than one program (and the table names
+-- the program of each setting).
+manyPrograms :: M.Map Setting Group -> Bool
+manyPrograms groups = S.size (S.fromList (map programOf (M.keys groups))) > 1
 
 -- The table of the groups (see 'renderMerge').
 tableOf :: M.Map String Int -> M.Map Setting Group -> String
 tableOf names groups = unlines (map printableLine
-      (  concatMap (\(s, g) -> table nameOf (showSetting s) g) (M.toList groups)
-      ++ concatMap (\(kv, g) -> table nameOf (showSetting [kv] ++ " over all other settings") g) marginal
+      (  concatMap (\(s, g) -> groupTable nameOf (showSetting many s) g) (M.toList groups)
+      ++ concatMap (\(kv, g) -> groupTable nameOf (showSetting True [kv] ++ " over all other settings") g) marginal
       ++ mixed))
   where
+    many = manyPrograms groups
     nameOf = IM.fromList [ (i, k) | (k, i) <- M.toList names ]
     values = M.fromListWith (+) [ (k, 1 :: Int) | (k, _) <- S.toList (S.fromList (concat (M.keys groups))) ]
     varying = [ k | (k, c) <- M.toList values, c > 1 ]
-    -- with two or more settings varying, also each value of each over all the others
+    -- with two or more settings varying, also each value of each over all
+    -- the others (the program among them, when the lines name several)
     marginal
       | length varying > 1 =
           M.toList (M.fromListWith (flip (joinGroups False)) [ (kv, g) | (s, g) <- M.toList groups, kv@(k, _) <- s, k `elem` varying ])
@@ -414,45 +351,66 @@ tableOf names groups = unlines (map printableLine
               ++ " runs of different dt, seconds or odometry noise, which the table does not tell apart (give"
               ++ " each a --param to tell them apart)" | nMixed > 0 ]
 
--- The groups with the runs of an unnamed world ('unnamedWorld') filed
--- under the world the result lines name for a run without @--world@, when
--- they name one ('ownWorlds'); left as they are when they name none (every
--- such run failed) or both (two programs' sweeps merged). A run so filed
--- that a result line has too (the same setting and seed) is refused, as
--- 'addRun' refuses a run merged twice.
-fileUnnamed :: M.Map Setting Group -> Either String (M.Map Setting Group)
-fileUnnamed groups = case S.toList (S.fromList [ w | ("world", w) : _ <- M.keys groups, w `elem` ownWorlds ]) of
-  [own] -> foldM (file own) named (M.toList unnamed)
-  _     -> Right groups
+-- The groups with the sweep's lines for runs with no result filed under
+-- the program the result lines name, when they name one: the sweep names
+-- the program it ran by its file's name (a wrapper script's, say), and
+-- the program's result lines may name it otherwise ('optProgram':
+-- @afrp-examples rcReverse@). The groups of a program that some result
+-- line names stay as they are, and so do all groups when the result lines
+-- name no program (every run failed) or several (then a line for a run
+-- with no result of a program no result line names is a setting of its
+-- own). A run so filed that a result line has too (the same setting and
+-- seed) is refused, as 'addRun' refuses a run merged twice.
+filePrograms :: M.Map Setting Group -> Either String (M.Map Setting Group)
+filePrograms groups = case S.toList withResults of
+  [only] -> foldM (\acc (setting, g) -> joinFiled False (withProgram only setting) g acc) kept (M.toList strays)
+  _      -> Right groups
   where
-    (unnamed, named) = M.partitionWithKey (\k _ -> take 1 k == [("world", unnamedWorld)]) groups
-    file own acc (setting, g) =
-      let setting' = ("world", own) : drop 1 setting
-      in case M.lookup setting' acc of
-           Nothing -> Right (M.insert setting' g acc)
-           Just g0 -> case commonSeed (gNoRes g) (seedsUnion (gNoRes g0) (gResults g0)) of
-             Just seed -> Left ("the run " ++ showSetting setting' ++ " seed " ++ seed ++ " is on a line for a run with"
-                                ++ " no result and on a result line too (a result file merged with the sweep's"
-                                ++ " line for the same run): each run may be merged once")
-             Nothing -> Right (M.insert setting' (joinGroups True g0 g) acc)
-    commonSeed (Seeds is1 ts1) (Seeds is2 ts2) =
-      case (fst <$> IS.minView (IS.intersection is1 is2), S.lookupMin (S.intersection ts1 ts2)) of
-        (Just i, _) -> Just (show i)
-        (_, Just t) -> Just t
-        _           -> Nothing
+    withResults = S.fromList [ programOf s | (s, g) <- M.toList groups, hasResults g ]
+    hasResults g = not (M.null (gBySteps g))   -- (every result line is in it)
+    (strays, kept) = M.partitionWithKey (\s _ -> programOf s `S.notMember` withResults) groups
 
--- Two groups' runs as one: the runs and failures counted, the failures
--- listed and the outcomes' tallies added; with @keepSeeds@ the seeds seen
--- too (a setting's group, which a mixed run or a run merged twice is
--- told by), otherwise none (a group of the per-value lines, whose seeds
--- are never asked).
-joinGroups :: Bool -> Group -> Group -> Group
-joinGroups keepSeeds a b =
-  Group (gRuns a + gRuns b) (gFailed a + gFailed b) (foldr listAdd (gListed a) (listedRuns (gListed b)))
-        (IM.unionWith addStat (gStats a) (gStats b)) (seeds gNoRes) (seeds gResults)
-        (if keepSeeds then M.unionWith seedsUnion (gBySteps a) (gBySteps b) else M.empty)
+-- The groups with the runs of an unnamed world ('unnamedWorld') filed
+-- under the world the result lines of their program name for a run
+-- without @--world@, when they name one ('ownWorlds'); left as they are
+-- when they name none (every such run failed) or both (two sweeps
+-- merged, of the program's own world and of the default one). A run so
+-- filed that a result line has too (the same setting and seed) is
+-- refused, as 'addRun' refuses a run merged twice.
+fileUnnamed :: M.Map Setting Group -> Either String (M.Map Setting Group)
+fileUnnamed groups = foldM file named (M.toList unnamed)
   where
-    seeds f = if keepSeeds then seedsUnion (f a) (f b) else noSeeds
+    (unnamed, named) = M.partitionWithKey (\k _ -> worldOf k == Just unnamedWorld) groups
+    many = manyPrograms groups
+    worldOf setting = case setting of
+      _ : ("world", w) : _ -> Just w
+      _                    -> Nothing
+    -- (the worlds of each program's own that its lines name)
+    owns = M.fromListWith S.union [ (programOf k, S.singleton w) | k <- M.keys named, Just w <- [worldOf k]
+                                                                  , w `elem` ownWorlds ]
+    file acc (setting, g) = case maybe [] S.toList (M.lookup (programOf setting) owns) of
+      [own] -> joinFiled many (withWorld own setting) g acc
+      _     -> Right (M.insert setting g acc)
+    withWorld w setting = case setting of
+      p : ("world", _) : rest -> p : ("world", w) : rest
+      _                       -> setting
+
+-- A group filed under a setting (with @many@: the lines name more than
+-- one program), joined with the group there, if any; refused when a run
+-- of the group filed is there already (its seed's line for a run with no
+-- result being on a result line there, or on another such line).
+joinFiled :: Bool -> Setting -> Group -> M.Map Setting Group -> Either String (M.Map Setting Group)
+joinFiled many setting g acc = case M.lookup setting acc of
+  Nothing -> Right (M.insert setting g acc)
+  Just g0 -> case (commonSeed (gNoRes g) (seedsUnion (gNoRes g0) (gResults g0)), commonSeed (gNoRes g) (gResults g0)) of
+    (Just seed, Just _) -> twice seed "on a line for a run with no result and on a result line too (a result file merged"
+                                      " with the sweep's line for the same run)"
+    (Just seed, Nothing) -> twice seed "on two lines for a run with no result (the sweep's lines for the same run merged"
+                                       " twice, under two programs' names)"
+    _ -> Right (M.insert setting (joinGroups True g0 g) acc)
+  where
+    twice seed what why = Left ("the run " ++ showSetting many setting ++ " seed " ++ seed ++ " is " ++ what ++ why
+                                ++ ": each run may be merged once")
 
 -- A setting as the table names it: @world=default speed=0.1@, each name
 -- and value as it is when it is plain (not empty; no space, @=@, quote,
@@ -462,36 +420,18 @@ joinGroups keepSeeds a b =
 -- alike: unquoted, a value @1 b=2@ read as two parameters, and a value
 -- with a newline as one with a backslash and an @n@. The world of a run
 -- with no result and no @--world@ that 'fileUnnamed' could not file is
--- @world=(not given)@.
-showSetting :: Setting -> String
-showSetting g = unwords $ case g of
-  ("world", w) : rest | w == unnamedWorld -> "world=(not given)" : map pair rest
-  _                                       -> map pair g
+-- @world=(not given)@. The program is named first, @program=my-robot@,
+-- when @many@ holds (the lines name more than one program), and left out
+-- otherwise.
+showSetting :: Bool -> Setting -> String
+showSetting many g = unwords (map pair (filter shownPair g))
   where
-    pair (k, v) = shown k ++ "=" ++ shown v
+    shownPair (k, _) = many || k /= programKey
+    pair (k, v)
+      | k == programKey                     = "program=" ++ shown v
+      | k == "world" && v == unnamedWorld   = "world=(not given)"
+      | otherwise                           = shown k ++ "=" ++ shown v
     shown t | not (null t) && all plain t = t
             | otherwise                   = quote t
     plain c = isPrint c && not (isSpace c) && c `notElem` "=\"\\"
 
--- One group's lines of the table: its heading, its outcomes (in the
--- order the runs, by seed, first name them), its failed runs by seed.
-table :: IM.IntMap String -> String -> Group -> [String]
-table nameOf heading g =
-  [ "== " ++ heading ++ printf "  (%d runs, %d failed)" (gRuns g) (gFailed g) ]
-  ++ [ printf "  %-28s %14s %14s %14s" ("outcome" :: String) ("mean" :: String) ("min" :: String) ("max" :: String)
-     | not (IM.null (gStats g)) ]
-  ++ map row (sortOn (\(k, Stat at _ _ _ _ _) -> (at, k)) [ (IM.findWithDefault "?" i nameOf, s) | (i, s) <- IM.toList (gStats g) ])
-  ++ [ "  FAILED seed " ++ seed ++ ": " ++ f | (seed, f) <- listedRuns (gListed g) ]
-  ++ [ printf "  and %d more failed runs (the first %d by seed are listed)" unlisted listed | unlisted > 0 ]
-  where
-    Listed listed _ = gListed g
-    unlisted = gFailed g - listed
-    row (name, Stat _ have other total lo hi) =
-      printf "  %-28s %14s %14s %14s" name (orNA (exactMean total have)) (orNA lo) (orNA hi)
-      ++ (if other > 0 then printf "  (%d runs; %d not a finite number)" have other
-          else if have < gRuns g then printf "  (%d runs)" have else "")
-      where orNA x = if have == 0 then "n/a" else number x
-    number :: Double -> String
-    number x
-      | x /= 0 && (abs x < 1e-3 || abs x >= 1e7) = printf "%.4e" x
-      | otherwise                                 = printf "%.4f" x
