@@ -29,6 +29,7 @@ module AFrobRobotSim
   , defaultSimOptions
   , Command (..)
   , parseSimArgs
+  , parseSimFlags
   , parseKeys
   , validateOptions
   , validateOptionsIn

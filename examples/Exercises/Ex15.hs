@@ -84,23 +84,17 @@ teamNaive rps
 -- ('matchReferee'), whose replay page shows the goals and the score.
 examples :: [Example]
 examples =
-  [ RobotExample
-      { exName        = "ex15"
-      , exDescription = "Exercise 15: robocup soccer, a smart team (SimbotA) against a naive one (SimbotB)"
+  [ match "ex15" "Exercise 15: robocup soccer, a smart team (SimbotA) against a naive one (SimbotB)" noReferee
+  , match "ex15-match" "Exercise 15 refereed: the same teams, goals counted and the ball put back on the centre mark"
+          matchReferee ]
+  where
+    match name description referee' = RobotExample
+      { exName        = name
+      , exDescription = description
       , exWorld       = soccerWorld 10
       , exControllerA = teamSmart
       , exControllerB = teamNaive
       , exSeconds     = 120
       , exKeys        = []
-      , exReferee     = noReferee
+      , exReferee     = referee'
       }
-  , RobotExample
-      { exName        = "ex15-match"
-      , exDescription = "Exercise 15 refereed: the same teams, goals counted and the ball put back on the centre mark"
-      , exWorld       = soccerWorld 10
-      , exControllerA = teamSmart
-      , exControllerB = teamNaive
-      , exSeconds     = 120
-      , exKeys        = []
-      , exReferee     = matchReferee
-      } ]

@@ -76,6 +76,7 @@ module AFrobRobotSim.Options
     -- * The command line
   , Command (..)
   , parseSimArgs
+  , parseSimFlags
   , parseKeys
   , parseParam
   , argText

@@ -90,15 +90,17 @@ import           AFrobRobotSim.Simulator
 -- order given (a name given twice keeps its last value, in its first
 -- place; 'AFrobRobotSim.runSim' warns of it, see
 -- 'AFrobRobotSim.Options.optParamsRepeated'). The command line is read
--- as 'AFrobRobotSim.runSim' reads it ('parseSimArgs'), and what it would
--- stop at stops the program here, at once, before anything else the
--- program does: a command line it refuses (@--param =5@, an unknown
--- flag, @--seconds abc@), with its message on standard error
+-- as 'AFrobRobotSim.runSim' reads it, flag by flag ('parseSimFlags'),
+-- and what it would stop at there stops the program here, at once,
+-- before anything else the program does: a flag it refuses (@--param
+-- =5@, an unknown flag, @--seconds abc@), with its message on standard error
 -- (@prog: --param expects NAME=VALUE, got "=5"@) and exit code 2;
 -- @--help@, with the usage on standard output and exit code 0 (by
 -- 'exitWith', so a caller may catch the 'ExitCode'). (It gave @[]@, and
 -- the program went on with its defaults until 'AFrobRobotSim.runSim'
--- stopped it.) A program whose command line is not 'AFrobRobotSim.runSim''s
+-- stopped it.) Whether the settings fit together (@--dt@ with the frame
+-- rate, the number of steps) depends on the settings the program starts
+-- from ('AFrobRobotSim.runSimWith'), so it is left to the run. A program whose command line is not 'AFrobRobotSim.runSim''s
 -- (as @afrp-examples NAME [flags]@ is) reads the parameters of its
 -- flags with 'simParamsOf' or 'readSimParam' instead.
 getSimParams :: IO [(String, String)]
@@ -109,7 +111,7 @@ getSimParams = atomicModifyIORef' paramReads (\(_, ns) -> ((True, ns), ())) >> c
 commandLineParams :: IO [(String, String)]
 commandLineParams = do
   args <- getArgs
-  case parseSimArgs defaultSimOptions args of
+  case parseSimFlags defaultSimOptions args of
     Right (RunWith o) -> pure (optParams o)
     Right ShowHelp    -> do
       tolerantOutput
@@ -146,9 +148,10 @@ unreadParams o = do
   pure (if everything then [] else [ p | p@(k, _) <- optParams o, k `notElem` asked ], nub asked)
 
 -- | The @--param@ pairs of a command line (as 'getSimParams', purely; a
--- command line that 'parseSimArgs' refuses, or @--help@, gives @[]@).
+-- command line whose flags 'parseSimFlags' refuses, or @--help@, gives
+-- @[]@).
 simParamsOf :: [String] -> [(String, String)]
-simParamsOf args = case parseSimArgs defaultSimOptions args of
+simParamsOf args = case parseSimFlags defaultSimOptions args of
   Right (RunWith o) -> optParams o
   _                 -> []
 

@@ -131,6 +131,19 @@ childScript dir what = do
   setPermissions file (setOwnerExecutable True p)
   pure file
 
+-- A script in @dir@ that runs the program child ('childScript'), but
+-- stops at once for @--seed 2@, writing no result (exit code 3).
+failingSeed2 :: FilePath -> IO FilePath
+failingSeed2 dir = do
+  real <- childScript dir "program"
+  let prog = dir </> "fails2"
+  writeFile prog (unlines [ "#!/bin/bash"
+                          , "case \" $* \" in *' --seed 2 '*) echo 'no luck' >&2; exit 3 ;; esac"
+                          , "exec '" ++ real ++ "' \"$@\"" ])
+  p <- getPermissions prog
+  setPermissions prog (setOwnerExecutable True p)
+  pure prog
+
 -- Run the program once with these flags and a result file; its exit code,
 -- standard error and result line.
 runOnce :: FilePath -> [String] -> IO (ExitCode, String, String)
@@ -551,6 +564,13 @@ spec = do
     it "collects NAME=VALUE pairs in order, a repeated name keeping its last value" $
       simParamsOf ["--seed", "3", "--param", "a=1", "--param", "b=x=y", "--param", "a=2", "--param", "c="]
         `shouldBe` [("a", "2"), ("b", "x=y"), ("c", "")]
+    it "reads the pairs of a command line whose settings fit only the program's own (--dt 0.05 with a program's frame rate of 10), and none of one whose flags are refused" $ do
+      -- (the defaults' 25 frames a second and --dt 0.05 do not fit: the
+      -- pairs were dropped, and getSimParams would have stopped the program)
+      simParamsOf ["--dt", "0.05", "--param", "speed=2"] `shouldBe` [("speed", "2")]
+      fmap (const ()) (parseSimArgs defaultSimOptions { optFps = 10 } ["--dt", "0.05"]) `shouldBe` Right ()
+      simParamsOf ["--dt", "abc", "--param", "speed=2"] `shouldBe` []
+      simParamsOf ["--frobnicate", "--param", "speed=2"] `shouldBe` []
     it "a name given twice: the run warns, naming the values and the one used (the last), and exits 0" $ withTempDir $ \dir -> do
       (code, err, line) <- runOnce dir ["--seconds", "0.1", "--param", "speed=0.2", "--param", "tag=x", "--param", "speed=0.3"]
       code `shouldBe` ExitSuccess
@@ -798,15 +818,8 @@ spec = do
 
     it "a run that writes no result is filed under its setting when a parameter holds a control character (a tab was a space there: a setting of its own)" $ withTempDir $ \dir -> do
       requireParallel
-      real <- childScript dir "program"
+      prog <- failingSeed2 dir
       sweep <- script "sweep"
-      -- (the program, but seed 2 stops at once, writing no result)
-      let prog = dir </> "fails2"
-      writeFile prog (unlines [ "#!/bin/bash"
-                              , "case \" $* \" in *' --seed 2 '*) echo 'no luck' >&2; exit 3 ;; esac"
-                              , "exec '" ++ real ++ "' \"$@\"" ])
-      p <- getPermissions prog
-      setPermissions prog (setOwnerExecutable True p)
       (code, _, _) <- runScriptCode [] sweep ["--seeds", "1..2", "--param", "note=a\tb", prog, dir </> "r.jsonl", "--", "--seconds", "1"]
       code `shouldBe` ExitFailure 1
       rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
@@ -835,15 +848,8 @@ spec = do
 
     it "a world file named default is ./default on a run's result line and on the sweep's line for a run with no result (both said \"default\", the built-in world's name)" $ withTempDir $ \dir -> do
       requireParallel
-      real <- childScript dir "program"
+      prog <- failingSeed2 dir
       sweep <- script "sweep"
-      -- (the program, but seed 2 stops at once, writing no result)
-      let prog = dir </> "fails2"
-      writeFile prog (unlines [ "#!/bin/bash"
-                              , "case \" $* \" in *' --seed 2 '*) echo 'no luck' >&2; exit 3 ;; esac"
-                              , "exec '" ++ real ++ "' \"$@\"" ])
-      p <- getPermissions prog
-      setPermissions prog (setOwnerExecutable True p)
       writeFile (dir </> "default") "simbotA 1 at 0 0 heading 0 deg\n"
       writeFile (dir </> "jobs") "--seed 1 --world default\n--seed 2 --world default\n--seed 3\n"
       (code, _, _) <- readCreateProcessWithExitCode

@@ -14,6 +14,7 @@ module AFrobRobotSim.Options.CommandLine
   ( -- * Parsing
     Command (..)
   , parseSimArgs
+  , parseSimFlags
   , parseKeys
   , parseParam
   , argText
@@ -63,13 +64,27 @@ data Command
 -- settings is no repeat, and neither is a flag without a value
 -- (@--no-svg@ after @--svg a.svg@ is an order, not a repeat).
 parseSimArgs :: SimOptions -> [String] -> Either String Command
-parseSimArgs o0 = go o0 False False [] []
+parseSimArgs o0 args = parseSimFlags o0 args >>= \c -> case c of
+  RunWith opts -> case validateOptions opts of
+    []   -> Right (RunWith opts)
+    errs -> Left (intercalate "; " errs)
+  ShowHelp     -> Right ShowHelp
+
+-- | 'parseSimArgs' without its check of the settings that result
+-- ('validateOptions'): only what each flag refuses on its own (an
+-- unknown flag, a missing or malformed value, a number out of the flag's
+-- range), which does not depend on the given settings. For a reader of
+-- the command line's @--param@s ('AFrobRobotSim.getSimParams'), which
+-- cannot know the settings a program starts from: whether @--dt 0.05@
+-- fits the frame rate is the program's run's to say.
+parseSimFlags :: SimOptions -> [String] -> Either String Command
+parseSimFlags o0 = go o0 False False [] []
   where
   -- the settings so far, whether the SVG and the page were named, the
   -- @--param@s of this command line so far (name and value, latest
   -- first), and its other flags with a value but @--keys@ (the same)
   go o svgNamed pageNamed given flags args = case args of
-    []                       -> check (repeats given flags (relocated o svgNamed pageNamed))
+    []                       -> Right (RunWith (repeats given flags (relocated o svgNamed pageNamed)))
     "--help" : _             -> Right ShowHelp
     "-h" : _                 -> Right ShowHelp
     flag : rest | Just switch <- lookup flag switches ->
@@ -145,10 +160,6 @@ parseSimArgs o0 = go o0 False False [] []
             | flag == "--odometry-noise" = "a number from 0 to " ++ readableNumber maxOdometryNoise
             | flag == "--dt"             = "a positive number up to " ++ readableNumber maxTimeStep
             | otherwise                  = "a positive number"
-  check opts = case validateOptions opts of
-    []   -> Right (RunWith opts)
-    errs -> Left (intercalate "; " errs)
-
 -- | Parse a @--param@ value, @NAME=VALUE@: the name is what comes before
 -- the first @=@ and must not be empty; the value may be empty or hold @=@.
 parseParam :: String -> Either String (String, String)
