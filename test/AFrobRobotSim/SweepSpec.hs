@@ -1218,12 +1218,17 @@ spec = do
         (code, out) `shouldBe` (ExitFailure 2, [])
         err `shouldSatisfy` ("--param mode=\"a,b\": the value \"a has a \" that is not closed" `isInfixOf`)
         err `shouldSatisfy` ("write a comma within a value as \\," `isInfixOf`)
-        -- \, is a comma, \\ a backslash, any other \ as it is
-        listed ["--param", "mode=\"a\\,b\",c", "--param", "p=x\\\\,y\\z"] `shouldReturn`
+        -- \, is a comma; every other \ is as it is, \\ too (a Haskell
+        -- string's backslash: "C:\\dir" as written, where it became the
+        -- "C:\dir" that read refuses; and "a\\" before a comma, which was
+        -- refused)
+        listed ["--param", "mode=\"a\\,b\",c", "--param", "p=\"C:\\\\dir\""] `shouldReturn`
           ( ExitSuccess
-          , [ "--seed 0 --param 'mode=\"a,b\"' --param 'p=x\\'", "--seed 0 --param 'mode=\"a,b\"' --param 'p=y\\z'"
-            , "--seed 0 --param mode=c --param 'p=x\\'", "--seed 0 --param mode=c --param 'p=y\\z'" ]
+          , [ "--seed 0 --param 'mode=\"a,b\"' --param 'p=\"C:\\\\dir\"'"
+            , "--seed 0 --param mode=c --param 'p=\"C:\\\\dir\"'" ]
           , "" )
+        listed ["--param", "p=\"a\\\\\",b"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --param 'p=\"a\\\\\"'", "--seed 0 --param p=b"], "")
         -- (one value alone is as given, a quote in it too; a quote escaped
         -- inside a Haskell string counts as no quote)
         listed ["--param", "note=5\""] `shouldReturn` (ExitSuccess, ["--seed 0 --param 'note=5\"'"], "")
