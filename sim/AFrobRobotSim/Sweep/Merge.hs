@@ -360,7 +360,10 @@ tableOf names groups = unlines (map printableLine
 -- name no program (every run failed) or several (then a line for a run
 -- with no result of a program no result line names is a setting of its
 -- own). A run so filed that a result line has too (the same setting and
--- seed) is refused, as 'addRun' refuses a run merged twice.
+-- seed) is refused, as 'addRun' refuses a run merged twice. (The lines
+-- do not say which sweep wrote them, so a program whose every run
+-- failed, merged with another's results, has its runs filed under that
+-- other program: the README says to merge such sweeps apart.)
 filePrograms :: M.Map Setting Group -> Either String (M.Map Setting Group)
 filePrograms groups = case S.toList withResults of
   [only] -> foldM (\acc (setting, g) -> joinFiled False (withProgram only setting) g acc) kept (M.toList strays)
