@@ -231,6 +231,11 @@ spec = do
         `shouldSatisfy` either ("--out expects a folder name" `isInfixOf`) (const False)
       fmap' optFlagsRepeated (parseSimArgs defaultSimOptions ["--svg", "a.svg", "--no-svg", "--svg", "b.svg"])
         `shouldBe` Right [("--svg", ["a.svg", "b.svg"])]
+      -- (undone by a last --no-svg or --no-replay, no value is used: none
+      -- is said to be; it said the last was)
+      fmap' optFlagsRepeated (parseSimArgs defaultSimOptions
+        ["--svg", "a.svg", "--svg", "b.svg", "--no-svg", "--replay", "p.html", "--replay", "q.html", "--no-replay"])
+        `shouldBe` Right []
       -- (a value of the given settings that the command line replaces is no repeat)
       repeated defaultSimOptions { optSeconds = 5, optFlagsRepeated = [("--dt", ["1", "2"])] } ["--seconds", "1"]
         `shouldBe` Right ([("--dt", ["1", "2"])], 1, Nothing)

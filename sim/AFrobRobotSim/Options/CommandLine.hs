@@ -24,6 +24,7 @@ module AFrobRobotSim.Options.CommandLine
 
 import           Data.Char       (isSpace, toLower)
 import           Data.List       (intercalate, isSuffixOf)
+import           Data.Maybe      (isJust)
 import           System.FilePath ((</>))
 
 import           AFrobRobotSim.Options.Check
@@ -62,7 +63,10 @@ data Command
 -- kept with all its values, as given, in 'optFlagsRepeated' (after the
 -- given settings'). A flag that only replaces a value of the given
 -- settings is no repeat, and neither is a flag without a value
--- (@--no-svg@ after @--svg a.svg@ is an order, not a repeat).
+-- (@--no-svg@ after @--svg a.svg@ is an order, not a repeat); and
+-- @--svg@s or @--replay@s that a last @--no-svg@ or @--no-replay@ undoes
+-- are none (after @--svg a.svg --svg b.svg --no-svg@ no SVG is written,
+-- so no value is said to be used).
 parseSimArgs :: SimOptions -> [String] -> Either String Command
 parseSimArgs o0 args = parseSimFlags o0 args >>= \c -> case c of
   RunWith opts -> case validateOptions opts of
@@ -106,7 +110,13 @@ parseSimFlags o0 = go o0 False False [] []
   -- the names and flags given more than once, in the order first given,
   -- with their values in order
   repeats given flags o = o { optParamsRepeated = optParamsRepeated o0 ++ repeatedBy (reverse given)
-                            , optFlagsRepeated  = optFlagsRepeated o0 ++ repeatedBy (reverse flags) }
+                            , optFlagsRepeated  = optFlagsRepeated o0 ++ repeatedBy (reverse (filter (used o) flags)) }
+  -- (an @--svg@ or @--replay@ that a later @--no-svg@ or @--no-replay@
+  -- undid: none of its values is used, so none is said to be)
+  used o (flag, _) = case flag of
+    "--svg"    -> isJust (optSvg o)
+    "--replay" -> isJust (optReplay o)
+    _          -> True
   -- a value that is one of the flags is a value left out (@--out --no-svg@
   -- would write into a folder named @--no-svg@); @./--no-svg@ names such a file
   isFlag v = v `elem` (["--help", "-h"] ++ map fst switches ++ map fst (valued o0))
