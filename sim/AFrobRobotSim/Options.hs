@@ -36,9 +36,9 @@
 -- @
 --
 -- A flag that takes a value, given twice on one command line, takes its
--- last value and is warned of when the run starts
--- ('optFlagsRepeated', 'optParamsRepeated'), but for @--keys@, whose
--- presses all count.
+-- last value and is warned of when the run starts (not with
+-- @--dump-world@, which runs nothing) ('optFlagsRepeated',
+-- 'optParamsRepeated'), but for @--keys@, whose presses all count.
 --
 -- 'validateOptions' checks the numbers together before anything is
 -- simulated: the step count @seconds / dt@ is finite and at most

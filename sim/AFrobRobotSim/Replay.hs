@@ -237,9 +237,11 @@ writeReplayFromLog logPath out = do
 data ReplayFault
   = ReplayRefused String
     -- ^ refused before anything was written: an empty name, a page that
-    -- is a folder, is the log or is in a folder it cannot be written to,
-    -- a log that does not read (the reader's message, with the line), a
-    -- temporary folder that cannot be used
+    -- is a folder, is the log or is in a folder that does not exist, a
+    -- log that does not read (the reader's message, with the line), a
+    -- temporary folder that cannot be used (a folder that exists but may
+    -- not be written to is found when the page is written: a
+    -- 'ReplayWriteFailed')
   | ReplayWriteFailed String
     -- ^ a write that failed on the way (a full disk): of the frames'
     -- temporary file, or of the page, which is then not written (an
@@ -291,9 +293,9 @@ replayFromArgs = go Nothing Nothing
 -- program's name. The exit code is 0 when the page is written; 2 when
 -- it is refused before anything is written (a command line that is not
 -- those two flags with their values, a log that does not read, a page
--- that cannot be written there: 'ReplayRefused'); 1 when a write fails
--- on the way (a full disk: 'ReplayWriteFailed'), or standard output
--- cannot be written.
+-- in a folder that does not exist: 'ReplayRefused'); 1 when a write
+-- fails on the way (a full disk, a folder that may not be written to:
+-- 'ReplayWriteFailed'), or standard output cannot be written.
 replayFromMain :: [String] -> IO ()
 replayFromMain args = do
   prog <- getProgName

@@ -242,15 +242,18 @@ spec = do
         withTMPDIR (dir </> "tmp") (writeReplayFromLog logPath out) `shouldReturn` Right (LogEnd (rlSummary fixtureLog) Nothing)
         listDirectory (dir </> "tmp") `shouldReturn` []
         listDirectory dir >>= (`shouldBe` ["run.html", "run.jsonl", "tmp"]) . sort
-    it "says a page whose write fails (a full disk) as a failed write, not a refusal, keeping no partial page" $
+    it "says a page whose write fails (a full disk) as a failed write, not a refusal, keeping no temporary file" $
       withTempDir $ \dir -> do
         let logPath = dir </> "run.jsonl"
         writeFile logPath fixtureLogText
-        r <- writeReplayFromLog logPath "/dev/full"
+        createDirectory (dir </> "tmp")
+        r <- withTMPDIR (dir </> "tmp") (writeReplayFromLog logPath "/dev/full")
         r `shouldSatisfy` \x -> case x of
           Left (ReplayWriteFailed msg) -> "cannot write the page: /dev/full" `isPrefixOf` msg
           _                            -> False
-        listDirectory dir `shouldReturn` ["run.jsonl"]
+        -- (the frames' temporary file is gone, and nothing else was made)
+        listDirectory (dir </> "tmp") `shouldReturn` []
+        listDirectory dir >>= (`shouldBe` ["run.jsonl", "tmp"]) . sort
 
   describe "replayFromArgs (simbot --replay-from's command line)" $ do
     it "takes the two flags in either order" $ do
