@@ -171,27 +171,23 @@ runSimRefereedWith opts referee mworld rcA rcB = do
     else do
       -- (the referee's goals, before the checks of the files, which make
       -- the output folder when nothing else is wrong)
-      let goalErrs = checkGoals referee
-      unless (null goalErrs) $
-        failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) goalErrs))
+      let cannotRun errs = unless (null errs) $
+            failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
+      cannotRun (checkGoals referee)
       (errs, ffmpeg) <- preflight (worldBounds world) opts
-      unless (null errs) $
-        failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
-      -- (a flag with one value given twice: the run uses the last value,
-      -- and says so; a value quoted when it is empty or holds a space)
-      let shown v | not (null v), all (\c -> isPrint c && not (isSpace c)) t = t
-                  | otherwise                                                = quote t
+      cannotRun errs
+      -- (a flag with one value, or a parameter, given twice: the run uses
+      -- the last value, and says so)
+      let repeated what shown vs = prog ++ ": warning: " ++ what ++ " is given " ++ timesText (length vs) ++ ", "
+            ++ intercalate " then " (map shown vs) ++ ": the last, " ++ shown (last vs) ++ ", is used"
+          -- (a flag's value quoted when it is empty or holds a space)
+          shownFlag v | not (null v), all (\c -> isPrint c && not (isSpace c)) t = t
+                      | otherwise                                                = quote t
             where t = argText v
-      unless (null (optFlagsRepeated opts)) $ putErr $ unlines
-        [ prog ++ ": warning: " ++ flag ++ " is given " ++ timesText (length vs) ++ ", "
-          ++ intercalate " then " (map shown vs) ++ ": the last, " ++ shown (last vs) ++ ", is used"
-        | (flag, vs@(_ : _)) <- optFlagsRepeated opts ]
-      -- (a parameter given twice: the run uses the last value, and says so)
-      let given k v = displayPath (k ++ "=" ++ argText v)
-      unless (null (optParamsRepeated opts)) $ putErr $ unlines
-        [ prog ++ ": warning: --param " ++ displayPath k ++ " is given " ++ timesText (length vs) ++ ", "
-          ++ intercalate " then " (map (given k) vs) ++ ": the last, " ++ given k (last vs) ++ ", is used"
-        | (k, vs@(_ : _)) <- optParamsRepeated opts ]
+          shownParam k v = displayPath (k ++ "=" ++ argText v)
+      unless (null (optFlagsRepeated opts) && null (optParamsRepeated opts)) $ putErr $ unlines $
+        [ repeated flag shownFlag vs | (flag, vs@(_ : _)) <- optFlagsRepeated opts ]
+        ++ [ repeated ("--param " ++ displayPath k) (shownParam k) vs | (k, vs@(_ : _)) <- optParamsRepeated opts ]
       -- (a parameter no controller asked for is usually a misspelled name)
       (unread, asked) <- unreadParams opts
       let readsText | null asked = "it reads none"
