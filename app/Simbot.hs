@@ -7,7 +7,7 @@
 --
 -- @simbot --replay-from RUN.jsonl --replay OUT.html@ simulates nothing: it
 -- turns a run log (written with @--log@) into a replay page
--- ('AFrobRobotSim.Replay.replayFromMain': exit code 2 when it refuses
+-- ('AFrobRobotSim.Replay.CommandLine.replayFromMain': exit code 2 when it refuses
 -- before writing, 1 when a write fails).
 module Main (main) where
 
@@ -15,7 +15,7 @@ import           System.Environment (getArgs)
 
 import           AFrob
 import           AFrobRobotSim
-import           AFrobRobotSim.Replay (replayFromMain)
+import           AFrobRobotSim.Replay.CommandLine (replayFromMain)
 import           Paper.Section3     (rcAlign, rcFollowLeftWall, rcMoveTo, rcReverse)
 
 main :: IO ()

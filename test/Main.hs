@@ -49,6 +49,7 @@ import qualified AFrobRobotSim.Log.RecordsSpec
 import qualified AFrobRobotSim.ReplayBrowserSpec
 import qualified AFrobRobotSim.ReplaySpec
 import qualified AFrobRobotSim.ResultSpec
+import qualified AFrobRobotSim.Replay.CommandLineSpec
 import qualified AFrobRobotSim.Replay.RecorderSpec
 import qualified AFrobRobotSim.NearbySpec
 import qualified AFrobRobotSim.NotesSection3Spec
@@ -142,6 +143,7 @@ specs = hspec $ do
   describe "AFrobRobotSim.Log.Read"  AFrobRobotSim.Log.ReadSpec.spec
   describe "AFrobRobotSim.Log.Records" AFrobRobotSim.Log.RecordsSpec.spec
   describe "AFrobRobotSim.Replay"    AFrobRobotSim.ReplaySpec.spec
+  describe "AFrobRobotSim.Replay.CommandLine" AFrobRobotSim.Replay.CommandLineSpec.spec
   describe "AFrobRobotSim.Replay.Recorder" AFrobRobotSim.Replay.RecorderSpec.spec
   describe "AFrobRobotSim.Result"    AFrobRobotSim.ResultSpec.spec
   describe "AFrobRobotSim.Replay in Chromium" AFrobRobotSim.ReplayBrowserSpec.spec

@@ -33,7 +33,8 @@ import           AFrobRobotSim
 import           AFrobRobotSim.Log   (LogEnd (..), LogFrame (..), LogHeader (..), LogRobot (..), LogSummary (..),
                                       RunLog (..), readLogFile)
 import           AFrobRobotSim.JSON  (JSON (..), member, parseJSON)
-import           AFrobRobotSim.Replay (replayFromMain, replayPage, writeReplayFromLog)
+import           AFrobRobotSim.Replay (replayPage, writeReplayFromLog)
+import           AFrobRobotSim.Replay.CommandLine (replayFromMain)
 import           AFrobRobotSim.Run.Signals (Stopper, interruptible, signalReceived, stuckGrace)
 import           TestUtil (captured, withCaps, withTMPDIR, withTempDir)
 

@@ -12,6 +12,10 @@
 -- size does not grow with the runs but for the seeds (a set of integers)
 -- and the failures listed. The sums are exact, so the table does not
 -- depend on the order of the lines (see "AFrobRobotSim.Sweep").
+--
+-- Internal: "AFrobRobotSim.Sweep.Merge" alone uses it; exposed, as every
+-- module of the library is, but not part of the API that
+-- "AFrobRobotSim.Sweep" gives, and free to change.
 module AFrobRobotSim.Sweep.Tally
   ( -- * Seeds
     Seed (..)
