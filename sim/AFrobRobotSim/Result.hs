@@ -99,15 +99,17 @@ import           AFrobRobotSim.Simulator
 -- 'exitWith', so a caller may catch the 'ExitCode'). (It gave @[]@, and
 -- the program went on with its defaults until 'AFrobRobotSim.runSim'
 -- stopped it.) Whether the settings fit together (@--dt@ with the frame
--- rate, the number of steps) depends on the settings the program starts
--- from ('AFrobRobotSim.runSimWith'), so it is left to the run. A program whose command line is not 'AFrobRobotSim.runSim''s
+-- rate, the number of steps) is left to the run: a program that runs
+-- with 'AFrobRobotSim.runSimWith' may parse its flags over settings of
+-- its own, where they fit when the defaults' would not. A program whose command line is not 'AFrobRobotSim.runSim''s
 -- (as @afrp-examples NAME [flags]@ is) reads the parameters of its
 -- flags with 'simParamsOf' or 'readSimParam' instead.
 getSimParams :: IO [(String, String)]
 getSimParams = atomicModifyIORef' paramReads (\(_, ns) -> ((True, ns), ())) >> commandLineParams
 
 -- The @--param@s of this program's command line, or the program stopped
--- as 'AFrobRobotSim.runSim' would stop it (see 'getSimParams').
+-- where 'AFrobRobotSim.runSim' would stop it for a flag of it (see
+-- 'getSimParams').
 commandLineParams :: IO [(String, String)]
 commandLineParams = do
   args <- getArgs

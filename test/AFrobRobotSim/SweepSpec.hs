@@ -599,7 +599,10 @@ spec = do
         let after1 = drop 1 . dropWhile (/= ':')
         forM_ [ (["--param", "=5"], " --param expects NAME=VALUE, got \"=5\"")
               , (["--param", "speed=0.2", "--seconds", "abc"], " --seconds expects a non-negative number (written as in a world file: 2, 0.5, 1e-3), got \"abc\"")
-              , (["--no-such-flag"], " unknown argument \"--no-such-flag\" (see --help)") ] $ \(args, message) -> do
+              , (["--no-such-flag"], " unknown argument \"--no-such-flag\" (see --help)")
+                -- (an empty file name is its flag's fault, whatever the settings: the program's
+                -- own action ran first)
+              , (["--param", "speed=0.2", "--svg", ""], " --svg must not be empty (a file name)") ] $ \(args, message) -> do
           (code, out, err) <- readProcessWithExitCode prog args ""
           (code, out, map after1 (lines err)) `shouldBe` (ExitFailure 2, "", [message])
         (code, out, err) <- readProcessWithExitCode prog ["--param", "speed=0.2", "--help"] ""

@@ -14,6 +14,7 @@ module AFrobRobotSim.Options.Check
   ( -- * The checks
     validateOptions
   , validateOptionsIn
+  , outputNameFaults
     -- * The limits
   , maxSteps
   , maxFrameSide
@@ -92,12 +93,7 @@ validateOptions o =
   ++ [ "optParams names the parameter " ++ show k ++ " " ++ timesText (length vs) ++ "; a name holds one value"
      | (k, vs) <- repeatedBy (optParams o) ]
   ++ [ "optOut must not be empty" | null (optOut o) ]
-  ++ [ flag ++ " must not be empty (a file name)"
-     | (flag, Just "") <- [ ("--svg", optSvg o), ("--replay", optReplay o), ("--log", optLog o)
-                          , ("--result", optResult o), ("--video", optVideo o) ] ]
-  ++ [ "--video " ++ show v ++ ": a video's name ends in " ++ intercalate ", " (map ('.' :) videoExtensions)
-       ++ " (ffmpeg picks the format by it; an image's, such as .ppm or .png, would write frames)"
-     | Just v@(_ : _) <- [optVideo o], map toLower (takeExtension v) `notElem` map ('.' :) videoExtensions ]
+  ++ outputNameFaults o
   where
     secs = optSeconds o; dt = optDt o; fps = optFps o
     noise = optOdometryNoise o
@@ -140,6 +136,21 @@ validateOptionsIn b@(Bounds x0 y0 x1 y1) o =
     w = x1 - x0
     h = y1 - y0
     side = max w h * scale + 20
+
+-- | The faults of the outputs' names that the settings themselves show,
+-- whatever they started from: an empty @--svg@, @--replay@, @--log@,
+-- @--result@ or @--video@, a @--video@ whose name is no video format's.
+-- Part of 'validateOptions'; a reader of the command line's flags alone
+-- ('AFrobRobotSim.Options.CommandLine.parseSimFlags') checks them too, as
+-- they are the faults of a flag's value.
+outputNameFaults :: SimOptions -> [String]
+outputNameFaults o =
+  [ flag ++ " must not be empty (a file name)"
+  | (flag, Just "") <- [ ("--svg", optSvg o), ("--replay", optReplay o), ("--log", optLog o)
+                       , ("--result", optResult o), ("--video", optVideo o) ] ]
+  ++ [ "--video " ++ show v ++ ": a video's name ends in " ++ intercalate ", " (map ('.' :) videoExtensions)
+       ++ " (ffmpeg picks the format by it; an image's, such as .ppm or .png, would write frames)"
+     | Just v@(_ : _) <- [optVideo o], map toLower (takeExtension v) `notElem` map ('.' :) videoExtensions ]
 
 -- | The most steps a run may take: 10^8 (about 280 simulated hours at the
 -- default step).

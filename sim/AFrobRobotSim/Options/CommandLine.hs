@@ -74,10 +74,11 @@ parseSimArgs o0 args = parseSimFlags o0 args >>= \c -> case c of
     errs -> Left (intercalate "; " errs)
   ShowHelp     -> Right ShowHelp
 
--- | 'parseSimArgs' without its check of the settings that result
+-- | 'parseSimArgs' without its check that the settings fit together
 -- ('validateOptions'): only what each flag refuses on its own (an
 -- unknown flag, a missing or malformed value, a number out of the flag's
--- range), which does not depend on the given settings. For a reader of
+-- range, an empty file name, a video's name that is no video format's:
+-- 'outputNameFaults'), which does not depend on the given settings. For a reader of
 -- the command line's @--param@s ('AFrobRobotSim.getSimParams'), which
 -- cannot know the settings a program starts from: whether @--dt 0.05@
 -- fits the frame rate is the program's run's to say.
@@ -88,7 +89,10 @@ parseSimFlags o0 = go o0 False False [] []
   -- @--param@s of this command line so far (name and value, latest
   -- first), and its other flags with a value but @--keys@ (the same)
   go o svgNamed pageNamed given flags args = case args of
-    []                       -> Right (RunWith (repeats given flags (relocated o svgNamed pageNamed)))
+    []                       -> let o' = repeats given flags (relocated o svgNamed pageNamed)
+                                in case outputNameFaults o' of
+                                     []   -> Right (RunWith o')
+                                     errs -> Left (intercalate "; " errs)
     "--help" : _             -> Right ShowHelp
     "-h" : _                 -> Right ShowHelp
     flag : rest | Just switch <- lookup flag switches ->
