@@ -15,11 +15,14 @@ module TestUtil
   , withTempDir
   , withTMPDIR
   , captured
+  , withUnsearchable
   , withCaps
   , cLocale
   ) where
 
-import           Control.Exception (NonTermination (..), bracket, evaluate, finally, try)
+import           Control.Exception (NonTermination (..), bracket, bracket_, evaluate, finally, try)
+import           System.Posix.Files (setFileMode)
+import           System.Posix.User (getEffectiveUserID)
 import           GHC.IO.Handle     (hDuplicate, hDuplicateTo)
 import           System.Exit       (ExitCode)
 import           System.IO         (IOMode (..), hClose, hFlush, stderr, stdout, withFile)
@@ -155,3 +158,17 @@ captured act = withTempDir $ \dir -> do
     readAll f = do
       s <- readFile f
       length s `seq` pure s
+
+-- | @withUnsearchable dir check@: @check@ given @dir/locked@, a folder
+-- holding a folder @sub@, while @locked@ may not be searched (mode 600,
+-- no x permission); its mode is put back afterwards, whatever @check@
+-- does. Pending as root, who searches every folder (CI runs these tests
+-- once more as @nobody@).
+withUnsearchable :: FilePath -> (FilePath -> Expectation) -> Expectation
+withUnsearchable dir check = do
+  uid <- getEffectiveUserID
+  if uid == 0 then pendingWith "root searches every folder: run as another user (see the test)" else do
+    let locked = dir </> "locked"
+    createDirectory locked
+    createDirectory (locked </> "sub")
+    bracket_ (setFileMode locked 0o600) (setFileMode locked 0o700) (check locked)
