@@ -360,7 +360,7 @@ simulateUnchecked cfg world rcA rcB
         snapshot = unscored { wsScores = scores }
         robots' = stepRobotsPlanned (scRobotIndex ctx) plans
         moved   = stepBalls dt arena robots' (enBalls en)
-        balls'  = blaming (refereeFailed "the ball rule (simBallRule)" (t + dt)) $
+        balls'  = blaming (RefereeError "the ball rule (simBallRule)" (t + dt)) $
           case simBallRule cfg (t + dt) (map bPos moved) of
             Nothing -> moved
             Just ps -> let placed = [ Ball q zeroVector | q <- refereed bounds (length moved) ps ]
@@ -391,7 +391,7 @@ simulateUnchecked cfg world rcA rcB
     -- The referee's scores of a snapshot, evaluated whole (names distinct,
     -- at most 'maxTextChars' characters long; values within 2^53), and how
     -- they continue.
-    stepScores t sc ws = blaming (refereeFailed "the scores (simScores)" t) $
+    stepScores t sc ws = blaming (RefereeError "the scores (simScores)" t) $
       case (case sc of
               ScoresNew sf -> evalAtZero sf ws
               Scores fut   -> evalAt fut dt ws) of
@@ -410,7 +410,6 @@ simulateUnchecked cfg world rcA rcB
           | otherwise = go (Set.insert k seen) more
         bad = throw . ErrorCall
         maxScore = 2 ^ (53 :: Int) :: Integer
-    refereeFailed = RefereeError
 
     -- every robot's state, all at once when the list is first needed
     -- (with the noisy odometry's readings, or none when it is exact)
