@@ -21,6 +21,8 @@ import           System.Directory  (createDirectory, listDirectory)
 import           System.FilePath   ((</>))
 import           System.IO         (IOMode (..), hClose, hFlush, stdout, withFile)
 import           System.IO.Unsafe  (unsafePerformIO)
+import           System.Mem        (performMajorGC)
+import           System.Mem.Weak   (deRefWeak, mkWeakPtr)
 import           Test.Hspec        hiding (after)
 
 import           AFrob             hiding (forAll)
@@ -349,6 +351,23 @@ spec = do
           two = take 6001 (simulateWith defaultSimConfig world wander wander)
       one == two `shouldBe` True
       map robotPos (wsRobots (last one)) `shouldNotBe` map robotPos (wsRobots (head one))
+
+  describe "memory" $
+    -- (the template is made at run time, from a value read from an
+    -- IORef, so that it is no constant of the program, which the
+    -- collector never frees)
+    it "a run does not keep its world template once it has started" $ do
+      side <- newIORef (3 :: Double)
+      x <- readIORef side
+      let world = [ OTSimbotA i (Point2 (x - fromIntegral i) 0) 0 | i <- [1 .. 3] ] ++ [OTBall (Point2 0 x)]
+      weak <- mkWeakPtr world Nothing
+      let rest = drop 2 (simulate 0.1 world (const (constant (mrFinalize (ddVelTR 0.1 0)))) (const (constant mrDefault)))
+      _ <- evaluate (forceWorldState (head rest))
+      performMajorGC
+      kept <- deRefWeak weak
+      (case kept of Nothing -> "freed"; Just _ -> "kept alive") `shouldBe` "freed"
+      -- (the run goes on after the collection: it was alive during it)
+      wsTime (rest !! 3) `shouldSatisfy` (> 0.4)
 
   describe "every core" $ do
     -- 60 robots (four chunks on two capabilities) packed in the 10 m
