@@ -1256,6 +1256,32 @@ spec = do
         rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
         map (field ["params", "tag"]) rs `shouldBe` map JString ["\"a,b\"", "c"]
 
+    it "reads a Char literal in a list of --param values as Haskell's read does: '\"' leaves no quote open (it was refused)" $
+      withTempDir $ \dir -> do
+        sweep <- script "sweep"
+        let listed args = do
+              (code, out, err) <- runScriptCode [] sweep ("--list" : args)
+              pure (code, lines out, err)
+            refusedOpen p = do
+              (code, out, err) <- listed ["--param", p]
+              (code, out, "that is not closed" `isInfixOf` err) `shouldBe` (ExitFailure 2, [], True)
+        listed ["--param", "c='a','\"'"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --param 'c='\\''a'\\'''", "--seed 0 --param 'c='\\''\"'\\'''"], "")
+        -- (escaped, and in a value beside a string)
+        (code, out, _) <- listed ["--param", "c='\\\"','\\\\',Just '\"'", "--param", "s=\"'\",\"x\" '\"'"]
+        (code, length out) `shouldBe` (ExitSuccess, 6)
+        -- what a comma leaves open is still refused: a string after a Char
+        -- literal, and a quote after a name's ' (x' is a name: its " opens
+        -- a string)
+        refusedOpen "c='\"'\"a,b\""
+        refusedOpen "c=x'\"',y"
+        -- and a run gets the Char literals as given
+        requireParallel
+        prog <- childScript dir "program"
+        _ <- runScript [] sweep ["--param", "tag='a','\"'", prog, dir </> "r.jsonl", "--", "--seconds", "0.1"]
+        rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+        map (field ["params", "tag"]) rs `shouldBe` map JString ["'a'", "'\"'"]
+
     it "interrupted (SIGTERM to its process group, as at Slurm's time limit): a line for every run, a message, no temporary file" $ withTempDir $ \dir -> do
       requireParallel
       prog <- childScript dir "program"
