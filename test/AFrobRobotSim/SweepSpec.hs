@@ -335,9 +335,10 @@ spec = do
       -- no result line to tell: said as not given
       lines (tableOf' [noResult (7 :: Int)]) `shouldSatisfy` elem "== world=(not given) speed=0.1  (1 runs, 1 failed)"
       -- an empty world (the sweep's line of --world '') and a parameter named
-      -- world are names as given, not the unnamed world
+      -- world are names as given, not the unnamed world (the parameter's
+      -- name quoted: it read as the world's)
       lines (tableOf' ["{\"program\":\"p\",\"world\":\"\",\"seed\":1,\"params\":{\"world\":\"\"},\"flags\":\"x\",\"failure\":\"boom\"}"])
-        `shouldSatisfy` elem "== world=\"\" world=\"\"  (1 runs, 1 failed)"
+        `shouldSatisfy` elem "== world=\"\" \"world\"=\"\"  (1 runs, 1 failed)"
       -- the line an older sweep wrote for a run of a world file named
       -- default or program (it wrote such a name bare) is that file's, as
       -- a result line names it (./default), not the built-in world's
@@ -376,8 +377,24 @@ spec = do
         [h] -> ("refused: line 8: the run program=\"afrp-examples rcStop\" world=default speed=0.1 seed 1 (dt 0.01, seconds 1)"
                 ++ " is on an earlier line too") `isPrefixOf` h
         _   -> False
-      -- a parameter named program is a parameter, not the program
-      headings [resultLine 1 [("program", "p")] 1 Nothing] `shouldBe` ["== world=default program=p  (1 runs, 0 failed)"]
+      -- a parameter named program is a parameter, not the program (its
+      -- name quoted, so that it never reads as the program's)
+      headings [resultLine 1 [("program", "p")] 1 Nothing] `shouldBe` ["== world=default \"program\"=p  (1 runs, 0 failed)"]
+      headings [ofProgram "q" (resultLine 1 [("program", "p")] 1 Nothing), resultLine 2 [("program", "p")] 1 Nothing] `shouldBe`
+        [ "== program=p world=default \"program\"=p  (1 runs, 0 failed)", "== program=q world=default \"program\"=p  (1 runs, 0 failed)" ]
+    it "tells a parameter named world from the run's world: apart in the settings that vary, its name quoted (both were world=, mixed as one setting)" $ do
+      let ofWorld w = replace "\"world\":\"default\"" ("\"world\":" ++ encodeJSON (JString w))
+          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
+      headings [ ofWorld w (resultLine k [("world", p)] 1 Nothing)
+               | (k, (w, p)) <- zip [1 ..] [("a", "b"), ("b", "a"), ("a", "a")] ] `shouldBe`
+        [ "== world=a \"world\"=a  (1 runs, 0 failed)", "== world=a \"world\"=b  (1 runs, 0 failed)"
+        , "== world=b \"world\"=a  (1 runs, 0 failed)"
+        , "== world=a over all other settings  (2 runs, 0 failed)", "== world=b over all other settings  (1 runs, 0 failed)"
+        , "== \"world\"=a over all other settings  (2 runs, 0 failed)", "== \"world\"=b over all other settings  (1 runs, 0 failed)" ]
+      -- (the run's world the same in every run, the parameter varying: one
+      -- setting varies, and no line is per value)
+      headings [ resultLine k [("world", p)] 1 Nothing | (k, p) <- zip [1 ..] ["1", "2"] ] `shouldBe`
+        [ "== world=default \"world\"=1  (1 runs, 0 failed)", "== world=default \"world\"=2  (1 runs, 0 failed)" ]
 
     it "files the sweep's line for a run with no result, which names the program's file, under the program its result lines name; with several programs, under its own name unless a result line names it" $ do
       let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))

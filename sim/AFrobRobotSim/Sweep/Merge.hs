@@ -48,8 +48,8 @@ import           AFrobRobotSim.WorldFile.Lexical (integerLit, utf8Text)
 ------------------------------------------------------------------------------
 -- Runs
 
--- The setting of a run: the program (under 'programKey'), the world,
--- then the parameters by name.
+-- The setting of a run: the program (under 'programKey'), the world
+-- (under 'worldKey'), then the parameters by name.
 type Setting = [(String, String)]
 
 -- The name under which a setting holds its program: a NUL and
@@ -59,6 +59,14 @@ type Setting = [(String, String)]
 -- it ('showSetting').
 programKey :: String
 programKey = "\NULprogram"
+
+-- The name under which a setting holds its world: a NUL and @world@, as
+-- 'programKey' is the program's, so that a parameter named @world@
+-- (@--param world=3@) is neither taken for the world nor mixed with it
+-- in the settings that vary; it sorts after 'programKey' and before
+-- every parameter's name: the world second, as the table names it.
+worldKey :: String
+worldKey = "\NULworld"
 
 -- The program of a setting.
 programOf :: Setting -> String
@@ -135,7 +143,7 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
     JObject kvs -> mapM (\(k, x) -> (,) k <$> asString x) kvs
     _           -> Left "\"params\" is not an object"
   seedValue <- member "seed" v
-  let setting = (programKey, program) : ("world", world) : sortOn fst params
+  let setting = (programKey, program) : (worldKey, world) : sortOn fst params
   case lookup "outcome" fields of
     Nothing -> do
       -- the sweep's line for a run with no result
@@ -386,7 +394,7 @@ fileUnnamed groups = foldM file named (M.toList unnamed)
     (unnamed, named) = M.partitionWithKey (\k _ -> worldOf k == Just unnamedWorld) groups
     many = manyPrograms groups
     worldOf setting = case setting of
-      _ : ("world", w) : _ -> Just w
+      _ : (k, w) : _ | k == worldKey -> Just w
       _                    -> Nothing
     -- (the worlds of each program's own that its lines name)
     owns = M.fromListWith S.union [ (programOf k, S.singleton w) | k <- M.keys named, Just w <- [worldOf k]
@@ -395,8 +403,8 @@ fileUnnamed groups = foldM file named (M.toList unnamed)
       [own] -> joinFiled many (withWorld own setting) g acc
       _     -> Right (M.insert setting g acc)
     withWorld w setting = case setting of
-      p : ("world", _) : rest -> p : ("world", w) : rest
-      _                       -> setting
+      p : (k, _) : rest | k == worldKey -> p : (k, w) : rest
+      _                                 -> setting
 
 -- A group filed under a setting (with @many@: the lines name more than
 -- one program), joined with the group there, if any; refused when a run
@@ -425,14 +433,18 @@ joinFiled many setting g acc = case M.lookup setting acc of
 -- with no result and no @--world@ that 'fileUnnamed' could not file is
 -- @world=(not given)@. The program is named first, @program=my-robot@,
 -- when @many@ holds (the lines name more than one program), and left out
--- otherwise.
+-- otherwise. A parameter named @world@ or @program@ has its name in
+-- quotes, @"world"=3@, so that it never reads as the run's world or
+-- program.
 showSetting :: Bool -> Setting -> String
 showSetting many g = unwords (map pair (filter shownPair g))
   where
     shownPair (k, _) = many || k /= programKey
     pair (k, v)
       | k == programKey                     = "program=" ++ shown v
-      | k == "world" && v == unnamedWorld   = "world=(not given)"
+      | k == worldKey && v == unnamedWorld  = "world=(not given)"
+      | k == worldKey                       = "world=" ++ shown v
+      | k `elem` ["world", "program"]       = quote k ++ "=" ++ shown v
       | otherwise                           = shown k ++ "=" ++ shown v
     shown t | not (null t) && all plain t = t
             | otherwise                   = quote t
