@@ -425,6 +425,38 @@ spec = do
         , "== world=(not given) over all other settings  (1 runs, 1 failed)"
         , "== world=default over all other settings  (3 runs, 1 failed)", "== world=program over all other settings  (3 runs, 1 failed)" ]
 
+    it "files the sweep's line for a run with no result that names its program as the result lines do (with the executable) under that program, whatever other programs' lines are merged (with one other program's result lines, every such run went under it)" $ do
+      let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
+          noResult prog exe seed = "{\"program\":" ++ encodeJSON (JString prog)
+                                   ++ maybe "" (\e -> ",\"executable\":" ++ encodeJSON (JString e)) exe
+                                   ++ ",\"world\":null,\"seed\":" ++ show (seed :: Int) ++ ",\"params\":{\"speed\":\"0.1\"}"
+                                   ++ ",\"flags\":\"--seed " ++ show seed ++ "\",\"failure\":\"exit code 2, no result: bad flag\"}"
+          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
+          settings = filter (not . ("over all other settings" `isInfixOf`)) . headings
+      -- a program every run of which wrote no result, merged with another
+      -- program's result lines: its own setting
+      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "q" (Just "q.sh") 8]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=(not given) speed=0.1  (2 runs, 2 failed)" ]
+      -- its run with a result line too: under it, the world too (a wrapper's
+      -- runs, named otherwise than its file)
+      settings (take 2 sampleLines ++ [ofProgram "q" (sampleLines !! 2), noResult "q" (Just "q.sh") 7]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=default speed=0.1  (2 runs, 1 failed)" ]
+      settings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      -- a line that names only the file (an older sweep's) is filed with
+      -- the one program the other lines name as their result lines do, as
+      -- before; with two so named, it is a setting of its own
+      settings (take 2 sampleLines ++ [noResult "p.sh" Nothing 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "r.sh" Nothing 9]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=(not given) speed=0.1  (1 runs, 1 failed)"
+        , "== program=r.sh world=(not given) speed=0.1  (1 runs, 1 failed)" ]
+      -- the same run named both ways: merged twice
+      headings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") 7, noResult "p.sh" Nothing 7]) `shouldSatisfy` \hs -> case hs of
+        [h] -> "refused: the run world=(not given) speed=0.1 seed 7 is on two lines for a run with no result" `isPrefixOf` h
+        _   -> False
+      -- an executable that is not a string: not the sweep's line
+      mergeResults (replace "\"executable\":\"q.sh\"" "\"executable\":1" (noResult "q" (Just "q.sh") 7))
+        `shouldSatisfy` either ("line 1: not a result line of a sweep" `isPrefixOf`) (const False)
+
     it "refuses a line that is neither a run's result line nor the sweep's line for a run with no result" $ do
       let failureLine = "{\"program\":\"p\",\"world\":\"default\",\"seed\":\"007\",\"params\":{\"speed\":\"1\"}"
                         ++ ",\"flags\":\"--seed 007 --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
