@@ -131,6 +131,18 @@ childScript dir what = do
   setPermissions file (setOwnerExecutable True p)
   pure file
 
+-- A script @dir/file@ that runs the program child ('childScript') under
+-- the name @name@ (its @argv[0]@): a program whose result lines name it
+-- otherwise than its file, as one that sets 'optProgram' does.
+namedProgram :: FilePath -> FilePath -> String -> IO FilePath
+namedProgram dir file name = do
+  self <- getExecutablePath
+  let prog = dir </> file
+  writeFile prog ("#!/bin/bash\n" ++ childVariable ++ "=program exec -a '" ++ name ++ "' '" ++ self ++ "' \"$@\"\n")
+  p <- getPermissions prog
+  setPermissions prog (setOwnerExecutable True p)
+  pure prog
+
 -- A script in @dir@ that runs the program child ('childScript'), but
 -- stops at once for @--seed 2@, writing no result (exit code 3).
 failingSeed2 :: FilePath -> IO FilePath
@@ -869,6 +881,35 @@ spec = do
       table `shouldSatisfy` ("FAILED seed 3: exit code 2, no result" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 4: exit code 1: " `isInfixOf`)
 
+    it "names a run with no result by its program as the program's result lines do, so that the merge files it with that program's runs, never another's (a program every run of which wrote no result went under the one other program merged)" $
+      withTempDir $ \dir -> do
+        requireParallel
+        sweep <- script "sweep"
+        a <- namedProgram dir "a.sh" "robot-a"
+        b <- namedProgram dir "b.sh" "robot-b"
+        _ <- runScript [] sweep ["--seeds", "1..2", a, dir </> "a.jsonl", "--", "--seconds", "1"]
+        -- every run of b stops at a flag of its job line: no result line at all
+        writeFile (dir </> "jobs") "--seed 1 --no-such-flag\n--seed 2 --no-such-flag\n"
+        (code, _, _) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", b, dir </> "b.jsonl", "--", "--seconds", "1"]
+        code `shouldBe` ExitFailure 1
+        bs <- map parsed . lines <$> readFile (dir </> "b.jsonl")
+        map (\r -> (field ["program"] r, field ["executable"] r)) bs `shouldBe` replicate 2 (JString "robot-b", JString "b.sh")
+        table <- merged dir [dir </> "a.jsonl", dir </> "b.jsonl"]
+        filter (\l -> "== " `isPrefixOf` l && not ("over all other settings" `isInfixOf` l)) (lines table) `shouldBe`
+          [ "== program=robot-a world=program  (2 runs, 0 failed)", "== program=robot-b world=(not given)  (2 runs, 2 failed)" ]
+        -- a program that writes no result line for the sweep's 0-second
+        -- run (here: exits at once) leaves its name unknown: the line names
+        -- its file alone, as an older sweep's did
+        let c = dir </> "c.sh"
+        writeFile c (unlines [ "#!/bin/bash", "case \" $* \" in *' --seconds 0 '*) exit 0 ;; esac", "exec '" ++ a ++ "' \"$@\"" ])
+        perms <- getPermissions c
+        setPermissions c (setOwnerExecutable True perms)
+        (codeC, _, _) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", c, dir </> "c.jsonl", "--", "--seconds", "1"]
+        codeC `shouldBe` ExitFailure 1
+        cs <- map parsed . lines <$> readFile (dir </> "c.jsonl")
+        map (\r -> (field ["program"] r, either (const Nothing) Just (member "executable" r))) cs
+          `shouldBe` replicate 2 (JString "c.sh", Nothing)
+
     it "a run that writes no result is filed under its setting when a parameter holds a control character (a tab was a space there: a setting of its own)" $ withTempDir $ \dir -> do
       requireParallel
       prog <- failingSeed2 dir
@@ -1360,7 +1401,7 @@ spec = do
       let prog = dir </> "slow"
           results = dir </> "r.jsonl"
       writeFile prog (unlines [ "#!/bin/bash"
-                              , "case \" $* \" in *' --dump-world '*) exit 0 ;; esac   # (the sweep's check of the flags)"
+                              , "case \" $* \" in *' --dump-world '*|*' --seconds 0 '*) exit 0 ;; esac   # (the sweep's checks: of the flags, of the name)"
                               , "trap 'sleep 2; exit 143' TERM"
                               , ": > '" ++ dir </> "started" ++ "'/$$"
                               , "sleep 1000 & wait" ])
