@@ -131,6 +131,18 @@ childScript dir what = do
   setPermissions file (setOwnerExecutable True p)
   pure file
 
+-- A script @dir/file@ that runs the program child ('childScript') under
+-- the name @name@ (its @argv[0]@): a program whose result lines name it
+-- otherwise than its file, as one that sets 'optProgram' does.
+namedProgram :: FilePath -> FilePath -> String -> IO FilePath
+namedProgram dir file name = do
+  self <- getExecutablePath
+  let prog = dir </> file
+  writeFile prog ("#!/bin/bash\n" ++ childVariable ++ "=program exec -a '" ++ name ++ "' '" ++ self ++ "' \"$@\"\n")
+  p <- getPermissions prog
+  setPermissions prog (setOwnerExecutable True p)
+  pure prog
+
 -- A script in @dir@ that runs the program child ('childScript'), but
 -- stops at once for @--seed 2@, writing no result (exit code 3).
 failingSeed2 :: FilePath -> IO FilePath
@@ -335,9 +347,10 @@ spec = do
       -- no result line to tell: said as not given
       lines (tableOf' [noResult (7 :: Int)]) `shouldSatisfy` elem "== world=(not given) speed=0.1  (1 runs, 1 failed)"
       -- an empty world (the sweep's line of --world '') and a parameter named
-      -- world are names as given, not the unnamed world
+      -- world are names as given, not the unnamed world (the parameter's
+      -- name quoted: it read as the world's)
       lines (tableOf' ["{\"program\":\"p\",\"world\":\"\",\"seed\":1,\"params\":{\"world\":\"\"},\"flags\":\"x\",\"failure\":\"boom\"}"])
-        `shouldSatisfy` elem "== world=\"\" world=\"\"  (1 runs, 1 failed)"
+        `shouldSatisfy` elem "== world=\"\" \"world\"=\"\"  (1 runs, 1 failed)"
       -- the line an older sweep wrote for a run of a world file named
       -- default or program (it wrote such a name bare) is that file's, as
       -- a result line names it (./default), not the built-in world's
@@ -376,8 +389,24 @@ spec = do
         [h] -> ("refused: line 8: the run program=\"afrp-examples rcStop\" world=default speed=0.1 seed 1 (dt 0.01, seconds 1)"
                 ++ " is on an earlier line too") `isPrefixOf` h
         _   -> False
-      -- a parameter named program is a parameter, not the program
-      headings [resultLine 1 [("program", "p")] 1 Nothing] `shouldBe` ["== world=default program=p  (1 runs, 0 failed)"]
+      -- a parameter named program is a parameter, not the program (its
+      -- name quoted, so that it never reads as the program's)
+      headings [resultLine 1 [("program", "p")] 1 Nothing] `shouldBe` ["== world=default \"program\"=p  (1 runs, 0 failed)"]
+      headings [ofProgram "q" (resultLine 1 [("program", "p")] 1 Nothing), resultLine 2 [("program", "p")] 1 Nothing] `shouldBe`
+        [ "== program=p world=default \"program\"=p  (1 runs, 0 failed)", "== program=q world=default \"program\"=p  (1 runs, 0 failed)" ]
+    it "tells a parameter named world from the run's world: apart in the settings that vary, its name quoted (both were world=, mixed as one setting)" $ do
+      let ofWorld w = replace "\"world\":\"default\"" ("\"world\":" ++ encodeJSON (JString w))
+          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
+      headings [ ofWorld w (resultLine k [("world", p)] 1 Nothing)
+               | (k, (w, p)) <- zip [1 ..] [("a", "b"), ("b", "a"), ("a", "a")] ] `shouldBe`
+        [ "== world=a \"world\"=a  (1 runs, 0 failed)", "== world=a \"world\"=b  (1 runs, 0 failed)"
+        , "== world=b \"world\"=a  (1 runs, 0 failed)"
+        , "== world=a over all other settings  (2 runs, 0 failed)", "== world=b over all other settings  (1 runs, 0 failed)"
+        , "== \"world\"=a over all other settings  (2 runs, 0 failed)", "== \"world\"=b over all other settings  (1 runs, 0 failed)" ]
+      -- (the run's world the same in every run, the parameter varying: one
+      -- setting varies, and no line is per value)
+      headings [ resultLine k [("world", p)] 1 Nothing | (k, p) <- zip [1 ..] ["1", "2"] ] `shouldBe`
+        [ "== world=default \"world\"=1  (1 runs, 0 failed)", "== world=default \"world\"=2  (1 runs, 0 failed)" ]
 
     it "files the sweep's line for a run with no result, which names the program's file, under the program its result lines name; with several programs, under its own name unless a result line names it" $ do
       let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
@@ -407,6 +436,38 @@ spec = do
         , "== program=r.sh over all other settings  (1 runs, 1 failed)"
         , "== world=(not given) over all other settings  (1 runs, 1 failed)"
         , "== world=default over all other settings  (3 runs, 1 failed)", "== world=program over all other settings  (3 runs, 1 failed)" ]
+
+    it "files the sweep's line for a run with no result that names its program as the result lines do (with the executable) under that program, whatever other programs' lines are merged (with one other program's result lines, every such run went under it)" $ do
+      let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
+          noResult prog exe seed = "{\"program\":" ++ encodeJSON (JString prog)
+                                   ++ maybe "" (\e -> ",\"executable\":" ++ encodeJSON (JString e)) exe
+                                   ++ ",\"world\":null,\"seed\":" ++ show (seed :: Int) ++ ",\"params\":{\"speed\":\"0.1\"}"
+                                   ++ ",\"flags\":\"--seed " ++ show seed ++ "\",\"failure\":\"exit code 2, no result: bad flag\"}"
+          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
+          settings = filter (not . ("over all other settings" `isInfixOf`)) . headings
+      -- a program every run of which wrote no result, merged with another
+      -- program's result lines: its own setting
+      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "q" (Just "q.sh") 8]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=(not given) speed=0.1  (2 runs, 2 failed)" ]
+      -- its run with a result line too: under it, the world too (a wrapper's
+      -- runs, named otherwise than its file)
+      settings (take 2 sampleLines ++ [ofProgram "q" (sampleLines !! 2), noResult "q" (Just "q.sh") 7]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=default speed=0.1  (2 runs, 1 failed)" ]
+      settings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      -- a line that names only the file (an older sweep's) is filed with
+      -- the one program the other lines name as their result lines do, as
+      -- before; with two so named, it is a setting of its own
+      settings (take 2 sampleLines ++ [noResult "p.sh" Nothing 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "r.sh" Nothing 9]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=(not given) speed=0.1  (1 runs, 1 failed)"
+        , "== program=r.sh world=(not given) speed=0.1  (1 runs, 1 failed)" ]
+      -- the same run named both ways: merged twice
+      headings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") 7, noResult "p.sh" Nothing 7]) `shouldSatisfy` \hs -> case hs of
+        [h] -> "refused: the run world=(not given) speed=0.1 seed 7 is on two lines for a run with no result" `isPrefixOf` h
+        _   -> False
+      -- an executable that is not a string: not the sweep's line
+      mergeResults (replace "\"executable\":\"q.sh\"" "\"executable\":1" (noResult "q" (Just "q.sh") 7))
+        `shouldSatisfy` either ("line 1: not a result line of a sweep" `isPrefixOf`) (const False)
 
     it "refuses a line that is neither a run's result line nor the sweep's line for a run with no result" $ do
       let failureLine = "{\"program\":\"p\",\"world\":\"default\",\"seed\":\"007\",\"params\":{\"speed\":\"1\"}"
@@ -819,6 +880,35 @@ spec = do
       table `shouldSatisfy` ("FAILED seed 2: the controller of SimbotA 1 failed at t = 0.500" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 3: exit code 2, no result" `isInfixOf`)
       table `shouldSatisfy` ("FAILED seed 4: exit code 1: " `isInfixOf`)
+
+    it "names a run with no result by its program as the program's result lines do, so that the merge files it with that program's runs, never another's (a program every run of which wrote no result went under the one other program merged)" $
+      withTempDir $ \dir -> do
+        requireParallel
+        sweep <- script "sweep"
+        a <- namedProgram dir "a.sh" "robot-a"
+        b <- namedProgram dir "b.sh" "robot-b"
+        _ <- runScript [] sweep ["--seeds", "1..2", a, dir </> "a.jsonl", "--", "--seconds", "1"]
+        -- every run of b stops at a flag of its job line: no result line at all
+        writeFile (dir </> "jobs") "--seed 1 --no-such-flag\n--seed 2 --no-such-flag\n"
+        (code, _, _) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", b, dir </> "b.jsonl", "--", "--seconds", "1"]
+        code `shouldBe` ExitFailure 1
+        bs <- map parsed . lines <$> readFile (dir </> "b.jsonl")
+        map (\r -> (field ["program"] r, field ["executable"] r)) bs `shouldBe` replicate 2 (JString "robot-b", JString "b.sh")
+        table <- merged dir [dir </> "a.jsonl", dir </> "b.jsonl"]
+        filter (\l -> "== " `isPrefixOf` l && not ("over all other settings" `isInfixOf` l)) (lines table) `shouldBe`
+          [ "== program=robot-a world=program  (2 runs, 0 failed)", "== program=robot-b world=(not given)  (2 runs, 2 failed)" ]
+        -- a program that writes no result line for the sweep's 0-second
+        -- run (here: exits at once) leaves its name unknown: the line names
+        -- its file alone, as an older sweep's did
+        let c = dir </> "c.sh"
+        writeFile c (unlines [ "#!/bin/bash", "case \" $* \" in *' --seconds 0 '*) exit 0 ;; esac", "exec '" ++ a ++ "' \"$@\"" ])
+        perms <- getPermissions c
+        setPermissions c (setOwnerExecutable True perms)
+        (codeC, _, _) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", c, dir </> "c.jsonl", "--", "--seconds", "1"]
+        codeC `shouldBe` ExitFailure 1
+        cs <- map parsed . lines <$> readFile (dir </> "c.jsonl")
+        map (\r -> (field ["program"] r, either (const Nothing) Just (member "executable" r))) cs
+          `shouldBe` replicate 2 (JString "c.sh", Nothing)
 
     it "a run that writes no result is filed under its setting when a parameter holds a control character (a tab was a space there: a setting of its own)" $ withTempDir $ \dir -> do
       requireParallel
@@ -1256,6 +1346,32 @@ spec = do
         rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
         map (field ["params", "tag"]) rs `shouldBe` map JString ["\"a,b\"", "c"]
 
+    it "reads a Char literal in a list of --param values as Haskell's read does: '\"' leaves no quote open (it was refused)" $
+      withTempDir $ \dir -> do
+        sweep <- script "sweep"
+        let listed args = do
+              (code, out, err) <- runScriptCode [] sweep ("--list" : args)
+              pure (code, lines out, err)
+            refusedOpen p = do
+              (code, out, err) <- listed ["--param", p]
+              (code, out, "that is not closed" `isInfixOf` err) `shouldBe` (ExitFailure 2, [], True)
+        listed ["--param", "c='a','\"'"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --param 'c='\\''a'\\'''", "--seed 0 --param 'c='\\''\"'\\'''"], "")
+        -- (escaped, and in a value beside a string)
+        (code, out, _) <- listed ["--param", "c='\\\"','\\\\',Just '\"'", "--param", "s=\"'\",\"x\" '\"'"]
+        (code, length out) `shouldBe` (ExitSuccess, 6)
+        -- what a comma leaves open is still refused: a string after a Char
+        -- literal, and a quote after a name's ' (x' is a name: its " opens
+        -- a string)
+        refusedOpen "c='\"'\"a,b\""
+        refusedOpen "c=x'\"',y"
+        -- and a run gets the Char literals as given
+        requireParallel
+        prog <- childScript dir "program"
+        _ <- runScript [] sweep ["--param", "tag='a','\"'", prog, dir </> "r.jsonl", "--", "--seconds", "0.1"]
+        rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+        map (field ["params", "tag"]) rs `shouldBe` map JString ["'a'", "'\"'"]
+
     it "interrupted (SIGTERM to its process group, as at Slurm's time limit): a line for every run, a message, no temporary file" $ withTempDir $ \dir -> do
       requireParallel
       prog <- childScript dir "program"
@@ -1285,7 +1401,7 @@ spec = do
       let prog = dir </> "slow"
           results = dir </> "r.jsonl"
       writeFile prog (unlines [ "#!/bin/bash"
-                              , "case \" $* \" in *' --dump-world '*) exit 0 ;; esac   # (the sweep's check of the flags)"
+                              , "case \" $* \" in *' --dump-world '*|*' --seconds 0 '*) exit 0 ;; esac   # (the sweep's checks: of the flags, of the name)"
                               , "trap 'sleep 2; exit 143' TERM"
                               , ": > '" ++ dir </> "started" ++ "'/$$"
                               , "sleep 1000 & wait" ])

@@ -48,8 +48,8 @@ import           AFrobRobotSim.WorldFile.Lexical (integerLit, utf8Text)
 ------------------------------------------------------------------------------
 -- Runs
 
--- The setting of a run: the program (under 'programKey'), the world,
--- then the parameters by name.
+-- The setting of a run: the program (under 'programKey'), the world
+-- (under 'worldKey'), then the parameters by name.
 type Setting = [(String, String)]
 
 -- The name under which a setting holds its program: a NUL and
@@ -59,6 +59,14 @@ type Setting = [(String, String)]
 -- it ('showSetting').
 programKey :: String
 programKey = "\NULprogram"
+
+-- The name under which a setting holds its world: a NUL and @world@, as
+-- 'programKey' is the program's, so that a parameter named @world@
+-- (@--param world=3@) is neither taken for the world nor mixed with it
+-- in the settings that vary; it sorts after 'programKey' and before
+-- every parameter's name: the world second, as the table names it.
+worldKey :: String
+worldKey = "\NULworld"
 
 -- The program of a setting.
 programOf :: Setting -> String
@@ -89,12 +97,16 @@ unnamedWorld = "\NUL"
 ownWorlds :: [String]
 ownWorlds = ["default", "program"]
 
--- One line, read: the setting, the seed, the time step and duration of a
--- result line (their JSON text; 'Nothing' for the sweep's line for a run
--- with no result), the failure, and every outcome's value ('Nothing':
--- @null@, which is how a result line writes a number that is not finite).
+-- One line, read: the setting, whether its program is named as the
+-- program's result lines name it (a result line's is; the sweep's line
+-- for a run with no result says so by its @executable@), the seed, the
+-- time step and duration of a result line (their JSON text; 'Nothing' for
+-- the sweep's line for a run with no result), the failure, and every
+-- outcome's value ('Nothing': @null@, which is how a result line writes a
+-- number that is not finite).
 data Run = Run
   { runSetting :: Setting
+  , runNamed   :: Bool
   , runSeed    :: Seed
   , runSteps   :: Maybe (String, String, String)
   , runFailure :: Maybe String
@@ -106,7 +118,11 @@ data Run = Run
 -- a number, @dt@, @seconds@, @params@ and the @outcome@ object with
 -- @simulated@, @steps@, @interrupted@, @failure@, @robots@ and @scores@),
 -- or the line @scripts/sweep@ writes for a run that wrote none
--- (@program@, @world@ a string or @null@ when the run got no @--world@:
+-- (@program@: the program as its result lines name it, when the line has
+-- @executable@ too, the name of the file the sweep ran; without
+-- @executable@, from an older sweep or one that could not learn the
+-- program's name, @program@ is that file's name; then
+-- @world@ a string or @null@ when the run got no @--world@:
 -- @default@ or @program@ there, from an older sweep, is the world file of
 -- that name, which the result line calls @./default@ or @./program@;
 -- @seed@ a number or a string (a string that @--seed@ reads as a whole
@@ -135,7 +151,7 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
     JObject kvs -> mapM (\(k, x) -> (,) k <$> asString x) kvs
     _           -> Left "\"params\" is not an object"
   seedValue <- member "seed" v
-  let setting = (programKey, program) : ("world", world) : sortOn fst params
+  let setting = (programKey, program) : (worldKey, world) : sortOn fst params
   case lookup "outcome" fields of
     Nothing -> do
       -- the sweep's line for a run with no result
@@ -145,7 +161,8 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
         _         -> Left "\"seed\" is neither a number nor a string"
       _       <- member "flags" v >>= asString
       failure <- member "failure" v >>= asString
-      pure (Run setting seed Nothing (Just failure) [])
+      named   <- maybe (Right False) (fmap (const True) . asString) (lookup "executable" fields)
+      pure (Run setting named seed Nothing (Just failure) [])
     Just out -> do
       seed <- case seedValue of
         JNumber x -> Right (numberSeed x)
@@ -169,7 +186,7 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
             (Just f, _)   -> Just f
             (_, True)     -> Just "interrupted"
             _             -> Nothing
-      pure (Run setting seed (Just (dt, seconds, noise)) fault
+      pure (Run setting True seed (Just (dt, seconds, noise)) fault
                 ([("simulated", simulated), ("steps", steps)] ++ perRobot ++ scores))
   where
     -- (a seed is a whole number of at most 2^53, as --seed takes it)
@@ -203,30 +220,32 @@ finite JNull = Right Nothing
 finite x     = (\d -> if isNaN d || isInfinite d then Nothing else Just (d + 0)) <$> asNumber x
 
 -- | The merged lines so far: the numbers of the outcomes' names, each
--- group's tallies, and the runs counted.
-data Merge = Merge !(M.Map String Int) !(M.Map Setting Group) !Int
+-- group's tallies, the programs that lines name as their result lines
+-- do ('runNamed'), and the runs counted.
+data Merge = Merge !(M.Map String Int) !(M.Map Setting Group) !(S.Set String) !Int
 
 -- | No line merged yet.
 emptyMerge :: Merge
-emptyMerge = Merge M.empty M.empty 0
+emptyMerge = Merge M.empty M.empty S.empty 0
 
 -- | How many runs are merged so far (lines, blank ones not counted): 0
 -- is the one case 'renderMerge' refuses for having nothing to show.
 mergedRuns :: Merge -> Int
-mergedRuns (Merge _ _ n) = n
+mergedRuns (Merge _ _ _ n) = n
 
 -- Add a run, or say why not: a run of the same setting and seed (and,
 -- both being result lines, time step and duration) is there already.
 addRun :: Merge -> Run -> Either String Merge
-addRun (Merge names groups n) run
+addRun (Merge names groups named n) run
   | repeated  = Left ("the run " ++ showSetting programsSoFar (runSetting run) ++ " seed " ++ seedText ++ steps
                       ++ " is on an earlier line too (a result file merged twice, a run merged with its"
                       ++ " rerun, or runs told apart only by flags a result line does not record, such as"
                       ++ " --keys: give each such run a --param that names its setting):"
                       ++ " each run may be merged once")
-  | otherwise = Right (Merge names' (M.insert (runSetting run) g' groups) (n + 1))
+  | otherwise = Right (Merge names' (M.insert (runSetting run) g' groups) named' (n + 1))
   where
     seed@(Seed seedText _) = runSeed run
+    named' = if runNamed run then S.insert (programOf (runSetting run)) named else named
     g = M.findWithDefault emptyGroup (runSetting run) groups
     -- (the program named when the lines so far name more than one)
     programsSoFar = any ((/= programOf (runSetting run)) . programOf) (M.keys groups)
@@ -312,17 +331,18 @@ mergeResults text = do
 -- | The table of the merged lines: per setting, the mean, least and
 -- greatest of every outcome and the failed runs, then (when two or more
 -- settings vary) the same per value of each ('Left' when no line was
--- merged). The sweep's lines for runs with no result are filed first
--- under the program of the result lines (the sweep names the
--- executable it ran, which a program may name otherwise), then,
--- those that got no @--world@ (@"world": null@), under the world the
--- result lines of their program name for such runs (@"program"@ or
+-- merged). A sweep's line for a run with no result is under the program
+-- it names, as the program's result lines name it; one that names only
+-- the file the sweep ran (no @executable@: an older sweep's) is first
+-- filed under the program of the other lines ('filePrograms'). Then,
+-- those that got no @--world@ (@"world": null@) are filed under the world
+-- the result lines of their program name for such runs (@"program"@ or
 -- @"default"@), when they name one; otherwise under @world=(not given)@
 -- ('Left' when a run so filed is a result line's too).
 renderMerge :: Merge -> Either String String
-renderMerge (Merge names groups0 n)
+renderMerge (Merge names groups0 named n)
   | n == 0    = Left "no result lines"
-  | otherwise = tableOf names <$> (filePrograms groups0 >>= fileUnnamed)
+  | otherwise = tableOf names <$> (filePrograms named groups0 >>= fileUnnamed)
 
 -- Whether the groups name more than one program (and the table names
 -- the program of each setting).
@@ -351,27 +371,29 @@ tableOf names groups = unlines (map printableLine
               ++ " runs of different dt, seconds or odometry noise, which the table does not tell apart (give"
               ++ " each a --param to tell them apart)" | nMixed > 0 ]
 
--- The groups with the sweep's lines for runs with no result filed under
--- the program the result lines name, when they name one: the sweep names
--- the program it ran by its file's name (a wrapper script's, say), and
--- the program's result lines may name it otherwise ('optProgram':
--- @afrp-examples rcReverse@). The groups of a program that some result
--- line names stay as they are, and so do all groups when the result lines
--- name no program (every run failed) or several (then a line for a run
--- with no result of a program no result line names is a setting of its
--- own). A run so filed that a result line has too (the same setting and
--- seed) is refused, as 'addRun' refuses a run merged twice. (The lines
--- do not say which sweep wrote them, so a program whose every run
--- failed, merged with another's results, has its runs filed under that
--- other program: the README says to merge such sweeps apart.)
-filePrograms :: M.Map Setting Group -> Either String (M.Map Setting Group)
-filePrograms groups = case S.toList withResults of
+-- The groups, given the programs that lines name as their result lines do
+-- ('runNamed'), with the sweep's lines for runs with no result that name
+-- another program filed under the one program so named, when there is
+-- one. Such a line names only the file the sweep ran (a wrapper
+-- script's, say, @rev.sh@), which the program's result lines may name
+-- otherwise ('optProgram': @afrp-examples rcReverse@): it has no
+-- @executable@, being an older sweep's, or one whose program wrote no
+-- result line for the sweep's 0-second run. The groups of a program so
+-- named stay as they are, and so do all groups when no line names a
+-- program so or several do (then a line that names a program no other
+-- line names is a setting of its own). A run so filed that a line has too
+-- (the same setting and seed) is refused, as 'addRun' refuses a run
+-- merged twice. (Such a line does not say which program's result lines it
+-- belongs with: the lines of a program whose every run wrote no result
+-- and that name only its file, merged with one other program's lines,
+-- are filed under that other program. A line with @executable@ is
+-- never filed so.)
+filePrograms :: S.Set String -> M.Map Setting Group -> Either String (M.Map Setting Group)
+filePrograms named groups = case S.toList named of
   [only] -> foldM (\acc (setting, g) -> joinFiled False (withProgram only setting) g acc) kept (M.toList strays)
   _      -> Right groups
   where
-    withResults = S.fromList [ programOf s | (s, g) <- M.toList groups, hasResults g ]
-    hasResults g = not (M.null (gBySteps g))   -- (every result line is in it)
-    (strays, kept) = M.partitionWithKey (\s _ -> programOf s `S.notMember` withResults) groups
+    (strays, kept) = M.partitionWithKey (\s _ -> programOf s `S.notMember` named) groups
 
 -- The groups with the runs of an unnamed world ('unnamedWorld') filed
 -- under the world the result lines of their program name for a run
@@ -386,7 +408,7 @@ fileUnnamed groups = foldM file named (M.toList unnamed)
     (unnamed, named) = M.partitionWithKey (\k _ -> worldOf k == Just unnamedWorld) groups
     many = manyPrograms groups
     worldOf setting = case setting of
-      _ : ("world", w) : _ -> Just w
+      _ : (k, w) : _ | k == worldKey -> Just w
       _                    -> Nothing
     -- (the worlds of each program's own that its lines name)
     owns = M.fromListWith S.union [ (programOf k, S.singleton w) | k <- M.keys named, Just w <- [worldOf k]
@@ -395,8 +417,8 @@ fileUnnamed groups = foldM file named (M.toList unnamed)
       [own] -> joinFiled many (withWorld own setting) g acc
       _     -> Right (M.insert setting g acc)
     withWorld w setting = case setting of
-      p : ("world", _) : rest -> p : ("world", w) : rest
-      _                       -> setting
+      p : (k, _) : rest | k == worldKey -> p : (k, w) : rest
+      _                                 -> setting
 
 -- A group filed under a setting (with @many@: the lines name more than
 -- one program), joined with the group there, if any; refused when a run
@@ -425,14 +447,18 @@ joinFiled many setting g acc = case M.lookup setting acc of
 -- with no result and no @--world@ that 'fileUnnamed' could not file is
 -- @world=(not given)@. The program is named first, @program=my-robot@,
 -- when @many@ holds (the lines name more than one program), and left out
--- otherwise.
+-- otherwise. A parameter named @world@ or @program@ has its name in
+-- quotes, @"world"=3@, so that it never reads as the run's world or
+-- program.
 showSetting :: Bool -> Setting -> String
 showSetting many g = unwords (map pair (filter shownPair g))
   where
     shownPair (k, _) = many || k /= programKey
     pair (k, v)
       | k == programKey                     = "program=" ++ shown v
-      | k == "world" && v == unnamedWorld   = "world=(not given)"
+      | k == worldKey && v == unnamedWorld  = "world=(not given)"
+      | k == worldKey                       = "world=" ++ shown v
+      | k `elem` ["world", "program"]       = quote k ++ "=" ++ shown v
       | otherwise                           = shown k ++ "=" ++ shown v
     shown t | not (null t) && all plain t = t
             | otherwise                   = quote t
