@@ -1,12 +1,20 @@
 -- | @afrp-examples@'s command line: @--list@, @--help@, or an example's
 -- name and then the simulator's flags ('exampleCommand'). In a module of
 -- its own, not in @Main@, so that the tests run it as the executable does.
+--
+-- @--help@ (or @-h@) is read as a simulation's command line reads it
+-- ('AFrobRobotSim.parseSimFlags'): from the left, the first argument that
+-- is @--help@ or a fault decides. So @afrp-examples --help ...@,
+-- @afrp-examples --list --help@ and @afrp-examples NAME --seconds 3
+-- --help@ print a usage and exit with 0, and @afrp-examples nosuch
+-- --help@ and @afrp-examples NAME --frobnicate --help@ are refused (exit
+-- 2).
 module Examples.CommandLine
   ( examplesMain
   ) where
 
 import           Data.Char          (toLower)
-import           Data.List          (isPrefixOf, sortOn)
+import           Data.List          (intercalate, isPrefixOf, sortOn)
 import           System.Environment (getArgs, getProgName)
 import           System.Exit        (ExitCode (..), exitWith)
 
@@ -16,8 +24,10 @@ import           Examples.Registry  (allExamples, exampleCommand, exampleListing
 import           Examples.Types
 
 -- | @afrp-examples@ itself: its command line read, the example run (or
--- listed, or the usage printed), and exit code 2 for a command line it
--- refuses, with the message on standard error.
+-- listed, or a usage printed: the program's, the simulator's named for a
+-- robot example, a line on what a signal-function example is), and exit
+-- code 2 for a command line it refuses, with the message on standard
+-- error.
 examplesMain :: IO ()
 examplesMain = do
   args <- getArgs
@@ -29,10 +39,13 @@ run :: String -> [String] -> IO ()
 run prog args =
   case args of
     []             -> usageError prog "give an example name, or --list"
+    flag : _
+      | isHelp flag -> putStr (helpText prog)
     ["--list"]     -> putStr (exampleListing allExamples)
-    ["--help"]     -> putStrLn (helpText prog)
+    "--list" : flag : _
+      | isHelp flag -> putStr (helpText prog)
     flag : extra
-      | flag `elem` ["--list", "--help"] -> usageError prog (flag ++ " takes nothing after it, got " ++ unwords (map show extra))
+      | flag == "--list" -> usageError prog (flag ++ " takes nothing after it, got " ++ unwords (map show extra))
       | "-" `isPrefixOf` flag -> usageError prog ("the flag " ++ show flag ++ " is not one of " ++ prog ++ "'s own (--list, "
                                                   ++ "--help); a simulator flag comes after an example's name ("
                                                   ++ prog ++ " NAME " ++ flag ++ " ...)")
@@ -46,8 +59,23 @@ runExample prog e flags = case (e, flags) of
   -- (a signal-function example with flags is a Left)
   _ -> case exampleCommand prog e flags of
     Left err            -> usageError prog err
-    Right ShowHelp      -> putStrLn (usage (prog ++ " " ++ exName e))
+    Right ShowHelp      -> putStrLn (exampleHelp prog e)
     Right (RunWith opt) -> runSimRefereedWith opt (exReferee e) (Just (exWorld e)) (exControllerA e) (exControllerB e)
+
+-- (@--help@ and @-h@, wherever a runSim program takes them)
+isHelp :: String -> Bool
+isHelp = (`elem` ["--help", "-h"])
+
+-- @NAME --help@: the simulator's usage named for a robot example; what a
+-- signal-function example is.
+exampleHelp :: String -> Example -> String
+exampleHelp prog e = case e of
+  RobotExample {}  -> usage (prog ++ " " ++ exName e)
+  SignalExample {} -> intercalate "\n"
+    [ "usage: " ++ prog ++ " " ++ exName e
+    , ""
+    , exDescription e
+    , "A signal-function example: it prints a short report, and takes no flags." ]
 
 suggestion :: String -> String
 suggestion name = case sortOn length [ exName e | e <- allExamples, lower name `isPrefixOf` lower (exName e) ] of

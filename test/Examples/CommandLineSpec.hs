@@ -4,7 +4,8 @@
 -- its exit codes and its output are the executable's.
 module Examples.CommandLineSpec (spec, childVariable, child) where
 
-import           Data.List          (isInfixOf, isPrefixOf)
+import           Control.Monad      (forM_)
+import           Data.List          (isInfixOf, isPrefixOf, isSuffixOf)
 import           System.Environment (getEnvironment, getExecutablePath, withProgName)
 import           System.Exit        (ExitCode (..))
 import           System.Process     (CreateProcess (..), proc, readCreateProcessWithExitCode)
@@ -12,6 +13,8 @@ import           Test.Hspec
 
 import           AFrobRobotSim        (usage)
 import           Examples.CommandLine (examplesMain)
+import           Examples.Registry    (allExamples)
+import           Examples.Types       (Example (..))
 
 -- | The environment variable that makes the test binary run 'child'.
 childVariable :: String
@@ -44,3 +47,23 @@ spec =
         (ExitFailure 2, "", "afrp-examples: unknown argument \"--frobnicate\" (see --help)\n")
       examples ["nosuch", "--help"] `shouldReturn`
         (ExitFailure 2, "", "afrp-examples: no example named \"nosuch\" (--list shows them all)\n")
+    it "--help or -h first prints the usage, exit 0, whatever follows, as a simulation's --help does (-h was refused, and anything after --help; exit 2)" $ do
+      (_, help, _) <- examples ["--help"]
+      forM_ [["-h"], ["--help", "rcReverse"], ["-h", "--list"], ["--help", "--frobnicate"]] $ \args ->
+        examples args `shouldReturn` (ExitSuccess, help, "")
+    it "--list then --help or -h prints the usage, exit 0 (it was refused); --list then anything else is refused" $ do
+      (_, help, _) <- examples ["--help"]
+      examples ["--list", "--help"] `shouldReturn` (ExitSuccess, help, "")
+      examples ["--list", "-h", "rcReverse"] `shouldReturn` (ExitSuccess, help, "")
+      examples ["--list", "rcReverse", "--help"] `shouldReturn`
+        (ExitFailure 2, "", "afrp-examples: --list takes nothing after it, got \"rcReverse\" \"--help\"\n")
+    it "a signal-function example's --help says what it is and that it takes no flags, exit 0 (it was refused: exit 2); a flag before it is refused" $ do
+      let described = head [ exDescription e | e <- allExamples, exName e == "xSF" ]
+          help = "usage: afrp-examples xSF\n\n" ++ described ++ "\nA signal-function example: it prints a short report, and takes no flags.\n"
+      examples ["xSF", "--help"] `shouldReturn` (ExitSuccess, help, "")
+      examples ["xSF", "-h", "--seconds", "3"] `shouldReturn` (ExitSuccess, help, "")
+      examples ["xSF", "--seconds", "3", "--help"] `shouldReturn`
+        (ExitFailure 2, "", "afrp-examples: xSF is a signal-function example; it takes no flags\n")
+    it "the usage ends with its last line, as the simulator's does (it ended with a blank line)" $ do
+      (_, help, _) <- examples ["--help"]
+      help `shouldSatisfy` ("report.\n" `isSuffixOf`)
