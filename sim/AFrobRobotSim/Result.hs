@@ -219,12 +219,12 @@ paramOr name def = lookupSimParam name >>= maybe (pure def) (readOrStop name)
 -- | @paramOrFrom flags name def@: 'paramOr' reading the @--param@s of the
 -- given flags, not of the program's command line: for a program whose
 -- command line is its own, with 'AFrobRobotSim.runSim''s flags after its
--- own arguments (@afrp-examples NAME [flags]@ passes the flags after the
--- name). The name is counted as asked for, as 'paramOr' counts it, so
+-- own arguments (such as @afrp-examples NAME [flags]@: the flags after
+-- the name). The name is counted as asked for, as 'paramOr' counts it, so
 -- that a run with these flags ('AFrobRobotSim.runSimWith') does not warn
 -- of it ('unreadParams'); 'simParamsOf' counts none. A value that does
--- not read, or that the type cannot hold, stops the program with
--- 'paramOr''s message and exit code 2, and so does a flag that
+-- not read, or that the type cannot hold, stops the program as
+-- 'paramOr' stops it (its message, exit code 2), and so does a flag that
 -- 'AFrobRobotSim.runSim' would refuse (@--param =5@, an unknown flag),
 -- with its message. @--help@ among the flags is left to the program, whose
 -- usage is its own (@afrp-examples NAME --help@ names the example): the
