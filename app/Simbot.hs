@@ -8,7 +8,8 @@
 -- @simbot --replay-from RUN.jsonl --replay OUT.html@ simulates nothing: it
 -- turns a run log (written with @--log@) into a replay page
 -- ('AFrobRobotSim.Replay.CommandLine.replayFromMain': exit code 2 when it refuses
--- before writing, 1 when a write fails).
+-- before writing, 1 when a write fails; @--help@ prints the usage, exit
+-- code 0).
 module Main (main) where
 
 import           System.Environment (getArgs)

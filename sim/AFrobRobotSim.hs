@@ -46,6 +46,7 @@ module AFrobRobotSim
   , lookupSimParam
   , argText
   , paramOr
+  , paramOrFrom
   , readSimParam
   , defaultWorld
     -- ** A referee: the balls' rule, scores and goals
@@ -125,8 +126,8 @@ module AFrobRobotSim
 
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Options
-import           AFrobRobotSim.Result      (getSimParams, lookupSimParam, paramOr, readSimParam,
-                                            simParamsOf)
+import           AFrobRobotSim.Result      (getSimParams, lookupSimParam, paramOr, paramOrFrom,
+                                            readSimParam, simParamsOf)
 import           AFrobRobotSim.Balls     (ballFriction, ballRestitution)
 import           AFrobRobotSim.Render    (RenderStyle (..), Scene (..), defaultRenderStyle, frameSize,
                                           renderPPM, renderSVG)

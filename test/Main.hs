@@ -69,6 +69,7 @@ import qualified AFrobRobotSim.Shapes.BoxSpec
 import qualified AFrobRobotSim.Shapes.CollisionSpec
 import qualified AFrobRobotSim.Shapes.RaySpec
 import qualified AFrobRobotSim.SweepSpec
+import qualified Examples.CommandLineSpec
 import qualified Examples.Exercises14and15Spec
 import qualified Examples.Exercises1to6Spec
 import qualified Examples.Exercises7to13Spec
@@ -93,7 +94,8 @@ import           System.Environment (lookupEnv)
 main :: IO ()
 main = lookupEnv AFrobRobotSim.SweepSpec.childVariable >>= maybe runChild AFrobRobotSim.SweepSpec.child
   where runChild = lookupEnv AFrobRobotSim.RunSpec.childVariable >>= maybe loopChild AFrobRobotSim.RunSpec.child
-        loopChild = lookupEnv AFRP.ResidencySpec.childVariable >>= maybe specs AFRP.ResidencySpec.child
+        loopChild = lookupEnv AFRP.ResidencySpec.childVariable >>= maybe examplesChild AFRP.ResidencySpec.child
+        examplesChild = lookupEnv Examples.CommandLineSpec.childVariable >>= maybe specs Examples.CommandLineSpec.child
 
 specs :: IO ()
 specs = hspec $ do
@@ -177,6 +179,7 @@ specs = hspec $ do
   describe "examples: section 2"     Examples.Section2Spec.spec
   describe "examples: section 3"     Examples.Section3Spec.spec
   describe "examples: the registry"  Examples.RegistrySpec.spec
+  describe "examples: the command line" Examples.CommandLineSpec.spec
   describe "exercises 1-6"           Examples.Exercises1to6Spec.spec
   describe "exercises 7-13"          Examples.Exercises7to13Spec.spec
   describe "exercises 14 and 15"     Examples.Exercises14and15Spec.spec

@@ -68,10 +68,14 @@ exampleListing es = unlines $
 -- @prog@ and the example's name ('optProgram': @afrp-examples rcReverse@),
 -- so that the result lines of several examples, each in its own world,
 -- are told apart. A signal-function example takes no flags: a 'Left'
--- saying so.
+-- saying so, but for @--help@ or @-h@ first, 'ShowHelp' (as a robot
+-- example's command line asks for the usage at @--help@, unless a flag
+-- before it is refused: 'AFrobRobotSim.parseSimFlags').
 exampleCommand :: String -> Example -> [String] -> Either String Command
 exampleCommand prog e flags = case e of
-  SignalExample {} -> Left (exName e ++ " is a signal-function example; it takes no flags")
+  SignalExample {}
+    | flag : _ <- flags, flag `elem` ["--help", "-h"] -> Right ShowHelp
+    | otherwise -> Left (exName e ++ " is a signal-function example; it takes no flags")
   RobotExample {}  -> fmap (named . scripted)
                            (parseSimArgs defaultSimOptions { optSeconds = exSeconds e } flags)
   where

@@ -51,12 +51,28 @@
 --   speed <- 'paramOr' \"speed\" 0.5
 --   runSim Nothing (wander speed) (wander speed)
 -- @
+--
+-- A program whose command line is its own, with 'AFrobRobotSim.runSim''s
+-- flags after its own arguments (as @afrp-examples NAME [flags]@), reads
+-- a parameter of those flags with 'paramOrFrom', which counts it as read
+-- as 'paramOr' does:
+--
+-- @
+-- main = do
+--   args <- getArgs
+--   case args of
+--     name : flags -> do
+--       speed <- 'paramOrFrom' flags \"speed\" 0.5
+--       ...   -- the flags parsed with parseSimArgs, then runSimWith
+--     [] -> ...
+-- @
 module AFrobRobotSim.Result
   ( -- * Parameters
     getSimParams
   , simParamsOf
   , lookupSimParam
   , paramOr
+  , paramOrFrom
   , readSimParam
   , unreadParams
     -- * The result line
@@ -103,7 +119,8 @@ import           AFrobRobotSim.Simulator
 -- with 'AFrobRobotSim.runSimWith' may parse its flags over settings of
 -- its own, where they fit when the defaults' would not. A program whose command line is not 'AFrobRobotSim.runSim''s
 -- (as @afrp-examples NAME [flags]@ is) reads the parameters of its
--- flags with 'simParamsOf' or 'readSimParam' instead.
+-- flags with 'paramOrFrom' instead (or 'simParamsOf', which counts none
+-- as read).
 getSimParams :: IO [(String, String)]
 getSimParams = atomicModifyIORef' paramReads (\(_, ns) -> ((True, ns), ())) >> commandLineParams
 
@@ -113,19 +130,26 @@ getSimParams = atomicModifyIORef' paramReads (\(_, ns) -> ((True, ns), ())) >> c
 commandLineParams :: IO [(String, String)]
 commandLineParams = do
   args <- getArgs
-  case parseSimFlags defaultSimOptions args of
-    Right (RunWith o) -> pure (optParams o)
-    Right ShowHelp    -> do
-      tolerantOutput
-      prog <- getProgName
-      putStrLn (usage prog)
-      endOutput prog
-      exitWith ExitSuccess
-    Left err -> do
-      tolerantOutput
-      prog <- getProgName
-      putErr (prog ++ ": " ++ err ++ "\n")
-      exitWith (ExitFailure 2)
+  flagParams args $ do
+    tolerantOutput
+    prog <- getProgName
+    putStrLn (usage prog)
+    endOutput prog
+    exitWith ExitSuccess
+
+-- The @--param@s of a command line of 'AFrobRobotSim.runSim''s flags; at
+-- @--help@, the given action (it gives none); a flag that
+-- 'parseSimFlags' refuses stops the program, with its message on
+-- standard error and exit code 2.
+flagParams :: [String] -> IO [(String, String)] -> IO [(String, String)]
+flagParams args atHelp = case parseSimFlags defaultSimOptions args of
+  Right (RunWith o) -> pure (optParams o)
+  Right ShowHelp    -> atHelp
+  Left err -> do
+    tolerantOutput
+    prog <- getProgName
+    putErr (prog ++ ": " ++ err ++ "\n")
+    exitWith (ExitFailure 2)
 
 -- The parameters this program has asked for: all of them ('getSimParams'),
 -- or those named ('lookupSimParam', 'paramOr'), for 'unreadParams'.
@@ -134,9 +158,9 @@ paramReads = unsafePerformIO (newIORef (False, []))
 {-# NOINLINE paramReads #-}
 
 -- | The @--param@s of these options that the program has not asked for
--- so far (by 'paramOr' or 'lookupSimParam'; none once it has asked for
--- them all with 'getSimParams'), and the names it has asked for, in
--- order. 'AFrobRobotSim.runSim' warns of the first list, which is usually
+-- so far (by 'paramOr', 'paramOrFrom' or 'lookupSimParam'; none once it
+-- has asked for them all with 'getSimParams'), and the names it has asked
+-- for, in order. 'AFrobRobotSim.runSim' warns of the first list, which is usually
 -- a misspelled name: a run that ignores a parameter silently is a sweep
 -- of identical runs. The record is the process's: a program that reads
 -- its parameters otherwise ('simParamsOf' or 'readSimParam' on its own
@@ -151,7 +175,9 @@ unreadParams o = do
 
 -- | The @--param@ pairs of a command line (as 'getSimParams', purely; a
 -- command line whose flags 'parseSimFlags' refuses, or @--help@, gives
--- @[]@).
+-- @[]@). No name is counted as asked for ('unreadParams'): a program
+-- that reads a parameter of its own arguments, and means
+-- 'AFrobRobotSim.runSim' not to warn of it, reads it with 'paramOrFrom'.
 simParamsOf :: [String] -> [(String, String)]
 simParamsOf args = case parseSimFlags defaultSimOptions args of
   Right (RunWith o) -> optParams o
@@ -166,8 +192,12 @@ simParamsOf args = case parseSimFlags defaultSimOptions args of
 -- program here, as 'getSimParams' does.
 lookupSimParam :: String -> IO (Maybe String)
 lookupSimParam name = do
-  atomicModifyIORef' paramReads (\(e, ns) -> ((e, name : ns), ()))
+  askedFor name
   lookup name <$> commandLineParams
+
+-- Count a parameter as asked for ('unreadParams').
+askedFor :: String -> IO ()
+askedFor name = atomicModifyIORef' paramReads (\(e, ns) -> ((e, name : ns), ()))
 
 -- | @paramOr name def@: the @--param name=VALUE@ of this program's
 -- command line read with 'Read' (a 'String' parameter must then be
@@ -184,18 +214,42 @@ lookupSimParam name = do
 -- > prog: --param speed=fast: cannot read the value "fast" (write it as Haskell's read reads it: 0.5, 3, True, "quoted text")
 -- > prog: --param n=99999999999999999999: the value "99999999999999999999" is out of range for this parameter (it would read as 7766279631452241919)
 paramOr :: (Read a, Show a) => String -> a -> IO a
-paramOr name def = do
-  mv <- lookupSimParam name
-  case mv of
-    Nothing -> pure def
-    Just v  -> do
-      r <- try (evaluate (readSimParam name v))
-      case r of
-        Right (Right x)  -> pure x
-        Right (Left msg) -> refuse msg
-        Left (e :: SomeException) ->
-          refuse ("--param " ++ name ++ "=" ++ v ++ ": the value " ++ show v ++ " cannot be made: "
-                  ++ displayException e)
+paramOr name def = lookupSimParam name >>= maybe (pure def) (readOrStop name)
+
+-- | @paramOrFrom flags name def@: 'paramOr' reading the @--param@s of the
+-- given flags, not of the program's command line: for a program whose
+-- command line is its own, with 'AFrobRobotSim.runSim''s flags after its
+-- own arguments (such as @afrp-examples NAME [flags]@: the flags after
+-- the name). The name is counted as asked for, as 'paramOr' counts it, so
+-- that a run with these flags ('AFrobRobotSim.runSimWith') does not warn
+-- of it ('unreadParams'); 'simParamsOf' counts none. A value that does
+-- not read, or that the type cannot hold, stops the program as
+-- 'paramOr' stops it (its message, exit code 2), and so does a flag that
+-- 'AFrobRobotSim.runSim' would refuse (@--param =5@, an unknown flag),
+-- with its message. @--help@ among the flags is left to the program, whose
+-- usage is its own (@afrp-examples NAME --help@ names the example): the
+-- parameter reads as not given, @def@, and the flags after @--help@ are
+-- not read, as 'AFrobRobotSim.runSim' reads none.
+--
+-- > prog wander --param speed=fast
+-- > prog: --param speed=fast: cannot read the value "fast" (write it as Haskell's read reads it: 0.5, 3, True, "quoted text")
+paramOrFrom :: (Read a, Show a) => [String] -> String -> a -> IO a
+paramOrFrom flags name def = do
+  askedFor name
+  params <- flagParams flags (pure [])
+  maybe (pure def) (readOrStop name) (lookup name params)
+
+-- A parameter's value read ('readSimParam'), or the program stopped with
+-- the message, exit code 2.
+readOrStop :: (Read a, Show a) => String -> String -> IO a
+readOrStop name v = do
+  r <- try (evaluate (readSimParam name v))
+  case r of
+    Right (Right x)  -> pure x
+    Right (Left msg) -> refuse msg
+    Left (e :: SomeException) ->
+      refuse ("--param " ++ name ++ "=" ++ v ++ ": the value " ++ show v ++ " cannot be made: "
+              ++ displayException e)
   where
     refuse msg = do
       prog <- getProgName

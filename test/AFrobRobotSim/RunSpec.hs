@@ -1256,6 +1256,21 @@ spec = do
         (code2, "simbot: cannot write the page " `isPrefixOf` err2) `shouldBe` (ExitFailure 2, True)
         (code3, _, err3) <- replayFrom ["--replay-from", dir </> "none.jsonl", "--replay", dir </> "p.html"]
         (code3, (dir </> "none.jsonl") `isInfixOf` err3) `shouldBe` (ExitFailure 2, True)
+    it "simbot --replay-from ... --help: the usage of simbot --help, exit 0, nothing written (it exited 2: \"takes no other argument\"); a fault before --help is still refused" $
+      withTempDir $ \dir -> do
+        self <- getExecutablePath
+        environment <- getEnvironment
+        let replayFrom args = readCreateProcessWithExitCode
+              (proc self args) { env = Just ((childVariable, "replayfrom") : environment) } ""
+            page = dir </> "p.html"
+        replayFrom ["--replay-from", dir </> "x.jsonl", "--replay", page, "--help"]
+          `shouldReturn` (ExitSuccess, usage "simbot" ++ "\n", "")
+        replayFrom ["--replay", page, "--replay-from", dir </> "x.jsonl", "-h"]
+          `shouldReturn` (ExitSuccess, usage "simbot" ++ "\n", "")
+        ("--replay-from F.jsonl --replay OUT.html" `isInfixOf` usage "simbot") `shouldBe` True
+        doesPathExist page `shouldReturn` False
+        replayFrom ["--replay-from", dir </> "x.jsonl", "--seconds", "3", "--help"] `shouldReturn`
+          (ExitFailure 2, "", "simbot: --replay-from FILE.jsonl --replay OUT.html takes no other argument, got \"--seconds\"\n")
     it "a run longer than the page's 9000 frames keeps one frame period in k, evenly; the log keeps them all" $ withTempDir $ \dir -> do
       -- 400 s at 25 frames a second: 10,001 frame periods, so one in 2
       (out, _, r) <- captured (runSimWith (quick dir) { optSeconds = 400, optDt = 0.04, optFrames = False, optQuiet = False

@@ -48,7 +48,11 @@ childVariable = "AFRP_SPEC_SWEEP_CHILD"
 -- starts further right the larger the seed, drives at @--param speed=V@
 -- (default 0.1) and whose controller throws from @--param failAt=T@ on;
 -- @announcer@ reads @--param speed@ with 'paramOr', prints it (an action
--- of its own before 'runSim'), then runs; @merge@ is @afrp-sweep-merge@.
+-- of its own before 'runSim'), then runs; @ownline@ has a command line of
+-- its own, as @afrp-examples@ has, @NAME [flags]@: it reads @--param
+-- speed@ of the flags after the name with 'paramOrFrom', prints it, then
+-- runs those flags ('runSimWith'), or prints its own usage for @--help@;
+-- @merge@ is @afrp-sweep-merge@.
 child :: String -> IO ()
 child "merge" = withProgName "afrp-sweep-merge" sweepMergeMain   -- (signed as the executable is)
 child "program" = do
@@ -71,6 +75,18 @@ child "announcer" = do
   putStrLn ("speed " ++ show speed)
   runSim (Just [OTSimbotA 1 (Point2 0 0) 0]) (\_ -> constant (mrFinalize (ddVelDiff speed speed)))
                                             (\_ -> constant (mrFinalize (ddVelDiff 0 0)))
+child "ownline" = do
+  args <- getArgs
+  case args of
+    name : flags -> do
+      speed <- paramOrFrom flags "speed" (0.1 :: Double)
+      putStrLn (name ++ " speed " ++ show speed)
+      case parseSimArgs defaultSimOptions flags of
+        Right (RunWith o) -> runSimWith o (Just [OTSimbotA 1 (Point2 0 0) 0])
+                               (\_ -> constant (mrFinalize (ddVelDiff speed speed))) (\_ -> constant (mrFinalize (ddVelDiff 0 0)))
+        Right ShowHelp    -> putStrLn ("usage: ownline NAME [flags]")
+        Left err          -> ioError (userError err)
+    [] -> ioError (userError "ownline NAME [flags]")
 child other = ioError (userError ("unknown child " ++ show other))
 
 -- The program run with a @--param@ that 'paramOr' refuses: a usage error,
@@ -675,6 +691,34 @@ spec = do
         -- (a command line runSim takes: the program's own action, then the run)
         (code', out', _) <- readProcessWithExitCode prog ["--param", "speed=0.2", "--seconds", "0.1", "--quiet", "--no-svg", "--no-replay"] ""
         (code', take 1 (lines out')) `shouldBe` (ExitSuccess, ["speed 0.2"])
+    it "paramOrFrom: a program with its own command line (NAME [flags]) reads a --param of its flags, and the run does not warn of it (simParamsOf counted none, and every one was warned of); one it never reads is" $
+      withTempDir $ \dir -> do
+        prog <- childScript dir "ownline"
+        let quiet = ["--seconds", "0.1", "--quiet", "--no-svg", "--no-replay"]
+        (code, out, err) <- readProcessWithExitCode prog (["wander"] ++ quiet ++ ["--param", "speed=0.2"]) ""
+        (code, take 1 (lines out), err) `shouldBe` (ExitSuccess, ["wander speed 0.2"], "")
+        (code', out', err') <- readProcessWithExitCode prog (["wander"] ++ quiet ++ ["--param", "speed=0.3", "--param", "sped=2"]) ""
+        (code', take 1 (lines out')) `shouldBe` (ExitSuccess, ["wander speed 0.3"])
+        map (drop 1 . dropWhile (/= ':')) (lines err') `shouldBe`
+          [" warning: --param sped=2: this program has asked for no parameter named \"sped\" (it reads \"speed\")"]
+        -- (not given: the default, and nothing to warn of)
+        readProcessWithExitCode prog (["wander"] ++ quiet) "" >>= \(c, o, e) ->
+          (c, take 1 (lines o), e) `shouldBe` (ExitSuccess, ["wander speed 0.1"], "")
+    it "paramOrFrom: a value paramOr refuses stops the program at once with paramOr's message and exit code 2, and so does a flag runSim refuses; --help is the program's own" $
+      withTempDir $ \dir -> do
+        prog <- childScript dir "ownline"
+        let after1 = drop 1 . dropWhile (/= ':')
+        forM_ [ (["--param", "speed=fast"], " --param speed=fast: cannot read the value \"fast\" (write it as Haskell's read reads it: 0.5, 3, True, \"quoted text\")")
+              , (["--param", "speed=1e999"], " --param speed=1e999: the value \"1e999\" is out of range for this parameter (it would read as Infinity)")
+              , (["--param", "speed=0.2", "--seconds", "abc"], " --seconds expects a non-negative number (written as in a world file: 2, 0.5, 1e-3), got \"abc\"")
+              , (["--frobnicate", "--param", "speed=0.2"], " unknown argument \"--frobnicate\" (see --help)") ] $ \(flags, message) -> do
+          (code, out, err) <- readProcessWithExitCode prog ("wander" : flags) ""
+          -- (the program's own action, which prints the speed, did not run)
+          (code, out, map after1 (lines err)) `shouldBe` (ExitFailure 2, "", [message])
+        -- (--help: the default read, the program's own usage printed; the
+        -- flags after --help are not read, as runSim reads none)
+        readProcessWithExitCode prog ["wander", "--param", "speed=0.2", "--help", "--param", "speed=fast"] ""
+          `shouldReturn` (ExitSuccess, "wander speed 0.1\nusage: ownline NAME [flags]\n", "")
     it "rejects a value without a name or an =" $ do
       parseSimArgs defaultSimOptions ["--param", "speed"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)
       parseSimArgs defaultSimOptions ["--param", "=1"] `shouldSatisfy` either ("NAME=VALUE" `isInfixOf`) (const False)

@@ -33,3 +33,8 @@ spec =
       fmap (const ()) (exampleCommand "afrp-examples" (named "xSF") ["--seconds", "3"])
         `shouldBe` Left "xSF is a signal-function example; it takes no flags"
       fmap (const ()) (exampleCommand "afrp-examples" (named "ex6-robot") ["--frobnicate"]) `shouldSatisfy` either (const True) (const False)
+    it "asks for the usage at --help or -h first for a signal-function example (it refused it as a flag), not after another flag" $ do
+      exampleCommand "afrp-examples" (named "xSF") ["--help"] `shouldBe` Right ShowHelp
+      exampleCommand "afrp-examples" (named "xSF") ["-h", "--seconds", "3"] `shouldBe` Right ShowHelp
+      exampleCommand "afrp-examples" (named "xSF") ["--seconds", "3", "--help"]
+        `shouldBe` Left "xSF is a signal-function example; it takes no flags"
