@@ -209,11 +209,34 @@ specWithoutFiles = do
   it "shrinkWorld removes objects, never the world's size (without it the objects may not fit)" $ do
     let w = [OTSize 20 20, OTSimbotB 1 (Point2 7 0) 0, OTBlock (Point2 (-8) (-8))]
         isSize o = case o of { OTSize {} -> True; _ -> False }
-    shrinkWorld w `shouldBe` [[OTSize 20 20, OTBlock (Point2 (-8) (-8))], [OTSize 20 20, OTSimbotB 1 (Point2 7 0) 0]]
+    shrinkWorld w `shouldBe` [[OTSize 20 20, OTSimbotB 1 (Point2 7 0) 0]]
     all (\c -> validateWorld c == Right ()) (shrinkWorld w) `shouldBe` True
     let big = OTSize 30 30 : [ OTBall (Point2 (fromIntegral k) 0) | k <- [-6 .. 6 :: Int] ]
     shrinkWorld big `shouldSatisfy` all (\c -> length (filter isSize c) == 1 && head c == OTSize 30 30)
     length (shrinkWorld big) `shouldBe` 2 + 13
+
+  it "shrinkWorld keeps a world's last robot (a property of any robot failed for want of one, shrunk to no object)" $ do
+    let robotA = OTSimbotA 1 (Point2 0 0) 0
+        robotB = OTSimbotB 1 (Point2 2 2) 0
+        others = [OTBlock (Point2 (-3) (-3)), OTHWall (Point2 3 (-3)), OTBall (Point2 (-3) 3)]
+    shrinkWorld (robotA : others) `shouldSatisfy` all (elem robotA)
+    length (shrinkWorld (robotA : others)) `shouldBe` 3
+    -- (one of two robots may go, not both; a world of no robot loses
+    -- anything, as before)
+    shrinkWorld [robotA, robotB] `shouldBe` [[robotB], [robotA]]
+    shrinkWorld others `shouldBe` [drop 1 others, [head others, others !! 2], take 2 others]
+    let many = robotA : [ OTBall (Point2 (fromIntegral k) 0) | k <- [-4 .. 4 :: Int] ]
+    shrinkWorld many `shouldSatisfy` all (any isRobot)
+    -- a property of some robot that no world satisfies shrinks to the
+    -- robot alone, never to the empty world (or to robotView's error of
+    -- a robot gone)
+    result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+      forAllShrinkShow (pure (robotA : others)) shrinkWorld renderWorld $ \world ->
+        let run = runStream defaultSimConfig { simDt = 0.1 } 1 world wander wander
+        in evalT (Eventually (SP (arr ((> 100) . (\(Point2 x _) -> x) . robotPos)))) (robotView "SimbotA" 1 run)
+    case result of
+      Failure { failingTestCase = shown : _ } -> shown `shouldBe` renderWorld [robotA]
+      _ -> expectationFailure ("not a falsified property: " ++ output result)
 
   it "worldFileText gives a world run in other bounds the size line that says them" $ do
     let w = [OTSimbotB 1 (Point2 7 0) 0]
