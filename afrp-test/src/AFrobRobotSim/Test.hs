@@ -59,6 +59,9 @@ import           Data.IORef           (newIORef, readIORef, writeIORef)
 import           Data.List            (intercalate, tails)
 import           Data.Maybe           (isJust)
 import           Test.QuickCheck
+import           Test.QuickCheck.Property (Callback (PostFinalFailure), CallbackKind (Counterexample), callback)
+import           Test.QuickCheck.State (terminal)
+import           Test.QuickCheck.Text  (putLine)
 
 import           AFRP                 (Time)
 import           AFRP.Geometry        (Point2 (..))
@@ -323,12 +326,38 @@ fixed k v = let m = 10 ^ k :: Integer
 
 -- | @forAllWorlds file gen prop@: @prop@ for worlds from @gen@, shrunk
 -- with 'shrinkWorld'. A failing world is printed in the world-file format
--- and, once shrinking is done, written to @file@.
+-- and, once shrinking is done, written to @file@; the report says so
+-- (@(the world is written to failing.world)@), or why it could not be
+-- written, and goes on with what @prop@ says of the failure.
 forAllWorlds :: Testable prop => FilePath -> Gen WorldTemplate -> (WorldTemplate -> prop) -> Property
 forAllWorlds file gen prop =
   forAllShrinkShow gen shrinkWorld renderWorld $ \w ->
-    whenFail (writeFile file (renderWorld w))
-             (counterexample ("(the world is written to " ++ file ++ ")") (prop w))
+    reportingAfter (inParentheses <$> wroteOrNot "the world" file (writeFile file (renderWorld w))) (prop w)
+  where inParentheses l = "(" ++ l ++ ")"
+
+-- @reportingAfter write prop@: @prop@; once QuickCheck has its failure
+-- (shrinking done), @write@ runs, and the line it gives is printed where
+-- 'counterexample' prints, before what @prop@ says of the failure. (A
+-- 'whenFail' whose write threw, to a folder that is not there, ended the
+-- report there: what @prop@ says, the instant that decided, was lost.)
+reportingAfter :: Testable prop => IO String -> prop -> Property
+reportingAfter write = callback (PostFinalFailure Counterexample (\st _ -> write >>= putLine (terminal st)))
+
+-- @wroteOrNot what file write@: @write@ run, and the words that say
+-- @what@ is written to @file@, or why it is not (its synchronous
+-- exception: an interrupt still stops the test).
+wroteOrNot :: String -> FilePath -> IO () -> IO String
+wroteOrNot what file write = do
+  r <- tryJust synchronous write
+  pure $ case r of
+    Right () -> what ++ " is written to " ++ file
+    Left e   -> what ++ " could not be written to " ++ file ++ ": " ++ displayException e
+
+-- An exception that is not asynchronous (a timeout's, Ctrl-C's).
+synchronous :: SomeException -> Maybe SomeException
+synchronous e = case fromException e of
+  Just (_ :: SomeAsyncException) -> Nothing
+  Nothing                        -> Just e
 
 -- | @runT config duration rcA rcB p world@: the predicate @p@ holds at
 -- time 0 of the run of @world@ ('runStream'). When it does not, the
@@ -385,7 +414,10 @@ decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++
 -- ('runT') holds for the run of every world @w@ from @gen@. A failing world is
 -- shrunk ('shrinkWorld'); the smallest is printed, written to @file@ in the
 -- world-file format with the size the run gave it ('worldFileText') and
--- its run's replay page to @file ++ \".html\"@.
+-- its run's replay page to @file ++ \".html\"@; the report says so
+-- (@(the world is written to failing.world; its run's replay page is
+-- written to failing.world.html)@), or why one could not be written,
+-- and goes on with what 'runT' prints.
 -- The page shows the run up to 5 simulated seconds past the instant that
 -- decided @p@ false (what 'runT' prints), or up to a controller's
 -- failure, if one failed; the whole run when neither ends it sooner. (A
@@ -417,14 +449,15 @@ forAllRuns file config duration rcA rcB gen p =
         explanation = explainT (p w) rerun
     cell <- newIORef rerun
     pure $
-      whenFail (do writeFile file (worldFileText config w)
-                   states <- readIORef cell
-                   writeIORef cell []
-                   (upTo, decided) <- pageEnd explanation
-                   -- (the run up to upTo is the start of this one)
-                   recordRunPage decided page config w (take (stepsWithin config upTo + 1) (map snd states)))
-               (counterexample ("(the world is written to " ++ file ++ ", its run's replay page to " ++ page ++ ")")
-                               (decideRun (p w) (\() -> runStream config duration w rcA rcB) explanation))
+      reportingAfter (do wroteWorld <- wroteOrNot "the world" file (writeFile file (worldFileText config w))
+                         wrotePage <- wroteOrNot "its run's replay page" page $ do
+                           states <- readIORef cell
+                           writeIORef cell []
+                           (upTo, decided) <- pageEnd explanation
+                           -- (the run up to upTo is the start of this one)
+                           recordRunPage decided page config w (take (stepsWithin config upTo + 1) (map snd states))
+                         pure ("(" ++ wroteWorld ++ "; " ++ wrotePage ++ ")"))
+                     (decideRun (p w) (\() -> runStream config duration w rcA rcB) explanation)
   where
     page = file ++ ".html"
     -- (the instant that decided and the line runT prints of it, from the
@@ -443,9 +476,6 @@ forAllRuns file config duration rcA rcB gen p =
       pure $ case decided of
         Right (Just d@(t, _)) -> (min duration (t + 5), Just d)
         _                     -> (duration, Nothing)
-    synchronous e = case fromException e of
-      Just (_ :: SomeAsyncException) -> Nothing
-      Nothing                        -> Just ()
 
 -- | @worldFileText config world@: @world@ in the world-file format
 -- ('renderWorld'), as the run of @config@ saw it: a world without an

@@ -3,6 +3,7 @@
 module AFrobRobotSim.TestSpec (spec) where
 
 import           Control.Exception     (ErrorCall, evaluate, try)
+import           Control.Monad         (forM_)
 import           Data.IORef            (IORef, modifyIORef', newIORef, readIORef)
 import           Data.List             (isInfixOf, isPrefixOf, tails)
 import           Numeric               (showFFloat)
@@ -369,6 +370,22 @@ specWithFiles = do
         occurrences "\"frame\"" page `shouldBe` 126
       Just result -> expectationFailure ("the run was not found to fail: " ++ output result)
       Nothing     -> expectationFailure "forAllRuns did not end within 60 s"
+
+  it "forAllWorlds and forAllRuns that cannot write the world or page still report the failure and say so (the write's exception hid it)" $ \tmp -> do
+    let missing = tmp </> "no-such-folder" </> "afrp-test-unwritable.world"
+        world = [OTSimbotA 1 (Point2 0 0) 0]
+        staysPut = Always (SP (arr (all ((== Point2 0 0) . robotPos) . wsRobots)))
+        check = quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 }
+    viaWorlds <- check (forAllWorlds missing (pure world) (runT defaultSimConfig 1 wander wander staysPut))
+    viaRuns <- check (forAllRuns missing defaultSimConfig 1 wander wander (pure world) (const staysPut))
+    doesDirectoryExist (tmp </> "no-such-folder") `shouldReturn` False
+    forM_ [viaWorlds, viaRuns] $ \result -> do
+      (case result of { Failure {} -> True; _ -> False }) `shouldBe` True
+      output result `shouldSatisfy` ("decided false at t = 0.01 (step 1)" `isInfixOf`)
+      output result `shouldSatisfy` (("(the world could not be written to " ++ missing ++ ": ") `isInfixOf`)
+      output result `shouldNotSatisfy` ("Exception running callback" `isInfixOf`)
+      output result `shouldNotSatisfy` ("the world is written to" `isInfixOf`)
+    output viaRuns `shouldSatisfy` (("its run's replay page could not be written to " ++ missing ++ ".html: ") `isInfixOf`)
 
   it "writeRunReplayPage, which records the run as it goes, writes the page runReplayPage gives" $ \tmp -> do
     let file = tmp </> "afrp-test-page.html"
