@@ -59,7 +59,7 @@ import           Data.IORef           (newIORef, readIORef, writeIORef)
 import           Data.List            (intercalate, tails)
 import           Data.Maybe           (isJust)
 import           Test.QuickCheck
-import           Test.QuickCheck.Property (Callback (PostFinalFailure), CallbackKind (Counterexample), callback)
+import           Test.QuickCheck.Property (Callback (PostFinalFailure), CallbackKind (NotCounterexample), callback)
 import           Test.QuickCheck.State (terminal)
 import           Test.QuickCheck.Text  (putLine)
 
@@ -340,8 +340,10 @@ forAllWorlds file gen prop =
 -- 'counterexample' prints, before what @prop@ says of the failure. (A
 -- 'whenFail' whose write threw, to a folder that is not there, ended the
 -- report there: what @prop@ says, the instant that decided, was lost.)
+-- Not a callback of the counterexample's kind, which 'verbose' runs
+-- after every test, passed or not: as 'whenFail', only for the failure.
 reportingAfter :: Testable prop => IO String -> prop -> Property
-reportingAfter write = callback (PostFinalFailure Counterexample (\st _ -> write >>= putLine (terminal st)))
+reportingAfter write = callback (PostFinalFailure NotCounterexample (\st _ -> write >>= putLine (terminal st)))
 
 -- @wroteOrNot what file write@: @write@ run, and the words that say
 -- @what@ is written to @file@, or why it is not (its synchronous

@@ -7,7 +7,7 @@ import           Control.Monad         (forM_)
 import           Data.IORef            (IORef, modifyIORef', newIORef, readIORef)
 import           Data.List             (isInfixOf, isPrefixOf, tails)
 import           Numeric               (showFFloat)
-import           System.Directory      (createDirectory, doesDirectoryExist, getTemporaryDirectory, listDirectory,
+import           System.Directory      (createDirectory, doesDirectoryExist, doesFileExist, getTemporaryDirectory, listDirectory,
                                         removeDirectory, removeFile)
 import           System.IO.Error       (isAlreadyExistsError)
 import           System.IO.Unsafe      (unsafePerformIO)
@@ -386,6 +386,13 @@ specWithFiles = do
       output result `shouldNotSatisfy` ("Exception running callback" `isInfixOf`)
       output result `shouldNotSatisfy` ("the world is written to" `isInfixOf`)
     output viaRuns `shouldSatisfy` (("its run's replay page could not be written to " ++ missing ++ ".html: ") `isInfixOf`)
+    -- (only the failure's: a verbose check that passes writes nothing)
+    let quiet = tmp </> "afrp-test-verbose.world"
+        stays = Always (SP (arr (const True)))
+    passed <- check (verbose (forAllWorlds quiet (pure world) (runT defaultSimConfig 1 wander wander stays)))
+    passedRuns <- check (verbose (forAllRuns quiet defaultSimConfig 1 wander wander (pure world) (const stays)))
+    map isSuccess [passed, passedRuns] `shouldBe` [True, True]
+    mapM doesFileExist [quiet, quiet ++ ".html"] `shouldReturn` [False, False]
 
   it "writeRunReplayPage, which records the run as it goes, writes the page runReplayPage gives" $ \tmp -> do
     let file = tmp </> "afrp-test-page.html"
