@@ -203,11 +203,13 @@ genRobotIn given world = do
 -- A world with a robot keeps at least one (as 'genWorld' gives one): in
 -- a world without a robot, a property of some robot (@any@ over
 -- 'wsRobots', a 'robotView') fails for want of one, whatever the world
--- holds, and the counterexample would be a world of no robot. One of
--- several robots may go: a property of one robot by its id, checked on
--- worlds of several, should discard a world without it (@==>@; QuickCheck
--- takes no discarded world for a smaller failure), or 'robotView' fails
--- there, naming the robot.
+-- holds, and the counterexample would be a world of no robot. Anything
+-- else may go, one of several robots too: a property that needs an
+-- object (a ball to reach, a robot by its id among several) should hold
+-- of a world without it, or discard it (@==>@ in 'forAllWorlds'), since
+-- QuickCheck takes a smaller world for the counterexample only when it
+-- fails ('forAllRuns': @\\w -> if hasBall w then p else Always (SP
+-- (constant True))@).
 shrinkWorld :: WorldTemplate -> [WorldTemplate]
 shrinkWorld w =
   map (sizes ++) (filter keepsRobot
