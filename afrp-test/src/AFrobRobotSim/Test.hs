@@ -59,6 +59,9 @@ import           Data.IORef           (newIORef, readIORef, writeIORef)
 import           Data.List            (intercalate, tails)
 import           Data.Maybe           (isJust)
 import           Test.QuickCheck
+import           Test.QuickCheck.Property (Callback (PostFinalFailure), CallbackKind (NotCounterexample), callback)
+import           Test.QuickCheck.State (terminal)
+import           Test.QuickCheck.Text  (putLine)
 
 import           AFRP                 (Time)
 import           AFRP.Geometry        (Point2 (..))
@@ -196,14 +199,32 @@ genRobotIn given world = do
 -- it is no object, and without it the world would be the notes' 10 by 10,
 -- in which its objects may not fit. So removing objects keeps a world
 -- valid.
+--
+-- A world with a robot keeps at least one (as 'genWorld' gives one): in
+-- a world without a robot, a property of some robot (@any@ over
+-- 'wsRobots', a 'robotView') fails for want of one, whatever the world
+-- holds, and the counterexample would be a world of no robot. Anything
+-- else may go, one of several robots too: a property that needs an
+-- object (a ball to reach, a robot by its id among several) should hold
+-- of a world without it, or discard it (@==>@ in 'forAllWorlds'), since
+-- QuickCheck takes a smaller world for the counterexample only when it
+-- fails ('forAllRuns': @\\w -> if hasBall w then p else Always (SP
+-- (constant True))@).
 shrinkWorld :: WorldTemplate -> [WorldTemplate]
 shrinkWorld w =
-  map (sizes ++)
+  map (sizes ++) (filter keepsRobot
     ([ take (n `div` 2) objs | n > 8 ] ++ [ drop (n `div` 2) objs | n > 8 ]
-     ++ [ take k objs ++ drop (k + 1) objs | k <- [0 .. n - 1] ])
+     ++ [ take k objs ++ drop (k + 1) objs | k <- [0 .. n - 1] ]))
   where
     (sizes, objs) = (filter isWorldSize w, filter (not . isWorldSize) w)
     n = length objs
+    keepsRobot candidate = not (any isRobotObject objs) || any isRobotObject candidate
+
+-- Whether an object is a simbot.
+isRobotObject :: ObjectTemplate -> Bool
+isRobotObject OTSimbotA {} = True
+isRobotObject OTSimbotB {} = True
+isRobotObject _            = False
 
 -- | An object's bounding box, @(xMin, yMin, xMax, yMax)@ in metres, from
 -- its centre and the sizes of "AFrobRobotSim.World". A size line
@@ -307,12 +328,40 @@ fixed k v = let m = 10 ^ k :: Integer
 
 -- | @forAllWorlds file gen prop@: @prop@ for worlds from @gen@, shrunk
 -- with 'shrinkWorld'. A failing world is printed in the world-file format
--- and, once shrinking is done, written to @file@.
+-- and, once shrinking is done, written to @file@; the report says so
+-- (@(the world is written to failing.world)@), or why it could not be
+-- written, and goes on with what @prop@ says of the failure.
 forAllWorlds :: Testable prop => FilePath -> Gen WorldTemplate -> (WorldTemplate -> prop) -> Property
 forAllWorlds file gen prop =
   forAllShrinkShow gen shrinkWorld renderWorld $ \w ->
-    whenFail (writeFile file (renderWorld w))
-             (counterexample ("(the world is written to " ++ file ++ ")") (prop w))
+    reportingAfter (inParentheses <$> wroteOrNot "the world" file (writeFile file (renderWorld w))) (prop w)
+  where inParentheses l = "(" ++ l ++ ")"
+
+-- @reportingAfter write prop@: @prop@; once QuickCheck has its failure
+-- (shrinking done), @write@ runs, and the line it gives is printed where
+-- 'counterexample' prints, before what @prop@ says of the failure. (A
+-- 'whenFail' whose write threw, to a folder that is not there, ended the
+-- report there: what @prop@ says, the instant that decided, was lost.)
+-- Not a callback of the counterexample's kind, which 'verbose' runs
+-- after every test, passed or not: as 'whenFail', only for the failure.
+reportingAfter :: Testable prop => IO String -> prop -> Property
+reportingAfter write = callback (PostFinalFailure NotCounterexample (\st _ -> write >>= putLine (terminal st)))
+
+-- @wroteOrNot what file write@: @write@ run, and the words that say
+-- @what@ is written to @file@, or why it is not (its synchronous
+-- exception: an interrupt still stops the test).
+wroteOrNot :: String -> FilePath -> IO () -> IO String
+wroteOrNot what file write = do
+  r <- tryJust synchronous write
+  pure $ case r of
+    Right () -> what ++ " is written to " ++ file
+    Left e   -> what ++ " could not be written to " ++ file ++ ": " ++ displayException e
+
+-- An exception that is not asynchronous (a timeout's, Ctrl-C's).
+synchronous :: SomeException -> Maybe SomeException
+synchronous e = case fromException e of
+  Just (_ :: SomeAsyncException) -> Nothing
+  Nothing                        -> Just e
 
 -- | @runT config duration rcA rcB p world@: the predicate @p@ holds at
 -- time 0 of the run of @world@ ('runStream'). When it does not, the
@@ -369,7 +418,10 @@ decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++
 -- ('runT') holds for the run of every world @w@ from @gen@. A failing world is
 -- shrunk ('shrinkWorld'); the smallest is printed, written to @file@ in the
 -- world-file format with the size the run gave it ('worldFileText') and
--- its run's replay page to @file ++ \".html\"@.
+-- its run's replay page to @file ++ \".html\"@; the report says so
+-- (@(the world is written to failing.world; its run's replay page is
+-- written to failing.world.html)@), or why one could not be written,
+-- and goes on with what 'runT' prints.
 -- The page shows the run up to 5 simulated seconds past the instant that
 -- decided @p@ false (what 'runT' prints), or up to a controller's
 -- failure, if one failed; the whole run when neither ends it sooner. (A
@@ -401,14 +453,15 @@ forAllRuns file config duration rcA rcB gen p =
         explanation = explainT (p w) rerun
     cell <- newIORef rerun
     pure $
-      whenFail (do writeFile file (worldFileText config w)
-                   states <- readIORef cell
-                   writeIORef cell []
-                   (upTo, decided) <- pageEnd explanation
-                   -- (the run up to upTo is the start of this one)
-                   recordRunPage decided page config w (take (stepsWithin config upTo + 1) (map snd states)))
-               (counterexample ("(the world is written to " ++ file ++ ", its run's replay page to " ++ page ++ ")")
-                               (decideRun (p w) (\() -> runStream config duration w rcA rcB) explanation))
+      reportingAfter (do wroteWorld <- wroteOrNot "the world" file (writeFile file (worldFileText config w))
+                         wrotePage <- wroteOrNot "its run's replay page" page $ do
+                           states <- readIORef cell
+                           writeIORef cell []
+                           (upTo, decided) <- pageEnd explanation
+                           -- (the run up to upTo is the start of this one)
+                           recordRunPage decided page config w (take (stepsWithin config upTo + 1) (map snd states))
+                         pure ("(" ++ wroteWorld ++ "; " ++ wrotePage ++ ")"))
+                     (decideRun (p w) (\() -> runStream config duration w rcA rcB) explanation)
   where
     page = file ++ ".html"
     -- (the instant that decided and the line runT prints of it, from the
@@ -427,9 +480,6 @@ forAllRuns file config duration rcA rcB gen p =
       pure $ case decided of
         Right (Just d@(t, _)) -> (min duration (t + 5), Just d)
         _                     -> (duration, Nothing)
-    synchronous e = case fromException e of
-      Just (_ :: SomeAsyncException) -> Nothing
-      Nothing                        -> Just ()
 
 -- | @worldFileText config world@: @world@ in the world-file format
 -- ('renderWorld'), as the run of @config@ saw it: a world without an

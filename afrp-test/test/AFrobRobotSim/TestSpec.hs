@@ -3,10 +3,11 @@
 module AFrobRobotSim.TestSpec (spec) where
 
 import           Control.Exception     (ErrorCall, evaluate, try)
+import           Control.Monad         (forM_)
 import           Data.IORef            (IORef, modifyIORef', newIORef, readIORef)
 import           Data.List             (isInfixOf, isPrefixOf, tails)
 import           Numeric               (showFFloat)
-import           System.Directory      (createDirectory, doesDirectoryExist, getTemporaryDirectory, listDirectory,
+import           System.Directory      (createDirectory, doesDirectoryExist, doesFileExist, getTemporaryDirectory, listDirectory,
                                         removeDirectory, removeFile)
 import           System.IO.Error       (isAlreadyExistsError)
 import           System.IO.Unsafe      (unsafePerformIO)
@@ -209,11 +210,34 @@ specWithoutFiles = do
   it "shrinkWorld removes objects, never the world's size (without it the objects may not fit)" $ do
     let w = [OTSize 20 20, OTSimbotB 1 (Point2 7 0) 0, OTBlock (Point2 (-8) (-8))]
         isSize o = case o of { OTSize {} -> True; _ -> False }
-    shrinkWorld w `shouldBe` [[OTSize 20 20, OTBlock (Point2 (-8) (-8))], [OTSize 20 20, OTSimbotB 1 (Point2 7 0) 0]]
+    shrinkWorld w `shouldBe` [[OTSize 20 20, OTSimbotB 1 (Point2 7 0) 0]]
     all (\c -> validateWorld c == Right ()) (shrinkWorld w) `shouldBe` True
     let big = OTSize 30 30 : [ OTBall (Point2 (fromIntegral k) 0) | k <- [-6 .. 6 :: Int] ]
     shrinkWorld big `shouldSatisfy` all (\c -> length (filter isSize c) == 1 && head c == OTSize 30 30)
     length (shrinkWorld big) `shouldBe` 2 + 13
+
+  it "shrinkWorld keeps a world's last robot (a property of any robot failed for want of one, shrunk to no object)" $ do
+    let robotA = OTSimbotA 1 (Point2 0 0) 0
+        robotB = OTSimbotB 1 (Point2 2 2) 0
+        others = [OTBlock (Point2 (-3) (-3)), OTHWall (Point2 3 (-3)), OTBall (Point2 (-3) 3)]
+    shrinkWorld (robotA : others) `shouldSatisfy` all (elem robotA)
+    length (shrinkWorld (robotA : others)) `shouldBe` 3
+    -- (one of two robots may go, not both; a world of no robot loses
+    -- anything, as before)
+    shrinkWorld [robotA, robotB] `shouldBe` [[robotB], [robotA]]
+    shrinkWorld others `shouldBe` [drop 1 others, [head others, others !! 2], take 2 others]
+    let many = robotA : [ OTBall (Point2 (fromIntegral k) 0) | k <- [-4 .. 4 :: Int] ]
+    shrinkWorld many `shouldSatisfy` all (any isRobot)
+    -- a property of some robot that no world satisfies shrinks to the
+    -- robot alone, never to the empty world (or to robotView's error of
+    -- a robot gone)
+    result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+      forAllShrinkShow (pure (robotA : others)) shrinkWorld renderWorld $ \world ->
+        let run = runStream defaultSimConfig { simDt = 0.1 } 1 world wander wander
+        in evalT (Eventually (SP (arr ((> 100) . (\(Point2 x _) -> x) . robotPos)))) (robotView "SimbotA" 1 run)
+    case result of
+      Failure { failingTestCase = shown : _ } -> shown `shouldBe` renderWorld [robotA]
+      _ -> expectationFailure ("not a falsified property: " ++ output result)
 
   it "worldFileText gives a world run in other bounds the size line that says them" $ do
     let w = [OTSimbotB 1 (Point2 7 0) 0]
@@ -333,20 +357,42 @@ specWithFiles = do
     let file = tmp </> "afrp-test-early.world"
         world = [OTSimbotA 1 (Point2 0 0) 0]
     r <- timeout (60 * 1000000) $ quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
-      -- (no robot fails too: the empty world that shrinking tries would
-      -- run the whole 10^6 s)
+      -- (shrinking keeps the world's one robot: the empty world, which
+      -- passes, would be run the whole 10^6 s)
       forAllRuns file defaultSimConfig 1e6 wander wander (pure world)
-        (\_ -> Always (SP (arr (\ws -> not (null (wsRobots ws)) && all ((== Point2 0 0) . robotPos) (wsRobots ws)))))
+        (\_ -> Always (SP (arr (all ((== Point2 0 0) . robotPos) . wsRobots))))
     case r of
       Just Failure {} -> do
         page <- readFile (file ++ ".html")
         length page `seq` mapM_ removeFile [file, file ++ ".html"]
-        -- (decided at 0 s in the shrunk world, which has no robot, or at
-        -- 0.01 s: frames at 25 a second up to 5 s, the one at time 0
-        -- included)
+        -- (decided at 0.01 s: frames at 25 a second up to 5.01 s, the
+        -- one at time 0 included)
         occurrences "\"frame\"" page `shouldBe` 126
       Just result -> expectationFailure ("the run was not found to fail: " ++ output result)
       Nothing     -> expectationFailure "forAllRuns did not end within 60 s"
+
+  it "forAllWorlds and forAllRuns that cannot write the world or page still report the failure and say so (the write's exception hid it)" $ \tmp -> do
+    let missing = tmp </> "no-such-folder" </> "afrp-test-unwritable.world"
+        world = [OTSimbotA 1 (Point2 0 0) 0]
+        staysPut = Always (SP (arr (all ((== Point2 0 0) . robotPos) . wsRobots)))
+        check = quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 }
+    viaWorlds <- check (forAllWorlds missing (pure world) (runT defaultSimConfig 1 wander wander staysPut))
+    viaRuns <- check (forAllRuns missing defaultSimConfig 1 wander wander (pure world) (const staysPut))
+    doesDirectoryExist (tmp </> "no-such-folder") `shouldReturn` False
+    forM_ [viaWorlds, viaRuns] $ \result -> do
+      (case result of { Failure {} -> True; _ -> False }) `shouldBe` True
+      output result `shouldSatisfy` ("decided false at t = 0.01 (step 1)" `isInfixOf`)
+      output result `shouldSatisfy` (("(the world could not be written to " ++ missing ++ ": ") `isInfixOf`)
+      output result `shouldNotSatisfy` ("Exception running callback" `isInfixOf`)
+      output result `shouldNotSatisfy` ("the world is written to" `isInfixOf`)
+    output viaRuns `shouldSatisfy` (("its run's replay page could not be written to " ++ missing ++ ".html: ") `isInfixOf`)
+    -- (only the failure's: a verbose check that passes writes nothing)
+    let quiet = tmp </> "afrp-test-verbose.world"
+        stays = Always (SP (arr (const True)))
+    passed <- check (verbose (forAllWorlds quiet (pure world) (runT defaultSimConfig 1 wander wander stays)))
+    passedRuns <- check (verbose (forAllRuns quiet defaultSimConfig 1 wander wander (pure world) (const stays)))
+    map isSuccess [passed, passedRuns] `shouldBe` [True, True]
+    mapM doesFileExist [quiet, quiet ++ ".html"] `shouldReturn` [False, False]
 
   it "writeRunReplayPage, which records the run as it goes, writes the page runReplayPage gives" $ \tmp -> do
     let file = tmp </> "afrp-test-page.html"

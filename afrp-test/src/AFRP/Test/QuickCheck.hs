@@ -300,7 +300,9 @@ shrinkStreamWith range = shrinkStreamIn range Nothing
 -- (samples are removed from within, their time steps merged, and the
 -- stream is cut only where it still reaches @t@). With 'Nothing', as
 -- 'shrinkStreamWith'. A counterexample is then never one that fails only
--- because it is shorter than any generated stream.
+-- because it is shorter than any generated stream. (It rounds each time
+-- step on its own: for a stream of 'DistConstant', 'forAllStreamsIn'
+-- rounds the one step of the whole stream instead.)
 shrinkStreamIn :: Range -> Length -> (a -> [a]) -> SignalSampleStream a -> [SignalSampleStream a]
 shrinkStreamIn range len shrinkValue s = filter lengthKept fewer ++ filter reaches rounder ++ simpler
   where
@@ -377,7 +379,8 @@ forAllStreamsWith range shrinkValue gen =
 -- | @forAllStreamsIn dist range len shrinkValue prop@: @prop@ for streams
 -- of @'generateStream' dist range len@, shrunk with 'shrinkStreamIn' to
 -- streams that generator could make (time steps in @range@, the length
--- @len@), printed with 'showStream' when one fails.
+-- @len@; for 'DistConstant', one time step for the whole stream, rounded
+-- for every sample at once), printed with 'showStream' when one fails.
 --
 -- > forAllStreamsIn DistRandom (Just 0.01, Just 0.1) (Just (Right 3)) shrink $
 -- >   propT (eventuallyWithin 2.5 (SP (arr (> (0 :: Int)))))
@@ -385,7 +388,42 @@ forAllStreamsIn :: (Arbitrary a, Show a, Testable prop)
                 => Distribution -> Range -> Length -> (a -> [a])
                 -> (SignalSampleStream a -> prop) -> Property
 forAllStreamsIn dist range len shrinkValue =
-  forAllShrinkShow (generateStream dist range len) (shrinkStreamIn range len shrinkValue) showStream
+  forAllShrinkShow (generateStream dist range len) shrinker showStream
+  where
+    shrinker = case dist of
+      DistConstant -> shrinkConstantIn range len shrinkValue
+      _            -> shrinkStreamIn range len shrinkValue
+
+-- 'shrinkStreamIn' for a stream of 'DistConstant', one time step for the
+-- whole stream: the step is rounded for all samples at once (rounding
+-- one at a time made streams of two steps, which 'DistConstant' never
+-- makes, and a failure of those hid the one found), a stream of a
+-- number of steps is cut only at its end (when its length is
+-- 'Nothing'), and one of a length in time gets as many steps of the
+-- rounded step as 'generateStream' gives to reach it (never more than
+-- it has).
+shrinkConstantIn :: Range -> Length -> (a -> [a]) -> SignalSampleStream a -> [SignalSampleStream a]
+shrinkConstantIn range len shrinkValue s = fewer ++ rounder ++ simpler
+  where
+    n = length s
+    fewer = case len of
+      Nothing -> [take (n `div` 2) s | n >= 4] ++ [take (n - 1) s | n >= 2]
+      Just _  -> []
+    rounder = case drop 1 s of
+      []          -> []
+      (dt, _) : _ ->
+        [ s'
+        | dt' <- roundings dt
+        , maybe True (<= dt') (fst range) && maybe True (dt' <=) (snd range)
+        , let kept = case len of
+                Just (Right t) -> max 0 (ceiling (t / dt')) + 1
+                _              -> n
+        , kept <= n
+        , let s' = zipWith (\k (_, a) -> (if k == (0 :: Int) then 0 else dt', a)) [0 ..] (take kept s) ]
+    simpler =
+      [ take k s ++ (dt, a') : drop (k + 1) s
+      | (k, (dt, a)) <- zip [0 ..] s
+      , a' <- shrinkValue a ]
 
 -- | @propT p s@: 'evalT' as a property; when it fails, 'explainT' says at
 -- which sample it was decided false and shows the samples around it.

@@ -1,6 +1,7 @@
 module AFRP.Test.QuickCheckSpec (spec) where
 
 import           Control.Exception (ErrorCall (..), evaluate)
+import           Control.Monad    (forM_)
 import           Data.List        (isInfixOf, isPrefixOf)
 import           Test.Hspec
 import           Test.QuickCheck
@@ -155,6 +156,28 @@ spec = do
           let times = [ read (words l !! 2) :: Double | l <- drop 2 (lines shown) ]
           last times `shouldSatisfy` (>= 3 - 1e-9)
         _ -> expectationFailure "no counterexample shown"
+    it "forAllStreamsIn DistConstant shrinks to streams of one time step (it rounded the steps one by one, to a stream DistConstant never makes)" $ do
+      -- (a filter for a fixed rate that fails at steps between 0.05 and
+      -- 0.1 s, and at any stream whose steps differ; every counterexample
+      -- DistConstant could make has steps all equal, in the range, and
+      -- the generator's length)
+      let fixedRate s = let dts = map fst (drop 1 s)
+                        in and (zipWith (==) dts (drop 1 dts)) && not (any (\dt -> dt > 0.05 && dt < 0.1) dts)
+          -- (the table's time steps, the first sample's 0 left out)
+          stepsOf shown = [ read (words l !! 1) :: Double | l <- drop 2 (lines shown) ]
+      forM_ [(Nothing, const True), (Just (Left 5), (== 5)), (Just (Right 0.5), const True)] $ \(len, countOk) ->
+        forM_ [1 .. 4] $ \seed -> do
+          r <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen seed, 0) } $
+            forAllStreamsIn DistConstant (Just 0.01, Just 0.1) len shrink (fixedRate :: SignalSampleStream Int -> Bool)
+          case r of
+            Failure { failingTestCase = shown : _ } -> do
+              let dts = drop 1 (stepsOf shown)
+              (len, seed, dts) `shouldSatisfy` (\(_, _, ds) -> and (zipWith (==) ds (drop 1 ds)) && countOk (length ds))
+              (len, seed, dts) `shouldSatisfy` (\(_, _, ds) -> all (\d -> d >= 0.01 && d <= 0.1) ds)
+              case len of
+                Just (Right t) -> (len, seed, sum dts) `shouldSatisfy` (\(_, _, reached) -> reached >= t - 1e-9)
+                _              -> pure ()
+            _ -> expectationFailure ("no counterexample: " ++ output r)
     it "showStream prints a stream with a step no run takes (it raised the runner's error)" $
       drop 2 (lines (showStream [(0, 'a'), (0.5, 'b'), (-1, 'c'), (0 / 0, 'd')]))
         `shouldBe` [ "    0    0.0         0.0         'a'", "    1    0.5         0.5         'b'"
