@@ -20,6 +20,7 @@ import           AFrobRobotSim
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.LogFixture
 import           AFrobRobotSim.Replay
+import           TestUtil                 (withTempDir)
 
 -- | The page of a 1 s run of a world, its robots driving slowly ahead.
 pageOf :: WorldTemplate -> String
@@ -58,6 +59,18 @@ verdictPage = replayPage (RunLog (logHeader cfg) frames (Just summary) Nothing)
     frames  = logFrames cfg states
     summary = LogSummary 10 (length states) (length frames) 0 False Nothing
                          (Just (4.01, "decided false at t = 4.01 (step 401)")) []
+
+-- | The page of a 2 s run of one robot whose controller failed then, as
+-- simbot writes it: its summary's 'lsFailure', two lines.
+failedPage :: String
+failedPage = replayPage (RunLog (logHeader cfg) frames (Just summary) Nothing)
+  where
+    world   = [OTSimbotA 1 (Point2 (-2) 0) 0]
+    cfg     = defaultLogConfig { lcWorld = world, lcDt = 0.01, lcFps = 25, lcCommandLine = ["afrp-test"] }
+    states  = take 201 (simulate 0.01 world slowAhead slowAhead)
+    frames  = logFrames cfg states
+    summary = LogSummary 2 (length states) (length frames) 0 False
+                         (Just "SimbotA 1's controller failed at t = 2.00 s: boom\nat the second line") Nothing []
 
 -- | The page of a 60 s run in the notes' world (25 frames a second) with
 -- what a user's audit of the page needed: SimbotA 1 and SimbotB 1, which
@@ -105,8 +118,11 @@ spec = do
     runPageTest "replay-controls.test.js" (replayPage fixtureLog)
   it "keeps the robots' labels within the canvas at its edges, breaks the text panels' lines between words, keeps the play button's width, and titles a world file named a\\b.world whole (fixed)" $
     runPageTest "replay-edges.test.js" edgesPage
-  it "opens the page of a run whose property was decided false at that instant, marked on the slider, and says it (fixed)" $
-    runPageTest "replay-verdict.test.js" verdictPage
+  it "opens the page of a run whose property was decided false at that instant, marked on the slider, and says it; a failed run's heading says its failure, and one robot is \"1 robot\" (fixed)" $
+    withTempDir $ \dir -> do
+      let failed = dir </> "failed.html"
+      writeFile failed failedPage
+      () <$ runPageScript "replay-verdict.test.js" [failed] verdictPage
   it "plays the page of a short run in headless Chromium: drawn where the log says, slider, click, keys, no script from the run (fixed)" $
     playFixture (replayPage fixtureLog)
   it "plays it as well with its log split over several data elements, every frame read (fixed)" $ do

@@ -1,6 +1,6 @@
 // Loads the page of a run of which a test's property was decided false,
 // as afrp-test's forAllRuns writes it, in headless Chromium (1200 by 800):
-//   node replay-verdict.test.js PAGE.html
+//   node replay-verdict.test.js PAGE.html [FAILED.html]
 // The page must be ReplayBrowserSpec's verdictPage: 10 s at 25 frames a
 // second, its summary's falsified at t = 4.01 s with the line "decided
 // false at t = 4.01 (step 401)". Checked:
@@ -9,10 +9,17 @@
 // - its heading and its summary line say "FAILED: " and the line;
 // - the slider has a mark at that frame, which stays when the frame
 //   changes;
-// - stepping and playing work from there.
+// - stepping and playing work from there;
+// - its summary line counts "2 robots".
+// FAILED.html, if given, must be ReplayBrowserSpec's failedPage: one
+// robot, a run of 2 s whose controller failed, its summary's failure two
+// lines. Checked: the heading says "FAILED: " and the failure's first
+// line (it said nothing of the failure), the summary line says the whole
+// failure and counts "1 robot" (it said "1 robots").
 // Chromium: $CHROMIUM, else /usr/bin/chromium. Exits 0 when every check
 // passes, 1 with the failures listed otherwise.
 'use strict';
+const path = require('path');
 const { run, check } = require('./harness');
 
 run('node replay-verdict.test.js PAGE.html', async (page, errors, open) => {
@@ -48,5 +55,20 @@ run('node replay-verdict.test.js PAGE.html', async (page, errors, open) => {
     const played = await R(() => ({ frame: window.afrpReplay.frame(), playing: window.afrpReplay.playing() }));
     await R(() => window.afrpReplay.pause());
     check(played.playing && played.frame > 100, 'it plays on from there (frame ' + played.frame + ' after 0.3 s)');
+    check(/, 2 robots; /.test(opened.meta), 'the summary line counts 2 robots (' + JSON.stringify(opened.meta) + ')');
+
+    const failedPath = process.argv[3];
+    if (failedPath) {
+      await page.goto('file://' + path.resolve(failedPath));
+      await page.waitForFunction(() => window.afrpReplay !== undefined, null, { timeout: 10000 });
+      const failed = await R(() => ({ heading: document.querySelector('h1').textContent,
+                                      meta: document.getElementById('meta').textContent }));
+      const first = "SimbotA 1's controller failed at t = 2.00 s: boom";
+      check(failed.heading === 'afrp replay: afrp-test - FAILED: ' + first,
+            'a failed run\'s heading says its failure\'s first line (' + JSON.stringify(failed.heading) + ')');
+      check(failed.meta.endsWith('; FAILED: ' + first + '\nat the second line'),
+            'its summary line says the whole failure (' + JSON.stringify(failed.meta) + ')');
+      check(/, 1 robot; /.test(failed.meta), 'its summary line counts 1 robot (' + JSON.stringify(failed.meta) + ')');
+    }
     check(errors.length === 0, 'no console errors' + (errors.length ? ': ' + errors.join('; ') : ''));
 });

@@ -39,9 +39,17 @@
   // opens at that instant, marked on the slider (it opened at frame 0,
   // the instant only in the test's output).
   var falsified = (summary && summary.falsified) || null;
+  // The run's failure (a controller's or the referee's, a write's), as the
+  // heading says it: its first line, at most 200 characters (the summary
+  // line below has it whole). A failed run's heading said nothing of it.
+  var failed = null;
+  if (summary && summary.failure) {
+    failed = summary.failure.split('\n')[0];
+    if (failed.length > 200) failed = failed.slice(0, 199) + '\u2026';
+  }
   // (the heading, as text, said "afrp replay" on every page)
   document.getElementsByTagName('h1')[0].textContent = 'afrp replay' + (run ? ': ' + run : '') +
-    (falsified ? ' - FAILED: ' + falsified.text : '');
+    (failed !== null ? ' - FAILED: ' + failed : '') + (falsified ? ' - FAILED: ' + falsified.text : '');
   if (frames.length === 0) {
     document.getElementById('meta').textContent = 'This log has no frames: the run stopped before its first.';
     window.afrpReplay = { header: header, summary: summary, frameCount: function () { return 0; } };
@@ -84,6 +92,8 @@
   var view = { zoom: 1, cx: b.x, cy: b.y };
   var scale, vx0, vy1, fine, viewKey;
   function clamp(v, lo, hi) { return Math.max(lo, Math.min(hi, v)); }
+  // a count and its noun, singular for 1 ('1 robot', '2 robots')
+  function counted(n, noun) { return n + ' ' + noun + (n === 1 ? '' : 's'); }
   function setView(zoom, cx, cy) {
     var z = clamp(zoom, 1, maxZoom), hw = b.width / 2 / z, hh = b.height / 2 / z;
     view = { zoom: z, cx: clamp(cx, x0 + hw, x0 + b.width - hw), cy: clamp(cy, y1 - b.height + hh, y1 - hh) };
@@ -773,8 +783,8 @@
   });
   // (a thinned page's rate, such as 25/9, to four figures at most)
   $('meta').textContent = header.commandLine.join(' ') + '\n' + 'dt ' + header.dt + ' s, ' + Number(header.fps.toPrecision(4)) +
-    ' frames/s, seed ' + header.seed + ', ' + header.robots.length + ' robots' +
-    (summary ? '; ' + summary.simulated.toFixed(2) + ' s simulated in ' + summary.steps + ' steps' +
+    ' frames/s, seed ' + header.seed + ', ' + counted(header.robots.length, 'robot') +
+    (summary ? '; ' + summary.simulated.toFixed(2) + ' s simulated in ' + counted(summary.steps, 'step') +
                (summary.interrupted ? ' (interrupted)' : '') + (summary.failure ? '; FAILED: ' + summary.failure : '') +
                (falsified ? '; FAILED: ' + falsified.text : '')
              : '; no summary (the run stopped early)');
