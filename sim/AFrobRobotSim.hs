@@ -126,7 +126,7 @@ module AFrobRobotSim
 
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Options
-import           AFrobRobotSim.Result      (getSimParams, lookupSimParam, paramOr, paramOrFrom,
+import           AFrobRobotSim.Params      (getSimParams, lookupSimParam, paramOr, paramOrFrom,
                                             readSimParam, simParamsOf)
 import           AFrobRobotSim.Balls     (ballFriction, ballRestitution)
 import           AFrobRobotSim.Render    (RenderStyle (..), Scene (..), defaultRenderStyle, frameSize,

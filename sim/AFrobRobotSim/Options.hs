@@ -31,7 +31,7 @@
 --                    also .m4v .mkv .webm .mov .avi .gif)
 -- --result FILE      write the run's settings and outcome as one JSON line
 -- --param NAME=VALUE a parameter for the controllers (repeatable; see
---                    'AFrobRobotSim.Result.getSimParams')
+--                    'AFrobRobotSim.Params.getSimParams')
 -- --help             print this usage and exit
 -- @
 --

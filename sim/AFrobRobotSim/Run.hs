@@ -101,7 +101,8 @@ import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Referee
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
-import           AFrobRobotSim.Result      (WorldSource, unreadParams, worldSource)
+import           AFrobRobotSim.Params      (unreadParams)
+import           AFrobRobotSim.Result      (WorldSource, worldSource)
 import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Run.Preflight (preflight)
 import           AFrobRobotSim.Run.Signals
