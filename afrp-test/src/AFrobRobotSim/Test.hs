@@ -430,7 +430,8 @@ decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++
 -- 'forAllRuns' writes the failing run's replay page, as for any
 -- predicate of theirs.
 --
--- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB genOneRobot
+-- > -- (corridors: random worlds of walls and one SimbotA 1)
+-- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB corridors
 -- >   (\_ -> onRobot "SimbotA" 1 (Always (SP (arr (not . robotStuck)))))
 --
 -- It holds of a run exactly when @p@ holds of the robot's view
@@ -446,12 +447,13 @@ decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++
 -- samples as @p@ reads them (a run's robots are the same at every
 -- sample; a hand-made stream that loses the robot is the error at the
 -- sample that does, when @p@ reads it there). With 'runT' and
--- 'forAllRuns', QuickCheck reports the error as the failure. So in a
--- property of random worlds with several robots, give worlds without the
--- robot a predicate that holds (@\w -> if hasIt w then onRobot ty i p
--- else Always (SP (arr (const True)))@): 'shrinkWorld' may remove it
--- while keeping another robot, and the error would then be the
--- counterexample. A world of one robot keeps it while shrinking.
+-- 'forAllRuns', QuickCheck reports the error as the failure. So when
+-- random worlds need not have the robot ('genWorld' picks each robot's
+-- type at random) or have others beside it, give worlds without it a
+-- predicate that holds (@\\w -> if hasIt w then onRobot ty i p else
+-- Always (SP (arr (const True)))@): 'shrinkWorld' may remove it while
+-- keeping another robot, and the error would then be the
+-- counterexample. A world's only robot stays while it shrinks.
 onRobot :: RobotType -> RobotId -> TPred RobotState -> TPred WorldState
 onRobot ty i p =
   -- (the And's first operand makes the robot's state at time 0, which
