@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the long-running networks for N and 10 N samples, the simulator
 # (10 simbots, the benchmark world, dt = 0.01) for N/10 and N steps, and
-# each stateful combinator inside a loop, the testing kit's evalT, runT and
+# each stateful combinator inside a loop, the testing kit's evalT, runT (of the
+# world states and, with onRobot, of one robot's) and
 # writeRunReplayPage, and
 # prints the maximum residency that the GHC runtime reports (+RTS -s).
 # Constant space means the two figures of a row agree (within GC sampling
@@ -56,10 +57,13 @@ for key in always implies eventually until window nested; do
   done
 done
 # runT on a run of three simbots (the predicate holds: the run is decided,
-# never explained), N/10 and N steps of 0.01 s
-for m in "$((n / 10))" "$n"; do
-  printf '%-17s %12s %22s\n' "runT" "$m" \
-    "$("$kit" runT "$m" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}')"
+# never explained), N/10 and N steps of 0.01 s; onRobot: runT of a
+# predicate on one of them
+for key in runT onRobot; do
+  for m in "$((n / 10))" "$n"; do
+    printf '%-17s %12s %22s\n' "$key" "$m" \
+      "$("$kit" "$key" "$m" +RTS -s 2>&1 >/dev/null | awk '/maximum residency/ {print $1}')"
+  done
 done
 # writeRunReplayPage on that run (recorded as it goes), N/10 and N steps
 for m in "$((n / 10))" "$n"; do

@@ -3,10 +3,11 @@
 -- @N + 1@ samples made lazily (0.01 s apart, the values 0..N) and prints
 -- the answer; run it with @+RTS -s@ and read the maximum residency. The
 -- kind @runT@ checks a predicate on every world state of a run of three
--- simbots for N steps of 0.01 s with 'runT'; the kind @page@ writes that
+-- simbots for N steps of 0.01 s with 'runT', and the kind @onRobot@ one on
+-- the states of one of them ('onRobot'); the kind @page@ writes that
 -- run's replay page ('writeRunReplayPage', to a file in the system's
 -- temporary folder, removed after) and prints its size in bytes. With no
--- arguments, every kind on 10^5 samples, the run on 10^4 steps and its
+-- arguments, every kind on 10^5 samples, the runs on 10^4 steps and the
 -- page on 10^3 (what @cabal bench@ runs).
 module Main (main) where
 
@@ -21,8 +22,8 @@ import           Test.QuickCheck    (chatty, isSuccess, maxSuccess, quickCheckWi
 import           AFRP               (arr)
 import           AFRP.Geometry      (Point2 (..))
 import           AFrob              (constant, ddVelTR, mrFinalize, rpId)
-import           AFrobRobotSim      (ObjectTemplate (..), SimbotController, WorldState (..), defaultSimConfig)
-import           AFrobRobotSim.Test (runT, writeRunReplayPage)
+import           AFrobRobotSim      (ObjectTemplate (..), RobotState (..), SimbotController, WorldState (..), defaultSimConfig)
+import           AFrobRobotSim.Test (onRobot, runT, writeRunReplayPage)
 import           AFRP.Test.LTL
 import           AFRP.Test.Stream   (SignalSampleStream, groupDeltas)
 
@@ -48,6 +49,12 @@ stream n = groupDeltas (map fromIntegral [0 .. n]) (repeat 0.01)
 runOf :: Int -> IO Bool
 runOf n = isSuccess <$> quickCheckWithResult stdArgs { maxSuccess = 1, chatty = False }
   (runT defaultSimConfig (fromIntegral n / 100) wander wander (Always (SP (arr ((== 3) . length . wsRobots)))) world)
+
+-- | 'runT' of "SimbotA 2 keeps its id" ('onRobot') on that run of @n@
+-- steps: whether it held.
+onRobotOf :: Int -> IO Bool
+onRobotOf n = isSuccess <$> quickCheckWithResult stdArgs { maxSuccess = 1, chatty = False }
+  (runT defaultSimConfig (fromIntegral n / 100) wander wander (onRobot "SimbotA" 2 (Always (SP (arr ((== 2) . robotId))))) world)
 
 -- | The replay page of that run of @n@ steps, written and removed: its
 -- size in bytes.
@@ -75,9 +82,11 @@ main = do
     [] -> do
       mapM_ (\(name, p) -> putStrLn (name ++ " " ++ show (evalT p (stream 100000)))) predicates
       runOf 10000 >>= putStrLn . ("runT " ++) . show
+      onRobotOf 10000 >>= putStrLn . ("onRobot " ++) . show
       pageOf 1000 >>= putStrLn . ("page " ++) . show
     ["runT", n] | [(k, "")] <- reads n, k >= 0 -> runOf k >>= print
+    ["onRobot", n] | [(k, "")] <- reads n, k >= 0 -> onRobotOf k >>= print
     ["page", n] | [(k, "")] <- reads n, k >= 0 -> pageOf k >>= print
     [name, n] | Just p <- lookup name predicates, [(k, "")] <- reads n, k >= 0 ->
       print (evalT p (stream k))
-    _ -> die ("usage: afrp-test-residency [KIND N], KIND one of runT page " ++ unwords (map fst predicates))
+    _ -> die ("usage: afrp-test-residency [KIND N], KIND one of runT onRobot page " ++ unwords (map fst predicates))

@@ -43,6 +43,7 @@ module AFrobRobotSim.Test
     -- * Properties
   , forAllWorlds
   , runT
+  , onRobot
   , forAllRuns
   , runReplayPage
   , writeRunReplayPage
@@ -63,7 +64,7 @@ import           Test.QuickCheck.Property (Callback (PostFinalFailure), Callback
 import           Test.QuickCheck.State (terminal)
 import           Test.QuickCheck.Text  (putLine)
 
-import           AFRP                 (Time)
+import           AFRP                 (SF, Time, arr, sscan, (&&&), (>>>))
 import           AFRP.Geometry        (Point2 (..))
 import           AFrob.Dimensions     (RobotId, RobotType)
 import           AFrobRobotSim
@@ -281,12 +282,19 @@ robotView :: RobotType -> RobotId -> SignalSampleStream WorldState -> SignalSamp
 robotView ty i = go (0 :: Int)
   where
     go _ [] = []
-    go k ((dt, ws) : rest) = case [ r | r <- wsRobots ws, robotType r == ty, robotId r == i ] of
-      (r : _) -> (dt, r) : go (k + 1) rest
-      []      -> error ("AFrobRobotSim.Test.robotView: no " ++ ty ++ " " ++ show i ++ " in the run"
-                        ++ (if k == 0 then "" else " at sample " ++ show k)
-                        ++ " (its robots" ++ (if k == 0 then "" else " there") ++ ": " ++ robotsOf ws ++ ")")
-    robotsOf ws = case [ robotType r ++ " " ++ show (robotId r) | r <- wsRobots ws ] of
+    go k ((dt, ws) : rest) = let r = findRobot "robotView" ty i k ws in r `seq` (dt, r) : go (k + 1) rest
+
+-- @findRobot caller ty i k ws@: the robot @ty i@ in @ws@, the sample
+-- number @k@ of a run; if it is not there, the error of @caller@ that
+-- names it and the robots there are (at sample 0, the run's robots).
+findRobot :: String -> RobotType -> RobotId -> Int -> WorldState -> RobotState
+findRobot caller ty i k ws = case [ r | r <- wsRobots ws, robotType r == ty, robotId r == i ] of
+  r : _ -> r
+  []    -> error ("AFrobRobotSim.Test." ++ caller ++ ": no " ++ ty ++ " " ++ show i ++ " in the run"
+                  ++ (if k == 0 then "" else " at sample " ++ show k)
+                  ++ " (its robots" ++ (if k == 0 then "" else " there") ++ ": " ++ robotsOf ++ ")")
+  where
+    robotsOf = case [ robotType r ++ " " ++ show (robotId r) | r <- wsRobots ws ] of
       [] -> "none"
       ns -> intercalate ", " ns
 
@@ -413,6 +421,50 @@ decideRun p run explanation
 -- decided, @decided false at t = 6.76 (step 338)@.
 decidedLine :: Explanation WorldState -> String
 decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++ show (explFrame e) ++ ")"
+
+-- | @onRobot ty i p@: the predicate @p@ of one robot's states, found by
+-- its type (@\"SimbotA\"@ or @\"SimbotB\"@) and id, as a predicate of a
+-- run's world states, for 'runT' and 'forAllRuns': their report of a
+-- failure is then the instant that decided and the world states around
+-- it ('showWorldState', one line each, not @RobotState@ records), and
+-- 'forAllRuns' writes the failing run's replay page, as for any
+-- predicate of theirs.
+--
+-- > -- (corridors: random worlds of walls and one SimbotA 1)
+-- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB corridors
+-- >   (\_ -> onRobot "SimbotA" 1 (Always (SP (arr (not . robotStuck)))))
+--
+-- It holds of a run exactly when @p@ holds of the robot's view
+-- ('robotView'), and is decided false at the same instant: it is @p@
+-- 'tPredOn' the robot's state, so at time 0 @p@'s atoms see the robot's
+-- state at time 0, and an atom with state ('previously', an
+-- 'AFRP.iPre' of the speed) keeps it from time 0 on, as on the view.
+--
+-- A robot that is not in the run (a misspelt type, a wrong id) is an
+-- error naming it and the robots there are, as for 'robotView': @p@
+-- would otherwise hold of nothing. The first sample is always looked at,
+-- so a @p@ whose atoms ignore their input finds it out too; the other
+-- samples as @p@ reads them (a run's robots are the same at every
+-- sample; a hand-made stream that loses the robot is the error at the
+-- sample that does, when @p@ reads it there). With 'runT' and
+-- 'forAllRuns', QuickCheck reports the error as the failure. So when
+-- random worlds need not have the robot ('genWorld' picks each robot's
+-- type at random) or have others beside it, give worlds without it a
+-- predicate that holds (@\\w -> if hasIt w then onRobot ty i p else
+-- Always (SP (arr (const True)))@): 'shrinkWorld' may remove it while
+-- keeping another robot, and the error would then be the
+-- counterexample. A world's only robot stays while it shrinks.
+onRobot :: RobotType -> RobotId -> TPred RobotState -> TPred WorldState
+onRobot ty i p =
+  -- (the And's first operand makes the robot's state at time 0, which
+  -- finds a missing robot whatever p reads; it is true wherever it is
+  -- made, so the And is p, sample by sample)
+  tPredOn (robotOf ty i) (And (SP (arr (`seq` True))) p)
+
+-- The robot's state at each sample, its sample number at hand for the
+-- error of a robot not there.
+robotOf :: RobotType -> RobotId -> SF WorldState RobotState
+robotOf ty i = (sscan (\k _ -> k + 1) (-1) &&& arr id) >>> arr (\(k, ws) -> findRobot "onRobot" ty i k ws)
 
 -- | @forAllRuns file config duration rcA rcB gen p@: the predicate @p w@
 -- ('runT') holds for the run of every world @w@ from @gen@. A failing world is

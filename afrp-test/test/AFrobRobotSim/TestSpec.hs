@@ -169,6 +169,45 @@ specWithoutFiles = do
     evaluate (length (robotView "SimbotB" 1 (take 2 run ++ emptied)))
       `shouldThrow` errorCall "AFrobRobotSim.Test.robotView: no SimbotB 1 in the run at sample 2 (its robots there: none)"
 
+  it "onRobot is the predicate of the robot's view: it holds and is decided false as there (fixed)" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 2) 0]
+        run   = runStream defaultSimConfig { simDt = 0.1 } 2 world wander rcBrake
+        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
+        xOf r = let Point2 x _ = robotPos r in x
+        -- (one of them with state: the robot's x never falls back)
+        preds = [ Always (SP (arr ((== Point2 2 2) . robotPos)))
+                , Always (SP (arr ((< 0.5) . xOf)))
+                , Eventually (SP (arr ((> 0.3) . xOf)))
+                , eventuallyWithin 0.5 (SP (arr ((> 0.3) . xOf)))
+                , Always (SP (proc r -> do { x0 <- iPre 0 -< xOf r; returnA -< xOf r >= x0 })) ]
+        instant = fmap (\e -> (explFrame e, explTime e))
+    forM_ [("SimbotA", 1), ("SimbotB", 1)] $ \(ty, i) -> forM_ preds $ \p -> do
+      evalT (onRobot ty i p) run `shouldBe` evalT p (robotView ty i run)
+      instant (explainT (onRobot ty i p) run) `shouldBe` instant (explainT p (robotView ty i run))
+    -- (a property of robot B that robot A breaks, and the other way round)
+    map (\ty -> evalT (onRobot ty 1 (head preds)) run) ["SimbotA", "SimbotB"] `shouldBe` [False, True]
+    map (\ty -> evalT (onRobot ty 1 (Always (SP (arr ((/= Point2 2 2) . robotPos))))) run) ["SimbotA", "SimbotB"]
+      `shouldBe` [True, False]
+
+  it "onRobot of a robot not in the run is an error naming it and the robots there, whatever the predicate reads" $ do
+    let world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 2) 0]
+        run   = runStream defaultSimConfig { simDt = 0.1 } 2 world wander wander
+        anything = Always (SP (arr (const True)))
+    evaluate (evalT (onRobot "SimbotA" 2 anything) run)
+      `shouldThrow` errorCall "AFrobRobotSim.Test.onRobot: no SimbotA 2 in the run (its robots: SimbotA 1, SimbotB 1)"
+    evaluate (evalT (onRobot "simbotA" 1 (Eventually (SP (arr robotStuck)))) run)
+      `shouldThrow` errorCall "AFrobRobotSim.Test.onRobot: no simbotA 1 in the run (its robots: SimbotA 1, SimbotB 1)"
+    evaluate (fmap explFrame (explainT (onRobot "SimbotB" 3 (Not anything)) run)) `shouldThrow` anyErrorCall
+    -- (a hand-made stream that loses the robot: the error at that sample)
+    let emptied = [ (dt, ws { wsRobots = [] }) | (dt, ws) <- take 1 (drop 2 run) ]
+    evaluate (evalT (onRobot "SimbotB" 1 (Always (SP (arr ((== 1) . robotId))))) (take 2 run ++ emptied))
+      `shouldThrow` errorCall "AFrobRobotSim.Test.onRobot: no SimbotB 1 in the run at sample 2 (its robots there: none)"
+    -- (runT reports it as the failure)
+    result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+      runT defaultSimConfig 1 wander wander (onRobot "SimbotB" 2 anything) world
+    isSuccess result `shouldBe` False
+    output result `shouldSatisfy` ("no SimbotB 2 in the run (its robots: SimbotA 1, SimbotB 1)" `isInfixOf`)
+
   it "runReplayPage counts the samples as the log does, the one at time 0 included" $ do
     let page = runReplayPage defaultSimConfig { simDt = 0.1 } 1 [OTSimbotA 1 (Point2 0 0) 0] wander wander
     pageSummary page `shouldSatisfy` ("\"steps\":11," `isInfixOf`)
@@ -582,6 +621,62 @@ specWithFiles = do
     -- (three worlds that pass, each run once)
     runsOf straight (Always (SP (arr (const True)))) `shouldReturn` (True, 3)
 
+  it "forAllRuns of a predicate on one robot (onRobot) reports and writes the page as of the world's predicate" $ \tmp -> do
+    -- (a world of one robot, so that "no robot is stuck" and "SimbotB 1 is
+    -- not stuck" are one property: the same failure, report and page)
+    let file = tmp </> "afrp-test-one-robot.world"
+        gen = do x <- choose (0, 3)
+                 pure [OTSimbotB 1 (Point2 x 0) 0, OTBall (Point2 (-3) (-3))]
+        check p = do
+          result <- quickCheckWithResult stdArgs { chatty = False, replay = Just (mkQCGen 5, 0) } $
+            forAllRuns file defaultSimConfig { simDt = 0.05 } 10 straight straight gen (const p)
+          page <- readFile (file ++ ".html")
+          length page `seq` mapM_ removeFile [file, file ++ ".html"]
+          pure (result, page)
+    (viaWorld, worldPage) <- check neverStuck
+    (viaRobot, robotPage) <- check (onRobot "SimbotB" 1 (Always (SP (arr (not . robotStuck)))))
+    isSuccess viaRobot `shouldBe` False
+    output viaRobot `shouldBe` output viaWorld
+    robotPage `shouldBe` worldPage
+    -- (the time in runT's words, the world states in showWorldState's)
+    output viaRobot `shouldSatisfy` ("decided false at t = " `isInfixOf`)
+    [ l | l <- lines (output viaRobot), "  > t=" `isPrefixOf` l ] `shouldSatisfy` (\ls -> length ls == 1 && all ("SimbotB 1 (" `isInfixOf`) ls)
+    output viaRobot `shouldNotSatisfy` ("RobotState" `isInfixOf`)
+    pageSummary robotPage `shouldSatisfy` ("\"falsified\":{\"t\":" `isInfixOf`)
+
+  it "forAllRuns of one robot among several names the instant that robot decided, and shrinks to a world with it" $ \tmp -> do
+    -- (SimbotA drives into the world's edge; SimbotB stands still: only
+    -- a property of SimbotA fails. Worlds without SimbotA, which
+    -- shrinking tries, get a predicate that holds)
+    let file = tmp </> "afrp-test-robot-of-two.world"
+        world = [OTSimbotB 1 (Point2 (-2) 2) 0, OTSimbotA 1 (Point2 3 0) 0, OTBlock (Point2 (-3) (-3))]
+        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
+        notStuck = Always (SP (arr (not . robotStuck)))
+        hasA1 w = not (null [ () | OTSimbotA 1 _ _ <- w ])
+        ofRobot ty w = if ty /= "SimbotA" || hasA1 w then onRobot ty 1 notStuck else Always (SP (arr (const True)))
+        check ty = quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+          forAllRuns file defaultSimConfig { simDt = 0.05 } 10 straight rcBrake (pure world) (ofRobot ty)
+    passes <- check "SimbotB"
+    isSuccess passes `shouldBe` True
+    fails <- check "SimbotA"
+    case fails of
+      Failure { failingTestCase = shown : _ } -> do
+        written <- readWorldFile file
+        page <- readFile (file ++ ".html")
+        length page `seq` mapM_ removeFile [file, file ++ ".html"]
+        fmap renderWorld written `shouldBe` Right shown
+        written `shouldBe` Right [OTSimbotA 1 (Point2 3 0) 0]
+        -- (the instant runT names for the world of SimbotA alone, in
+        -- which it is the only robot that can get stuck)
+        alone <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+          runT defaultSimConfig { simDt = 0.05 } 10 straight rcBrake neverStuck [OTSimbotA 1 (Point2 3 0) 0]
+        case (decidedLines fails, decidedLines alone) of
+          (l : _, [expected]) -> do
+            l `shouldBe` expected
+            pageSummary page `shouldSatisfy` (("\"text\":\"" ++ takeWhile (/= ':') l ++ "\"") `isInfixOf`)
+          _ -> expectationFailure ("no instant in the output: " ++ output fails ++ "\n" ++ output alone)
+      _ -> expectationFailure ("SimbotA's failure was not caught: " ++ output fails)
+
 -- @countingStarts starts rc@: the controller @rc@, counting in @starts@
 -- each time it is started for a robot (once per robot and run: the
 -- simulator starts a robot's controller in each run its robot moves in).
@@ -604,6 +699,11 @@ straight _ = constant (mrFinalize (ddVelTR 1 0))
 -- Nobody is ever stuck.
 neverStuck :: TPred WorldState
 neverStuck = Always (SP (arr (not . any robotStuck . wsRobots)))
+
+-- The lines of a result's output that say the instant a predicate was
+-- decided false.
+decidedLines :: Result -> [String]
+decidedLines result = [ l | l <- lines (output result), "decided false at t = " `isPrefixOf` l ]
 
 -- The run's summary as the page holds it: its JSON object's text.
 pageSummary :: String -> String

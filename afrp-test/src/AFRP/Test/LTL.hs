@@ -26,6 +26,10 @@
 -- runs from time 0), so they are two further constructors that are not
 -- exported. Past-time operators need no constructor: the past is what a
 -- signal function sees, so they are signal functions to use inside 'SP'.
+-- For the same reason a predicate over a view of the samples (one robot
+-- of a world, a field of a record) needs no constructor either: 'tPredOn'
+-- puts the view in front of every atom, and since every atom runs from
+-- time 0 the view does too, which is exactly the view's stream.
 module AFRP.Test.LTL
   ( -- * Temporal predicates
     TPred (SP, And, Or, Not, Implies, Always, Eventually, Next, Until)
@@ -53,6 +57,7 @@ module AFRP.Test.LTL
   , untilSF
     -- * Rewriting predicates
   , tPredMap
+  , tPredOn
   ) where
 
 import           AFRP             (DTime, SF, arr, iPre, sscan, (&&&), (>>>))
@@ -400,3 +405,48 @@ tPredMap f p = case p of
   Until a b            -> Until (tPredMap f a) (tPredMap f b)
   EventuallyWithin d a -> EventuallyWithin d (tPredMap f a)
   AlwaysFor d a        -> AlwaysFor d (tPredMap f a)
+
+-- | @tPredOn view p@: @p@ over what the signal function @view@ makes of
+-- the samples (one robot's state out of a world's, a field of a record).
+-- It holds of a stream exactly when @p@ holds of the stream of @view@'s
+-- outputs:
+--
+-- > evalT (tPredOn view p) s  ==  evalT p (fst (evalSF view s))
+--
+-- and 'explainT' decides it false at the same sample and time as @p@ on
+-- that stream (its 'explAround' shows the samples of @s@, not @view@'s
+-- outputs: a failure is reported in the terms of the whole stream).
+--
+-- Each atom @SP sf@ becomes @SP (view >>> sf)@; operators and time
+-- bounds are kept. An atom runs from time 0 of the stream wherever it
+-- sits in the formula, so @view@ does too, which is why this is the
+-- predicate on the mapped stream:
+--
+-- * at time 0 (the first sample), the atoms see @view@'s output at time
+--   0, made from the first sample (whose time step, like 'evalSF', it
+--   ignores);
+-- * a @view@ with state (an 'iPre', an integral, a clock) starts at
+--   time 0 and keeps its state from sample to sample: under 'Always',
+--   'Next' or a time bound it is never restarted where the operator
+--   looks, so @tPredOn (iPre x) p@ is @p@ of the stream delayed by one
+--   sample, with @x@ at time 0;
+-- * the time bounds ('eventuallyWithin', 'alwaysFor') count the same
+--   seconds: @view@'s outputs come at the stream's own times.
+--
+-- Cost, not meaning: each atom runs a copy of @view@ of its own, so a
+-- view costs once per atom of @p@; and lazily, a sample's output of
+-- @view@ being made only when an atom reads it (an atom that ignores its
+-- input, @arr (const True)@, never makes it).
+tPredOn :: SF b a -> TPred a -> TPred b
+tPredOn view p = case p of
+  SP sf                -> SP (view >>> sf)
+  And a b              -> And (tPredOn view a) (tPredOn view b)
+  Or a b               -> Or (tPredOn view a) (tPredOn view b)
+  Not a                -> Not (tPredOn view a)
+  Implies a b          -> Implies (tPredOn view a) (tPredOn view b)
+  Always a             -> Always (tPredOn view a)
+  Eventually a         -> Eventually (tPredOn view a)
+  Next a               -> Next (tPredOn view a)
+  Until a b            -> Until (tPredOn view a) (tPredOn view b)
+  EventuallyWithin d a -> EventuallyWithin d (tPredOn view a)
+  AlwaysFor d a        -> AlwaysFor d (tPredOn view a)

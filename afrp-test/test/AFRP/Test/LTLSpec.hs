@@ -5,15 +5,16 @@ import           System.Timeout   (timeout)
 import           Test.Hspec
 import           Test.QuickCheck
 
-import           AFRP             (SF, arr, iPre, localTime, (>>>))
+import           AFRP             (DTime, SF, arr, iPre, localTime, sscan, (>>>))
 import           AFRP.Test.LTL
 import           AFRP.Test.QuickCheck
 import           AFRP.Test.Stream
 
 -- A formula, as data that can be shown, over four atoms (two of them with
--- state, to see that atoms keep their state from time 0).
+-- state, to see that atoms keep their state from time 0). 'genF' makes
+-- no time bounds (the reference has none); 'genFBounded' does.
 data F = Atom Int | FAnd F F | FOr F F | FNot F | FImplies F F | FAlways F
-       | FEventually F | FNext F | FUntil F F
+       | FEventually F | FNext F | FUntil F F | FWithin DTime F | FFor DTime F
   deriving (Show)
 
 genF :: Int -> Gen F
@@ -22,6 +23,15 @@ genF k = oneof
   [ Atom <$> chooseInt (0, 3), FAnd <$> sub <*> sub, FOr <$> sub <*> sub, FNot <$> sub
   , FImplies <$> sub <*> sub, FAlways <$> sub, FEventually <$> sub, FNext <$> sub, FUntil <$> sub <*> sub ]
   where sub = genF (k - 1)
+
+genFBounded :: Int -> Gen F
+genFBounded 0 = genF 0
+genFBounded k = frequency
+  [ (4, genF k), (1, FWithin <$> bound <*> sub), (1, FFor <$> bound <*> sub)
+  , (2, FAnd <$> sub <*> sub), (2, FAlways <$> sub), (1, FNext <$> sub), (1, FUntil <$> sub <*> sub) ]
+  where
+    sub = genFBounded (k - 1)
+    bound = elements [0, 0.25, 0.5, 1, 2]
 
 atom :: Int -> SF Int Bool
 atom 0 = arr even
@@ -40,6 +50,8 @@ toTPred f = case f of
   FEventually a -> Eventually (toTPred a)
   FNext a       -> Next (toTPred a)
   FUntil a b    -> Until (toTPred a) (toTPred b)
+  FWithin d a   -> eventuallyWithin d (toTPred a)
+  FFor d a      -> alwaysFor d (toTPred a)
 
 -- The reference: yampa-test's recursive definition read at sample i of
 -- a stream of n samples, each atom run over the whole stream.
@@ -57,6 +69,8 @@ reference f0 s = at f0 0
       FEventually a -> if i == n - 1 then at a i else at a i || at (FEventually a) (i + 1)
       FNext a       -> next a i
       FUntil a b    -> (at a i && next (FUntil a b) i) || at b i
+      FWithin _ _   -> error "the reference has no time bounds (genF makes none)"
+      FFor _ _      -> error "the reference has no time bounds (genF makes none)"
     next f i = i == n - 1 || at f (i + 1)
 
 -- A predicate on the current sample only.
@@ -66,6 +80,15 @@ is f = SP (arr f)
 -- The first n samples of a stream, and an error past them.
 readNoFurther :: Int -> SignalSampleStream a -> SignalSampleStream a
 readNoFurther n s = take n s ++ error ("the stream was read past sample " ++ show n)
+
+-- Views of a stream of Int for tPredOn: without state, with state (a
+-- running sum, a delay whose time 0 is its initial value), and of the
+-- clock.
+view :: Int -> SF Int Int
+view 0 = arr negate
+view 1 = sscan (+) 0
+view 2 = iPre 5
+view _ = localTime >>> arr (\t -> floor (t * 3))
 
 -- Ten samples 0.1 s apart with the values 0..9.
 count :: SignalSampleStream Int
@@ -80,6 +103,37 @@ spec = do
     it "explainT explains exactly the failures" $
       forAll (genF 3) $ \f -> forAllStreams (generateStream DistRandom (Nothing, Just 0.5) (Just (Left 12))) $ \s ->
         fmap (const ()) (explainT (toTPred f) s) === (if evalT (toTPred f) s then Nothing else Just ())
+  describe "tPredOn, a predicate on a view of the samples" $ do
+    it "is the predicate on the stream of the view's outputs, and explained at the same instant (property)" $
+      forAll (genFBounded 3) $ \f -> forAll (chooseInt (0, 3)) $ \v ->
+        forAllStreams (generateStream DistRandom (Nothing, Just 0.5) (Just (Left 12))) $ \s ->
+          let viewed = fst (evalSF (view v) s)
+              instant = fmap (\e -> (explFrame e, explTime e))
+          in evalT (tPredOn (view v) (toTPred f)) s === evalT (toTPred f) viewed
+             .&&. instant (explainT (tPredOn (view v) (toTPred f)) s) === instant (explainT (toTPred f) viewed)
+    it "sees the view's output at time 0 at the first sample (a delay's initial value) (fixed)" $ do
+      evalT (tPredOn (iPre 7) (is (== 7))) count `shouldBe` True
+      evalT (tPredOn (iPre 7) (is (== 0))) count `shouldBe` False
+      evalT (tPredOn (iPre 7) (Next (is (== 0)))) count `shouldBe` True
+      -- (the stream's first time step plays no part, as for evalSF)
+      evalT (tPredOn localTime (is (== 0))) ((0.5, 0) : drop 1 count) `shouldBe` True
+    it "runs a view with state from time 0, never restarted where an operator looks (fixed)" $ do
+      -- (running sums of 0..9: 0, 1, 3, 6, 10, 15, 21, 28, 36, 45; a sum
+      -- restarted at the sample Next or Eventually looks at would be 2 there,
+      -- and never 45)
+      let runningSum = sscan (+) 0
+      evalT (tPredOn runningSum (Next (Next (is (== 3))))) count `shouldBe` True
+      evalT (Next (Next (tPredOn runningSum (is (== 3))))) count `shouldBe` True
+      evalT (tPredOn runningSum (Eventually (is (== 45)))) count `shouldBe` True
+      evalT (tPredOn runningSum (Always (Implies (is (> 20)) (alwaysFor 0.2 (is (> 20)))))) count `shouldBe` True
+      evalT (tPredOn runningSum (Always (eventuallyWithin 0.1 (is (== 10))))) count `shouldBe` False
+      -- (a view of the clock keeps counting under Always)
+      evalT (tPredOn localTime (Always (eventuallyWithin 0.3 (SP (arr (> 0.55)))))) count `shouldBe` False
+      evalT (tPredOn localTime (Eventually (SP (arr (> 0.85))))) count `shouldBe` True
+    it "explains a failure with the stream's own samples, at the instant the view decided (fixed)" $ do
+      let e = explainT (tPredOn (sscan (+) 0) (Always (is (< 10)))) count
+      fmap explFrame e `shouldBe` Just 4
+      fmap (map (\(j, _, a) -> (j, a)) . explAround) e `shouldBe` Just [(j, j) | j <- [1 .. 6]]
   describe "evalT, yampa-test's operators (fixed)" $ do
     it "SP is the signal function's output at time 0" $ do
       evalT (is (== 0)) count `shouldBe` True
