@@ -20,6 +20,7 @@
 -- --quiet            print only the summary line
 -- --world FILE       load the world from FILE instead of the program's
 -- --dump-world       print the world in the world-file format and exit
+-- --print-program    print the program's name as its result line writes it (JSON) and exit
 -- --rays             draw the four range-finder rays
 -- --trails           draw each robot's path so far
 -- --svg FILE         write one SVG picture of the whole run  (default simbot-out/run.svg)
@@ -37,7 +38,7 @@
 --
 -- A flag that takes a value, given twice on one command line, takes its
 -- last value and is warned of when the run starts (not with
--- @--dump-world@, which runs nothing) ('optFlagsRepeated',
+-- @--dump-world@ or @--print-program@, which run nothing) ('optFlagsRepeated',
 -- 'optParamsRepeated'), but for @--keys@, whose presses all count.
 --
 -- 'validateOptions' checks the numbers together before anything is

@@ -50,6 +50,7 @@ module AFrobRobotSim.Result
   , startTallies
   , stepTallies
   , resultJSON
+  , programJSON
   ) where
 
 import           Data.List            (foldl')
@@ -119,6 +120,13 @@ stepTallies dt s ts = forceAll (zipWith one ts (wsRobots s))
                  (if robotStuck r then st + dt else st)
     forceAll xs = foldl' (\acc x -> x `seq` acc) () xs `seq` xs
 
+-- | The program's name as a result line writes it, its @program@ (a JSON
+-- string): the options' name for it ('AFrobRobotSim.Options.optProgram')
+-- or else the name given (the executable's). @--print-program@ prints it
+-- ('AFrobRobotSim.Options.optPrintProgram').
+programJSON :: String -> SimOptions -> JSON
+programJSON prog o = JString (argText (fromMaybe prog (optProgram o)))
+
 -- | The result line of a run: its settings (the program's name, its
 -- options and where its world came from) and its outcome (the summary
 -- and the robots' tallies at the last state simulated). See the module
@@ -127,7 +135,7 @@ stepTallies dt s ts = forceAll (zipWith one ts (wsRobots s))
 -- ('AFrobRobotSim.Options.optProgram').
 resultJSON :: String -> SimOptions -> WorldSource -> LogSummary -> [RobotTally] -> JSON
 resultJSON prog o source summary tallies = JObject
-  [ ("program", JString (argText (fromMaybe prog (optProgram o))))
+  [ ("program", programJSON prog o)
   , ("world", JString (worldSourceName source))
   , ("seed", JNumber (fromIntegral (optSeed o)))
   , ("dt", JNumber (optDt o))

@@ -102,7 +102,8 @@ import           AFrobRobotSim.Referee
 import           AFrobRobotSim.Render
 import           AFrobRobotSim.Replay
 import           AFrobRobotSim.Params      (unreadParams)
-import           AFrobRobotSim.Result      (WorldSource, worldSource)
+import           AFrobRobotSim.JSON        (encodeJSON)
+import           AFrobRobotSim.Result      (WorldSource, programJSON, worldSource)
 import           AFrobRobotSim.Robot       (SimbotController)
 import           AFrobRobotSim.Run.Preflight (preflight)
 import           AFrobRobotSim.Run.Signals
@@ -148,6 +149,14 @@ runSimRefereedWith :: SimOptions -> Referee -> Maybe WorldTemplate -> SimbotCont
 runSimRefereedWith opts referee mworld rcA rcB = do
   tolerantOutput   -- (a message the terminal's encoding cannot write must not stop the run)
   prog  <- getProgName
+  if optPrintProgram opts
+    -- (the name alone: no world read, nothing written, no warning)
+    then putStrLn (encodeJSON (programJSON prog opts)) >> endOutput prog
+    else runPrepared prog opts referee mworld rcA rcB
+
+-- 'runSimRefereedWith' of options that ask for a run or a printed world.
+runPrepared :: String -> SimOptions -> Referee -> Maybe WorldTemplate -> SimbotController -> SimbotController -> IO ()
+runPrepared prog opts referee mworld rcA rcB = do
   -- (the world checked once: a file's by its reader, each problem with
   -- its line; one given in code here; the run does not check it again,
   -- see 'simulateUnchecked')

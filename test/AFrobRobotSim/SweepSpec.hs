@@ -941,18 +941,41 @@ spec = do
         table <- merged dir [dir </> "a.jsonl", dir </> "b.jsonl"]
         filter (\l -> "== " `isPrefixOf` l && not ("over all other settings" `isInfixOf` l)) (lines table) `shouldBe`
           [ "== program=robot-a world=program  (2 runs, 0 failed)", "== program=robot-b world=(not given)  (2 runs, 2 failed)" ]
-        -- a program that writes no result line for the sweep's 0-second
-        -- run (here: exits at once) leaves its name unknown: the line names
-        -- its file alone, as an older sweep's did
+        -- a program that does not print its name for --print-program
+        -- (here: exits at once) leaves its name unknown: the line names
+        -- its file alone, as an older sweep's did, and a note says so
         let c = dir </> "c.sh"
-        writeFile c (unlines [ "#!/bin/bash", "case \" $* \" in *' --seconds 0 '*) exit 0 ;; esac", "exec '" ++ a ++ "' \"$@\"" ])
+        writeFile c (unlines [ "#!/bin/bash", "case \" $* \" in *' --print-program '*) exit 0 ;; esac", "exec '" ++ a ++ "' \"$@\"" ])
         perms <- getPermissions c
         setPermissions c (setOwnerExecutable True perms)
-        (codeC, _, _) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", c, dir </> "c.jsonl", "--", "--seconds", "1"]
+        (codeC, _, errC) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", c, dir </> "c.jsonl", "--", "--seconds", "1"]
         codeC `shouldBe` ExitFailure 1
+        errC `shouldSatisfy` ("note: the program did not print its name for --print-program (exit code 0)" `isInfixOf`)
         cs <- map parsed . lines <$> readFile (dir </> "c.jsonl")
         map (\r -> (field ["program"] r, either (const Nothing) Just (member "executable" r))) cs
           `shouldBe` replicate 2 (JString "c.sh", Nothing)
+
+    it "asks the program its name with --print-program, which runs nothing: a log the program names in code is not written over (a first version learnt the name from a 0-second run, which wrote it)" $
+      withTempDir $ \dir -> do
+        requireParallel
+        sweep <- script "sweep"
+        real <- childScript dir "program"
+        let logger = dir </> "logger.sh"
+            kept   = dir </> "run.jsonl"
+        writeFile logger (unlines [ "#!/bin/bash", "exec '" ++ real ++ "' --log '" ++ kept ++ "' \"$@\"" ])
+        perms <- getPermissions logger
+        setPermissions logger (setOwnerExecutable True perms)
+        writeFile kept "precious user data\n"
+        writeFile (dir </> "jobs") (unlines [ "--seed " ++ show k ++ " --log " ++ (dir </> ("run-" ++ show k ++ ".jsonl"))
+                                            | k <- [1, 2 :: Int] ])
+        (code, _, err) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", logger, dir </> "r.jsonl", "--", "--seconds", "1"]
+        (code, "note:" `isInfixOf` err) `shouldBe` (ExitSuccess, False)
+        readFile kept `shouldReturn` "precious user data\n"
+        mapM_ (\k -> doesFileExist (dir </> ("run-" ++ show k ++ ".jsonl")) `shouldReturn` True) [1, 2 :: Int]
+        -- (what it prints: the name, a JSON string on a line of its own)
+        (codeP, out, _) <- readProcessWithExitCode logger ["--print-program"] ""
+        (codeP, take 1 out, drop (length out - 2) out, length (lines out)) `shouldBe` (ExitSuccess, "\"", "\"\n", 1)
+        readFile kept `shouldReturn` "precious user data\n"
 
     it "a run that writes no result is filed under its setting when a parameter holds a control character (a tab was a space there: a setting of its own)" $ withTempDir $ \dir -> do
       requireParallel
@@ -1204,7 +1227,7 @@ spec = do
       err `shouldSatisfy` ("could not write the results to /dev/full (No space left on device)" `isInfixOf`)
       err `shouldNotSatisfy` ("0 failed" `isInfixOf`)
 
-    it "refuses flags after -- that make every run write the same file, and a file two job lines write" $ withTempDir $ \dir -> do
+    it "refuses flags after -- that make every run write the same file or print and exit, and a file two job lines write" $ withTempDir $ \dir -> do
       prog <- childScript dir "program"
       sweep <- script "sweep"
       let results = dir </> "r.jsonl"
@@ -1217,6 +1240,9 @@ spec = do
       forM_ [["--out", dir </> "out"], ["--frames"]] $ \flags ->
         refused (["--seeds", "1..2", prog, results, "--", "--seconds", "1"] ++ flags) "into the same folder"
       refused ["--seeds", "1..2", prog, results, "--", "--result", dir </> "x.json"] "sweep writes each run's result line itself"
+      -- (and flags that make every run print and exit, with no result)
+      forM_ ["--help", "-h", "--dump-world", "--print-program"] $ \flag ->
+        refused ["--seeds", "1..2", prog, results, "--", flag] (flag ++ " after -- would make every run print and exit")
       let jobs ls = writeFile (dir </> "jobs") (unlines ls) >> pure ["--jobs", dir </> "jobs", prog, results, "--", "--seconds", "1"]
       jobs ["--seed 1 --log a.jsonl", "--seed 2 --log b.jsonl", "--seed 3 --log a.jsonl"]
         >>= \args -> refused args ("jobs: line 3: --log a.jsonl: " ++ dir </> "jobs: line 1 writes it too")

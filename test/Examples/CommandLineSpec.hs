@@ -33,7 +33,12 @@ examples args = do
   readCreateProcessWithExitCode (proc self args) { env = Just ((childVariable, "afrp-examples") : environment) } ""
 
 spec :: Spec
-spec =
+spec = do
+  describe "afrp-examples' --print-program" $
+    it "NAME --print-program prints the example's name as its result line writes it, a JSON string, and runs nothing (scripts/sweep asks it so)" $ do
+      examples ["rcReverse", "--print-program"] `shouldReturn` (ExitSuccess, "\"afrp-examples rcReverse\"\n", "")
+      examples ["rcReverse", "--seconds", "3", "--log", "/nonexistent/x.jsonl", "--print-program"]
+        `shouldReturn` (ExitSuccess, "\"afrp-examples rcReverse\"\n", "")
   describe "afrp-examples' --help" $ do
     it "--help prints the program's usage, exit 0" $ do
       (code, out, err) <- examples ["--help"]

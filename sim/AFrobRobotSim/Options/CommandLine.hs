@@ -133,6 +133,7 @@ parseSimFlags o0 = go o0 False False [] []
     , ("--no-replay",  \(o, s, _) -> (o { optReplay = Nothing }, s, True))
     , ("--quiet",      \(o, s, p) -> (o { optQuiet = True }, s, p))
     , ("--dump-world", \(o, s, p) -> (o { optDumpWorld = True }, s, p))
+    , ("--print-program", \(o, s, p) -> (o { optPrintProgram = True }, s, p))
     , ("--rays",       \(o, s, p) -> (o { optRays = True }, s, p))
     , ("--trails",     \(o, s, p) -> (o { optTrails = True }, s, p))
     ]
@@ -280,6 +281,7 @@ usage prog = intercalate "\n"
   , "  --quiet            print only the summary line"
   , "  --world FILE       load the world from FILE instead of the program's"
   , "  --dump-world       print the world in the world-file format and exit"
+  , "  --print-program    print the program's name as its result line writes it (JSON) and exit"
   , "  --rays             draw the four range-finder rays"
   , "  --trails           draw each robot's path so far"
   , "  --svg FILE         write one SVG picture of the whole run  (default simbot-out/run.svg)"

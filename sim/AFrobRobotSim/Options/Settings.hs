@@ -40,6 +40,12 @@ data SimOptions = SimOptions
   , optQuiet         :: !Bool              -- ^ print only the summary
   , optWorldFile     :: Maybe FilePath     -- ^ load the world from this file
   , optDumpWorld     :: !Bool              -- ^ print the world and exit
+  , optPrintProgram  :: !Bool
+    -- ^ print the program's name as its result line writes it (its
+    -- @program@, a JSON string: 'optProgram' or the executable's name)
+    -- and exit, reading no world and writing nothing (@--print-program@:
+    -- how @scripts/sweep@ learns the name of the program it runs, for the
+    -- lines of runs that write no result)
   , optRays          :: !Bool              -- ^ draw range-finder rays
   , optTrails        :: !Bool              -- ^ draw trails
   , optSvg           :: Maybe FilePath     -- ^ write an SVG of the whole run
@@ -77,7 +83,7 @@ defaultSimOptions :: SimOptions
 defaultSimOptions = SimOptions
   { optSeconds = 30, optDt = 0.01, optFps = 25, optOut = defaultOut, optFrames = False
   , optScale = Nothing, optKeys = [], optSeed = 0, optOdometryNoise = 0, optQuiet = False
-  , optWorldFile = Nothing, optDumpWorld = False, optRays = False, optTrails = False
+  , optWorldFile = Nothing, optDumpWorld = False, optPrintProgram = False, optRays = False, optTrails = False
   , optSvg = Just (defaultOut </> "run.svg"), optVideo = Nothing, optLog = Nothing
   , optReplay = Just (defaultOut </> "replay.html"), optResult = Nothing, optProgram = Nothing
   , optParams = [], optParamsRepeated = [], optFlagsRepeated = [] }

@@ -377,8 +377,8 @@ tableOf names groups = unlines (map printableLine
 -- one. Such a line names only the file the sweep ran (a wrapper
 -- script's, say, @rev.sh@), which the program's result lines may name
 -- otherwise ('optProgram': @afrp-examples rcReverse@): it has no
--- @executable@, being an older sweep's, or one whose program wrote no
--- result line for the sweep's 0-second run. The groups of a program so
+-- @executable@, being an older sweep's, or one whose program did not
+-- print its name for the sweep's @--print-program@. The groups of a program so
 -- named stay as they are, and so do all groups when no line names a
 -- program so or several do (then a line that names a program no other
 -- line names is a setting of its own). A run so filed that a line has too
