@@ -470,12 +470,18 @@ spec = do
       settings (take 2 sampleLines ++ [ofProgram "q" (sampleLines !! 2), noResult "q" (Just "q.sh") 7]) `shouldBe`
         [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=default speed=0.1  (2 runs, 1 failed)" ]
       settings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
-      -- a line that names only the file (an older sweep's) is filed with
-      -- the one program the other lines name as their result lines do, as
-      -- before; with two so named, it is a setting of its own
+      -- a line that names only the file (an older sweep's) is filed under
+      -- the program another line says that file is named by (its
+      -- executable); else with the one program that result lines name, as
+      -- before (also when a program whose runs all failed is merged: it
+      -- was a setting of its own then); else it is a setting of its own
       settings (take 2 sampleLines ++ [noResult "p.sh" Nothing 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "q.sh" Nothing 9]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=(not given) speed=0.1  (2 runs, 2 failed)" ]
       settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "r.sh" Nothing 9]) `shouldBe`
-        [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=(not given) speed=0.1  (1 runs, 1 failed)"
+        [ "== program=p world=default speed=0.1  (3 runs, 1 failed)", "== program=q world=(not given) speed=0.1  (1 runs, 1 failed)" ]
+      settings (take 2 sampleLines ++ [ofProgram "q" (sampleLines !! 2), noResult "r.sh" Nothing 9]) `shouldBe`
+        [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=default speed=0.1  (1 runs, 0 failed)"
         , "== program=r.sh world=(not given) speed=0.1  (1 runs, 1 failed)" ]
       -- the same run named both ways: merged twice
       headings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") 7, noResult "p.sh" Nothing 7]) `shouldSatisfy` \hs -> case hs of
@@ -1471,7 +1477,7 @@ spec = do
       let prog = dir </> "slow"
           results = dir </> "r.jsonl"
       writeFile prog (unlines [ "#!/bin/bash"
-                              , "case \" $* \" in *' --dump-world '*|*' --seconds 0 '*) exit 0 ;; esac   # (the sweep's checks: of the flags, of the name)"
+                              , "case \" $* \" in *' --dump-world '*|*' --print-program '*) exit 0 ;; esac   # (the sweep's checks: of the flags, of the name)"
                               , "trap 'sleep 2; exit 143' TERM"
                               , ": > '" ++ dir </> "started" ++ "'/$$"
                               , "sleep 1000 & wait" ])

@@ -99,7 +99,8 @@ ownWorlds = ["default", "program"]
 
 -- One line, read: the setting, whether its program is named as the
 -- program's result lines name it (a result line's is; the sweep's line
--- for a run with no result says so by its @executable@), the seed, the
+-- for a run with no result says so by its @executable@), the file the
+-- sweep ran (that @executable@), the seed, the
 -- time step and duration of a result line (their JSON text; 'Nothing' for
 -- the sweep's line for a run with no result), the failure, and every
 -- outcome's value ('Nothing': @null@, which is how a result line writes a
@@ -107,6 +108,7 @@ ownWorlds = ["default", "program"]
 data Run = Run
   { runSetting :: Setting
   , runNamed   :: Bool
+  , runExecutable :: Maybe String   -- ^ the file the sweep ran, when its line for a run with no result says it
   , runSeed    :: Seed
   , runSteps   :: Maybe (String, String, String)
   , runFailure :: Maybe String
@@ -161,8 +163,8 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
         _         -> Left "\"seed\" is neither a number nor a string"
       _       <- member "flags" v >>= asString
       failure <- member "failure" v >>= asString
-      named   <- maybe (Right False) (fmap (const True) . asString) (lookup "executable" fields)
-      pure (Run setting named seed Nothing (Just failure) [])
+      exe     <- maybe (Right Nothing) (fmap Just . asString) (lookup "executable" fields)
+      pure (Run setting (exe /= Nothing) exe seed Nothing (Just failure) [])
     Just out -> do
       seed <- case seedValue of
         JNumber x -> Right (numberSeed x)
@@ -186,7 +188,7 @@ readRun v = either (\e -> Left ("not a result line of a sweep (" ++ e ++ ")")) R
             (Just f, _)   -> Just f
             (_, True)     -> Just "interrupted"
             _             -> Nothing
-      pure (Run setting True seed (Just (dt, seconds, noise)) fault
+      pure (Run setting True Nothing seed (Just (dt, seconds, noise)) fault
                 ([("simulated", simulated), ("steps", steps)] ++ perRobot ++ scores))
   where
     -- (a seed is a whole number of at most 2^53, as --seed takes it)
@@ -221,31 +223,33 @@ finite x     = (\d -> if isNaN d || isInfinite d then Nothing else Just (d + 0))
 
 -- | The merged lines so far: the numbers of the outcomes' names, each
 -- group's tallies, the programs that lines name as their result lines
--- do ('runNamed'), and the runs counted.
-data Merge = Merge !(M.Map String Int) !(M.Map Setting Group) !(S.Set String) !Int
+-- do ('runNamed'), the programs each file the sweep ran is named by
+-- ('runExecutable'), and the runs counted.
+data Merge = Merge !(M.Map String Int) !(M.Map Setting Group) !(S.Set String) !(M.Map String (S.Set String)) !Int
 
 -- | No line merged yet.
 emptyMerge :: Merge
-emptyMerge = Merge M.empty M.empty S.empty 0
+emptyMerge = Merge M.empty M.empty S.empty M.empty 0
 
 -- | How many runs are merged so far (lines, blank ones not counted): 0
 -- is the one case 'renderMerge' refuses for having nothing to show.
 mergedRuns :: Merge -> Int
-mergedRuns (Merge _ _ _ n) = n
+mergedRuns (Merge _ _ _ _ n) = n
 
 -- Add a run, or say why not: a run of the same setting and seed (and,
 -- both being result lines, time step and duration) is there already.
 addRun :: Merge -> Run -> Either String Merge
-addRun (Merge names groups named n) run
+addRun (Merge names groups named exes n) run
   | repeated  = Left ("the run " ++ showSetting programsSoFar (runSetting run) ++ " seed " ++ seedText ++ steps
                       ++ " is on an earlier line too (a result file merged twice, a run merged with its"
                       ++ " rerun, or runs told apart only by flags a result line does not record, such as"
                       ++ " --keys: give each such run a --param that names its setting):"
                       ++ " each run may be merged once")
-  | otherwise = Right (Merge names' (M.insert (runSetting run) g' groups) named' (n + 1))
+  | otherwise = Right (Merge names' (M.insert (runSetting run) g' groups) named' exes' (n + 1))
   where
     seed@(Seed seedText _) = runSeed run
     named' = if runNamed run then S.insert (programOf (runSetting run)) named else named
+    exes' = maybe exes (\e -> M.insertWith S.union e (S.singleton (programOf (runSetting run))) exes) (runExecutable run)
     g = M.findWithDefault emptyGroup (runSetting run) groups
     -- (the program named when the lines so far name more than one)
     programsSoFar = any ((/= programOf (runSetting run)) . programOf) (M.keys groups)
@@ -340,9 +344,9 @@ mergeResults text = do
 -- @"default"@), when they name one; otherwise under @world=(not given)@
 -- ('Left' when a run so filed is a result line's too).
 renderMerge :: Merge -> Either String String
-renderMerge (Merge names groups0 named n)
+renderMerge (Merge names groups0 named exes n)
   | n == 0    = Left "no result lines"
-  | otherwise = tableOf names <$> (filePrograms named groups0 >>= fileUnnamed)
+  | otherwise = tableOf names <$> (filePrograms named exes groups0 >>= fileUnnamed)
 
 -- Whether the groups name more than one program (and the table names
 -- the program of each setting).
@@ -372,28 +376,32 @@ tableOf names groups = unlines (map printableLine
               ++ " each a --param to tell them apart)" | nMixed > 0 ]
 
 -- The groups, given the programs that lines name as their result lines do
--- ('runNamed'), with the sweep's lines for runs with no result that name
--- another program filed under the one program so named, when there is
--- one. Such a line names only the file the sweep ran (a wrapper
--- script's, say, @rev.sh@), which the program's result lines may name
--- otherwise ('optProgram': @afrp-examples rcReverse@): it has no
--- @executable@, being an older sweep's, or one whose program did not
--- print its name for the sweep's @--print-program@. The groups of a program so
--- named stay as they are, and so do all groups when no line names a
--- program so or several do (then a line that names a program no other
--- line names is a setting of its own). A run so filed that a line has too
--- (the same setting and seed) is refused, as 'addRun' refuses a run
--- merged twice. (Such a line does not say which program's result lines it
--- belongs with: the lines of a program whose every run wrote no result
--- and that name only its file, merged with one other program's lines,
--- are filed under that other program. A line with @executable@ is
--- never filed so.)
-filePrograms :: S.Set String -> M.Map Setting Group -> Either String (M.Map Setting Group)
-filePrograms named groups = case S.toList named of
-  [only] -> foldM (\acc (setting, g) -> joinFiled False (withProgram only setting) g acc) kept (M.toList strays)
-  _      -> Right groups
+-- ('runNamed') and the programs each file the sweep ran is named by
+-- ('runExecutable'), with the sweep's lines for runs with no result that
+-- name no such program filed under their program. Such a line names only
+-- the file the sweep ran (a wrapper script's, say, @rev.sh@), which the
+-- program's result lines may name otherwise ('optProgram':
+-- @afrp-examples rcReverse@): it has no @executable@, being an older
+-- sweep's, or one whose program did not print its name for the sweep's
+-- @--print-program@. It is filed under the program that other lines say
+-- its file is named by (their @executable@), when they say one; else
+-- under the one program that result lines name, when they name one
+-- alone; else it is a setting of its own. The groups of a program so
+-- named stay as they are. A run so filed that a line has too (the same
+-- setting and seed) is refused, as 'addRun' refuses a run merged twice.
+-- (When no line says which program its file is, the lines of a program
+-- whose every run wrote no result and that name only its file, merged
+-- with one other program's result lines, are filed under that other
+-- program. A line with @executable@ is never filed so.)
+filePrograms :: S.Set String -> M.Map String (S.Set String) -> M.Map Setting Group -> Either String (M.Map Setting Group)
+filePrograms named exes groups = foldM file kept (M.toList strays)
   where
     (strays, kept) = M.partitionWithKey (\s _ -> programOf s `S.notMember` named) groups
+    withResults = S.fromList [ programOf s | (s, g) <- M.toList kept, not (M.null (gBySteps g)) ]
+    file acc (setting, g) = case (fmap S.toList (M.lookup (programOf setting) exes), S.toList withResults) of
+      (Just [program], _) -> joinFiled False (withProgram program setting) g acc
+      (Nothing, [only])   -> joinFiled False (withProgram only setting) g acc
+      _                   -> Right (M.insert setting g acc)
 
 -- The groups with the runs of an unnamed world ('unnamedWorld') filed
 -- under the world the result lines of their program name for a run
