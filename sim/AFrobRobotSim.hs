@@ -31,6 +31,7 @@ module AFrobRobotSim
   , parseSimArgs
   , parseSimFlags
   , parseKeys
+  , isHelpFlag
   , validateOptions
   , validateOptionsIn
   , scaleFor

@@ -40,10 +40,10 @@ run prog args =
   case args of
     []             -> usageError prog "give an example name, or --list"
     flag : _
-      | isHelp flag -> putStr (helpText prog)
+      | isHelpFlag flag -> putStr (helpText prog)
     ["--list"]     -> putStr (exampleListing allExamples)
     "--list" : flag : _
-      | isHelp flag -> putStr (helpText prog)
+      | isHelpFlag flag -> putStr (helpText prog)
     flag : extra
       | flag == "--list" -> usageError prog (flag ++ " takes nothing after it, got " ++ unwords (map show extra))
       | "-" `isPrefixOf` flag -> usageError prog ("the flag " ++ show flag ++ " is not one of " ++ prog ++ "'s own (--list, "
@@ -62,9 +62,6 @@ runExample prog e flags = case (e, flags) of
     Right ShowHelp      -> putStrLn (exampleHelp prog e)
     Right (RunWith opt) -> runSimRefereedWith opt (exReferee e) (Just (exWorld e)) (exControllerA e) (exControllerB e)
 
--- (@--help@ and @-h@, wherever a runSim program takes them)
-isHelp :: String -> Bool
-isHelp = (`elem` ["--help", "-h"])
 
 -- @NAME --help@: the simulator's usage named for a robot example; what a
 -- signal-function example is.

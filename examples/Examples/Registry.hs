@@ -8,7 +8,7 @@ module Examples.Registry
 import           Data.List      (intercalate)
 import           Text.Printf    (printf)
 
-import           AFrobRobotSim  (Command (..), SimOptions (..), defaultSimOptions, parseSimArgs)
+import           AFrobRobotSim  (Command (..), SimOptions (..), defaultSimOptions, isHelpFlag, parseSimArgs)
 
 import           Examples.Types
 import qualified Exercises.Ex01 as Ex01
@@ -74,7 +74,7 @@ exampleListing es = unlines $
 exampleCommand :: String -> Example -> [String] -> Either String Command
 exampleCommand prog e flags = case e of
   SignalExample {}
-    | flag : _ <- flags, flag `elem` ["--help", "-h"] -> Right ShowHelp
+    | flag : _ <- flags, isHelpFlag flag -> Right ShowHelp
     | otherwise -> Left (exName e ++ " is a signal-function example; it takes no flags")
   RobotExample {}  -> fmap (named . scripted)
                            (parseSimArgs defaultSimOptions { optSeconds = exSeconds e } flags)

@@ -80,6 +80,7 @@ module AFrobRobotSim.Options
   , parseSimFlags
   , parseKeys
   , parseParam
+  , isHelpFlag
   , argText
   , usage
     -- * Checks

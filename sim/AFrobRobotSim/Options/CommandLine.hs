@@ -17,6 +17,7 @@ module AFrobRobotSim.Options.CommandLine
   , parseSimFlags
   , parseKeys
   , parseParam
+  , isHelpFlag
   , argText
     -- * Help
   , usage
@@ -93,8 +94,7 @@ parseSimFlags o0 = go o0 False False [] []
                                 in case outputNameFaults o' of
                                      []   -> Right (RunWith o')
                                      errs -> Left (intercalate "; " errs)
-    "--help" : _             -> Right ShowHelp
-    "-h" : _                 -> Right ShowHelp
+    flag : _ | isHelpFlag flag -> Right ShowHelp
     flag : rest | Just switch <- lookup flag switches ->
       case switch (o, svgNamed, pageNamed) of (o', s', p') -> go o' s' p' given flags rest
     flag : rest | Just set <- lookup flag (valued o) -> case rest of
@@ -123,7 +123,7 @@ parseSimFlags o0 = go o0 False False [] []
     _          -> True
   -- a value that is one of the flags is a value left out (@--out --no-svg@
   -- would write into a folder named @--no-svg@); @./--no-svg@ names such a file
-  isFlag v = v `elem` (["--help", "-h"] ++ map fst switches ++ map fst (valued o0))
+  isFlag v = isHelpFlag v || v `elem` (map fst switches ++ map fst (valued o0))
   -- the flags without a value: the settings, and whether the SVG and the
   -- page were named
   switches =
@@ -257,6 +257,14 @@ splitOn c str = case break (== c) str of
 
 trim :: String -> String
 trim = reverse . dropWhile isSpace . reverse . dropWhile isSpace
+
+-- | Whether an argument asks for the usage: @--help@ or @-h@ (read from
+-- the left, as every flag is: the first one, or the first fault before
+-- it, decides). The simulator's command line, @afrp-examples@' and
+-- @simbot --replay-from@'s all take these two.
+isHelpFlag :: String -> Bool
+isHelpFlag a = a == "--help" || a == "-h"
+
 
 -- | The usage text, with the defaults.
 usage :: String -> String

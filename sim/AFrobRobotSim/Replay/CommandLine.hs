@@ -20,7 +20,7 @@ import           System.Exit               (ExitCode (..), exitWith)
 
 import           AFrobRobotSim.Console     (displayPath, endOutput, putErr)
 import           AFrobRobotSim.Log         (LogEnd (..))
-import           AFrobRobotSim.Options     (usage)
+import           AFrobRobotSim.Options     (isHelpFlag, usage)
 import           AFrobRobotSim.Replay      (ReplayFault (..), writeReplayFromLog)
 
 -- | What the command line of @simbot --replay-from@ asks for.
@@ -59,16 +59,15 @@ replayFromArgs = go Nothing Nothing
         (Just _, _)      -> Left ("--replay-from needs --replay OUT.html, the page to write: " ++ usageLine)
         _                -> Left ("--replay needs --replay-from FILE.jsonl, the run log to read: " ++ usageLine)
       flag : rest
-        | flag `elem` helpFlags -> Right ReplayHelp
+        | isHelpFlag flag -> Right ReplayHelp
         | flag `elem` flags -> case rest of
             [] -> Left (flag ++ " needs " ++ what flag ++ ": " ++ usageLine)
-            v : _ | v `elem` flags ++ helpFlags -> Left (flag ++ " needs " ++ what flag ++ ", found the flag " ++ v)
+            v : _ | v `elem` flags || isHelpFlag v -> Left (flag ++ " needs " ++ what flag ++ ", found the flag " ++ v)
             v : rest'
               | flag == "--replay-from" -> maybe (go (Just v) mpage rest') (const (twice flag)) mlog
               | otherwise               -> maybe (go mlog (Just v) rest') (const (twice flag)) mpage
         | otherwise -> Left (usageLine ++ " takes no other argument, got " ++ show flag)
     flags = ["--replay-from", "--replay"]
-    helpFlags = ["--help", "-h"]
     what flag | flag == "--replay-from" = "the name of the run log to read (written with --log)"
               | otherwise               = "the name of the page to write"
     twice flag = Left (flag ++ " is given twice: " ++ usageLine)
