@@ -54,11 +54,11 @@ module AFrobRobotSim.Test
   , robotGap
   ) where
 
-import           Control.Exception    (SomeAsyncException, SomeException, bracketOnError, displayException, evaluate, fromException, try,
-                                       throwIO, tryJust)
+import           Control.Exception    (IOException, SomeAsyncException, SomeException, bracketOnError, displayException, evaluate,
+                                       fromException, try, throwIO, tryJust)
 import           Data.IORef           (newIORef, readIORef, writeIORef)
-import           Data.List            (intercalate, tails)
-import           Data.Maybe           (isJust)
+import           Data.List            (intercalate, stripPrefix, tails)
+import           Data.Maybe           (fromMaybe, isJust)
 import           Test.QuickCheck
 import           Test.QuickCheck.Property (Callback (PostFinalFailure), CallbackKind (NotCounterexample), callback)
 import           Test.QuickCheck.State (terminal)
@@ -357,13 +357,19 @@ reportingAfter write = callback (PostFinalFailure NotCounterexample (\st _ -> wr
 
 -- @wroteOrNot what file write@: @write@ run, and the words that say
 -- @what@ is written to @file@, or why it is not (its synchronous
--- exception: an interrupt still stops the test).
+-- exception: an interrupt still stops the test): an I/O failure's
+-- message, without the file's name when it begins with it ("could not be
+-- written to F: openFile: does not exist ..."), or what else went wrong
+-- in making it ("could not be made for F: ...").
 wroteOrNot :: String -> FilePath -> IO () -> IO String
 wroteOrNot what file write = do
   r <- tryJust synchronous write
   pure $ case r of
     Right () -> what ++ " is written to " ++ file
-    Left e   -> what ++ " could not be written to " ++ file ++ ": " ++ displayException e
+    Left e | Just (io :: IOException) <- fromException e ->
+      let msg = show io
+      in what ++ " could not be written to " ++ file ++ ": " ++ fromMaybe msg (stripPrefix (file ++ ": ") msg)
+    Left e -> what ++ " could not be made for " ++ file ++ ": " ++ displayException e
 
 -- An exception that is not asynchronous (a timeout's, Ctrl-C's).
 synchronous :: SomeException -> Maybe SomeException

@@ -421,10 +421,12 @@ specWithFiles = do
     forM_ [viaWorlds, viaRuns] $ \result -> do
       (case result of { Failure {} -> True; _ -> False }) `shouldBe` True
       output result `shouldSatisfy` ("decided false at t = 0.01 (step 1)" `isInfixOf`)
-      output result `shouldSatisfy` (("(the world could not be written to " ++ missing ++ ": ") `isInfixOf`)
+      output result `shouldSatisfy` (("(the world could not be written to " ++ missing ++ ": openFile: does not exist") `isInfixOf`)
       output result `shouldNotSatisfy` ("Exception running callback" `isInfixOf`)
       output result `shouldNotSatisfy` ("the world is written to" `isInfixOf`)
     output viaRuns `shouldSatisfy` (("its run's replay page could not be written to " ++ missing ++ ".html: ") `isInfixOf`)
+    -- (the file's name once: the I/O failure's message begins with it)
+    output viaRuns `shouldNotSatisfy` ((missing ++ ": " ++ missing) `isInfixOf`)
     -- (only the failure's: a verbose check that passes writes nothing)
     let quiet = tmp </> "afrp-test-verbose.world"
         stays = Always (SP (arr (const True)))
