@@ -137,14 +137,20 @@ sweepInterrupted dir prog what ready = do
   err <- fromMaybe "" <$> timeout 10000000 (hGetContents errH >>= \e -> length e `seq` pure e)
   pure (code, err)
 
+-- Write an executable script: @file@ with the given text, its owner
+-- allowed to run it.
+writeScript :: FilePath -> String -> IO ()
+writeScript file text = do
+  writeFile file text
+  p <- getPermissions file
+  setPermissions file (setOwnerExecutable True p)
+
 -- A script in @dir@ that starts this test binary as the given child.
 childScript :: FilePath -> String -> IO FilePath
 childScript dir what = do
   self <- getExecutablePath
   let file = dir </> what
-  writeFile file ("#!/bin/sh\n" ++ childVariable ++ "=" ++ what ++ " exec '" ++ self ++ "' \"$@\"\n")
-  p <- getPermissions file
-  setPermissions file (setOwnerExecutable True p)
+  writeScript file ("#!/bin/sh\n" ++ childVariable ++ "=" ++ what ++ " exec '" ++ self ++ "' \"$@\"\n")
   pure file
 
 -- A script @dir/file@ that runs the program child ('childScript') under
@@ -154,9 +160,7 @@ namedProgram :: FilePath -> FilePath -> String -> IO FilePath
 namedProgram dir file name = do
   self <- getExecutablePath
   let prog = dir </> file
-  writeFile prog ("#!/bin/bash\n" ++ childVariable ++ "=program exec -a '" ++ name ++ "' '" ++ self ++ "' \"$@\"\n")
-  p <- getPermissions prog
-  setPermissions prog (setOwnerExecutable True p)
+  writeScript prog ("#!/bin/bash\n" ++ childVariable ++ "=program exec -a '" ++ name ++ "' '" ++ self ++ "' \"$@\"\n")
   pure prog
 
 -- A script in @dir@ that runs the program child ('childScript'), but
@@ -165,11 +169,9 @@ failingSeed2 :: FilePath -> IO FilePath
 failingSeed2 dir = do
   real <- childScript dir "program"
   let prog = dir </> "fails2"
-  writeFile prog (unlines [ "#!/bin/bash"
+  writeScript prog (unlines [ "#!/bin/bash"
                           , "case \" $* \" in *' --seed 2 '*) echo 'no luck' >&2; exit 3 ;; esac"
                           , "exec '" ++ real ++ "' \"$@\"" ])
-  p <- getPermissions prog
-  setPermissions prog (setOwnerExecutable True p)
   pure prog
 
 -- Run the program once with these flags and a result file; its exit code,
@@ -951,9 +953,7 @@ spec = do
         -- (here: exits at once) leaves its name unknown: the line names
         -- its file alone, as an older sweep's did, and a note says so
         let c = dir </> "c.sh"
-        writeFile c (unlines [ "#!/bin/bash", "case \" $* \" in *' --print-program '*) exit 0 ;; esac", "exec '" ++ a ++ "' \"$@\"" ])
-        perms <- getPermissions c
-        setPermissions c (setOwnerExecutable True perms)
+        writeScript c (unlines [ "#!/bin/bash", "case \" $* \" in *' --print-program '*) exit 0 ;; esac", "exec '" ++ a ++ "' \"$@\"" ])
         (codeC, _, errC) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", c, dir </> "c.jsonl", "--", "--seconds", "1"]
         codeC `shouldBe` ExitFailure 1
         errC `shouldSatisfy` ("note: the program did not print its name for --print-program (exit code 0)" `isInfixOf`)
@@ -968,9 +968,7 @@ spec = do
         real <- childScript dir "program"
         let logger = dir </> "logger.sh"
             kept   = dir </> "run.jsonl"
-        writeFile logger (unlines [ "#!/bin/bash", "exec '" ++ real ++ "' --log '" ++ kept ++ "' \"$@\"" ])
-        perms <- getPermissions logger
-        setPermissions logger (setOwnerExecutable True perms)
+        writeScript logger (unlines [ "#!/bin/bash", "exec '" ++ real ++ "' --log '" ++ kept ++ "' \"$@\"" ])
         writeFile kept "precious user data\n"
         writeFile (dir </> "jobs") (unlines [ "--seed " ++ show k ++ " --log " ++ (dir </> ("run-" ++ show k ++ ".jsonl"))
                                             | k <- [1, 2 :: Int] ])
@@ -1476,13 +1474,11 @@ spec = do
       -- SIGTERM: GNU parallel sends SIGKILL 350 ms after its SIGTERM
       let prog = dir </> "slow"
           results = dir </> "r.jsonl"
-      writeFile prog (unlines [ "#!/bin/bash"
+      writeScript prog (unlines [ "#!/bin/bash"
                               , "case \" $* \" in *' --dump-world '*|*' --print-program '*) exit 0 ;; esac   # (the sweep's checks: of the flags, of the name)"
                               , "trap 'sleep 2; exit 143' TERM"
                               , ": > '" ++ dir </> "started" ++ "'/$$"
                               , "sleep 1000 & wait" ])
-      p <- getPermissions prog
-      setPermissions prog (setOwnerExecutable True p)
       writeFile (dir </> "jobs") "--seed 1\n--seed 2\n"
       (code, err) <- sweepInterrupted dir prog "the two runs did not start" $
         (>= 2) . length <$> listDirectory (dir </> "started")

@@ -393,18 +393,7 @@ untilSF = sscan step (True, False) >>> arr fst
 -- | Apply a function to every atom of a predicate, keeping its shape and
 -- time bounds.
 tPredMap :: (SF a Bool -> SF a Bool) -> TPred a -> TPred a
-tPredMap f p = case p of
-  SP sf                -> SP (f sf)
-  And a b              -> And (tPredMap f a) (tPredMap f b)
-  Or a b               -> Or (tPredMap f a) (tPredMap f b)
-  Not a                -> Not (tPredMap f a)
-  Implies a b          -> Implies (tPredMap f a) (tPredMap f b)
-  Always a             -> Always (tPredMap f a)
-  Eventually a         -> Eventually (tPredMap f a)
-  Next a               -> Next (tPredMap f a)
-  Until a b            -> Until (tPredMap f a) (tPredMap f b)
-  EventuallyWithin d a -> EventuallyWithin d (tPredMap f a)
-  AlwaysFor d a        -> AlwaysFor d (tPredMap f a)
+tPredMap = atomsWith
 
 -- | @tPredOn view p@: @p@ over what the signal function @view@ makes of
 -- the samples (one robot's state out of a world's, a field of a record).
@@ -438,15 +427,20 @@ tPredMap f p = case p of
 -- @view@ being made only when an atom reads it (an atom that ignores its
 -- input, @arr (const True)@, never makes it).
 tPredOn :: SF b a -> TPred a -> TPred b
-tPredOn view p = case p of
-  SP sf                -> SP (view >>> sf)
-  And a b              -> And (tPredOn view a) (tPredOn view b)
-  Or a b               -> Or (tPredOn view a) (tPredOn view b)
-  Not a                -> Not (tPredOn view a)
-  Implies a b          -> Implies (tPredOn view a) (tPredOn view b)
-  Always a             -> Always (tPredOn view a)
-  Eventually a         -> Eventually (tPredOn view a)
-  Next a               -> Next (tPredOn view a)
-  Until a b            -> Until (tPredOn view a) (tPredOn view b)
-  EventuallyWithin d a -> EventuallyWithin d (tPredOn view a)
-  AlwaysFor d a        -> AlwaysFor d (tPredOn view a)
+tPredOn view = atomsWith (view >>>)
+
+-- Every atom of a predicate changed by @f@ (its type too), the operators
+-- and time bounds kept: 'tPredMap' and 'tPredOn'.
+atomsWith :: (SF a Bool -> SF b Bool) -> TPred a -> TPred b
+atomsWith f p = case p of
+  SP sf                -> SP (f sf)
+  And a b              -> And (atomsWith f a) (atomsWith f b)
+  Or a b               -> Or (atomsWith f a) (atomsWith f b)
+  Not a                -> Not (atomsWith f a)
+  Implies a b          -> Implies (atomsWith f a) (atomsWith f b)
+  Always a             -> Always (atomsWith f a)
+  Eventually a         -> Eventually (atomsWith f a)
+  Next a               -> Next (atomsWith f a)
+  Until a b            -> Until (atomsWith f a) (atomsWith f b)
+  EventuallyWithin d a -> EventuallyWithin d (atomsWith f a)
+  AlwaysFor d a        -> AlwaysFor d (atomsWith f a)
