@@ -137,6 +137,13 @@ sweepInterrupted dir prog what ready = do
   err <- fromMaybe "" <$> timeout 10000000 (hGetContents errH >>= \e -> length e `seq` pure e)
   pure (code, err)
 
+-- @sweep --list ARGS@: its exit code, the job lines it lists, and its
+-- standard error.
+listedBy :: FilePath -> [String] -> IO (ExitCode, [String], String)
+listedBy sweep args = do
+  (code, out, err) <- runScriptCode [] sweep ("--list" : args)
+  pure (code, lines out, err)
+
 -- Write an executable script: @file@ with the given text, its owner
 -- allowed to run it.
 writeScript :: FilePath -> String -> IO ()
@@ -1377,9 +1384,7 @@ spec = do
     it "takes \\, as a comma within a --param value or a --worlds name, and refuses a value whose quote a comma split (it was run as two values)" $
       withTempDir $ \dir -> do
         sweep <- script "sweep"
-        let listed args = do
-              (code, out, err) <- runScriptCode [] sweep ("--list" : args)
-              pure (code, lines out, err)
+        let listed = listedBy sweep
         -- (a comma inside quotes, not escaped: refused, naming the value
         -- and the escape; it listed mode="a and mode=b" and exited 0)
         (code, out, err) <- listed ["--seeds", "1,2", "--param", "mode=\"a,b\""]
@@ -1423,9 +1428,7 @@ spec = do
     it "reads a Char literal in a list of --param values as Haskell's read does: '\"' leaves no quote open (it was refused)" $
       withTempDir $ \dir -> do
         sweep <- script "sweep"
-        let listed args = do
-              (code, out, err) <- runScriptCode [] sweep ("--list" : args)
-              pure (code, lines out, err)
+        let listed = listedBy sweep
             refusedOpen p = do
               (code, out, err) <- listed ["--param", p]
               (code, out, "that is not closed" `isInfixOf` err) `shouldBe` (ExitFailure 2, [], True)
