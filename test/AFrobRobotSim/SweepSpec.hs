@@ -489,6 +489,10 @@ spec = do
         [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=(not given) speed=0.1  (2 runs, 2 failed)" ]
       settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "r.sh" Nothing 9]) `shouldBe`
         [ "== program=p world=default speed=0.1  (3 runs, 1 failed)", "== program=q world=(not given) speed=0.1  (1 runs, 1 failed)" ]
+      -- (other lines saying the file is two programs': a setting of its own)
+      settings (take 2 sampleLines ++ [noResult "q1" (Just "w.sh") 7, noResult "q2" (Just "w.sh") 8, noResult "w.sh" Nothing 9])
+        `shouldBe` [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q1 world=(not given) speed=0.1  (1 runs, 1 failed)"
+                   , "== program=q2 world=(not given) speed=0.1  (1 runs, 1 failed)", "== program=w.sh world=(not given) speed=0.1  (1 runs, 1 failed)" ]
       settings (take 2 sampleLines ++ [ofProgram "q" (sampleLines !! 2), noResult "r.sh" Nothing 9]) `shouldBe`
         [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=default speed=0.1  (1 runs, 0 failed)"
         , "== program=r.sh world=(not given) speed=0.1  (1 runs, 1 failed)" ]
@@ -1260,6 +1264,10 @@ spec = do
       jobs ["--seed 1 --frames", "--seed 2 --frames --out f2", "--seed 3 --frames"]
         >>= \args -> refused args "jobs: line 3: --frames into simbot-out"
       jobs ["--seed 1 --result x.json"] >>= \args -> refused args "jobs: line 1: --result: sweep writes each run's result line itself"
+      forM_ ["--help", "-h", "--dump-world", "--print-program"] $ \flag ->
+        jobs ["--seed 1 " ++ flag] >>= \args -> refused args ("jobs: line 1: " ++ flag ++ ": the run would print and exit, with no result")
+      jobs ["--seed 1 --log --print-program"] >>= \args -> refused args "jobs: line 1: --log needs a value, found the flag --print-program"
+      jobs ["--seed 1 --world --print-program"] >>= \args -> refused args "--world needs a value, found the flag --print-program"
       jobs ["--seed 1 --log " ++ results] >>= \args -> refused args "is a file that a run writes too"
       -- a file of its own for each run is what a jobs file is for
       requireParallel

@@ -37,8 +37,12 @@ spec = do
   describe "afrp-examples' --print-program" $
     it "NAME --print-program prints the example's name as its result line writes it, a JSON string, and runs nothing (scripts/sweep asks it so)" $ do
       examples ["rcReverse", "--print-program"] `shouldReturn` (ExitSuccess, "\"afrp-examples rcReverse\"\n", "")
-      examples ["rcReverse", "--seconds", "3", "--log", "/nonexistent/x.jsonl", "--print-program"]
+      -- (no world read, and nothing written: a world file that is not there)
+      examples ["rcReverse", "--seconds", "3", "--log", "/nonexistent/x.jsonl", "--world", "/nonexistent/w.world", "--print-program"]
         `shouldReturn` (ExitSuccess, "\"afrp-examples rcReverse\"\n", "")
+      -- (with --dump-world, which prints too: refused, neither printed)
+      examples ["rcReverse", "--dump-world", "--print-program"] `shouldReturn`
+        (ExitFailure 2, "", "afrp-examples: --dump-world and --print-program each print something and exit: give one\n")
   describe "afrp-examples' --help" $ do
     it "--help prints the program's usage, exit 0" $ do
       (code, out, err) <- examples ["--help"]

@@ -92,6 +92,8 @@ parseSimFlags o0 = go o0 False False [] []
   go o svgNamed pageNamed given flags args = case args of
     []                       -> let o' = repeats given flags (relocated o svgNamed pageNamed)
                                 in case outputNameFaults o' of
+                                     _ | optDumpWorld o' && optPrintProgram o' ->
+                                       Left "--dump-world and --print-program each print something and exit: give one"
                                      []   -> Right (RunWith o')
                                      errs -> Left (intercalate "; " errs)
     flag : _ | isHelpFlag flag -> Right ShowHelp

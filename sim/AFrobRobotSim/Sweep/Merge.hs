@@ -213,9 +213,10 @@ tableOf names groups = unlines (map printableLine
 -- @afrp-examples rcReverse@): it has no @executable@, being an older
 -- sweep's, or one whose program did not print its name for the sweep's
 -- @--print-program@. It is filed under the program that other lines say
--- its file is named by (their @executable@), when they say one; else
--- under the one program that result lines name, when they name one
--- alone; else it is a setting of its own. The groups of a program so
+-- its file is named by (their @executable@), when they say one; when
+-- they say several, it is a setting of its own; when none says, it is
+-- filed under the one program that result lines name, when they name one
+-- alone, and is a setting of its own otherwise. The groups of a program so
 -- named stay as they are. A run so filed that a line has too (the same
 -- setting and seed) is refused, as 'addRun' refuses a run merged twice.
 -- (When no line says which program its file is, the lines of a program
