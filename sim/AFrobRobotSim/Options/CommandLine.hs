@@ -267,7 +267,6 @@ trim = reverse . dropWhile isSpace . reverse . dropWhile isSpace
 isHelpFlag :: String -> Bool
 isHelpFlag a = a == "--help" || a == "-h"
 
-
 -- | The usage text, with the defaults.
 usage :: String -> String
 usage prog = intercalate "\n"
