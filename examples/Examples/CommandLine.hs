@@ -16,10 +16,9 @@ module Examples.CommandLine
 import           Data.Char          (toLower)
 import           Data.List          (intercalate, isPrefixOf, sortOn)
 import           System.Environment (getArgs, getProgName)
-import           System.Exit        (ExitCode (..), exitWith)
 
 import           AFrobRobotSim
-import           AFrobRobotSim.Console (endOutput, putErr)
+import           AFrobRobotSim.Console (endOutput, stopProgram)
 import           Examples.Registry  (allExamples, exampleCommand, exampleListing)
 import           Examples.Types
 
@@ -38,27 +37,27 @@ examplesMain = do
 run :: String -> [String] -> IO ()
 run prog args =
   case args of
-    []             -> usageError prog "give an example name, or --list"
+    []             -> stopProgram prog 2 "give an example name, or --list"
     flag : _
       | isHelpFlag flag -> putStr (helpText prog)
     ["--list"]     -> putStr (exampleListing allExamples)
     "--list" : flag : _
       | isHelpFlag flag -> putStr (helpText prog)
     flag : extra
-      | flag == "--list" -> usageError prog (flag ++ " takes nothing after it, got " ++ unwords (map show extra))
-      | "-" `isPrefixOf` flag -> usageError prog ("the flag " ++ show flag ++ " is not one of " ++ prog ++ "'s own (--list, "
+      | flag == "--list" -> stopProgram prog 2 (flag ++ " takes nothing after it, got " ++ unwords (map show extra))
+      | "-" `isPrefixOf` flag -> stopProgram prog 2 ("the flag " ++ show flag ++ " is not one of " ++ prog ++ "'s own (--list, "
                                                   ++ "--help); a simulator flag comes after an example's name ("
                                                   ++ prog ++ " NAME " ++ flag ++ " ...)")
     name : flags   -> case [ e | e <- allExamples, exName e == name ] of
       e : _ -> runExample prog e flags
-      []    -> usageError prog ("no example named " ++ show name ++ suggestion name)
+      []    -> stopProgram prog 2 ("no example named " ++ show name ++ suggestion name)
 
 runExample :: String -> Example -> [String] -> IO ()
 runExample prog e flags = case (e, flags) of
   (SignalExample {}, []) -> putStr (exReport e)
   -- (a signal-function example with flags is a Left)
   _ -> case exampleCommand prog e flags of
-    Left err            -> usageError prog err
+    Left err            -> stopProgram prog 2 err
     Right ShowHelp      -> putStrLn (exampleHelp prog e)
     Right (RunWith opt) -> runSimRefereedWith opt (exReferee e) (Just (exWorld e)) (exControllerA e) (exControllerB e)
 
@@ -91,6 +90,3 @@ helpText prog = unlines
   , "which, with their default script). Signal-function examples print a short"
   , "report."
   ]
-
-usageError :: String -> String -> IO a
-usageError prog msg = putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure 2)

@@ -25,6 +25,7 @@ module AFrobRobotSim.Console
   , closedAtStart
   , flushStdout
   , endOutput
+  , stopProgram
   , putErr
   ) where
 
@@ -146,7 +147,13 @@ printableLine = foldr esc ""
 -- | @endOutput prog@: 'flushStdout', and on failure the message on
 -- standard error, after the program's name, and exit code 1.
 endOutput :: String -> IO ()
-endOutput prog = flushStdout >>= maybe (pure ()) (\m -> putErr (prog ++ ": " ++ m ++ "\n") >> exitWith (ExitFailure 1))
+endOutput prog = flushStdout >>= maybe (pure ()) (stopProgram prog 1)
+
+-- | @stopProgram prog code msg@: the program stopped, @msg@ on standard
+-- error after the program's name (@prog: msg@, one line) and the exit
+-- code @code@ (by 'exitWith', so a caller may catch the 'ExitCode').
+stopProgram :: String -> Int -> String -> IO a
+stopProgram prog code msg = putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure code)
 
 -- | Write a message to standard error, in one piece (standard error is
 -- unbuffered, which would write it a character at a time). A failure to

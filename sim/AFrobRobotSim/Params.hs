@@ -54,7 +54,7 @@ import           System.Environment   (getArgs, getProgName)
 import           System.Exit          (ExitCode (..), exitWith)
 import           Text.Read            (readMaybe)
 
-import           AFrobRobotSim.Console (endOutput, putErr, tolerantOutput)
+import           AFrobRobotSim.Console (endOutput, stopProgram, tolerantOutput)
 import           AFrobRobotSim.Options
 
 -- | The @--param NAME=VALUE@ pairs of this program's command line, in the
@@ -103,8 +103,7 @@ flagParams args atHelp = case parseSimFlags defaultSimOptions args of
   Left err -> do
     tolerantOutput
     prog <- getProgName
-    putErr (prog ++ ": " ++ err ++ "\n")
-    exitWith (ExitFailure 2)
+    stopProgram prog 2 err
 
 -- The parameters this program has asked for: all of them ('getSimParams'),
 -- or those named ('lookupSimParam', 'paramOr'), for 'unreadParams'.
@@ -206,10 +205,7 @@ readOrStop name v = do
       refuse ("--param " ++ name ++ "=" ++ v ++ ": the value " ++ show v ++ " cannot be made: "
               ++ displayException e)
   where
-    refuse msg = do
-      prog <- getProgName
-      putErr (prog ++ ": " ++ msg ++ "\n")
-      exitWith (ExitFailure 2)
+    refuse msg = getProgName >>= \prog -> stopProgram prog 2 msg
 
 -- | @readSimParam name text@: a @--param name=text@'s value, as
 -- 'paramOr' reads it, or the message it stops the program with. The

@@ -50,7 +50,7 @@ import           System.Exit         (exitWith, ExitCode (..))
 import           System.IO           (Handle, IOMode (ReadMode), hClose, hIsTerminalDevice,
                                       hSetBinaryMode, openBinaryFile, stdin)
 
-import           AFrobRobotSim.Console (displayPath, endOutput, putErr, tolerantOutput)
+import           AFrobRobotSim.Console (displayPath, endOutput, stopProgram, tolerantOutput)
 import           AFrobRobotSim.InputFile (LineFault (..), newLineReader, nextLine)
 import           AFrobRobotSim.OutputFile (fileIdentity)
 import           AFrobRobotSim.Sweep.Merge
@@ -132,7 +132,7 @@ sweepMergeMain = do
   -- runs it as sweep-merge)
   prog <- getProgName
   let usage = "usage: " ++ prog ++ " RESULTS...   (the result lines of a sweep; standard input when none is given)"
-      stop (Fault code msg) = endOutput prog >> putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure code)
+      stop (Fault code msg) = endOutput prog >> stopProgram prog code msg
       -- (a file by its path, standard input by that name)
       readAll path h m = do
         r <- try (mergeHandle (displayPath path) h m)

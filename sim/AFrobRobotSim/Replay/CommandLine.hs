@@ -16,9 +16,8 @@ module AFrobRobotSim.Replay.CommandLine
   ) where
 
 import           System.Environment        (getProgName)
-import           System.Exit               (ExitCode (..), exitWith)
 
-import           AFrobRobotSim.Console     (displayPath, endOutput, putErr)
+import           AFrobRobotSim.Console     (displayPath, endOutput, putErr, stopProgram)
 import           AFrobRobotSim.Log         (LogEnd (..))
 import           AFrobRobotSim.Options     (isHelpFlag, usage)
 import           AFrobRobotSim.Replay      (ReplayFault (..), writeReplayFromLog)
@@ -90,7 +89,7 @@ replayFromArgs = go Nothing Nothing
 replayFromMain :: [String] -> IO ()
 replayFromMain args = do
   prog <- getProgName
-  command <- either (stopWith prog 2) pure (replayFromArgs args)
+  command <- either (stopProgram prog 2) pure (replayFromArgs args)
   case command of
     ReplayHelp             -> putStrLn (usage prog)
     ReplayFrom logPath out -> replayPage prog logPath out
@@ -102,8 +101,8 @@ replayPage :: String -> FilePath -> FilePath -> IO ()
 replayPage prog logPath out = do
   r <- writeReplayFromLog logPath out
   case r of
-    Left (ReplayRefused msg)     -> stopWith prog 2 msg
-    Left (ReplayWriteFailed msg) -> stopWith prog 1 msg
+    Left (ReplayRefused msg)     -> stopProgram prog 2 msg
+    Left (ReplayWriteFailed msg) -> stopProgram prog 1 msg
     Right end -> do
       -- (a log cut off, by a full disk: its page is made, and the cut
       -- said)
@@ -111,8 +110,3 @@ replayPage prog logPath out = do
                             ++ " stops in its middle (did its disk fill up?); it is left out, and the page shows"
                             ++ " the frames before it\n")) (leCutLine end)
       putStrLn ("wrote " ++ displayPath out)
-
--- The program stopped: the message on standard error, signed, and the
--- exit code.
-stopWith :: String -> Int -> String -> IO a
-stopWith prog code msg = putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure code)
