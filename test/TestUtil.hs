@@ -16,6 +16,7 @@ module TestUtil
   , withTMPDIR
   , captured
   , withUnsearchable
+  , writeScript
   , withCaps
   , cLocale
   ) where
@@ -29,7 +30,8 @@ import           System.IO         (IOMode (..), hClose, hFlush, stderr, stdout,
 import qualified Data.ByteString.Builder as B
 import qualified Data.ByteString.Lazy as BL
 import           GHC.Conc          (getNumCapabilities, setNumCapabilities)
-import           System.Directory  (createDirectory, getTemporaryDirectory, removeDirectoryRecursive)
+import           System.Directory  (createDirectory, getPermissions, getTemporaryDirectory, removeDirectoryRecursive,
+                                    setOwnerExecutable, setPermissions)
 import           System.Environment (lookupEnv, setEnv, unsetEnv)
 import           System.FilePath   ((</>))
 import           System.IO.Error   (isAlreadyExistsError)
@@ -158,6 +160,14 @@ captured act = withTempDir $ \dir -> do
     readAll f = do
       s <- readFile f
       length s `seq` pure s
+
+-- | @writeScript file text@: an executable script, @file@ holding
+-- @text@, its owner allowed to run it.
+writeScript :: FilePath -> String -> IO ()
+writeScript file text = do
+  writeFile file text
+  p <- getPermissions file
+  setPermissions file (setOwnerExecutable True p)
 
 -- | @withUnsearchable dir check@: @check@ given @dir/locked@, a folder
 -- holding a folder @sub@, while @locked@ may not be searched (mode 600,

@@ -20,8 +20,7 @@ import qualified Data.ByteString     as BS
 import           Data.Word           (Word8)
 import           Data.List           (isInfixOf, isPrefixOf, isSuffixOf, sort, stripPrefix, tails, transpose)
 import           Data.Char           (isPrint)
-import           System.Directory    (createDirectory, createFileLink, doesFileExist, doesPathExist, getPermissions, listDirectory,
-                                      setOwnerExecutable, setPermissions)
+import           System.Directory    (createDirectory, createFileLink, doesFileExist, doesPathExist, listDirectory)
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     (takeFileName, (</>))
 import           System.IO
@@ -35,7 +34,7 @@ import           AFrobRobotSim.JSON  (JSON (..), member, parseJSON)
 import           AFrobRobotSim.Replay (replayPage, writeReplayFromLog)
 import           AFrobRobotSim.Replay.CommandLine (replayFromMain)
 import           AFrobRobotSim.Run.Signals (Stopper, interruptible, signalReceived, stuckGrace)
-import           TestUtil (captured, withCaps, withTMPDIR, withTempDir, withUnsearchable)
+import           TestUtil (captured, withCaps, withTMPDIR, withTempDir, withUnsearchable, writeScript)
 
 world :: WorldTemplate
 world = [OTSimbotA 1 (Point2 (-3) 0) 0, OTVWall (Point2 3 0), OTBall (Point2 0 2)]
@@ -301,6 +300,15 @@ endedStuck done err = do
   err `shouldSatisfy` (("SIGTERM received, but the runtime has not been able to act on it within "
                         ++ show stuckGrace ++ " s") `isInfixOf`)
   err `shouldSatisfy` ("-fno-omit-yields" `isInfixOf`)
+
+-- @simbot --replay-from@'s command line run as the executable runs it
+-- (the test binary as the child @replayfrom@): its exit code, standard
+-- output and standard error.
+replayFrom :: [String] -> IO (ExitCode, String, String)
+replayFrom args = do
+  self <- getExecutablePath
+  environment <- getEnvironment
+  readCreateProcessWithExitCode (proc self args) { env = Just ((childVariable, "replayfrom") : environment) } ""
 
 -- | The test binary started as the child @what@ (see 'child') on a folder,
 -- with @+RTS -N@ the capabilities given.
@@ -753,10 +761,8 @@ spec = do
       createDirectory bin
       -- (it makes the file named last, as ffmpeg would; FAIL in the
       -- environment: it then exits 1)
-      writeFile (bin </> "ffmpeg") ("#!/bin/sh\nprintf '%s\\n' \"$@\" > " ++ (dir </> "args")
-                                   ++ "\nfor a; do last=$a; done\n: > \"${last#file:}\"\n[ -z \"$FAIL\" ]\n")
-      p <- getPermissions (bin </> "ffmpeg")
-      setPermissions (bin </> "ffmpeg") (setOwnerExecutable True p)
+      writeScript (bin </> "ffmpeg") ("#!/bin/sh\nprintf '%s\\n' \"$@\" > " ++ (dir </> "args")
+                                     ++ "\nfor a; do last=$a; done\n: > \"${last#file:}\"\n[ -z \"$FAIL\" ]\n")
       saved <- lookupEnv "PATH"
       setEnv "PATH" bin
       (do _ <- captured (runSimWith (quick out) (Just world) drive drive)
@@ -1236,11 +1242,7 @@ spec = do
         (_, _, r) <- captured (runSimWith (quick dir) { optFrames = False, optLog = Just (dir </> "run.jsonl"), optReplay = Nothing }
                                           (Just world) drive drive)
         r `shouldBe` Right ()
-        self <- getExecutablePath
-        environment <- getEnvironment
-        let replayFrom args = readCreateProcessWithExitCode
-              (proc self args) { env = Just ((childVariable, "replayfrom") : environment) } ""
-            logPath = dir </> "run.jsonl"
+        let logPath = dir </> "run.jsonl"
         replayFrom ["--replay", dir </> "run.html", "--replay-from", logPath]
           `shouldReturn` (ExitSuccess, "wrote " ++ dir </> "run.html\n", "")
         (code1, out1, err1) <- replayFrom ["--replay-from", logPath, "--replay", "/dev/full"]
@@ -1258,11 +1260,7 @@ spec = do
         (code3, (dir </> "none.jsonl") `isInfixOf` err3) `shouldBe` (ExitFailure 2, True)
     it "simbot --replay-from ... --help: the usage of simbot --help, exit 0, nothing written (it exited 2: \"takes no other argument\"); a fault before --help is still refused" $
       withTempDir $ \dir -> do
-        self <- getExecutablePath
-        environment <- getEnvironment
-        let replayFrom args = readCreateProcessWithExitCode
-              (proc self args) { env = Just ((childVariable, "replayfrom") : environment) } ""
-            page = dir </> "p.html"
+        let page = dir </> "p.html"
         replayFrom ["--replay-from", dir </> "x.jsonl", "--replay", page, "--help"]
           `shouldReturn` (ExitSuccess, usage "simbot" ++ "\n", "")
         replayFrom ["--replay", page, "--replay-from", dir </> "x.jsonl", "-h"]

@@ -17,8 +17,7 @@ import qualified Data.Set            as S
 import           Data.List           (intercalate, isInfixOf, isPrefixOf, isSuffixOf, sort)
 import           Data.Word           (Word8)
 import           System.Directory    (canonicalizePath, copyFile, createDirectory, createDirectoryIfMissing, createFileLink, doesFileExist, findExecutable,
-                                      getPermissions, listDirectory, makeAbsolute, setOwnerExecutable,
-                                      setPermissions)
+                                      listDirectory, makeAbsolute)
 import           System.Environment  (getArgs, getEnvironment, getExecutablePath, withProgName)
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     ((</>))
@@ -38,7 +37,7 @@ import           AFrobRobotSim.Sweep (maxLineBytes, mergeResults, sweepMergeMain
 import           AFrobRobotSim.Sweep.Merge (addLine, addLineUtf8, emptyMerge, renderMerge)
 import           AFrobRobotSim.UTF8 (checkUtf8)
 import           AFrobRobotSim.WorldFile.Lexical (utf8Text)
-import           TestUtil (cLocale, withTempDir)
+import           TestUtil (cLocale, withTempDir, writeScript)
 
 -- | The environment variable that makes the test binary run 'child'.
 childVariable :: String
@@ -143,14 +142,6 @@ listedBy :: FilePath -> [String] -> IO (ExitCode, [String], String)
 listedBy sweep args = do
   (code, out, err) <- runScriptCode [] sweep ("--list" : args)
   pure (code, lines out, err)
-
--- Write an executable script: @file@ with the given text, its owner
--- allowed to run it.
-writeScript :: FilePath -> String -> IO ()
-writeScript file text = do
-  writeFile file text
-  p <- getPermissions file
-  setPermissions file (setOwnerExecutable True p)
 
 -- A script in @dir@ that starts this test binary as the given child.
 childScript :: FilePath -> String -> IO FilePath
