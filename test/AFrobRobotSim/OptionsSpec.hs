@@ -61,6 +61,9 @@ spec = do
         `shouldBe` ["optDt must be a positive number up to 1000000, got -0.04", "optFps must be a finite number > 0, got -25.0"]
       validateOptions d { optSeconds = 0 / 0 } `shouldBe` ["optSeconds must be a finite number >= 0, got NaN"]
       validateOptions d { optSeconds = 1 / 0 } `shouldBe` ["optSeconds must be a finite number >= 0, got Infinity"]
+      validateOptions d { optDumpWorld = True, optPrintProgram = True }
+        `shouldBe` ["optDumpWorld and optPrintProgram are both set: each prints something and exits; set one"]
+      validateOptions d { optPrintProgram = True } `shouldBe` []
       -- (the settings a command line starts from are set in code: so named)
       parseSimArgs d { optFps = 0 } ["--seconds", "2"] `shouldBe` Left "optFps must be a finite number > 0, got 0.0"
     it "leaves the command line's messages naming its flags (its values are refused by the flags, or found together)" $ do

@@ -1096,6 +1096,12 @@ spec = do
     it "an empty --out (set in code, an empty optOut, said so)" $ do
       parseSimArgs defaultSimOptions ["--out", ""] `shouldSatisfy` either ("--out" `isInfixOf`) (const False)
       refused (\_ -> (quick "") { optFrames = True }) ("optOut must not be empty" `isInfixOf`)
+    it "optDumpWorld and optPrintProgram set together in code: refused before either prints (the name alone was printed)" $ do
+      (out, err, r) <- captured (runSimWith (quick "unused") { optDumpWorld = True, optPrintProgram = True } (Just world) drive drive)
+      (r, out) `shouldBe` (Left (ExitFailure 2), "")
+      lines err `shouldBe` [ "afrp-spec: cannot run:"
+                           , "  optDumpWorld and optPrintProgram are both set: each prints something and exits; set one" ]
+      doesPathExist "unused" `shouldReturn` False
     it "a step count that overflows or is beyond the maximum" $ do
       refused (\dir -> (quick dir) { optSeconds = 1e20 }) ("steps" `isInfixOf`)
       refused (\dir -> (quick dir) { optDt = 1e-300 }) ("steps" `isInfixOf`)

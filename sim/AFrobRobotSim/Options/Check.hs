@@ -93,6 +93,8 @@ validateOptions o =
   ++ [ "optParams names the parameter " ++ show k ++ " " ++ timesText (length vs) ++ "; a name holds one value"
      | (k, vs) <- repeatedBy (optParams o) ]
   ++ [ "optOut must not be empty" | null (optOut o) ]
+  ++ [ "optDumpWorld and optPrintProgram are both set: each prints something and exits; set one"
+     | optDumpWorld o, optPrintProgram o ]
   ++ outputNameFaults o
   where
     secs = optSeconds o; dt = optDt o; fps = optFps o

@@ -45,7 +45,8 @@ data SimOptions = SimOptions
     -- @program@, a JSON string: 'optProgram' or the executable's name)
     -- and exit, reading no world and writing nothing (@--print-program@:
     -- how @scripts/sweep@ learns the name of the program it runs, for the
-    -- lines of runs that write no result)
+    -- lines of runs that write no result); set with 'optDumpWorld' too,
+    -- the run is refused (exit code 2) before either prints
   , optRays          :: !Bool              -- ^ draw range-finder rays
   , optTrails        :: !Bool              -- ^ draw trails
   , optSvg           :: Maybe FilePath     -- ^ write an SVG of the whole run
