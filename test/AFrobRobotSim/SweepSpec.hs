@@ -1353,6 +1353,15 @@ spec = do
       err `shouldNotSatisfy` ("line 9" `isInfixOf`)
       doesFileExist (dir </> "r.jsonl") `shouldReturn` False
 
+    it "refuses a flag with no value on every job line, one that names no file too (--seed 1 --seconds was run, and failed)" $ withTempDir $ \dir -> do
+      sweep <- script "sweep"
+      writeFile (dir </> "jobs") (unlines ["--seed 1 --seconds", "--seed 2 --seed --quiet", "--seed 3 --keys", "--seed 4 --dt 0.01"])
+      (code, out, err) <- listedBy sweep ["--jobs", dir </> "jobs"]
+      (code, out) `shouldBe` (ExitFailure 2, [])
+      lines err `shouldBe` [ "sweep: " ++ dir </> "jobs: line " ++ show k ++ ": " ++ fault
+                           | (k, fault) <- [ (1 :: Int, "--seconds needs a value"), (2, "--seed needs a value, found the flag --quiet")
+                                           , (3, "--keys needs a value") ] ]
+
     it "checks --jobs, --seeds and --worlds up front, and runs worlds and parameters with spaces" $ withTempDir $ \dir -> do
       sweep <- script "sweep"
       let refused args what = do
