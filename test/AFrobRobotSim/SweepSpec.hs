@@ -1362,6 +1362,12 @@ spec = do
                            | (k, fault) <- [ (1 :: Int, "--seconds needs a value"), (2, "--seed needs a value, found the flag --quiet")
                                            , (3, "--keys needs a value") ] ]
 
+    it "refuses an empty flag after -- (split on spaces, it was lost: --seconds '' took the next flag for its value)" $ do
+      sweep <- script "sweep"
+      (code, out, err) <- listedBy sweep ["--seeds", "1", "--", "--seconds", "", "--quiet"]
+      (code, out) `shouldBe` (ExitFailure 2, [])
+      err `shouldSatisfy` ("a flag after -- cannot be empty" `isInfixOf`)
+
     it "checks --jobs, --seeds and --worlds up front, and runs worlds and parameters with spaces" $ withTempDir $ \dir -> do
       sweep <- script "sweep"
       let refused args what = do
