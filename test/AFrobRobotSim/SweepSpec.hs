@@ -1368,6 +1368,11 @@ spec = do
       (code, out) `shouldBe` (ExitFailure 2, [])
       err `shouldSatisfy` ("a flag after -- cannot be empty" `isInfixOf`)
 
+    it "--list prints every job line as it is (a line -n, -e or -E was taken for echo's option, and not printed)" $ withTempDir $ \dir -> do
+      sweep <- script "sweep"
+      writeFile (dir </> "jobs") (unlines ["-n", "--seed 1", "-e", "-E"])
+      listedBy sweep ["--jobs", dir </> "jobs"] `shouldReturn` (ExitSuccess, ["-n", "--seed 1", "-e", "-E"], "")
+
     it "checks --jobs, --seeds and --worlds up front, and runs worlds and parameters with spaces" $ withTempDir $ \dir -> do
       sweep <- script "sweep"
       let refused args what = do
