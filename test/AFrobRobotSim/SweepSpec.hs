@@ -1373,6 +1373,19 @@ spec = do
       writeFile (dir </> "jobs") (unlines ["-n", "--seed 1", "-e", "-E"])
       listedBy sweep ["--jobs", dir </> "jobs"] `shouldReturn` (ExitSuccess, ["-n", "--seed 1", "-e", "-E"], "")
 
+    it "writes the line of a run with no result whose --param has no name or no = (--param =5 ended the sweep, its lines and summary unwritten)" $
+      withTempDir $ \dir -> do
+        requireParallel
+        prog <- childScript dir "program"
+        sweep <- script "sweep"
+        writeFile (dir </> "jobs") (unlines ["--seed 1", "--seed 2 --param =5", "--seed 3 --param speed"])
+        (code, _, err) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "0.1"]
+        (code, "3 runs, 2 failed" `isInfixOf` err) `shouldBe` (ExitFailure 1, True)
+        rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+        map (field ["seed"]) rs `shouldBe` map JNumber [1, 2, 3]
+        -- (the pairs the runs refused name no parameter)
+        map (field ["params"]) (drop 1 rs) `shouldBe` replicate 2 (JObject [])
+
     it "checks --jobs, --seeds and --worlds up front, and runs worlds and parameters with spaces" $ withTempDir $ \dir -> do
       sweep <- script "sweep"
       let refused args what = do
