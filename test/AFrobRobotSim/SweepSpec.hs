@@ -1486,6 +1486,30 @@ spec = do
         rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
         map (field ["params", "tag"]) rs `shouldBe` map JString ["'a'", "'\"'"]
 
+    it "keeps the comma of a Char literal in a list of --param values, ',', in its value (it was split into ' and ', and refused as a value given twice)" $
+      withTempDir $ \dir -> do
+        sweep <- script "sweep"
+        let listed = listedBy sweep
+        listed ["--param", "c='a',','"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --param 'c='\\''a'\\'''", "--seed 0 --param 'c='\\'','\\'''"], "")
+        listed ["--param", "c=','"] `shouldReturn` (ExitSuccess, ["--seed 0 --param 'c='\\'','\\'''"], "")
+        -- (where a Char literal starts, as Haskell's read reads it: not
+        -- after a name's ', nor in a string; and '\,', the escaped comma,
+        -- is one value as before)
+        listed ["--param", "c=Just ',',x',','"] `shouldReturn`
+          ( ExitSuccess, [ "--seed 0 --param 'c=Just '\\'','\\'''", "--seed 0 --param 'c=x'\\'''"
+                         , "--seed 0 --param 'c='\\'','\\'''" ], "" )
+        listed ["--param", "c='\\,','x'"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --param 'c='\\'','\\'''", "--seed 0 --param 'c='\\''x'\\'''"], "")
+        (code, out, err) <- listed ["--param", "c=\"a',','\""]
+        (code, out, "that is not closed" `isInfixOf` err) `shouldBe` (ExitFailure 2, [], True)
+        -- and a run gets the comma
+        requireParallel
+        prog <- childScript dir "program"
+        _ <- runScript [] sweep ["--param", "tag='a',','", prog, dir </> "r.jsonl", "--", "--seconds", "0.1"]
+        rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+        map (field ["params", "tag"]) rs `shouldBe` map JString ["'a'", "','"]
+
     it "interrupted (SIGTERM to its process group, as at Slurm's time limit): a line for every run, a message, no temporary file" $ withTempDir $ \dir -> do
       requireParallel
       prog <- childScript dir "program"
