@@ -22,7 +22,7 @@ import           System.Environment  (getArgs, getEnvironment, getExecutablePath
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     ((</>))
 import           System.IO           (hGetContents, readFile')
-import           System.Posix.Signals (sigKILL, sigTERM, signalProcessGroup)
+import           System.Posix.Signals (sigKILL, sigTERM, signalProcess, signalProcessGroup)
 import           System.Process      (CreateProcess (..), StdStream (..), createProcess, getPid, proc,
                                       readCreateProcessWithExitCode, readProcess, readProcessWithExitCode,
                                       waitForProcess)
@@ -1530,6 +1530,38 @@ spec = do
       table <- merged dir [results]
       table `shouldSatisfy` ("(6 runs, 4 failed)" `isInfixOf`)
       listDirectory (dir </> "tmp") `shouldReturn` []
+
+    it "interrupted before its runs (RESULTS, a pipe, waiting for a reader), leaves no temporary folder (the signal's default action ended it, the folder left behind)" $
+      withTempDir $ \dir -> do
+        requireParallel
+        real <- childScript dir "program"
+        sweep <- script "sweep"
+        -- (the program says when it has answered the sweep's last question
+        -- before the runs: then the sweep opens RESULTS, and waits there)
+        let prog = dir </> "asked"
+            results = dir </> "results.pipe"
+        writeScript prog (unlines [ "#!/bin/bash"
+                                  , "case \" $* \" in *' --print-program '*) '" ++ real ++ "' \"$@\"; s=$?; : > '" ++ dir </> "answered" ++ "'; exit $s ;; esac"
+                                  , "exec '" ++ real ++ "' \"$@\"" ])
+        _ <- readProcess "mkfifo" [results] ""
+        createDirectory (dir </> "tmp")
+        environment <- filter ((/= "TMPDIR") . fst) <$> getEnvironment
+        (_, _, _, ph) <- createProcess (proc "bash" [sweep, "--seeds", "1", prog, results, "--", "--seconds", "0.1"])
+          { env = Just (("TMPDIR", dir </> "tmp") : environment), std_err = CreatePipe }
+        Just pid <- getPid ph
+        let waitAnswered :: Int -> IO ()
+            waitAnswered k = do
+              done <- doesFileExist (dir </> "answered")
+              unless (done || k <= 0) (threadDelay 100000 >> waitAnswered (k - 1))
+        waitAnswered 600
+        threadDelay 1000000
+        signalProcess sigTERM pid
+        -- (a reader, should the sweep still wait to open the pipe)
+        _ <- readProcessWithExitCode "timeout" ["5", "cat", results] ""
+        code <- timeout 60000000 (waitForProcess ph)
+        unless (isJust code) (signalProcess sigKILL pid >> () <$ waitForProcess ph)
+        code `shouldBe` Just (ExitFailure 143)
+        listDirectory (dir </> "tmp") `shouldReturn` []
 
     it "interrupted, leaves no temporary folder even of a run that GNU parallel has to kill (one slow to end on SIGTERM)" $ withTempDir $ \dir -> do
       requireParallel
