@@ -22,7 +22,7 @@ import           System.Environment  (getArgs, getEnvironment, getExecutablePath
 import           System.Exit         (ExitCode (..))
 import           System.FilePath     ((</>))
 import           System.IO           (hGetContents, readFile')
-import           System.Posix.Signals (sigKILL, sigTERM, signalProcessGroup)
+import           System.Posix.Signals (sigKILL, sigTERM, signalProcess, signalProcessGroup)
 import           System.Process      (CreateProcess (..), StdStream (..), createProcess, getPid, proc,
                                       readCreateProcessWithExitCode, readProcess, readProcessWithExitCode,
                                       waitForProcess)
@@ -263,6 +263,30 @@ replace old new = go
     go (c : cs) = c : go cs
     go []       = []
 
+-- The headings of the table that mergeResults makes of these lines (the
+-- lines "== SETTING  (N runs, M failed)"), or its refusal, "refused: ...".
+headings :: [String] -> [String]
+headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
+
+-- A result line of 'resultLine' as the program named @q@ writes it.
+ofProgram :: String -> String -> String
+ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
+
+-- The sweep's line for a run of seed @seed@ that wrote no result (a flag
+-- it rejected): its program @prog@, with its executable when the sweep
+-- knows it, and its world as JSON text (@null@ for a run given no
+-- --world).
+noResult :: String -> Maybe String -> String -> Int -> String
+noResult prog exe world seed =
+  "{\"program\":" ++ encodeJSON (JString prog) ++ maybe "" (\e -> ",\"executable\":" ++ encodeJSON (JString e)) exe
+  ++ ",\"world\":" ++ world ++ ",\"seed\":" ++ show seed ++ ",\"params\":{\"speed\":\"0.1\"}"
+  ++ ",\"flags\":\"--seed " ++ show seed ++ "\",\"failure\":\"exit code 2, no result: bad flag\"}"
+
+-- A program's message without its name, the text after the first colon
+-- (a runSim program signs its messages "NAME: ...", NAME its file's).
+unsigned :: String -> String
+unsigned = drop 1 . dropWhile (/= ':')
+
 spec :: Spec
 spec = do
   describe "mergeResults" $ do
@@ -339,29 +363,26 @@ spec = do
         (\t -> "speed=\"0.1\\ESC[2J\"" `isInfixOf` t && "bad\\nFAILED seed 9: forged" `isInfixOf` t
                && all (\c -> c == '\n' || c >= ' ') t)
     it "names settings that are not alike so that they do not read alike (a value with a space and an = read as two parameters, a newline as a backslash and an n)" $ do
-      let headings ps = either (const []) (sort . filter ("== " `isPrefixOf`) . lines)
-                          (mergeResults (unlines [ resultLine 1 p 1 Nothing | p <- ps ]))
-      headings [[("a", "1 b=2")], [("a", "1"), ("b", "2")]] `shouldBe`
+      let headingsOf ps = sort (headings [ resultLine 1 p 1 Nothing | p <- ps ])
+      headingsOf [[("a", "1 b=2")], [("a", "1"), ("b", "2")]] `shouldBe`
         sort [ "== world=default a=\"1 b=2\"  (1 runs, 0 failed)", "== world=default a=1 b=2  (1 runs, 0 failed)" ]
-      headings [[("e", "x\ny")], [("e", "x\\ny")]] `shouldBe`
+      headingsOf [[("e", "x\ny")], [("e", "x\\ny")]] `shouldBe`
         sort [ "== world=default e=\"x\\ny\"  (1 runs, 0 failed)", "== world=default e=\"x\\\\ny\"  (1 runs, 0 failed)" ]
       -- (a quote, an empty value, a name with a space; a value beyond ASCII that prints is plain)
-      headings [[("q", "\"fast\""), ("empty", ""), ("my name", "caf\233")]] `shouldBe`
+      headingsOf [[("q", "\"fast\""), ("empty", ""), ("my name", "caf\233")]] `shouldBe`
         [ "== world=default empty=\"\" \"my name\"=caf\233 q=\"\\\"fast\\\"\"  (1 runs, 0 failed)" ]
 
     it "files the sweep's line for a run with no result and no --world (world null) with the result lines' own world (it went under \"default\" apart from the program's runs)" $ do
       let own w = replace "\"world\":\"default\"" ("\"world\":" ++ w)
-          noResult seed = "{\"program\":\"p\",\"world\":null,\"seed\":" ++ show seed ++ ",\"params\":{\"speed\":\"0.1\"}"
-                          ++ ",\"flags\":\"--seed " ++ show seed ++ " --no-such-flag\",\"failure\":\"exit code 2, no result: bad flag\"}"
           tableOf' ls = either (\e -> "refused: " ++ e) id (mergeResults (unlines ls))
       -- the program's own world
-      lines (tableOf' (map (own "\"program\"") (take 2 sampleLines) ++ [noResult (7 :: Int)]))
+      lines (tableOf' (map (own "\"program\"") (take 2 sampleLines) ++ [noResult "p" Nothing "null" 7]))
         `shouldSatisfy` elem "== world=program speed=0.1  (3 runs, 1 failed)"
       -- the built-in default, in any order of the lines
-      forM_ [noResult (7 :: Int) : take 2 sampleLines, take 2 sampleLines ++ [noResult (7 :: Int)]] $ \ls ->
+      forM_ [noResult "p" Nothing "null" 7 : take 2 sampleLines, take 2 sampleLines ++ [noResult "p" Nothing "null" 7]] $ \ls ->
         lines (tableOf' ls) `shouldSatisfy` elem "== world=default speed=0.1  (3 runs, 1 failed)"
       -- no result line to tell: said as not given
-      lines (tableOf' [noResult (7 :: Int)]) `shouldSatisfy` elem "== world=(not given) speed=0.1  (1 runs, 1 failed)"
+      lines (tableOf' [noResult "p" Nothing "null" 7]) `shouldSatisfy` elem "== world=(not given) speed=0.1  (1 runs, 1 failed)"
       -- an empty world (the sweep's line of --world '') and a parameter named
       -- world are names as given, not the unnamed world (the parameter's
       -- name quoted: it read as the world's)
@@ -370,20 +391,18 @@ spec = do
       -- the line an older sweep wrote for a run of a world file named
       -- default or program (it wrote such a name bare) is that file's, as
       -- a result line names it (./default), not the built-in world's
-      let ofFile w = replace "\"world\":null" ("\"world\":\"" ++ w ++ "\"") (noResult (7 :: Int))
+      let ofFile w = replace "\"world\":null" ("\"world\":\"" ++ w ++ "\"") (noResult "p" Nothing "null" 7)
       filter ("== " `isPrefixOf`) (lines (tableOf' (take 2 sampleLines ++ [ofFile "default", own "\"./default\"" (sampleLines !! 2)])))
         `shouldBe` ["== world=./default speed=0.1  (2 runs, 1 failed)", "== world=default speed=0.1  (2 runs, 0 failed)"]
       filter ("== " `isPrefixOf`) (lines (tableOf' (map (own "\"program\"") (take 2 sampleLines) ++ [ofFile "program"])))
         `shouldBe` ["== world=./program speed=0.1  (1 runs, 1 failed)", "== world=program speed=0.1  (2 runs, 0 failed)"]
       -- a run that is a result line too is merged twice
-      tableOf' (take 2 sampleLines ++ [noResult (2 :: Int)]) `shouldSatisfy`
+      tableOf' (take 2 sampleLines ++ [noResult "p" Nothing "null" 2]) `shouldSatisfy`
         ("refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too" `isPrefixOf`)
       -- a result line must name its world
       tableOf' [own "null" (head sampleLines)] `shouldSatisfy` ("refused: line 1: not a result line of a sweep" `isPrefixOf`)
     it "merges the lines of two programs as two settings, naming the program only then (the same world and seed was refused as a run merged twice)" $ do
-      let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
-          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
-          rcStop = map (ofProgram "afrp-examples rcStop") (take 2 sampleLines)
+      let rcStop = map (ofProgram "afrp-examples rcStop") (take 2 sampleLines)
       headings (map (ofProgram "afrp-examples rcReverse") (take 2 sampleLines) ++ rcStop) `shouldBe`
         [ "== program=\"afrp-examples rcReverse\" world=default speed=0.1  (2 runs, 0 failed)"
         , "== program=\"afrp-examples rcStop\" world=default speed=0.1  (2 runs, 0 failed)" ]
@@ -412,7 +431,6 @@ spec = do
         [ "== program=p world=default \"program\"=p  (1 runs, 0 failed)", "== program=q world=default \"program\"=p  (1 runs, 0 failed)" ]
     it "tells a parameter named world from the run's world: apart in the settings that vary, its name quoted (both were world=, mixed as one setting)" $ do
       let ofWorld w = replace "\"world\":\"default\"" ("\"world\":" ++ encodeJSON (JString w))
-          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
       headings [ ofWorld w (resultLine k [("world", p)] 1 Nothing)
                | (k, (w, p)) <- zip [1 ..] [("a", "b"), ("b", "a"), ("a", "a")] ] `shouldBe`
         [ "== world=a \"world\"=a  (1 runs, 0 failed)", "== world=a \"world\"=b  (1 runs, 0 failed)"
@@ -425,27 +443,22 @@ spec = do
         [ "== world=default \"world\"=1  (1 runs, 0 failed)", "== world=default \"world\"=2  (1 runs, 0 failed)" ]
 
     it "files the sweep's line for a run with no result, which names the program's file, under the program its result lines name; with several programs, under its own name unless a result line names it" $ do
-      let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
-          noResult prog seed world = "{\"program\":" ++ encodeJSON (JString prog) ++ ",\"world\":" ++ world ++ ",\"seed\":"
-                                     ++ show (seed :: Int) ++ ",\"params\":{\"speed\":\"0.1\"},\"flags\":\"--seed "
-                                     ++ show seed ++ "\",\"failure\":\"exit code 2, no result: bad flag\"}"
-          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
       -- one program: its runs with no result are its own, whatever name
       -- the sweep gave them (a wrapper script's), the world too
-      headings (take 2 sampleLines ++ [noResult "p.sh" 7 "null"]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
-      headings (map (replace "\"world\":\"default\"" "\"world\":\"w.world\"") (take 2 sampleLines) ++ [noResult "p.sh" 7 "\"w.world\""])
+      headings (take 2 sampleLines ++ [noResult "p.sh" Nothing "null" 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      headings (map (replace "\"world\":\"default\"" "\"world\":\"w.world\"") (take 2 sampleLines) ++ [noResult "p.sh" Nothing "\"w.world\"" 7])
         `shouldBe` ["== world=w.world speed=0.1  (3 runs, 1 failed)"]
-      headings (take 2 sampleLines ++ [noResult "p.sh" 2 "null"]) `shouldBe`
+      headings (take 2 sampleLines ++ [noResult "p.sh" Nothing "null" 2]) `shouldBe`
         [ "refused: the run world=default speed=0.1 seed 2 is on a line for a run with no result and on a result line too (a result"
           ++ " file merged with the sweep's line for the same run): each run may be merged once" ]
-      headings (take 2 sampleLines ++ [noResult "p.sh" 7 "null", noResult "p.bash" 7 "null"]) `shouldBe`
+      headings (take 2 sampleLines ++ [noResult "p.sh" Nothing "null" 7, noResult "p.bash" Nothing "null" 7]) `shouldBe`
         [ "refused: the run world=(not given) speed=0.1 seed 7 is on two lines for a run with no result (the sweep's lines for the"
           ++ " same run merged twice, under two programs' names): each run may be merged once" ]
       -- two programs: a line of one of them is filed with it (its own
       -- world as its result lines name it), one of another program is a
       -- setting of its own
       let q = map (replace "\"world\":\"default\"" "\"world\":\"program\"" . ofProgram "q") (take 2 sampleLines)
-      headings (take 2 sampleLines ++ q ++ [noResult "q" 7 "null", noResult "p" 8 "null", noResult "r.sh" 9 "null"]) `shouldBe`
+      headings (take 2 sampleLines ++ q ++ [noResult "q" Nothing "null" 7, noResult "p" Nothing "null" 8, noResult "r.sh" Nothing "null" 9]) `shouldBe`
         [ "== program=p world=default speed=0.1  (3 runs, 1 failed)", "== program=q world=program speed=0.1  (3 runs, 1 failed)"
         , "== program=r.sh world=(not given) speed=0.1  (1 runs, 1 failed)"
         , "== program=p over all other settings  (3 runs, 1 failed)", "== program=q over all other settings  (3 runs, 1 failed)"
@@ -454,45 +467,39 @@ spec = do
         , "== world=default over all other settings  (3 runs, 1 failed)", "== world=program over all other settings  (3 runs, 1 failed)" ]
 
     it "files the sweep's line for a run with no result that names its program as the result lines do (with the executable) under that program, whatever other programs' lines are merged (with one other program's result lines, every such run went under it)" $ do
-      let ofProgram q = replace "\"program\":\"p\"" ("\"program\":" ++ encodeJSON (JString q))
-          noResult prog exe seed = "{\"program\":" ++ encodeJSON (JString prog)
-                                   ++ maybe "" (\e -> ",\"executable\":" ++ encodeJSON (JString e)) exe
-                                   ++ ",\"world\":null,\"seed\":" ++ show (seed :: Int) ++ ",\"params\":{\"speed\":\"0.1\"}"
-                                   ++ ",\"flags\":\"--seed " ++ show seed ++ "\",\"failure\":\"exit code 2, no result: bad flag\"}"
-          headings ls = either (\e -> ["refused: " ++ e]) (filter ("== " `isPrefixOf`) . lines) (mergeResults (unlines ls))
-          settings = filter (not . ("over all other settings" `isInfixOf`)) . headings
+      let settings = filter (not . ("over all other settings" `isInfixOf`)) . headings
       -- a program every run of which wrote no result, merged with another
       -- program's result lines: its own setting
-      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "q" (Just "q.sh") 8]) `shouldBe`
+      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") "null" 7, noResult "q" (Just "q.sh") "null" 8]) `shouldBe`
         [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=(not given) speed=0.1  (2 runs, 2 failed)" ]
       -- its run with a result line too: under it, the world too (a wrapper's
       -- runs, named otherwise than its file)
-      settings (take 2 sampleLines ++ [ofProgram "q" (sampleLines !! 2), noResult "q" (Just "q.sh") 7]) `shouldBe`
+      settings (take 2 sampleLines ++ [ofProgram "q" (sampleLines !! 2), noResult "q" (Just "q.sh") "null" 7]) `shouldBe`
         [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=default speed=0.1  (2 runs, 1 failed)" ]
-      settings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      settings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") "null" 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
       -- a line that names only the file (an older sweep's) is filed under
       -- the program another line says that file is named by (its
       -- executable); else with the one program that result lines name, as
       -- before (also when a program whose runs all failed is merged: it
       -- was a setting of its own then); else it is a setting of its own
-      settings (take 2 sampleLines ++ [noResult "p.sh" Nothing 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
-      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "q.sh" Nothing 9]) `shouldBe`
+      settings (take 2 sampleLines ++ [noResult "p.sh" Nothing "null" 7]) `shouldBe` ["== world=default speed=0.1  (3 runs, 1 failed)"]
+      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") "null" 7, noResult "q.sh" Nothing "null" 9]) `shouldBe`
         [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=(not given) speed=0.1  (2 runs, 2 failed)" ]
-      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") 7, noResult "r.sh" Nothing 9]) `shouldBe`
+      settings (take 2 sampleLines ++ [noResult "q" (Just "q.sh") "null" 7, noResult "r.sh" Nothing "null" 9]) `shouldBe`
         [ "== program=p world=default speed=0.1  (3 runs, 1 failed)", "== program=q world=(not given) speed=0.1  (1 runs, 1 failed)" ]
       -- (other lines saying the file is two programs': a setting of its own)
-      settings (take 2 sampleLines ++ [noResult "q1" (Just "w.sh") 7, noResult "q2" (Just "w.sh") 8, noResult "w.sh" Nothing 9])
+      settings (take 2 sampleLines ++ [noResult "q1" (Just "w.sh") "null" 7, noResult "q2" (Just "w.sh") "null" 8, noResult "w.sh" Nothing "null" 9])
         `shouldBe` [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q1 world=(not given) speed=0.1  (1 runs, 1 failed)"
                    , "== program=q2 world=(not given) speed=0.1  (1 runs, 1 failed)", "== program=w.sh world=(not given) speed=0.1  (1 runs, 1 failed)" ]
-      settings (take 2 sampleLines ++ [ofProgram "q" (sampleLines !! 2), noResult "r.sh" Nothing 9]) `shouldBe`
+      settings (take 2 sampleLines ++ [ofProgram "q" (sampleLines !! 2), noResult "r.sh" Nothing "null" 9]) `shouldBe`
         [ "== program=p world=default speed=0.1  (2 runs, 0 failed)", "== program=q world=default speed=0.1  (1 runs, 0 failed)"
         , "== program=r.sh world=(not given) speed=0.1  (1 runs, 1 failed)" ]
       -- the same run named both ways: merged twice
-      headings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") 7, noResult "p.sh" Nothing 7]) `shouldSatisfy` \hs -> case hs of
+      headings (take 2 sampleLines ++ [noResult "p" (Just "p.sh") "null" 7, noResult "p.sh" Nothing "null" 7]) `shouldSatisfy` \hs -> case hs of
         [h] -> "refused: the run world=(not given) speed=0.1 seed 7 is on two lines for a run with no result" `isPrefixOf` h
         _   -> False
       -- an executable that is not a string: not the sweep's line
-      mergeResults (replace "\"executable\":\"q.sh\"" "\"executable\":1" (noResult "q" (Just "q.sh") 7))
+      mergeResults (replace "\"executable\":\"q.sh\"" "\"executable\":1" (noResult "q" (Just "q.sh") "null" 7))
         `shouldSatisfy` either ("line 1: not a result line of a sweep" `isPrefixOf`) (const False)
 
     it "refuses a line that is neither a run's result line nor the sweep's line for a run with no result" $ do
@@ -661,7 +668,7 @@ spec = do
     it "a name given twice: the run warns, naming the values and the one used (the last), and exits 0" $ withTempDir $ \dir -> do
       (code, err, line) <- runOnce dir ["--seconds", "0.1", "--param", "speed=0.2", "--param", "tag=x", "--param", "speed=0.3"]
       code `shouldBe` ExitSuccess
-      map (drop 1 . dropWhile (/= ':')) (lines err) `shouldBe`
+      map unsigned (lines err) `shouldBe`
         [" warning: --param speed is given twice, speed=0.2 then speed=0.3: the last, speed=0.3, is used"]
       field ["params"] (parsed line) `shouldBe` JObject [("speed", JString "0.3"), ("tag", JString "x")]
       (_, err3, _) <- runOnce dir ["--seconds", "0.1", "--param", "speed=1", "--param", "speed=2", "--param", "speed=1"]
@@ -671,7 +678,7 @@ spec = do
         (code, err, line) <- runOnce dir [ "--seconds", "0.1", "--keys", "0:a", "--odometry-noise", "0", "--seconds", "0.2"
                                          , "--keys", "0.1:b", "--odometry-noise", "0.01", "--param", "tag=x" ]
         code `shouldBe` ExitSuccess
-        map (drop 1 . dropWhile (/= ':')) (lines err) `shouldBe`
+        map unsigned (lines err) `shouldBe`
           [ " warning: --seconds is given twice, 0.1 then 0.2: the last, 0.2, is used"
           , " warning: --odometry-noise is given twice, 0 then 0.01: the last, 0.01, is used" ]
         (field ["seconds"] (parsed line), field ["odometryNoise"] (parsed line)) `shouldBe` (JNumber 0.2, JNumber 0.01)
@@ -683,7 +690,6 @@ spec = do
     it "paramOr on a command line runSim refuses stops the program at once, with runSim's message and exit code 2 (it read the default and the program went on); --help prints the usage and exits 0" $
       withTempDir $ \dir -> do
         prog <- childScript dir "announcer"
-        let after1 = drop 1 . dropWhile (/= ':')
         forM_ [ (["--param", "=5"], " --param expects NAME=VALUE, got \"=5\"")
               , (["--param", "speed=0.2", "--seconds", "abc"], " --seconds expects a non-negative number (written as in a world file: 2, 0.5, 1e-3), got \"abc\"")
               , (["--no-such-flag"], " unknown argument \"--no-such-flag\" (see --help)")
@@ -691,7 +697,7 @@ spec = do
                 -- own action ran first)
               , (["--param", "speed=0.2", "--svg", ""], " --svg must not be empty (a file name)") ] $ \(args, message) -> do
           (code, out, err) <- readProcessWithExitCode prog args ""
-          (code, out, map after1 (lines err)) `shouldBe` (ExitFailure 2, "", [message])
+          (code, out, map unsigned (lines err)) `shouldBe` (ExitFailure 2, "", [message])
         (code, out, err) <- readProcessWithExitCode prog ["--param", "speed=0.2", "--help"] ""
         (code, err) `shouldBe` (ExitSuccess, "")
         out `shouldSatisfy` ("usage: " `isPrefixOf`)
@@ -709,7 +715,7 @@ spec = do
         (code, take 1 (lines out), err) `shouldBe` (ExitSuccess, ["wander speed 0.2"], "")
         (code', out', err') <- readProcessWithExitCode prog (["wander"] ++ quiet ++ ["--param", "speed=0.3", "--param", "sped=2"]) ""
         (code', take 1 (lines out')) `shouldBe` (ExitSuccess, ["wander speed 0.3"])
-        map (drop 1 . dropWhile (/= ':')) (lines err') `shouldBe`
+        map unsigned (lines err') `shouldBe`
           [" warning: --param sped=2: this program has asked for no parameter named \"sped\" (it reads \"speed\")"]
         -- (not given: the default, and nothing to warn of)
         readProcessWithExitCode prog (["wander"] ++ quiet) "" >>= \(c, o, e) ->
@@ -717,14 +723,13 @@ spec = do
     it "paramOrFrom: a value paramOr refuses stops the program at once with paramOr's message and exit code 2, and so does a flag runSim refuses; --help is the program's own" $
       withTempDir $ \dir -> do
         prog <- childScript dir "ownline"
-        let after1 = drop 1 . dropWhile (/= ':')
         forM_ [ (["--param", "speed=fast"], " --param speed=fast: cannot read the value \"fast\" (write it as Haskell's read reads it: 0.5, 3, True, \"quoted text\")")
               , (["--param", "speed=1e999"], " --param speed=1e999: the value \"1e999\" is out of range for this parameter (it would read as Infinity)")
               , (["--param", "speed=0.2", "--seconds", "abc"], " --seconds expects a non-negative number (written as in a world file: 2, 0.5, 1e-3), got \"abc\"")
               , (["--frobnicate", "--param", "speed=0.2"], " unknown argument \"--frobnicate\" (see --help)") ] $ \(flags, message) -> do
           (code, out, err) <- readProcessWithExitCode prog ("wander" : flags) ""
           -- (the program's own action, which prints the speed, did not run)
-          (code, out, map after1 (lines err)) `shouldBe` (ExitFailure 2, "", [message])
+          (code, out, map unsigned (lines err)) `shouldBe` (ExitFailure 2, "", [message])
         -- (--help: the default read, the program's own usage printed; the
         -- flags after --help are not read, as runSim reads none)
         readProcessWithExitCode prog ["wander", "--param", "speed=0.2", "--help", "--param", "speed=fast"] ""
@@ -1348,6 +1353,39 @@ spec = do
       err `shouldNotSatisfy` ("line 9" `isInfixOf`)
       doesFileExist (dir </> "r.jsonl") `shouldReturn` False
 
+    it "refuses a flag with no value on every job line, one that names no file too (--seed 1 --seconds was run, and failed)" $ withTempDir $ \dir -> do
+      sweep <- script "sweep"
+      writeFile (dir </> "jobs") (unlines ["--seed 1 --seconds", "--seed 2 --seed --quiet", "--seed 3 --keys", "--seed 4 --dt 0.01"])
+      (code, out, err) <- listedBy sweep ["--jobs", dir </> "jobs"]
+      (code, out) `shouldBe` (ExitFailure 2, [])
+      lines err `shouldBe` [ "sweep: " ++ dir </> "jobs: line " ++ show k ++ ": " ++ fault
+                           | (k, fault) <- [ (1 :: Int, "--seconds needs a value"), (2, "--seed needs a value, found the flag --quiet")
+                                           , (3, "--keys needs a value") ] ]
+
+    it "refuses an empty flag after -- (split on spaces, it was lost: --seconds '' took the next flag for its value)" $ do
+      sweep <- script "sweep"
+      (code, out, err) <- listedBy sweep ["--seeds", "1", "--", "--seconds", "", "--quiet"]
+      (code, out) `shouldBe` (ExitFailure 2, [])
+      err `shouldSatisfy` ("a flag after -- cannot be empty" `isInfixOf`)
+
+    it "--list prints every job line as it is (a line -n, -e or -E was taken for echo's option, and not printed)" $ withTempDir $ \dir -> do
+      sweep <- script "sweep"
+      writeFile (dir </> "jobs") (unlines ["-n", "--seed 1", "-e", "-E"])
+      listedBy sweep ["--jobs", dir </> "jobs"] `shouldReturn` (ExitSuccess, ["-n", "--seed 1", "-e", "-E"], "")
+
+    it "writes the line of a run with no result whose --param has no name or no = (--param =5 ended the sweep, its lines and summary unwritten)" $
+      withTempDir $ \dir -> do
+        requireParallel
+        prog <- childScript dir "program"
+        sweep <- script "sweep"
+        writeFile (dir </> "jobs") (unlines ["--seed 1", "--seed 2 --param =5", "--seed 3 --param speed"])
+        (code, _, err) <- runScriptCode [] sweep ["--jobs", dir </> "jobs", prog, dir </> "r.jsonl", "--", "--seconds", "0.1"]
+        (code, "3 runs, 2 failed" `isInfixOf` err) `shouldBe` (ExitFailure 1, True)
+        rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+        map (field ["seed"]) rs `shouldBe` map JNumber [1, 2, 3]
+        -- (the pairs the runs refused name no parameter)
+        map (field ["params"]) (drop 1 rs) `shouldBe` replicate 2 (JObject [])
+
     it "checks --jobs, --seeds and --worlds up front, and runs worlds and parameters with spaces" $ withTempDir $ \dir -> do
       sweep <- script "sweep"
       let refused args what = do
@@ -1448,6 +1486,30 @@ spec = do
         rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
         map (field ["params", "tag"]) rs `shouldBe` map JString ["'a'", "'\"'"]
 
+    it "keeps the comma of a Char literal in a list of --param values, ',', in its value (it was split into ' and ', and refused as a value given twice)" $
+      withTempDir $ \dir -> do
+        sweep <- script "sweep"
+        let listed = listedBy sweep
+        listed ["--param", "c='a',','"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --param 'c='\\''a'\\'''", "--seed 0 --param 'c='\\'','\\'''"], "")
+        listed ["--param", "c=','"] `shouldReturn` (ExitSuccess, ["--seed 0 --param 'c='\\'','\\'''"], "")
+        -- (where a Char literal starts, as Haskell's read reads it: not
+        -- after a name's ', nor in a string; and '\,', the escaped comma,
+        -- is one value as before)
+        listed ["--param", "c=Just ',',x',','"] `shouldReturn`
+          ( ExitSuccess, [ "--seed 0 --param 'c=Just '\\'','\\'''", "--seed 0 --param 'c=x'\\'''"
+                         , "--seed 0 --param 'c='\\'','\\'''" ], "" )
+        listed ["--param", "c='\\,','x'"] `shouldReturn`
+          (ExitSuccess, ["--seed 0 --param 'c='\\'','\\'''", "--seed 0 --param 'c='\\''x'\\'''"], "")
+        (code, out, err) <- listed ["--param", "c=\"a',','\""]
+        (code, out, "that is not closed" `isInfixOf` err) `shouldBe` (ExitFailure 2, [], True)
+        -- and a run gets the comma
+        requireParallel
+        prog <- childScript dir "program"
+        _ <- runScript [] sweep ["--param", "tag='a',','", prog, dir </> "r.jsonl", "--", "--seconds", "0.1"]
+        rs <- map parsed . lines <$> readFile (dir </> "r.jsonl")
+        map (field ["params", "tag"]) rs `shouldBe` map JString ["'a'", "','"]
+
     it "interrupted (SIGTERM to its process group, as at Slurm's time limit): a line for every run, a message, no temporary file" $ withTempDir $ \dir -> do
       requireParallel
       prog <- childScript dir "program"
@@ -1468,6 +1530,38 @@ spec = do
       table <- merged dir [results]
       table `shouldSatisfy` ("(6 runs, 4 failed)" `isInfixOf`)
       listDirectory (dir </> "tmp") `shouldReturn` []
+
+    it "interrupted before its runs (RESULTS, a pipe, waiting for a reader), leaves no temporary folder (the signal's default action ended it, the folder left behind)" $
+      withTempDir $ \dir -> do
+        requireParallel
+        real <- childScript dir "program"
+        sweep <- script "sweep"
+        -- (the program says when it has answered the sweep's last question
+        -- before the runs: then the sweep opens RESULTS, and waits there)
+        let prog = dir </> "asked"
+            results = dir </> "results.pipe"
+        writeScript prog (unlines [ "#!/bin/bash"
+                                  , "case \" $* \" in *' --print-program '*) '" ++ real ++ "' \"$@\"; s=$?; : > '" ++ dir </> "answered" ++ "'; exit $s ;; esac"
+                                  , "exec '" ++ real ++ "' \"$@\"" ])
+        _ <- readProcess "mkfifo" [results] ""
+        createDirectory (dir </> "tmp")
+        environment <- filter ((/= "TMPDIR") . fst) <$> getEnvironment
+        (_, _, _, ph) <- createProcess (proc "bash" [sweep, "--seeds", "1", prog, results, "--", "--seconds", "0.1"])
+          { env = Just (("TMPDIR", dir </> "tmp") : environment), std_err = CreatePipe }
+        Just pid <- getPid ph
+        let waitAnswered :: Int -> IO ()
+            waitAnswered k = do
+              done <- doesFileExist (dir </> "answered")
+              unless (done || k <= 0) (threadDelay 100000 >> waitAnswered (k - 1))
+        waitAnswered 600
+        threadDelay 1000000
+        signalProcess sigTERM pid
+        -- (a reader, should the sweep still wait to open the pipe)
+        _ <- readProcessWithExitCode "timeout" ["5", "cat", results] ""
+        code <- timeout 60000000 (waitForProcess ph)
+        unless (isJust code) (signalProcess sigKILL pid >> () <$ waitForProcess ph)
+        code `shouldBe` Just (ExitFailure 143)
+        listDirectory (dir </> "tmp") `shouldReturn` []
 
     it "interrupted, leaves no temporary folder even of a run that GNU parallel has to kill (one slow to end on SIGTERM)" $ withTempDir $ \dir -> do
       requireParallel
