@@ -5,6 +5,8 @@ import           Test.Hspec
 
 import qualified AFRP.BasicSpec
 import qualified AFRP.ChainSpec
+import qualified AFRP.Chain.RegroupSpec
+import qualified AFRP.Chain.SumsSpec
 import qualified AFRP.CollectionSpec
 import qualified AFRP.ConditionalSpec
 import qualified AFRP.DeferredSpec
@@ -18,6 +20,7 @@ import qualified AFRP.LawsSpec
 import qualified AFRP.LoopSpec
 import qualified AFRP.LoopLazinessSpec
 import qualified AFRP.NoiseSpec
+import qualified AFRP.Node.FuseSpec
 import qualified AFRP.NotesSpec
 import qualified AFRP.OptimiserSpec
 import qualified AFRP.ParallelFunctorSpec
@@ -101,6 +104,9 @@ specs :: IO ()
 specs = hspec $ do
   describe "AFRP.Basic"       AFRP.BasicSpec.spec
   describe "AFRP.Internal.Chain" AFRP.ChainSpec.spec
+  describe "AFRP.Internal.Chain.Sums" AFRP.Chain.SumsSpec.spec
+  describe "AFRP.Internal.Chain.Regroup" AFRP.Chain.RegroupSpec.spec
+  describe "AFRP.Internal.Node.Fuse" AFRP.Node.FuseSpec.spec
   describe "AFRP.Conditional" AFRP.ConditionalSpec.spec
   describe "AFRP.Internal.Deferred" AFRP.DeferredSpec.spec
   describe "AFRP.Event"       AFRP.EventSpec.spec

@@ -2,6 +2,7 @@
 -- transformer, on fixed input lists with hand-computed outputs.
 module AFRP.EventSourceSpec (spec) where
 
+import           Control.Arrow     (arr, (>>>))
 import           Control.Exception (ErrorCall (..), evaluate)
 import           Data.List         (findIndices, isInfixOf, isPrefixOf)
 import           Data.Maybe        (fromMaybe)
@@ -10,7 +11,11 @@ import           Test.Hspec        hiding (after)
 import           Test.QuickCheck   (Gen, choose, counterexample, elements, forAll, oneof, vectorOf,
                                     withMaxSuccess)
 
-import           AFRP              hiding (forAll)
+import           AFRP.Basic        (localTime)
+import           AFRP.Event        (Event (..), isEvent)
+import           AFRP.EventSource
+import           AFRP.Internal.SF  (DTime, SF, Time)
+import           AFRP.Run          (embed)
 import           TestUtil
 
 -- | An error call whose message (not its location) mentions the text.

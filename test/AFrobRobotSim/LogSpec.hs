@@ -10,10 +10,14 @@ import           System.IO                (hClose, openTempFile)
 import           System.Process           (readProcessWithExitCode)
 import           Test.Hspec
 
-import           AFrob                    hiding (forAll)
-import           AFrobRobotSim
+import           AFRP.Basic               (constant)
+import           AFRP.Geometry            (Point2 (..))
+import           AFrob.MergeableRecord    (mrFinalize)
+import           AFrob.RobotIO            (ddBrake, ddVelDiff)
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.LogFixture
+import           AFrobRobotSim.Simulator  (RobotState (..), WorldState (..), simulate)
+import           AFrobRobotSim.World      (ObjectTemplate (..))
 
 -- The two robots of a frame (the fixture has two).
 pair :: [a] -> (a, a)
