@@ -148,7 +148,6 @@ specWithoutFiles = do
   it "robotView follows one robot through a run (fixed)" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 2) 0]
         run   = runStream defaultSimConfig { simDt = 0.1 } 2 world wander rcBrake
-        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
         viewB = robotView "SimbotB" 1 run
     length run `shouldBe` 21
     map fst viewB `shouldBe` map fst run
@@ -172,7 +171,6 @@ specWithoutFiles = do
   it "onRobot is the predicate of the robot's view: it holds and is decided false as there (fixed)" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 2) 0]
         run   = runStream defaultSimConfig { simDt = 0.1 } 2 world wander rcBrake
-        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
         xOf r = let Point2 x _ = robotPos r in x
         -- (one of them with state: the robot's x never falls back)
         preds = [ Always (SP (arr ((== Point2 2 2) . robotPos)))
@@ -217,7 +215,6 @@ specWithoutFiles = do
         neverTrue = SP (arr (const False))
         check d bound = quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
           runT defaultSimConfig { simDt = 0.05 } d rcBrake rcBrake (eventuallyWithin bound neverTrue) world
-        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
     atDeadline <- check 20 20
     case atDeadline of
       Failure {} -> output atDeadline `shouldSatisfy` ("decided false at t = 20.00" `isInfixOf`)
@@ -652,7 +649,6 @@ specWithFiles = do
     -- shrinking tries, get a predicate that holds)
     let file = tmp </> "afrp-test-robot-of-two.world"
         world = [OTSimbotB 1 (Point2 (-2) 2) 0, OTSimbotA 1 (Point2 3 0) 0, OTBlock (Point2 (-3) (-3))]
-        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
         notStuck = Always (SP (arr (not . robotStuck)))
         hasA1 w = not (null [ () | OTSimbotA 1 _ _ <- w ])
         ofRobot ty w = if ty /= "SimbotA" || hasA1 w then onRobot ty 1 notStuck else Always (SP (arr (const True)))
@@ -694,9 +690,12 @@ isRobot _            = False
 
 -- A robot that drives straight at full speed: in a world without walls it
 -- ends up against the world's edge, stuck.
-
 straight :: SimbotController
 straight _ = constant (mrFinalize (ddVelTR 1 0))
+
+-- A robot that stands still.
+rcBrake :: SimbotController
+rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
 
 -- Nobody is ever stuck.
 neverStuck :: TPred WorldState
