@@ -44,6 +44,7 @@ module AFrobRobotSim.Test
   , forAllWorlds
   , runT
   , onRobot
+  , hasRobot
   , forAllRuns
   , runReplayPage
   , writeRunReplayPage
@@ -69,7 +70,7 @@ import           AFRP.Geometry        (Point2 (..))
 import           AFrob.Dimensions     (RobotId, RobotType)
 import           AFrobRobotSim
 import           AFrobRobotSim.Simulator (forceWorldState)
-import           AFrobRobotSim.World  (objectHalfSize)
+import           AFrobRobotSim.World  (objectHalfSize, robotKindOf)
 import           AFrobRobotSim.Log    (LogConfig (..), LogSummary (..), RunLog (..), defaultLogConfig,
                                        logFrames, logHeader)
 import           AFrobRobotSim.Replay (discardReplay, newReplayRecorder, recordReplayState, replayEveryFrame, replayPage,
@@ -456,8 +457,8 @@ decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++
 -- 'forAllRuns', QuickCheck reports the error as the failure. So when
 -- random worlds need not have the robot ('genWorld' picks each robot's
 -- type at random) or have others beside it, give worlds without it a
--- predicate that holds (@\\w -> if hasIt w then onRobot ty i p else
--- Always (SP (arr (const True)))@): 'shrinkWorld' may remove it while
+-- predicate that holds (@\\w -> if 'hasRobot' ty i w then onRobot ty i p
+-- else Always (SP (arr (const True)))@): 'shrinkWorld' may remove it while
 -- keeping another robot, and the error would then be the
 -- counterexample. A world's only robot stays while it shrinks.
 onRobot :: RobotType -> RobotId -> TPred RobotState -> TPred WorldState
@@ -466,6 +467,22 @@ onRobot ty i p =
   -- finds a missing robot whatever p reads; it is true wherever it is
   -- made, so the And is p, sample by sample)
   tPredOn (robotOf ty i) (And (SP (arr (`seq` True))) p)
+
+-- | @hasRobot ty i world@: whether @world@ has the robot of type @ty@
+-- (@\"SimbotA\"@ or @\"SimbotB\"@) and id @i@, the robot that
+-- @'onRobot' ty i p@ and 'robotView' find in the world's runs (a run has
+-- the robots of its world, from time 0 on). The guard of a predicate of
+-- one robot for random worlds that need not have it:
+--
+-- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB (genWorld defaultWorldMix notesBounds) $ \w ->
+-- >   if hasRobot "SimbotA" 1 w then onRobot "SimbotA" 1 (Always (SP (arr (not . robotStuck))))
+-- >   else Always (SP (arr (const True)))
+--
+-- > hasRobot "SimbotB" 1 [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 0) 0]  ==  True
+-- > hasRobot "SimbotB" 2 [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 0) 0]  ==  False
+-- > hasRobot "SimbotA" 2 [OTSimbotB 2 (Point2 0 0) 0]                               ==  False
+hasRobot :: RobotType -> RobotId -> WorldTemplate -> Bool
+hasRobot ty i = any (\o -> fmap kindType (robotKindOf o) == Just ty && otRId o == i)
 
 -- The robot's state at each sample, its sample number at hand for the
 -- error of a robot not there.

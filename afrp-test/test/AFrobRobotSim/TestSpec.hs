@@ -206,6 +206,25 @@ specWithoutFiles = do
     isSuccess result `shouldBe` False
     output result `shouldSatisfy` ("no SimbotB 2 in the run (its robots: SimbotA 1, SimbotB 1)" `isInfixOf`)
 
+  it "hasRobot says whether a world has the robot of a type and id, the one onRobot finds in its runs" $ do
+    let robotA = OTSimbotA 1 (Point2 0 0) 0
+        robotB = OTSimbotB 2 (Point2 2 2) 0
+        others = [OTSize 12 12, OTBlock (Point2 (-3) (-3)), OTBall (Point2 3 3)]
+        world = robotA : robotB : others
+    map (\(ty, i) -> hasRobot ty i world) [("SimbotA", 1), ("SimbotB", 2)] `shouldBe` [True, True]
+    -- (without it; a robot of the other type with its id; a type misspelt)
+    map (\(ty, i) -> hasRobot ty i world) [("SimbotA", 2), ("SimbotB", 1), ("simbotA", 1), ("SimbotC", 1)]
+      `shouldBe` [False, False, False, False]
+    hasRobot "SimbotA" 1 (robotB : others) `shouldBe` False
+    hasRobot "SimbotB" 2 [robotA] `shouldBe` False
+    hasRobot "SimbotA" 1 [] `shouldBe` False
+    -- (the robots it finds are those onRobot finds in the world's run)
+    let run = runStream defaultSimConfig { simDt = 0.1 } 0.5 world wander wander
+        found ty i = try (evaluate (evalT (onRobot ty i (Always (SP (arr (const True))))) run))
+                       :: IO (Either ErrorCall Bool)
+    forM_ [ (ty, i) | ty <- ["SimbotA", "SimbotB"], i <- [1, 2] ] $ \(ty, i) ->
+      (either (const False) id <$> found ty i) `shouldReturn` hasRobot ty i world
+
   it "runReplayPage counts the samples as the log does, the one at time 0 included" $ do
     let page = runReplayPage defaultSimConfig { simDt = 0.1 } 1 [OTSimbotA 1 (Point2 0 0) 0] wander wander
     pageSummary page `shouldSatisfy` ("\"steps\":11," `isInfixOf`)
@@ -650,8 +669,7 @@ specWithFiles = do
     let file = tmp </> "afrp-test-robot-of-two.world"
         world = [OTSimbotB 1 (Point2 (-2) 2) 0, OTSimbotA 1 (Point2 3 0) 0, OTBlock (Point2 (-3) (-3))]
         notStuck = Always (SP (arr (not . robotStuck)))
-        hasA1 w = not (null [ () | OTSimbotA 1 _ _ <- w ])
-        ofRobot ty w = if ty /= "SimbotA" || hasA1 w then onRobot ty 1 notStuck else Always (SP (arr (const True)))
+        ofRobot ty w = if hasRobot ty 1 w then onRobot ty 1 notStuck else Always (SP (arr (const True)))
         check ty = quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
           forAllRuns file defaultSimConfig { simDt = 0.05 } 10 straight rcBrake (pure world) (ofRobot ty)
     passes <- check "SimbotB"
