@@ -408,21 +408,29 @@ specWithFiles = do
       Just result            -> expectationFailure ("the run was not found to fail: " ++ output result)
       Nothing                -> expectationFailure "runT did not end within 60 s"
 
-  it "forAllRuns of a failure early in a very long run writes a page of 5 s past it (it made the whole run's page)" $ \tmp -> do
+  it "forAllRuns of a failure in a very long run writes a page up to 5 s past the instant that decided (it made the whole run's page)" $ \tmp -> do
+    -- (the run is 10^6 s, 10^8 steps of 0.01 s: its whole page, or a
+    -- decision or explanation that reads the run to its end, would not
+    -- end within the timeout. The world is one robot, which shrinking
+    -- keeps, so no world smaller that passes, and so is run whole, is
+    -- tried. The robot stands still for 3 s, then drives off: decided at
+    -- 3.01 s, the page's 5 s reach to 8.01 s, which a page ending 5 s
+    -- after the run's start, or at the instant, or where explaining
+    -- stopped reading, does not)
     let file = tmp </> "afrp-test-early.world"
         world = [OTSimbotA 1 (Point2 0 0) 0]
+        drivesAt3 _ = localTime >>> arr (\t -> mrFinalize (ddVelTR (if t < 3 then 0 else 1) 0))
     r <- timeout (60 * 1000000) $ quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
-      -- (shrinking keeps the world's one robot: the empty world, which
-      -- passes, would be run the whole 10^6 s)
-      forAllRuns file defaultSimConfig 1e6 wander wander (pure world)
+      forAllRuns file defaultSimConfig 1e6 drivesAt3 drivesAt3 (pure world)
         (\_ -> Always (SP (arr (all ((== Point2 0 0) . robotPos) . wsRobots))))
     case r of
-      Just Failure {} -> do
+      Just result@Failure {} -> do
         page <- readFile (file ++ ".html")
         length page `seq` mapM_ removeFile [file, file ++ ".html"]
-        -- (decided at 0.01 s: frames at 25 a second up to 5.01 s, the
-        -- one at time 0 included)
-        occurrences "\"frame\"" page `shouldBe` 126
+        decidedLines result `shouldBe` ["decided false at t = 3.01 (step 301):"]
+        pageSummary page `shouldSatisfy` ("\"falsified\":{\"t\":3.01" `isInfixOf`)
+        -- (frames at 25 a second from time 0 to 8.00 s)
+        occurrences "\"frame\"" page `shouldBe` 201
       Just result -> expectationFailure ("the run was not found to fail: " ++ output result)
       Nothing     -> expectationFailure "forAllRuns did not end within 60 s"
 
@@ -607,7 +615,7 @@ specWithFiles = do
         gaveUp _ = localTime >>> arr (\t -> if t >= 1.2 then error "gave up" else mrFinalize (ddVelTR 0.2 0))
     result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
       forAllRuns file defaultSimConfig 10 gaveUp gaveUp (pure [OTSimbotA 1 (Point2 0 0) 0])
-        (\_ -> Always (SP (arr (\ws -> null (wsRobots ws) || wsTime ws < 1))))
+        (\_ -> Always (SP (arr ((< 1) . wsTime))))
     case result of
       Failure {} -> do
         page <- readFile (file ++ ".html")
@@ -618,8 +626,8 @@ specWithFiles = do
       _ -> expectationFailure ("the run was not found to fail: " ++ output result)
 
   it "forAllRuns runs the world it reports twice, once to decide and once to explain it and write its page (it ran it four times)" $ \tmp -> do
-    -- (one robot, so that a start of its controller is a run; the empty
-    -- world that shrinking tries has none, and passes)
+    -- (one robot, so that a start of its controller is a run; shrinking
+    -- keeps a world's only robot, so it tries no other world)
     let file = tmp </> "afrp-test-runs.world"
         world = pure [OTSimbotA 1 (Point2 0 0) 0]
         runsOf rc p = do
