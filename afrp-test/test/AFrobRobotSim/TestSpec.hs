@@ -459,6 +459,32 @@ specWithFiles = do
     map isSuccess [passed, passedRuns] `shouldBe` [True, True]
     mapM doesFileExist [quiet, quiet ++ ".html"] `shouldReturn` [False, False]
 
+  it "forAllRuns that cannot make the page for a reason other than the write's says it could not be made, and why" $ \tmp -> do
+    -- (a world the simulator refuses, its robot on a block: the run's
+    -- error is no I/O failure. The property fails with it; shrinking
+    -- finds the robot alone, which passes, so this world is reported,
+    -- and its file is written, the page not)
+    let file = tmp </> "afrp-test-unmade.world"
+        world = [OTSimbotA 1 (Point2 0 0) 0, OTBlock (Point2 0 0)]
+    refused <- try (evaluate (null (simulateWith defaultSimConfig world wander wander))) :: IO (Either ErrorCall Bool)
+    result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+      forAllRuns file defaultSimConfig 1 wander wander (pure world) (const (Always (SP (arr (const True)))))
+    -- (parsed, not read with readWorldFile, which refuses it too)
+    written <- readFile file
+    length written `seq` removeFile file
+    parseWorld file written `shouldBe` Right world
+    doesFileExist (file ++ ".html") `shouldReturn` False
+    case (refused, result) of
+      (Left why, Failure {}) -> do
+        let message = takeWhile (/= '\n') (show why)
+        message `shouldSatisfy` ("AFrobRobotSim.simulate: invalid world:" `isPrefixOf`)
+        output result `shouldSatisfy` (("(the world is written to " ++ file ++ "; its run's replay page could not be made for "
+                                        ++ file ++ ".html: " ++ message) `isInfixOf`)
+        output result `shouldNotSatisfy` ("could not be written" `isInfixOf`)
+        output result `shouldNotSatisfy` ("Exception running callback" `isInfixOf`)
+      (Right _, _) -> expectationFailure "the simulator ran a robot on a block"
+      (_, _)       -> expectationFailure ("the world the simulator refuses passed: " ++ output result)
+
   it "writeRunReplayPage, which records the run as it goes, writes the page runReplayPage gives" $ \tmp -> do
     let file = tmp </> "afrp-test-page.html"
         config = defaultSimConfig { simDt = 0.03 }
