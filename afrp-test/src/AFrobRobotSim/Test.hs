@@ -533,8 +533,12 @@ forAllRuns file config duration rcA rcB gen p =
                            states <- readIORef cell
                            writeIORef cell []
                            (upTo, decided) <- pageEnd explanation
-                           -- (the run up to upTo is the start of this one)
-                           recordRunPage decided page config w (take (stepsWithin config upTo + 1) (map snd states))
+                           -- (the run up to upTo is the start of this one;
+                           -- its first sample at least, so that a run
+                           -- runStream refuses, of a negative duration,
+                           -- is its error here, not a page of no frame)
+                           recordRunPage decided page config w
+                                         (take (max 1 (stepsWithin config upTo + 1)) (map snd states))
                          pure ("(" ++ wroteWorld ++ "; " ++ wrotePage ++ ")"))
                      (decideRun (p w) (\() -> runStream config duration w rcA rcB) explanation)
   where

@@ -485,6 +485,26 @@ specWithFiles = do
       (Right _, _) -> expectationFailure "the simulator ran a robot on a block"
       (_, _)       -> expectationFailure ("the world the simulator refuses passed: " ++ output result)
 
+  it "forAllRuns of a duration or time step runStream refuses writes no page (it wrote a page of no frame, and said it was written)" $ \tmp -> do
+    let file = tmp </> "afrp-test-refused.world"
+        world = [OTSimbotA 1 (Point2 0 0) 0]
+        refusedBy config duration = do
+          result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+            forAllRuns file config duration wander wander (pure world) (const (Always (SP (arr (const True)))))
+          pageMade <- doesFileExist (file ++ ".html")
+          mapM_ removeFile ([file] ++ [ file ++ ".html" | pageMade ])
+          pure (result, pageMade)
+    forM_ [ (defaultSimConfig, -1, "the duration must be a finite number >= 0, got -1.0")
+          , (defaultSimConfig, 0 / 0, "the duration must be a finite number >= 0, got NaN")
+          , (defaultSimConfig, 1e20, "a duration of 1.0e20 s is more than 2^53 time steps")
+          , (defaultSimConfig { simDt = 0 }, 1, "the time step (simDt) must be a finite number > 0, got 0.0") ] $
+      \(config, duration, why) -> do
+        (result, pageMade) <- refusedBy config duration
+        (case result of { Failure {} -> True; _ -> False }) `shouldBe` True
+        pageMade `shouldBe` False
+        output result `shouldSatisfy` (("its run's replay page could not be made for " ++ file ++ ".html: AFrobRobotSim.Test.runStream: "
+                                        ++ why) `isInfixOf`)
+
   it "writeRunReplayPage, which records the run as it goes, writes the page runReplayPage gives" $ \tmp -> do
     let file = tmp </> "afrp-test-page.html"
         config = defaultSimConfig { simDt = 0.03 }
