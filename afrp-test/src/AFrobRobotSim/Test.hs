@@ -55,8 +55,8 @@ module AFrobRobotSim.Test
   , robotGap
   ) where
 
-import           Control.Exception    (IOException, SomeAsyncException, SomeException, bracketOnError, displayException, evaluate,
-                                       fromException, try, throwIO, tryJust)
+import           Control.Exception    (ErrorCall (..), IOException, SomeAsyncException, SomeException, bracketOnError,
+                                       displayException, evaluate, fromException, try, throwIO, tryJust)
 import           Data.IORef           (newIORef, readIORef, writeIORef)
 import           Data.List            (intercalate, stripPrefix, tails)
 import           Data.Maybe           (fromMaybe, isJust)
@@ -361,7 +361,8 @@ reportingAfter write = callback (PostFinalFailure NotCounterexample (\st _ -> wr
 -- exception: an interrupt still stops the test): an I/O failure's
 -- message, without the file's name when it begins with it ("could not be
 -- written to F: openFile: does not exist ..."), or what else went wrong
--- in making it ("could not be made for F: ...").
+-- in making it ("could not be made for F: ...", an error's message
+-- without its call stack, which QuickCheck prints with the exception).
 wroteOrNot :: String -> FilePath -> IO () -> IO String
 wroteOrNot what file write = do
   r <- tryJust synchronous write
@@ -370,6 +371,7 @@ wroteOrNot what file write = do
     Left e | Just (io :: IOException) <- fromException e ->
       let msg = show io
       in what ++ " could not be written to " ++ file ++ ": " ++ fromMaybe msg (stripPrefix (file ++ ": ") msg)
+    Left e | Just (ErrorCallWithLocation msg _) <- fromException e -> what ++ " could not be made for " ++ file ++ ": " ++ msg
     Left e -> what ++ " could not be made for " ++ file ++ ": " ++ displayException e
 
 -- An exception that is not asynchronous (a timeout's, Ctrl-C's).
