@@ -567,17 +567,22 @@ forAllRuns file config duration rcA rcB gen p =
 -- 'OTSize' is run in the config's 'simBounds', so when those are not the
 -- notes' 10 by 10 the text gets the @size@ line that says them, and the
 -- file runs again as it ran (@simbot --world@). A world file's size is
--- centred on the origin; bounds that are not get a comment that says
--- them instead.
+-- centred on the origin, each side from 'minWorldSide' to 'maxWorldSide'
+-- (1 to 1000 m); bounds that are not get a comment that says them
+-- instead.
 worldFileText :: SimConfig -> WorldTemplate -> String
 worldFileText config world
   | isJust (worldSize world) || bounds == notesBounds = renderWorld world
-  | bounds == sizeBounds w h = renderWorld (OTSize w h : world)
+  | bounds == sizeBounds w h && all sizeSide [w, h] = renderWorld (OTSize w h : world)
   | otherwise = "# the run's world was [" ++ show x0 ++ ", " ++ show x1 ++ "] x [" ++ show y0 ++ ", " ++ show y1
-                ++ "] (simBounds), which a size line (centred) cannot say\n" ++ renderWorld world
+                ++ "] (simBounds), which a size line (centred, each side " ++ metres minWorldSide ++ " to "
+                ++ metres maxWorldSide ++ " m) cannot say\n" ++ renderWorld world
   where
     bounds@(Bounds x0 y0 x1 y1) = simBounds config
     (w, h) = (x1 - x0, y1 - y0)
+    sizeSide v = v >= minWorldSide && v <= maxWorldSide
+    -- (a whole number of metres without its ".0")
+    metres v = let r = round v :: Integer in if fromIntegral r == v then show r else show v
 
 -- | @runReplayPage config duration world rcA rcB@: the self-contained
 -- HTML replay page ("AFrobRobotSim.Replay") of the run of 'runStream',

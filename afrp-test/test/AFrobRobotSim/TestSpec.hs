@@ -305,6 +305,20 @@ specWithoutFiles = do
     worldFileText offset w `shouldSatisfy` ("# the run's world was [0.0, 20.0] x [0.0, 20.0]" `isPrefixOf`)
     parseWorld "w" (worldFileText offset w) `shouldBe` Right w
 
+  it "worldFileText says centred bounds with a side a world file refuses (below 1 m, above 1000 m) in a comment (it wrote a size line no world file reads)" $ do
+    let w = [OTSimbotA 1 (Point2 0 0) 0]
+    forM_ [(2000, 2000), (0.8, 0.8), (1500, 10), (10, 0.9)] $ \(width, height) -> do
+      let config = defaultSimConfig { simBounds = sizeBounds width height }
+          text = worldFileText config w
+      -- (a run in them is made)
+      length (runStream config 0.1 w wander wander) `shouldBe` 11
+      text `shouldSatisfy` (("# the run's world was [" ++ show (negate width / 2) ++ ", " ++ show (width / 2) ++ "]") `isPrefixOf`)
+      text `shouldSatisfy` ("(centred, each side 1 to 1000 m) cannot say\n" `isInfixOf`)
+      parseWorld "w" text `shouldBe` Right w
+    -- (the sides a size line says, 1 and 1000 m, still get one)
+    forM_ [(1, 1000), (1000, 1)] $ \(width, height) ->
+      parseWorld "w" (worldFileText defaultSimConfig { simBounds = sizeBounds width height } w) `shouldBe` Right (OTSize width height : w)
+
   it "showWorldState writes the time with the decimals its step needs (at least 2)" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0]
         times dt = map (takeWhile (/= ' ') . showWorldState . snd)
