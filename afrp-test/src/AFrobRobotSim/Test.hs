@@ -44,6 +44,7 @@ module AFrobRobotSim.Test
   , forAllWorlds
   , runT
   , onRobot
+  , hasRobot
   , forAllRuns
   , runReplayPage
   , writeRunReplayPage
@@ -54,8 +55,8 @@ module AFrobRobotSim.Test
   , robotGap
   ) where
 
-import           Control.Exception    (IOException, SomeAsyncException, SomeException, bracketOnError, displayException, evaluate,
-                                       fromException, try, throwIO, tryJust)
+import           Control.Exception    (ErrorCall (..), IOException, SomeAsyncException, SomeException, bracketOnError,
+                                       displayException, evaluate, fromException, try, throwIO, tryJust)
 import           Data.IORef           (newIORef, readIORef, writeIORef)
 import           Data.List            (intercalate, stripPrefix, tails)
 import           Data.Maybe           (fromMaybe, isJust)
@@ -69,7 +70,7 @@ import           AFRP.Geometry        (Point2 (..))
 import           AFrob.Dimensions     (RobotId, RobotType)
 import           AFrobRobotSim
 import           AFrobRobotSim.Simulator (forceWorldState)
-import           AFrobRobotSim.World  (objectHalfSize)
+import           AFrobRobotSim.World  (objectHalfSize, robotKindOf)
 import           AFrobRobotSim.Log    (LogConfig (..), LogSummary (..), RunLog (..), defaultLogConfig,
                                        logFrames, logHeader)
 import           AFrobRobotSim.Replay (discardReplay, newReplayRecorder, recordReplayState, replayEveryFrame, replayPage,
@@ -360,7 +361,8 @@ reportingAfter write = callback (PostFinalFailure NotCounterexample (\st _ -> wr
 -- exception: an interrupt still stops the test): an I/O failure's
 -- message, without the file's name when it begins with it ("could not be
 -- written to F: openFile: does not exist ..."), or what else went wrong
--- in making it ("could not be made for F: ...").
+-- in making it ("could not be made for F: ...", an error's message
+-- without its call stack, which QuickCheck prints with the exception).
 wroteOrNot :: String -> FilePath -> IO () -> IO String
 wroteOrNot what file write = do
   r <- tryJust synchronous write
@@ -369,6 +371,7 @@ wroteOrNot what file write = do
     Left e | Just (io :: IOException) <- fromException e ->
       let msg = show io
       in what ++ " could not be written to " ++ file ++ ": " ++ fromMaybe msg (stripPrefix (file ++ ": ") msg)
+    Left e | Just (ErrorCallWithLocation msg _) <- fromException e -> what ++ " could not be made for " ++ file ++ ": " ++ msg
     Left e -> what ++ " could not be made for " ++ file ++ ": " ++ displayException e
 
 -- An exception that is not asynchronous (a timeout's, Ctrl-C's).
@@ -456,8 +459,8 @@ decidedLine e = "decided false at t = " ++ showTime (explTime e) ++ " (step " ++
 -- 'forAllRuns', QuickCheck reports the error as the failure. So when
 -- random worlds need not have the robot ('genWorld' picks each robot's
 -- type at random) or have others beside it, give worlds without it a
--- predicate that holds (@\\w -> if hasIt w then onRobot ty i p else
--- Always (SP (arr (const True)))@): 'shrinkWorld' may remove it while
+-- predicate that holds (@\\w -> if 'hasRobot' ty i w then onRobot ty i p
+-- else Always (SP (arr (const True)))@): 'shrinkWorld' may remove it while
 -- keeping another robot, and the error would then be the
 -- counterexample. A world's only robot stays while it shrinks.
 onRobot :: RobotType -> RobotId -> TPred RobotState -> TPred WorldState
@@ -466,6 +469,22 @@ onRobot ty i p =
   -- finds a missing robot whatever p reads; it is true wherever it is
   -- made, so the And is p, sample by sample)
   tPredOn (robotOf ty i) (And (SP (arr (`seq` True))) p)
+
+-- | @hasRobot ty i world@: whether @world@ has the robot of type @ty@
+-- (@\"SimbotA\"@ or @\"SimbotB\"@) and id @i@, the robot that
+-- @'onRobot' ty i p@ and 'robotView' find in the world's runs (a run has
+-- the robots of its world, from time 0 on). The guard of a predicate of
+-- one robot for random worlds that need not have it:
+--
+-- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB (genWorld defaultWorldMix notesBounds) $ \w ->
+-- >   if hasRobot "SimbotA" 1 w then onRobot "SimbotA" 1 (Always (SP (arr (not . robotStuck))))
+-- >   else Always (SP (arr (const True)))
+--
+-- > hasRobot "SimbotB" 1 [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 0) 0]  ==  True
+-- > hasRobot "SimbotB" 2 [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 0) 0]  ==  False
+-- > hasRobot "SimbotA" 2 [OTSimbotB 2 (Point2 0 0) 0]                               ==  False
+hasRobot :: RobotType -> RobotId -> WorldTemplate -> Bool
+hasRobot ty i = any (\o -> fmap kindType (robotKindOf o) == Just ty && otRId o == i)
 
 -- The robot's state at each sample, its sample number at hand for the
 -- error of a robot not there.
@@ -516,8 +535,12 @@ forAllRuns file config duration rcA rcB gen p =
                            states <- readIORef cell
                            writeIORef cell []
                            (upTo, decided) <- pageEnd explanation
-                           -- (the run up to upTo is the start of this one)
-                           recordRunPage decided page config w (take (stepsWithin config upTo + 1) (map snd states))
+                           -- (the run up to upTo is the start of this one;
+                           -- its first sample at least, so that a run
+                           -- runStream refuses, of a negative duration,
+                           -- is its error here, not a page of no frame)
+                           recordRunPage decided page config w
+                                         (take (max 1 (stepsWithin config upTo + 1)) (map snd states))
                          pure ("(" ++ wroteWorld ++ "; " ++ wrotePage ++ ")"))
                      (decideRun (p w) (\() -> runStream config duration w rcA rcB) explanation)
   where
@@ -544,17 +567,22 @@ forAllRuns file config duration rcA rcB gen p =
 -- 'OTSize' is run in the config's 'simBounds', so when those are not the
 -- notes' 10 by 10 the text gets the @size@ line that says them, and the
 -- file runs again as it ran (@simbot --world@). A world file's size is
--- centred on the origin; bounds that are not get a comment that says
--- them instead.
+-- centred on the origin, each side from 'minWorldSide' to 'maxWorldSide'
+-- (1 to 1000 m); bounds that are not get a comment that says them
+-- instead.
 worldFileText :: SimConfig -> WorldTemplate -> String
 worldFileText config world
   | isJust (worldSize world) || bounds == notesBounds = renderWorld world
-  | bounds == sizeBounds w h = renderWorld (OTSize w h : world)
+  | bounds == sizeBounds w h && all sizeSide [w, h] = renderWorld (OTSize w h : world)
   | otherwise = "# the run's world was [" ++ show x0 ++ ", " ++ show x1 ++ "] x [" ++ show y0 ++ ", " ++ show y1
-                ++ "] (simBounds), which a size line (centred) cannot say\n" ++ renderWorld world
+                ++ "] (simBounds), which a size line (centred, each side " ++ metres minWorldSide ++ " to "
+                ++ metres maxWorldSide ++ " m) cannot say\n" ++ renderWorld world
   where
     bounds@(Bounds x0 y0 x1 y1) = simBounds config
     (w, h) = (x1 - x0, y1 - y0)
+    sizeSide v = v >= minWorldSide && v <= maxWorldSide
+    -- (a whole number of metres without its ".0")
+    metres v = let r = round v :: Integer in if fromIntegral r == v then show r else show v
 
 -- | @runReplayPage config duration world rcA rcB@: the self-contained
 -- HTML replay page ("AFrobRobotSim.Replay") of the run of 'runStream',

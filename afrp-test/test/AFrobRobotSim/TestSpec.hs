@@ -2,7 +2,7 @@
 -- | Properties of whole simbot runs, written with "AFrobRobotSim.Test".
 module AFrobRobotSim.TestSpec (spec) where
 
-import           Control.Exception     (ErrorCall, evaluate, try)
+import           Control.Exception     (ErrorCall (..), evaluate, try)
 import           Control.Monad         (forM_)
 import           Data.IORef            (IORef, modifyIORef', newIORef, readIORef)
 import           Data.List             (isInfixOf, isPrefixOf, tails)
@@ -148,7 +148,6 @@ specWithoutFiles = do
   it "robotView follows one robot through a run (fixed)" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 2) 0]
         run   = runStream defaultSimConfig { simDt = 0.1 } 2 world wander rcBrake
-        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
         viewB = robotView "SimbotB" 1 run
     length run `shouldBe` 21
     map fst viewB `shouldBe` map fst run
@@ -172,7 +171,6 @@ specWithoutFiles = do
   it "onRobot is the predicate of the robot's view: it holds and is decided false as there (fixed)" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0, OTSimbotB 1 (Point2 2 2) 0]
         run   = runStream defaultSimConfig { simDt = 0.1 } 2 world wander rcBrake
-        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
         xOf r = let Point2 x _ = robotPos r in x
         -- (one of them with state: the robot's x never falls back)
         preds = [ Always (SP (arr ((== Point2 2 2) . robotPos)))
@@ -208,6 +206,25 @@ specWithoutFiles = do
     isSuccess result `shouldBe` False
     output result `shouldSatisfy` ("no SimbotB 2 in the run (its robots: SimbotA 1, SimbotB 1)" `isInfixOf`)
 
+  it "hasRobot says whether a world has the robot of a type and id, the one onRobot finds in its runs" $ do
+    let robotA = OTSimbotA 1 (Point2 0 0) 0
+        robotB = OTSimbotB 2 (Point2 2 2) 0
+        others = [OTSize 12 12, OTBlock (Point2 (-3) (-3)), OTBall (Point2 3 3)]
+        world = robotA : robotB : others
+    map (\(ty, i) -> hasRobot ty i world) [("SimbotA", 1), ("SimbotB", 2)] `shouldBe` [True, True]
+    -- (without it; a robot of the other type with its id; a type misspelt)
+    map (\(ty, i) -> hasRobot ty i world) [("SimbotA", 2), ("SimbotB", 1), ("simbotA", 1), ("SimbotC", 1)]
+      `shouldBe` [False, False, False, False]
+    hasRobot "SimbotA" 1 (robotB : others) `shouldBe` False
+    hasRobot "SimbotB" 2 [robotA] `shouldBe` False
+    hasRobot "SimbotA" 1 [] `shouldBe` False
+    -- (the robots it finds are those onRobot finds in the world's run)
+    let run = runStream defaultSimConfig { simDt = 0.1 } 0.5 world wander wander
+        found ty i = try (evaluate (evalT (onRobot ty i (Always (SP (arr (const True))))) run))
+                       :: IO (Either ErrorCall Bool)
+    forM_ [ (ty, i) | ty <- ["SimbotA", "SimbotB"], i <- [1, 2] ] $ \(ty, i) ->
+      (either (const False) id <$> found ty i) `shouldReturn` hasRobot ty i world
+
   it "runReplayPage counts the samples as the log does, the one at time 0 included" $ do
     let page = runReplayPage defaultSimConfig { simDt = 0.1 } 1 [OTSimbotA 1 (Point2 0 0) 0] wander wander
     pageSummary page `shouldSatisfy` ("\"steps\":11," `isInfixOf`)
@@ -217,7 +234,6 @@ specWithoutFiles = do
         neverTrue = SP (arr (const False))
         check d bound = quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
           runT defaultSimConfig { simDt = 0.05 } d rcBrake rcBrake (eventuallyWithin bound neverTrue) world
-        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
     atDeadline <- check 20 20
     case atDeadline of
       Failure {} -> output atDeadline `shouldSatisfy` ("decided false at t = 20.00" `isInfixOf`)
@@ -288,6 +304,20 @@ specWithoutFiles = do
     let offset = defaultSimConfig { simBounds = Bounds 0 0 20 20 }
     worldFileText offset w `shouldSatisfy` ("# the run's world was [0.0, 20.0] x [0.0, 20.0]" `isPrefixOf`)
     parseWorld "w" (worldFileText offset w) `shouldBe` Right w
+
+  it "worldFileText says centred bounds with a side a world file refuses (below 1 m, above 1000 m) in a comment (it wrote a size line no world file reads)" $ do
+    let w = [OTSimbotA 1 (Point2 0 0) 0]
+    forM_ [(2000, 2000), (0.8, 0.8), (1500, 10), (10, 0.9)] $ \(width, height) -> do
+      let config = defaultSimConfig { simBounds = sizeBounds width height }
+          text = worldFileText config w
+      -- (a run in them is made)
+      length (runStream config 0.1 w wander wander) `shouldBe` 11
+      text `shouldSatisfy` (("# the run's world was [" ++ show (negate width / 2) ++ ", " ++ show (width / 2) ++ "]") `isPrefixOf`)
+      text `shouldSatisfy` ("(centred, each side 1 to 1000 m) cannot say\n" `isInfixOf`)
+      parseWorld "w" text `shouldBe` Right w
+    -- (the sides a size line says, 1 and 1000 m, still get one)
+    forM_ [(1, 1000), (1000, 1)] $ \(width, height) ->
+      parseWorld "w" (worldFileText defaultSimConfig { simBounds = sizeBounds width height } w) `shouldBe` Right (OTSize width height : w)
 
   it "showWorldState writes the time with the decimals its step needs (at least 2)" $ do
     let world = [OTSimbotA 1 (Point2 0 0) 0]
@@ -392,21 +422,29 @@ specWithFiles = do
       Just result            -> expectationFailure ("the run was not found to fail: " ++ output result)
       Nothing                -> expectationFailure "runT did not end within 60 s"
 
-  it "forAllRuns of a failure early in a very long run writes a page of 5 s past it (it made the whole run's page)" $ \tmp -> do
+  it "forAllRuns of a failure in a very long run writes a page up to 5 s past the instant that decided (it made the whole run's page)" $ \tmp -> do
+    -- (the run is 10^6 s, 10^8 steps of 0.01 s: its whole page, or a
+    -- decision or explanation that reads the run to its end, would not
+    -- end within the timeout. The world is one robot, which shrinking
+    -- keeps, so no world smaller that passes, and so is run whole, is
+    -- tried. The robot stands still for 3 s, then drives off: decided at
+    -- 3.01 s, the page's 5 s reach to 8.01 s, which a page ending 5 s
+    -- after the run's start, or at the instant, or where explaining
+    -- stopped reading, does not)
     let file = tmp </> "afrp-test-early.world"
         world = [OTSimbotA 1 (Point2 0 0) 0]
+        drivesAt3 _ = localTime >>> arr (\t -> mrFinalize (ddVelTR (if t < 3 then 0 else 1) 0))
     r <- timeout (60 * 1000000) $ quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
-      -- (shrinking keeps the world's one robot: the empty world, which
-      -- passes, would be run the whole 10^6 s)
-      forAllRuns file defaultSimConfig 1e6 wander wander (pure world)
+      forAllRuns file defaultSimConfig 1e6 drivesAt3 drivesAt3 (pure world)
         (\_ -> Always (SP (arr (all ((== Point2 0 0) . robotPos) . wsRobots))))
     case r of
-      Just Failure {} -> do
+      Just result@Failure {} -> do
         page <- readFile (file ++ ".html")
         length page `seq` mapM_ removeFile [file, file ++ ".html"]
-        -- (decided at 0.01 s: frames at 25 a second up to 5.01 s, the
-        -- one at time 0 included)
-        occurrences "\"frame\"" page `shouldBe` 126
+        decidedLines result `shouldBe` ["decided false at t = 3.01 (step 301):"]
+        pageSummary page `shouldSatisfy` ("\"falsified\":{\"t\":3.01" `isInfixOf`)
+        -- (frames at 25 a second from time 0 to 8.00 s)
+        occurrences "\"frame\"" page `shouldBe` 201
       Just result -> expectationFailure ("the run was not found to fail: " ++ output result)
       Nothing     -> expectationFailure "forAllRuns did not end within 60 s"
 
@@ -434,6 +472,53 @@ specWithFiles = do
     passedRuns <- check (verbose (forAllRuns quiet defaultSimConfig 1 wander wander (pure world) (const stays)))
     map isSuccess [passed, passedRuns] `shouldBe` [True, True]
     mapM doesFileExist [quiet, quiet ++ ".html"] `shouldReturn` [False, False]
+
+  it "forAllRuns that cannot make the page for a reason other than the write's says it could not be made, and why" $ \tmp -> do
+    -- (a world the simulator refuses, its robot on a block: the run's
+    -- error is no I/O failure. The property fails with it; shrinking
+    -- finds the robot alone, which passes, so this world is reported,
+    -- and its file is written, the page not)
+    let file = tmp </> "afrp-test-unmade.world"
+        world = [OTSimbotA 1 (Point2 0 0) 0, OTBlock (Point2 0 0)]
+    refused <- try (evaluate (null (simulateWith defaultSimConfig world wander wander))) :: IO (Either ErrorCall Bool)
+    result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+      forAllRuns file defaultSimConfig 1 wander wander (pure world) (const (Always (SP (arr (const True)))))
+    -- (parsed, not read with readWorldFile, which refuses it too)
+    written <- readFile file
+    length written `seq` removeFile file
+    parseWorld file written `shouldBe` Right world
+    doesFileExist (file ++ ".html") `shouldReturn` False
+    case (refused, result) of
+      (Left (ErrorCallWithLocation message _), Failure {}) -> do
+        message `shouldSatisfy` ("AFrobRobotSim.simulate: invalid world:" `isPrefixOf`)
+        -- (the error's message, without the call stack that QuickCheck
+        -- prints with the exception)
+        output result `shouldSatisfy` (("(the world is written to " ++ file ++ "; its run's replay page could not be made for "
+                                        ++ file ++ ".html: " ++ message ++ ")") `isInfixOf`)
+        output result `shouldNotSatisfy` ("could not be written" `isInfixOf`)
+        output result `shouldNotSatisfy` ("Exception running callback" `isInfixOf`)
+      (Right _, _) -> expectationFailure "the simulator ran a robot on a block"
+      (_, _)       -> expectationFailure ("the world the simulator refuses passed: " ++ output result)
+
+  it "forAllRuns of a duration or time step runStream refuses writes no page (it wrote a page of no frame, and said it was written)" $ \tmp -> do
+    let file = tmp </> "afrp-test-refused.world"
+        world = [OTSimbotA 1 (Point2 0 0) 0]
+        refusedBy config duration = do
+          result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+            forAllRuns file config duration wander wander (pure world) (const (Always (SP (arr (const True)))))
+          pageMade <- doesFileExist (file ++ ".html")
+          mapM_ removeFile ([file] ++ [ file ++ ".html" | pageMade ])
+          pure (result, pageMade)
+    forM_ [ (defaultSimConfig, -1, "the duration must be a finite number >= 0, got -1.0")
+          , (defaultSimConfig, 0 / 0, "the duration must be a finite number >= 0, got NaN")
+          , (defaultSimConfig, 1e20, "a duration of 1.0e20 s is more than 2^53 time steps")
+          , (defaultSimConfig { simDt = 0 }, 1, "the time step (simDt) must be a finite number > 0, got 0.0") ] $
+      \(config, duration, why) -> do
+        (result, pageMade) <- refusedBy config duration
+        (case result of { Failure {} -> True; _ -> False }) `shouldBe` True
+        pageMade `shouldBe` False
+        output result `shouldSatisfy` (("its run's replay page could not be made for " ++ file ++ ".html: AFrobRobotSim.Test.runStream: "
+                                        ++ why) `isInfixOf`)
 
   it "writeRunReplayPage, which records the run as it goes, writes the page runReplayPage gives" $ \tmp -> do
     let file = tmp </> "afrp-test-page.html"
@@ -591,7 +676,7 @@ specWithFiles = do
         gaveUp _ = localTime >>> arr (\t -> if t >= 1.2 then error "gave up" else mrFinalize (ddVelTR 0.2 0))
     result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
       forAllRuns file defaultSimConfig 10 gaveUp gaveUp (pure [OTSimbotA 1 (Point2 0 0) 0])
-        (\_ -> Always (SP (arr (\ws -> null (wsRobots ws) || wsTime ws < 1))))
+        (\_ -> Always (SP (arr ((< 1) . wsTime))))
     case result of
       Failure {} -> do
         page <- readFile (file ++ ".html")
@@ -602,8 +687,8 @@ specWithFiles = do
       _ -> expectationFailure ("the run was not found to fail: " ++ output result)
 
   it "forAllRuns runs the world it reports twice, once to decide and once to explain it and write its page (it ran it four times)" $ \tmp -> do
-    -- (one robot, so that a start of its controller is a run; the empty
-    -- world that shrinking tries has none, and passes)
+    -- (one robot, so that a start of its controller is a run; shrinking
+    -- keeps a world's only robot, so it tries no other world)
     let file = tmp </> "afrp-test-runs.world"
         world = pure [OTSimbotA 1 (Point2 0 0) 0]
         runsOf rc p = do
@@ -652,10 +737,8 @@ specWithFiles = do
     -- shrinking tries, get a predicate that holds)
     let file = tmp </> "afrp-test-robot-of-two.world"
         world = [OTSimbotB 1 (Point2 (-2) 2) 0, OTSimbotA 1 (Point2 3 0) 0, OTBlock (Point2 (-3) (-3))]
-        rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
         notStuck = Always (SP (arr (not . robotStuck)))
-        hasA1 w = not (null [ () | OTSimbotA 1 _ _ <- w ])
-        ofRobot ty w = if ty /= "SimbotA" || hasA1 w then onRobot ty 1 notStuck else Always (SP (arr (const True)))
+        ofRobot ty w = if hasRobot ty 1 w then onRobot ty 1 notStuck else Always (SP (arr (const True)))
         check ty = quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
           forAllRuns file defaultSimConfig { simDt = 0.05 } 10 straight rcBrake (pure world) (ofRobot ty)
     passes <- check "SimbotB"
@@ -694,9 +777,12 @@ isRobot _            = False
 
 -- A robot that drives straight at full speed: in a world without walls it
 -- ends up against the world's edge, stuck.
-
 straight :: SimbotController
 straight _ = constant (mrFinalize (ddVelTR 1 0))
+
+-- A robot that stands still.
+rcBrake :: SimbotController
+rcBrake _ = constant (mrFinalize (ddVelTR 0 0))
 
 -- Nobody is ever stuck.
 neverStuck :: TPred WorldState
