@@ -57,9 +57,10 @@ module AFrobRobotSim.Test
 
 import           Control.Exception    (ErrorCall (..), IOException, SomeAsyncException, SomeException, bracketOnError,
                                        displayException, evaluate, fromException, try, throwIO, tryJust)
-import           Data.IORef           (newIORef, readIORef, writeIORef)
+import           Data.IORef           (IORef, newIORef, readIORef, writeIORef)
 import           Data.List            (intercalate, stripPrefix, tails)
 import           Data.Maybe           (fromMaybe, isJust)
+import           System.IO.Unsafe     (unsafeInterleaveIO)
 import           Test.QuickCheck
 import           Test.QuickCheck.Property (Callback (PostFinalFailure), CallbackKind (NotCounterexample), callback)
 import           Test.QuickCheck.State (terminal)
@@ -501,9 +502,11 @@ robotOf ty i = (sscan (\k _ -> k + 1) (-1) &&& arr id) >>> arr (\(k, ws) -> find
 -- and goes on with what 'runT' prints.
 -- The page shows the run up to 5 simulated seconds past the instant that
 -- decided @p@ false (what 'runT' prints), or up to a controller's
--- failure, if one failed; the whole run when neither ends it sooner. (A
--- failure early in a long run makes a short page: the page of the whole
--- run could take longer than the test.) It opens at that instant, marked
+-- failure, if one failed; the whole run when neither ends it sooner. A
+-- predicate that throws (an 'onRobot' of a robot not there, say) decides
+-- nothing: its page ends 5 s past the last sample it read. (A failure
+-- early in a long run makes a short page: the page of the whole run could
+-- take longer than the test.) It opens at that instant, marked
 -- on its time slider, and says it (@FAILED: decided false at t = 6.76
 -- (step 338)@ in its heading and its summary): 'writeFalsifiedRunReplayPage'.
 -- A page of a controller's failure ('writeRunReplayPage') says the failure.
@@ -526,15 +529,19 @@ forAllRuns file config duration rcA rcB gen p =
     -- asks for it; the page takes it out of the cell, so that QuickCheck,
     -- which holds on to this property's callbacks while it runs them,
     -- does not keep the start of the run while the page is recorded)
-    let rerun       = runStream config duration w rcA rcB
-        explanation = explainT (p w) rerun
+    -- (the samples of the second run that explaining has read, counted
+    -- as it reads them: a predicate that throws ends the page 5 s past
+    -- the last it read)
+    samplesRead <- newIORef (0 :: Int)
+    rerun <- countingSamples samplesRead (runStream config duration w rcA rcB)
+    let explanation = explainT (p w) rerun
     cell <- newIORef rerun
     pure $
       reportingAfter (do wroteWorld <- wroteOrNot "the world" file (writeFile file (worldFileText config w))
                          wrotePage <- wroteOrNot "its run's replay page" page $ do
                            states <- readIORef cell
                            writeIORef cell []
-                           (upTo, decided) <- pageEnd explanation
+                           (upTo, decided) <- pageEnd explanation samplesRead
                            -- (the run up to upTo is the start of this one;
                            -- its first sample at least, so that a run
                            -- runStream refuses, of a negative duration,
@@ -547,10 +554,12 @@ forAllRuns file config duration rcA rcB gen p =
     page = file ++ ".html"
     -- (the instant that decided and the line runT prints of it, from the
     -- explanation it prints, evaluated here whole; a controller's
-    -- failure or a predicate that throws leaves the whole duration and no
-    -- instant, the page then ending at the failure; an asynchronous
-    -- exception, such as a timeout's, is not caught)
-    pageEnd explanation = do
+    -- failure or a predicate that throws leaves no instant, and the page
+    -- ends 5 s past the last sample explaining read: after a controller's
+    -- failure, the page then ends at the failure; a predicate that throws
+    -- at the start of a run of 10^6 s made a page of the whole run; an
+    -- asynchronous exception, such as a timeout's, is not caught)
+    pageEnd explanation samplesRead = do
       decided <- tryJust synchronous (evaluate (case explanation of
                                                   Nothing -> Nothing
                                                   Just e  -> let d@(t, line) = (explTime e, decidedLine e)
@@ -558,9 +567,20 @@ forAllRuns file config duration rcA rcB gen p =
                                                              -- so that they do not hold the run's start
                                                              -- while the page is recorded)
                                                              in t `seq` length line `seq` length (explAround e) `seq` Just d))
+      lastRead <- max 0 . subtract 1 <$> readIORef samplesRead
       pure $ case decided of
         Right (Just d@(t, _)) -> (min duration (t + 5), Just d)
-        _                     -> (duration, Nothing)
+        _                     -> (min duration (fromIntegral lastRead * simDt config + 5), Nothing)
+
+-- The stream as it is, counting into the cell the samples read from it
+-- (a sample counts when the list's cell that holds it is first taken
+-- apart), so that what a consumer that throws had read is known.
+countingSamples :: IORef Int -> SignalSampleStream a -> IO (SignalSampleStream a)
+countingSamples counter = go 1
+  where
+    go !k xs = unsafeInterleaveIO $ case xs of
+      []       -> pure []
+      x : more -> writeIORef counter k >> (x :) <$> go (k + 1) more
 
 -- | @worldFileText config world@: @world@ in the world-file format
 -- ('renderWorld'), as the run of @config@ saw it: a world without an
