@@ -1103,6 +1103,32 @@ spec = do
         -- what stays accepted: one parameter's values, two parameters
         listed ["--seeds", "1", "--param", "a=1,2", "--param", "b=x"]
           `shouldReturn` (ExitSuccess, ["--seed 1 --param a=1 --param b=x", "--seed 1 --param a=2 --param b=x"])
+    it "a program whose answer to a question before the runs is long: its message of 200,000 lines cut to 20, exit code 2 (it was 141, SIGPIPE, at random); a name printed on and on cut at 64 KiB as it is written (it filled the disk for 30 s)" $ withTempDir $ \dir -> do
+      sweep <- script "sweep"
+      let noisy = dir </> "noisy.sh"
+      writeScript noisy (unlines [ "#!/bin/bash"
+                                 , "case \" $* \" in"
+                                 , "  *' --dump-world '*) seq 1 200000 >&2; exit 2 ;;"
+                                 , "  *' --print-program '*) exec yes ;;"
+                                 , "esac"
+                                 , "exit 3" ])
+      forM_ [1 :: Int .. 3] $ \_ -> do
+        (code, _, err) <- runScriptCode [] sweep ["--seeds", "1", noisy, dir </> "r.jsonl", "--", "--seconds", "1"]
+        (code, take 3 (drop 1 (dropWhile (not . ("the program stops before it runs" `isInfixOf`)) (lines err))))
+          `shouldBe` (ExitFailure 2, ["1", "2", "3"])
+        length (lines err) `shouldBe` 21
+      (code, _, err) <- runScriptCode [] sweep ["--seeds", "1", noisy, dir </> "r.jsonl"]
+      code `shouldBe` ExitFailure 1
+      err `shouldSatisfy` ("note: the program did not print its name for --print-program (exit code 141)" `isInfixOf`)
+    it "reads a Char literal as one character in the C locale too: an e acute's literal and ',' are two values (the C locale saw four bytes and no literal, and split it in three)" $ withTempDir $ \dir -> do
+      sweep <- script "sweep"
+      let lister = dir </> "list.sh"
+      -- (the bytes of é in UTF-8 written by the shell, whatever this
+      -- program's locale)
+      writeScript lister (unlines [ "#!/bin/bash", "exec bash '" ++ sweep ++ "' --list --param \"c='\"$'\\xc3\\xa9'\"',','\"" ])
+      (code, out, err) <- runScriptCode [("LC_ALL", "C"), ("LANG", "C")] lister []
+      (code, length (lines out), err) `shouldBe` (ExitSuccess, 2, "")
+      lines out !! 1 `shouldBe` "--seed 0 --param 'c='\\'','\\'''"
     it "refuses, before any run, flags after -- that the program stops at (--seconds abc: every run failed)" $ withTempDir $ \dir -> do
       requireParallel
       prog <- childScript dir "program"
