@@ -624,6 +624,24 @@ spec = do
         frames <- mapM (BS.readFile . ((dir </> "f") </>)) finals
         (length frames > 0, all ((== 15 + 3 * 120 * 120) . BS.length) frames, length temps <= 1, length (lines err))
           `shouldBe` (True, True, True, 1)
+  describe "a second Ctrl-C" $
+    forM_ [1, 2 :: Int] $ \caps ->
+      it ("ends the program at once, by SIGINT, as the runtime's does, but saying so (+RTS -N" ++ show caps ++ ")") $
+        withTempDir $ \dir -> do
+          spin <- childOn "spin" dir caps
+          (_, _, Just herr, ph) <- createProcess spin { create_group = True, std_out = NoStream, std_err = CreatePipe }
+          awaitChild "did not begin its loop" (doesFileExist (dir </> "spinning")) ph
+          threadDelay 200000
+          interruptProcessGroupOf ph
+          threadDelay 1000000
+          interruptProcessGroupOf ph
+          err <- hGetContents herr
+          -- (well before the grace; the program ended silently)
+          done <- timeout ((stuckGrace - 5) * 1000000) (length err `seq` waitForProcess ph)
+          _ <- maybe (killChild ph) pure done
+          done `shouldSatisfy` (`elem` [Just (ExitFailure (-2)), Just (ExitFailure 130)])
+          err `shouldSatisfy` ("Ctrl-C (SIGINT) received a second time: ending now, without waiting for the run to stop" `isInfixOf`)
+          err `shouldNotSatisfy` ("has not been able to act" `isInfixOf`)
   describe "a run's thread that holds the stop off (masked) once the signal has been taken" $
     forM_ [1, 2 :: Int] $ \caps -> do
       forM_ [ ("held", "", term), ("heldtwice", ", a second SIGTERM come meanwhile", term)
