@@ -36,8 +36,12 @@
  *
  * The runtime's SIGINT handler is called once (SA_RESETHAND: the system
  * puts the default action back as it calls it, so that a second Ctrl-C
- * ends the program at once); ours in front of it has the same flags, and
- * is gone just the same after the first Ctrl-C, the runtime's rule kept.
+ * ends the program at once). Ours in front of it keeps that rule itself:
+ * it calls the runtime's handler for the first SIGINT only, and at a
+ * second writes a message saying that the program ends at once, then
+ * ends it by the default action, as it would have ended; once the run is
+ * over, the default action is left where the runtime's rule would have
+ * left it.
  *
  * One run watched at a time for each signal: `afrp_grace_arm` refuses
  * while one is, and a second run's handler (installed while the first is
@@ -75,13 +79,17 @@ int afrp_signal_ignored(int sig)
    written with the compiler's atomic builtins (the handler runs on any
    thread). A watchdog's thread is made at its first arm and lives as long
    as the program, asleep reading its pipe when there is nothing to watch
-   (each byte written is one wake-up). `keep_reset`: the runtime's handler
-   resets itself when it is called (SA_RESETHAND, the runtime's SIGINT:
-   a second Ctrl-C then ends the program at once), and ours in front of it
-   does the same; otherwise ours stays in place after a signal. */
+   (each byte written is one wake-up). `once`: the runtime's handler is
+   called once (SA_RESETHAND: the system puts the default action back as
+   it calls it; the runtime's SIGINT, so that a second Ctrl-C ends the
+   program at once), and ours in front of it calls it once too, `fired`
+   saying it has: ours stays, and a second signal, rather than meeting
+   the default action silently, writes `again` (its message) to standard
+   error and then ends the program by the default action. */
 struct watch {
     int sig;
-    int keep_reset;
+    int once;
+    int fired;
     int armed;
     int pending;
     int generation;
@@ -93,10 +101,12 @@ struct watch {
     struct sigaction runtime_action;   /* the handler called after ours */
     char message[2048];
     size_t length;
+    char again[2048];
+    size_t again_length;
 };
 
-static struct watch term_watch = { SIGTERM, 0, 0, 0, 0, 0, 0, 0, -1, -1, 0 };
-static struct watch int_watch  = { SIGINT,  1, 0, 0, 0, 0, 0, 0, -1, -1, 0 };
+static struct watch term_watch = { SIGTERM, 0, 0, 0, 0, 0, 0, 0, 0, -1, -1, 0 };
+static struct watch int_watch  = { SIGINT,  0, 0, 0, 0, 0, 0, 0, 0, -1, -1, 0 };
 static pthread_once_t term_started = PTHREAD_ONCE_INIT;
 static pthread_once_t int_started = PTHREAD_ONCE_INIT;
 
@@ -132,12 +142,46 @@ static int wait_for_wake(struct watch *w)
     return n == 1 ? 0 : -1;
 }
 
+/* A message written whole to standard error, as far as it can be. */
+static void say(const char *text, size_t length)
+{
+    size_t done = 0;
+    while (done < length) {
+        ssize_t n = write(2, text + done, length - done);
+        if (n <= 0) break;
+        done += (size_t) n;
+    }
+}
+
+/* The program ended by `sig`'s default action: the signal sent again,
+   taken by a thread that does not block it (this one, once its handler
+   returns, if it is in one); should none take it within a second, the
+   program ends as a shell would report it. */
+static void end_by_default(int sig)
+{
+    struct sigaction dfl;
+    memset(&dfl, 0, sizeof dfl);
+    dfl.sa_handler = SIG_DFL;
+    sigemptyset(&dfl.sa_mask);
+    sigaction(sig, &dfl, NULL);
+    kill(getpid(), sig);
+    sleep(1);
+    _exit(128 + sig);
+}
+
 static void on_signal(int sig, siginfo_t *info, void *context)
 {
     int saved = errno;
     struct watch *w = watch_of(sig);
     if (w == NULL)
         return;   /* (unreachable: installed for watched signals only) */
+    if (w->once && __atomic_exchange_n(&w->fired, 1, __ATOMIC_SEQ_CST) != 0) {
+        /* (the second: what the default action would have done, said) */
+        say(w->again, w->again_length);
+        end_by_default(sig);
+        errno = saved;
+        return;
+    }
     if (LOAD(w->armed) && __atomic_exchange_n(&w->pending, 1, __ATOMIC_SEQ_CST) == 0)
         wake(w);
     errno = saved;
@@ -155,22 +199,8 @@ static double now_seconds(void)
    all, as it would have ended without a handler. */
 static void end_by_signal(struct watch *w)
 {
-    size_t done = 0;
-    struct sigaction dfl;
-    while (done < w->length) {
-        ssize_t n = write(2, w->message + done, w->length - done);
-        if (n <= 0) break;
-        done += (size_t) n;
-    }
-    memset(&dfl, 0, sizeof dfl);
-    dfl.sa_handler = SIG_DFL;
-    sigemptyset(&dfl.sa_mask);
-    sigaction(w->sig, &dfl, NULL);
-    kill(getpid(), w->sig);
-    /* (a thread that does not block the signal takes it; should none, in a
-       second the program ends as a shell would report it) */
-    sleep(1);
-    _exit(128 + w->sig);
+    say(w->message, w->length);
+    end_by_default(w->sig);
 }
 
 static void *watchdog(void *arg)
@@ -252,8 +282,9 @@ static void start_term_watchdog(void) { start_watchdog(&term_watch); }
 static void start_int_watchdog(void)  { start_watchdog(&int_watch); }
 
 /* Ours installed in front of the runtime's handler `current` (which it
-   calls after waking the watchdog), with its mask and flags (less
-   SA_RESETHAND unless the watch keeps it): 0 when installed. */
+   calls after waking the watchdog), with its mask and flags less
+   SA_RESETHAND (for a SIGINT handler that has it, ours calls it once
+   itself: `once`): 0 when installed. */
 static int wrap(struct watch *w, const struct sigaction *current)
 {
     struct sigaction mine;
@@ -261,7 +292,9 @@ static int wrap(struct watch *w, const struct sigaction *current)
     memset(&mine, 0, sizeof mine);
     mine.sa_sigaction = on_signal;
     mine.sa_mask = current->sa_mask;
-    mine.sa_flags = w->keep_reset ? current->sa_flags : (current->sa_flags & ~SA_RESETHAND);
+    mine.sa_flags = current->sa_flags & ~SA_RESETHAND;
+    STORE(w->fired, 0);
+    STORE(w->once, w->sig == SIGINT && (current->sa_flags & SA_RESETHAND) != 0);
     return sigaction(w->sig, &mine, NULL);
 }
 
@@ -273,17 +306,29 @@ static int wrappable(const struct sigaction *current)
            && current->sa_sigaction != on_signal;
 }
 
+/* A message kept in `into` (of `size` bytes, cut short to fit), its
+   length in `length`. */
+static void keep(char *into, size_t size, size_t *length, const char *message)
+{
+    size_t n = strlen(message);
+    if (n >= size)
+        n = size - 1;
+    memcpy(into, message, n);
+    into[n] = '\0';
+    *length = n;
+}
+
 /* Put the watchdog of `sig` (SIGTERM or SIGINT) in front of its handler
    installed now (the runtime's, which must be a function taking the
-   signal's information), with the grace in seconds (> 0) and the message
-   to write should it end the program. 0 when armed; -1 when nothing was
-   changed (another signal, armed already, no such handler, or no thread
-   for the watchdog). */
-int afrp_grace_arm(int sig, int seconds, const char *message)
+   signal's information), with the grace in seconds (> 0), the message to
+   write should it end the program, and the one to write should a second
+   signal come to a handler called once (`once`). 0 when armed; -1 when
+   nothing was changed (another signal, armed already, no such handler,
+   or no thread for the watchdog). */
+int afrp_grace_arm(int sig, int seconds, const char *message, const char *again)
 {
     struct sigaction current;
     struct watch *w = watch_of(sig);
-    size_t n = strlen(message);
     if (w == NULL || seconds <= 0 || LOAD(w->armed) || sigaction(sig, NULL, &current) != 0
         || !wrappable(&current))
         return -1;
@@ -291,11 +336,8 @@ int afrp_grace_arm(int sig, int seconds, const char *message)
                  sig == SIGTERM ? start_term_watchdog : start_int_watchdog);
     if (w->start_failed)
         return -1;
-    if (n >= sizeof w->message)
-        n = sizeof w->message - 1;
-    memcpy(w->message, message, n);
-    w->message[n] = '\0';
-    w->length = n;
+    keep(w->message, sizeof w->message, &w->length, message);
+    keep(w->again, sizeof w->again, &w->again_length, again);
     w->grace_seconds = seconds;
     STORE(w->pending, 0);
     __atomic_add_fetch(&w->generation, 1, __ATOMIC_SEQ_CST);
@@ -361,11 +403,11 @@ void afrp_grace_rewrap(int sig)
     wrap(w, &current);
 }
 
-/* The signal's handler put back as it was when the watchdog was armed
-   (unless something else has replaced ours since, or ours has reset
-   itself: a SIGINT has come, and the signal's action is the default, as
-   the runtime's own handler would have left it), then the watchdog
-   disarmed; the caller then restores its own handler. */
+/* The signal's handler put back as it was when the watchdog was armed,
+   or, when it was to be called once and has been, the default action, as
+   it would have left it (unless something else has replaced ours since);
+   then the watchdog disarmed; the caller then restores its own
+   handler. */
 void afrp_grace_remove(int sig)
 {
     struct sigaction current;
@@ -373,8 +415,16 @@ void afrp_grace_remove(int sig)
     if (w == NULL || !LOAD(w->armed))
         return;
     if (sigaction(sig, NULL, &current) == 0 && (current.sa_flags & SA_SIGINFO)
-        && current.sa_sigaction == on_signal)
-        sigaction(sig, &w->runtime_action, NULL);
+        && current.sa_sigaction == on_signal) {
+        if (LOAD(w->once) && LOAD(w->fired)) {
+            struct sigaction dfl;
+            memset(&dfl, 0, sizeof dfl);
+            dfl.sa_handler = SIG_DFL;
+            sigemptyset(&dfl.sa_mask);
+            sigaction(sig, &dfl, NULL);
+        } else
+            sigaction(sig, &w->runtime_action, NULL);
+    }
     STORE(w->armed, 0);
     STORE(w->pending, 0);
     wake(w);

@@ -49,18 +49,21 @@
 -- starts, throws 'UserInterrupt' to the main thread, and is called once
 -- (the system puts the signal's default action back as it calls it), so
 -- that a second Ctrl-C ends the program at once, writing nothing. That is
--- kept as it is: the watchdog's handler stands in front of the runtime's
--- with the same flags (resetting itself just the same), and the
--- runtime's Haskell action is run as it was, only watched (its
+-- kept: the runtime's Haskell action is run as it was, only watched (its
 -- collection first, and until its throw has been delivered), through
 -- "GHC.Conc.Signal"'s table of actions, without installing a handler
 -- again (which would have made Ctrl-C's handler stay after the first
--- one). A program that has replaced or removed that handler (or that
--- ignores Ctrl-C) gets no watchdog for it. Neither signal is watched in
--- a program built without @-threaded@: its runtime waits, whole, for a
--- blocking call such as the video's assembly, and could not be told from
--- a stuck one. Code compiled with @-fno-omit-yields@ can be stopped where
--- it loops, and then writes its outputs.
+-- one), and the watchdog's handler in front of the runtime's calls it
+-- for the first Ctrl-C only. A second Ctrl-C during a watched run still
+-- ends the program at once, by @SIGINT@ (130), without the outputs not
+-- yet written, but now says so on standard error. A program that has
+-- replaced or removed that handler (or that ignores Ctrl-C) gets no
+-- watchdog for it, and the runtime's silent second Ctrl-C. Neither
+-- signal is watched in a program built without @-threaded@: its runtime
+-- waits, whole, for a blocking call such as the video's assembly, and
+-- could not be told from a stuck one. Code compiled with
+-- @-fno-omit-yields@ can be stopped where it loops, and then writes its
+-- outputs.
 module AFrobRobotSim.Run.Signals
   ( Stopper
   , interruptible
@@ -94,9 +97,10 @@ foreign import ccall unsafe "afrp_signal_ignored"
 -- each function taking the signal first.
 
 -- The signal's watchdog in front of its handler installed now, with its
--- grace and message: 0 when it is armed.
+-- grace, its message, and the message of a second signal to a handler
+-- called once (the runtime's SIGINT): 0 when it is armed.
 foreign import ccall unsafe "afrp_grace_arm"
-  graceArm :: CInt -> CInt -> CString -> IO CInt
+  graceArm :: CInt -> CInt -> CString -> CString -> IO CInt
 
 -- A handler at work, the runtime seen to act (a collection completed):
 -- the watchdog's countdown begins anew, and the runtime stays expected to
@@ -164,7 +168,7 @@ interruptible act = do
       -- (no watchdog without -threaded, or while another run has it: the
       -- run is then stopped as before)
       watched <- if not rtsSupportsBoundThreads then pure False
-                 else (== 0) <$> withCString (stuckMessage "SIGTERM" prog) (graceArm sigTERM (fromIntegral stuckGrace))
+                 else (== 0) <$> arm sigTERM (stuckMessage "SIGTERM" prog) ""
       -- (a run not watched, another being so, keeps the other's watchdog
       -- in front of the handlers it installs)
       unless watched (graceRewrap sigTERM)
@@ -254,9 +258,22 @@ watchingCtrlC prog body
           -- (described as the runtime's, for an 'installHandler' during the
           -- run, which gives back what it replaces)
           _ <- setHandler sigINT (Just (watchedAction, described))
-          (== 0) <$> withCString (stuckMessage "Ctrl-C (SIGINT)" prog) (graceArm sigINT (fromIntegral stuckGrace))
+          (== 0) <$> arm sigINT (stuckMessage "Ctrl-C (SIGINT)" prog) (againMessage prog)
       if not armed then setHandler sigINT old >> restore body
       else restore body `finally` (graceRemove sigINT >> () <$ setHandler sigINT old)
+
+-- @arm sig stuck again@: 'graceArm' with the grace and the two messages.
+arm :: CInt -> String -> String -> IO CInt
+arm sig stuck again =
+  withCString stuck $ \stuck' -> withCString again $ \again' -> graceArm sig (fromIntegral stuckGrace) stuck' again'
+
+-- What a second Ctrl-C during a watched run says, @prog@ the program's
+-- name.
+againMessage :: String -> String
+againMessage prog =
+  prog ++ ": Ctrl-C (SIGINT) received a second time: ending now, without waiting for the run to stop, "
+  ++ "and without its outputs not yet written (the frames and log lines written so far are kept). A first "
+  ++ "Ctrl-C stops the run and writes its outputs.\n"
 
 -- What a program stuck past the grace says, @signal@ the signal it was
 -- sent, @prog@ its name.
