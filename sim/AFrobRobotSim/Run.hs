@@ -31,7 +31,7 @@
 -- whose output depends on itself with no delay (@\<\<loop\>\>@, when the
 -- runtime sees it: a self-reference that the optimiser turns into a loop
 -- that never allocates, such as @rec let o = if c then x else o@ compiled
--- with @-O@, hangs instead, and only @SIGTERM@'s watchdog ends it, see
+-- with @-O@, hangs instead, and only the watchdog of @SIGTERM@ and Ctrl-C ends it, see
 -- "AFrobRobotSim.Run.Signals"). A write
 -- that fails during the run (a full disk) stops it with a message (exit
 -- code 1), and so does the heap's limit (@+RTS -M@). Ctrl-C stops the

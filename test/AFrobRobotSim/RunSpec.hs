@@ -159,12 +159,18 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- makes the file @spinning@ and loops for ever without allocating.
 -- @heldtwice@: the same, with a second @SIGTERM@ sent to itself (after
 -- 300 ms) before the loop (200 ms after that).
+-- @heldint@: the same for Ctrl-C, which the child cannot see come (the
+-- runtime's handler throws it to the main thread, which holds it off):
+-- after @ready@ it waits 2 s, for the parent's Ctrl-C, then loops.
 -- @talker@: ten simulated hours, the log and the page, a SimbotA that
 -- prints a line at every step that has a frame (the log's), for the
 -- parent to close its standard output.
 -- @holdoff@: the same, but after the signal it waits 'stuckGrace' + 3
 -- seconds, then takes the stop: prints @stopped@ and ends with exit code
 -- 0.
+-- @holdoffint@: the same for Ctrl-C, which it cannot see come: it waits
+-- 'stuckGrace' + 3 seconds from @ready@ on, the parent's Ctrl-C sent
+-- meanwhile.
 -- @replayfrom@: @simbot --replay-from@ ('replayFromMain') with the
 -- child's arguments, as @simbot@.
 child :: String -> IO ()
@@ -208,28 +214,34 @@ child arg = case break (== ':') arg of
   ("talker", _ : dir) -> runSimWith defaultSimOptions
     { optSeconds = 36000, optQuiet = False, optFrames = False, optOut = dir, optSvg = Nothing
     , optLog = Just (dir </> "run.jsonl"), optReplay = Just (dir </> "run.html") } (Just world) talker drive
-  ("held", _ : dir) -> heldThenSpin dir (pure ())
+  ("held", _ : dir) -> heldThenSpin dir awaitSignal (pure ())
   ("replayfrom", _) -> getArgs >>= withProgName "simbot" . replayFromMain
-  ("heldtwice", _ : dir) -> heldThenSpin dir (threadDelay 300000 >> raiseSignal sigTERM >> threadDelay 200000)
-  ("holdoff", _ : dir) -> do
-    r <- try (interruptible $ \stopper -> uninterruptibleMask_ $ do
-                writeFile (dir </> "ready") ""
-                awaitSignal stopper
-                threadDelay ((stuckGrace + 3) * 1000000))
-    putStrLn (case r of
-                Left UserInterrupt -> "stopped"
-                Left e             -> "stopped by " ++ show e
-                Right ()           -> "not stopped")
+  ("heldtwice", _ : dir) -> heldThenSpin dir awaitSignal (threadDelay 300000 >> raiseSignal sigTERM >> threadDelay 200000)
+  ("heldint", _ : dir) -> heldThenSpin dir (const (threadDelay 2000000)) (pure ())
+  ("holdoff", _ : dir) -> holdOff dir awaitSignal
+  ("holdoffint", _ : dir) -> holdOff dir (const (pure ()))
   _ -> ioError (userError ("unknown child " ++ show arg))
   where
+    -- (holds stops off; once the signal has come (@await@), 'stuckGrace'
+    -- + 3 seconds more, then takes the stop)
+    holdOff :: FilePath -> (Stopper -> IO ()) -> IO ()
+    holdOff dir await = do
+      r <- try (interruptible $ \stopper -> uninterruptibleMask_ $ do
+                  writeFile (dir </> "ready") ""
+                  await stopper
+                  threadDelay ((stuckGrace + 3) * 1000000))
+      putStrLn (case r of
+                  Left UserInterrupt -> "stopped"
+                  Left e             -> "stopped by " ++ show e
+                  Right ()           -> "not stopped")
     awaitSignal :: Stopper -> IO ()
     awaitSignal stopper = signalReceived stopper >>= maybe (threadDelay 1000 >> awaitSignal stopper) (const (pure ()))
-    -- (holds stops off; once the signal is taken, @meanwhile@, then the
-    -- loop that never allocates)
-    heldThenSpin :: FilePath -> IO () -> IO ()
-    heldThenSpin dir meanwhile = interruptible $ \stopper -> uninterruptibleMask_ $ do
+    -- (holds stops off; once the signal is taken (@await@), @meanwhile@,
+    -- then the loop that never allocates)
+    heldThenSpin :: FilePath -> (Stopper -> IO ()) -> IO () -> IO ()
+    heldThenSpin dir await meanwhile = interruptible $ \stopper -> uninterruptibleMask_ $ do
       writeFile (dir </> "ready") ""
-      awaitSignal stopper
+      await stopper
       meanwhile
       () <$ evaluate (spinning dir)
     -- (from 0.5 s on, its wheel speed is a loop that never ends and never
@@ -291,13 +303,24 @@ awaitChild what ready ph = go (0 :: Int)
 killChild :: ProcessHandle -> IO ExitCode
 killChild ph = getPid ph >>= mapM_ (signalProcess sigKILL) >> waitForProcess ph
 
--- | A child ended by the watchdog: by SIGTERM after all, as without a
--- handler (143 in a shell), within the test's wait (@done@), saying why
--- on standard error (@err@).
-endedStuck :: Maybe ExitCode -> String -> Expectation
-endedStuck done err = do
-  done `shouldSatisfy` (`elem` [Just (ExitFailure (-15)), Just (ExitFailure 143)])
-  err `shouldSatisfy` (("SIGTERM received, but the runtime has not been able to act on it within "
+-- | The signals that a watchdog follows: a name, how the test sends it
+-- (Ctrl-C to the child's process group, so the child must be started
+-- with @create_group@), what the watchdog's message calls it, and its
+-- number.
+watched :: [(String, ProcessHandle -> IO (), String, Int)]
+watched = [term, ctrlC]
+
+term, ctrlC :: (String, ProcessHandle -> IO (), String, Int)
+term = ("SIGTERM", terminateProcess, "SIGTERM", 15)
+ctrlC = ("Ctrl-C", interruptProcessGroupOf, "Ctrl-C (SIGINT)", 2)
+
+-- | A child ended by the watchdog of signal @k@ (called @named@): by that
+-- signal after all, as without a handler (128 + @k@ in a shell), within
+-- the test's wait (@done@), saying why on standard error (@err@).
+endedStuck :: String -> Int -> Maybe ExitCode -> String -> Expectation
+endedStuck named k done err = do
+  done `shouldSatisfy` (`elem` [Just (ExitFailure (-k)), Just (ExitFailure (128 + k))])
+  err `shouldSatisfy` ((named ++ " received, but the runtime has not been able to act on it within "
                         ++ show stuckGrace ++ " s") `isInfixOf`)
   err `shouldSatisfy` ("-fno-omit-yields" `isInfixOf`)
 
@@ -578,20 +601,21 @@ spec = do
       doesFileExist (dir </> "run.svg") `shouldReturn` True
       readFile (dir </> "r.json") >>= (`shouldSatisfy` ("ran out of memory" `isInfixOf`))
   describe "a controller in a loop that never allocates (the runtime cannot stop it)" $
-    forM_ [1, 2 :: Int] $ \caps ->
-      it ("a SIGTERM ends the program after the grace, saying why, the frames already written kept (+RTS -N"
+    forM_ watched $ \(name, send, named, k) -> forM_ [1, 2 :: Int] $ \caps ->
+      it ("a " ++ name ++ " ends the program after the grace, saying why, the frames already written kept (+RTS -N"
           ++ show caps ++ ")") $ withTempDir $ \dir -> do
         spin <- childOn "spin" dir caps
-        (_, _, Just herr, ph) <- createProcess spin { std_out = NoStream, std_err = CreatePipe }
+        (_, _, Just herr, ph) <- createProcess spin { create_group = True, std_out = NoStream, std_err = CreatePipe }
         awaitChild "did not begin its loop" (doesFileExist (dir </> "spinning")) ph
         threadDelay 200000
-        terminateProcess ph
+        send ph
         err <- hGetContents herr
         -- (it hung for ever before the grace: a child that does is stopped,
-        -- not left behind)
+        -- not left behind; so did a first Ctrl-C, when only Ctrl-C's
+        -- second, which ends the program at once, ended it)
         done <- timeout 60000000 (length err `seq` waitForProcess ph)
         _ <- maybe (killChild ph) pure done
-        endedStuck done err
+        endedStuck named k done err
         -- (the frames are whole; on two capabilities the thread writing
         -- them may have been stopped, by the collection the loop holds
         -- up, in the middle of one, whose temporary file the end leaves)
@@ -600,37 +624,59 @@ spec = do
         frames <- mapM (BS.readFile . ((dir </> "f") </>)) finals
         (length frames > 0, all ((== 15 + 3 * 120 * 120) . BS.length) frames, length temps <= 1, length (lines err))
           `shouldBe` (True, True, True, 1)
+  describe "a second Ctrl-C" $
+    forM_ [1, 2 :: Int] $ \caps ->
+      it ("ends the program at once, by SIGINT, as the runtime's does, but saying so (+RTS -N" ++ show caps ++ ")") $
+        withTempDir $ \dir -> do
+          spin <- childOn "spin" dir caps
+          (_, _, Just herr, ph) <- createProcess spin { create_group = True, std_out = NoStream, std_err = CreatePipe }
+          awaitChild "did not begin its loop" (doesFileExist (dir </> "spinning")) ph
+          threadDelay 200000
+          interruptProcessGroupOf ph
+          threadDelay 1000000
+          interruptProcessGroupOf ph
+          err <- hGetContents herr
+          -- (well before the grace; the program ended silently)
+          done <- timeout ((stuckGrace - 5) * 1000000) (length err `seq` waitForProcess ph)
+          _ <- maybe (killChild ph) pure done
+          done `shouldSatisfy` (`elem` [Just (ExitFailure (-2)), Just (ExitFailure 130)])
+          err `shouldSatisfy` ("Ctrl-C (SIGINT) received a second time: ending now, without waiting for the run to stop" `isInfixOf`)
+          err `shouldNotSatisfy` ("has not been able to act" `isInfixOf`)
   describe "a run's thread that holds the stop off (masked) once the signal has been taken" $
     forM_ [1, 2 :: Int] $ \caps -> do
-      forM_ [("held", ""), ("heldtwice", ", a second SIGTERM come meanwhile")] $ \(what, how) ->
+      forM_ [ ("held", "", term), ("heldtwice", ", a second SIGTERM come meanwhile", term)
+            , ("heldint", " (Ctrl-C, which the runtime's handler throws to the main thread)", ctrlC) ] $
+        \(what, how, (_, send, named, k)) ->
         it ("and then loops without allocating" ++ how ++ ": ended after the grace, saying why (+RTS -N"
             ++ show caps ++ ")") $ withTempDir $ \dir -> do
           held <- childOn what dir caps
-          (_, _, Just herr, ph) <- createProcess held { std_out = NoStream, std_err = CreatePipe }
+          (_, _, Just herr, ph) <- createProcess held { create_group = True, std_out = NoStream, std_err = CreatePipe }
           awaitChild "did not begin" (doesFileExist (dir </> "ready")) ph
-          terminateProcess ph
+          send ph
           err <- hGetContents herr
           -- (it hung for ever: the runtime had acted once, before the stop
           -- reached the thread, and was not watched after; with a second
-          -- signal, that signal's handler ended the watch)
+          -- signal, that signal's handler ended the watch; Ctrl-C was not
+          -- watched at all)
           done <- timeout 60000000 (length err `seq` waitForProcess ph)
           _ <- maybe (killChild ph) pure done
           doesFileExist (dir </> "spinning") `shouldReturn` True
-          endedStuck done err
-      it ("and takes it after more than the grace, the runtime acting all along: not cut short (+RTS -N"
-          ++ show caps ++ ")") $ withTempDir $ \dir -> do
-        holdoff <- childOn "holdoff" dir caps
-        (_, Just hout, Just herr, ph) <- createProcess holdoff { std_out = CreatePipe, std_err = CreatePipe }
-        awaitChild "did not begin" (doesFileExist (dir </> "ready")) ph
-        terminateProcess ph
-        out <- hGetContents hout
-        err <- hGetContents herr
-        done <- timeout 60000000 (length out `seq` length err `seq` waitForProcess ph)
-        _ <- maybe (killChild ph) pure done
-        (done, out, err) `shouldBe` (Just ExitSuccess, "stopped\n", "")
+          endedStuck named k done err
+      forM_ [("holdoff", "", term), ("holdoffint", "Ctrl-C, ", ctrlC)] $ \(what, how, (_, send, _, _)) ->
+        it ("and takes it after more than the grace, the runtime acting all along: not cut short (" ++ how ++ "+RTS -N"
+            ++ show caps ++ ")") $ withTempDir $ \dir -> do
+          holdoff <- childOn what dir caps
+          (_, Just hout, Just herr, ph) <- createProcess holdoff { create_group = True, std_out = CreatePipe, std_err = CreatePipe }
+          awaitChild "did not begin" (doesFileExist (dir </> "ready")) ph
+          send ph
+          out <- hGetContents hout
+          err <- hGetContents herr
+          done <- timeout 60000000 (length out `seq` length err `seq` waitForProcess ph)
+          _ <- maybe (killChild ph) pure done
+          (done, out, err) `shouldBe` (Just ExitSuccess, "stopped\n", "")
   describe "a run slow to stop (its log written into a pipe nobody reads for a while)" $
-    forM_ [1, 2 :: Int] $ \caps ->
-      it ("is stopped by SIGTERM once the pipe is read again, after more than the grace, its outputs written (+RTS -N"
+    forM_ watched $ \(name, send, _, k) -> forM_ [1, 2 :: Int] $ \caps ->
+      it ("is stopped by " ++ name ++ " once the pipe is read again, after more than the grace, its outputs written (+RTS -N"
           ++ show caps ++ ")") $ withTempDir $ \dir -> do
         let fifo = dir </> "log.fifo"
         createNamedPipe fifo 0o600
@@ -639,12 +685,12 @@ spec = do
         -- there; the end of the log is then its summary, not end of file)
         reader <- openFile fifo ReadWriteMode
         piped <- childOn "piped" dir caps
-        (_, Just hout, Just herr, ph) <- createProcess piped { std_out = CreatePipe, std_err = CreatePipe }
+        (_, Just hout, Just herr, ph) <- createProcess piped { create_group = True, std_out = CreatePipe, std_err = CreatePipe }
         -- (the run is going: some of its log read, then no more, so that
         -- its next writes wait)
         replicateM_ 50 (hGetLine reader)
         threadDelay 1000000
-        terminateProcess ph
+        send ph
         threadDelay ((stuckGrace + 3) * 1000000)
         still <- getProcessExitCode ph
         let untilSummary acc = do
@@ -655,7 +701,7 @@ spec = do
         _ <- maybe (killChild ph) pure done
         out <- hGetContents hout
         err <- hGetContents herr
-        (still, done) `shouldBe` (Nothing, Just (ExitFailure 143))
+        (still, done) `shouldBe` (Nothing, Just (ExitFailure (128 + k)))
         out `shouldSatisfy` ("interrupted: " `isPrefixOf`)
         err `shouldBe` ""
         fmap (any ("\"interrupted\":true" `isInfixOf`)) rest `shouldBe` Just True

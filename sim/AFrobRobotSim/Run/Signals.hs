@@ -24,31 +24,44 @@
 -- collection can start, and with one capability no handler can run, so
 -- the run could not be stopped. In a program built @-threaded@ (the
 -- project's are), a watchdog thread in C (@cbits/signals.c@) is woken by
--- each @SIGTERM@, before the runtime is asked to act, and waits for the
--- runtime to show that it can: the Haskell handler completes a
--- collection, which needs every capability, before it stops the run. A
--- runtime that has not within 'stuckGrace' (10 s) is stuck: the program
--- then writes to standard error that it is, and why that may be, and
--- ends by @SIGTERM@ (exit status 143 in a shell), without the run's
--- outputs (the frames and log lines already written are kept; on several
+-- each @SIGTERM@, and by Ctrl-C (@SIGINT@), before the runtime is asked
+-- to act, and waits for the runtime to show that it can: the Haskell
+-- handler completes a collection, which needs every capability, before
+-- it stops the run. A runtime that has not within 'stuckGrace' (10 s) is
+-- stuck: the program then writes to standard error that it is, and why
+-- that may be, and ends by the signal it was sent (exit status 143 for
+-- @SIGTERM@, 130 for Ctrl-C, in a shell), without the run's outputs (the
+-- frames and log lines already written are kept; on several
 -- capabilities the frame being written then, held up by the collection
 -- the loop keeps from starting, is left as its temporary file,
 -- @frame-NNNNNN.ppm.tmp@; the replay page's temporary files are gone
 -- with the program: each is removed from @TMPDIR@ as soon as it is made).
 -- A run that is merely slow to stop (its log written into a pipe nobody
 -- reads for a while, a video being assembled) has a runtime that acts,
--- and is not cut short. No other signal is used, and one run is watched at a time (a
--- second run at once in the same program gets no watchdog of its own,
--- and keeps the first's in front of its handler). The runtime is watched
--- until the stop has reached the run's thread, so a loop entered after
--- the signal has been taken (before the stop arrives, or while the run's
--- thread holds it off) ends the same way. A program built without
--- @-threaded@ gets no watchdog: its runtime waits, whole,
--- for a blocking call such as the video's assembly, and could not be
--- told from a stuck one. Ctrl-C (@SIGINT@) has no watchdog, in any
--- program: a first Ctrl-C does not stop such a loop; a second ends the
--- program at once, writing nothing, as the runtime does (use @SIGTERM@,
--- @kill@, to get the message and exit status 143). Code compiled with
+-- and is not cut short. No other signal is used, and one run is watched
+-- at a time (a second run at once in the same program gets no watchdog
+-- of its own, and keeps the first's in front of its handler). The
+-- runtime is watched until the stop has reached the thread it is thrown
+-- to, so a loop entered after the signal has been taken (before the stop
+-- arrives, or while that thread holds it off) ends the same way.
+--
+-- Ctrl-C is the runtime's own: its handler, installed as the program
+-- starts, throws 'UserInterrupt' to the main thread, and is called once
+-- (the system puts the signal's default action back as it calls it), so
+-- that a second Ctrl-C ends the program at once, writing nothing. That is
+-- kept: the runtime's Haskell action is run as it was, only watched (its
+-- collection first, and until its throw has been delivered), through
+-- "GHC.Conc.Signal"'s table of actions, without installing a handler
+-- again (which would have made Ctrl-C's handler stay after the first
+-- one), and the watchdog's handler in front of the runtime's calls it
+-- for the first Ctrl-C only. A second Ctrl-C during a watched run still
+-- ends the program at once, by @SIGINT@ (130), without the outputs not
+-- yet written, but now says so on standard error. A program that has
+-- replaced or removed that handler (or that ignores Ctrl-C) gets no
+-- watchdog for it, and the runtime's silent second Ctrl-C. Neither
+-- signal is watched in a program built without @-threaded@: its runtime
+-- waits, whole, for a blocking call such as the video's assembly, and
+-- could not be told from a stuck one. Code compiled with
 -- @-fno-omit-yields@ can be stopped where it loops, and then writes its
 -- outputs.
 module AFrobRobotSim.Run.Signals
@@ -66,52 +79,59 @@ import           Data.IORef
 import           Control.Concurrent (forkIO, rtsSupportsBoundThreads, throwTo)
 import           Control.Concurrent.MVar (newEmptyMVar, putMVar, readMVar, takeMVar)
 import           Control.Monad      (unless)
-import           Control.Exception  (AsyncException (UserInterrupt), finally)
+import           Control.Exception  (AsyncException (UserInterrupt), finally, mask)
+import           Data.Dynamic       (toDyn)
 import           Foreign.C.String   (CString, withCString)
 import           Foreign.C.Types    (CInt (..))
+import           GHC.Conc.Signal    (setHandler)
 import           System.Environment (getProgName)
 import           System.Mem         (performMinorGC)
-import           System.Posix.Signals (Handler (Catch), installHandler, sigTERM)
+import           System.Posix.Signals (Handler (Catch), installHandler, sigINT, sigTERM)
 import           System.Timeout     (timeout)
 
 -- Whether the system ignores a signal now (cbits/signals.c).
 foreign import ccall unsafe "afrp_signal_ignored"
   signalIgnored :: CInt -> IO CInt
 
--- The watchdog in front of the SIGTERM handler installed now, with its
--- grace and message (cbits/signals.c): 0 when it is armed.
-foreign import ccall unsafe "afrp_term_grace_arm"
-  graceArm :: CInt -> CString -> IO CInt
+-- The watchdogs (cbits/signals.c), one for SIGTERM and one for SIGINT,
+-- each function taking the signal first.
+
+-- The signal's watchdog in front of its handler installed now, with its
+-- grace, its message, and the message of a second signal to a handler
+-- called once (the runtime's SIGINT): 0 when it is armed.
+foreign import ccall unsafe "afrp_grace_arm"
+  graceArm :: CInt -> CInt -> CString -> CString -> IO CInt
 
 -- A handler at work, the runtime seen to act (a collection completed):
 -- the watchdog's countdown begins anew, and the runtime stays expected to
 -- act until the handler's 'graceEnd'.
-foreign import ccall unsafe "afrp_term_grace_begin"
-  graceBegin :: IO ()
+foreign import ccall unsafe "afrp_grace_begin"
+  graceBegin :: CInt -> IO ()
 
 -- The runtime seen to act again (the heartbeat's collection): the
 -- countdown begins anew.
-foreign import ccall unsafe "afrp_term_grace_renew"
-  graceRenew :: IO ()
+foreign import ccall unsafe "afrp_grace_renew"
+  graceRenew :: CInt -> IO ()
 
 -- A handler's work done: when no other is at work, the watchdog waits for
 -- the next signal.
-foreign import ccall unsafe "afrp_term_grace_end"
-  graceEnd :: IO ()
+foreign import ccall unsafe "afrp_grace_end"
+  graceEnd :: CInt -> IO ()
 
 -- The watchdog put back in front of the runtime's handler, if it is
 -- armed and that handler was installed again since.
-foreign import ccall unsafe "afrp_term_grace_rewrap"
-  graceRewrap :: IO ()
+foreign import ccall unsafe "afrp_grace_rewrap"
+  graceRewrap :: CInt -> IO ()
 
--- The watchdog disarmed, SIGTERM's handler as it was before it.
-foreign import ccall unsafe "afrp_term_grace_remove"
-  graceRemove :: IO ()
+-- The watchdog disarmed, the signal's handler as it was before it (or
+-- its default action, should a SIGINT have reset it).
+foreign import ccall unsafe "afrp_grace_remove"
+  graceRemove :: CInt -> IO ()
 #endif
 
--- | How long the runtime may take to act on a @SIGTERM@ before the
--- program ends without its outputs (see the module's documentation): 10
--- seconds. A runtime that can act does in milliseconds.
+-- | How long the runtime may take to act on a @SIGTERM@ or a Ctrl-C
+-- before the program ends without its outputs (see the module's
+-- documentation): 10 seconds. A runtime that can act does in milliseconds.
 stuckGrace :: Int
 stuckGrace = 10
 
@@ -129,26 +149,31 @@ data Stopper = Stopper (Weak ThreadId) (IORef (Bool, Maybe Int))
 -- 'UserInterrupt' to the thread that called it (once 'finishing' has
 -- been called, it is noted and ignored), and restores its handler after.
 -- A program that was started with @SIGTERM@ ignored keeps ignoring it.
--- Elsewhere than on a POSIX system, @act@ runs as it is.
+-- Ctrl-C is left to the runtime's handler (which throws 'UserInterrupt'
+-- to the main thread), only watched. A program built @-threaded@ ends
+-- after 'stuckGrace', with a message, when its runtime cannot act on
+-- either signal (see the module's documentation). Elsewhere than on a
+-- POSIX system, @act@ runs as it is.
 interruptible :: (Stopper -> IO a) -> IO a
 interruptible act = do
   me <- myThreadId >>= mkWeakThreadId
   phase <- newIORef (False, Nothing)
   let stopper = Stopper me phase
 #if !defined(mingw32_HOST_OS)
-  ignored <- (/= 0) <$> signalIgnored sigTERM
-  if ignored then act stopper else do   -- (as the program was started: nohup, a batch system)
-    old <- installHandler sigTERM (Catch (received stopper (fromIntegral sigTERM))) Nothing
-    prog <- getProgName
-    -- (no watchdog without -threaded, or while another run has it: the
-    -- run is then stopped as before)
-    watched <- if not rtsSupportsBoundThreads then pure False
-               else (== 0) <$> withCString (stuckMessage prog) (graceArm (fromIntegral stuckGrace))
-    -- (a run not watched, another being so, keeps the other's watchdog
-    -- in front of the handlers it installs)
-    unless watched graceRewrap
-    act stopper `finally` (if watched then graceRemove >> () <$ installHandler sigTERM old Nothing
-                           else installHandler sigTERM old Nothing >> graceRewrap)
+  prog <- getProgName
+  watchingCtrlC prog $ do
+    ignored <- (/= 0) <$> signalIgnored sigTERM
+    if ignored then act stopper else do   -- (as the program was started: nohup, a batch system)
+      old <- installHandler sigTERM (Catch (received stopper (fromIntegral sigTERM))) Nothing
+      -- (no watchdog without -threaded, or while another run has it: the
+      -- run is then stopped as before)
+      watched <- if not rtsSupportsBoundThreads then pure False
+                 else (== 0) <$> arm sigTERM (stuckMessage "SIGTERM" prog) ""
+      -- (a run not watched, another being so, keeps the other's watchdog
+      -- in front of the handlers it installs)
+      unless watched (graceRewrap sigTERM)
+      act stopper `finally` (if watched then graceRemove sigTERM >> () <$ installHandler sigTERM old Nothing
+                             else installHandler sigTERM old Nothing >> graceRewrap sigTERM)
 #else
   act stopper
 #endif
@@ -171,30 +196,90 @@ interruptible act = do
 received :: Stopper -> Int -> IO ()
 received (Stopper t phase) k = do
   performMinorGC
-  graceBegin
+  graceBegin sigTERM
   stop <- atomicModifyIORef' phase $ \(done, got) -> case got of
     Nothing -> ((done, Just k), not done)
     Just _  -> ((done, got), False)
   target <- deRefWeak t
   case target of
-    Just thread | stop -> do
-      delivered <- newEmptyMVar
-      beaten <- newEmptyMVar
-      _ <- forkIO (heartbeat delivered `finally` putMVar beaten ())
-      throwTo thread UserInterrupt
-        `finally` (putMVar delivered () >> takeMVar beaten >> graceEnd)
-    _ -> graceEnd
+    Just thread | stop -> watchedUntilDone sigTERM (throwTo thread UserInterrupt)
+    _ -> graceEnd sigTERM
+
+-- @watchedUntilDone sig deliver@, in a handler of @sig@ that has begun
+-- ('graceBegin'): @deliver@ (a stop thrown to a thread, which may wait
+-- for that thread), with a heartbeat that renews the watchdog's countdown
+-- after each collection it completes, every second, until @deliver@ is
+-- done; then the handler's 'graceEnd'.
+watchedUntilDone :: CInt -> IO () -> IO ()
+watchedUntilDone sig deliver = do
+  delivered <- newEmptyMVar
+  beaten <- newEmptyMVar
+  _ <- forkIO (heartbeat delivered `finally` putMVar beaten ())
+  deliver `finally` (putMVar delivered () >> takeMVar beaten >> graceEnd sig)
   where
     heartbeat delivered = do
       done <- timeout 1000000 (readMVar delivered)
       case done of
         Just () -> pure ()
-        Nothing -> performMinorGC >> graceRenew >> heartbeat delivered
+        Nothing -> performMinorGC >> graceRenew sig >> heartbeat delivered
 
--- What a program stuck past the grace says, @prog@ its name.
-stuckMessage :: String -> String
-stuckMessage prog =
-  prog ++ ": SIGTERM received, but the runtime has not been able to act on it within " ++ show stuckGrace
+-- Ctrl-C watched while @body@ runs, in a program built -threaded: the
+-- runtime's Haskell action for SIGINT (the one the program started with,
+-- which throws 'UserInterrupt' to the main thread) run as it was, but
+-- after a collection and until it is done, as 'received' does its stop,
+-- and the watchdog in front of the runtime's handler (cbits/signals.c).
+-- The action is swapped in the runtime's table ('setHandler'), not
+-- installed again: 'installHandler' would give back the runtime's handler
+-- as one that stays after its first signal ('Catch'), and put it back so,
+-- where the runtime's is called once (a second Ctrl-C ends the program).
+-- The table's entry is swapped first and the watchdog armed after, so
+-- that a Ctrl-C between the two is watched whole or not at all; without a
+-- watchdog (another run has it, or there is no runtime's handler to stand
+-- in front of: one replaced, removed, ignored, or called already) the
+-- entry is put back at once and @body@ runs as before. (Masked until the
+-- entry is sure to be put back: an exception between would leave a
+-- wrapper waiting for ever.)
+watchingCtrlC :: String -> IO a -> IO a
+watchingCtrlC prog body
+  | not rtsSupportsBoundThreads = body
+  | otherwise = mask $ \restore -> do
+      previous <- newEmptyMVar
+      -- (the runtime's action is known once the swap has given it back:
+      -- a Ctrl-C that comes between runs its wrapper, which waits for it)
+      let watchedAction info = readMVar previous >>= mapM_ (\(action, _) -> do
+            performMinorGC
+            graceBegin sigINT
+            watchedUntilDone sigINT (action info))
+      old <- setHandler sigINT (Just (watchedAction, toDyn ()))
+      putMVar previous old
+      armed <- case old of
+        Nothing -> pure False
+        Just (_, described) -> do
+          -- (described as the runtime's, for an 'installHandler' during the
+          -- run, which gives back what it replaces)
+          _ <- setHandler sigINT (Just (watchedAction, described))
+          (== 0) <$> arm sigINT (stuckMessage "Ctrl-C (SIGINT)" prog) (againMessage prog)
+      if not armed then setHandler sigINT old >> restore body
+      else restore body `finally` (graceRemove sigINT >> () <$ setHandler sigINT old)
+
+-- @arm sig stuck again@: 'graceArm' with the grace and the two messages.
+arm :: CInt -> String -> String -> IO CInt
+arm sig stuck again =
+  withCString stuck $ \stuck' -> withCString again $ \again' -> graceArm sig (fromIntegral stuckGrace) stuck' again'
+
+-- What a second Ctrl-C during a watched run says, @prog@ the program's
+-- name.
+againMessage :: String -> String
+againMessage prog =
+  prog ++ ": Ctrl-C (SIGINT) received a second time: ending now, without waiting for the run to stop, "
+  ++ "and without its outputs not yet written (the frames and log lines written so far are kept). A first "
+  ++ "Ctrl-C stops the run and writes its outputs.\n"
+
+-- What a program stuck past the grace says, @signal@ the signal it was
+-- sent, @prog@ its name.
+stuckMessage :: String -> String -> String
+stuckMessage signal prog =
+  prog ++ ": " ++ signal ++ " received, but the runtime has not been able to act on it within " ++ show stuckGrace
   ++ " s: a thread, most likely a controller's step, has been computing all that time without allocating "
   ++ "(an endless loop over unboxed numbers?), which keeps the runtime from stopping the run. Ending now, "
   ++ "without the run's outputs (the frames and log lines written so far are kept). A controller compiled "
