@@ -150,8 +150,8 @@ runSimRefereedWith opts referee mworld rcA rcB = do
   tolerantOutput   -- (a message the terminal's encoding cannot write must not stop the run)
   prog  <- getProgName
   -- (the two printing modes set together in code: refused before either
-  -- prints, with every other fault of the settings; a command line with
-  -- both is refused where it is read)
+  -- prints, with the other faults 'validateOptions' finds; a command line
+  -- with both is refused where it is read)
   when (optPrintProgram opts && optDumpWorld opts) $
     failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) (validateOptions opts)))
   if optPrintProgram opts

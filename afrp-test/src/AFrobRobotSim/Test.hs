@@ -502,14 +502,16 @@ robotOf ty i = (sscan (\k _ -> k + 1) (-1) &&& arr id) >>> arr (\(k, ws) -> find
 -- and goes on with what 'runT' prints.
 -- The page shows the run up to 5 simulated seconds past the instant that
 -- decided @p@ false (what 'runT' prints), or up to a controller's
--- failure, if one failed; the whole run when neither ends it sooner. A
--- predicate that throws (an 'onRobot' of a robot not there, say) decides
--- nothing: its page ends 5 s past the last sample it read. (A failure
--- early in a long run makes a short page: the page of the whole run could
--- take longer than the test.) It opens at that instant, marked
+-- failure, if one failed; the whole run when neither ends it sooner. (A
+-- failure early in a long run makes a short page: the page of the whole
+-- run could take longer than the test.) It opens at that instant, marked
 -- on its time slider, and says it (@FAILED: decided false at t = 6.76
 -- (step 338)@ in its heading and its summary): 'writeFalsifiedRunReplayPage'.
 -- A page of a controller's failure ('writeRunReplayPage') says the failure.
+-- A predicate that throws (an 'onRobot' of a robot not there, say)
+-- decides nothing: its page ends 5 s past the last sample that
+-- explaining the run read (the one after the sample it threw at, which
+-- explaining looks at too), and the report shows the exception.
 -- Each world is run once to decide, as by 'runT', and the world
 -- QuickCheck reports once more: that run is both explained and the
 -- page's, and kept as 'runT' keeps it to explain it (the page beyond is
@@ -530,8 +532,8 @@ forAllRuns file config duration rcA rcB gen p =
     -- which holds on to this property's callbacks while it runs them,
     -- does not keep the start of the run while the page is recorded)
     -- (the samples of the second run that explaining has read, counted
-    -- as it reads them: a predicate that throws ends the page 5 s past
-    -- the last it read)
+    -- as it reads them: the page of a predicate that throws ends 5 s past
+    -- the last)
     samplesRead <- newIORef (0 :: Int)
     rerun <- countingSamples samplesRead (runStream config duration w rcA rcB)
     let explanation = explainT (p w) rerun

@@ -672,17 +672,20 @@ specWithFiles = do
   it "forAllRuns: a predicate that throws ends the page 5 s past the last sample it read (the page was of the whole run: of 10^6 s, it never ended)" $ \tmp -> do
     let file = tmp </> "afrp-test-pred-throws.world"
         oops = Always (SP (arr (\ws -> wsTime ws < 1 || error "the predicate gave up")))
-    result <- quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
+    -- (the page of the whole run of 10^6 s would take hours: a timeout
+    -- makes that a failure)
+    r <- timeout (60 * 1000000) $ quickCheckWithResult stdArgs { chatty = False, maxSuccess = 1 } $
       forAllRuns file defaultSimConfig { simDt = 0.05 } 1e6 rcBrake rcBrake (pure [OTSimbotA 1 (Point2 0 0) 0]) (const oops)
-    case result of
-      Failure {} -> do
+    case r of
+      Nothing -> expectationFailure "the property did not end within 60 s"
+      Just result@Failure {} -> do
         page <- readFile (file ++ ".html")
         length page `seq` mapM_ removeFile [file, file ++ ".html"]
         output result `shouldSatisfy` ("the predicate gave up" `isInfixOf`)
         -- (explaining read the sample that threw, at 1 s, and the one
         -- after it: a frame at every step of 0.05 s from time 0 to 6.05 s)
         occurrences "\"frame\"" page `shouldBe` 122
-      _ -> expectationFailure ("the predicate that throws passed: " ++ output result)
+      Just result -> expectationFailure ("the predicate that throws passed: " ++ output result)
 
   it "forAllRuns: a controller that fails soon after the instant that decided ends the page there (it gave a page of no frame)" $ \tmp -> do
     -- (decided false at 1 s; the controller fails at 1.2 s, within the

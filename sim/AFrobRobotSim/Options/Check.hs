@@ -51,9 +51,11 @@ import           AFrobRobotSim.World (Bounds (..))
 --
 -- A fault that only options set in code can have (a value a flag
 -- refuses, such as a negative 'optSeconds', or a name twice in
--- 'optParams', where a command line keeps the last) is named by the
--- record's field, as the code set it: @optSeconds must be a finite number
--- >= 0, got -1.0@. A fault that a command line can have too (@--seconds
+-- 'optParams', where a command line keeps the last; both printing modes,
+-- 'optDumpWorld' and 'optPrintProgram', which a command line's reader
+-- refuses by their flags first) is named by the record's field, as the
+-- code set it: @optSeconds must be a finite number >= 0, got -1.0@. A
+-- fault that a command line can have too (@--seconds
 -- 1e20 with --dt 0.01@, an empty @--svg@) is named by its flags, which
 -- are the fields' names on the command line.
 validateOptions :: SimOptions -> [String]

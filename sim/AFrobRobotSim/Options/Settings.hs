@@ -39,7 +39,7 @@ data SimOptions = SimOptions
   , optOdometryNoise :: !Double            -- ^ relative odometry error per step
   , optQuiet         :: !Bool              -- ^ print only the summary
   , optWorldFile     :: Maybe FilePath     -- ^ load the world from this file
-  , optDumpWorld     :: !Bool              -- ^ print the world and exit
+  , optDumpWorld     :: !Bool              -- ^ print the world and exit (not with 'optPrintProgram')
   , optPrintProgram  :: !Bool
     -- ^ print the program's name as its result line writes it (its
     -- @program@, a JSON string: 'optProgram' or the executable's name)

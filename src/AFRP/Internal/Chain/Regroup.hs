@@ -50,7 +50,7 @@ import           AFRP.Internal.Chain.Sums (Funs (..), kindsList, packKinds, sums
 
 -- | An integral (its running sum, and the function before it, if any) in
 -- front of the stages that follow it, after the chain's first step:
--- grouped with the integrals in series behind it ('groupEntries', as
+-- grouped with the integrals in series behind it (@groupEntries@, as
 -- 'settleL' groups them; the delays wait for the second step), three or
 -- more as one run, fewer as cells of their own. (A run starts at three
 -- integrals: for two, the array and the run's cell allocate more than the
