@@ -722,6 +722,8 @@ specWithFiles = do
     -- (a controller that fails: deciding stops at the failure, which
     -- the page then shows; it ran it three times)
     runsOf throwsAt3 neverStuck `shouldReturn` (False, 2)
+    -- (a predicate that throws: the page is of the run that explained)
+    runsOf straight (Always (SP (arr (\ws -> wsTime ws < 1 || error "the predicate gave up")))) `shouldReturn` (False, 2)
     mapM_ removeFile [file, file ++ ".html"]
     -- (three worlds that pass, each run once)
     runsOf straight (Always (SP (arr (const True)))) `shouldReturn` (True, 3)
