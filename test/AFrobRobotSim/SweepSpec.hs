@@ -1424,6 +1424,13 @@ spec = do
         refused ["--list", "--worlds", worldList] "--worlds expects"
       writeFile (dir </> "jobs") (unlines ["--seed 1", "--seed 2 --world 'a b.world", "--seed 3"])
       refused ["--list", "--jobs", dir </> "jobs"] "jobs: line 2: a ' is not closed"
+      -- (with the other lines' faults: only the quote's was said)
+      writeFile (dir </> "jobs") (unlines ["--seed 1 --seconds", "--seed 2 --world 'a b.world", "--seed 3 --dt"])
+      (codeQ, _, errQ) <- runScriptCode [] sweep ["--list", "--jobs", dir </> "jobs"]
+      (codeQ, filter ("jobs: line " `isInfixOf`) (lines errQ)) `shouldBe`
+        (ExitFailure 2, [ "sweep: " ++ dir </> "jobs" ++ ": line 1: --seconds needs a value"
+                        , "sweep: " ++ dir </> "jobs" ++ ": line 2: a ' is not closed (a job line's words are separated by spaces, and quoted as in a shell: '...', \"...\", \\)"
+                        , "sweep: " ++ dir </> "jobs" ++ ": line 3: --dt needs a value" ])
       -- what is accepted: spaces around a seed, leading zeros (decimal)
       (code, out, _) <- runScriptCode [] sweep ["--list", "--seeds", "1, 010,-2"]
       (code, lines out) `shouldBe` (ExitSuccess, ["--seed 1", "--seed 10", "--seed -2"])
