@@ -340,7 +340,11 @@ fixed k v = let m = 10 ^ k :: Integer
 -- with 'shrinkWorld'. A failing world is printed in the world-file format
 -- and, once shrinking is done, written to @file@; the report says so
 -- (@(the world is written to failing.world)@), or why it could not be
--- written, and goes on with what @prop@ says of the failure.
+-- written, and goes on with what @prop@ says of the failure. The world
+-- is written as it is ('renderWorld'): one that @prop@ runs in bounds
+-- other than the notes' 10 by 10 should carry its 'OTSize' to run again
+-- the same way (or be checked with 'forAllRuns', which writes the size
+-- line of its config's bounds: 'worldFileText').
 forAllWorlds :: Testable prop => FilePath -> Gen WorldTemplate -> (WorldTemplate -> prop) -> Property
 forAllWorlds file gen prop =
   forAllShrinkShow gen shrinkWorld renderWorld $ \w ->
