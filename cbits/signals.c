@@ -54,6 +54,7 @@
 #endif
 #include <errno.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stddef.h>
@@ -142,28 +143,39 @@ static int wait_for_wake(struct watch *w)
     return n == 1 ? 0 : -1;
 }
 
-/* A message written whole to standard error, as far as it can be. */
-static void say(const char *text, size_t length)
+/* A message written to standard error, as far as it can be without
+   waiting more than `wait_ms` milliseconds for it to take each part (a
+   pipe nobody reads must not keep the program from ending: what it
+   cannot take is not written). poll and write are safe in a signal
+   handler. */
+static void say(const char *text, size_t length, int wait_ms)
 {
     size_t done = 0;
     while (done < length) {
-        ssize_t n = write(2, text + done, length - done);
+        struct pollfd p = { 2, POLLOUT, 0 };
+        ssize_t n;
+        if (poll(&p, 1, wait_ms) != 1 || !(p.revents & POLLOUT))
+            break;
+        n = write(2, text + done, length - done);
         if (n <= 0) break;
         done += (size_t) n;
     }
 }
 
-/* The program ended by `sig`'s default action: the signal sent again,
-   taken by a thread that does not block it (this one, once its handler
-   returns, if it is in one); should none take it within a second, the
-   program ends as a shell would report it. */
-static void end_by_default(int sig)
+/* The program ended by `sig`'s default action, after the message (said
+   as `say` does): the default action put back first, so that the same
+   signal sent again meanwhile ends the program at once; then the signal
+   sent again, taken by a thread that does not block it (this one, once
+   its handler returns, if it is in one); should none take it within a
+   second, the program ends as a shell would report it. */
+static void end_by_default(int sig, const char *text, size_t length, int wait_ms)
 {
     struct sigaction dfl;
     memset(&dfl, 0, sizeof dfl);
     dfl.sa_handler = SIG_DFL;
     sigemptyset(&dfl.sa_mask);
     sigaction(sig, &dfl, NULL);
+    say(text, length, wait_ms);
     kill(getpid(), sig);
     sleep(1);
     _exit(128 + sig);
@@ -175,10 +187,10 @@ static void on_signal(int sig, siginfo_t *info, void *context)
     struct watch *w = watch_of(sig);
     if (w == NULL)
         return;   /* (unreachable: installed for watched signals only) */
-    if (w->once && __atomic_exchange_n(&w->fired, 1, __ATOMIC_SEQ_CST) != 0) {
-        /* (the second: what the default action would have done, said) */
-        say(w->again, w->again_length);
-        end_by_default(sig);
+    if (LOAD(w->once) && __atomic_exchange_n(&w->fired, 1, __ATOMIC_SEQ_CST) != 0) {
+        /* (the second: what the default action would have done, said if
+           standard error takes it at once) */
+        end_by_default(sig, w->again, w->again_length, 0);
         errno = saved;
         return;
     }
@@ -186,6 +198,7 @@ static void on_signal(int sig, siginfo_t *info, void *context)
         wake(w);
     errno = saved;
     w->runtime_action.sa_sigaction(sig, info, context);
+    errno = saved;
 }
 
 static double now_seconds(void)
@@ -199,8 +212,7 @@ static double now_seconds(void)
    all, as it would have ended without a handler. */
 static void end_by_signal(struct watch *w)
 {
-    say(w->message, w->length);
-    end_by_default(w->sig);
+    end_by_default(w->sig, w->message, w->length, 1000);
 }
 
 static void *watchdog(void *arg)
@@ -331,6 +343,11 @@ int afrp_grace_arm(int sig, int seconds, const char *message, const char *again)
     struct watch *w = watch_of(sig);
     if (w == NULL || seconds <= 0 || LOAD(w->armed) || sigaction(sig, NULL, &current) != 0
         || !wrappable(&current))
+        return -1;
+    /* (Ctrl-C: the runtime's own handler alone, called once; a program's
+       own, installed with installHandler, stays after each signal and is
+       left unwatched, as it was) */
+    if (sig == SIGINT && !(current.sa_flags & SA_RESETHAND))
         return -1;
     pthread_once(sig == SIGTERM ? &term_started : &int_started,
                  sig == SIGTERM ? start_term_watchdog : start_int_watchdog);

@@ -8,7 +8,7 @@ import           Control.Monad       (forM, forM_, replicateM_)
 import           Data.Maybe          (isJust)
 import           System.Environment  (getArgs, getEnvironment, getExecutablePath, lookupEnv, setEnv, unsetEnv, withProgName)
 import           Control.Concurrent  (threadDelay)
-import           System.Process      (CreateProcess (..), ProcessHandle, StdStream (..), createProcess,
+import           System.Process      (CreateProcess (..), ProcessHandle, StdStream (..), createPipe, createProcess,
                                       getPid, getProcessExitCode, interruptProcessGroupOf, proc,
                                       readCreateProcessWithExitCode,
                                       terminateProcess, waitForProcess)
@@ -625,7 +625,7 @@ spec = do
         (length frames > 0, all ((== 15 + 3 * 120 * 120) . BS.length) frames, length temps <= 1, length (lines err))
           `shouldBe` (True, True, True, 1)
   describe "a second Ctrl-C" $
-    forM_ [1, 2 :: Int] $ \caps ->
+    forM_ [1, 2 :: Int] $ \caps -> do
       it ("ends the program at once, by SIGINT, as the runtime's does, but saying so (+RTS -N" ++ show caps ++ ")") $
         withTempDir $ \dir -> do
           spin <- childOn "spin" dir caps
@@ -642,6 +642,22 @@ spec = do
           done `shouldSatisfy` (`elem` [Just (ExitFailure (-2)), Just (ExitFailure 130)])
           err `shouldSatisfy` ("Ctrl-C (SIGINT) received a second time: ending now, without waiting for the run to stop" `isInfixOf`)
           err `shouldNotSatisfy` ("has not been able to act" `isInfixOf`)
+      it ("ends the program at once with its standard error a full pipe, the message left out (it waited for ever to write it) (+RTS -N" ++ show caps ++ ")") $
+        withTempDir $ \dir -> do
+          spin <- childOn "spin" dir caps
+          (r, w) <- createPipe
+          -- (a pipe's 64 KiB, filled before the child starts: nobody reads it)
+          BS.hPut w (BS.replicate 65536 46)
+          (_, _, _, ph) <- createProcess spin { create_group = True, std_out = NoStream, std_err = UseHandle w }
+          awaitChild "did not begin its loop" (doesFileExist (dir </> "spinning")) ph
+          threadDelay 200000
+          interruptProcessGroupOf ph
+          threadDelay 1000000
+          interruptProcessGroupOf ph
+          done <- timeout ((stuckGrace - 5) * 1000000) (waitForProcess ph)
+          _ <- maybe (killChild ph) pure done
+          hClose r
+          done `shouldSatisfy` (`elem` [Just (ExitFailure (-2)), Just (ExitFailure 130)])
   describe "a run's thread that holds the stop off (masked) once the signal has been taken" $
     forM_ [1, 2 :: Int] $ \caps -> do
       forM_ [ ("held", "", term), ("heldtwice", ", a second SIGTERM come meanwhile", term)

@@ -57,8 +57,18 @@
 -- for the first Ctrl-C only. A second Ctrl-C during a watched run still
 -- ends the program at once, by @SIGINT@ (130), without the outputs not
 -- yet written, but now says so on standard error. A program that has
--- replaced or removed that handler (or that ignores Ctrl-C) gets no
--- watchdog for it, and the runtime's silent second Ctrl-C. Neither
+-- replaced that handler with its own ('installHandler' of a 'Catch') or
+-- removed it ('Ignore', 'Default') gets no watchdog for it, and its own
+-- handling. (A program started with Ctrl-C ignored, as a non-interactive
+-- shell starts its background jobs, still takes it: the runtime installs
+-- its handler whatever the program started with, where @SIGTERM@ stays
+-- ignored.) On several capabilities, a Ctrl-C whose collection cannot
+-- complete (a thread other than the main one looping without allocating)
+-- ends the program at the grace, as @SIGTERM@ does: before, the main
+-- thread was sent its 'UserInterrupt' at once. The watchdog's messages
+-- are written only as far as standard error takes them (within a second
+-- for the stuck run's, at once for the second Ctrl-C's): a pipe nobody
+-- reads does not keep the program from ending. Neither
 -- signal is watched in a program built without @-threaded@: its runtime
 -- waits, whole, for a blocking call such as the video's assembly, and
 -- could not be told from a stuck one. Code compiled with
@@ -79,7 +89,7 @@ import           Data.IORef
 import           Control.Concurrent (forkIO, rtsSupportsBoundThreads, throwTo)
 import           Control.Concurrent.MVar (newEmptyMVar, putMVar, readMVar, takeMVar)
 import           Control.Monad      (unless)
-import           Control.Exception  (AsyncException (UserInterrupt), finally, mask)
+import           Control.Exception  (AsyncException (UserInterrupt), finally, uninterruptibleMask, uninterruptibleMask_)
 import           Data.Dynamic       (toDyn)
 import           Foreign.C.String   (CString, withCString)
 import           Foreign.C.Types    (CInt (..))
@@ -236,13 +246,14 @@ watchedUntilDone sig deliver = do
 -- that a Ctrl-C between the two is watched whole or not at all; without a
 -- watchdog (another run has it, or there is no runtime's handler to stand
 -- in front of: one replaced, removed, ignored, or called already) the
--- entry is put back at once and @body@ runs as before. (Masked until the
--- entry is sure to be put back: an exception between would leave a
--- wrapper waiting for ever.)
+-- entry is put back at once and @body@ runs as before. (Masked, so that
+-- not even the wait for the table's lock is interrupted, until the entry
+-- is sure to be put back: an exception between would leave a wrapper
+-- waiting for ever.)
 watchingCtrlC :: String -> IO a -> IO a
 watchingCtrlC prog body
   | not rtsSupportsBoundThreads = body
-  | otherwise = mask $ \restore -> do
+  | otherwise = uninterruptibleMask $ \restore -> do
       previous <- newEmptyMVar
       -- (the runtime's action is known once the swap has given it back:
       -- a Ctrl-C that comes between runs its wrapper, which waits for it)
@@ -260,7 +271,7 @@ watchingCtrlC prog body
           _ <- setHandler sigINT (Just (watchedAction, described))
           (== 0) <$> arm sigINT (stuckMessage "Ctrl-C (SIGINT)" prog) (againMessage prog)
       if not armed then setHandler sigINT old >> restore body
-      else restore body `finally` (graceRemove sigINT >> () <$ setHandler sigINT old)
+      else restore body `finally` uninterruptibleMask_ (graceRemove sigINT >> () <$ setHandler sigINT old)
 
 -- @arm sig stuck again@: 'graceArm' with the grace and the two messages.
 arm :: CInt -> String -> String -> IO CInt
@@ -272,7 +283,7 @@ arm sig stuck again =
 againMessage :: String -> String
 againMessage prog =
   prog ++ ": Ctrl-C (SIGINT) received a second time: ending now, without waiting for the run to stop, "
-  ++ "and without its outputs not yet written (the frames and log lines written so far are kept). A first "
+  ++ "and without writing the outputs not yet written (the frames and log lines written so far are kept). A first "
   ++ "Ctrl-C stops the run and writes its outputs.\n"
 
 -- What a program stuck past the grace says, @signal@ the signal it was
