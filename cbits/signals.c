@@ -165,18 +165,24 @@ static void say(const char *text, size_t length, int wait_ms)
 /* The program ended by `sig`'s default action, after the message (said
    as `say` does): the default action put back first, so that the same
    signal sent again meanwhile ends the program at once; then the signal
-   sent again, taken by a thread that does not block it (this one, once
-   its handler returns, if it is in one); should none take it within a
-   second, the program ends as a shell would report it. */
-static void end_by_default(int sig, const char *text, size_t length, int wait_ms)
+   sent again, and unblocked in this thread (blocked in its handler, or in
+   the watchdog's thread), so that it is taken here if no other thread
+   takes it first (pthread_sigmask is safe in a signal handler); should
+   it somehow not be taken within a second, the program ends as a shell
+   would report it. */
+static _Noreturn void end_by_default(int sig, const char *text, size_t length, int wait_ms)
 {
     struct sigaction dfl;
+    sigset_t just;
     memset(&dfl, 0, sizeof dfl);
     dfl.sa_handler = SIG_DFL;
     sigemptyset(&dfl.sa_mask);
     sigaction(sig, &dfl, NULL);
     say(text, length, wait_ms);
     kill(getpid(), sig);
+    sigemptyset(&just);
+    sigaddset(&just, sig);
+    pthread_sigmask(SIG_UNBLOCK, &just, NULL);
     sleep(1);
     _exit(128 + sig);
 }
@@ -191,8 +197,6 @@ static void on_signal(int sig, siginfo_t *info, void *context)
         /* (the second: what the default action would have done, said if
            standard error takes it at once) */
         end_by_default(sig, w->again, w->again_length, 0);
-        errno = saved;
-        return;
     }
     if (LOAD(w->armed) && __atomic_exchange_n(&w->pending, 1, __ATOMIC_SEQ_CST) == 0)
         wake(w);

@@ -59,16 +59,18 @@
 -- yet written, but now says so on standard error. A program that has
 -- replaced that handler with its own ('installHandler' of a 'Catch') or
 -- removed it ('Ignore', 'Default') gets no watchdog for it, and its own
--- handling. (A program started with Ctrl-C ignored, as a non-interactive
+-- handling (one of its own called once, a 'CatchOnce', is watched as the
+-- runtime's is). (A program started with Ctrl-C ignored, as a non-interactive
 -- shell starts its background jobs, still takes it: the runtime installs
 -- its handler whatever the program started with, where @SIGTERM@ stays
 -- ignored.) On several capabilities, a Ctrl-C whose collection cannot
 -- complete (a thread other than the main one looping without allocating)
 -- ends the program at the grace, as @SIGTERM@ does: before, the main
 -- thread was sent its 'UserInterrupt' at once. The watchdog's messages
--- are written only as far as standard error takes them (within a second
--- for the stuck run's, at once for the second Ctrl-C's): a pipe nobody
--- reads does not keep the program from ending. Neither
+-- are written only as far as standard error takes them (the stuck run's
+-- waiting a second at most for each part it writes, one part in practice;
+-- the second Ctrl-C's not waiting): a pipe nobody reads does not keep the
+-- program from ending. Neither
 -- signal is watched in a program built without @-threaded@: its runtime
 -- waits, whole, for a blocking call such as the video's assembly, and
 -- could not be told from a stuck one. Code compiled with
