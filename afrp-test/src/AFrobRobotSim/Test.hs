@@ -71,6 +71,7 @@ import           AFRP.Geometry        (Point2 (..))
 import           AFrob.Dimensions     (RobotId, RobotType)
 import           AFrobRobotSim
 import           AFrobRobotSim.Simulator (forceWorldState)
+import           AFrobRobotSim.Options.Check (readableNumber)
 import           AFrobRobotSim.World  (objectHalfSize, robotKindOf)
 import           AFrobRobotSim.Log    (LogConfig (..), LogSummary (..), RunLog (..), defaultLogConfig,
                                        logFrames, logHeader)
@@ -535,11 +536,11 @@ forAllRuns file config duration rcA rcB gen p =
     -- asks for it; the page takes it out of the cell, so that QuickCheck,
     -- which holds on to this property's callbacks while it runs them,
     -- does not keep the start of the run while the page is recorded)
-    -- (the samples of the second run that explaining has read, counted
-    -- as it reads them: the page of a predicate that throws ends 5 s past
-    -- the last)
-    samplesRead <- newIORef (0 :: Int)
-    rerun <- countingSamples samplesRead (runStream config duration w rcA rcB)
+    -- (the index of the last sample of the second run that explaining has
+    -- read, kept as it reads: the page of a predicate that throws ends 5 s
+    -- past it)
+    lastRead <- newIORef (0 :: Int)
+    rerun <- countingSamples lastRead (runStream config duration w rcA rcB)
     let explanation = explainT (p w) rerun
     cell <- newIORef rerun
     pure $
@@ -547,7 +548,7 @@ forAllRuns file config duration rcA rcB gen p =
                          wrotePage <- wroteOrNot "its run's replay page" page $ do
                            states <- readIORef cell
                            writeIORef cell []
-                           (upTo, decided) <- pageEnd explanation samplesRead
+                           (upTo, decided) <- pageEnd explanation lastRead
                            -- (the run up to upTo is the start of this one;
                            -- its first sample at least, so that a run
                            -- runStream refuses, of a negative duration,
@@ -565,7 +566,7 @@ forAllRuns file config duration rcA rcB gen p =
     -- failure, the page then ends at the failure; a predicate that throws
     -- at the start of a run of 10^6 s made a page of the whole run; an
     -- asynchronous exception, such as a timeout's, is not caught)
-    pageEnd explanation samplesRead = do
+    pageEnd explanation lastRead = do
       decided <- tryJust synchronous (evaluate (case explanation of
                                                   Nothing -> Nothing
                                                   Just e  -> let d@(t, line) = (explTime e, decidedLine e)
@@ -573,20 +574,21 @@ forAllRuns file config duration rcA rcB gen p =
                                                              -- so that they do not hold the run's start
                                                              -- while the page is recorded)
                                                              in t `seq` length line `seq` length (explAround e) `seq` Just d))
-      lastRead <- max 0 . subtract 1 <$> readIORef samplesRead
+      lastIndex <- readIORef lastRead
       pure $ case decided of
         Right (Just d@(t, _)) -> (min duration (t + 5), Just d)
-        _                     -> (min duration (fromIntegral lastRead * simDt config + 5), Nothing)
+        _                     -> (min duration (fromIntegral lastIndex * simDt config + 5), Nothing)
 
--- The stream as it is, counting into the cell the samples read from it
--- (a sample counts when the list's cell that holds it is first taken
--- apart), so that what a consumer that throws had read is known.
+-- The stream as it is, keeping in the cell the index of the last sample
+-- read from it (0 before any: a sample is read when the list's cell that
+-- holds it is first taken apart), so that what a consumer that throws
+-- had read is known.
 countingSamples :: IORef Int -> SignalSampleStream a -> IO (SignalSampleStream a)
-countingSamples counter = go 1
+countingSamples lastRead = go 0
   where
     go !k xs = unsafeInterleaveIO $ case xs of
       []       -> pure []
-      x : more -> writeIORef counter k >> (x :) <$> go (k + 1) more
+      x : more -> writeIORef lastRead k >> (x :) <$> go (k + 1) more
 
 -- | @worldFileText config world@: @world@ in the world-file format
 -- ('renderWorld'), as the run of @config@ saw it: a world without an
@@ -601,14 +603,12 @@ worldFileText config world
   | isJust (worldSize world) || bounds == notesBounds = renderWorld world
   | bounds == sizeBounds w h && all sizeSide [w, h] = renderWorld (OTSize w h : world)
   | otherwise = "# the run's world was [" ++ show x0 ++ ", " ++ show x1 ++ "] x [" ++ show y0 ++ ", " ++ show y1
-                ++ "] (simBounds), which a size line (centred, each side " ++ metres minWorldSide ++ " to "
-                ++ metres maxWorldSide ++ " m) cannot say\n" ++ renderWorld world
+                ++ "] (simBounds), which a size line (centred, each side " ++ readableNumber minWorldSide ++ " to "
+                ++ readableNumber maxWorldSide ++ " m) cannot say\n" ++ renderWorld world
   where
     bounds@(Bounds x0 y0 x1 y1) = simBounds config
     (w, h) = (x1 - x0, y1 - y0)
     sizeSide v = v >= minWorldSide && v <= maxWorldSide
-    -- (a whole number of metres without its ".0")
-    metres v = let r = round v :: Integer in if fromIntegral r == v then show r else show v
 
 -- | @runReplayPage config duration world rcA rcB@: the self-contained
 -- HTML replay page ("AFrobRobotSim.Replay") of the run of 'runStream',
