@@ -4,7 +4,10 @@
 -- the answer; run it with @+RTS -s@ and read the maximum residency. The
 -- kind @runT@ checks a predicate on every world state of a run of three
 -- simbots for N steps of 0.01 s with 'runT', and the kind @onRobot@ one on
--- the states of one of them ('onRobot'); the kind @page@ writes that
+-- the states of one of them ('onRobot'), and the kind @runTLate@ one
+-- that fails at the run's last step (decided and explained there); the
+-- kind @explain@ explains a predicate that fails at the last of @N + 1@
+-- samples ('explainT'); the kind @page@ writes that
 -- run's replay page ('writeRunReplayPage', to a file in the system's
 -- temporary folder, removed after) and prints its size in bytes. With no
 -- arguments, every kind on 10^5 samples, the runs on 10^4 steps and the
@@ -38,6 +41,11 @@ predicates =
   , ("until",      Until (is (>= 0)) (is (< 0)))
   , ("window",     Always (alwaysFor 0.05 (is (>= 0))))
   , ("nested",     Always (Implies (is (>= 0)) (Eventually (is (>= 0)))))
+    -- (owing one Eventually that never comes: once, however many samples
+    -- owe it)
+  , ("never",      Always (Implies (is (>= 0)) (Eventually (is (< 0)))))
+    -- (a connective whose first operand the end decides)
+  , ("both",       And (Eventually (is (< 0))) (Always (is (>= 0))))
   ]
   where is f = SP (arr f)
 
@@ -55,6 +63,18 @@ runOf n = isSuccess <$> quickCheckWithResult stdArgs { maxSuccess = 1, chatty = 
 onRobotOf :: Int -> IO Bool
 onRobotOf n = isSuccess <$> quickCheckWithResult stdArgs { maxSuccess = 1, chatty = False }
   (runT defaultSimConfig (fromIntegral n / 100) wander wander (onRobot "SimbotA" 2 (Always (SP (arr ((== 2) . robotId))))) world)
+
+-- | 'runT' of "the run has not reached its end" on that run of @n@
+-- steps: false, decided (and explained) at its last step.
+lateOf :: Int -> IO Bool
+lateOf n = isSuccess <$> quickCheckWithResult stdArgs { maxSuccess = 1, chatty = False }
+  (runT defaultSimConfig duration wander wander (Always (SP (arr ((< duration - 0.005) . wsTime)))) world)
+  where duration = fromIntegral n / 100
+
+-- | 'explainT' of "the value is below N" on the stream of @N + 1@
+-- samples: false at the last one, where it is explained.
+explainedAt :: Int -> Maybe Int
+explainedAt n = fmap explFrame (explainT (Always (SP (arr (< fromIntegral n)))) (stream n))
 
 -- | The replay page of that run of @n@ steps, written and removed: its
 -- size in bytes.
@@ -83,10 +103,15 @@ main = do
       mapM_ (\(name, p) -> putStrLn (name ++ " " ++ show (evalT p (stream 100000)))) predicates
       runOf 10000 >>= putStrLn . ("runT " ++) . show
       onRobotOf 10000 >>= putStrLn . ("onRobot " ++) . show
+      lateOf 10000 >>= putStrLn . ("runTLate " ++) . show
+      putStrLn ("explain " ++ show (explainedAt 100000))
       pageOf 1000 >>= putStrLn . ("page " ++) . show
     ["runT", n] | [(k, "")] <- reads n, k >= 0 -> runOf k >>= print
     ["onRobot", n] | [(k, "")] <- reads n, k >= 0 -> onRobotOf k >>= print
     ["page", n] | [(k, "")] <- reads n, k >= 0 -> pageOf k >>= print
+    ["runTLate", n] | [(k, "")] <- reads n, k >= 0 -> lateOf k >>= print
+    ["explain", n] | [(k, "")] <- reads n, k >= 0 -> print (explainedAt k)
     [name, n] | Just p <- lookup name predicates, [(k, "")] <- reads n, k >= 0 ->
       print (evalT p (stream k))
-    _ -> die ("usage: afrp-test-residency [KIND N], KIND one of runT onRobot page " ++ unwords (map fst predicates))
+    _ -> die ("usage: afrp-test-residency [KIND N], KIND one of runT runTLate onRobot page explain "
+              ++ unwords (map fst predicates))

@@ -391,12 +391,10 @@ synchronous e = case fromException e of
 -- counterexample says at which instant it was decided false, with the
 -- world states around it ('showWorldState').
 --
--- Memory: deciding keeps no more of the run than the predicate looks
--- ahead ('evalT': a predicate like @Always (SP ...)@ holds one world state
--- at a time, so an hour's run costs no more than a minute's); the failing
--- world that QuickCheck reports (not each one met while shrinking) is run
--- a second time to be explained, and that run is kept up to about twice
--- the instant that decided ('explainT').
+-- The run is made once, as it is checked ('explainT'), and kept no
+-- more than the predicate owes ('evalT': a predicate like @Always (SP
+-- ...)@ holds one world state at a time, so an hour's run costs no more
+-- memory than a minute's, whether it fails early, late or not at all).
 --
 -- The run ends at its last whole time step within @duration@ (at
 -- @duration@ when 'simDt' divides it): a deadline beyond it has not
@@ -406,28 +404,16 @@ synchronous e = case fromException e of
 runT :: SimConfig -> Time -> SimbotController -> SimbotController -> TPred WorldState
      -> WorldTemplate -> Property
 runT config duration rcA rcB p world =
-  -- (the run is made anew to explain a failure, since explaining keeps
-  -- it: deciding alone keeps only what the predicate looks ahead, see
-  -- 'evalT')
-  decideRun p (\() -> runStream config duration world rcA rcB)
-            (explainT p (runStream config duration world rcA rcB))
+  explainedRun (explainT p (runStream config duration world rcA rcB))
 
--- @decideRun p run explanation@: 'runT' of @run ()@, a failure explained
--- by @explanation@ (of a run of its own: 'forAllRuns' writes the page
--- from the same run). The run to decide is made here, and not kept.
-decideRun :: TPred WorldState -> (() -> SignalSampleStream WorldState) -> Maybe (Explanation WorldState) -> Property
-decideRun p run explanation
-  -- (a run has a sample at time 0 at least: never the empty stream that
-  -- 'propT' refuses)
-  | evalT p (run ()) = property True
-  | otherwise = counterexample explained False
+-- @explainedRun explanation@: 'runT''s property of a run's 'explainT':
+-- a failure printed with the world states around the instant that
+-- decided. (The run is read as the property is, once.)
+explainedRun :: Maybe (Explanation WorldState) -> Property
+explainedRun explanation = case explanation of
+  Nothing -> property True
+  Just e  -> counterexample (explanationText e) False
   where
-    -- (made only when QuickCheck prints it, for the world it reports:
-    -- not for each failing world met while shrinking, which costs a run
-    -- each. 'explainT' decides as 'evalT' does, so it finds the failure)
-    explained = maybe ("decided false, but explaining the run found no instant that decides it:"
-                       ++ " evalT and explainT disagree (a fault of afrp-test; please report it)")
-                      explanationText explanation
     explanationText e = unlines $
       (decidedLine e ++ ":")
       : [ (if j == explFrame e then "  > " else "    ") ++ showWorldState ws | (j, _, ws) <- explAround e ]
@@ -514,13 +500,10 @@ robotOf ty i = (sscan (\k _ -> k + 1) (-1) &&& arr id) >>> arr (\(k, ws) -> find
 -- (step 338)@ in its heading and its summary): 'writeFalsifiedRunReplayPage'.
 -- A page of a controller's failure ('writeRunReplayPage') says the failure.
 -- A predicate that throws (an 'onRobot' of a robot not there, say)
--- decides nothing: its page ends 5 s past the last sample that
--- explaining the run read (the one after the sample it threw at, which
--- explaining looks at too), and the report shows the exception.
--- Each world is run once to decide, as by 'runT', and the world
--- QuickCheck reports once more: that run is both explained and the
--- page's, and kept as 'runT' keeps it to explain it (the page beyond is
--- recorded as it goes).
+-- decides nothing: its page ends 5 s past the sample it threw at, and
+-- the report shows the exception. Each world is run once to decide and
+-- explain it, as by 'runT' and in its memory, and the world QuickCheck
+-- reports once more for its page, recorded as the run goes.
 --
 -- > forAllRuns "failing.world" defaultSimConfig 20 rcA rcB
 -- >   (genWorld defaultWorldMix notesBounds)
@@ -529,51 +512,41 @@ forAllRuns :: FilePath -> SimConfig -> Time -> SimbotController -> SimbotControl
            -> Gen WorldTemplate -> (WorldTemplate -> TPred WorldState) -> Property
 forAllRuns file config duration rcA rcB gen p =
   forAllShrinkShow gen shrinkWorld (worldFileText config) $ \w -> idempotentIOProperty $ do
-    -- (a failing world is run twice, as by 'runT': once to decide, which
-    -- keeps only what the predicate looks ahead, and once more for the
-    -- world QuickCheck reports, which explains the failure and makes the
-    -- page. That second run is made only if the page or the explanation
-    -- asks for it; the page takes it out of the cell, so that QuickCheck,
-    -- which holds on to this property's callbacks while it runs them,
-    -- does not keep the start of the run while the page is recorded)
-    -- (the index of the last sample of the second run that explaining has
-    -- read, kept as it reads: the page of a predicate that throws ends 5 s
-    -- past it)
+    -- (each world is run once to decide and explain it, in the memory
+    -- the predicate owes, counting the samples it reads: the page of a
+    -- predicate that throws ends 5 s past the last one; the world
+    -- QuickCheck reports is run once more, for its page, only as far as
+    -- the page shows)
     lastRead <- newIORef (0 :: Int)
-    rerun <- countingSamples lastRead (runStream config duration w rcA rcB)
-    let explanation = explainT (p w) rerun
-    cell <- newIORef rerun
+    run <- countingSamples lastRead (runStream config duration w rcA rcB)
+    let explanation = explainT (p w) run
     pure $
       reportingAfter (do wroteWorld <- wroteOrNot "the world" file (writeFile file (worldFileText config w))
                          wrotePage <- wroteOrNot "its run's replay page" page $ do
-                           states <- readIORef cell
-                           writeIORef cell []
                            (upTo, decided) <- pageEnd explanation lastRead
-                           -- (the run up to upTo is the start of this one;
-                           -- its first sample at least, so that a run
-                           -- runStream refuses, of a negative duration,
-                           -- is its error here, not a page of no frame)
+                           -- (the run up to upTo; its first sample at
+                           -- least, so that a run runStream refuses, of a
+                           -- negative duration, is its error here, not a
+                           -- page of no frame)
                            recordRunPage decided page config w
-                                         (take (max 1 (stepsWithin config upTo + 1)) (map snd states))
+                                         (take (max 1 (stepsWithin config upTo + 1))
+                                               (map snd (runStream config duration w rcA rcB)))
                          pure ("(" ++ wroteWorld ++ "; " ++ wrotePage ++ ")"))
-                     (decideRun (p w) (\() -> runStream config duration w rcA rcB) explanation)
+                     (explainedRun explanation)
   where
     page = file ++ ".html"
-    -- (the instant that decided and the line runT prints of it, from the
-    -- explanation it prints, evaluated here whole; a controller's
-    -- failure or a predicate that throws leaves no instant, and the page
-    -- ends 5 s past the last sample explaining read: after a controller's
-    -- failure, the page then ends at the failure; a predicate that throws
-    -- at the start of a run of 10^6 s made a page of the whole run; an
-    -- asynchronous exception, such as a timeout's, is not caught)
+    -- (the instant that decided and the line runT prints of it; a
+    -- controller's failure or a predicate that throws leaves no instant,
+    -- and the page ends 5 s past the last sample deciding read: after a
+    -- controller's failure, the page then ends at the failure; a
+    -- predicate that throws at the start of a run of 10^6 s made a page
+    -- of the whole run; an asynchronous exception, such as a timeout's,
+    -- is not caught)
     pageEnd explanation lastRead = do
       decided <- tryJust synchronous (evaluate (case explanation of
                                                   Nothing -> Nothing
                                                   Just e  -> let d@(t, line) = (explTime e, decidedLine e)
-                                                             -- (the frames around the instant made now,
-                                                             -- so that they do not hold the run's start
-                                                             -- while the page is recorded)
-                                                             in t `seq` length line `seq` length (explAround e) `seq` Just d))
+                                                             in t `seq` length line `seq` Just d))
       lastIndex <- readIORef lastRead
       pure $ case decided of
         Right (Just d@(t, _)) -> (min duration (t + 5), Just d)

@@ -682,9 +682,9 @@ specWithFiles = do
         page <- readFile (file ++ ".html")
         length page `seq` mapM_ removeFile [file, file ++ ".html"]
         output result `shouldSatisfy` ("the predicate gave up" `isInfixOf`)
-        -- (explaining read the sample that threw, at 1 s, and the one
-        -- after it: a frame at every step of 0.05 s from time 0 to 6.05 s)
-        occurrences "\"frame\"" page `shouldBe` 122
+        -- (explaining read up to the sample that threw, at 1 s: a frame
+        -- at every step of 0.05 s from time 0 to 6 s)
+        occurrences "\"frame\"" page `shouldBe` 121
       Just result -> expectationFailure ("the predicate that throws passed: " ++ output result)
 
   it "forAllRuns: a controller that fails soon after the instant that decided ends the page there (it gave a page of no frame)" $ \tmp -> do
@@ -704,7 +704,7 @@ specWithFiles = do
         occurrences "\"frame\"" page `shouldBe` 30
       _ -> expectationFailure ("the run was not found to fail: " ++ output result)
 
-  it "forAllRuns runs the world it reports twice, once to decide and once to explain it and write its page (it ran it four times)" $ \tmp -> do
+  it "forAllRuns runs the world it reports twice, once to decide and explain it and once for its page (it ran it four times)" $ \tmp -> do
     -- (one robot, so that a start of its controller is a run; shrinking
     -- keeps a world's only robot, so it tries no other world)
     let file = tmp </> "afrp-test-runs.world"
@@ -722,7 +722,8 @@ specWithFiles = do
     -- (a controller that fails: deciding stops at the failure, which
     -- the page then shows; it ran it three times)
     runsOf throwsAt3 neverStuck `shouldReturn` (False, 2)
-    -- (a predicate that throws: the page is of the run that explained)
+    -- (a predicate that throws: the page ends 5 s past where deciding
+    -- stopped)
     runsOf straight (Always (SP (arr (\ws -> wsTime ws < 1 || error "the predicate gave up")))) `shouldReturn` (False, 2)
     mapM_ removeFile [file, file ++ ".html"]
     -- (three worlds that pass, each run once)

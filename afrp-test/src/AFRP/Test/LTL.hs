@@ -11,9 +11,11 @@
 -- 'Bool' ('SP'); each atom runs once over the whole stream from time 0, so
 -- an atom under 'Always' or 'Eventually' keeps its state from sample to
 -- sample, and the truth of @SP sf@ at a sample is @sf@'s output there. This
--- is yampa-test's meaning; afrp evaluates each atom once and combines the
--- truth values sample by sample from the end, so a predicate costs time
--- linear in the stream (times the window for the time-bounded forms).
+-- is yampa-test's meaning. afrp reads the stream once, from time 0,
+-- carrying forward what the formula still owes the samples to come, and
+-- stops at the sample that decides: a predicate costs time linear in the
+-- stream (times the windows open at once, for the time-bounded forms) and
+-- keeps no sample (see 'evalT').
 --
 -- A finite stream ends: each operator says below what it means at the last
 -- sample, where there is no next one. The rule, as in yampa-test, is that
@@ -60,7 +62,15 @@ module AFRP.Test.LTL
   , tPredOn
   ) where
 
-import           AFRP             (DTime, SF, arr, iPre, sscan, (&&&), (>>>))
+import           Data.IntMap      (IntMap)
+import qualified Data.IntMap      as IntMap
+import           Data.IntSet      (IntSet)
+import qualified Data.IntSet      as IntSet
+import           Data.Set         (Set)
+import qualified Data.Set         as Set
+
+import           AFRP             (DTime, SF, arr, evalAt, evalAtZero, iPre, localTime, sscan,
+                                   (&&&), (>>>))
 
 import           AFRP.Test.Stream
 
@@ -133,138 +143,29 @@ checkBound name d
 -- has no time 0: every predicate is true on it (so there @Not p@ is not
 -- the complement of @p@); the generators never produce it.
 --
--- Memory: the outermost 'Always', 'Eventually' and 'Until' are folded
--- from time 0 on, stopping as soon as the answer is known. Connectives
--- above them ('And', 'Or', 'Implies') decide their operands one after the
--- other, the second only when the first does not decide: the stream is
--- kept while the first is decided, as far as it reads (so @And (Always
--- p) (Eventually q)@ keeps what @Always p@ reads; give two such
--- properties as two checks to keep memory bounded). Under them, what a
--- predicate keeps of a stream made lazily is what it must look ahead:
--- 'Next' one sample, a time-bounded form its window, and a nested
--- 'Always', 'Eventually' or 'Until' the samples up to the next one that
--- decides it whatever follows ('Always' a false, 'Eventually' a true,
--- 'Until' its second argument true or its first false). So @Always (Implies p (Eventually
--- q))@ keeps the samples between two where @q@ holds: constant memory
--- when @q@ holds now and then, the whole stream when it never does. (The
--- stream itself is kept only by whoever else holds it.)
+-- How it is decided: the stream is read once, from time 0, and reading
+-- stops at the first sample after which the answer is known whatever
+-- samples follow: an 'Always' broken, an 'Eventually' met, at any depth
+-- of the formula and in either operand of a connective (so @And (Always
+-- p) (Eventually q)@ stops where @p@ first fails, even if @q@ never
+-- holds). Memory: no sample is kept, only what the formula still owes
+-- the samples to come, each obligation once however often it arose:
+-- @Always (Implies p (Eventually q))@ owes one @Eventually q@ however
+-- many samples of @p@ wait for it, so it runs in constant memory whether
+-- @q@ holds now and then or never. A time-bounded form owes one window
+-- for each sample whose window is still open (@Always (eventuallyWithin
+-- d p)@: the samples of the last @d@ seconds, at most). Time: linear in
+-- the stream, times the obligations owed at once.
+--
+-- Atoms: every atom runs from time 0 of the stream. It is stepped at each
+-- sample while some part of the formula containing it is undecided (its
+-- state is evaluated there, so that it holds no samples), and dropped
+-- once none is; its output at a sample is evaluated only where the
+-- formula reads it.
 evalT :: TPred a -> SignalSampleStream a -> Bool
-evalT _ [] = True
-evalT p0 s = atStart p0 == T
-  where
-    -- (the truth at time 0; every truth list is as long as the stream,
-    -- which is not empty)
-    atStart p = case p of
-      -- (the second operand only when the first does not decide)
-      And a b      -> case atStart a of { F -> F; va -> min va (atStart b) }
-      Or a b       -> case atStart a of { T -> T; va -> max va (atStart b) }
-      Not a        -> notTri (atStart a)
-      Implies a b  -> case atStart a of { F -> T; va -> max (notTri va) (atStart b) }
-      -- (at the end of the closed stream: 'Always' meets true, 'Eventually' false)
-      Always a     -> foldStoppingAt F min T (everywhere a)
-      Eventually a -> foldStoppingAt T max F (everywhere a)
-      Until a b    -> untilFromStart T F (zip (everywhere a) (everywhere b))
-      _            -> case everywhere p of
-        v : _ -> v
-        []    -> T
-    everywhere p = truths Closed maxBound p s
-    foldStoppingAt stop op = go
-      where go !acc (v : vs) | acc /= stop = go (op acc v) vs
-            go acc _                       = acc
-    -- @a `Until` b@ at time 0 is the disjunction, over the samples i, of
-    -- b at i with a at every sample before i, and of a everywhere with
-    -- the end's true: left to right, with @before@ the conjunction of a
-    -- so far and @acc@ the disjunction so far.
-    untilFromStart !before !acc vs = case vs of
-      _ | acc == T || before == F -> acc
-      []                          -> max acc before
-      (va, vb) : rest             -> untilFromStart (min before va) (max acc (min before vb)) rest
-
--- Three truth values: false, unknown (decided by samples not yet seen),
--- true; 'min' is conjunction and 'max' disjunction (Kleene's logic).
-data Tri = F | U | T
-  deriving (Eq, Ord, Show)
-
-notTri :: Tri -> Tri
-notTri F = T
-notTri U = U
-notTri T = F
-
--- Whether the stream ends after the samples seen (the meaning at the end
--- applies) or may go on (what is beyond is unknown).
-data Ending = Closed | Open
-
--- | @truths ending m p s@: the truth of @p@ at each of the first @m@
--- samples of @s@. Times in a window are measured from its first sample
--- with the library's clock, and a sample within a billionth of the bound
--- (relative) counts as inside it: sums of steps like 0.1 round either way
--- (three steps of 0.1 read 0.30000000000000004), and a window of 0.3
--- should see them.
-truths :: Ending -> Int -> TPred a -> SignalSampleStream a -> [Tri]
-truths ending m p0 s = go p0
-  where
-    beyond = case ending of
-      Closed -> T
-      Open   -> U
-    go p = case p of
-      SP sf            -> map (\(_, b) -> if b then T else F) (take m (fst (evalSF sf s)))
-      And a b          -> zipWith min (go a) (go b)
-      Or a b           -> zipWith max (go a) (go b)
-      Not a            -> map notTri (go a)
-      Implies a b      -> zipWith max (map notTri (go a)) (go b)
-      Next a           -> drop 1 (go a) ++ [beyond | m > 0]
-      Always a         -> fromEnd (\v -> if v == F then Just F else Nothing) min beyond (go a)
-      Eventually a     -> fromEnd (\v -> if v == T then Just T else Nothing) max endEventually (go a)
-      Until a b        -> fromEnd (\(va, vb) -> if vb == T then Just T else if va == F then Just vb else Nothing)
-                                  (\(va, vb) next -> max vb (min va next)) beyond (zip (go a) (go b))
-      EventuallyWithin d a -> windowed d (go a) max F
-      AlwaysFor d a    -> windowed d (go a) min T
-    -- 'Eventually' at the last sample of a closed stream is its argument
-    -- there: the next value is false, not true.
-    endEventually = case ending of
-      Closed -> F
-      Open   -> U
-    -- Each value combined with the one at the next sample, from the end;
-    -- the last sample combines with the value beyond the end. A sample
-    -- whose value the next cannot change (@decided@: 'Always' at a false,
-    -- 'Eventually' at a true) ends a stretch: the stretch before it is
-    -- combined from it, without looking further, so the list comes out
-    -- lazily, holding one stretch at a time (memory bounded by the
-    -- distance between two such samples, not by the stream).
-    fromEnd :: (x -> Maybe Tri) -> (x -> Tri -> Tri) -> Tri -> [x] -> [Tri]
-    fromEnd decided f end = stretches
-      where
-        stretches vs = case untilDecided vs of
-          (before, Just (d, rest)) -> init (scanr f d before) ++ d : stretches rest
-          (before, Nothing)        -> init (scanr f end before)
-        untilDecided [] = ([], Nothing)
-        untilDecided (v : rest) = case decided v of
-          Just d  -> ([], Just (d, rest))
-          Nothing -> let (before, after') = untilDecided rest in (v : before, after')
-    -- The window of samples from each one to d seconds after it, folded;
-    -- if the stream seen so far reaches past the window, the window is
-    -- complete; if it is closed and its last sample is at the window's end
-    -- (at d, within the slack), too; otherwise the samples beyond decide
-    -- (unknown while the stream is open, since a sample of a step of 0
-    -- may still come at d; at the end of a closed stream the value given).
-    -- An infinite window never ends.
-    windowed d vs combine unit =
-      [ let elapsed = sampleTimes (sRestart suffix)  -- times from the suffix's start (read lazily: a
-                                                      -- predicate costs time linear in the stream times the window)
-            (inWindow, after') = span ((<= d + slack) . fst) (zip elapsed vsFrom)
-            slack = timeSlack d
-            reached = not (isInfinite d) && any ((>= d - slack) . fst) inWindow
-            end | not (null after') = unit
-                | otherwise         = case ending of
-                    Closed | reached   -> unit
-                           | otherwise -> T
-                    Open -> U
-        in foldr (combine . snd) end inWindow
-      | (suffix, vsFrom) <- zip (suffixes (take m s)) (suffixes vs) ]
-
-suffixes :: [x] -> [[x]]
-suffixes [] = []
-suffixes xs@(_ : xs') = xs : suffixes xs'
+evalT p s = case monitor p s of
+  Nothing -> True
+  Just _  -> False
 
 -- | Where a predicate failed on a stream.
 data Explanation a = Explanation
@@ -280,46 +181,330 @@ data Explanation a = Explanation
   } deriving (Show)
 
 -- | @explainT p s@ is 'Nothing' when @'evalT' p s@ holds, and otherwise
--- the first sample at which the predicate was decided false: the shortest
--- prefix of the stream that falsifies it whatever samples followed (the
--- whole stream, when only its end decides, as for 'Eventually'). It reads
--- the stream up to about twice that prefix (and what 'evalT' reads), so
--- a failure early in a long stream made lazily is explained without the
--- rest.
+-- the first sample at which the predicate was decided false: the
+-- shortest prefix of the stream after which the formula, operator by
+-- operator, is false whatever samples follow (the whole stream, when only
+-- its end decides, as for 'Eventually'). A formula false by logic alone
+-- (@And p (Not p)@ of an 'Eventually') is decided where the samples
+-- decide its parts, not at time 0.
+--
+-- It is 'evalT' with the samples around the deciding one kept: it reads
+-- the stream up to that sample and two more, in 'evalT''s memory, so a
+-- failure late in a long run made lazily is explained in the memory of
+-- an early one.
 explainT :: TPred a -> SignalSampleStream a -> Maybe (Explanation a)
-explainT p s
-  | evalT p s = Nothing
-  | otherwise = Just (explanationAt (grow 1))
-  where
-    ts = sampleTimes s
-    falseOpen k = case truths Open k p s of
-      (F : _) -> True
-      _       -> False
-    -- More samples only resolve unknowns (Kleene's logic is monotone), so
-    -- the prefixes that falsify are all those from some length on. The
-    -- lengths 1, 2, 4 ... are tried until one falsifies (or the stream
-    -- ends: the closed stream is the last resort), then a binary search
-    -- between the last two: only the samples up to twice the answer are
-    -- read, so a failure early in a long stream made lazily (a long run)
-    -- is explained without the rest.
-    grow k
-      | longerThan k = if falseOpen k then search (k `div` 2 + 1) k else grow (2 * k)
-      | otherwise    = search (k `div` 2 + 1) (length s)
-    longerThan k = not (null (drop k s))
-    search lo hi
-      | lo >= hi  = lo
-      | falseOpen mid = search lo mid
-      | otherwise = search (mid + 1) hi
-      where mid = (lo + hi) `div` 2
-    explanationAt k =
-      let i = k - 1
-      in Explanation
-           { explFrame  = i
-           , explTime   = ts !! i
-           , explAround = [ (j, t, a) | (j, t, a) <- takeWhile (\(j, _, _) -> j <= i + 2) (zip3 [0 ..] ts (samples s))
-                                      , j >= i - 3 ]
-           }
+explainT = monitor
 
+-- The monitor behind 'evalT' and 'explainT': the formula is carried
+-- forward sample by sample ("formula progression"). At each sample every
+-- temporal operator is split into what the sample decides now and what
+-- it owes the next samples ('Always a' is 'a' now and 'Always a' owed,
+-- 'Next a' is 'a' owed, 'eventuallyWithin d a' is 'a' now or its window
+-- owed while the window lasts); what is owed is a combination of
+-- obligations ('Res'), simplified by the constants: the answer is known
+-- when it is one.
+--
+-- This is exactly Kleene's three-valued reading of the formula on the
+-- samples seen so far, the samples beyond unknown: the combination is
+-- never a constant while an unknown could change it, because constants
+-- are simplified away wherever they occur and an obligation is unknown
+-- until its samples come. At the end of the stream the obligations
+-- left meet the end as each operator says ('closeRes').
+monitor :: TPred a -> SignalSampleStream a -> Maybe (Explanation a)
+monitor _ [] = Nothing
+monitor p ((_, a0) : rest0) = go 0 0 a0 res0 atoms0 clockZero0 [] rest0
+  where
+    (root, sfs) = compileT p
+    atoms0 = IntMap.fromDistinctAscList (zip [0 ..] [ evalAtZero sf a0 | sf <- sfs ])
+    res0 = now (Here 0 (fmap fst atoms0)) root
+    -- @go j t a res atoms clock recent rest@: at sample @j@ (time @t@,
+    -- value @a@), with @res@ what the formula is there; @atoms@ the atoms
+    -- started or stepped there, @clock@ the stream's clock, @recent@ up
+    -- to three samples before, newest first.
+    go !j !t a res atoms clock !recent rest = case res of
+      RConst True  -> Nothing
+      RConst False -> Just (explanation j t a recent clock rest)
+      _ -> case rest of
+        [] | closeRes res -> Nothing
+           | otherwise    -> Just (explanation j t a recent clock [])
+        (dt, a') : rest' ->
+          let !atoms' = stepAtoms (liveAtoms res) atoms dt a'
+              (t', clock') = evalAt clock dt ()
+              res' = advance (Here (j + 1) (fmap fst atoms')) dt res
+          in t' `seq` go (j + 1) t' a' res' atoms' clock' (keep3 (j, t, a) recent) rest'
+    keep3 x r = case r of
+      y : z : _ -> [x, y, z]
+      _         -> x : r
+    -- (the two samples after the deciding one, timed by the stream's clock)
+    explanation j t a recent clock rest = Explanation
+      { explFrame  = j
+      , explTime   = t
+      , explAround = reverse recent ++ (j, t, a) : after (j + 1) (2 :: Int) clock rest
+      }
+    after k n clock xs
+      | n <= 0    = []
+      | otherwise = case xs of
+          (dt, x) : xs' -> let (tk, clock') = evalAt clock dt () in (k, tk, x) : after (k + 1) (n - 1) clock' xs'
+          []            -> []
+    clockZero0 = snd (evalAtZero localTime ())
+
+-- The live atoms stepped by one sample (each state evaluated, so that an
+-- atom holds no chain of samples), the others dropped.
+stepAtoms :: IntSet -> IntMap (Bool, FutureSF a Bool) -> DTime -> a -> IntMap (Bool, FutureSF a Bool)
+stepAtoms live atoms dt a = IntMap.fromDistinctAscList
+  [ r | k <- IntSet.toAscList live
+      , Just (_, sf) <- [IntMap.lookup k atoms]
+      , let r = (k, evalAt sf dt a)
+      , snd (snd r) `seq` True ]
+
+-- A formula compiled for the monitor: each node numbered (the number
+-- names what a node owes, see 'Pending'), with the atoms below it; the
+-- atoms are numbered in the order of their signal functions.
+data Node = Node !Int !IntSet Shape
+
+data Shape
+  = NAtom !Int
+  | NAnd Node Node
+  | NOr Node Node
+  | NNot Node
+  | NImplies Node Node
+  | NAlways Node
+  | NEventually Node
+  | NNext Node
+  | NUntil Node Node
+  | NWithin !DTime Node
+  | NFor !DTime Node
+
+nodeAtoms :: Node -> IntSet
+nodeAtoms (Node _ atoms _) = atoms
+
+-- The formula as nodes, and its atoms' signal functions by number.
+compileT :: TPred a -> (Node, [SF a Bool])
+compileT p0 = case build p0 0 [] of
+  (node, _, sfs) -> (node, reverse sfs)
+  where
+    -- @build p n sfs@: @p@ with its nodes numbered from @n@, its atoms
+    -- from @length sfs@ (@sfs@ the atoms so far, newest first); the next
+    -- free node number and the atoms after it.
+    build :: TPred a -> Int -> [SF a Bool] -> (Node, Int, [SF a Bool])
+    build p n sfs = case p of
+      SP sf                -> let k = length sfs in (Node n (IntSet.singleton k) (NAtom k), n + 1, sf : sfs)
+      And a b              -> two NAnd a b
+      Or a b               -> two NOr a b
+      Implies a b          -> two NImplies a b
+      Until a b            -> two NUntil a b
+      Not a                -> one NNot a
+      Always a             -> one NAlways a
+      Eventually a         -> one NEventually a
+      Next a               -> one NNext a
+      EventuallyWithin d a -> one (NWithin d) a
+      AlwaysFor d a        -> one (NFor d) a
+      where
+        one f a = let (na, n', sfs') = build a (n + 1) sfs
+                  in (Node n (nodeAtoms na) (f na), n', sfs')
+        two f a b = let (na, n', sfs')   = build a (n + 1) sfs
+                        (nb, n'', sfs'') = build b n' sfs'
+                    in (Node n (IntSet.union (nodeAtoms na) (nodeAtoms nb)) (f na nb), n'', sfs'')
+
+-- What a formula is at a sample: a constant once decided, otherwise a
+-- combination of obligations on the samples to come, each obligation
+-- owed ('RLit' 'True') or its negation owed ('RLit' 'False'): negations
+-- are pushed down to the obligations (De Morgan's laws hold in Kleene's
+-- logic). 'RAll' and 'RAny' hold two or more parts, none a constant nor
+-- a combination of their own kind (see 'combine'); equal parts are one
+-- ('Pending''s order), which is what keeps memory bounded.
+data Res
+  = RConst !Bool
+  | RAll !(Set Res)
+  | RAny !(Set Res)
+  | RLit !Bool !Pending
+  deriving (Eq, Ord)
+
+-- An obligation: what the node numbered 'pendNode' owes from the next
+-- sample on. Two are the same obligation when they have the same node and
+-- start: a window's start is the sample it opened at (its clock and
+-- whether it reached its bound follow from it), the others' is -1 (what
+-- 'Always a' owes does not depend on when it was owed).
+data Pending = Pending
+  { pendNode  :: !Int
+  , pendStart :: !Int
+  , pendOwed  :: Owed
+  }
+
+instance Eq Pending where
+  x == y = pendNode x == pendNode y && pendStart x == pendStart y
+
+instance Ord Pending where
+  compare x y = compare (pendNode x) (pendNode y) <> compare (pendStart x) (pendStart y)
+
+data Owed
+  = OwesAlways Node
+  | OwesEventually Node
+  | OwesNext Node
+  | OwesUntil Node Node
+    -- (a window: its bound, its clock from where it opened, and whether a
+    -- sample in it was at the bound, within the slack)
+  | OwesWithin !DTime (FutureSF () DTime) !Bool Node
+  | OwesFor !DTime (FutureSF () DTime) !Bool Node
+
+-- A sample as the monitor sees it: its index, and the atoms' outputs there
+-- (evaluated only where read).
+data Here = Here !Int (IntMap Bool)
+
+atomAt :: Here -> Int -> Bool
+atomAt (Here j outs) k = IntMap.findWithDefault missing k outs
+  where missing = error ("AFRP.Test.LTL: atom " ++ show k ++ " was not stepped to sample " ++ show j
+                         ++ " (a fault of afrp-test; please report it)")
+
+-- What a node is at this sample.
+now :: Here -> Node -> Res
+now here@(Here j _) (Node n _ shape) = case shape of
+  NAtom k       -> RConst (atomAt here k)
+  NAnd a b      -> allOf [now here a, now here b]
+  NOr a b       -> anyOf [now here a, now here b]
+  NNot a        -> rNot (now here a)
+  NImplies a b  -> anyOf [rNot (now here a), now here b]
+  NAlways a     -> allOf [now here a, owes (OwesAlways a)]
+  NEventually a -> anyOf [now here a, owes (OwesEventually a)]
+  NNext a       -> owes (OwesNext a)
+  NUntil a b    -> anyOf [now here b, allOf [now here a, owes (OwesUntil a b)]]
+  NWithin d a   -> anyOf [now here a, window (OwesWithin d clockAtStart (atBound d 0) a)]
+  NFor d a      -> allOf [now here a, window (OwesFor d clockAtStart (atBound d 0) a)]
+  where
+    owes = RLit True . Pending n (-1)
+    window = RLit True . Pending n j
+
+-- A window's clock where it opens (at 0).
+clockAtStart :: FutureSF () DTime
+clockAtStart = snd (evalAtZero localTime ())
+
+-- Whether a window of bound @d@ is at its bound @e@ seconds after it
+-- opened, within the relative slack of 'timeSlack'. An infinite window
+-- never is.
+atBound :: DTime -> DTime -> Bool
+atBound d e = not (isInfinite d) && e >= d - timeSlack d
+
+-- What a combination is at the next sample (its index and atoms given),
+-- @dt@ after this one.
+advance :: Here -> DTime -> Res -> Res
+advance here dt res = case res of
+  RConst b        -> RConst b
+  RAll xs         -> allOf (map (advance here dt) (Set.toList xs))
+  RAny xs         -> anyOf (map (advance here dt) (Set.toList xs))
+  RLit True pend  -> paid here dt pend
+  RLit False pend -> rNot (paid here dt pend)
+
+-- What an obligation comes to at the sample it is owed to.
+paid :: Here -> DTime -> Pending -> Res
+paid here dt pend@(Pending _ _ owed) = case owed of
+  OwesAlways a      -> allOf [now here a, RLit True pend]
+  OwesEventually a  -> anyOf [now here a, RLit True pend]
+  OwesNext a        -> now here a
+  OwesUntil a b     -> anyOf [now here b, allOf [now here a, RLit True pend]]
+  OwesWithin d clock reachedBound a -> case evalAt clock dt () of
+    (e, clock') | e <= d + timeSlack d -> anyOf [now here a, RLit True pend { pendOwed = OwesWithin d clock' (reachedBound || atBound d e) a }]
+                | otherwise            -> RConst False   -- (the window has passed: missed)
+  OwesFor d clock reachedBound a -> case evalAt clock dt () of
+    (e, clock') | e <= d + timeSlack d -> allOf [now here a, RLit True pend { pendOwed = OwesFor d clock' (reachedBound || atBound d e) a }]
+                | otherwise            -> RConst True
+
+-- The conjunction and the disjunction of parts, stopping at the first
+-- part that decides (the later ones are not evaluated).
+allOf, anyOf :: [Res] -> Res
+allOf = combine False
+anyOf = combine True
+
+-- @combine decisive parts@: the conjunction ('False' decides it) or the
+-- disjunction ('True' decides it) of the parts, simplified by the laws
+-- that hold in Kleene's logic (a distributive lattice), so that a
+-- combination owed for many samples stays small:
+--
+-- * constants: a decisive one is the answer, the other is dropped;
+-- * a combination of the same kind is flattened into this one, equal
+--   parts are one;
+-- * an obligation that is a part here is, inside the other parts, the
+--   constant it would have to be for them to matter (absorption: @x or (x
+--   and y)@ is @x@, @x or (y and (x or z))@ is @x or (y and z)@).
+--
+-- None of these changes the value of the combination when the
+-- obligations are unknown, nor makes a combination a constant while they
+-- are: the result is decided exactly when Kleene's reading of the formula
+-- on the samples seen so far is.
+combine :: Bool -> [Res] -> Res
+combine decisive parts = case gather Set.empty parts of
+  Nothing  -> RConst decisive
+  Just acc ->
+    let (literals, others) = Set.partition isLiteral acc
+    in if Set.null literals || Set.null others
+         then made acc
+         else maybe (RConst decisive) made
+                (gather literals (map (assume literals (not decisive)) (Set.toList others)))
+  where
+    -- (the parts as a set, or Nothing when one decides)
+    gather !acc [] = Just acc
+    gather !acc (r : rs) = case r of
+      RConst b | b == decisive -> Nothing
+               | otherwise     -> gather acc rs
+      RAll xs | not decisive   -> gather (Set.union xs acc) rs
+      RAny xs | decisive       -> gather (Set.union xs acc) rs
+      _                        -> gather (Set.insert r acc) rs
+    made acc = case Set.size acc of
+      0 -> RConst (not decisive)
+      1 -> Set.findMin acc
+      _ | decisive  -> RAny acc
+        | otherwise -> RAll acc
+    isLiteral r = case r of
+      RLit _ _ -> True
+      _        -> False
+
+-- @assume literals b r@: @r@ with each of the obligations @literals@ (a
+-- set of 'RLit's) taken to be @b@, simplified.
+assume :: Set Res -> Bool -> Res -> Res
+assume literals b r = case r of
+  RConst _ -> r
+  RLit _ _ | Set.member r literals -> RConst b
+           | otherwise             -> r
+  RAll xs  -> allOf (map (assume literals b) (Set.toList xs))
+  RAny xs  -> anyOf (map (assume literals b) (Set.toList xs))
+
+-- The negation, pushed down to the obligations.
+rNot :: Res -> Res
+rNot r = case r of
+  RConst b   -> RConst (not b)
+  RLit s p   -> RLit (not s) p
+  RAll xs    -> anyOf (map rNot (Set.toList xs))
+  RAny xs    -> allOf (map rNot (Set.toList xs))
+
+-- The atoms a combination's obligations read.
+liveAtoms :: Res -> IntSet
+liveAtoms r = case r of
+  RConst _ -> IntSet.empty
+  RAll xs  -> IntSet.unions (map liveAtoms (Set.toList xs))
+  RAny xs  -> IntSet.unions (map liveAtoms (Set.toList xs))
+  RLit _ (Pending _ _ owed) -> case owed of
+    OwesAlways a       -> nodeAtoms a
+    OwesEventually a   -> nodeAtoms a
+    OwesNext a         -> nodeAtoms a
+    OwesUntil a b      -> IntSet.union (nodeAtoms a) (nodeAtoms b)
+    OwesWithin _ _ _ a -> nodeAtoms a
+    OwesFor _ _ _ a    -> nodeAtoms a
+
+-- What a combination is at the end of the stream: each obligation meets
+-- the end as its operator says ('Always', 'Next', 'Until' and 'alwaysFor'
+-- true, 'Eventually' false, 'eventuallyWithin' false if a sample was at
+-- its bound, true if the stream ended before it).
+closeRes :: Res -> Bool
+closeRes r = case r of
+  RConst b -> b
+  RAll xs  -> all closeRes (Set.toList xs)
+  RAny xs  -> any closeRes (Set.toList xs)
+  RLit s (Pending _ _ owed) -> s == case owed of
+    OwesAlways _                  -> True
+    OwesEventually _              -> False
+    OwesNext _                    -> True
+    OwesUntil _ _                 -> True
+    OwesWithin _ _ reachedBound _ -> not reachedBound
+    OwesFor _ _ _ _               -> True
 -- | The explanation as a small table: index, time, value, with the sample
 -- that decided marked with @>@.
 showExplanation :: Show a => Explanation a -> String
