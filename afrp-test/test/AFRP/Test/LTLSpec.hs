@@ -181,11 +181,11 @@ spec = do
     it "explainT decides at the first prefix on which Kleene's reading of the formula is false, time bounds included" $
       forAllShow ((,) <$> genFBounded 4 <*> windowStreams) show $ \(f, s) ->
         let explained = fmap (\e -> (explFrame e, explTime e)) (explainT (toTPred f) s)
-            around = fmap (map (\(j, t, _) -> (j, t)) . explAround) (explainT (toTPred f) s)
+            shown = fmap (map (\(j, t, _) -> (j, t)) . explAround) (explainT (toTPred f) s)
             expectedAround = fmap (\(i, _) -> [ (j, t) | (j, t) <- zip [0 ..] (sampleTimes s), j >= i - 3, j <= i + 2 ]) explained
         in explained === referenceFailure f s
            .&&. evalT (toTPred f) s === (referenceFailure f s == Nothing)
-           .&&. around === expectedAround
+           .&&. shown === expectedAround
   describe "tPredOn, a predicate on a view of the samples" $ do
     it "is the predicate on the stream of the view's outputs, and explained at the same instant (property)" $
       forAll (genFBounded 3) $ \f -> forAll (chooseInt (0, 3)) $ \v ->
