@@ -1,7 +1,8 @@
 {-# LANGUAGE BangPatterns        #-}
 {-# LANGUAGE ScopedTypeVariables #-}
--- (runT runs a failing world twice, so that the first run, which only
--- decides, is not kept: GHC must not share the two runs)
+-- (forAllRuns runs the world it reports twice, once to decide and once
+-- for its page, so that the first run is not kept while the page is
+-- made: GHC must not share the two runs)
 {-# OPTIONS_GHC -fno-full-laziness -fno-cse #-}
 -- |
 -- Module      : AFrobRobotSim.Test
