@@ -11,7 +11,10 @@ import qualified AFRP.CollectionSpec
 import qualified AFRP.ConditionalSpec
 import qualified AFRP.DeferredSpec
 import qualified AFRP.DelaySpec
-import qualified AFRP.EventSourceSpec
+import qualified AFRP.EventSource.EdgeSpec
+import qualified AFRP.EventSource.ReshapeSpec
+import qualified AFRP.EventSource.SampleSpec
+import qualified AFRP.EventSource.TimedSpec
 import qualified AFRP.EventSpec
 import qualified AFRP.GeometrySpec
 import qualified AFRP.HybridSpec
@@ -110,7 +113,10 @@ specs = hspec $ do
   describe "AFRP.Conditional" AFRP.ConditionalSpec.spec
   describe "AFRP.Internal.Deferred" AFRP.DeferredSpec.spec
   describe "AFRP.Event"       AFRP.EventSpec.spec
-  describe "AFRP.EventSource" AFRP.EventSourceSpec.spec
+  describe "AFRP.EventSource.Timed" AFRP.EventSource.TimedSpec.spec
+  describe "AFRP.EventSource.Edge" AFRP.EventSource.EdgeSpec.spec
+  describe "AFRP.EventSource.Reshape" AFRP.EventSource.ReshapeSpec.spec
+  describe "AFRP.EventSource.Sample" AFRP.EventSource.SampleSpec.spec
   describe "AFRP.Hybrid"      AFRP.HybridSpec.spec
   describe "AFRP.Delay"       AFRP.DelaySpec.spec
   describe "AFRP.Integration" AFRP.IntegrationSpec.spec

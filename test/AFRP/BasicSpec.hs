@@ -1,9 +1,12 @@
 module AFRP.BasicSpec (spec) where
 
+import           Control.Arrow    (arr, left, (>>>), (|||))
 import           Test.Hspec
 import           Test.QuickCheck
 
-import           AFRP hiding (forAll)
+import           AFRP.Basic
+import           AFRP.Delay       (iPre)
+import           AFRP.Integration (integral)
 import           TestUtil
 
 spec :: Spec

@@ -5,11 +5,18 @@
 -- inputs and time steps, as the module's note says.
 module AFRP.CollectionSpec (spec) where
 
+import           Control.Arrow            (arr, (&&&), (>>>))
 import           Test.Hspec               hiding (after)
 import           Test.QuickCheck
 
-import           AFRP                     hiding (forAll)
+import           AFRP.Basic               (constant, localTime)
+import           AFRP.EventSource         (after, edge)
+import           AFRP.Integration         (integral)
 import           AFRP.Internal.Collection (parBL)
+import           AFRP.Internal.SF         (DTime, SF)
+import           AFRP.Parallel            (par)
+import           AFRP.Scan                (sscan)
+import           AFRP.Switch              (kSwitch, switch)
 import           TestUtil
 
 -- | A list behind a newtype that derives nothing but 'Functor', so that

@@ -1,9 +1,15 @@
 module AFRP.ConditionalSpec (spec) where
 
-import           Test.Hspec hiding (after)
+import           Control.Arrow    (arr, (>>>))
+import           Test.Hspec       hiding (after)
 import           Test.QuickCheck
 
-import           AFRP hiding (forAll)
+import           AFRP.Basic       (constant, localTime)
+import           AFRP.Conditional
+import           AFRP.Event       (Event (..), isEvent)
+import           AFRP.EventSource (after, never, now, repeatedly)
+import           AFRP.Internal.SF (SF)
+import           AFRP.Scan        (sscan)
 import           TestUtil
 
 -- | Counts the samples since it started: 1 at its local time 0.

@@ -2,13 +2,18 @@
 -- | Tests for "AFRP.Delay": the one-sample delays and the time delay.
 module AFRP.DelaySpec (spec) where
 
+import           Control.Arrow     (arr, loop, returnA, second, (>>>))
 import           Control.Exception (ErrorCall (..), evaluate)
 import           Data.List         (isInfixOf)
 import           Data.Maybe        (fromMaybe)
 import           Test.Hspec
 import           Test.QuickCheck
 
-import           AFRP              hiding (forAll)
+import           AFRP.Basic        (identity, localTime)
+import           AFRP.Delay
+import           AFRP.Integration  (integral)
+import           AFRP.Internal.SF  (SF)
+import           AFRP.Run          (embed)
 import           TestUtil
 
 -- | An error call whose message (not its location) mentions the text.

@@ -9,7 +9,7 @@ import           Data.List           (isInfixOf)
 import           Test.Hspec
 import           Test.QuickCheck
 
-import           AFRP              hiding (forAll)
+import           AFRP.Event
 
 -- | An error call whose message mentions the given text.
 errorMentioning :: String -> Selector ErrorCall

@@ -3,11 +3,16 @@
 -- delayed forms, the delayed forms closing feedback loops, and a long run.
 module AFRP.HybridSpec (spec) where
 
+import           Control.Arrow     (arr, first, loop, returnA, second, (>>>))
 import           Control.Exception (evaluate)
 import           Data.Maybe        (fromMaybe)
 import           Test.Hspec
 
-import           AFRP
+import           AFRP.Event        (Event (..), eventToMaybe, tag)
+import           AFRP.EventSource  (edge)
+import           AFRP.Hybrid
+import           AFRP.Internal.SF  (SF)
+import           AFRP.Run          (embed)
 import           TestUtil
 
 e :: a -> Event a

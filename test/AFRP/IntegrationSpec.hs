@@ -2,11 +2,17 @@
 -- derivative, on hand-computed cases and by properties.
 module AFRP.IntegrationSpec (spec) where
 
-import           Data.Maybe        (fromMaybe)
+import           Control.Arrow    (arr, (>>>))
+import           Data.Maybe       (fromMaybe)
 import           Test.Hspec
 import           Test.QuickCheck
 
-import           AFRP              hiding (forAll)
+import           AFRP.Basic       (localTime)
+import           AFRP.Event       (Event (..))
+import           AFRP.Geometry    (Vector2 (..))
+import           AFRP.Integration
+import           AFRP.Internal.SF (DTime, SF, Time)
+import           AFRP.Run         (embed)
 import           TestUtil
 
 -- | Feed the signal function a bottom wherever the outer input is

@@ -1,10 +1,15 @@
 {-# LANGUAGE Arrows #-}
 module AFRP.LoopSpec (spec) where
 
+import           Control.Arrow     (arr, loop, returnA, second, (>>>))
 import           Control.Exception (ErrorCall (..), evaluate)
 import           Test.Hspec
 
-import           AFRP
+import           AFRP.Delay        (iPre, pre)
+import           AFRP.Integration  (integral)
+import           AFRP.Internal.SF  (SF)
+import           AFRP.Loop
+import           AFRP.Run          (embed)
 import           TestUtil
 
 spec :: Spec

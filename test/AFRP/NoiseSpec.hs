@@ -5,7 +5,8 @@ import           Data.Bits         (shiftR, xor)
 import           Data.Word         (Word64)
 import           Test.Hspec
 
-import           AFRP
+import           AFRP.Event        (Event (..), isEvent)
+import           AFRP.Noise
 import           TestUtil
 
 -- A small deterministic generator (SplitMix-style mixing of a counter).

@@ -5,10 +5,17 @@
 -- time steps.
 module AFRP.ParallelFunctorSpec (spec) where
 
-import           Test.Hspec      hiding (after)
+import           Control.Arrow    (arr, (>>>))
+import           Test.Hspec
 import           Test.QuickCheck
 
-import           AFRP            hiding (forAll)
+import           AFRP.Basic       (constant, localTime)
+import           AFRP.Event       (Event (..))
+import           AFRP.EventSource (edge)
+import           AFRP.Integration (integral)
+import           AFRP.Internal.SF (DTime, SF)
+import           AFRP.Parallel
+import           AFRP.Scan        (sscan)
 import           TestUtil
 
 -- | A list behind a newtype that derives nothing but 'Functor': no

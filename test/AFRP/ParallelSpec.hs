@@ -4,14 +4,21 @@
 -- computed by hand from the functions' documentation.
 module AFRP.ParallelSpec (spec) where
 
+import           Control.Arrow     (arr, returnA, (&&&), (>>>))
 import           Control.Exception (evaluate)
 import           Data.Map          (Map)
 import qualified Data.Map          as Map
 import           System.Timeout    (timeout)
 import           Test.Hspec        hiding (after)
 
-import           AFRP
-import           AFRP.Internal.SF  (stepSF)
+import           AFRP.Basic        (constant, identity, localTime)
+import           AFRP.Event        (Event (..))
+import           AFRP.EventSource  (after, edge, now)
+import           AFRP.Integration  (integral)
+import           AFRP.Internal.SF  (SF, stepSF)
+import           AFRP.Parallel
+import           AFRP.Run          (embed)
+import           AFRP.Switch       (kSwitch, switch)
 import           TestUtil
 
 ------------------------------------------------------------------------------

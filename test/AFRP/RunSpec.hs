@@ -1,11 +1,16 @@
 module AFRP.RunSpec (spec) where
 
+import           Control.Arrow     (arr, loop, second, (>>>))
 import           Control.Exception (ErrorCall (..), evaluate)
 import           Data.IORef
 import           Data.List         (isPrefixOf)
 import           Test.Hspec
 
-import           AFRP
+import           AFRP.Basic        (constant, identity, localTime, time)
+import           AFRP.Delay        (iPre)
+import           AFRP.Integration  (integral)
+import           AFRP.Internal.SF  (SF)
+import           AFRP.Run
 import           TestUtil
 
 spec :: Spec

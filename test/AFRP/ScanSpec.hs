@@ -3,7 +3,7 @@ module AFRP.ScanSpec (spec) where
 import           Test.Hspec
 import           Test.QuickCheck
 
-import           AFRP hiding (forAll)
+import           AFRP.Scan
 import           TestUtil
 
 -- | Reference semantics of 'sscanPrim' on lists: the held output and the

@@ -4,12 +4,18 @@
 -- from the functions' documentation.
 module AFRP.SwitchSpec (spec) where
 
+import           Control.Arrow     (arr, first, returnA, (&&&), (>>>))
 import           Control.Exception (evaluate)
 import           System.Timeout    (timeout)
-import           Test.Hspec       hiding (after)
+import           Test.Hspec        hiding (after)
 import           Test.QuickCheck
 
-import           AFRP hiding (forAll)
+import           AFRP.Basic        (constant, identity, localTime)
+import           AFRP.Event        (Event (..), tag)
+import           AFRP.EventSource  (after, edge, edgeTag, never, now, repeatedly)
+import           AFRP.Integration  (integral)
+import           AFRP.Internal.SF  (DTime, SF)
+import           AFRP.Switch
 import           TestUtil
 
 -- | Fully evaluate a list of numbers; 'Nothing' when it diverges (no

@@ -3,11 +3,18 @@
 -- functions' documentation.
 module AFRP.TaskSpec (spec) where
 
+import           Control.Arrow     (arr, (&&&), (>>>))
 import           Control.Exception (evaluate)
 import           Test.Hspec        hiding (after)
 import qualified Test.QuickCheck   as QC
 
-import           AFRP
+import           AFRP.Basic        (constant, localTime)
+import           AFRP.Event        (Event (..))
+import           AFRP.EventSource  (after, never, now)
+import           AFRP.Internal.SF  (DTime)
+import           AFRP.Run          (embed)
+import           AFRP.Switch       (switch)
+import           AFRP.Task
 import           TestUtil
 
 -- | The sample index as input: 0, 1, 2, ...

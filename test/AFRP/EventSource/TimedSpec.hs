@@ -1,37 +1,23 @@
--- | Tests for "AFRP.EventSource": every event source and event-stream
--- transformer, on fixed input lists with hand-computed outputs.
-module AFRP.EventSourceSpec (spec) where
+-- | Tests for "AFRP.EventSource.Timed": the sources scheduled in local
+-- time and the delayed events, on fixed input lists with hand-computed
+-- outputs, and 'repeatedly' near the tolerance of the time against the
+-- rule it documents.
+module AFRP.EventSource.TimedSpec (spec) where
 
-import           Control.Arrow     (arr, (>>>))
-import           Control.Exception (ErrorCall (..), evaluate)
-import           Data.List         (findIndices, isInfixOf, isPrefixOf)
-import           Data.Maybe        (fromMaybe)
-import           Test.Hspec        hiding (after)
+import           Control.Exception      (ErrorCall (..), evaluate)
+import           Data.List              (findIndices, isInfixOf)
+import           Test.Hspec             hiding (after)
 
-import           Test.QuickCheck   (Gen, choose, counterexample, elements, forAll, oneof, vectorOf,
-                                    withMaxSuccess)
+import           Test.QuickCheck        (Gen, choose, counterexample, elements, forAll, oneof, vectorOf,
+                                         withMaxSuccess)
 
-import           AFRP.Basic        (localTime)
-import           AFRP.Event        (Event (..), isEvent)
-import           AFRP.EventSource
-import           AFRP.Internal.SF  (DTime, SF, Time)
-import           AFRP.Run          (embed)
+import           AFRP.Basic             (localTime)
+import           AFRP.Event             (Event (..), isEvent)
+import           AFRP.EventSource.Timed
+import           AFRP.EventSourceFixture
+import           AFRP.Internal.SF       (DTime, SF, Time)
+import           AFRP.Run               (embed)
 import           TestUtil
-
--- | An error call whose message (not its location) mentions the text.
-errorMentioning :: String -> Selector ErrorCall
-errorMentioning s (ErrorCallWithLocation msg _) = s `isInfixOf` msg
-
--- | Feed the signal function a bottom wherever the outer input is
--- 'Nothing'. The runner may force each outer sample, but not what the
--- inner signal function receives, so this observes whether the signal
--- function under test evaluates its current input.
-bottomWhereNothing :: SF a b -> SF (Maybe a) b
-bottomWhereNothing sf = arr (fromMaybe (error "the current input was evaluated")) >>> sf
-
--- | Force every output constructor of a run of an event stream.
-forceEvents :: [Event a] -> IO Int
-forceEvents = evaluate . length . filter isEvent
 
 -- | Run a source that ignores its input for @k@ samples with step @dt@.
 source :: DTime -> Int -> SF () b -> [b]
@@ -40,12 +26,6 @@ source dt k sf = runDt dt sf (replicate k ())
 -- | The indices of the samples that carry an occurrence.
 occurrences :: [Event a] -> [Int]
 occurrences = findIndices isEvent
-
-e :: a -> Event a
-e = Event
-
-n :: Event a
-n = NoEvent
 
 spec :: Spec
 spec = do
@@ -230,157 +210,6 @@ spec = do
       runDt 1 (delayEventCat 0) [e 'a', n, e 'b'] `shouldBe` [e "a", n, e "b"]
     it "with a negative delay is an error" $
       forceEvents (runDt 1 (delayEventCat (-0.5)) [e 'a', n]) `shouldThrow` anyErrorCall
-
-  describe "edge" $ do
-    it "occurs on rising edges only" $
-      runDt 1 edge [False, True, True, False, True] `shouldBe` [n, e (), n, n, e ()]
-    it "does not occur for True at time 0" $
-      runDt 1 edge [True, True, False, True] `shouldBe` [n, n, n, e ()]
-    it "follows the documented example" $
-      embed edge (True, [(1, Just False), (1, Just True), (1, Nothing)])
-        `shouldBe` [n, n, e (), n]
-
-  describe "iEdge" $ do
-    it "iEdge False occurs for True at time 0" $
-      runDt 1 (iEdge False) [True, True, False, True] `shouldBe` [e (), n, n, e ()]
-    it "iEdge False does not occur for False at time 0" $
-      runDt 1 (iEdge False) [False, True] `shouldBe` [n, e ()]
-    it "iEdge True does not occur for True at time 0" $
-      runDt 1 (iEdge True) [True, False, True] `shouldBe` [n, n, e ()]
-
-  describe "edgeTag" $ do
-    it "is edge carrying the given value" $
-      runDt 1 (edgeTag 'k') [True, False, True, True] `shouldBe` [n, n, e 'k', n]
-    it "does not occur for True at time 0" $
-      runDt 1 (edgeTag 'k') [True] `shouldBe` [n]
-
-  describe "edgeJust" $ do
-    it "occurs, with the value, on each change from Nothing to Just" $
-      runDt 1 edgeJust [Just 1, Nothing, Just 2, Just 3, Nothing, Nothing, Just (4 :: Int)]
-        `shouldBe` [n, n, e 2, n, n, n, e 4]
-    it "occurs right after a Nothing at time 0" $
-      runDt 1 edgeJust [Nothing, Just 'v', Just 'w'] `shouldBe` [n, e 'v', n]
-    it "does not look at an input that follows a Just until the next sample (as Yampa)" $ do
-      let bad = error "input" :: Maybe Int
-      take 1 (runDt 1 edgeJust [bad, Just 1]) `shouldBe` [n]
-      take 2 (runDt 1 edgeJust [Just 1, bad, Nothing]) `shouldBe` [n, n]
-      forceEvents (runDt 1 edgeJust [bad, Just 1]) `shouldThrow` errorCall "input"
-
-  describe "edgeBy" $ do
-    let rise prev cur = if cur > prev then Just (cur - prev) else Nothing
-    it "applies the function to the previous and current samples" $
-      runDt 1 (edgeBy rise 0) [3, 2, 5, 5, 7 :: Int] `shouldBe` [e 3, n, e 3, n, e 2]
-    it "uses the initial value as the previous sample at time 0" $
-      runDt 1 (edgeBy rise 10) [3, 4 :: Int] `shouldBe` [n, e 1]
-    it "evaluates each input sample at the next sample" $
-      forceEvents (runDt 1 (bottomWhereNothing (edgeBy (\_ _ -> Nothing :: Maybe ()) (0 :: Int))) [Just 1, Nothing, Just 2])
-        `shouldThrow` anyErrorCall
-
-  describe "notYet" $ do
-    it "suppresses an occurrence at time 0 and passes later ones" $
-      runDt 1 notYet [e 1, e 2, n, e (3 :: Int)] `shouldBe` [n, e 2, n, e 3]
-    it "passes occurrences from the second sample on" $
-      runDt 1 notYet [n, e 'a'] `shouldBe` [n, e 'a']
-
-  describe "once" $ do
-    it "passes only the first occurrence" $
-      runDt 1 once [n, e 1, e 2, n, e (3 :: Int)] `shouldBe` [n, e 1, n, n, n]
-    it "passes an occurrence at time 0 and nothing after" $
-      runDt 1 once [e 'a', e 'b', e 'c'] `shouldBe` [e 'a', n, n]
-
-  describe "takeEvents" $ do
-    it "passes the first n occurrences" $
-      runDt 1 (takeEvents 2) [e 1, n, e 2, e 3, e (4 :: Int)] `shouldBe` [e 1, n, e 2, n, n]
-    it "with 0 (or less) passes nothing" $ do
-      runDt 1 (takeEvents 0) [e 'a', e 'b'] `shouldBe` [n, n]
-      runDt 1 (takeEvents (-3)) [e 'a', e 'b'] `shouldBe` [n, n]
-
-  describe "dropEvents" $ do
-    it "suppresses the first n occurrences, then passes all" $
-      runDt 1 (dropEvents 2) [e 1, n, e 2, e 3, n, e (4 :: Int)] `shouldBe` [n, n, n, e 3, n, e 4]
-    it "with 0 is the identity" $
-      runDt 1 (dropEvents 0) [e 'a', n, e 'b'] `shouldBe` [e 'a', n, e 'b']
-    it "does not look at an input sample before the next sample while it drops (as Yampa)" $ do
-      let bad = error "input" :: Event Int
-      take 2 (runDt 1 (dropEvents 1) [n, bad, e 1]) `shouldBe` [n, n]
-      take 3 (runDt 1 (dropEvents 2) [e 1, n, bad, e 2]) `shouldBe` [n, n, n]
-      forceEvents (runDt 1 (dropEvents 1) [n, bad, e 1]) `shouldThrow` errorCall "input"
-      -- (once the occurrences are dropped, the input is the output)
-      forceEvents (take 2 (runDt 1 (dropEvents 1) [e 0, bad])) `shouldThrow` errorCall "input"
-
-  describe "snap" $ do
-    it "occurs at time 0 only, carrying the input there" $
-      runDt 1 snap [10, 11, 12 :: Int] `shouldBe` [e 10, n, n]
-
-  describe "snapAfter" $ do
-    it "occurs once at the first sample at or after t, with that input" $
-      runDt 0.5 (snapAfter 1.0) [10, 11, 12, 13 :: Int] `shouldBe` [n, n, e 12, n]
-    it "occurs past t when no sample falls on it" $
-      runDt 0.4 (snapAfter 1.0) [10, 11, 12, 13, 14 :: Int] `shouldBe` [n, n, n, e 13, n]
-    it "with t = 0 occurs at time 0" $
-      runDt 1 (snapAfter 0) "ab" `shouldBe` [e 'a', n]
-    it "rejects a negative t, as after does" $
-      evaluate (length (runDt 1 (snapAfter (-2)) "ab")) `shouldThrow` anyErrorCall
-
-  describe "sample" $ do
-    it "refuses a period that is not positive, naming itself (it named repeatedly)" $
-      mapM_ (\p -> evaluate (sample p :: SF () (Event ()))
-                     `shouldThrow` (\(ErrorCall m) -> "AFRP.EventSource.sample: the period must be positive" `isPrefixOf` m))
-            [0, -1, 0 / 0]
-    it "occurs every p seconds (not at 0) with the input at that instant" $
-      runDt 0.25 (sample 0.5) [0 .. 6 :: Int] `shouldBe` [n, n, e 2, n, e 4, n, e 6]
-    it "produces one occurrence when a step spans several periods" $
-      runSamples (sample 0.5) [(0, 'a'), (2, 'b'), (0.25, 'c'), (0.25, 'd')]
-        `shouldBe` [n, e 'b', n, e 'd']
-
-  describe "sampleWindow" $ do
-    it "produces the last w samples, oldest first, at each sampling instant" $
-      runDt 0.25 (sampleWindow 2 0.5) [0 .. 8 :: Int]
-        `shouldBe` [n, n, e [2], n, e [2, 4], n, e [4, 6], n, e [6, 8]]
-    it "takes one sample per period when a step spans several periods" $
-      -- times 0, .5, 2.0, 2.5: the step to 2.0 spans 1.0, 1.5 and 2.0
-      runSamples (sampleWindow 3 0.5) [(0, 0), (0.5, 1), (1.5, 2), (0.5, 3 :: Int)]
-        `shouldBe` [n, e [1], e [2, 2, 2], e [2, 2, 3]]
-    it "a step spanning more periods than the window fills it with that step's input" $
-      runSamples (sampleWindow 3 0.5) [(0, 0), (0.5, 1), (10, 2), (0.5, 3 :: Int)]
-        `shouldBe` [n, e [1], e [2, 2, 2], e [2, 2, 3]]
-    it "a step spanning billions of periods ends at once, in bounded memory (it built a list of every period)" $ do
-      runSamples (sampleWindow 3 1e-6) [(0, 'a'), (1e6, 'b'), (0.5, 'c'), (1e-6, 'd')]
-        `withoutHanging` [n, e "bbb", e "ccc", e "ccd"]
-      -- more periods than a Double counts, a period below the clock's
-      -- resolution, and an infinite time: every sample fills the window
-      runSamples (sampleWindow 2 1e-300) [(0, 'a'), (1, 'b'), (1, 'c')]
-        `withoutHanging` [n, e "bb", e "cc"]
-      runSamples (sampleWindow 2 1e-9) [(0, 'a'), (1e9, 'b'), (1e-9, 'c')]
-        `withoutHanging` [n, e "bb", e "cc"]
-      runSamples (sampleWindow 2 1) [(0, 'a'), (1 / 0, 'b'), (1, 'c')]
-        `withoutHanging` [n, e "bb", e "cc"]
-    it "has no instant at a sample where no time passes (it filled the window where every instant counts as reached)" $ do
-      runSamples (sampleWindow 2 1e-13) [(0, 'a'), (1000, 'b'), (0, 'c'), (0, 'd'), (1, 'e')]
-        `withoutHanging` [n, e "bb", n, n, e "ee"]
-      runSamples (sampleWindow 2 1) [(0, 'a'), (1 / 0, 'b'), (0, 'c'), (1, 'd')]
-        `withoutHanging` [n, e "bb", n, e "dd"]
-      runSamples (sampleWindow 2 0.5) [(0, 'a'), (0.5, 'b'), (0, 'c'), (0.5, 'd')]
-        `shouldBe` [n, e "b", n, e "bd"]
-    it "a huge window costs no more than a small one (it counted the periods one by one up to its size)" $ do
-      let lens = map (fmap length) . drop 1
-      lens (runSamples (sampleWindow 5000 1) [(0, 'a'), (4500.5, 'b'), (2, 'c')]) `shouldBe` [e 4500, e 4502]
-      fmap (fmap (take 2)) (runSamples (sampleWindow maxBound 1) [(0, 'a'), (1e12, 'b'), (1e300, 'c')])
-        `withoutHanging` [n, e "bb", e "cc"]
-      fmap (fmap (take 2)) (runSamples (sampleWindow maxBound 1e-300) [(0, 'a'), (1, 'b')])
-        `withoutHanging` [n, e "bb"]
-    it "after a step spanning many periods, the instants stay on the multiples of the period" $
-      -- 20,000 periods of 0.5 in one step (counted at once), then steps of 0.25
-      runSamples (sampleWindow 2 0.5) ((0, 0) : (10000.25, 1) : [ (0.25, k) | k <- [2 .. 6 :: Int] ])
-        `shouldBe` [n, e [1, 1], e [1, 2], n, e [2, 4], n, e [4, 6]]
-    it "with a window of 1 is sample with singleton lists" $
-      runDt 0.5 (sampleWindow 1 1) "abcde" `shouldBe` [n, n, e "c", n, e "e"]
-    it "with a window below 1 is an error" $
-      forceEvents (runDt 1 (sampleWindow 0 1) [(), ()]) `shouldThrow` errorMentioning "window"
-    it "with a zero period is an error" $
-      forceEvents (runDt 1 (sampleWindow 2 0) [(), ()]) `shouldThrow` anyErrorCall
-    it "with a negative period is an error" $
-      forceEvents (runDt 1 (sampleWindow 2 (-1)) [(), ()]) `shouldThrow` anyErrorCall
 
 -- | The rule 'repeatedly' documents, written directly: at each sample time
 -- t, an occurrence when boundary n (at n * p) is 'reached'; then n becomes
