@@ -77,7 +77,7 @@ module AFrobRobotSim.Run
 import           Control.Concurrent        (getNumCapabilities)
 import           Control.Exception         (AsyncException (HeapOverflow, UserInterrupt), Exception (..), IOException, SomeException,
                                             evaluate, mask_, throwIO, try)
-import           Control.Monad             (forM, unless, when)
+import           Control.Monad             (forM, forM_, unless, when)
 import           Data.Char                 (isPrint, isSpace)
 import           Data.IORef
 import           Data.List                 (intercalate)
@@ -96,7 +96,7 @@ import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout,
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
-import           AFrobRobotSim.Options.Check (timesText)
+import           AFrobRobotSim.Options.Check (printingModesFault, timesText)
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Referee
 import           AFrobRobotSim.Render
@@ -150,9 +150,9 @@ runSimRefereedWith opts referee mworld rcA rcB = do
   tolerantOutput   -- (a message the terminal's encoding cannot write must not stop the run)
   prog  <- getProgName
   -- (the two printing modes set together in code: refused before either
-  -- prints, with the other faults 'validateOptions' finds; a command line
-  -- with both is refused where it is read)
-  when (optPrintProgram opts && optDumpWorld opts) $
+  -- prints, with the other faults 'validateOptions' finds, this one among
+  -- them; a command line with both is refused where it is read)
+  forM_ (printingModesFault opts) $ \_ ->
     failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) (validateOptions opts)))
   if optPrintProgram opts
     -- (the name alone: no world read, nothing written, no warning)

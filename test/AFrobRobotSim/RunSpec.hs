@@ -1166,7 +1166,7 @@ spec = do
       (out, err, r) <- captured (runSimWith (quick "unused") { optDumpWorld = True, optPrintProgram = True } (Just world) drive drive)
       (r, out) `shouldBe` (Left (ExitFailure 2), "")
       lines err `shouldBe` [ "afrp-spec: cannot run:"
-                           , "  optDumpWorld and optPrintProgram are both set: each prints something and exits; set one" ]
+                           , "  --dump-world and --print-program (optDumpWorld and optPrintProgram) each print something and exit: ask for one" ]
       doesPathExist "unused" `shouldReturn` False
     it "a step count that overflows or is beyond the maximum" $ do
       refused (\dir -> (quick dir) { optSeconds = 1e20 }) ("steps" `isInfixOf`)
