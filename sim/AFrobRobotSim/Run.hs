@@ -92,7 +92,7 @@ import           System.Process            (rawSystem)
 import           Text.Printf               (printf)
 
 import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, ioErrorText, putErr, quote,
-                                            tolerantOutput)
+                                            stopProgram, tolerantOutput)
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
@@ -135,7 +135,7 @@ runSimRefereed referee mworld rcA rcB = do
   args <- getArgs
   prog <- getProgName
   case parseSimArgs defaultSimOptions args of
-    Left err       -> failWith 2 (prog ++ ": " ++ err)
+    Left err       -> stopProgram prog 2 err
     Right ShowHelp -> putStrLn (usage prog) >> endOutput prog
     Right (RunWith opts) -> runSimRefereedWith opts referee mworld rcA rcB
 
@@ -152,8 +152,7 @@ runSimRefereedWith opts referee mworld rcA rcB = do
   -- (the two printing modes set together in code: refused before either
   -- prints, with the other faults 'validateOptions' finds, this one among
   -- them; a command line with both is refused where it is read)
-  forM_ (printingModesFault opts) $ \_ ->
-    failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) (validateOptions opts)))
+  forM_ (printingModesFault opts) $ \_ -> refuse prog "cannot run:" (validateOptions opts)
   if optPrintProgram opts
     -- (the name alone: no world read, nothing written, no warning)
     then putStrLn (encodeJSON (programJSON prog opts)) >> endOutput prog
@@ -166,11 +165,11 @@ runPrepared prog opts referee mworld rcA rcB = do
   -- its line; one given in code here; the run does not check it again,
   -- see 'simulateUnchecked')
   world <- case optWorldFile opts of
-    Just file -> readWorldFile file >>= either (\e -> failWith 2 (prog ++ ": " ++ e)) pure
+    Just file -> readWorldFile file >>= either (stopProgram prog 2) pure
     Nothing   -> do
       let world = maybe defaultWorld id mworld
       case validateWorld world of
-        Left errs -> failWith 2 (unlines ((prog ++ ": the world is invalid:") : map ("  " ++) errs))
+        Left errs -> refuse prog "the world is invalid:" errs
         Right ()  -> pure world
   if optDumpWorld opts
     then do
@@ -186,8 +185,7 @@ runPrepared prog opts referee mworld rcA rcB = do
     else do
       -- (the referee's goals, before the checks of the files, which make
       -- the output folder when nothing else is wrong)
-      let cannotRun errs = unless (null errs) $
-            failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
+      let cannotRun errs = unless (null errs) (refuse prog "cannot run:" errs)
       cannotRun (checkGoals referee)
       (errs, ffmpeg) <- preflight (worldBounds world) opts
       cannotRun errs
@@ -274,7 +272,7 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
       states   = take (nSteps + 1) (simulateUnchecked cfg world rcA rcB)
   mrec <- forM (optReplay opts) $ \file -> do
     r <- try (newReplayRecorder replayRun logCfg)
-    either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r
+    either (\(e :: IOException) -> stopProgram prog 2 ("--replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r
   stepsRef  <- newIORef (0 :: Int)
   scoresRef <- newIORef []   -- (the last simulated state's scores, for the summaries)
   framesRef <- newIORef (0 :: Int)
@@ -287,7 +285,7 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
   -- here leaves an existing log as it was)
   mlog <- forM (optLog opts) $ \file -> do
     r <- try (openLogWriter logCfg file)
-    either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ ioErrorText e)) pure r
+    either (\(e :: IOException) -> stopProgram prog 2 ("--log " ++ show file ++ ": " ++ ioErrorText e)) pure r
   -- (the progress line last: it counts the frames written up to and
   -- including this step's)
   let progress = tty && not (optQuiet opts)
@@ -438,5 +436,8 @@ makeVideo opts exe nFrames file = do
   where
     inFolder dir = concatMap (\c -> if c == '%' then "%%" else [c]) (if isAbsolute dir then dir else "." </> dir)
 
-failWith :: Int -> String -> IO a
-failWith code msg = putErr (if null msg || last msg /= '\n' then msg ++ "\n" else msg) >> exitWith (ExitFailure code)
+-- @refuse prog heading faults@: the run refused before it began (exit
+-- code 2, 'stopProgram'), the heading after the program's name and each
+-- fault on a line of its own below it, indented.
+refuse :: String -> String -> [String] -> IO a
+refuse prog heading faults = stopProgram prog 2 (intercalate "\n" (heading : map ("  " ++) faults))
