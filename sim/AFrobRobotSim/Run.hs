@@ -39,7 +39,11 @@
 -- with what was simulated (the log gets its summary, the page and the SVG
 -- are written), every frame written is complete (frames are written to a
 -- temporary file and renamed; no temporary file is left), and the summary
--- is printed. Two runs with the same world, controllers and flags write
+-- is printed. A Ctrl-C or @SIGTERM@ that comes while the outputs are
+-- being written does not stop that: they are finished, the summary is
+-- printed, a line on standard error says which signal came, and the exit
+-- code is 130 or 143 ("AFrobRobotSim.Run.Signals"; a second Ctrl-C ends
+-- the program at once). Two runs with the same world, controllers and flags write
 -- byte-identical frames.
 --
 -- The design that keeps a run's memory independent of its length: the
@@ -345,67 +349,78 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
       (produced, stopped) <- pipeline (batchFor nRobots) (\s -> () <$ evaluate (forceWorldState s)) sinkAll states
       maybe (either endedBy (const (pure Finished)) produced) endedBy stopped
     else try (loop 0 states) >>= either endedBy pure
-  -- (from here a SIGTERM no longer stops the run: it is writing its
-  -- outputs, and assembling the video)
-  finishing stopper
-  when progress (hPutStr stderr eraseProgress)
-  steps <- readIORef stepsRef
-  scores <- readIORef scoresRef
-  nFrames <- readIORef framesRef
-  end <- getMonotonicTime
-  let simulated = roundTo 1e9 (fromIntegral (max 0 (steps - 1)) * dt)   -- (as the log's frames' times)
-      wall      = end - start
-      failure   = case ending of
-        Failed ce -> Just ce
-        _         -> Nothing
-      interrupted = case ending of
-        Interrupted -> True
-        _           -> False
-      -- (what stopped the run early, for the log's summary and the result
-      -- line: a controller's failure, or a write that failed)
-      stoppedText = case ending of
-        WriteFailed e -> Just ("the run stopped: a write failed: " ++ ioErrorText e)
-        OutOfHeap     -> Just ("the run stopped: it ran out of memory (the heap limit, +RTS -M; a controller "
-                               ++ "that keeps ever more state?)")
-        _             -> Nothing
-      failureText = case ending of
-        Failed ce -> Just (displayException ce)
-        _         -> stoppedText
-      summary   = LogSummary simulated steps (-1) wall interrupted failureText Nothing scores
-  Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
-  let runErrs = maybe [] pure stoppedText
-  printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
-    (case ending of
-       Interrupted   -> "interrupted: "
-       Failed _      -> "failed: "
-       WriteFailed _ -> "stopped: "
-       OutOfHeap     -> "stopped: "
-       Finished      -> "" :: String)
-    simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
-  unless (optQuiet opts) (mapM_ putStrLn wrote)
-  -- (the summary written, or said to be lost: a full disk is not success)
-  outErrs <- case ending of
-    WriteFailed _ -> [] <$ flushStdout   -- (said once: the write that stopped the run)
-    _             -> maybe [] pure <$> flushStdout
-  videoErrs <- case (ending, optVideo opts) of
-    -- (the checks before the run made sure ffmpeg is there when --video is given)
-    (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe nFrames file
-    _                                                      -> pure []
-  let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs
-                                         ++ outErrs ++ videoErrs)
-  unless (null allErrs) (putErr (unlines allErrs))
-  -- (the SIGTERM that stopped the run, or that came while the outputs
+  -- (from here neither signal stops the run: it is writing its outputs,
+  -- and assembling the video; one that comes is noted, for the exit code)
+  failed <- whileFinishing stopper $ do
+    when progress (hPutStr stderr eraseProgress)
+    steps <- readIORef stepsRef
+    scores <- readIORef scoresRef
+    nFrames <- readIORef framesRef
+    end <- getMonotonicTime
+    let simulated = roundTo 1e9 (fromIntegral (max 0 (steps - 1)) * dt)   -- (as the log's frames' times)
+        wall      = end - start
+        failure   = case ending of
+          Failed ce -> Just ce
+          _         -> Nothing
+        interrupted = case ending of
+          Interrupted -> True
+          _           -> False
+        -- (what stopped the run early, for the log's summary and the result
+        -- line: a controller's failure, or a write that failed)
+        stoppedText = case ending of
+          WriteFailed e -> Just ("the run stopped: a write failed: " ++ ioErrorText e)
+          OutOfHeap     -> Just ("the run stopped: it ran out of memory (the heap limit, +RTS -M; a controller "
+                                 ++ "that keeps ever more state?)")
+          _             -> Nothing
+        failureText = case ending of
+          Failed ce -> Just (displayException ce)
+          _         -> stoppedText
+        summary   = LogSummary simulated steps (-1) wall interrupted failureText Nothing scores
+    Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
+    let runErrs = maybe [] pure stoppedText
+    printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
+      (case ending of
+         Interrupted   -> "interrupted: "
+         Failed _      -> "failed: "
+         WriteFailed _ -> "stopped: "
+         OutOfHeap     -> "stopped: "
+         Finished      -> "" :: String)
+      simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
+    unless (optQuiet opts) (mapM_ putStrLn wrote)
+    -- (the summary written, or said to be lost: a full disk is not success)
+    outErrs <- case ending of
+      WriteFailed _ -> [] <$ flushStdout   -- (said once: the write that stopped the run)
+      _             -> maybe [] pure <$> flushStdout
+    videoErrs <- case (ending, optVideo opts) of
+      -- (the checks before the run made sure ffmpeg is there when --video is given)
+      (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe nFrames file
+      _                                                      -> pure []
+    let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs
+                                           ++ outErrs ++ videoErrs)
+    unless (null allErrs) (putErr (unlines allErrs))
+    pure (not (null allErrs))
+  -- (the signal that stopped the run, or that came while the outputs
   -- were written: the run is whole then, but whoever sent it is told that
-  -- it came)
+  -- it came, by the exit code and in words)
   signal <- signalReceived stopper
+  case (ending, signal) of
+    (Interrupted, _) -> pure ()
+    (_, Just k)      -> putErr (prog ++ ": " ++ signalName k ++ " received while the outputs were being written: "
+                                ++ "they were written first\n")
+    _                -> pure ()
   case ending of
     -- (the shell's code for a program ended by a signal: 128 and its
     -- number, Ctrl-C's 2 when no other came)
     Interrupted -> exitWith (ExitFailure (128 + maybe 2 id signal))
     Failed _    -> exitWith (ExitFailure 1)
     _ | Just k <- signal -> exitWith (ExitFailure (128 + k))
-    _ | not (null allErrs) -> exitWith (ExitFailure 1)
-      | otherwise          -> pure ()
+    _ | failed           -> exitWith (ExitFailure 1)
+      | otherwise        -> pure ()
+  where
+    signalName k = case k of
+      2  -> "Ctrl-C (SIGINT)"
+      15 -> "SIGTERM"
+      _  -> "signal " ++ show k
 
 -- Assemble this run's frames with ffmpeg (the executable found on the PATH
 -- before the run); the errors, if any. Only the run's own frames go in:
