@@ -150,8 +150,10 @@ endOutput :: String -> IO ()
 endOutput prog = flushStdout >>= maybe (pure ()) (stopProgram prog 1)
 
 -- | @stopProgram prog code msg@: the program stopped, @msg@ on standard
--- error after the program's name (@prog: msg@, one line) and the exit
--- code @code@ (by 'exitWith', so a caller may catch the 'ExitCode').
+-- error after the program's name (@prog: msg@ and a newline; a message of
+-- several lines, such as a heading with the faults below it, as it is)
+-- and the exit code @code@ (by 'exitWith', so a caller may catch the
+-- 'ExitCode').
 stopProgram :: String -> Int -> String -> IO a
 stopProgram prog code msg = putErr (prog ++ ": " ++ msg ++ "\n") >> exitWith (ExitFailure code)
 

@@ -39,7 +39,11 @@
 -- with what was simulated (the log gets its summary, the page and the SVG
 -- are written), every frame written is complete (frames are written to a
 -- temporary file and renamed; no temporary file is left), and the summary
--- is printed. Two runs with the same world, controllers and flags write
+-- is printed. A Ctrl-C or @SIGTERM@ that comes while the outputs are
+-- being written does not stop that: they are finished, the summary is
+-- printed, a line on standard error says which signal came, and the exit
+-- code is 130 or 143 ("AFrobRobotSim.Run.Signals"; a second Ctrl-C ends
+-- the program at once). Two runs with the same world, controllers and flags write
 -- byte-identical frames.
 --
 -- The design that keeps a run's memory independent of its length: the
@@ -77,7 +81,7 @@ module AFrobRobotSim.Run
 import           Control.Concurrent        (getNumCapabilities)
 import           Control.Exception         (AsyncException (HeapOverflow, UserInterrupt), Exception (..), IOException, SomeException,
                                             evaluate, mask_, throwIO, try)
-import           Control.Monad             (forM, unless, when)
+import           Control.Monad             (forM, forM_, unless, when)
 import           Data.Char                 (isPrint, isSpace)
 import           Data.IORef
 import           Data.List                 (intercalate)
@@ -92,11 +96,11 @@ import           System.Process            (rawSystem)
 import           Text.Printf               (printf)
 
 import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, ioErrorText, putErr, quote,
-                                            tolerantOutput)
+                                            stopProgram, tolerantOutput)
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
 import           AFrobRobotSim.Options
-import           AFrobRobotSim.Options.Check (timesText)
+import           AFrobRobotSim.Options.Check (printingModesFault, timesText)
 import           AFrobRobotSim.Pipeline    (batchFor, pipeline)
 import           AFrobRobotSim.Referee
 import           AFrobRobotSim.Render
@@ -135,7 +139,7 @@ runSimRefereed referee mworld rcA rcB = do
   args <- getArgs
   prog <- getProgName
   case parseSimArgs defaultSimOptions args of
-    Left err       -> failWith 2 (prog ++ ": " ++ err)
+    Left err       -> stopProgram prog 2 err
     Right ShowHelp -> putStrLn (usage prog) >> endOutput prog
     Right (RunWith opts) -> runSimRefereedWith opts referee mworld rcA rcB
 
@@ -150,10 +154,9 @@ runSimRefereedWith opts referee mworld rcA rcB = do
   tolerantOutput   -- (a message the terminal's encoding cannot write must not stop the run)
   prog  <- getProgName
   -- (the two printing modes set together in code: refused before either
-  -- prints, with the other faults 'validateOptions' finds; a command line
-  -- with both is refused where it is read)
-  when (optPrintProgram opts && optDumpWorld opts) $
-    failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) (validateOptions opts)))
+  -- prints, with the other faults 'validateOptions' finds, this one among
+  -- them; a command line with both is refused where it is read)
+  forM_ (printingModesFault opts) $ \_ -> refuse prog "cannot run:" (validateOptions opts)
   if optPrintProgram opts
     -- (the name alone: no world read, nothing written, no warning)
     then putStrLn (encodeJSON (programJSON prog opts)) >> endOutput prog
@@ -166,11 +169,11 @@ runPrepared prog opts referee mworld rcA rcB = do
   -- its line; one given in code here; the run does not check it again,
   -- see 'simulateUnchecked')
   world <- case optWorldFile opts of
-    Just file -> readWorldFile file >>= either (\e -> failWith 2 (prog ++ ": " ++ e)) pure
+    Just file -> readWorldFile file >>= either (stopProgram prog 2) pure
     Nothing   -> do
       let world = maybe defaultWorld id mworld
       case validateWorld world of
-        Left errs -> failWith 2 (unlines ((prog ++ ": the world is invalid:") : map ("  " ++) errs))
+        Left errs -> refuse prog "the world is invalid:" errs
         Right ()  -> pure world
   if optDumpWorld opts
     then do
@@ -186,8 +189,7 @@ runPrepared prog opts referee mworld rcA rcB = do
     else do
       -- (the referee's goals, before the checks of the files, which make
       -- the output folder when nothing else is wrong)
-      let cannotRun errs = unless (null errs) $
-            failWith 2 (unlines ((prog ++ ": cannot run:") : map ("  " ++) errs))
+      let cannotRun errs = unless (null errs) (refuse prog "cannot run:" errs)
       cannotRun (checkGoals referee)
       (errs, ffmpeg) <- preflight (worldBounds world) opts
       cannotRun errs
@@ -274,7 +276,7 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
       states   = take (nSteps + 1) (simulateUnchecked cfg world rcA rcB)
   mrec <- forM (optReplay opts) $ \file -> do
     r <- try (newReplayRecorder replayRun logCfg)
-    either (\(e :: IOException) -> failWith 2 (prog ++ ": --replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r
+    either (\(e :: IOException) -> stopProgram prog 2 ("--replay " ++ show file ++ ": its temporary file: " ++ ioErrorText e)) pure r
   stepsRef  <- newIORef (0 :: Int)
   scoresRef <- newIORef []   -- (the last simulated state's scores, for the summaries)
   framesRef <- newIORef (0 :: Int)
@@ -287,7 +289,7 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
   -- here leaves an existing log as it was)
   mlog <- forM (optLog opts) $ \file -> do
     r <- try (openLogWriter logCfg file)
-    either (\(e :: IOException) -> failWith 2 (prog ++ ": --log " ++ show file ++ ": " ++ ioErrorText e)) pure r
+    either (\(e :: IOException) -> stopProgram prog 2 ("--log " ++ show file ++ ": " ++ ioErrorText e)) pure r
   -- (the progress line last: it counts the frames written up to and
   -- including this step's)
   let progress = tty && not (optQuiet opts)
@@ -347,67 +349,78 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
       (produced, stopped) <- pipeline (batchFor nRobots) (\s -> () <$ evaluate (forceWorldState s)) sinkAll states
       maybe (either endedBy (const (pure Finished)) produced) endedBy stopped
     else try (loop 0 states) >>= either endedBy pure
-  -- (from here a SIGTERM no longer stops the run: it is writing its
-  -- outputs, and assembling the video)
-  finishing stopper
-  when progress (hPutStr stderr eraseProgress)
-  steps <- readIORef stepsRef
-  scores <- readIORef scoresRef
-  nFrames <- readIORef framesRef
-  end <- getMonotonicTime
-  let simulated = roundTo 1e9 (fromIntegral (max 0 (steps - 1)) * dt)   -- (as the log's frames' times)
-      wall      = end - start
-      failure   = case ending of
-        Failed ce -> Just ce
-        _         -> Nothing
-      interrupted = case ending of
-        Interrupted -> True
-        _           -> False
-      -- (what stopped the run early, for the log's summary and the result
-      -- line: a controller's failure, or a write that failed)
-      stoppedText = case ending of
-        WriteFailed e -> Just ("the run stopped: a write failed: " ++ ioErrorText e)
-        OutOfHeap     -> Just ("the run stopped: it ran out of memory (the heap limit, +RTS -M; a controller "
-                               ++ "that keeps ever more state?)")
-        _             -> Nothing
-      failureText = case ending of
-        Failed ce -> Just (displayException ce)
-        _         -> stoppedText
-      summary   = LogSummary simulated steps (-1) wall interrupted failureText Nothing scores
-  Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
-  let runErrs = maybe [] pure stoppedText
-  printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
-    (case ending of
-       Interrupted   -> "interrupted: "
-       Failed _      -> "failed: "
-       WriteFailed _ -> "stopped: "
-       OutOfHeap     -> "stopped: "
-       Finished      -> "" :: String)
-    simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
-  unless (optQuiet opts) (mapM_ putStrLn wrote)
-  -- (the summary written, or said to be lost: a full disk is not success)
-  outErrs <- case ending of
-    WriteFailed _ -> [] <$ flushStdout   -- (said once: the write that stopped the run)
-    _             -> maybe [] pure <$> flushStdout
-  videoErrs <- case (ending, optVideo opts) of
-    -- (the checks before the run made sure ffmpeg is there when --video is given)
-    (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe nFrames file
-    _                                                      -> pure []
-  let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs
-                                         ++ outErrs ++ videoErrs)
-  unless (null allErrs) (putErr (unlines allErrs))
-  -- (the SIGTERM that stopped the run, or that came while the outputs
+  -- (from here neither signal stops the run: it is writing its outputs,
+  -- and assembling the video; one that comes is noted, for the exit code)
+  failed <- whileFinishing stopper $ do
+    when progress (hPutStr stderr eraseProgress)
+    steps <- readIORef stepsRef
+    scores <- readIORef scoresRef
+    nFrames <- readIORef framesRef
+    end <- getMonotonicTime
+    let simulated = roundTo 1e9 (fromIntegral (max 0 (steps - 1)) * dt)   -- (as the log's frames' times)
+        wall      = end - start
+        failure   = case ending of
+          Failed ce -> Just ce
+          _         -> Nothing
+        interrupted = case ending of
+          Interrupted -> True
+          _           -> False
+        -- (what stopped the run early, for the log's summary and the result
+        -- line: a controller's failure, or a write that failed)
+        stoppedText = case ending of
+          WriteFailed e -> Just ("the run stopped: a write failed: " ++ ioErrorText e)
+          OutOfHeap     -> Just ("the run stopped: it ran out of memory (the heap limit, +RTS -M; a controller "
+                                 ++ "that keeps ever more state?)")
+          _             -> Nothing
+        failureText = case ending of
+          Failed ce -> Just (displayException ce)
+          _         -> stoppedText
+        summary   = LogSummary simulated steps (-1) wall interrupted failureText Nothing scores
+    Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
+    let runErrs = maybe [] pure stoppedText
+    printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
+      (case ending of
+         Interrupted   -> "interrupted: "
+         Failed _      -> "failed: "
+         WriteFailed _ -> "stopped: "
+         OutOfHeap     -> "stopped: "
+         Finished      -> "" :: String)
+      simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
+    unless (optQuiet opts) (mapM_ putStrLn wrote)
+    -- (the summary written, or said to be lost: a full disk is not success)
+    outErrs <- case ending of
+      WriteFailed _ -> [] <$ flushStdout   -- (said once: the write that stopped the run)
+      _             -> maybe [] pure <$> flushStdout
+    videoErrs <- case (ending, optVideo opts) of
+      -- (the checks before the run made sure ffmpeg is there when --video is given)
+      (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe nFrames file
+      _                                                      -> pure []
+    let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs
+                                           ++ outErrs ++ videoErrs)
+    unless (null allErrs) (putErr (unlines allErrs))
+    pure (not (null allErrs))
+  -- (the signal that stopped the run, or that came while the outputs
   -- were written: the run is whole then, but whoever sent it is told that
-  -- it came)
+  -- it came, by the exit code and in words)
   signal <- signalReceived stopper
+  case (ending, signal) of
+    (Interrupted, _) -> pure ()
+    (_, Just k)      -> putErr (prog ++ ": " ++ signalName k ++ " received while the outputs were being written: "
+                                ++ "they were written first\n")
+    _                -> pure ()
   case ending of
     -- (the shell's code for a program ended by a signal: 128 and its
     -- number, Ctrl-C's 2 when no other came)
     Interrupted -> exitWith (ExitFailure (128 + maybe 2 id signal))
     Failed _    -> exitWith (ExitFailure 1)
     _ | Just k <- signal -> exitWith (ExitFailure (128 + k))
-    _ | not (null allErrs) -> exitWith (ExitFailure 1)
-      | otherwise          -> pure ()
+    _ | failed           -> exitWith (ExitFailure 1)
+      | otherwise        -> pure ()
+  where
+    signalName k = case k of
+      2  -> "Ctrl-C (SIGINT)"
+      15 -> "SIGTERM"
+      _  -> "signal " ++ show k
 
 -- Assemble this run's frames with ffmpeg (the executable found on the PATH
 -- before the run); the errors, if any. Only the run's own frames go in:
@@ -438,5 +451,8 @@ makeVideo opts exe nFrames file = do
   where
     inFolder dir = concatMap (\c -> if c == '%' then "%%" else [c]) (if isAbsolute dir then dir else "." </> dir)
 
-failWith :: Int -> String -> IO a
-failWith code msg = putErr (if null msg || last msg /= '\n' then msg ++ "\n" else msg) >> exitWith (ExitFailure code)
+-- @refuse prog heading faults@: the run refused before it began (exit
+-- code 2, 'stopProgram'), the heading after the program's name and each
+-- fault on a line of its own below it, indented.
+refuse :: String -> String -> [String] -> IO a
+refuse prog heading faults = stopProgram prog 2 (intercalate "\n" (heading : map ("  " ++) faults))

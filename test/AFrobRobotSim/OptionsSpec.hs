@@ -62,7 +62,7 @@ spec = do
       validateOptions d { optSeconds = 0 / 0 } `shouldBe` ["optSeconds must be a finite number >= 0, got NaN"]
       validateOptions d { optSeconds = 1 / 0 } `shouldBe` ["optSeconds must be a finite number >= 0, got Infinity"]
       validateOptions d { optDumpWorld = True, optPrintProgram = True }
-        `shouldBe` ["optDumpWorld and optPrintProgram are both set: each prints something and exits; set one"]
+        `shouldBe` ["--dump-world and --print-program (optDumpWorld and optPrintProgram) each print something and exit: ask for one"]
       validateOptions d { optPrintProgram = True } `shouldBe` []
       -- (the settings a command line starts from are set in code: so named)
       parseSimArgs d { optFps = 0 } ["--seconds", "2"] `shouldBe` Left "optFps must be a finite number > 0, got 0.0"
@@ -72,6 +72,13 @@ spec = do
                   , ["--seed", "1e20"], ["--keys", "-1:a"], ["--out", ""], ["--svg", ""]
                   , ["--seconds", "1e20", "--dt", "0.01"], ["--fps", "30"] ]
         `shouldSatisfy` all (\m -> "--" `isPrefixOf` m && not ("opt" `isInfixOf` m))
+    it "refuses both printing modes with one message, naming both flags and both fields, however they were set (by the flags it was one text, in code another)" $ do
+      let d = defaultSimOptions
+          both = "--dump-world and --print-program (optDumpWorld and optPrintProgram) each print something and exit: ask for one"
+      parseSimArgs d ["--dump-world", "--print-program"] `shouldBe` Left both
+      parseSimFlags d ["--print-program", "--dump-world", "--svg", ""] `shouldBe` Left both
+      parseSimArgs d { optDumpWorld = True } ["--print-program"] `shouldBe` Left both
+      validateOptions d { optDumpWorld = True, optPrintProgram = True } `shouldBe` [both]
   describe "readableNumber (the helper once exported as num)" $
     it "writes a number as the messages do: three decimals at most, no trailing zeros, an exponent when far from 1" $
       map readableNumber [25, 0.01, 100 / 3, 0, -2.5, 1e20, 2.5e-4, 1e6]

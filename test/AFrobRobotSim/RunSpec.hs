@@ -173,6 +173,10 @@ childVariable = "AFRP_SPEC_RUN_CHILD"
 -- meanwhile.
 -- @replayfrom@: @simbot --replay-from@ ('replayFromMain') with the
 -- child's arguments, as @simbot@.
+-- @pagefifo@: two simulated seconds of the default world, the log, the
+-- SVG, the result line and the replay page, written into the named pipe
+-- @page.fifo@ (190 kB, more than a pipe holds), for the parent to read,
+-- or not.
 child :: String -> IO ()
 child arg = case break (== ':') arg of
   ("hour", _ : dir) -> runSimWith defaultSimOptions
@@ -216,6 +220,9 @@ child arg = case break (== ':') arg of
     , optLog = Just (dir </> "run.jsonl"), optReplay = Just (dir </> "run.html") } (Just world) talker drive
   ("held", _ : dir) -> heldThenSpin dir awaitSignal (pure ())
   ("replayfrom", _) -> getArgs >>= withProgName "simbot" . replayFromMain
+  ("pagefifo", _ : dir) -> runSimWith (quick dir)
+    { optFrames = False, optLog = Just (dir </> "run.jsonl"), optSvg = Just (dir </> "run.svg")
+    , optResult = Just (dir </> "r.json"), optReplay = Just (dir </> "page.fifo") } Nothing drive drive
   ("heldtwice", _ : dir) -> heldThenSpin dir awaitSignal (threadDelay 300000 >> raiseSignal sigTERM >> threadDelay 200000)
   ("heldint", _ : dir) -> heldThenSpin dir (const (threadDelay 2000000)) (pure ())
   ("holdoff", _ : dir) -> holdOff dir awaitSignal
@@ -726,6 +733,47 @@ spec = do
         err `shouldBe` ""
         fmap (any ("\"interrupted\":true" `isInfixOf`)) rest `shouldBe` Just True
         doesFileExist (dir </> "run.svg") `shouldReturn` True
+  describe "a signal that comes while the outputs are being written" $
+    forM_ watched $ \(name, send, named, k) -> forM_ [1, 2 :: Int] $ \caps ->
+      it ("(" ++ name ++ ") does not cut the writing short: the outputs are finished, the summary printed, the signal "
+          ++ "said, exit code " ++ show (128 + k) ++ " (a Ctrl-C left the page cut short, no SVG, no result line, no "
+          ++ "summary, and said nothing) (+RTS -N" ++ show caps ++ ")") $ withTempDir $ \dir -> do
+        let fifo = dir </> "page.fifo"
+        createNamedPipe fifo 0o600
+        -- (opened for reading and writing: the child's page, opened
+        -- without waiting, needs a reader there)
+        reader <- openBinaryFile fifo ReadWriteMode
+        writing <- childOn "pagefifo" dir caps
+        (_, Just hout, Just herr, ph) <- createProcess writing { create_group = True, std_out = CreatePipe, std_err = CreatePipe }
+        -- (the page's first bytes: the child is writing its outputs, and
+        -- waits once the pipe is full, nobody reading; the signal then)
+        begun <- timeout 60000000 (BS.hGetSome reader 16)
+        _ <- maybe (killChild ph) (const (pure ExitSuccess)) begun
+        threadDelay 300000
+        send ph
+        threadDelay 300000
+        -- (the rest of the page, as far as it comes)
+        let drain acc = do
+              more <- hWaitForInput reader 2000
+              if not more then pure acc else do
+                chunk <- BS.hGetSome reader 65536
+                let acc' = acc <> chunk
+                if BS.pack (map (toEnum . fromEnum) "</html>\n") `BS.isSuffixOf` acc' then pure acc' else drain acc'
+        page <- drain (maybe BS.empty id begun)
+        hClose reader
+        out <- hGetContents hout
+        err <- hGetContents herr
+        done <- timeout 60000000 (length out `seq` length err `seq` waitForProcess ph)
+        _ <- maybe (killChild ph) pure done
+        done `shouldBe` Just (ExitFailure (128 + k))
+        (BS.isPrefixOf (BS.pack (map (toEnum . fromEnum) "<!DOCTYPE html>")) page
+          , BS.isSuffixOf (BS.pack (map (toEnum . fromEnum) "</html>\n")) page) `shouldBe` (True, True)
+        lines out `shouldSatisfy` \ls -> case ls of
+          [summary] -> "2.00 s simulated in 201 steps" `isPrefixOf` summary
+          _         -> False
+        lines err `shouldBe` ["afrp-spec: " ++ named ++ " received while the outputs were being written: they were written first"]
+        doesFileExist (dir </> "run.svg") `shouldReturn` True
+        readFile (dir </> "r.json") >>= (`shouldSatisfy` ("\"simulated\":2" `isInfixOf`))
   describe "a SIGTERM the program was started ignoring (nohup, a batch system)" $
     it "is still ignored: the run goes on, and Ctrl-C stops it" $ withTempDir $ \dir -> do
       self <- getExecutablePath
@@ -1166,7 +1214,7 @@ spec = do
       (out, err, r) <- captured (runSimWith (quick "unused") { optDumpWorld = True, optPrintProgram = True } (Just world) drive drive)
       (r, out) `shouldBe` (Left (ExitFailure 2), "")
       lines err `shouldBe` [ "afrp-spec: cannot run:"
-                           , "  optDumpWorld and optPrintProgram are both set: each prints something and exits; set one" ]
+                           , "  --dump-world and --print-program (optDumpWorld and optPrintProgram) each print something and exit: ask for one" ]
       doesPathExist "unused" `shouldReturn` False
     it "a step count that overflows or is beyond the maximum" $ do
       refused (\dir -> (quick dir) { optSeconds = 1e20 }) ("steps" `isInfixOf`)

@@ -42,7 +42,7 @@ spec = do
         `shouldReturn` (ExitSuccess, "\"afrp-examples rcReverse\"\n", "")
       -- (with --dump-world, which prints too: refused, neither printed)
       examples ["rcReverse", "--dump-world", "--print-program"] `shouldReturn`
-        (ExitFailure 2, "", "afrp-examples: --dump-world and --print-program each print something and exit: give one\n")
+        (ExitFailure 2, "", "afrp-examples: --dump-world and --print-program (optDumpWorld and optPrintProgram) each print something and exit: ask for one\n")
   describe "afrp-examples' --help" $ do
     it "--help prints the program's usage, exit 0" $ do
       (code, out, err) <- examples ["--help"]

@@ -15,6 +15,7 @@ module AFrobRobotSim.Options.Check
     validateOptions
   , validateOptionsIn
   , outputNameFaults
+  , printingModesFault
     -- * The limits
   , maxSteps
   , maxFrameSide
@@ -51,13 +52,12 @@ import           AFrobRobotSim.World (Bounds (..))
 --
 -- A fault that only options set in code can have (a value a flag
 -- refuses, such as a negative 'optSeconds', or a name twice in
--- 'optParams', where a command line keeps the last; both printing modes,
--- 'optDumpWorld' and 'optPrintProgram', which a command line's reader
--- refuses by their flags first) is named by the record's field, as the
--- code set it: @optSeconds must be a finite number >= 0, got -1.0@. A
--- fault that a command line can have too (@--seconds
+-- 'optParams', where a command line keeps the last) is named by the
+-- record's field, as the code set it: @optSeconds must be a finite number
+-- >= 0, got -1.0@. A fault that a command line can have too (@--seconds
 -- 1e20 with --dt 0.01@, an empty @--svg@) is named by its flags, which
--- are the fields' names on the command line.
+-- are the fields' names on the command line; both printing modes set
+-- ('printingModesFault') by both.
 validateOptions :: SimOptions -> [String]
 validateOptions o =
   -- (what the flags refuse one at a time, for options set in code and
@@ -95,8 +95,7 @@ validateOptions o =
   ++ [ "optParams names the parameter " ++ show k ++ " " ++ timesText (length vs) ++ "; a name holds one value"
      | (k, vs) <- repeatedBy (optParams o) ]
   ++ [ "optOut must not be empty" | null (optOut o) ]
-  ++ [ "optDumpWorld and optPrintProgram are both set: each prints something and exits; set one"
-     | optDumpWorld o, optPrintProgram o ]
+  ++ maybe [] pure (printingModesFault o)
   ++ outputNameFaults o
   where
     secs = optSeconds o; dt = optDt o; fps = optFps o
@@ -140,6 +139,26 @@ validateOptionsIn b@(Bounds x0 y0 x1 y1) o =
     w = x1 - x0
     h = y1 - y0
     side = max w h * scale + 20
+
+-- | The fault of settings that ask for both printing modes,
+-- 'optDumpWorld' and 'optPrintProgram', each of which prints something
+-- and exits instead of running: 'Just' its message when both are set,
+-- 'Nothing' otherwise. The message names both flags and both fields, as
+-- the settings may come from a command line or from code. It is the one
+-- check of the pair: a command line's reader refuses the pair with it
+-- alone ('AFrobRobotSim.Options.CommandLine.parseSimFlags', before the
+-- other faults of its flags), 'validateOptions' lists it with the other
+-- faults, and 'AFrobRobotSim.runSimWith', which prints the program's
+-- name before it checks anything else, refuses the pair with it (exit
+-- code 2) before either prints.
+--
+-- >>> printingModesFault defaultSimOptions { optDumpWorld = True, optPrintProgram = True }
+-- Just "--dump-world and --print-program (optDumpWorld and optPrintProgram) each print something and exit: ask for one"
+printingModesFault :: SimOptions -> Maybe String
+printingModesFault o
+  | optDumpWorld o && optPrintProgram o =
+      Just "--dump-world and --print-program (optDumpWorld and optPrintProgram) each print something and exit: ask for one"
+  | otherwise = Nothing
 
 -- | The faults of the outputs' names that the settings themselves show,
 -- whatever they started from: an empty @--svg@, @--replay@, @--log@,

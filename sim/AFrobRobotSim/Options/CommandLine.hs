@@ -79,7 +79,9 @@ parseSimArgs o0 args = parseSimFlags o0 args >>= \c -> case c of
 -- ('validateOptions'): only what each flag refuses on its own (an
 -- unknown flag, a missing or malformed value, a number out of the flag's
 -- range, an empty file name, a video's name that is no video format's:
--- 'outputNameFaults'), which does not depend on the given settings. For a reader of
+-- 'outputNameFaults'), which does not depend on the given settings, and
+-- both printing modes asked for ('printingModesFault', refused before
+-- the others). For a reader of
 -- the command line's @--param@s ('AFrobRobotSim.getSimParams'), which
 -- cannot know the settings a program starts from: whether @--dt 0.05@
 -- fits the frame rate is the program's run's to say.
@@ -91,11 +93,10 @@ parseSimFlags o0 = go o0 False False [] []
   -- first), and its other flags with a value but @--keys@ (the same)
   go o svgNamed pageNamed given flags args = case args of
     []                       -> let o' = repeats given flags (relocated o svgNamed pageNamed)
-                                in case outputNameFaults o' of
-                                     _ | optDumpWorld o' && optPrintProgram o' ->
-                                       Left "--dump-world and --print-program each print something and exit: give one"
-                                     []   -> Right (RunWith o')
-                                     errs -> Left (intercalate "; " errs)
+                                in case (printingModesFault o', outputNameFaults o') of
+                                     (Just fault, _) -> Left fault
+                                     (Nothing, [])   -> Right (RunWith o')
+                                     (Nothing, errs) -> Left (intercalate "; " errs)
     flag : _ | isHelpFlag flag -> Right ShowHelp
     flag : rest | Just switch <- lookup flag switches ->
       case switch (o, svgNamed, pageNamed) of (o', s', p') -> go o' s' p' given flags rest

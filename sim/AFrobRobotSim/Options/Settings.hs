@@ -47,6 +47,7 @@ data SimOptions = SimOptions
     -- how @scripts/sweep@ learns the name of the program it runs, for the
     -- lines of runs that write no result); set with 'optDumpWorld' too,
     -- the run is refused (exit code 2) before either prints
+    -- ('AFrobRobotSim.Options.Check.printingModesFault')
   , optRays          :: !Bool              -- ^ draw range-finder rays
   , optTrails        :: !Bool              -- ^ draw trails
   , optSvg           :: Maybe FilePath     -- ^ write an SVG of the whole run

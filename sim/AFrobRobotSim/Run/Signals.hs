@@ -1,4 +1,5 @@
 {-# LANGUAGE CPP                      #-}
+{-# LANGUAGE ScopedTypeVariables      #-}
 {-# LANGUAGE ForeignFunctionInterface #-}
 -- |
 -- Module      : AFrobRobotSim.Run.Signals
@@ -11,9 +12,12 @@
 -- nothing. 'interruptible' makes it stop a run as Ctrl-C does, and
 -- ignores it while the run's outputs are being written (the video's
 -- assembly by ffmpeg included), after which the run ends with its exit
--- code. @SIGHUP@ (a closed terminal) is left as it is: a run that can no
--- longer write to its terminal could not say what it wrote, and @nohup@
--- makes a program ignore it.
+-- code. A first Ctrl-C that comes then is ignored too ('whileFinishing'),
+-- and the run ends with 130; either signal so ignored is said on
+-- standard error once the outputs are written. @SIGHUP@ (a closed
+-- terminal) is left as it is: a run that can no longer write to its
+-- terminal could not say what it wrote, and @nohup@ makes a program
+-- ignore it.
 --
 -- One window remains: a @SIGTERM@ that comes after a run's last step and
 -- before its outputs are begun (a few instructions), or while the run is
@@ -81,17 +85,21 @@ module AFrobRobotSim.Run.Signals
   , interruptible
   , signalReceived
   , finishing
+  , whileFinishing
   , stuckGrace
   ) where
 
-import           Control.Concurrent (ThreadId, mkWeakThreadId, myThreadId)
+import           Control.Concurrent (ThreadId, forkIOWithUnmask, killThread, mkWeakThreadId, myThreadId)
+import           Control.Concurrent.MVar (newEmptyMVar, putMVar, takeMVar)
+import           Control.Exception  (AsyncException (UserInterrupt), SomeException, allowInterrupt, catch, fromException,
+                                     mask_, throwIO, try)
 import           System.Mem.Weak    (Weak, deRefWeak)
 import           Data.IORef
 #if !defined(mingw32_HOST_OS)
 import           Control.Concurrent (forkIO, rtsSupportsBoundThreads, throwTo)
-import           Control.Concurrent.MVar (newEmptyMVar, putMVar, readMVar, takeMVar)
+import           Control.Concurrent.MVar (readMVar)
 import           Control.Monad      (unless)
-import           Control.Exception  (AsyncException (UserInterrupt), finally, uninterruptibleMask, uninterruptibleMask_)
+import           Control.Exception  (finally, uninterruptibleMask, uninterruptibleMask_)
 import           Data.Dynamic       (toDyn)
 import           Foreign.C.String   (CString, withCString)
 import           Foreign.C.Types    (CInt (..))
@@ -301,11 +309,43 @@ stuckMessage signal prog =
 
 -- | The number of the first signal received: the one that stopped the
 -- run, or one that came while it wrote its outputs ('Nothing' for none,
--- or for Ctrl-C, which the runtime delivers itself).
+-- or for a Ctrl-C that stopped the run, which the runtime delivers
+-- itself; one that came while the outputs were written, 'whileFinishing',
+-- is noted, as 2).
 signalReceived :: Stopper -> IO (Maybe Int)
 signalReceived (Stopper _ phase) = snd <$> readIORef phase
 
--- | From now on a signal is noted and ignored: the run is writing its
--- outputs.
+-- | From now on a @SIGTERM@ is noted and ignored: the run is writing its
+-- outputs ('whileFinishing' does the same for Ctrl-C).
 finishing :: Stopper -> IO ()
 finishing (Stopper _ phase) = atomicModifyIORef' phase (\(_, got) -> ((True, got), ()))
+
+-- | @whileFinishing stopper write@: 'finishing', then @write@ (the run's
+-- outputs written) to its end, a @SIGTERM@ or a first Ctrl-C that comes
+-- meanwhile noted and not obeyed, and what it gives; what it throws is
+-- thrown on. @write@ runs on a thread of its
+-- own while this one waits for it: a Ctrl-C, which the runtime's handler
+-- throws to the main thread as 'UserInterrupt', reaches only the waiting
+-- thread, which notes it (as 2, Ctrl-C's number, when no signal has been
+-- noted: 'signalReceived') and waits on. (Thrown to the thread that
+-- writes, it would cut the writing short: the file under way left as it
+-- was, the outputs after it not written, an earlier run's files in their
+-- place, and no summary.) A second Ctrl-C still ends the program at once
+-- (the runtime's handler is called once); any other exception thrown to
+-- the waiting thread stops @write@ and is thrown on. Called on a thread
+-- other than the main one, it leaves a Ctrl-C to the main thread, as the
+-- run's loop does.
+whileFinishing :: Stopper -> IO a -> IO a
+whileFinishing stopper@(Stopper _ phase) write = mask_ $ do
+  finishing stopper
+  done <- newEmptyMVar
+  writer <- forkIOWithUnmask $ \unmask -> try (unmask write) >>= putMVar done
+  let noted = atomicModifyIORef' phase (\(fin, got) -> ((fin, maybe (Just 2) Just got), ()))
+      waited = takeMVar done `catch` \(e :: SomeException) -> case fromException e of
+        Just UserInterrupt -> noted >> waited
+        _                  -> killThread writer >> throwIO e
+  result <- waited
+  -- (a Ctrl-C that came as the writing ended, held off until now by the
+  -- mask: noted, not thrown on after it)
+  allowInterrupt `catch` \e -> if e == UserInterrupt then noted else throwIO e
+  either (\(e :: SomeException) -> throwIO e) pure result
