@@ -1550,8 +1550,11 @@ spec = do
       writeFile (dir </> "jobs") (unlines [ "--seed " ++ show k ++ " --seconds " ++ (if k `elem` [3, 4] then "100000" else "1")
                                           | k <- [1 .. 6 :: Int] ])
       let results = dir </> "r.jsonl"
+      -- (ready when the sweep's temporary folder is there, so that its
+      -- removal is seen, and two runs have ended)
       (code, err) <- sweepInterrupted dir prog "the first two runs did not end" $
-        (>= 2) . length . lines <$> (doesFileExist results >>= \e -> if e then readFile' results else pure "")
+        (&&) <$> (not . null <$> listDirectory (dir </> "tmp"))
+             <*> ((>= 2) . length . lines <$> (doesFileExist results >>= \e -> if e then readFile' results else pure ""))
       code `shouldBe` Just (ExitFailure 143)
       err `shouldSatisfy` ("interrupted (SIGTERM): 2 of 6 runs ended" `isInfixOf`)
       rs <- map parsed . lines <$> readFile' results
@@ -1610,7 +1613,8 @@ spec = do
                               , "sleep 1000 & wait" ])
       writeFile (dir </> "jobs") "--seed 1\n--seed 2\n"
       (code, err) <- sweepInterrupted dir prog "the two runs did not start" $
-        (>= 2) . length <$> listDirectory (dir </> "started")
+        (&&) <$> (not . null <$> listDirectory (dir </> "tmp"))
+             <*> ((>= 2) . length <$> listDirectory (dir </> "started"))
       code `shouldBe` Just (ExitFailure 143)
       err `shouldSatisfy` ("interrupted (SIGTERM): 0 of 2 runs ended" `isInfixOf`)
       map (field ["seed"]) . map parsed . lines <$> readFile' results `shouldReturn` map JNumber [1, 2]
