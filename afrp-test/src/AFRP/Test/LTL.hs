@@ -201,8 +201,8 @@ explainT = monitor
 -- it owes the next samples ('Always a' is 'a' now and 'Always a' owed,
 -- 'Next a' is 'a' owed, 'eventuallyWithin d a' is 'a' now or its window
 -- owed while the window lasts); what is owed is a combination of
--- obligations ('Res'), simplified by the constants: the answer is known
--- when it is one.
+-- obligations ('Res'), simplified ('combine'): the answer is known when
+-- it is a constant.
 --
 -- This is exactly Kleene's three-valued reading of the formula on the
 -- samples seen so far, the samples beyond unknown: the combination is
@@ -212,7 +212,7 @@ explainT = monitor
 -- left meet the end as each operator says ('closeRes').
 monitor :: TPred a -> SignalSampleStream a -> Maybe (Explanation a)
 monitor _ [] = Nothing
-monitor p ((_, a0) : rest0) = go 0 0 a0 res0 atoms0 clockZero0 [] rest0
+monitor p ((_, a0) : rest0) = go 0 0 a0 res0 atoms0 clockAtStart [] rest0
   where
     (root, sfs) = compileT p
     atoms0 = IntMap.fromDistinctAscList (zip [0 ..] [ evalAtZero sf a0 | sf <- sfs ])
@@ -246,7 +246,6 @@ monitor p ((_, a0) : rest0) = go 0 0 a0 res0 atoms0 clockZero0 [] rest0
       | otherwise = case xs of
           (dt, x) : xs' -> let (tk, clock') = evalAt clock dt () in (k, tk, x) : after (k + 1) (n - 1) clock' xs'
           []            -> []
-    clockZero0 = snd (evalAtZero localTime ())
 
 -- The live atoms stepped by one sample (each state evaluated, so that an
 -- atom holds no chain of samples), the others dropped.
@@ -374,7 +373,7 @@ now here@(Here j _) (Node n _ shape) = case shape of
     owes = RLit True . Pending n (-1)
     window = RLit True . Pending n j
 
--- A window's clock where it opens (at 0).
+-- A clock where it starts (at 0): the stream's, and each window's.
 clockAtStart :: FutureSF () DTime
 clockAtStart = snd (evalAtZero localTime ())
 
