@@ -854,10 +854,12 @@ spec = do
       take 2 (dropWhile (/= "-i") args') `shouldBe` ["-i", dir </> "f%%d" </> "frame-%06d.ppm"]
       take 2 (dropWhile (/= "-f") args') `shouldBe` ["-f", "image2"]
       -- (written beside its place, then renamed; odd sides padded)
-      drop (length args' - 1) args' `shouldBe` ["file:" ++ dir </> ".-v.partial.mp4"]
+      -- (.NAME.partialNNNN.EXT: a name of its own, made afresh)
+      map (\a -> (("file:" ++ dir </> ".-v.partial") `isPrefixOf` a, ".mp4" `isSuffixOf` a)) (drop (length args' - 1) args')
+        `shouldBe` [(True, True)]
       take 2 (dropWhile (/= "-vf") args') `shouldBe` ["-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"]
       doesFileExist (dir </> "-v.mp4") `shouldReturn` True
-      doesFileExist (dir </> ".-v.partial.mp4") `shouldReturn` False
+      filter (".-v.partial" `isPrefixOf`) <$> listDirectory dir `shouldReturn` []
       -- (ffmpeg fails: an earlier video of that name is left as it was)
       writeFile (dir </> "old.mp4") "old"
       (do setEnv "PATH" bin
@@ -868,7 +870,38 @@ spec = do
           err `shouldSatisfy` ("ffmpeg failed" `isInfixOf`))
         `finally` (unsetEnv "FAIL" >> maybe (pure ()) (setEnv "PATH") saved)
       readFile (dir </> "old.mp4") `shouldReturn` "old"
-      doesFileExist (dir </> ".old.partial.mp4") `shouldReturn` False
+      filter (".old.partial" `isPrefixOf`) <$> listDirectory dir `shouldReturn` []
+    it "--video writes its video beside its place under a name no other file has (a log, a world there is kept)" $
+      withTempDir $ \dir -> do
+        -- (a stand-in ffmpeg that writes the file named last, as ffmpeg
+        -- -y does, over whatever is there)
+        let bin = dir </> "bin"
+            out = dir </> "f"
+            -- (the name the video was once written under, before its
+            -- rename: a file of the run's own, or another, of that name
+            -- was written over, then renamed away to the video's)
+            oldPartial = dir </> ".v.partial.mp4"
+            worldFile = dir </> ".w.partial.mp4"
+        createDirectory bin
+        writeScript (bin </> "ffmpeg") "#!/bin/sh\nfor a; do last=$a; done\necho video > \"${last#file:}\"\n"
+        writeFile worldFile (renderWorld world)
+        saved <- lookupEnv "PATH"
+        (do setEnv "PATH" bin
+            (_, err, r) <- captured (runSimWith (quick out) { optSeconds = 0.2, optVideo = Just (dir </> "v.mp4")
+                                                            , optLog = Just oldPartial } (Just world) drive drive)
+            (r, err) `shouldBe` (Right (), "")
+            (_, err', r') <- captured (runSimWith (quick out) { optSeconds = 0.2, optVideo = Just (dir </> "w.mp4")
+                                                              , optWorldFile = Just worldFile } Nothing drive drive)
+            (r', err') `shouldBe` (Right (), ""))
+          `finally` maybe (pure ()) (setEnv "PATH") saved
+        readFile (dir </> "v.mp4") `shouldReturn` "video\n"
+        readFile (dir </> "w.mp4") `shouldReturn` "video\n"
+        -- (the run's log, and the world the other run read, are as written)
+        logRead <- readLogFile oldPartial
+        fmap (isJust . rlSummary) logRead `shouldBe` Right True
+        readFile worldFile `shouldReturn` renderWorld world
+        -- (and no temporary file is left)
+        sort <$> listDirectory dir `shouldReturn` sort ["bin", "f", ".v.partial.mp4", ".w.partial.mp4", "v.mp4", "w.mp4"]
     it "writes an SVG of the run" $ withTempDir $ \dir -> do
       _ <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg") }
                                 (Just world) drive drive)
