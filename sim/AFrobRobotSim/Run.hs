@@ -92,7 +92,7 @@ import           System.IO                 (hClose, hIsTerminalDevice, hPutStr, 
 import           System.Process            (rawSystem)
 import           Text.Printf               (printf)
 
-import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, ioErrorText, putErr, quote,
+import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, guardOutput, ioErrorText, putErr, quote,
                                             tolerantOutput)
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
@@ -176,7 +176,7 @@ runPrepared prog opts referee mworld rcA rcB = do
   if optDumpWorld opts
     then do
       let text = renderWorld world
-      putStr text
+      guardOutput prog (putStr text)
       -- (a world made in code may say what a file cannot: more objects
       -- than 'maxObjects', a heading beyond 'maxHeading'; said, not
       -- refused: the world is printed, and runs)

@@ -193,6 +193,10 @@ child arg = case break (== ':') arg of
   ("comments", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSeconds = 0.1, optWorldFile = Just (dir </> "comments.world") }
                                     Nothing drive drive
   ("noworld", _ : dir) -> runSimWith (quick dir) { optWorldFile = Just (dir </> "missing.world") } Nothing drive drive
+  ("dumpbig", _ : _) -> runSimWith defaultSimOptions { optDumpWorld = True }
+                                   (Just (OTSize 100 100 : [ OTBall (Point2 (fromIntegral i * 2 - 45) (fromIntegral j * 2 - 45))
+                                                           | i <- [0 .. 45 :: Int], j <- [0 .. 45 :: Int] ]))
+                                   drive drive
   ("dumpfar", _ : _) -> runSimWith defaultSimOptions { optDumpWorld = True } (Just [OTSimbotA 1 (Point2 0 0) 1e10]) drive drive
   ("badnoise", _ : dir) -> runSimWith (quick dir) { optFrames = False, optOdometryNoise = 2, optDt = 2e6
                                                   , optLog = Just (dir </> "run.jsonl") } (Just world) drive drive
@@ -555,6 +559,21 @@ spec = do
       err `shouldSatisfy` ("cannot write to standard output" `isInfixOf`)
       err `shouldSatisfy` ("Bad file descriptor" `isInfixOf`)
       doesFileExist (dir </> "run.svg") `shouldReturn` True
+  describe "standard output a pipe whose reader has gone" $
+    it "--dump-world of a world longer than the output's buffer fails with exit code 1 and a message (it exited 0, unsaid)" $
+      withTempDir $ \dir -> do
+        self <- getExecutablePath
+        environment <- getEnvironment
+        (readEnd, writeEnd) <- createPipe
+        hClose readEnd
+        (_, _, Just herr, ph) <- createProcess (proc self [])
+          { env = Just ((childVariable, "dumpbig:" ++ dir) : environment)
+          , std_out = UseHandle writeEnd, std_err = CreatePipe }
+        err <- hGetContents herr
+        done <- timeout 60000000 (length err `seq` waitForProcess ph)
+        _ <- maybe (terminateProcess ph >> waitForProcess ph) pure done
+        (done, "cannot write to standard output" `isInfixOf` err, "Broken pipe" `isInfixOf` err, length (lines err))
+          `shouldBe` (Just (ExitFailure 1), True, True, 1)
   describe "a controller whose output depends on itself with no delay" $ do
     forM_ [1, 2 :: Int] $ \caps ->
       it ("fails the run with <<loop>>, naming the robot, its outputs written (" ++ show caps ++ " capabilities)") $
