@@ -18,7 +18,7 @@ import           Data.List          (intercalate, isPrefixOf, sortOn)
 import           System.Environment (getArgs, getProgName)
 
 import           AFrobRobotSim
-import           AFrobRobotSim.Console (endOutput, stopProgram)
+import           AFrobRobotSim.Console (endOutput, guardOutput, stopProgram)
 import           Examples.Registry  (allExamples, exampleCommand, exampleListing)
 import           Examples.Types
 
@@ -31,7 +31,7 @@ examplesMain :: IO ()
 examplesMain = do
   args <- getArgs
   prog <- getProgName
-  run prog args
+  guardOutput prog (run prog args)
   endOutput prog   -- (what was printed reached standard output, or exit code 1)
 
 run :: String -> [String] -> IO ()

@@ -25,15 +25,17 @@ module AFrobRobotSim.Console
   , closedAtStart
   , flushStdout
   , endOutput
+  , guardOutput
   , stopProgram
   , putErr
   ) where
 
-import           Control.Exception (IOException, catch, try)
+import           Control.Exception (IOException, catch, throwIO, try)
 import           Data.Char         (GeneralCategory (..), generalCategory, isPrint, showLitChar)
 import           Data.Bits         (testBit)
 import           Data.List         (isInfixOf)
 import           Foreign.C.Types   (CInt (..))
+import           GHC.IO.Exception  (IOException (ioe_handle))
 import           System.Exit       (ExitCode (ExitFailure), exitWith)
 import           System.IO         (BufferMode (..), hFlush, hGetEncoding, hPutStr, hSetBuffering, hSetEncoding,
                                     mkTextEncoding, stderr, stdout)
@@ -148,6 +150,20 @@ printableLine = foldr esc ""
 -- standard error, after the program's name, and exit code 1.
 endOutput :: String -> IO ()
 endOutput prog = flushStdout >>= maybe (pure ()) (stopProgram prog 1)
+
+-- | @guardOutput prog act@: @act@, and a write to standard output that
+-- fails in it (a full disk, a pipe whose reader has gone) said as
+-- 'endOutput' says one, with exit code 1; any other exception is thrown
+-- on. For a text longer than standard output's buffer, which fails in
+-- the middle of its writing, before 'endOutput': left to the runtime, a
+-- full disk ended the program with the bare exception, and a pipe whose
+-- reader had gone with exit code 0 and nothing said (the runtime takes
+-- @EPIPE@ on standard output for a reader that has all it wants: a
+-- @--dump-world@ cut short passed for one written).
+guardOutput :: String -> IO a -> IO a
+guardOutput prog act = act `catch` \(e :: IOException) -> case ioe_handle e of
+  Just h | h == stdout -> stopProgram prog 1 ("cannot write to standard output: " ++ ioErrorText e)
+  _                    -> throwIO e
 
 -- | @stopProgram prog code msg@: the program stopped, @msg@ on standard
 -- error after the program's name (@prog: msg@ and a newline; a message of

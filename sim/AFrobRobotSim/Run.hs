@@ -80,7 +80,7 @@ module AFrobRobotSim.Run
 
 import           Control.Concurrent        (getNumCapabilities)
 import           Control.Exception         (AsyncException (HeapOverflow, UserInterrupt), Exception (..), IOException, SomeException,
-                                            evaluate, mask_, throwIO, try)
+                                            evaluate, mask_, onException, throwIO, try)
 import           Control.Monad             (forM, forM_, unless, when)
 import           Data.Char                 (isPrint, isSpace)
 import           Data.IORef
@@ -91,11 +91,12 @@ import           System.Directory          (removeFile, renameFile)
 import           System.Environment        (getArgs, getProgName)
 import           System.Exit               (ExitCode (..), exitWith)
 import           System.FilePath           (isAbsolute, takeBaseName, takeDirectory, takeExtension, (</>))
-import           System.IO                 (hIsTerminalDevice, hPutStr, stderr)
+import           System.IO                 (hClose, hIsTerminalDevice, hPutStr, openBinaryTempFileWithDefaultPermissions,
+                                            stderr)
 import           System.Process            (rawSystem)
 import           Text.Printf               (printf)
 
-import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, ioErrorText, putErr, quote,
+import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, guardOutput, ioErrorText, putErr, quote,
                                             stopProgram, tolerantOutput)
 import           AFrobRobotSim.DefaultWorld
 import           AFrobRobotSim.Log
@@ -178,7 +179,7 @@ runPrepared prog opts referee mworld rcA rcB = do
   if optDumpWorld opts
     then do
       let text = renderWorld world
-      putStr text
+      guardOutput prog (putStr text)
       -- (a world made in code may say what a file cannot: more objects
       -- than 'maxObjects', a heading beyond 'maxHeading'; said, not
       -- refused: the world is printed, and runs)
@@ -434,20 +435,32 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
 -- in .mp4, take even sides only). The video is written beside its place
 -- under a name of its own (with the same extension, by which ffmpeg picks
 -- the format) and renamed there: a failure leaves an earlier video of
--- that name as it was.
+-- that name as it was. That name is made afresh for each video
+-- (@.NAME.partialNNNN.EXT@, created by this program, so that it is no
+-- file's already): ffmpeg writes over the file it is given, and a fixed
+-- name was another output's (@--log .v.partial.mp4@ beside @--video
+-- v.mp4@), or the world's, which were written over and then renamed away.
 makeVideo :: SimOptions -> FilePath -> Int -> FilePath -> IO [String]
 makeVideo opts exe nFrames file = do
-  let partial = takeDirectory file </> ("." ++ takeBaseName file ++ ".partial" ++ takeExtension file)
-  code <- rawSystem exe [ "-y", "-loglevel", "error", "-f", "image2", "-framerate", show (optFps opts)
-                        , "-i", inFolder (optOut opts) </> framePattern, "-frames:v", show nFrames
-                        , "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "file:" ++ partial ]
-  case code of
-    ExitFailure c -> do
-      _ <- try (removeFile partial) :: IO (Either IOException ())
-      pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
-    ExitSuccess -> try (renameFile partial file) >>= \r -> case r of
-      Left e   -> pure ["cannot write " ++ displayPath file ++ ": " ++ ioErrorText e]
-      Right () -> [] <$ unless (optQuiet opts) (putStrLn ("wrote " ++ displayPath file))
+  made <- try (openBinaryTempFileWithDefaultPermissions (takeDirectory file)
+                                                        ("." ++ takeBaseName file ++ ".partial" ++ takeExtension file))
+  case made of
+    Left e             -> pure ["cannot write " ++ displayPath file ++ ": " ++ ioErrorText e]
+    Right (partial, h) -> do
+      hClose h
+      let removePartial = try (removeFile partial) :: IO (Either IOException ())
+      code <- rawSystem exe [ "-y", "-loglevel", "error", "-f", "image2", "-framerate", show (optFps opts)
+                            , "-i", inFolder (optOut opts) </> framePattern, "-frames:v", show nFrames
+                            , "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "file:" ++ partial ]
+                `onException` removePartial
+      case code of
+        ExitFailure c -> do
+          _ <- removePartial
+          pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
+        ExitSuccess -> try (renameFile partial file) >>= \r -> case r of
+          Left e   -> pure ["cannot write " ++ displayPath file ++ ": " ++ ioErrorText e ++ "; the video is in "
+                            ++ displayPath partial]
+          Right () -> [] <$ unless (optQuiet opts) (putStrLn ("wrote " ++ displayPath file))
   where
     inFolder dir = concatMap (\c -> if c == '%' then "%%" else [c]) (if isAbsolute dir then dir else "." </> dir)
 

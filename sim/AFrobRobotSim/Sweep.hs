@@ -50,7 +50,7 @@ import           System.Exit         (exitWith, ExitCode (..))
 import           System.IO           (Handle, IOMode (ReadMode), hClose, hIsTerminalDevice,
                                       hSetBinaryMode, openBinaryFile, stdin)
 
-import           AFrobRobotSim.Console (displayPath, endOutput, stopProgram, tolerantOutput)
+import           AFrobRobotSim.Console (displayPath, endOutput, guardOutput, stopProgram, tolerantOutput)
 import           AFrobRobotSim.InputFile (LineFault (..), newLineReader, nextLine)
 import           AFrobRobotSim.OutputFile (fileIdentity)
 import           AFrobRobotSim.Sweep.Merge
@@ -160,7 +160,7 @@ sweepMergeMain = do
                  Right h -> readAll f h m <* hClose h)
             emptyMerge args
   case renderMerge merged of
-    Right out -> putStr out >> endOutput prog
+    Right out -> guardOutput prog (putStr out) >> endOutput prog
     Left e
       | mergedRuns merged == 0 -> stop (Fault 1 ("no result lines in " ++ (if null args then "standard input" else intercalate ", " (map displayPath args))))
       | otherwise              -> stop (Fault 1 e)

@@ -197,6 +197,10 @@ child arg = case break (== ':') arg of
   ("comments", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSeconds = 0.1, optWorldFile = Just (dir </> "comments.world") }
                                     Nothing drive drive
   ("noworld", _ : dir) -> runSimWith (quick dir) { optWorldFile = Just (dir </> "missing.world") } Nothing drive drive
+  ("dumpbig", _ : _) -> runSimWith defaultSimOptions { optDumpWorld = True }
+                                   (Just (OTSize 100 100 : [ OTBall (Point2 (fromIntegral i * 2 - 45) (fromIntegral j * 2 - 45))
+                                                           | i <- [0 .. 45 :: Int], j <- [0 .. 45 :: Int] ]))
+                                   drive drive
   ("dumpfar", _ : _) -> runSimWith defaultSimOptions { optDumpWorld = True } (Just [OTSimbotA 1 (Point2 0 0) 1e10]) drive drive
   ("badnoise", _ : dir) -> runSimWith (quick dir) { optFrames = False, optOdometryNoise = 2, optDt = 2e6
                                                   , optLog = Just (dir </> "run.jsonl") } (Just world) drive drive
@@ -562,6 +566,21 @@ spec = do
       err `shouldSatisfy` ("cannot write to standard output" `isInfixOf`)
       err `shouldSatisfy` ("Bad file descriptor" `isInfixOf`)
       doesFileExist (dir </> "run.svg") `shouldReturn` True
+  describe "standard output a pipe whose reader has gone" $
+    it "--dump-world of a world longer than the output's buffer fails with exit code 1 and a message (it exited 0, unsaid)" $
+      withTempDir $ \dir -> do
+        self <- getExecutablePath
+        environment <- getEnvironment
+        (readEnd, writeEnd) <- createPipe
+        hClose readEnd
+        (_, _, Just herr, ph) <- createProcess (proc self [])
+          { env = Just ((childVariable, "dumpbig:" ++ dir) : environment)
+          , std_out = UseHandle writeEnd, std_err = CreatePipe }
+        err <- hGetContents herr
+        done <- timeout 60000000 (length err `seq` waitForProcess ph)
+        _ <- maybe (terminateProcess ph >> waitForProcess ph) pure done
+        (done, "cannot write to standard output" `isInfixOf` err, "Broken pipe" `isInfixOf` err, length (lines err))
+          `shouldBe` (Just (ExitFailure 1), True, True, 1)
   describe "a controller whose output depends on itself with no delay" $ do
     forM_ [1, 2 :: Int] $ \caps ->
       it ("fails the run with <<loop>>, naming the robot, its outputs written (" ++ show caps ++ " capabilities)") $
@@ -902,10 +921,12 @@ spec = do
       take 2 (dropWhile (/= "-i") args') `shouldBe` ["-i", dir </> "f%%d" </> "frame-%06d.ppm"]
       take 2 (dropWhile (/= "-f") args') `shouldBe` ["-f", "image2"]
       -- (written beside its place, then renamed; odd sides padded)
-      drop (length args' - 1) args' `shouldBe` ["file:" ++ dir </> ".-v.partial.mp4"]
+      -- (.NAME.partialNNNN.EXT: a name of its own, made afresh)
+      map (\a -> (("file:" ++ dir </> ".-v.partial") `isPrefixOf` a, ".mp4" `isSuffixOf` a)) (drop (length args' - 1) args')
+        `shouldBe` [(True, True)]
       take 2 (dropWhile (/= "-vf") args') `shouldBe` ["-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"]
       doesFileExist (dir </> "-v.mp4") `shouldReturn` True
-      doesFileExist (dir </> ".-v.partial.mp4") `shouldReturn` False
+      filter (".-v.partial" `isPrefixOf`) <$> listDirectory dir `shouldReturn` []
       -- (ffmpeg fails: an earlier video of that name is left as it was)
       writeFile (dir </> "old.mp4") "old"
       (do setEnv "PATH" bin
@@ -916,7 +937,38 @@ spec = do
           err `shouldSatisfy` ("ffmpeg failed" `isInfixOf`))
         `finally` (unsetEnv "FAIL" >> maybe (pure ()) (setEnv "PATH") saved)
       readFile (dir </> "old.mp4") `shouldReturn` "old"
-      doesFileExist (dir </> ".old.partial.mp4") `shouldReturn` False
+      filter (".old.partial" `isPrefixOf`) <$> listDirectory dir `shouldReturn` []
+    it "--video writes its video beside its place under a name no other file has (a log, a world there is kept)" $
+      withTempDir $ \dir -> do
+        -- (a stand-in ffmpeg that writes the file named last, as ffmpeg
+        -- -y does, over whatever is there)
+        let bin = dir </> "bin"
+            out = dir </> "f"
+            -- (the name the video was once written under, before its
+            -- rename: a file of the run's own, or another, of that name
+            -- was written over, then renamed away to the video's)
+            oldPartial = dir </> ".v.partial.mp4"
+            worldFile = dir </> ".w.partial.mp4"
+        createDirectory bin
+        writeScript (bin </> "ffmpeg") "#!/bin/sh\nfor a; do last=$a; done\necho video > \"${last#file:}\"\n"
+        writeFile worldFile (renderWorld world)
+        saved <- lookupEnv "PATH"
+        (do setEnv "PATH" bin
+            (_, err, r) <- captured (runSimWith (quick out) { optSeconds = 0.2, optVideo = Just (dir </> "v.mp4")
+                                                            , optLog = Just oldPartial } (Just world) drive drive)
+            (r, err) `shouldBe` (Right (), "")
+            (_, err', r') <- captured (runSimWith (quick out) { optSeconds = 0.2, optVideo = Just (dir </> "w.mp4")
+                                                              , optWorldFile = Just worldFile } Nothing drive drive)
+            (r', err') `shouldBe` (Right (), ""))
+          `finally` maybe (pure ()) (setEnv "PATH") saved
+        readFile (dir </> "v.mp4") `shouldReturn` "video\n"
+        readFile (dir </> "w.mp4") `shouldReturn` "video\n"
+        -- (the run's log, and the world the other run read, are as written)
+        logRead <- readLogFile oldPartial
+        fmap (isJust . rlSummary) logRead `shouldBe` Right True
+        readFile worldFile `shouldReturn` renderWorld world
+        -- (and no temporary file is left)
+        sort <$> listDirectory dir `shouldReturn` sort ["bin", "f", ".v.partial.mp4", ".w.partial.mp4", "v.mp4", "w.mp4"]
     it "writes an SVG of the run" $ withTempDir $ \dir -> do
       _ <- captured (runSimWith (quick dir) { optFrames = False, optSvg = Just (dir </> "run.svg") }
                                 (Just world) drive drive)

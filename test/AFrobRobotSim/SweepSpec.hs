@@ -1100,6 +1100,14 @@ spec = do
         -- lines ending in CR LF (a jobs file written on Windows)
         writeFile (dir </> "crlf") "--seed 1 --param a=1\r\n# a comment\r\n\r\n--seed 2\r\n"
         listed ["--jobs", dir </> "crlf"] `shouldReturn` (ExitSuccess, ["--seed 1 --param a=1", "--seed 2"])
+        -- a UTF-8 byte order mark (Notepad's) is no part of the first line,
+        -- as in a world file (its run stopped at the flag "\65279--seed",
+        -- and its failure line said seed 0); a NUL is refused (the rest of
+        -- its line was dropped unsaid: the run ran without its --param)
+        B.writeFile (dir </> "bom") (B.pack [0xEF, 0xBB, 0xBF] `B.append` BC.pack "--seed 1\r\n--seed 2\r\n")
+        listed ["--jobs", dir </> "bom"] `shouldReturn` (ExitSuccess, ["--seed 1", "--seed 2"])
+        B.writeFile (dir </> "nul") (BC.pack "--seed 1\n--seed 2\NUL --param a=1\n")
+        refused ["--jobs", dir </> "nul"] "holds a NUL byte"
         -- what stays accepted: one parameter's values, two parameters
         listed ["--seeds", "1", "--param", "a=1,2", "--param", "b=x"]
           `shouldReturn` (ExitSuccess, ["--seed 1 --param a=1 --param b=x", "--seed 1 --param a=2 --param b=x"])
