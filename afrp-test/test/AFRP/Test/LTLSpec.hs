@@ -302,6 +302,23 @@ spec = do
       decided (Always (Implies (is (> 500)) (Not (Eventually (is (== 700)))))) `shouldReturn` Just False
       decided (Eventually (And (is (== 1)) (Until (is (> 0)) (is (== 900))))) `shouldReturn` Just True
       decided (Eventually (And (is (== 1)) (Not (Always (is (< 950)))))) `shouldReturn` Just True
+    it "keeps what a nested Until owes small: 40,000 samples are no hang (it owed one level more at each sample, the time quadratic)" $ do
+      let long = groupDeltas [0 .. 39999 :: Int] (repeat 0.01)
+          never = is (< 0)
+          always' = is (>= 0)
+          -- (what each owes is unfolded inside itself at every sample)
+          p1 = Until (Eventually (Eventually never)) (Always (Next (Not never)))
+          p2 = Until (Or (Eventually never) (Eventually (Not always'))) (And (Always always') (Eventually never))
+          -- (a window that never ends, opened at every sample)
+          p3 = Until (alwaysFor (1 / 0) (Eventually (is even))) (Always (is (< 0)))
+      -- (each answer evaluated whole inside the timeout)
+      r <- timeout (60 * 1000000) $ do
+        a <- evaluate (evalT p1 long)
+        b <- evaluate (fmap explFrame (explainT p2 long))
+        _ <- evaluate (maybe 0 id b)
+        c <- evaluate (evalT p3 long)
+        pure (a, b, c)
+      r `shouldBe` Just (True, Just 39999, False)
     it "alwaysFor looks only inside its window" $ do
       evalT (alwaysFor 0.45 (is (< 5))) count `shouldBe` True
       evalT (alwaysFor 0.5 (is (< 5))) count `shouldBe` False
