@@ -43,7 +43,10 @@
 -- being written does not stop that: they are finished, the summary is
 -- printed, a line on standard error says which signal came, and the exit
 -- code is 130 or 143 ("AFrobRobotSim.Run.Signals"; a second Ctrl-C ends
--- the program at once). Two runs with the same world, controllers and flags write
+-- the program at once), or 1 when an output could not be written (a
+-- video whose ffmpeg the signal stopped too, a Ctrl-C at the terminal
+-- reaching both). A video not yet begun when the signal came is not
+-- begun: the frames are kept, and the line says so. Two runs with the same world, controllers and flags write
 -- byte-identical frames.
 --
 -- The design that keeps a run's memory independent of its length: the
@@ -93,7 +96,7 @@ import           System.Exit               (ExitCode (..), exitWith)
 import           System.FilePath           (isAbsolute, takeBaseName, takeDirectory, takeExtension, (</>))
 import           System.IO                 (hClose, hIsTerminalDevice, hPutStr, openBinaryTempFileWithDefaultPermissions,
                                             stderr)
-import           System.Process            (rawSystem)
+import           System.Process            (CreateProcess (..), proc, waitForProcess, withCreateProcess)
 import           Text.Printf               (printf)
 
 import           AFrobRobotSim.Console     (displayPath, endOutput, flushStdout, guardOutput, ioErrorText, putErr, quote,
@@ -352,7 +355,7 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
     else try (loop 0 states) >>= either endedBy pure
   -- (from here neither signal stops the run: it is writing its outputs,
   -- and assembling the video; one that comes is noted, for the exit code)
-  failed <- whileFinishing stopper $ do
+  (failed, videoSkipped) <- whileFinishing stopper $ do
     when progress (hPutStr stderr eraseProgress)
     steps <- readIORef stepsRef
     scores <- readIORef scoresRef
@@ -379,7 +382,11 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
         summary   = LogSummary simulated steps (-1) wall interrupted failureText Nothing scores
     Outcome errs wrote <- mconcat <$> mapM (`sinkFinish` summary) sinks
     let runErrs = maybe [] pure stoppedText
-    printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
+    -- (a write to standard output that fails here, a pipe whose reader
+    -- has gone, is one of the run's errors: thrown on, the runtime took
+    -- it for success, exit code 0 and nothing said)
+    printed <- try $ do
+     printf "%s%.2f s simulated in %d steps, %d frames, %.2f s wall time, %.1fx real time\n"
       (case ending of
          Interrupted   -> "interrupted: "
          Failed _      -> "failed: "
@@ -387,35 +394,45 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
          OutOfHeap     -> "stopped: "
          Finished      -> "" :: String)
       simulated steps nFrames wall (if wall > 0 then simulated / wall else 0)
-    unless (optQuiet opts) (mapM_ putStrLn wrote)
+     unless (optQuiet opts) (mapM_ putStrLn wrote)
     -- (the summary written, or said to be lost: a full disk is not success)
-    outErrs <- case ending of
-      WriteFailed _ -> [] <$ flushStdout   -- (said once: the write that stopped the run)
-      _             -> maybe [] pure <$> flushStdout
-    videoErrs <- case (ending, optVideo opts) of
+    outErrs <- case (ending, printed) of
+      (WriteFailed _, _)        -> [] <$ flushStdout   -- (said once: the write that stopped the run)
+      (_, Left (e :: IOException)) -> pure ["cannot write to standard output: " ++ ioErrorText e]
+      _                         -> maybe [] pure <$> flushStdout
+    -- (a signal noted already: the video, which takes a while, is not
+    -- begun; the frames are kept, and the signal's line says so)
+    noted <- signalReceived stopper
+    (videoErrs, unmade) <- case (ending, optVideo opts) of
       -- (the checks before the run made sure ffmpeg is there when --video is given)
-      (Finished, Just file) | null errs, Just exe <- ffmpeg -> makeVideo opts exe nFrames file
-      _                                                      -> pure []
+      (Finished, Just file) | null errs, Just exe <- ffmpeg -> case noted of
+        Nothing -> (\es -> (es, False)) <$> makeVideo opts exe nFrames file
+        Just _  -> pure ([], True)
+      _                                                      -> pure ([], False)
     let allErrs = map ((prog ++ ": ") ++) (maybe [] (\ce -> [displayException ce]) failure ++ runErrs ++ errs
                                            ++ outErrs ++ videoErrs)
     unless (null allErrs) (putErr (unlines allErrs))
-    pure (not (null allErrs))
+    pure (not (null allErrs), unmade)
   -- (the signal that stopped the run, or that came while the outputs
   -- were written: the run is whole then, but whoever sent it is told that
-  -- it came, by the exit code and in words)
+  -- it came, by the exit code and in words; an output that failed is
+  -- said above, and the exit code is then 1)
   signal <- signalReceived stopper
   case (ending, signal) of
     (Interrupted, _) -> pure ()
     (_, Just k)      -> putErr (prog ++ ": " ++ signalName k ++ " received while the outputs were being written: "
-                                ++ "they were written first\n")
+                                ++ (if | failed    -> "they were finished, but not all of them could be written (see above)"
+                                       | videoSkipped -> "they were written first, but for the video, which was not "
+                                                         ++ "begun (the frames are in " ++ displayPath (optOut opts) ++ ")"
+                                       | otherwise -> "they were written first") ++ "\n")
     _                -> pure ()
   case ending of
     -- (the shell's code for a program ended by a signal: 128 and its
     -- number, Ctrl-C's 2 when no other came)
     Interrupted -> exitWith (ExitFailure (128 + maybe 2 id signal))
     Failed _    -> exitWith (ExitFailure 1)
-    _ | Just k <- signal -> exitWith (ExitFailure (128 + k))
     _ | failed           -> exitWith (ExitFailure 1)
+    _ | Just k <- signal -> exitWith (ExitFailure (128 + k))
       | otherwise        -> pure ()
   where
     signalName k = case k of
@@ -449,9 +466,15 @@ makeVideo opts exe nFrames file = do
     Right (partial, h) -> do
       hClose h
       let removePartial = try (removeFile partial) :: IO (Either IOException ())
-      code <- rawSystem exe [ "-y", "-loglevel", "error", "-f", "image2", "-framerate", show (optFps opts)
-                            , "-i", inFolder (optOut opts) </> framePattern, "-frames:v", show nFrames
-                            , "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "file:" ++ partial ]
+      -- (not rawSystem, which ignores Ctrl-C in this program while ffmpeg
+      -- runs: one that comes is noted as any other while the outputs are
+      -- written, 'whileFinishing')
+      code <- withCreateProcess
+                (proc exe [ "-y", "-loglevel", "error", "-f", "image2", "-framerate", show (optFps opts)
+                          , "-i", inFolder (optOut opts) </> framePattern, "-frames:v", show nFrames
+                          , "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "file:" ++ partial ])
+                  { delegate_ctlc = False }
+                (\_ _ _ ph -> waitForProcess ph)
                 `onException` removePartial
       case code of
         ExitFailure c -> do

@@ -13,7 +13,8 @@ import           System.Process      (CreateProcess (..), ProcessHandle, StdStre
                                       readCreateProcessWithExitCode,
                                       terminateProcess, waitForProcess)
 import           System.Posix.Files  (createLink, createNamedPipe)
-import           System.Posix.Signals (raiseSignal, signalProcess, sigKILL, sigTERM)
+import qualified System.Posix.Signals as Sig
+import           System.Posix.Signals (raiseSignal, signalProcess, signalProcessGroup, sigINT, sigKILL, sigTERM)
 import           System.IO.Unsafe    (unsafePerformIO)
 import           System.Timeout      (timeout)
 import qualified Data.ByteString     as BS
@@ -227,6 +228,13 @@ child arg = case break (== ':') arg of
   ("pagefifo", _ : dir) -> runSimWith (quick dir)
     { optFrames = False, optLog = Just (dir </> "run.jsonl"), optSvg = Just (dir </> "run.svg")
     , optResult = Just (dir </> "r.json"), optReplay = Just (dir </> "page.fifo") } Nothing drive drive
+  ("video", _ : dir) -> runSimWith (quick (dir </> "f")) { optSeconds = 0.2, optVideo = Just (dir </> "run.mp4") }
+                                  (Just world) drive drive
+  ("pagevideo", _ : dir) -> runSimWith (quick (dir </> "f"))
+    { optSeconds = 2, optResult = Just (dir </> "r.json"), optReplay = Just (dir </> "page.fifo")
+    , optVideo = Just (dir </> "run.mp4") } Nothing drive drive
+  ("bigtalk", _ : dir) -> runSimWith (quick dir) { optFrames = False, optSeconds = 1, optQuiet = False
+                                                 , optResult = Just (dir </> "r.json") } (Just world) bigTalker drive
   ("heldtwice", _ : dir) -> heldThenSpin dir awaitSignal (threadDelay 300000 >> raiseSignal sigTERM >> threadDelay 200000)
   ("heldint", _ : dir) -> heldThenSpin dir (const (threadDelay 2000000)) (pure ())
   ("holdoff", _ : dir) -> holdOff dir awaitSignal
@@ -268,6 +276,10 @@ child arg = case break (== ':') arg of
     talker _ = sscan (\k _ -> k + 1) (0 :: Int)
                >>> arr (\k -> mrFinalize (ddVelDiff 0.5 0.5 `mrMerge`
                                          tcoPrintMessage (if k `mod` 4 == 1 then Event "a frame" else NoEvent)))
+    -- (a message longer than standard output's buffer, at the first step)
+    bigTalker _ = sscan (\k _ -> k + 1) (0 :: Int)
+                  >>> arr (\k -> mrFinalize (ddVelDiff 0.5 0.5 `mrMerge`
+                                            tcoPrintMessage (if k == 1 then Event (replicate 10000 'x') else NoEvent)))
     -- (an output that depends on itself with no delay: <<loop>>)
     selfish _ = loop (arr (\(_, o) -> (o, o)))
     -- (the same from 0.3 s on, after 30 steps that run)
@@ -308,6 +320,11 @@ awaitChild what ready ph = go (0 :: Int)
         _ <- killChild ph
         expectationFailure ("the child " ++ what ++ " in a minute")
       else threadDelay 50000 >> go (k + 1)
+
+-- | A signal sent to the child's process group (it was started with
+-- @create_group@).
+toGroup :: Sig.Signal -> ProcessHandle -> IO ()
+toGroup sig ph = getPid ph >>= mapM_ (signalProcessGroup sig)
 
 -- | A child stopped at once (SIGKILL, which nothing it does can delay) and
 -- reaped: for a test that gives up on it, leaving nothing behind.
@@ -793,6 +810,94 @@ spec = do
         lines err `shouldBe` ["afrp-spec: " ++ named ++ " received while the outputs were being written: they were written first"]
         doesFileExist (dir </> "run.svg") `shouldReturn` True
         readFile (dir </> "r.json") >>= (`shouldSatisfy` ("\"simulated\":2" `isInfixOf`))
+  describe "a signal that comes while ffmpeg assembles the video" $ do
+    -- (a stand-in ffmpeg that says it has begun, takes 3 s, then makes
+    -- the file named last)
+    let withSlowFfmpeg dir act = do
+          let bin = dir </> "bin"
+          createDirectory bin
+          writeScript (bin </> "ffmpeg") ("#!/bin/sh\n: > " ++ (dir </> "started") ++ "\nsleep 3\n"
+                                         ++ "for a; do last=$a; done\n: > \"${last#file:}\"\n")
+          environment <- getEnvironment
+          path <- maybe "" (':' :) <$> lookupEnv "PATH"
+          act (filter ((/= "PATH") . fst) environment ++ [("PATH", bin ++ path)])
+        -- (the child @what@ with that ffmpeg; @send@ once ffmpeg has begun
+        -- (or, for @pagevideo@, once its page is being written); its exit
+        -- code and standard error)
+        videoChild what dir send = withSlowFfmpeg dir $ \environment -> do
+          c <- childOn what dir 1
+          (_, Just hout, Just herr, ph) <- createProcess c { env = Just ((childVariable, what ++ ":" ++ dir) : environment)
+                                                           , create_group = True, std_out = CreatePipe, std_err = CreatePipe }
+          awaitChild "began ffmpeg" (doesFileExist (dir </> "started")) ph
+          threadDelay 300000
+          () <- send ph
+          out <- hGetContents hout
+          err <- hGetContents herr
+          done <- timeout 60000000 (length out `seq` length err `seq` waitForProcess ph)
+          _ <- maybe (killChild ph) pure done
+          pure (done, err)
+        toChild sig ph = getPid ph >>= mapM_ (signalProcess sig)
+    it "Ctrl-C to simbot alone is noted, the video finished, exit code 130 (it was dropped: exit code 0)" $
+      withTempDir $ \dir -> do
+        (done, err) <- videoChild "video" dir (toChild sigINT)
+        (done, lines err) `shouldBe` (Just (ExitFailure 130), ["afrp-spec: Ctrl-C (SIGINT) received while the outputs were "
+                                                                 ++ "being written: they were written first"])
+        doesFileExist (dir </> "run.mp4") `shouldReturn` True
+    forM_ [ ("Ctrl-C", interruptProcessGroupOf, "Ctrl-C (SIGINT)"), ("SIGTERM", toGroup sigTERM, "SIGTERM") ] $
+      \(name, send, named) ->
+        it (name ++ " to the group, which stops ffmpeg, is said, without claiming the outputs were written, exit code 1 "
+            ++ "(Ctrl-C was not said; SIGTERM said they were written first)") $ withTempDir $ \dir -> do
+          (done, err) <- videoChild "video" dir send
+          done `shouldBe` Just (ExitFailure 1)
+          err `shouldSatisfy` ("ffmpeg failed" `isInfixOf`)
+          lines err `shouldSatisfy` elem ("afrp-spec: " ++ named ++ " received while the outputs were being written: they "
+                                          ++ "were finished, but not all of them could be written (see above)")
+          doesFileExist (dir </> "run.mp4") `shouldReturn` False
+    it "a signal noted before the video is begun: the video is not begun, the frames kept, said, exit code 143" $
+      withTempDir $ \dir -> do
+        let fifo = dir </> "page.fifo"
+        createNamedPipe fifo 0o600
+        reader <- openBinaryFile fifo ReadWriteMode
+        -- (the page waits in its pipe, nobody reading; SIGTERM then, and
+        -- the pipe read to its end)
+        let send ph = do
+              terminateProcess ph
+              threadDelay 300000
+              let drain = hWaitForInput reader 2000 >>= \more -> if more then BS.hGetSome reader 65536 >> drain else pure ()
+              drain
+        (done, err) <- withSlowFfmpeg dir $ \environment -> do
+          c <- childOn "pagevideo" dir 1
+          (_, Just hout, Just herr, ph) <- createProcess c { env = Just ((childVariable, "pagevideo:" ++ dir) : environment)
+                                                           , std_out = CreatePipe, std_err = CreatePipe }
+          begun <- timeout 60000000 (BS.hGetSome reader 16)
+          _ <- maybe (killChild ph) (const (pure ExitSuccess)) begun
+          threadDelay 300000
+          send ph
+          out <- hGetContents hout
+          err <- hGetContents herr
+          done <- timeout 60000000 (length out `seq` length err `seq` waitForProcess ph)
+          _ <- maybe (killChild ph) pure done
+          pure (done, err)
+        hClose reader
+        (done, lines err) `shouldBe` (Just (ExitFailure 143), ["afrp-spec: SIGTERM received while the outputs were being "
+                                                                 ++ "written: they were written first, but for the video, "
+                                                                 ++ "which was not begun (the frames are in " ++ (dir </> "f") ++ ")"])
+        doesFileExist (dir </> "started") `shouldReturn` False
+        length <$> listDirectory (dir </> "f") `shouldReturn` 51
+  describe "standard output a pipe whose reader has gone, at the run's summary" $
+    it "a robot's message longer than the buffer: exit code 1 and a message (it exited 0, unsaid)" $ withTempDir $ \dir -> do
+      self <- getExecutablePath
+      environment <- getEnvironment
+      (readEnd, writeEnd) <- createPipe
+      hClose readEnd
+      (_, _, Just herr, ph) <- createProcess (proc self [])
+        { env = Just ((childVariable, "bigtalk:" ++ dir) : environment)
+        , std_out = UseHandle writeEnd, std_err = CreatePipe }
+      err <- hGetContents herr
+      done <- timeout 60000000 (length err `seq` waitForProcess ph)
+      _ <- maybe (killChild ph) pure done
+      (done, "Broken pipe" `isInfixOf` err) `shouldBe` (Just (ExitFailure 1), True)
+      doesFileExist (dir </> "r.json") `shouldReturn` True
   describe "a SIGTERM the program was started ignoring (nohup, a batch system)" $
     it "is still ignored: the run goes on, and Ctrl-C stops it" $ withTempDir $ \dir -> do
       self <- getExecutablePath
