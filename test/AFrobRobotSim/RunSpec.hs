@@ -331,6 +331,24 @@ toGroup sig ph = getPid ph >>= mapM_ (signalProcessGroup sig)
 killChild :: ProcessHandle -> IO ExitCode
 killChild ph = getPid ph >>= mapM_ (signalProcess sigKILL) >> waitForProcess ph
 
+-- | @toClosedPipe mode@: this test program run as the child @mode@ with
+-- its standard output a pipe whose reading end is already closed: how it
+-- ended ('Nothing' if not within a minute; it is then killed) and its
+-- standard error.
+toClosedPipe :: String -> IO (Maybe ExitCode, String)
+toClosedPipe mode = do
+  self <- getExecutablePath
+  environment <- getEnvironment
+  (readEnd, writeEnd) <- createPipe
+  hClose readEnd
+  (_, _, Just herr, ph) <- createProcess (proc self [])
+    { env = Just ((childVariable, mode) : environment)
+    , std_out = UseHandle writeEnd, std_err = CreatePipe }
+  err <- hGetContents herr
+  done <- timeout 60000000 (length err `seq` waitForProcess ph)
+  _ <- maybe (killChild ph) pure done
+  pure (done, err)
+
 -- | The signals that a watchdog follows: a name, how the test sends it
 -- (Ctrl-C to the child's process group, so the child must be started
 -- with @create_group@), what the watchdog's message calls it, and its
@@ -586,16 +604,7 @@ spec = do
   describe "standard output a pipe whose reader has gone" $
     it "--dump-world of a world longer than the output's buffer fails with exit code 1 and a message (it exited 0, unsaid)" $
       withTempDir $ \dir -> do
-        self <- getExecutablePath
-        environment <- getEnvironment
-        (readEnd, writeEnd) <- createPipe
-        hClose readEnd
-        (_, _, Just herr, ph) <- createProcess (proc self [])
-          { env = Just ((childVariable, "dumpbig:" ++ dir) : environment)
-          , std_out = UseHandle writeEnd, std_err = CreatePipe }
-        err <- hGetContents herr
-        done <- timeout 60000000 (length err `seq` waitForProcess ph)
-        _ <- maybe (terminateProcess ph >> waitForProcess ph) pure done
+        (done, err) <- toClosedPipe ("dumpbig:" ++ dir)
         (done, "cannot write to standard output" `isInfixOf` err, "Broken pipe" `isInfixOf` err, length (lines err))
           `shouldBe` (Just (ExitFailure 1), True, True, 1)
   describe "a controller whose output depends on itself with no delay" $ do
@@ -886,16 +895,7 @@ spec = do
         length <$> listDirectory (dir </> "f") `shouldReturn` 51
   describe "standard output a pipe whose reader has gone, at the run's summary" $
     it "a robot's message longer than the buffer: exit code 1 and a message (it exited 0, unsaid)" $ withTempDir $ \dir -> do
-      self <- getExecutablePath
-      environment <- getEnvironment
-      (readEnd, writeEnd) <- createPipe
-      hClose readEnd
-      (_, _, Just herr, ph) <- createProcess (proc self [])
-        { env = Just ((childVariable, "bigtalk:" ++ dir) : environment)
-        , std_out = UseHandle writeEnd, std_err = CreatePipe }
-      err <- hGetContents herr
-      done <- timeout 60000000 (length err `seq` waitForProcess ph)
-      _ <- maybe (killChild ph) pure done
+      (done, err) <- toClosedPipe ("bigtalk:" ++ dir)
       (done, "Broken pipe" `isInfixOf` err) `shouldBe` (Just (ExitFailure 1), True)
       doesFileExist (dir </> "r.json") `shouldReturn` True
   describe "a SIGTERM the program was started ignoring (nohup, a batch system)" $

@@ -84,7 +84,6 @@ module AFrobRobotSim.Run.Signals
   ( Stopper
   , interruptible
   , signalReceived
-  , finishing
   , whileFinishing
   , stuckGrace
   ) where
@@ -156,7 +155,7 @@ stuckGrace :: Int
 stuckGrace = 10
 
 -- | What 'interruptible' gives its action: which thread a signal stops,
--- whether the run is writing its outputs ('finishing'), and the number of
+-- whether the run is writing its outputs ('whileFinishing'), and the number of
 -- the first signal received, if any.
 --
 -- The thread is held weakly: held strongly (by the signal's handler), a
@@ -166,7 +165,7 @@ stuckGrace = 10
 data Stopper = Stopper (Weak ThreadId) (IORef (Bool, Maybe Int))
 
 -- | @interruptible act@ runs @act@ with @SIGTERM@ throwing
--- 'UserInterrupt' to the thread that called it (once 'finishing' has
+-- 'UserInterrupt' to the thread that called it (once 'whileFinishing' has
 -- been called, it is noted and ignored), and restores its handler after.
 -- A program that was started with @SIGTERM@ ignored keeps ignoring it.
 -- Ctrl-C is left to the runtime's handler (which throws 'UserInterrupt'
@@ -315,13 +314,14 @@ stuckMessage signal prog =
 signalReceived :: Stopper -> IO (Maybe Int)
 signalReceived (Stopper _ phase) = snd <$> readIORef phase
 
--- | From now on a @SIGTERM@ is noted and ignored: the run is writing its
--- outputs ('whileFinishing' does the same for Ctrl-C).
+-- From now on a @SIGTERM@ is noted and ignored: the run is writing its
+-- outputs (the first thing 'whileFinishing' does).
 finishing :: Stopper -> IO ()
 finishing (Stopper _ phase) = atomicModifyIORef' phase (\(_, got) -> ((True, got), ()))
 
--- | @whileFinishing stopper write@: 'finishing', then @write@ (the run's
--- outputs written) to its end, a @SIGTERM@ or a first Ctrl-C that comes
+-- | @whileFinishing stopper write@: from now on a @SIGTERM@ is noted and
+-- ignored; @write@ (the run's outputs written) is run to its end, a
+-- @SIGTERM@ or a first Ctrl-C that comes
 -- meanwhile noted and not obeyed, and what it gives; what it throws is
 -- thrown on. @write@ runs on a thread of its
 -- own while this one waits for it: a Ctrl-C, which the runtime's handler
