@@ -434,11 +434,13 @@ simulateRun prog opts referee ffmpeg source world rcA rcB = interruptible $ \sto
     _ | failed           -> exitWith (ExitFailure 1)
     _ | Just k <- signal -> exitWith (ExitFailure (128 + k))
       | otherwise        -> pure ()
-  where
-    signalName k = case k of
-      2  -> "Ctrl-C (SIGINT)"
-      15 -> "SIGTERM"
-      _  -> "signal " ++ show k
+
+-- A signal's name in the run's messages.
+signalName :: Int -> String
+signalName k = case k of
+  2  -> "Ctrl-C (SIGINT)"
+  15 -> "SIGTERM"
+  _  -> "signal " ++ show k
 
 -- Assemble this run's frames with ffmpeg (the executable found on the PATH
 -- before the run); the errors, if any. Only the run's own frames go in:
@@ -479,7 +481,12 @@ makeVideo opts exe nFrames file = do
       case code of
         ExitFailure c -> do
           _ <- removePartial
-          pure ["ffmpeg failed with exit code " ++ show c ++ "; the frames are in " ++ displayPath (optOut opts)]
+          -- (ended by a signal, which a shell's Ctrl-C or a batch
+          -- system's SIGTERM sends ffmpeg too: named here, since this
+          -- program's own handler may note it only after the outputs)
+          pure [ (if c < 0 then "ffmpeg was stopped by " ++ signalName (negate c)
+                           else "ffmpeg failed with exit code " ++ show c)
+                 ++ "; the frames are in " ++ displayPath (optOut opts) ]
         ExitSuccess -> try (renameFile partial file) >>= \r -> case r of
           Left e   -> pure ["cannot write " ++ displayPath file ++ ": " ++ ioErrorText e ++ "; the video is in "
                             ++ displayPath partial]
